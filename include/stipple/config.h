@@ -1,0 +1,85 @@
+/*
+ * stipple build-time configuration: the one place where every switch of the
+ * core is defined, with its default.  A firmware build overrides them with
+ * -D on the compiler line or by defining STP_CONFIG_HEADER to the name of a
+ * header of its own, included first.  tests/test_config_switches.c builds the
+ * core with each switch flipped and checks the object code changes, so a
+ * switch spelled differently here and in the code cannot go unnoticed.
+ */
+#ifndef STIPPLE_CONFIG_H
+#define STIPPLE_CONFIG_H
+
+#ifdef STP_CONFIG_HEADER
+#include STP_CONFIG_HEADER
+#endif
+
+/* Fractional bits of stp_fix (the core's one scalar type, a signed Q format
+ * in 32 bits).  16 (default): range [-32768, 32768), step 1.5e-5.
+ * 20: range [-2048, 2048), step 9.5e-7, for small scenes wanting precision.
+ * 12: range [-524288, 524288), step 2.4e-4, for large coordinates.
+ * Allowed: 12..24. */
+#ifndef STP_FIX_FRAC_BITS
+#define STP_FIX_FRAC_BITS 16
+#endif
+
+/* Square root used by normalisation and Fresnel's g:
+ * 0 (default) exact: bit-by-bit integer square root, floor of the true root.
+ * 1 fast: 8-entry-table seed plus two Newton steps, relative error < 2^-15. */
+#ifndef STP_SQRT_FAST
+#define STP_SQRT_FAST 0
+#endif
+
+/* Largest polygon vertex count accepted by the display file (after clipping a
+ * polygon may gain up to five vertices; the scratch space is sized for that).
+ * The renderer object grows by 2 * (this + 5) * 12 bytes. */
+#ifndef STP_MAX_POLYGON_VERTICES
+#define STP_MAX_POLYGON_VERTICES 160
+#endif
+
+/* Number of point lights a segment can hold (seed: 1; (10.16): several). */
+#ifndef STP_MAX_LIGHTS
+#define STP_MAX_LIGHTS 4
+#endif
+
+/* Number of display-file segments alive at once. */
+#ifndef STP_MAX_SEGMENTS
+#define STP_MAX_SEGMENTS 16
+#endif
+
+/* 1: the specular term (D, G, F of Torrance-Sparrow) is compiled in.
+ * 0: shading is ambient + diffuse only; a scene without specular surfaces
+ * saves the code and the work. */
+#ifndef STP_WITH_SPECULAR
+#define STP_WITH_SPECULAR 1
+#endif
+
+/* 1: the Z-buffer hidden-surface method is compiled in. */
+#ifndef STP_WITH_ZBUFFER
+#define STP_WITH_ZBUFFER 1
+#endif
+
+/* 1: the painter's depth sort is compiled in. */
+#ifndef STP_WITH_PAINTER
+#define STP_WITH_PAINTER 1
+#endif
+
+/* 1: line drawing (display-file opcodes move/line) is compiled in. */
+#ifndef STP_WITH_LINES
+#define STP_WITH_LINES 1
+#endif
+
+#if STP_FIX_FRAC_BITS < 12 || STP_FIX_FRAC_BITS > 24
+#error "STP_FIX_FRAC_BITS must be within 12..24"
+#endif
+#if STP_MAX_POLYGON_VERTICES < 3 || STP_MAX_POLYGON_VERTICES > 4096
+#error "STP_MAX_POLYGON_VERTICES must be within 3..4096"
+#endif
+#if STP_MAX_LIGHTS < 1 || STP_MAX_SEGMENTS < 1
+#error "STP_MAX_LIGHTS and STP_MAX_SEGMENTS must be at least 1"
+#endif
+#if !STP_WITH_ZBUFFER && !STP_WITH_PAINTER
+/* Neither method: polygons are drawn in display-file order (the caller's
+ * order), which is what a scene of non-overlapping polygons needs. */
+#endif
+
+#endif

@@ -1,0 +1,225 @@
+/*
+ * The renderer: display file (SPEC.md section 7), viewing, hidden surfaces,
+ * scan conversion and band output.
+ *
+ * One stp_renderer holds all state; there are no globals, so two renderers
+ * (two displays, two test threads) never interfere.  All memory is the
+ * caller's: the renderer object itself, the display file, the band buffer,
+ * the Z buffer and the painter's sort array.
+ *
+ * Coordinates: world and view positions are stp_fix.  The view-plane system
+ * is left-handed: x right, y up, z away from the eye along the line of sight.
+ * Device coordinates in the display file are Q27.4 (STP_SUBPIXEL_BITS
+ * fractional bits), origin at the top-left corner of the top-left pixel, y
+ * down; pixel (i, j) has its centre at (i + 0.5, j + 0.5).
+ *
+ * Fill rule (written down, tested in tests/test_raster.c): a pixel belongs to
+ * a polygon when its centre is inside by the even-odd rule; a centre exactly
+ * on an edge belongs to the polygon on the edge's right (x) side and below
+ * (top-left rule: spans cover x_left <= centre < x_right, edges cover
+ * y_top <= centre < y_bottom).  So two polygons sharing an edge never both
+ * draw a pixel and leave no gap between them.
+ */
+#ifndef STIPPLE_RENDER_H
+#define STIPPLE_RENDER_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "stipple/config.h"
+#include "stipple/dither.h"
+#include "stipple/fix.h"
+#include "stipple/port.h"
+#include "stipple/shade.h"
+
+#define STP_SUBPIXEL_BITS 4
+
+/* Errors: every function that can fail returns 0 or one of these (< 0). */
+typedef enum stp_status {
+    STP_OK = 0,
+    STP_ERR_ARG = -1,          /* a NULL pointer or a value out of its range */
+    STP_ERR_FULL = -2,         /* the display file or segment table is full */
+    STP_ERR_NO_SEGMENT = -3,   /* drawing with no open segment */
+    STP_ERR_SEGMENT = -4,      /* no such segment, or one already open */
+    STP_ERR_TOO_MANY_VERTICES = -5, /* polygon above STP_MAX_POLYGON_VERTICES */
+    STP_ERR_DEGENERATE = -6,   /* polygon with fewer than 3 distinct vertices
+                                  or no area: nothing entered */
+    STP_ERR_MEMORY = -7,       /* a caller buffer too small for the request */
+    STP_ERR_PORT = -8,         /* the port's flush returned an error */
+    STP_ERR_VIEW = -9,         /* from == at, up parallel to the line of sight,
+                                  or a field of view outside (0, 180) */
+    STP_ERR_UNSUPPORTED = -10  /* a feature compiled out of this build */
+} stp_status;
+
+/* Short English text for a status, for messages. */
+const char *stp_status_text(int status);
+
+/* Display-file opcodes (the seed's scheme). */
+enum {
+    STP_OP_MOVE = 1,        /* move the pen to (x, y, z) */
+    STP_OP_LINE = 2,        /* draw a line from the pen to (x, y, z) */
+    /* op >= 3: an op-sided polygon; this entry holds vertex 0 and the next
+     * op-1 entries (opcode STP_OP_LINE) hold vertices 1..op-1. */
+    STP_OP_SHADE = 0,       /* fill style for following polygons: x = style
+                               index 1..levels, y = the shade (stp_fix) */
+    STP_OP_LINE_STYLE = -1  /* style for following lines: x = style index */
+};
+
+/* One display-file instruction: an opcode and a point.  x, y: device Q27.4;
+ * z: depth key, larger = nearer (perspective: 2^30 * hither / z_view, in
+ * (0, 2^30]; parallel: -z_view as stp_fix). */
+typedef struct stp_instr {
+    int32_t op;
+    int32_t x, y, z;
+} stp_instr;
+
+typedef enum stp_projection {
+    STP_PERSPECTIVE = 0,
+    STP_PARALLEL = 1
+} stp_projection;
+
+/* A view (NFF's "v" entity).  fov_degrees: perspective only, the full angle
+ * spanned by the shorter side of the device, in (0, 180).  window_half:
+ * parallel only, half the shorter side of the window in world units, > 0.
+ * hither: distance of the near clipping plane from the eye, > 0. */
+typedef struct stp_view {
+    stp_vec3 from, at, up;
+    stp_fix fov_degrees;
+    stp_fix window_half;
+    stp_fix hither;
+    stp_projection projection;
+} stp_view;
+
+typedef enum stp_hidden {
+    STP_HIDDEN_NONE = 0,    /* display-file order */
+    STP_HIDDEN_PAINTER = 1, /* depth sort, farthest first */
+    STP_HIDDEN_ZBUFFER = 2  /* 16-bit Z buffer per band */
+} stp_hidden;
+
+typedef struct stp_renderer stp_renderer;
+
+/* Bytes a renderer object needs (its alignment is that of int64_t). */
+size_t stp_renderer_size(void);
+
+/* Create a renderer in mem (stp_renderer_size() bytes, aligned for int64_t)
+ * with a display file of capacity instructions in display_file.  The device
+ * size is fixed at creation (1..32767 each way) because entering an
+ * instruction projects it onto the device.  Everything else starts at the
+ * seed's defaults (INITIALIZE-10): light at (0,0,1), brightness 1,
+ * background 0, C = 1, R = 1, n = 10, k = 10, shading off, 16 levels,
+ * Bayer 4x4 cell, identity gamma, no hidden-surface removal, back faces kept,
+ * view from (0,0,-1) at the origin, 90 degrees, hither 2^-8.
+ * Returns the handle, or NULL for a NULL or too small argument. */
+stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display_file,
+                                  uint32_t capacity, uint32_t width, uint32_t height);
+
+/* --- viewing and attributes (take effect for instructions entered after) */
+
+/* Set the view.  Returns STP_OK or STP_ERR_VIEW / STP_ERR_ARG. */
+int stp_set_view(stp_renderer *r, const stp_view *view);
+
+/* SET-LIGHT (10.8): one light at (x, y, z) world units with the given
+ * brightness (>= 0) and background (clamped to [0, 1]); its power is
+ * 1 - background.  Replaces all lights. */
+void stp_set_light(stp_renderer *r, stp_vec3 position, stp_fix brightness, stp_fix background);
+
+/* Set the whole lighting (several lights, positions in world units).
+ * Returns STP_ERR_ARG for count outside 0..STP_MAX_LIGHTS. */
+int stp_set_lighting(stp_renderer *r, const stp_lighting *lighting);
+
+/* SET-OBJECT-SHADE (10.7) with the specular weight; see stp_material. */
+void stp_set_object_shade(stp_renderer *r, const stp_material *material);
+
+/* SET-SHADING: on (1) or off (0).  Off: polygons take the current style. */
+void stp_set_shading(stp_renderer *r, int on);
+
+/* Fill style used while shading is off, as an INTENSITY index 1..levels. */
+void stp_set_fill_style(stp_renderer *r, int index);
+
+/* Number of INTENSITY levels, 2..256 (default 16). */
+int stp_set_levels(stp_renderer *r, int levels);
+
+/* Back-face removal on (1) or off (0, default: back faces are shaded as if
+ * seen from their front, which suits open meshes). */
+void stp_set_backface_removal(stp_renderer *r, int on);
+
+/* --- segments (the display file's grouping) */
+
+/* Create and open segment id (0..32767).  The current lighting is copied
+ * into it (COPY-LIGHT) with light positions in view coordinates.  Errors:
+ * STP_ERR_SEGMENT if a segment is open or id exists, STP_ERR_FULL. */
+int stp_segment_create(stp_renderer *r, int id);
+/* Close the open segment (STP_ERR_SEGMENT if none). */
+int stp_segment_close(stp_renderer *r);
+/* Delete a closed segment and its instructions (the display file is
+ * compacted).  STP_ERR_SEGMENT if there is no such closed segment. */
+int stp_segment_delete(stp_renderer *r, int id);
+/* Make a segment visible (1) or invisible (0). */
+int stp_segment_visibility(stp_renderer *r, int id, int visible);
+
+/* --- drawing (DISPLAY-FILE-ENTER: transform, shade, project, clip, store) */
+
+/* Move the pen / draw a line to a world point.  Lines are clipped to the
+ * hither plane and the window. */
+int stp_move(stp_renderer *r, stp_vec3 p);
+int stp_line(stp_renderer *r, stp_vec3 p);
+
+/* An n-sided polygon (3 <= n <= STP_MAX_POLYGON_VERTICES) in world units.
+ * With shading on, it is shaded at its vertex average with its Newell
+ * normal (SHADE-CHECK) and a STP_OP_SHADE instruction is entered before
+ * it when the style changes.  A polygon wholly clipped away, or a back face
+ * with back-face removal on, enters nothing and returns STP_OK.
+ * Errors: STP_ERR_NO_SEGMENT, STP_ERR_TOO_MANY_VERTICES, STP_ERR_DEGENERATE
+ * (zero Newell normal: repeated/collinear vertices, no area), STP_ERR_FULL
+ * (nothing of the polygon is left in the display file). */
+int stp_polygon(stp_renderer *r, const stp_vec3 *vertices, int n);
+
+/* Instructions in use and capacity of the display file. */
+uint32_t stp_display_file_used(const stp_renderer *r);
+
+/* Polygons in visible segments (the size of the painter's sort array). */
+uint32_t stp_polygon_count(const stp_renderer *r);
+
+/* The shade the last stp_polygon call computed (for tests), or -1. */
+stp_fix stp_last_shade(const stp_renderer *r);
+
+/* --- output */
+
+/* Everything about how the display file meets the device. */
+typedef struct stp_output {
+    stp_hidden hidden;
+    const stp_cell *cell;            /* MONO1: halftone cell (NULL: Bayer 4x4) */
+    const uint8_t *gamma;            /* levels entries, style index-1 -> 0..255;
+                                        NULL: linear (index-1)*255/(levels-1) */
+    const stp_style_table *styles;   /* STYLE8: codes; NULL: the index itself */
+    stp_fix background;              /* shade of the empty frame, [0, 1] */
+} stp_output;
+
+/* Memory the caller lends to one stp_render call.
+ *   band, band_size     pixel rows: band_rows * stp_row_bytes(format, width)
+ *   band_rows           rows per band, 1..height
+ *   zbuf, zbuf_count    STP_HIDDEN_ZBUFFER: width * band_rows entries
+ *   sort, sort_count    STP_HIDDEN_PAINTER: stp_polygon_count() entries */
+typedef struct stp_sort_entry {
+    uint32_t index;  /* display-file entry of the polygon */
+    int32_t key;     /* depth key of its farthest vertex */
+    uint16_t style;  /* its fill style */
+} stp_sort_entry;
+typedef struct stp_frame_memory {
+    uint8_t *band;
+    size_t band_size;
+    uint32_t band_rows;
+    uint16_t *zbuf;
+    size_t zbuf_count;
+    stp_sort_entry *sort;
+    size_t sort_count;
+} stp_frame_memory;
+
+/* Interpret the display file and send the picture to the port, band by band
+ * (the display file is re-read for each band; the result is the same pixel
+ * for pixel whatever the band height).  The port's size must be the
+ * renderer's.  Errors: STP_ERR_ARG, STP_ERR_MEMORY (a buffer too small),
+ * STP_ERR_UNSUPPORTED (a hidden-surface method compiled out), STP_ERR_PORT. */
+int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
+               const stp_frame_memory *memory);
+
+#endif

@@ -1,0 +1,109 @@
+/*
+ * Shading (SPEC.md section 2), INTENSITY and gamma (section 3).
+ *
+ * All quantities are stp_fix.  Units: positions in view-plane units, angles
+ * as cosines in [-1, 1], shades in [0, 1].  Nothing here can overflow: every
+ * quotient that can explode (the specular share DGF/(E.N) as E.N -> 0, the
+ * Fresnel ratio as its denominator -> 0) saturates and the final shade is
+ * capped at 1, as MAKE-SHADE's min(1, ...) does.
+ */
+#ifndef STIPPLE_SHADE_H
+#define STIPPLE_SHADE_H
+
+#include <stdint.h>
+#include "stipple/fix.h"
+
+/* One point light: position (view or world units, see where it is used) and
+ * power P_j of (10.16).  The seed's single light has P = 1 - background. */
+typedef struct stp_light {
+    stp_vec3 position;
+    stp_fix power;
+} stp_light;
+
+/* The lighting of a view (SET-LIGHT, 10.8, extended to several lights).
+ *   brightness      BRIGHT, overall factor, >= 0 (seed default 1)
+ *   background      BKGRND = B, indirect light share, clamped to [0, 1]
+ *   attenuation_c   C of 1/(C + U), > 0 (default 1; values <= 0 are taken
+ *                   as 2^-F so the light on a surface stays finite)
+ *   count           lights in use, 0..STP_MAX_LIGHTS */
+typedef struct stp_lighting {
+    stp_fix brightness;
+    stp_fix background;
+    stp_fix attenuation_c;
+    int count;
+    stp_light lights[STP_MAX_LIGHTS];
+} stp_lighting;
+
+/* An object's shading parameters (SET-OBJECT-SHADE, 10.7).
+ *   reflectivity  R in [0, 1]          (seed default 1)
+ *   refraction    n, index of refraction, > 0 (seed default 10)
+ *   gloss         k > 0: small = sharp highlight (seed default 10);
+ *                 values below 2^-F are taken as 2^-F
+ *   specular      weight of the D.G.F/(E.N) term (1 = the seed's model;
+ *                 NFF's Ks maps here; 0 switches the highlight off). */
+typedef struct stp_material {
+    stp_fix reflectivity;
+    stp_fix refraction;
+    stp_fix gloss;
+    stp_fix specular;
+} stp_material;
+
+/* The seed's defaults (INITIALIZE-10): light at (0,0,1) with power 1,
+ * brightness 1, background 0, C = 1; material R = 1, n = 10, k = 10. */
+void stp_lighting_default(stp_lighting *lighting);
+void stp_material_default(stp_material *material);
+
+/* The specular factors for one light, each in [0, 1] (for diagnostics and
+ * tests).  Inputs are cosines in [-1, 1]; n is the index of refraction, k the
+ * gloss.  Where H is undefined or a cosine is <= 0 all three are 0. */
+typedef struct stp_specular_terms {
+    stp_fix d; /* facet distribution (10.4) */
+    stp_fix g; /* roughness blocking, min(1, G_r, G_i) (10.9-10.11) */
+    stp_fix f; /* Fresnel (10.6-10.8); 1 where g is imaginary (n < 1) */
+} stp_specular_terms;
+stp_specular_terms stp_specular(stp_fix n_dot_h, stp_fix n_dot_e, stp_fix n_dot_l,
+                                stp_fix e_dot_h, stp_fix refraction, stp_fix gloss);
+
+/* MAKE-SHADE (Algorithm 10.5, extended to (10.16)) for one surface point.
+ *   normal     unit surface normal N (from stp_vec3_unity)
+ *   point      the point, in the same frame as the lights' positions
+ *   eye        perspective: the centre of projection; parallel: ignored
+ *   parallel   0: E = eye - point, normalised; 1: E = parallel_dir
+ *   parallel_dir  unit direction towards the viewer (parallel only)
+ * Returns the shade s in [0, 1]:
+ *   s = min(1, BRIGHT * (B*R + sum_j P_j*(R*(N.L_j) + Ks*D*G*F/(N.E)) / (C + U_j)))
+ * over the lights with N.L_j > 0 (none: s = min(1, BRIGHT*B*R)).  The
+ * caller decides back faces (N.E <= 0) before calling: for them this returns
+ * the ambient share only. */
+stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *material,
+                        stp_vec3 normal, stp_vec3 point, stp_vec3 eye, int parallel,
+                        stp_vec3 parallel_dir);
+
+/* INTENSITY (Algorithm 10.6): shade s in [0, 1] (clamped) to a style number
+ * 1..levels, INT(s*(levels-1) + 1), darkest first.  levels in 2..256 (values
+ * outside are clamped).  */
+int stp_intensity_index(stp_fix shade, int levels);
+
+/* The shade a style number stands for: (index-1)/(levels-1), the inverse of
+ * stp_intensity_index up to its quantisation (index clamped to 1..levels). */
+stp_fix stp_intensity_shade(int index, int levels);
+
+/* A style table: levels device codes, darkest first (the seed's
+ * SHADE-STYLES).  stp_style_lookup returns codes[index-1];
+ * stp_style_inverse the index (1..levels) of the first entry equal to code,
+ * or 0 if the code is not in the table. */
+typedef struct stp_style_table {
+    int levels;
+    const uint8_t *codes;
+} stp_style_table;
+uint8_t stp_style_lookup(const stp_style_table *table, int index);
+int stp_style_inverse(const stp_style_table *table, uint8_t code);
+
+/* Gamma table (10.44): out[i] = round(255 * clamp((I/k)^(1/gamma), 0, 1))
+ * with I = i/(levels-1), for i in 0..levels-1.  gamma > 0 (<= 0 is taken as
+ * 1), k > 0 (<= 0 is taken as 1).  levels in 2..256; returns 0, or -1 when
+ * levels is out of range (out untouched).  Error: at most 1 of 255 against
+ * the real function (tests/test_gamma.c). */
+int stp_gamma_table(uint8_t *out, int levels, stp_fix gamma, stp_fix k);
+
+#endif

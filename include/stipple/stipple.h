@@ -1,0 +1,21 @@
+/*
+ * stipple: fixed-point renderer of lit polygon scenes for bilevel, grey and
+ * colour devices.  Include this for the whole public API.
+ *
+ * Naming rule: every public symbol starts with stp_ (types, functions) or
+ * STP_ (macros, enumerators); stp_<module>_<verb> for functions of a module
+ * (stp_fix_mul, stp_cell_bayer), stp_<verb> for the renderer's own calls
+ * (stp_polygon, stp_render).  Private code lives in src/ and its headers are
+ * not installed.
+ */
+#ifndef STIPPLE_STIPPLE_H
+#define STIPPLE_STIPPLE_H
+
+#include "stipple/config.h"
+#include "stipple/fix.h"
+#include "stipple/shade.h"
+#include "stipple/dither.h"
+#include "stipple/port.h"
+#include "stipple/render.h"
+
+#endif

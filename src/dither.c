@@ -1,0 +1,166 @@
+/* Halftone cells and HALFTONE-FILLIN: see include/stipple/dither.h. */
+#include "stipple/dither.h"
+
+#define F STP_FIX_FRAC_BITS
+
+static void cell_clear(stp_cell *cell)
+{
+    int i;
+    cell->kind = STP_CELL_THRESHOLD;
+    cell->width = cell->height = 1;
+    for (i = 0; i < STP_CELL_MAX * STP_CELL_MAX; i++)
+        cell->thresholds[i] = 0;
+    for (i = 0; i < 5; i++)
+        cell->patterns[i] = 0;
+}
+
+/* Rank (0..n*n-1) of entry (x, y) in the Bayer matrix of side n, in the
+ * orientation of ImageMagick's maps: the recursive construction
+ * B(2n)[y][x] = 4 B(n)[y mod n][x mod n] + B(2)[y div n][x div n], except that
+ * the 8x8 map is that construction transposed. */
+static uint32_t bayer_rank(uint32_t n, uint32_t x, uint32_t y)
+{
+    static const uint8_t b2[2][2] = {{0, 2}, {3, 1}};
+    uint32_t rank = 0, size;
+    if (n == 8) {
+        uint32_t t = x;
+        x = y;
+        y = t;
+    }
+    /* Walk from the coarsest 2x2 split down: each level contributes the
+     * quadrant's B(2) value with weight 1, 4, 16, ... from coarse to fine. */
+    for (size = n; size > 1; size /= 2) {
+        uint32_t half = size / 2;
+        uint32_t qx = (x % size) / half, qy = (y % size) / half;
+        rank = rank + b2[qy][qx] * ((n / size) * (n / size));
+    }
+    return rank;
+}
+
+/* Threshold of rank r out of m for a spacing, 0..255. */
+static uint8_t spaced_threshold(uint32_t r, uint32_t m, stp_spacing spacing)
+{
+    stp_fix frac;
+    int64_t v;
+    switch (spacing) {
+    case STP_SPACING_EXPONENTIAL:
+        /* 2^(-5 (m - r) / (m + 1)) */
+        frac = stp_fix_exp2(stp_fix_from_ratio(-5 * (int32_t)(m - r), (int32_t)(m + 1)));
+        v = ((int64_t)frac * 255 + STP_FIX_HALF) >> F;
+        break;
+    case STP_SPACING_CUBIC: {
+        /* ((r+1)/(m+1))^3 exactly in integers */
+        int64_t a = (int64_t)(r + 1), b = (int64_t)(m + 1);
+        v = (255 * a * a * a + (b * b * b) / 2) / (b * b * b);
+        break;
+    }
+    case STP_SPACING_LINEAR:
+    default:
+        /* ceil(255 (r+1) / (m+1)) - 1: ON iff v (m+1) >= 255 (r+1), the
+         * comparison ImageMagick makes with its 8-bit input */
+        v = (255 * (int64_t)(r + 1) + (m + 1) - 1) / (m + 1) - 1;
+        break;
+    }
+    return (uint8_t)(v < 0 ? 0 : (v > 255 ? 255 : v));
+}
+
+int stp_cell_bayer_spaced(stp_cell *cell, int n, stp_spacing spacing)
+{
+    uint32_t x, y, m;
+    if (cell == 0 || (n != 2 && n != 4 && n != 8))
+        return -1;
+    cell_clear(cell);
+    cell->width = cell->height = (uint8_t)n;
+    m = (uint32_t)(n * n);
+    for (y = 0; y < (uint32_t)n; y++)
+        for (x = 0; x < (uint32_t)n; x++)
+            cell->thresholds[y * (uint32_t)n + x] =
+                spaced_threshold(bayer_rank((uint32_t)n, x, y), m, spacing);
+    return 0;
+}
+
+int stp_cell_bayer(stp_cell *cell, int n)
+{
+    return stp_cell_bayer_spaced(cell, n, STP_SPACING_LINEAR);
+}
+
+void stp_cell_seed2x2(stp_cell *cell)
+{
+    cell_clear(cell);
+    cell->width = cell->height = 2;
+    cell->thresholds[0] = 200; /* upper left: last to turn on */
+    cell->thresholds[1] = 100;
+    cell->thresholds[2] = 150;
+    cell->thresholds[3] = 50; /* lower right: first */
+}
+
+int stp_cell_user(stp_cell *cell, int width, int height, const uint8_t *thresholds)
+{
+    int i;
+    if (cell == 0 || thresholds == 0 || width < 1 || height < 1 || width > STP_CELL_MAX ||
+        height > STP_CELL_MAX)
+        return -1;
+    cell_clear(cell);
+    cell->width = (uint8_t)width;
+    cell->height = (uint8_t)height;
+    for (i = 0; i < width * height; i++)
+        cell->thresholds[i] = thresholds[i];
+    return 0;
+}
+
+void stp_cell_pattern2x2(stp_cell *cell)
+{
+    /* bits: (y*2 + x); order lower-right (3), upper-left (0), upper-right (1),
+     * lower-left (2) */
+    cell_clear(cell);
+    cell->kind = STP_CELL_PATTERN;
+    cell->width = cell->height = 2;
+    cell->patterns[0] = 0x0;
+    cell->patterns[1] = 0x8;
+    cell->patterns[2] = 0x9;
+    cell->patterns[3] = 0xB;
+    cell->patterns[4] = 0xF;
+}
+
+void stp_halftone_fillin(uint8_t *row, uint32_t x1, uint32_t x2, uint32_t y,
+                         const stp_cell *cell, uint8_t intensity)
+{
+    /* The cell row is resolved once per span; hx steps and wraps as in the
+     * seed's listing, so the inner loop is a compare and a bit write. */
+    uint32_t w = cell->width, hx = x1 % w, x;
+    if (cell->kind == STP_CELL_PATTERN) {
+        for (x = x1; x <= x2; x++) {
+            uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
+            if (stp_cell_on(cell, x, y, intensity))
+                row[x >> 3] = (uint8_t)(row[x >> 3] | bit);
+            else
+                row[x >> 3] = (uint8_t)(row[x >> 3] & ~bit);
+        }
+        return;
+    }
+    {
+        const uint8_t *cell_row = &cell->thresholds[(y % cell->height) * w];
+        for (x = x1; x <= x2; x++) {
+            uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
+            if (intensity > cell_row[hx])
+                row[x >> 3] = (uint8_t)(row[x >> 3] | bit);
+            else
+                row[x >> 3] = (uint8_t)(row[x >> 3] & ~bit);
+            if (++hx == w)
+                hx = 0;
+        }
+    }
+}
+
+void stp_halftone_row(uint8_t *out, const uint8_t *grey, uint32_t width, uint32_t y,
+                      const stp_cell *cell)
+{
+    uint32_t x;
+    for (x = 0; x < width; x++) {
+        uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
+        if (stp_cell_on(cell, x, y, grey[x]))
+            out[x >> 3] = (uint8_t)(out[x >> 3] | bit);
+        else
+            out[x >> 3] = (uint8_t)(out[x >> 3] & ~bit);
+    }
+}

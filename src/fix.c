@@ -1,0 +1,303 @@
+/* Fixed-point arithmetic: see include/stipple/fix.h for formats and errors. */
+#include "stipple/fix.h"
+#include "fix_private.h"
+
+#define F STP_FIX_FRAC_BITS
+
+stp_fix stp_fix_from_int(int32_t n)
+{
+    return stp_fix_sat64((int64_t)n * STP_FIX_ONE);
+}
+
+stp_fix stp_fix_from_ratio(int32_t num, int32_t den)
+{
+    int64_t n, q;
+    if (den == 0)
+        return num > 0 ? STP_FIX_MAX : (num < 0 ? STP_FIX_MIN : 0);
+    n = (int64_t)num * STP_FIX_ONE;
+    if (den < 0) {
+        n = -n;
+        den = -den;
+    }
+    /* round half away from zero */
+    q = (n >= 0 ? n + den / 2 : n - den / 2) / den;
+    return stp_fix_sat64(q);
+}
+
+stp_fix stp_fix_add(stp_fix a, stp_fix b)
+{
+    return stp_fix_sat64((int64_t)a + b);
+}
+
+stp_fix stp_fix_sub(stp_fix a, stp_fix b)
+{
+    return stp_fix_sat64((int64_t)a - b);
+}
+
+stp_fix stp_fix_mul(stp_fix a, stp_fix b)
+{
+    int64_t p = (int64_t)a * b; /* |p| < 2^62: cannot overflow */
+    int64_t half = (int64_t)1 << (F - 1);
+    /* divide rather than shift so negative values round symmetrically */
+    p = (p >= 0 ? p + half : p - half) / ((int64_t)1 << F);
+    return stp_fix_sat64(p);
+}
+
+stp_fix stp_fix_div(stp_fix a, stp_fix b)
+{
+    if (b == 0)
+        return a > 0 ? STP_FIX_MAX : (a < 0 ? STP_FIX_MIN : 0);
+    /* |a| * 2^F < 2^55: the shifted numerator fits in 64 bits */
+    return stp_fix_sat64(((int64_t)a * STP_FIX_ONE) / b);
+}
+
+uint32_t stp_isqrt64(uint64_t v)
+{
+    /* Digit-by-digit (restoring) square root: exact floor, 32 steps, only
+     * shifts, adds and compares, so it costs the same on every core. */
+    uint64_t root = 0, bit = (uint64_t)1 << 62;
+    while (bit > v)
+        bit >>= 2;
+    while (bit != 0) {
+        if (v >= root + bit) {
+            v -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    return (uint32_t)root;
+}
+
+#if STP_SQRT_FAST
+/* Fast root of a 64-bit value: normalise so the value has its top set bit in
+ * one of the two highest positions, seed from an 8-entry table of
+ * sqrt(m) over [1, 4) and refine with two Newton steps (each doubles the
+ * correct bits: 4 -> 8 -> 16, relative error < 2^-15). */
+static uint32_t fast_sqrt64(uint64_t v)
+{
+    /* sqrt(1 + (i + 1/2) * 3/8) * 2^15: the root at the middle of each of the
+     * 8 sub-ranges of [1, 4) */
+    static const uint16_t seed[8] = {35708, 40960, 45611, 49830, 53719, 57344, 60753, 63982};
+    int shift = 0;
+    uint64_t x;
+    uint32_t y;
+    if (v == 0)
+        return 0;
+    while ((v >> shift) >= ((uint64_t)1 << 2))
+        shift += 2;
+    /* v = m * 2^shift with m in [1, 4): find m's sub-range from its top bits */
+    {
+        uint64_t m32 = shift >= 30 ? v >> (shift - 30) : v << (30 - shift); /* m * 2^30 */
+        uint32_t idx = (uint32_t)(((m32 - ((uint64_t)1 << 30)) * 8) / ((uint64_t)3 << 30));
+        if (idx > 7)
+            idx = 7;
+        /* root = sqrt(m) * 2^(shift/2); seed has 15 fractional bits */
+        x = (uint64_t)seed[idx];
+        x = shift >= 30 ? x << (shift / 2 - 15) : x >> (15 - shift / 2);
+        if (shift / 2 < 15 && x == 0)
+            x = 1;
+    }
+    /* two Newton steps: x = (x + v/x)/2 */
+    x = (x + v / x) >> 1;
+    x = (x + v / x) >> 1;
+    if (x > 0xFFFFFFFFu)
+        x = 0xFFFFFFFFu;
+    y = (uint32_t)x;
+    return y;
+}
+#define ROOT64(v) fast_sqrt64(v)
+#else
+#define ROOT64(v) stp_isqrt64(v)
+#endif
+
+stp_fix stp_fix_sqrt(stp_fix a)
+{
+    if (a <= 0)
+        return 0;
+    /* sqrt(a * 2^F) has F fractional bits: a*2^F < 2^55 */
+    return (stp_fix)ROOT64((uint64_t)a << F);
+}
+
+stp_fix stp_fix_sqrt_wide(int64_t v)
+{
+    uint32_t root;
+    if (v <= 0)
+        return 0;
+    root = ROOT64((uint64_t)v);
+    return root > (uint32_t)STP_FIX_MAX ? STP_FIX_MAX : (stp_fix)root;
+}
+
+stp_fix stp_fix_log2(stp_fix a)
+{
+    /* Integer part from the position of the top bit; fraction by repeated
+     * squaring of the mantissa in [1, 2) (one result bit per square). */
+    int32_t ip = 0;
+    uint64_t m;
+    int i;
+    int64_t result;
+    if (a <= 0)
+        return STP_FIX_MIN;
+    m = (uint64_t)a;
+    while (m >= ((uint64_t)2 << F)) {
+        m >>= 1;
+        ip++;
+    }
+    while (m < ((uint64_t)1 << F)) {
+        m <<= 1;
+        ip--;
+    }
+    /* m in [2^F, 2^(F+1)): mantissa with F fractional bits; keep 30 bits of
+     * it so the squares keep precision beyond F */
+    m <<= (30 - F);
+    result = (int64_t)ip * STP_FIX_ONE;
+    for (i = F - 1; i >= 0; i--) {
+        m = (m * m) >> 30;
+        if (m >= ((uint64_t)2 << 30)) {
+            m >>= 1;
+            result += (int64_t)1 << i;
+        }
+    }
+    return stp_fix_sat64(result);
+}
+
+stp_fix stp_fix_exp2(stp_fix a)
+{
+    /* 2^a = 2^ip * 2^frac; 2^frac from the product of 2^(2^-i) for the set
+     * bits of frac (table of 2^(2^-i) in Q2.30). */
+    static const uint32_t pow2_inv[24] = {
+        1518500250u, 1276901417u, 1170923762u, 1121280436u, 1097253708u, 1085434106u,
+        1079572136u, 1076653033u, 1075196443u, 1074468888u, 1074105294u, 1073923544u,
+        1073832680u, 1073787251u, 1073764537u, 1073753181u, 1073747502u, 1073744663u,
+        1073743244u, 1073742534u, 1073742179u, 1073742001u, 1073741913u, 1073741868u};
+    int32_t ip = (int32_t)stp_asr64(a, F); /* floor */
+    uint32_t frac = (uint32_t)(a - (stp_fix)((uint32_t)ip << F));
+    uint64_t r = (uint64_t)1 << 30; /* Q2.30 */
+    int i;
+    /* ip in [-2^(31-F), 2^(31-F)): shift results below fit the checks */
+    if (ip < -(int32_t)(F + 31))
+        return 0;
+    for (i = 0; i < F; i++) {
+        if (frac & ((uint32_t)1 << (F - 1 - i)))
+            r = (r * pow2_inv[i] + ((uint64_t)1 << 29)) >> 30;
+    }
+    /* r in [1, 2) Q30; result = r * 2^ip with F fractional bits */
+    {
+        int shift = ip + F - 30; /* r * 2^(ip) in Q(F) = r >> (30 - F - ip) */
+        if (shift >= 0) {
+            if (shift > 31 || (r << shift) > (uint64_t)STP_FIX_MAX)
+                return STP_FIX_MAX;
+            return (stp_fix)(r << shift);
+        }
+        if (-shift >= 63)
+            return 0;
+        return (stp_fix)((r + ((uint64_t)1 << (-shift - 1))) >> (-shift));
+    }
+}
+
+stp_fix stp_fix_pow(stp_fix base, stp_fix e)
+{
+    stp_fix lg;
+    if (base <= 0)
+        return 0;
+    lg = stp_fix_log2(base);
+    return stp_fix_exp2(stp_fix_mul(lg, e));
+}
+
+/* sin(x) for x in [0, 90] degrees: odd polynomial in the angle in
+ * quarter-turns, Q30 coefficients of a least-squares fit (error < 2e-6). */
+static int64_t sin_quadrant_q30(int64_t t_q30)
+{
+    /* sin(pi/2 * t) = t*(c1 + t^2*(c3 + t^2*(c5 + t^2*c7))) for t in [0,1] */
+    const int64_t c1 = 1686625467;  /* 1.5707924 */
+    const int64_t c3 = -693536212;  /* -0.6459059 */
+    const int64_t c5 = 85324513;    /* 0.0794647 */
+    const int64_t c7 = -4673628;    /* -0.0043527 */
+    int64_t t2 = (t_q30 * t_q30) >> 30;
+    int64_t p = c7;
+    p = c5 + stp_asr64(p * t2, 30);
+    p = c3 + stp_asr64(p * t2, 30);
+    p = c1 + stp_asr64(p * t2, 30);
+    return stp_asr64(p * t_q30, 30);
+}
+
+stp_fix stp_fix_sin_deg(stp_fix degrees)
+{
+    /* reduce to [0, 360) in Q(F) then to a quadrant */
+    int64_t full = (int64_t)360 << F;
+    int64_t d = (int64_t)degrees % full;
+    int64_t quarter = (int64_t)90 << F;
+    int64_t t_q30, s;
+    int quadrant, neg = 0;
+    if (d < 0)
+        d += full;
+    quadrant = (int)(d / quarter);
+    d -= quadrant * quarter;
+    if (quadrant & 1)
+        d = quarter - d;
+    if (quadrant >= 2)
+        neg = 1;
+    t_q30 = (d << 30) / quarter;
+    s = stp_asr64(sin_quadrant_q30(t_q30), 30 - F);
+    return (stp_fix)(neg ? -s : s);
+}
+
+stp_fix stp_fix_cos_deg(stp_fix degrees)
+{
+    return stp_fix_sin_deg(stp_fix_add(degrees, (stp_fix)90 << F));
+}
+
+stp_fix stp_vec3_dot(stp_vec3 a, stp_vec3 b)
+{
+    /* each product < 2^62 in magnitude; three of them < 2^63.6 could
+     * overflow, so sum two at a time with a halved scale */
+    int64_t s = ((int64_t)a.x * b.x) / 2 + ((int64_t)a.y * b.y) / 2 + ((int64_t)a.z * b.z) / 2;
+    int64_t half = (int64_t)1 << (F - 2);
+    s = (s >= 0 ? s + half : s - half) / ((int64_t)1 << (F - 1));
+    return stp_fix_sat64(s);
+}
+
+static uint32_t abs32(int32_t v)
+{
+    return v < 0 ? (uint32_t)0 - (uint32_t)v : (uint32_t)v;
+}
+
+stp_fix stp_vec3_unity(stp_vec3 v, stp_vec3 *out)
+{
+    uint32_t m = abs32(v.x);
+    int64_t x, y, z, len_scaled;
+    uint64_t sum;
+    int up = 0;
+    if (abs32(v.y) > m)
+        m = abs32(v.y);
+    if (abs32(v.z) > m)
+        m = abs32(v.z);
+    out->x = out->y = out->z = 0;
+    if (m == 0)
+        return 0;
+    /* scale so the largest component is in [2^29, 2^30): the squares' sum
+     * < 3 * 2^60 fits, and the direction keeps ~30 bits whatever |v| is */
+    while ((m << up) < ((uint32_t)1 << 29))
+        up++;
+    x = (int64_t)v.x * ((int64_t)1 << up);
+    y = (int64_t)v.y * ((int64_t)1 << up);
+    z = (int64_t)v.z * ((int64_t)1 << up);
+    if (m >= ((uint32_t)1 << 30)) { /* up == 0 and m up to 2^31: scale down */
+        x /= 2;
+        y /= 2;
+        z /= 2;
+        up = -1;
+    }
+    sum = (uint64_t)(x * x) + (uint64_t)(y * y) + (uint64_t)(z * z);
+    len_scaled = (int64_t)ROOT64(sum);
+    if (len_scaled == 0)
+        return 0;
+    out->x = (stp_fix)((x * STP_FIX_ONE) / len_scaled);
+    out->y = (stp_fix)((y * STP_FIX_ONE) / len_scaled);
+    out->z = (stp_fix)((z * STP_FIX_ONE) / len_scaled);
+    /* |v| = len_scaled / 2^up */
+    if (up >= 0)
+        return (stp_fix)(len_scaled >> up);
+    return stp_fix_sat64(len_scaled * 2);
+}

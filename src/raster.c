@@ -1,0 +1,462 @@
+/* The display-file interpreter: hidden surfaces, scan conversion and band
+ * output.  See the fill rule in include/stipple/render.h. */
+#include "render_private.h"
+
+#define SUB STP_SUBPIXEL_BITS
+#define HALF_PIXEL (1 << (SUB - 1))
+
+size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
+{
+    switch (fmt) {
+    case STP_PIXEL_MONO1: return ((size_t)width + 7u) / 8u;
+    case STP_PIXEL_GREY8:
+    case STP_PIXEL_STYLE8: return width;
+    case STP_PIXEL_RGB888: return (size_t)width * 3u;
+    default: return 0;
+    }
+}
+
+/* Everything one frame's interpretation needs, built once per stp_render. */
+typedef struct frame {
+    stp_renderer *r;
+    const stp_port *port;
+    const stp_output *out;
+    const stp_cell *cell;
+    stp_cell default_cell;
+    size_t stride;
+    uint8_t *band;
+    uint16_t *zbuf;
+    uint32_t y0, rows; /* current band */
+    int32_t key_min, key_max; /* depth-key range of the visible polygons */
+} frame;
+
+/* 8-bit drive value of a style index (gamma table or linear). */
+static uint8_t level_of(const frame *fr, int index)
+{
+    int levels = fr->r->levels;
+    if (index < 1)
+        index = 1;
+    if (index > levels)
+        index = levels;
+    if (fr->out->gamma)
+        return fr->out->gamma[index - 1];
+    return (uint8_t)(((index - 1) * 255 + (levels - 1) / 2) / (levels - 1));
+}
+
+static uint8_t style_code(const frame *fr, int index)
+{
+    if (fr->out->styles)
+        return stp_style_lookup(fr->out->styles, index);
+    return (uint8_t)index;
+}
+
+/* Paint pixels x1..x2 of band row `row` (absolute y) in a style. */
+static void put_span(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style)
+{
+    uint8_t *row = fr->band + (size_t)(y - fr->y0) * fr->stride;
+    uint32_t x;
+    switch (fr->port->format) {
+    case STP_PIXEL_MONO1:
+        stp_halftone_fillin(row, x1, x2, y, fr->cell, level_of(fr, style));
+        break;
+    case STP_PIXEL_GREY8: {
+        uint8_t v = level_of(fr, style);
+        for (x = x1; x <= x2; x++)
+            row[x] = v;
+        break;
+    }
+    case STP_PIXEL_RGB888: {
+        uint8_t v = level_of(fr, style);
+        for (x = x1; x <= x2; x++)
+            row[3 * x] = row[3 * x + 1] = row[3 * x + 2] = v;
+        break;
+    }
+    default: {
+        uint8_t v = style_code(fr, style);
+        for (x = x1; x <= x2; x++)
+            row[x] = v;
+        break;
+    }
+    }
+}
+
+#if STP_WITH_ZBUFFER
+/* Depth-tested span: runs of pixels that pass are painted with put_span, so
+ * the halftone inner loop stays the same as without a Z buffer. */
+static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style,
+                       int64_t d, int64_t ddx)
+{
+    uint16_t *z = fr->zbuf + (size_t)(y - fr->y0) * fr->r->width;
+    uint32_t x, run = 0;
+    int in_run = 0;
+    for (x = x1; x <= x2; x++, d += ddx) {
+        int64_t dv = stp_asr64(d, 12);
+        uint16_t depth = (uint16_t)(dv < 1 ? 1 : (dv > 65535 ? 65535 : dv));
+        if (depth > z[x]) {
+            z[x] = depth;
+            if (!in_run) {
+                run = x;
+                in_run = 1;
+            }
+        } else if (in_run) {
+            put_span(fr, y, run, x - 1, style);
+            in_run = 0;
+        }
+    }
+    if (in_run)
+        put_span(fr, y, run, x2, style);
+}
+
+/* Depth key mapped to the Z buffer's 1..65535 with 12 fractional bits. */
+static int64_t depth_q12(const frame *fr, int32_t key)
+{
+    int64_t range = (int64_t)fr->key_max - fr->key_min;
+    if (range <= 0)
+        return (int64_t)65535 << 12;
+    return ((int64_t)1 << 12) + (((int64_t)key - fr->key_min) * ((int64_t)65534 << 12)) / range;
+}
+#endif
+
+/* Scan-convert the polygon whose header is df[at] into the current band. */
+static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z)
+{
+    stp_renderer *r = fr->r;
+    const stp_instr *v = &r->df[at];
+    int n = v[0].op, i, ne = 0;
+    int32_t ymin = INT32_MAX, ymax = INT32_MIN;
+    int32_t band_top = (int32_t)(fr->y0 << SUB), band_bottom = (int32_t)((fr->y0 + fr->rows) << SUB);
+    uint32_t y, y_first, y_last;
+#if STP_WITH_ZBUFFER
+    int64_t plane_c = 0, ddx = 0, ddy = 0, xc = 0, yc = 0, dc = 0;
+#endif
+    for (i = 0; i < n; i++) {
+        if (v[i].y < ymin)
+            ymin = v[i].y;
+        if (v[i].y > ymax)
+            ymax = v[i].y;
+    }
+    if (ymax <= band_top || ymin >= band_bottom)
+        return;
+    /* edges oriented top to bottom, horizontal ones dropped */
+    for (i = 0; i < n; i++) {
+        const stp_instr *a = &v[i], *b = &v[(i + 1) % n];
+        stp_edge *e = &r->edges[ne];
+        if (a->y == b->y)
+            continue;
+        if (a->y > b->y) {
+            const stp_instr *t = a;
+            a = b;
+            b = t;
+        }
+        e->xa = a->x;
+        e->ya = a->y;
+        e->yb = b->y;
+        e->slope = (((int64_t)b->x - a->x) * 65536) / ((int64_t)b->y - a->y);
+        ne++;
+    }
+#if STP_WITH_ZBUFFER
+    if (use_z) {
+        /* depth plane through the projected vertices, by Newell's sums on
+         * (x, y, depth): exact for planar polygons, a best fit otherwise */
+        int64_t a = 0, b = 0, c = 0, sx = 0, sy = 0, sd = 0;
+        for (i = 0; i < n; i++) {
+            const stp_instr *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
+            int64_t dp = depth_q12(fr, p->z) >> 12, dq = depth_q12(fr, q->z) >> 12;
+            a += ((int64_t)p->y - q->y) * (dp + dq);
+            b += (dp - dq) * ((int64_t)p->x + q->x);
+            c += ((int64_t)p->x - q->x) * ((int64_t)p->y + q->y);
+            sx += q->x;
+            sy += q->y;
+            sd += depth_q12(fr, q->z);
+        }
+        plane_c = c;
+        if (c != 0) {
+            /* gradients per subpixel unit with 12 fractional bits */
+            ddx = (-a * 4096) / c;
+            ddy = (-b * 4096) / c;
+            if (ddx > ((int64_t)1 << 40)) ddx = (int64_t)1 << 40;
+            if (ddx < -((int64_t)1 << 40)) ddx = -((int64_t)1 << 40);
+            if (ddy > ((int64_t)1 << 40)) ddy = (int64_t)1 << 40;
+            if (ddy < -((int64_t)1 << 40)) ddy = -((int64_t)1 << 40);
+        }
+        xc = sx / n;
+        yc = sy / n;
+        dc = sd / n;
+    }
+#else
+    (void)use_z;
+#endif
+    /* rows whose centres lie in [ymin, ymax) and in the band */
+    y_first = (uint32_t)((ymin < band_top ? band_top : ymin) >> SUB);
+    y_last = (uint32_t)((ymax > band_bottom ? band_bottom : ymax) >> SUB);
+    if (y_last >= fr->y0 + fr->rows)
+        y_last = fr->y0 + fr->rows - 1;
+    for (y = y_first; y <= y_last; y++) {
+        int32_t yc_row = (int32_t)(y << SUB) + HALF_PIXEL;
+        int nc = 0, k;
+        for (i = 0; i < ne; i++) {
+            const stp_edge *e = &r->edges[i];
+            if (e->ya <= yc_row && yc_row < e->yb) {
+                int64_t x = e->xa + stp_floordiv64((int64_t)(yc_row - e->ya) * e->slope, 65536);
+                int32_t xv = (int32_t)x;
+                /* insertion sort: crossings are few */
+                for (k = nc; k > 0 && r->crossings[k - 1] > xv; k--)
+                    r->crossings[k] = r->crossings[k - 1];
+                r->crossings[k] = xv;
+                nc++;
+            }
+        }
+        for (k = 0; k + 1 < nc; k += 2) {
+            /* pixels whose centre c satisfies x_left <= c < x_right */
+            int64_t xl = r->crossings[k], xr = r->crossings[k + 1];
+            int64_t p1 = stp_floordiv64(xl - HALF_PIXEL + (1 << SUB) - 1, 1 << SUB);
+            int64_t p2 = stp_floordiv64(xr - HALF_PIXEL + (1 << SUB) - 1, 1 << SUB) - 1;
+            if (p1 < 0)
+                p1 = 0;
+            if (p2 > (int64_t)r->width - 1)
+                p2 = (int64_t)r->width - 1;
+            if (p1 > p2)
+                continue;
+#if STP_WITH_ZBUFFER
+            if (use_z) {
+                int64_t d;
+                if (plane_c == 0)
+                    continue; /* edge-on: no area on screen */
+                d = dc + ddx * (((int64_t)p1 << SUB) + HALF_PIXEL - xc) +
+                    ddy * ((int64_t)yc_row - yc);
+                put_span_z(fr, y, (uint32_t)p1, (uint32_t)p2, style, d, ddx * (1 << SUB));
+                continue;
+            }
+#endif
+            put_span(fr, y, (uint32_t)p1, (uint32_t)p2, style);
+        }
+    }
+}
+
+#if STP_WITH_LINES
+/* Bresenham from pixel centre to pixel centre; only the rows of the band. */
+static void draw_line(const frame *fr, const stp_instr *a, const stp_instr *b, int style)
+{
+    int32_t x0 = a->x >> SUB, y0 = a->y >> SUB, x1 = b->x >> SUB, y1 = b->y >> SUB;
+    int32_t dx = x1 > x0 ? x1 - x0 : x0 - x1, dy = y1 > y0 ? y0 - y1 : y1 - y0;
+    int32_t sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1, err = dx + dy;
+    int32_t w = (int32_t)fr->r->width - 1, h = (int32_t)fr->r->height - 1;
+    for (;;) {
+        int32_t px = x0 > w ? w : x0, py = y0 > h ? h : y0;
+        if ((uint32_t)py >= fr->y0 && (uint32_t)py < fr->y0 + fr->rows)
+            put_span(fr, (uint32_t)py, (uint32_t)px, (uint32_t)px, style);
+        if (x0 == x1 && y0 == y1)
+            break;
+        {
+            int32_t e2 = 2 * err;
+            if (e2 >= dy) {
+                err += dy;
+                x0 += sx;
+            }
+            if (e2 <= dx) {
+                err += dx;
+                y0 += sy;
+            }
+        }
+    }
+}
+#endif
+
+/* Walk the visible segments in display order: polygons (unless skip_polygons)
+ * and lines, each with the style in force. */
+static void replay(const frame *fr, int skip_polygons, int use_z)
+{
+    stp_renderer *r = fr->r;
+    int s;
+    for (s = 0; s < STP_MAX_SEGMENTS; s++) {
+        const stp_segment *seg = &r->segments[s];
+        int style = r->fill_style, line_style = r->fill_style;
+        const stp_instr *pen = 0;
+        uint32_t k;
+        if (!seg->used || !seg->visible)
+            continue;
+        for (k = seg->start; k < seg->end; k++) {
+            const stp_instr *in = &r->df[k];
+            if (in->op >= 3) {
+                if (!skip_polygons)
+                    draw_polygon(fr, k, style, use_z);
+                k += (uint32_t)in->op - 1;
+            } else if (in->op == STP_OP_SHADE) {
+                style = in->x;
+            } else if (in->op == STP_OP_LINE_STYLE) {
+                line_style = in->x;
+            } else if (in->op == STP_OP_MOVE) {
+                pen = in;
+            } else if (in->op == STP_OP_LINE) {
+#if STP_WITH_LINES
+                if (pen)
+                    draw_line(fr, pen, in, line_style);
+#endif
+                pen = in;
+            }
+        }
+        (void)line_style;
+    }
+}
+
+#if STP_WITH_PAINTER
+static int sort_less(const stp_sort_entry *a, const stp_sort_entry *b)
+{
+    return a->key != b->key ? a->key < b->key : a->index < b->index;
+}
+
+/* Heap sort: in place, no recursion, O(n log n); ties by display order so
+ * the result does not depend on the sort's own order of work. */
+static void sort_entries(stp_sort_entry *e, size_t n)
+{
+    size_t start = n / 2, end = n;
+    while (end > 1) {
+        size_t root, child;
+        stp_sort_entry t;
+        if (start > 0) {
+            start--;
+        } else {
+            end--;
+            t = e[0];
+            e[0] = e[end];
+            e[end] = t;
+        }
+        root = start;
+        while ((child = 2 * root + 1) < end) {
+            if (child + 1 < end && sort_less(&e[child], &e[child + 1]))
+                child++;
+            if (!sort_less(&e[root], &e[child]))
+                break;
+            t = e[root];
+            e[root] = e[child];
+            e[child] = t;
+            root = child;
+        }
+    }
+}
+#endif
+
+/* Collect visible polygons for the painter (sort != NULL: entries keyed by
+ * their farthest vertex) and the depth-key range. */
+static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
+{
+    stp_renderer *r = fr->r;
+    uint32_t count = 0, k;
+    int s, i;
+    fr->key_min = INT32_MAX;
+    fr->key_max = INT32_MIN;
+    for (s = 0; s < STP_MAX_SEGMENTS; s++) {
+        const stp_segment *seg = &r->segments[s];
+        int style = r->fill_style;
+        if (!seg->used || !seg->visible)
+            continue;
+        for (k = seg->start; k < seg->end; k++) {
+            const stp_instr *in = &r->df[k];
+            if (in->op == STP_OP_SHADE)
+                style = in->x;
+            if (in->op >= 3) {
+                int32_t far_key = INT32_MAX;
+                for (i = 0; i < in->op; i++) {
+                    int32_t z = in[i].z;
+                    if (z < far_key)
+                        far_key = z;
+                    if (z < fr->key_min)
+                        fr->key_min = z;
+                    if (z > fr->key_max)
+                        fr->key_max = z;
+                }
+                if (sort) {
+                    sort[count].index = k;
+                    sort[count].key = far_key;
+                    sort[count].style = (uint16_t)style;
+                }
+                count++;
+                k += (uint32_t)in->op - 1;
+            }
+        }
+    }
+    return count;
+}
+
+int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
+               const stp_frame_memory *mem)
+{
+    frame fr;
+    uint32_t y0, polygons = 0;
+    int background_style;
+    stp_hidden hidden;
+    if (r == 0 || port == 0 || output == 0 || mem == 0 || port->flush == 0 || mem->band == 0)
+        return STP_ERR_ARG;
+    if (port->width != r->width || port->height != r->height)
+        return STP_ERR_ARG;
+    fr.stride = stp_row_bytes(port->format, port->width);
+    if (fr.stride == 0 || mem->band_rows < 1 || mem->band_rows > r->height)
+        return STP_ERR_ARG;
+    if (mem->band_size < fr.stride * mem->band_rows)
+        return STP_ERR_MEMORY;
+    hidden = output->hidden;
+    if (hidden == STP_HIDDEN_ZBUFFER) {
+#if STP_WITH_ZBUFFER
+        if (mem->zbuf == 0 || mem->zbuf_count < (size_t)r->width * mem->band_rows)
+            return STP_ERR_MEMORY;
+#else
+        return STP_ERR_UNSUPPORTED;
+#endif
+    } else if (hidden == STP_HIDDEN_PAINTER) {
+#if STP_WITH_PAINTER
+        if (mem->sort == 0 || mem->sort_count < stp_polygon_count(r))
+            return STP_ERR_MEMORY;
+#else
+        return STP_ERR_UNSUPPORTED;
+#endif
+    } else if (hidden != STP_HIDDEN_NONE) {
+        return STP_ERR_ARG;
+    }
+    fr.r = r;
+    fr.port = port;
+    fr.out = output;
+    fr.band = mem->band;
+    fr.zbuf = mem->zbuf;
+    if (output->cell) {
+        fr.cell = output->cell;
+    } else {
+        (void)stp_cell_bayer(&fr.default_cell, 4);
+        fr.cell = &fr.default_cell;
+    }
+    background_style = stp_intensity_index(output->background, r->levels);
+
+    polygons = scan_polygons(&fr, hidden == STP_HIDDEN_PAINTER ? mem->sort : 0);
+#if STP_WITH_PAINTER
+    if (hidden == STP_HIDDEN_PAINTER)
+        sort_entries(mem->sort, polygons);
+#endif
+
+    for (y0 = 0; y0 < r->height; y0 += mem->band_rows) {
+        uint32_t y;
+        fr.y0 = y0;
+        fr.rows = r->height - y0 < mem->band_rows ? r->height - y0 : mem->band_rows;
+        for (y = y0; y < y0 + fr.rows; y++)
+            put_span(&fr, y, 0, r->width - 1, background_style);
+#if STP_WITH_ZBUFFER
+        if (hidden == STP_HIDDEN_ZBUFFER) {
+            size_t i, n = (size_t)r->width * fr.rows;
+            for (i = 0; i < n; i++)
+                fr.zbuf[i] = 0; /* farther than any polygon (they map to >= 1) */
+        }
+#endif
+#if STP_WITH_PAINTER
+        if (hidden == STP_HIDDEN_PAINTER) {
+            uint32_t i;
+            for (i = 0; i < polygons; i++)
+                draw_polygon(&fr, mem->sort[i].index, mem->sort[i].style, 0);
+            replay(&fr, 1, 0); /* lines on top, in display order */
+        } else
+#endif
+        {
+            replay(&fr, 0, hidden == STP_HIDDEN_ZBUFFER);
+        }
+        if (port->flush(port, y0, fr.rows, fr.band, fr.stride) < 0)
+            return STP_ERR_PORT;
+    }
+    return STP_OK;
+}

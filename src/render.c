@@ -1,0 +1,591 @@
+/* The display file: viewing, segments and DISPLAY-FILE-ENTER (transform,
+ * SHADE-CHECK, clip, project, store).  See include/stipple/render.h. */
+#include "render_private.h"
+
+#define F STP_FIX_FRAC_BITS
+#define ONE STP_FIX_ONE
+
+size_t stp_renderer_size(void)
+{
+    return sizeof(stp_renderer);
+}
+
+static void world_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out);
+
+stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display_file,
+                                  uint32_t capacity, uint32_t width, uint32_t height)
+{
+    stp_renderer *r = (stp_renderer *)mem;
+    stp_view view;
+    int i;
+    if (mem == 0 || mem_size < sizeof(stp_renderer) || display_file == 0 || capacity == 0 ||
+        width < 1 || height < 1 || width > 32767 || height > 32767)
+        return 0;
+    r->df = display_file;
+    r->capacity = capacity;
+    r->used = 0;
+    r->width = width;
+    r->height = height;
+    for (i = 0; i < STP_MAX_SEGMENTS; i++)
+        r->segments[i].used = 0;
+    r->open_segment = -1;
+    stp_lighting_default(&r->user_lighting);
+    r->segment_lighting = r->user_lighting;
+    stp_material_default(&r->material);
+    r->shading = 0;
+    r->levels = 16;
+    r->fill_style = 16;
+    r->backface_removal = 0;
+    r->current_style = -1;
+    r->current_line_style = -1;
+    r->last_shade = -1;
+    r->pen_valid = 0;
+    view.from.x = view.from.y = 0;
+    view.from.z = -ONE;
+    view.at.x = view.at.y = view.at.z = 0;
+    view.up.x = view.up.z = 0;
+    view.up.y = ONE;
+    view.fov_degrees = 90 * ONE;
+    view.window_half = ONE;
+    view.hither = ONE >> 8;
+    view.projection = STP_PERSPECTIVE;
+    (void)stp_set_view(r, &view);
+    return r;
+}
+
+static stp_vec3 cross(stp_vec3 a, stp_vec3 b)
+{
+    stp_vec3 c;
+    c.x = stp_fix_sat64(stp_asr64((int64_t)a.y * b.z - (int64_t)a.z * b.y, F));
+    c.y = stp_fix_sat64(stp_asr64((int64_t)a.z * b.x - (int64_t)a.x * b.z, F));
+    c.z = stp_fix_sat64(stp_asr64((int64_t)a.x * b.y - (int64_t)a.y * b.x, F));
+    return c;
+}
+
+int stp_set_view(stp_renderer *r, const stp_view *v)
+{
+    stp_vec3 dir, right, up;
+    uint32_t short_side;
+    if (r == 0 || v == 0)
+        return STP_ERR_ARG;
+    dir.x = stp_fix_sub(v->at.x, v->from.x);
+    dir.y = stp_fix_sub(v->at.y, v->from.y);
+    dir.z = stp_fix_sub(v->at.z, v->from.z);
+    if (stp_vec3_unity(dir, &dir) == 0)
+        return STP_ERR_VIEW;
+    {
+        stp_vec3 upn;
+        if (stp_vec3_unity(v->up, &upn) == 0)
+            return STP_ERR_VIEW;
+        /* right = dir x up; a short cross product means up is (nearly)
+         * along the line of sight: no roll can be derived */
+        right = cross(dir, upn);
+        if (stp_vec3_unity(right, &right) < (ONE >> 10))
+            return STP_ERR_VIEW;
+    }
+    up = cross(right, dir);
+    (void)stp_vec3_unity(up, &up);
+    if (v->hither <= 0)
+        return STP_ERR_VIEW;
+    short_side = r->width < r->height ? r->width : r->height;
+    if (v->projection == STP_PERSPECTIVE) {
+        /* focal = (short/2) / tan(fov/2), in pixels, F fractional bits */
+        stp_fix half = v->fov_degrees / 2, s, c;
+        if (v->fov_degrees <= 0 || v->fov_degrees >= 180 * ONE)
+            return STP_ERR_VIEW;
+        s = stp_fix_sin_deg(half);
+        c = stp_fix_cos_deg(half);
+        if (s <= 0)
+            return STP_ERR_VIEW;
+        r->focal = stp_fix_sat64(((int64_t)short_side * c * (ONE / 2)) / s);
+    } else if (v->projection == STP_PARALLEL) {
+        if (v->window_half <= 0)
+            return STP_ERR_VIEW;
+        r->focal = stp_fix_sat64(((int64_t)short_side * ONE * (ONE / 2)) / v->window_half);
+    } else {
+        return STP_ERR_ARG;
+    }
+    r->from = v->from;
+    r->forward = dir;
+    r->right = right;
+    r->up = up;
+    r->projection = v->projection;
+    r->hither = v->hither;
+    r->pen_valid = 0;
+    return STP_OK;
+}
+
+void stp_set_light(stp_renderer *r, stp_vec3 position, stp_fix brightness, stp_fix background)
+{
+    stp_lighting *l = &r->user_lighting;
+    l->background = stp_fix_clamp(background, 0, ONE);
+    l->brightness = brightness < 0 ? 0 : brightness;
+    l->count = 1;
+    l->lights[0].position = position;
+    l->lights[0].power = ONE - l->background;
+}
+
+int stp_set_lighting(stp_renderer *r, const stp_lighting *lighting)
+{
+    if (r == 0 || lighting == 0 || lighting->count < 0 || lighting->count > STP_MAX_LIGHTS)
+        return STP_ERR_ARG;
+    r->user_lighting = *lighting;
+    r->user_lighting.background = stp_fix_clamp(lighting->background, 0, ONE);
+    if (r->user_lighting.brightness < 0)
+        r->user_lighting.brightness = 0;
+    return STP_OK;
+}
+
+void stp_set_object_shade(stp_renderer *r, const stp_material *material)
+{
+    r->material = *material;
+}
+
+void stp_set_shading(stp_renderer *r, int on)
+{
+    r->shading = on != 0;
+}
+
+void stp_set_fill_style(stp_renderer *r, int index)
+{
+    r->fill_style = index < 1 ? 1 : (index > r->levels ? r->levels : index);
+}
+
+int stp_set_levels(stp_renderer *r, int levels)
+{
+    if (r == 0 || levels < 2 || levels > 256)
+        return STP_ERR_ARG;
+    r->levels = levels;
+    if (r->fill_style > levels)
+        r->fill_style = levels;
+    r->current_style = -1;
+    return STP_OK;
+}
+
+void stp_set_backface_removal(stp_renderer *r, int on)
+{
+    r->backface_removal = on != 0;
+}
+
+/* ---- segments ---- */
+
+static int find_segment(const stp_renderer *r, int id)
+{
+    int i;
+    for (i = 0; i < STP_MAX_SEGMENTS; i++)
+        if (r->segments[i].used && r->segments[i].id == id)
+            return i;
+    return -1;
+}
+
+int stp_segment_create(stp_renderer *r, int id)
+{
+    int i, j;
+    if (r == 0 || id < 0 || id > 32767)
+        return STP_ERR_ARG;
+    if (r->open_segment >= 0 || find_segment(r, id) >= 0)
+        return STP_ERR_SEGMENT;
+    for (i = 0; i < STP_MAX_SEGMENTS && r->segments[i].used; i++)
+        ;
+    if (i == STP_MAX_SEGMENTS)
+        return STP_ERR_FULL;
+    r->segments[i].used = 1;
+    r->segments[i].open = 1;
+    r->segments[i].visible = 1;
+    r->segments[i].id = id;
+    r->segments[i].start = r->segments[i].end = r->used;
+    r->open_segment = i;
+    r->current_style = -1;
+    r->current_line_style = -1;
+    r->pen_valid = 0;
+    /* COPY-LIGHT: the lighting belongs to the view; fix it for this segment
+     * with the lights in view coordinates */
+    r->segment_lighting = r->user_lighting;
+    for (j = 0; j < r->segment_lighting.count; j++)
+        world_to_view(r, r->user_lighting.lights[j].position,
+                      &r->segment_lighting.lights[j].position);
+    return STP_OK;
+}
+
+int stp_segment_close(stp_renderer *r)
+{
+    if (r == 0)
+        return STP_ERR_ARG;
+    if (r->open_segment < 0)
+        return STP_ERR_SEGMENT;
+    r->segments[r->open_segment].open = 0;
+    r->open_segment = -1;
+    return STP_OK;
+}
+
+int stp_segment_delete(stp_renderer *r, int id)
+{
+    int s, i;
+    uint32_t start, len, k;
+    if (r == 0)
+        return STP_ERR_ARG;
+    s = find_segment(r, id);
+    if (s < 0 || r->segments[s].open)
+        return STP_ERR_SEGMENT;
+    start = r->segments[s].start;
+    len = r->segments[s].end - start;
+    for (k = start; k + len < r->used; k++)
+        r->df[k] = r->df[k + len];
+    r->used -= len;
+    r->segments[s].used = 0;
+    for (i = 0; i < STP_MAX_SEGMENTS; i++) {
+        if (r->segments[i].used && r->segments[i].start >= start + len) {
+            r->segments[i].start -= len;
+            r->segments[i].end -= len;
+        }
+    }
+    return STP_OK;
+}
+
+int stp_segment_visibility(stp_renderer *r, int id, int visible)
+{
+    int s;
+    if (r == 0)
+        return STP_ERR_ARG;
+    s = find_segment(r, id);
+    if (s < 0)
+        return STP_ERR_SEGMENT;
+    r->segments[s].visible = visible != 0;
+    return STP_OK;
+}
+
+uint32_t stp_display_file_used(const stp_renderer *r)
+{
+    return r->used;
+}
+
+uint32_t stp_polygon_count(const stp_renderer *r)
+{
+    uint32_t count = 0, k;
+    int i;
+    for (i = 0; i < STP_MAX_SEGMENTS; i++) {
+        const stp_segment *s = &r->segments[i];
+        if (!s->used || !s->visible)
+            continue;
+        for (k = s->start; k < s->end; k++) {
+            if (r->df[k].op >= 3) {
+                count++;
+                k += (uint32_t)r->df[k].op - 1;
+            }
+        }
+    }
+    return count;
+}
+
+stp_fix stp_last_shade(const stp_renderer *r)
+{
+    return r->last_shade;
+}
+
+/* ---- transform, clip, project ---- */
+
+static void world_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
+{
+    /* differences in 64 bits: p - from may exceed stp_fix's range */
+    int64_t dx = (int64_t)p.x - r->from.x, dy = (int64_t)p.y - r->from.y,
+            dz = (int64_t)p.z - r->from.z;
+    out->x = stp_fix_sat64(stp_asr64(dx * r->right.x + dy * r->right.y + dz * r->right.z, F));
+    out->y = stp_fix_sat64(stp_asr64(dx * r->up.x + dy * r->up.y + dz * r->up.z, F));
+    out->z = stp_fix_sat64(stp_asr64(dx * r->forward.x + dy * r->forward.y + dz * r->forward.z, F));
+}
+
+/* Signed distance of view point p from clip plane `plane` (0: hither,
+ * 1..4: left, right, top, bottom of the window), >= 0 inside.  Scaled by a
+ * positive per-plane factor (only signs and ratios matter). */
+static int64_t plane_distance(const stp_renderer *r, int plane, stp_vec3 p)
+{
+    /* both terms have F fractional bits and stay below 2^47 */
+    int64_t fx = stp_asr64((int64_t)r->focal * p.x, F), fy = stp_asr64((int64_t)r->focal * p.y, F);
+    int64_t hw, hh;
+    if (plane == 0)
+        return (int64_t)p.z - r->hither;
+    if (r->projection == STP_PERSPECTIVE) {
+        /* x_screen = W/2 + focal x / z lies in [0, W] <=> |focal x| <= (W/2) z */
+        hw = ((int64_t)r->width * p.z) / 2;
+        hh = ((int64_t)r->height * p.z) / 2;
+    } else {
+        hw = ((int64_t)r->width * ONE) / 2;
+        hh = ((int64_t)r->height * ONE) / 2;
+    }
+    switch (plane) {
+    case 1: return fx + hw;
+    case 2: return hw - fx;
+    case 3: return hh - fy;
+    default: return fy + hh;
+    }
+}
+
+/* The point where segment a-b crosses a plane, given the signed distances
+ * da >= 0 > db or the reverse. */
+static stp_vec3 clip_point(stp_vec3 a, stp_vec3 b, int64_t da, int64_t db)
+{
+    int64_t den = da - db, t;
+    stp_vec3 p;
+    /* bring the distances below 2^32 so da << 30 cannot overflow */
+    while (den >= ((int64_t)1 << 32) || den <= -((int64_t)1 << 32) ||
+           da >= ((int64_t)1 << 32) || da <= -((int64_t)1 << 32)) {
+        da /= 2;
+        db /= 2;
+        den = da - db;
+    }
+    if (den == 0)
+        return a;
+    t = (da * ((int64_t)1 << 30)) / den; /* in [0, 2^30] */
+    p.x = stp_fix_sat64(a.x + stp_asr64(((int64_t)b.x - a.x) * t, 30));
+    p.y = stp_fix_sat64(a.y + stp_asr64(((int64_t)b.y - a.y) * t, 30));
+    p.z = stp_fix_sat64(a.z + stp_asr64(((int64_t)b.z - a.z) * t, 30));
+    return p;
+}
+
+/* Sutherland-Hodgman against the five planes; returns the vertex count of
+ * the clipped polygon, its vertices in *result. */
+static int clip_polygon(stp_renderer *r, int n, stp_vec3 **result)
+{
+    stp_vec3 *in = r->clip_a, *out = r->clip_b, *tmp;
+    int plane, i, m;
+    for (plane = 0; plane < 5 && n > 0; plane++) {
+        m = 0;
+        for (i = 0; i < n; i++) {
+            stp_vec3 a = in[i], b = in[(i + 1) % n];
+            int64_t da = plane_distance(r, plane, a), db = plane_distance(r, plane, b);
+            if (da >= 0)
+                out[m++] = a;
+            if ((da >= 0) != (db >= 0))
+                out[m++] = clip_point(a, b, da, db);
+        }
+        n = m;
+        tmp = in;
+        in = out;
+        out = tmp;
+    }
+    *result = in;
+    return n;
+}
+
+/* Device coordinates (Q27.4) and depth key of a clipped view point. */
+static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
+{
+    int64_t x, y;
+    int64_t wq = (int64_t)r->width << STP_SUBPIXEL_BITS, hq = (int64_t)r->height << STP_SUBPIXEL_BITS;
+    if (r->projection == STP_PERSPECTIVE) {
+        int64_t z = p.z < r->hither ? r->hither : p.z; /* > 0 */
+        /* focal * x / z has F fractional bits; keep SUBPIXEL of them */
+        x = stp_asr64(((int64_t)r->focal * p.x) / z, F - STP_SUBPIXEL_BITS);
+        y = stp_asr64(((int64_t)r->focal * p.y) / z, F - STP_SUBPIXEL_BITS);
+        out->z = (int32_t)((((int64_t)r->hither) << 30) / z);
+    } else {
+        x = stp_asr64((int64_t)r->focal * p.x, 2 * F - STP_SUBPIXEL_BITS);
+        y = stp_asr64((int64_t)r->focal * p.y, 2 * F - STP_SUBPIXEL_BITS);
+        out->z = -p.z;
+    }
+    x = wq / 2 + x;
+    y = hq / 2 - y;
+    /* the clipper keeps points inside up to rounding: clamp the last bit */
+    out->x = (int32_t)(x < 0 ? 0 : (x > wq ? wq : x));
+    out->y = (int32_t)(y < 0 ? 0 : (y > hq ? hq : y));
+}
+
+static int check_open(const stp_renderer *r)
+{
+    if (r == 0)
+        return STP_ERR_ARG;
+    return r->open_segment < 0 ? STP_ERR_NO_SEGMENT : STP_OK;
+}
+
+static void append(stp_renderer *r, int32_t op, int32_t x, int32_t y, int32_t z)
+{
+    stp_instr *in = &r->df[r->used++];
+    in->op = op;
+    in->x = x;
+    in->y = y;
+    in->z = z;
+    r->segments[r->open_segment].end = r->used;
+}
+
+int stp_move(stp_renderer *r, stp_vec3 p)
+{
+    int status = check_open(r);
+    if (status != STP_OK)
+        return status;
+    world_to_view(r, p, &r->pen);
+    r->pen_valid = 1;
+    return STP_OK;
+}
+
+int stp_line(stp_renderer *r, stp_vec3 p)
+{
+#if STP_WITH_LINES
+    stp_vec3 a, b, q;
+    stp_instr pa, pb;
+    int plane, status = check_open(r);
+    if (status != STP_OK)
+        return status;
+    world_to_view(r, p, &q);
+    if (!r->pen_valid) {
+        r->pen = q;
+        r->pen_valid = 1;
+        return STP_OK;
+    }
+    a = r->pen;
+    b = q;
+    r->pen = q;
+    for (plane = 0; plane < 5; plane++) {
+        int64_t da = plane_distance(r, plane, a), db = plane_distance(r, plane, b);
+        if (da < 0 && db < 0)
+            return STP_OK; /* wholly outside */
+        if (da < 0)
+            a = clip_point(b, a, db, da);
+        else if (db < 0)
+            b = clip_point(a, b, da, db);
+    }
+    if (r->capacity - r->used < 2u + (r->current_line_style != r->fill_style ? 1u : 0u))
+        return STP_ERR_FULL;
+    if (r->current_line_style != r->fill_style) {
+        append(r, STP_OP_LINE_STYLE, r->fill_style, 0, 0);
+        r->current_line_style = r->fill_style;
+    }
+    project(r, a, &pa);
+    project(r, b, &pb);
+    append(r, STP_OP_MOVE, pa.x, pa.y, pa.z);
+    append(r, STP_OP_LINE, pb.x, pb.y, pb.z);
+    return STP_OK;
+#else
+    (void)r;
+    (void)p;
+    return STP_ERR_UNSUPPORTED;
+#endif
+}
+
+/* SHADE-CHECK: Newell normal (Algorithm 10.4) and vertex average of the
+ * view-space vertices in clip_a.  Returns 0 for a zero normal. */
+static int newell(stp_renderer *r, int n, stp_vec3 *normal, stp_vec3 *centre)
+{
+    const stp_vec3 *v = r->clip_a;
+    int64_t a = 0, b = 0, c = 0, sx = 0, sy = 0, sz = 0;
+    uint32_t m = 0;
+    int i, shift = 0;
+    for (i = 0; i < n; i++) {
+        int64_t d[3];
+        int k;
+        d[0] = (int64_t)v[i].x - v[0].x;
+        d[1] = (int64_t)v[i].y - v[0].y;
+        d[2] = (int64_t)v[i].z - v[0].z;
+        for (k = 0; k < 3; k++) {
+            uint64_t ad = (uint64_t)(d[k] < 0 ? -d[k] : d[k]);
+            if (ad > m)
+                m = (uint32_t)(ad > 0xFFFFFFFFu ? 0xFFFFFFFFu : ad);
+        }
+        sx += v[i].x;
+        sy += v[i].y;
+        sz += v[i].z;
+    }
+    /* relative coordinates below 2^24 keep every product < 2^50 and the sum
+     * of up to 4096 of them < 2^62; smaller polygons keep all their bits */
+    while ((m >> shift) >= ((uint32_t)1 << 24))
+        shift++;
+    for (i = 0; i < n; i++) {
+        int p = i == 0 ? n - 1 : i - 1;
+        int64_t xp = ((int64_t)v[p].x - v[0].x) / ((int64_t)1 << shift),
+                yp = ((int64_t)v[p].y - v[0].y) / ((int64_t)1 << shift),
+                zp = ((int64_t)v[p].z - v[0].z) / ((int64_t)1 << shift);
+        int64_t x = ((int64_t)v[i].x - v[0].x) / ((int64_t)1 << shift),
+                y = ((int64_t)v[i].y - v[0].y) / ((int64_t)1 << shift),
+                z = ((int64_t)v[i].z - v[0].z) / ((int64_t)1 << shift);
+        a += (yp - y) * (zp + z);
+        b += (zp - z) * (xp + x);
+        c += (xp - x) * (yp + y);
+    }
+    /* the view system is left-handed: Newell's sum, written for right-handed
+     * coordinates, points the other way there */
+    a = -a;
+    b = -b;
+    c = -c;
+    while (a > INT32_MAX || a < -INT32_MAX || b > INT32_MAX || b < -INT32_MAX || c > INT32_MAX ||
+           c < -INT32_MAX) {
+        a /= 2;
+        b /= 2;
+        c /= 2;
+    }
+    {
+        stp_vec3 nv;
+        nv.x = (stp_fix)a;
+        nv.y = (stp_fix)b;
+        nv.z = (stp_fix)c;
+        if (stp_vec3_unity(nv, normal) == 0)
+            return 0;
+    }
+    centre->x = (stp_fix)(sx / n);
+    centre->y = (stp_fix)(sy / n);
+    centre->z = (stp_fix)(sz / n);
+    return 1;
+}
+
+int stp_polygon(stp_renderer *r, const stp_vec3 *vertices, int n)
+{
+    stp_vec3 normal, centre, eye_dir, *clipped;
+    stp_fix n_dot_e;
+    int i, m, style, status = check_open(r);
+    if (status != STP_OK)
+        return status;
+    if (vertices == 0 || n < 3)
+        return n < 3 && n >= 0 ? STP_ERR_DEGENERATE : STP_ERR_ARG;
+    if (n > STP_MAX_POLYGON_VERTICES)
+        return STP_ERR_TOO_MANY_VERTICES;
+    for (i = 0; i < n; i++)
+        world_to_view(r, vertices[i], &r->clip_a[i]);
+    r->last_shade = -1;
+    if (!newell(r, n, &normal, &centre))
+        return STP_ERR_DEGENERATE;
+
+    /* direction towards the eye, for the back-face test and shading */
+    if (r->projection == STP_PERSPECTIVE) {
+        stp_vec3 to_eye;
+        to_eye.x = -centre.x;
+        to_eye.y = -centre.y;
+        to_eye.z = -centre.z;
+        if (stp_vec3_unity(to_eye, &eye_dir) == 0)
+            eye_dir.z = -ONE; /* centre at the eye: it will be clipped anyway */
+    } else {
+        eye_dir.x = eye_dir.y = 0;
+        eye_dir.z = -ONE;
+    }
+    n_dot_e = stp_vec3_dot(normal, eye_dir);
+    if (n_dot_e <= 0) {
+        if (r->backface_removal)
+            return STP_OK;
+        /* an open surface seen from behind: shade the side the eye sees */
+        normal.x = -normal.x;
+        normal.y = -normal.y;
+        normal.z = -normal.z;
+    }
+    if (r->shading) {
+        stp_vec3 origin = {0, 0, 0};
+        r->last_shade = stp_shade_point(&r->segment_lighting, &r->material, normal, centre,
+                                        origin, r->projection == STP_PARALLEL, eye_dir);
+        style = stp_intensity_index(r->last_shade, r->levels);
+    } else {
+        style = r->fill_style;
+        r->last_shade = stp_intensity_shade(style, r->levels);
+    }
+
+    m = clip_polygon(r, n, &clipped);
+    if (m < 3)
+        return STP_OK; /* nothing of it is in view */
+    if (r->capacity - r->used < (uint32_t)m + (style != r->current_style ? 1u : 0u))
+        return STP_ERR_FULL;
+    if (style != r->current_style) {
+        append(r, STP_OP_SHADE, style, r->last_shade, 0);
+        r->current_style = style;
+    }
+    for (i = 0; i < m; i++) {
+        stp_instr p;
+        project(r, clipped[i], &p);
+        append(r, i == 0 ? m : STP_OP_LINE, p.x, p.y, p.z);
+    }
+    return STP_OK;
+}

@@ -1,0 +1,56 @@
+/* Private: the renderer object and what render.c and raster.c share. */
+#ifndef STIPPLE_RENDER_PRIVATE_H
+#define STIPPLE_RENDER_PRIVATE_H
+
+#include "stipple/render.h"
+#include "fix_private.h"
+
+#define STP_CLIP_VERTICES (STP_MAX_POLYGON_VERTICES + 5)
+
+typedef struct stp_segment {
+    int32_t id;
+    uint32_t start, end; /* display-file entries [start, end) */
+    uint8_t used, open, visible;
+} stp_segment;
+
+/* One edge of a polygon being scan-converted, oriented top to bottom.
+ * Coordinates Q27.4; slope in Q4 x units per Q4 y unit, Q16. */
+typedef struct stp_edge {
+    int32_t xa, ya, yb;
+    int64_t slope;
+} stp_edge;
+
+struct stp_renderer {
+    stp_instr *df;
+    uint32_t capacity, used;
+    uint32_t width, height;
+
+    stp_segment segments[STP_MAX_SEGMENTS];
+    int open_segment; /* index into segments, -1 when none */
+
+    /* view: orthonormal basis (world units), centre of projection */
+    stp_vec3 from, right, up, forward;
+    stp_projection projection;
+    stp_fix hither;
+    stp_fix focal; /* perspective: pixels per (x/z); parallel: pixels per unit */
+
+    stp_lighting user_lighting;    /* what SET-LIGHT last said (world) */
+    stp_lighting segment_lighting; /* COPY-LIGHT of the open segment (view) */
+    stp_material material;
+    int shading, fill_style, levels, backface_removal;
+    int current_style;      /* polygon style last entered in the open segment, -1 none */
+    int current_line_style; /* line style likewise */
+    stp_fix last_shade;
+
+    int pen_valid;
+    stp_vec3 pen; /* view coordinates */
+
+    /* scratch: the clipper's two vertex lists and the scan converter's
+     * edges; here rather than on the stack so a small MCU stack suffices */
+    stp_vec3 clip_a[STP_CLIP_VERTICES];
+    stp_vec3 clip_b[STP_CLIP_VERTICES];
+    stp_edge edges[STP_CLIP_VERTICES];
+    int32_t crossings[STP_CLIP_VERTICES];
+};
+
+#endif

@@ -1,0 +1,308 @@
+/* Host side: a stp_scene through the core.  See render_scene.h. */
+#include "render_scene.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene_util.h"
+
+void stp_tool_options_default(stp_tool_options *opt)
+{
+    memset(opt, 0, sizeof *opt);
+    opt->width = 128;
+    opt->height = 64;
+    opt->levels = 16;
+    opt->dither = STP_TOOL_DITHER_BAYER4;
+    opt->spacing = STP_SPACING_LINEAR;
+    opt->gamma = 1.0;
+    opt->gamma_k = 1.0;
+    opt->hidden = STP_HIDDEN_ZBUFFER;
+    opt->shading = 1;
+    opt->background = 0.2;
+    opt->brightness = 1.0;
+    opt->attenuation_c = 1.0;
+    opt->auto_power = 1;
+    opt->perspective = 1;
+}
+
+stp_fix stp_tool_fix(double v)
+{
+    double s = v * (double)STP_FIX_ONE;
+    if (!(s == s))
+        return 0;
+    if (s >= (double)STP_FIX_MAX)
+        return STP_FIX_MAX;
+    if (s <= (double)STP_FIX_MIN)
+        return STP_FIX_MIN;
+    return (stp_fix)lround(s);
+}
+
+static stp_vec3 fix3(stp_scene_vec3 v)
+{
+    stp_vec3 r;
+    r.x = stp_tool_fix(v.x);
+    r.y = stp_tool_fix(v.y);
+    r.z = stp_tool_fix(v.z);
+    return r;
+}
+
+int stp_tool_cell(const stp_tool_options *opt, stp_cell *cell)
+{
+    switch (opt->dither) {
+    case STP_TOOL_DITHER_BAYER2: return stp_cell_bayer_spaced(cell, 2, opt->spacing);
+    case STP_TOOL_DITHER_BAYER4: return stp_cell_bayer_spaced(cell, 4, opt->spacing);
+    case STP_TOOL_DITHER_BAYER8: return stp_cell_bayer_spaced(cell, 8, opt->spacing);
+    case STP_TOOL_DITHER_SEED2X2: stp_cell_seed2x2(cell); return 0;
+    case STP_TOOL_DITHER_PATTERN2X2: stp_cell_pattern2x2(cell); return 0;
+    case STP_TOOL_DITHER_USER:
+        return stp_cell_user(cell, opt->user_cell_w, opt->user_cell_h, opt->user_cell);
+    }
+    return -1;
+}
+
+/* Seed parameters from NFF's material (documented in README "Scenes"):
+ * R = Kd x luminance of the colour (the seed's YIQ weights .30 .59 .11);
+ * n = the index of refraction when > 1, else the seed's default 10 (NFF
+ * writes 0 or 1 for opaque surfaces, which would leave no highlight);
+ * k = 2/Shine (Phong cos^s and the facet distribution agree near the
+ * highlight when k = 2/s), the seed's 10 when Shine <= 0;
+ * specular weight = Ks. */
+static void material_from_scene(const stp_scene_material *m, stp_material *out)
+{
+    double lum = 0.30 * m->color[0] + 0.59 * m->color[1] + 0.11 * m->color[2];
+    double refl = m->kd * lum;
+    out->reflectivity = stp_tool_fix(refl < 0 ? 0 : (refl > 1 ? 1 : refl));
+    out->refraction = stp_tool_fix(m->ior > 1.0 ? m->ior : 10.0);
+    out->gloss = stp_tool_fix(m->shine > 0 ? 2.0 / m->shine : 10.0);
+    out->specular = stp_tool_fix(m->ks < 0 ? 0 : m->ks);
+}
+
+static double dist3(stp_scene_vec3 a, stp_scene_vec3 b)
+{
+    double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
+    return sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_port *port,
+                    stp_tool_stats *stats, char *err, size_t err_size)
+{
+    stp_scene_vec3 lo, hi, centre;
+    double radius;
+    stp_view view;
+    stp_lighting lighting;
+    stp_renderer *r = 0;
+    void *rmem = 0;
+    stp_instr *df = 0;
+    uint8_t *band = 0, *gamma = 0;
+    uint16_t *zbuf = 0;
+    stp_sort_entry *sort = 0;
+    stp_cell cell;
+    stp_output out;
+    stp_frame_memory mem;
+    size_t capacity = 16, i;
+    int status, last_material = -1, band_rows, j, result = -1;
+    stp_tool_stats local;
+    stp_scene_vec3 light_pos[STP_MAX_LIGHTS];
+    int light_count;
+
+    if (!stats)
+        stats = &local;
+    memset(stats, 0, sizeof *stats);
+    if (stp_scene_bounds(scene, &lo, &hi) != 0) {
+        snprintf(err, err_size, "the scene has no polygons to render");
+        return -1;
+    }
+    centre.x = (lo.x + hi.x) / 2;
+    centre.y = (lo.y + hi.y) / 2;
+    centre.z = (lo.z + hi.z) / 2;
+    radius = dist3(lo, hi) / 2;
+    if (radius <= 0)
+        radius = 1;
+
+    memset(&view, 0, sizeof view);
+    if (scene->has_view) {
+        view.from = fix3(scene->from);
+        view.at = fix3(scene->at);
+        view.up = fix3(scene->up);
+        view.fov_degrees = stp_tool_fix(opt->fov > 0 ? opt->fov : scene->angle);
+        view.hither = stp_tool_fix(scene->hither > 0 ? scene->hither : 1e-3);
+    } else {
+        /* a mesh with no view: look at its centre from the +x+y+z octant
+         * (y up, as OBJ files usually are), far enough for 45 degrees */
+        double fov = opt->fov > 0 ? opt->fov : 45.0;
+        double d = radius / sin(fov * 0.5 * 3.14159265358979323846 / 180.0) * 1.05;
+        stp_scene_vec3 from;
+        from.x = centre.x + d * 0.48;
+        from.y = centre.y + d * 0.40;
+        from.z = centre.z + d * 0.78;
+        view.from = fix3(from);
+        view.at = fix3(centre);
+        view.up.x = view.up.z = 0;
+        view.up.y = STP_FIX_ONE;
+        view.fov_degrees = stp_tool_fix(fov);
+        view.hither = stp_tool_fix(d * 1e-3);
+    }
+    if (view.hither <= 0)
+        view.hither = 1;
+    view.projection = opt->perspective ? STP_PERSPECTIVE : STP_PARALLEL;
+    view.window_half = stp_tool_fix(radius);
+
+    /* lights: the options', else the scene's, else one above-left of the eye */
+    if (opt->light_count > 0) {
+        light_count = opt->light_count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : opt->light_count;
+        for (j = 0; j < light_count; j++)
+            light_pos[j] = opt->lights[j];
+    } else if (scene->light_count > 0) {
+        light_count = (int)(scene->light_count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : scene->light_count);
+        for (j = 0; j < light_count; j++)
+            light_pos[j] = scene->lights[j].position;
+    } else {
+        stp_scene_vec3 eye = scene->has_view ? scene->from : centre;
+        light_pos[0].x = eye.x - radius;
+        light_pos[0].y = eye.y + radius * 2;
+        light_pos[0].z = eye.z + radius * 3;
+        light_count = 1;
+    }
+    memset(&lighting, 0, sizeof lighting);
+    lighting.brightness = stp_tool_fix(opt->brightness);
+    lighting.background = stp_tool_fix(opt->background);
+    lighting.attenuation_c = stp_tool_fix(opt->attenuation_c);
+    lighting.count = light_count;
+    for (j = 0; j < light_count; j++) {
+        /* auto power: P_j = (1 - B)(C + U_j)/sqrt(lights), U_j the distance
+         * to the scene's centre, so 1/(C+U) does not darken a scene whose
+         * lights stand far off (the SPD files place them 10-150 units away)
+         * and several lights together stay near full scale */
+        double power = 1.0 - opt->background;
+        if (opt->auto_power)
+            power *= (opt->attenuation_c + dist3(light_pos[j], centre)) / sqrt((double)light_count);
+        lighting.lights[j].position = fix3(light_pos[j]);
+        lighting.lights[j].power = stp_tool_fix(power);
+    }
+
+    for (i = 0; i < scene->polygon_count; i++)
+        capacity += (size_t)scene->polygons[i].count + 6;
+    if (capacity > 0xFFFFFFFFu) {
+        snprintf(err, err_size, "scene too large for one display file");
+        return -1;
+    }
+    rmem = malloc(stp_renderer_size());
+    df = malloc(sizeof *df * capacity);
+    if (!rmem || !df) {
+        snprintf(err, err_size, "out of memory");
+        goto done;
+    }
+    r = stp_renderer_create(rmem, stp_renderer_size(), df, (uint32_t)capacity,
+                            (uint32_t)opt->width, (uint32_t)opt->height);
+    if (!r) {
+        snprintf(err, err_size, "bad size %dx%d", opt->width, opt->height);
+        goto done;
+    }
+    if ((status = stp_set_view(r, &view)) != STP_OK || (status = stp_set_levels(r, opt->levels)) != STP_OK ||
+        (status = stp_set_lighting(r, &lighting)) != STP_OK) {
+        snprintf(err, err_size, "view: %s", stp_status_text(status));
+        goto done;
+    }
+    stp_set_shading(r, opt->shading);
+    stp_set_backface_removal(r, opt->backface_removal);
+    if ((status = stp_segment_create(r, 1)) != STP_OK) {
+        snprintf(err, err_size, "segment: %s", stp_status_text(status));
+        goto done;
+    }
+    for (i = 0; i < scene->polygon_count; i++) {
+        const stp_scene_polygon *p = &scene->polygons[i];
+        stp_vec3 v[STP_MAX_POLYGON_VERTICES];
+        int k;
+        if (p->material != last_material) {
+            stp_material m;
+            stp_material_default(&m);
+            if (p->material >= 0 && (size_t)p->material < scene->material_count)
+                material_from_scene(&scene->materials[p->material], &m);
+            stp_set_object_shade(r, &m);
+            /* with shading off the material's reflectivity picks the style */
+            stp_set_fill_style(r, stp_intensity_index(m.reflectivity, opt->levels));
+            last_material = p->material;
+        }
+        if (p->count > STP_MAX_POLYGON_VERTICES) {
+            snprintf(err, err_size, "polygon %zu (line %d) has %d vertices; this build takes %d",
+                     i + 1, p->source_line, p->count, STP_MAX_POLYGON_VERTICES);
+            goto done;
+        }
+        for (k = 0; k < p->count; k++)
+            v[k] = fix3(scene->vertices[p->first + (size_t)k]);
+        stats->polygons_in++;
+        status = stp_polygon(r, v, p->count);
+        if (status == STP_ERR_DEGENERATE) {
+            stats->polygons_skipped++;
+            continue;
+        }
+        if (status != STP_OK) {
+            snprintf(err, err_size, "polygon %zu (line %d): %s", i + 1, p->source_line,
+                     stp_status_text(status));
+            goto done;
+        }
+    }
+    (void)stp_segment_close(r);
+    stats->display_entries = stp_display_file_used(r);
+
+    band_rows = opt->band_rows > 0 && opt->band_rows < opt->height ? opt->band_rows : opt->height;
+    memset(&mem, 0, sizeof mem);
+    mem.band_rows = (uint32_t)band_rows;
+    mem.band_size = stp_row_bytes(port->format, (uint32_t)opt->width) * (size_t)band_rows;
+    band = malloc(mem.band_size);
+    mem.band = band;
+    if (opt->hidden == STP_HIDDEN_ZBUFFER) {
+        mem.zbuf_count = (size_t)opt->width * (size_t)band_rows;
+        zbuf = malloc(sizeof *zbuf * mem.zbuf_count);
+        mem.zbuf = zbuf;
+    } else if (opt->hidden == STP_HIDDEN_PAINTER) {
+        mem.sort_count = stp_polygon_count(r) + 1;
+        sort = malloc(sizeof *sort * mem.sort_count);
+        mem.sort = sort;
+    }
+    if (!band || (opt->hidden == STP_HIDDEN_ZBUFFER && !zbuf) ||
+        (opt->hidden == STP_HIDDEN_PAINTER && !sort)) {
+        snprintf(err, err_size, "out of memory");
+        goto done;
+    }
+    memset(&out, 0, sizeof out);
+    out.hidden = opt->hidden;
+    if (stp_tool_cell(opt, &cell) != 0) {
+        snprintf(err, err_size, "bad halftone cell");
+        goto done;
+    }
+    out.cell = &cell;
+    if (opt->gamma != 1.0 || opt->gamma_k != 1.0) {
+        gamma = malloc((size_t)opt->levels);
+        if (!gamma || stp_gamma_table(gamma, opt->levels, stp_tool_fix(opt->gamma),
+                                      stp_tool_fix(opt->gamma_k)) != 0) {
+            snprintf(err, err_size, "bad gamma table");
+            goto done;
+        }
+        out.gamma = gamma;
+    }
+    out.styles = opt->styles;
+    if (scene->has_background) {
+        const double *b = scene->background;
+        double lum = 0.30 * b[0] + 0.59 * b[1] + 0.11 * b[2];
+        out.background = stp_tool_fix(lum < 0 ? 0 : (lum > 1 ? 1 : lum));
+    }
+    stats->frame_bytes = stp_renderer_size() + sizeof *df * stats->display_entries + mem.band_size +
+                         sizeof(uint16_t) * mem.zbuf_count + sizeof(stp_sort_entry) * mem.sort_count;
+    status = stp_render(r, port, &out, &mem);
+    if (status != STP_OK) {
+        snprintf(err, err_size, "render: %s", stp_status_text(status));
+        goto done;
+    }
+    result = 0;
+done:
+    free(rmem);
+    free(df);
+    free(band);
+    free(zbuf);
+    free(sort);
+    free(gamma);
+    return result;
+}

@@ -1,0 +1,66 @@
+/*
+ * Host side: render a stp_scene through the fixed-point core onto a port.
+ * Used by the stipple command, the golden-image tests and the benchmarks.
+ */
+#ifndef STIPPLE_TOOLS_RENDER_SCENE_H
+#define STIPPLE_TOOLS_RENDER_SCENE_H
+
+#include <stddef.h>
+#include "scene.h"
+#include "stipple/stipple.h"
+
+typedef enum stp_tool_dither {
+    STP_TOOL_DITHER_BAYER2,
+    STP_TOOL_DITHER_BAYER4,
+    STP_TOOL_DITHER_BAYER8,
+    STP_TOOL_DITHER_SEED2X2,
+    STP_TOOL_DITHER_PATTERN2X2,
+    STP_TOOL_DITHER_USER
+} stp_tool_dither;
+
+typedef struct stp_tool_options {
+    int width, height;       /* device pixels (default 128 x 64) */
+    int levels;              /* INTENSITY levels (16) */
+    stp_tool_dither dither;  /* (Bayer 4x4) */
+    stp_spacing spacing;     /* threshold spacing of Bayer cells (linear) */
+    int user_cell_w, user_cell_h;
+    unsigned char user_cell[STP_CELL_MAX * STP_CELL_MAX];
+    double gamma, gamma_k;   /* (10.44): 1, 1 = linear */
+    stp_hidden hidden;       /* (Z buffer) */
+    int backface_removal;    /* (0) */
+    int shading;             /* 1: MAKE-SHADE per polygon (1) */
+    int band_rows;           /* 0: whole frame */
+    double background;       /* BKGRND, the indirect share (0.2) */
+    double brightness;       /* BRIGHT (1) */
+    double attenuation_c;    /* C of 1/(C+U) (1) */
+    int auto_power;          /* 1: light powers cancel attenuation at the
+                                scene centre (see render_scene.c) (1) */
+    int light_count;         /* >0: these lights replace the scene's */
+    stp_scene_vec3 lights[STP_MAX_LIGHTS];
+    int perspective;         /* 1 (0: parallel) */
+    double fov;              /* degrees; 0: the scene's, else 45 */
+    const stp_style_table *styles; /* STYLE8 codes (NULL: index) */
+} stp_tool_options;
+
+void stp_tool_options_default(stp_tool_options *opt);
+
+/* Statistics of one render. */
+typedef struct stp_tool_stats {
+    unsigned long polygons_in;     /* polygons given to the core */
+    unsigned long polygons_skipped;/* degenerate ones the core refused */
+    unsigned long display_entries; /* display-file entries used */
+    size_t frame_bytes;            /* renderer + display file + band + z + sort */
+} stp_tool_stats;
+
+/* Render scene onto port (its width/height/format must match opt).
+ * Returns 0, or -1 with a message in err. */
+int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_port *port,
+                    stp_tool_stats *stats, char *err, size_t err_size);
+
+/* Double to stp_fix, saturating. */
+stp_fix stp_tool_fix(double v);
+
+/* Build the halftone cell the options name. */
+int stp_tool_cell(const stp_tool_options *opt, stp_cell *cell);
+
+#endif
