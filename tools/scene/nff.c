@@ -416,11 +416,11 @@ int stp_parse_nff(stp_parser *ps)
         if (stp_token_is(&kw, "l")) {
             double num[6];
             stp_scene_light light;
-            int n = stp_read_numbers(ps, &ln, num, 3, 6, "l");
-            if (n < 0)
-                return -1;
+            int n = stp_count_tokens(&ln);
             if (n != 3 && n != 6)
                 return stp_fail(ps, ln.number, "l: expected 3 or 6 numbers, found %d", n);
+            if (stp_read_numbers(ps, &ln, num, n, n, "l") < 0)
+                return -1;
             light.position = vec3(num[0], num[1], num[2]);
             light.color[0] = n == 6 ? num[3] : 1.0;
             light.color[1] = n == 6 ? num[4] : 1.0;

@@ -109,11 +109,11 @@ static int read_lines(stp_parser *ps, obj_state *st)
         if (stp_token_is(&kw, "v")) {
             /* x y z, optionally w (ignored) or r g b (the common colour
              * extension, ignored). */
-            int n = stp_read_numbers(ps, &ln, num, 3, 6, "v");
-            if (n < 0)
+            int n = stp_count_tokens(&ln);
+            if (n != 3 && n != 4 && n != 6)
+                return stp_fail(ps, ln.number, "v: expected 3, 4 or 6 numbers, found %d", n);
+            if (stp_read_numbers(ps, &ln, num, n, n, "v") < 0)
                 return -1;
-            if (n == 5)
-                return stp_fail(ps, ln.number, "v: expected 3, 4 or 6 numbers, found 5");
             if (stp_grow(ps, ln.number, (void **)&st->pos, &st->pos_cap, st->pos_count + 1,
                          sizeof *st->pos) != 0)
                 return -1;

@@ -72,12 +72,18 @@ static int read_vertex(stp_parser *ps, off_state *st, stp_line *ln, size_t index
 {
     const int base = st->has_normals ? 6 : 3;
     double num[10];
-    int n = stp_read_numbers(ps, ln, num, base, base + (st->has_color ? 4 : 0), "vertex");
-    if (n < 0)
+    int n;
+    if (st->has_color) {
+        /* the colour is RGB or RGBA */
+        n = stp_count_tokens(ln);
+        if (n != base + 3 && n != base + 4)
+            return stp_fail(ps, ln->number, "vertex: expected %d or %d numbers, found %d",
+                            base + 3, base + 4, n);
+    } else {
+        n = base;
+    }
+    if (stp_read_numbers(ps, ln, num, n, n, "vertex") < 0)
         return -1;
-    if (st->has_color && n != base + 3 && n != base + 4)
-        return stp_fail(ps, ln->number, "vertex: expected %d or %d numbers, found %d", base + 3,
-                        base + 4, n);
     if (stp_grow(ps, ln->number, (void **)&st->pos, &st->pos_cap, index + 1, sizeof *st->pos) != 0)
         return -1;
     st->pos[index].x = num[0];

@@ -154,6 +154,16 @@ int stp_next_line(stp_parser *ps, stp_line *ln)
     return 0;
 }
 
+int stp_count_tokens(const stp_line *ln)
+{
+    stp_line probe = *ln;
+    stp_token tok;
+    int n = 0;
+    while (n < INT_MAX && stp_next_token(&probe, &tok))
+        n++;
+    return n;
+}
+
 int stp_token_is(const stp_token *tok, const char *word)
 {
     size_t n = strlen(word);

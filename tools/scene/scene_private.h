@@ -70,6 +70,9 @@ int stp_next_token(stp_line *ln, stp_token *tok);
 
 int stp_token_is(const stp_token *tok, const char *word);
 
+/* Tokens left on the line (capped at INT_MAX), without consuming them. */
+int stp_count_tokens(const stp_line *ln);
+
 /* The token made printable and shortened for a message. */
 const char *stp_token_show(const stp_token *tok, char *buf, size_t size);
 

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Install what stipple's build, tests and demo need, from Debian's packages.
+# Idempotent; uses sudo when not root.
+set -eu
+packages=(
+    cmake make gcc libc6-dev           # the build
+    libcmocka-dev                      # the test framework
+    netpbm                             # pamvalidate and friends, for the outputs
+    imagemagick                        # the reference for the Bayer cells
+    gcc-arm-none-eabi binutils-arm-none-eabi  # the Cortex-M0 check of the core
+    gcc-riscv64-unknown-elf            # the RISC-V check of the core
+    dpkg-dev                           # dpkg-deb, to unpack the test photo's package
+)
+as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+# The package lists are refreshed every time: the tests fetch a package
+# (python3-skimage, for its photo) with apt-get download too.
+as_root apt-get update -q >/dev/null
+if [ "${#missing[@]}" -gt 0 ]; then
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi

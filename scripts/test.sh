@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# The tests on a fresh machine: install, then build and run the whole suite
+# twice, plainly and under AddressSanitizer + UndefinedBehaviorSanitizer.
+# Usage: scripts/test.sh
+set -eu
+here=$(cd "$(dirname "$0")/.." && pwd)
+"$here/scripts/install-deps.sh"
+status=0
+for kind in plain sanitize; do
+    build="$here/build-test-$kind"
+    flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo)
+    [ "$kind" = sanitize ] && flags=(-DCMAKE_BUILD_TYPE=Debug -DSTP_SANITIZE=ON)
+    echo "=== $kind build"
+    cmake -S "$here" -B "$build" "${flags[@]}" >/dev/null
+    cmake --build "$build" -j"$(nproc)"
+    ctest --test-dir "$build" --output-on-failure -j"$(nproc)" || status=1
+done
+exit $status

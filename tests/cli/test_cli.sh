@@ -1,0 +1,120 @@
+#!/usr/bin/env bash
+# End-to-end checks of the stipple command (run by CTest):
+#  1. every shared scene renders at 128x64 and 512x512 to PBM (raw and plain),
+#     PGM, PPM and text; every PNM passes netpbm's pamvalidate and has the
+#     size asked for; the text has one line per row, one character per pixel;
+#  2. malformed scenes (NFF, OBJ, OFF: truncated, wrong counts, bad numbers,
+#     indices out of range, empty) exit non-zero with "file:line: ..." on
+#     stderr, write no output file and leave an existing one untouched;
+#  3. `stipple dither` gives ImageMagick's -ordered-dither pixels on a ramp.
+# Usage: test_cli.sh STIPPLE_BINARY SCENES_DIR
+set -u
+stipple=$1
+scenes=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+passes=0
+ok() { passes=$((passes + 1)); }
+bad() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+
+command -v pamvalidate >/dev/null || { echo "FAIL: pamvalidate (netpbm) is not installed" >&2; exit 1; }
+
+# --- 1. every scene, both sizes, every output kind
+for nff in "$scenes"/*.nff; do
+    name=$(basename "$nff" .nff)
+    for size in 128x64 512x512; do
+        w=${size%x*}
+        h=${size#*x}
+        for ext in pbm pgm ppm txt; do
+            out="$work/$name-$size.$ext"
+            if ! "$stipple" render "$nff" -s "$size" -o "$out" 2>"$work/err"; then
+                bad "$name $size .$ext: exit status $? ($(cat "$work/err"))"
+                continue
+            fi
+            if [ "$ext" = txt ]; then
+                lines=$(wc -l <"$out")
+                widths=$(awk '{print length($0)}' "$out" | sort -u)
+                if [ "$lines" != "$h" ] || [ "$widths" != "$w" ]; then
+                    bad "$name $size .txt: $lines lines of widths '$widths'"
+                else ok; fi
+            else
+                if ! pamvalidate <"$out" >/dev/null 2>&1; then
+                    bad "$name $size .$ext: pamvalidate rejects it"
+                elif [ "$(pamfile "$out" | grep -o "$w by $h")" != "$w by $h" ]; then
+                    bad "$name $size .$ext: wrong size: $(pamfile "$out")"
+                else ok; fi
+            fi
+        done
+        out="$work/$name-$size-plain.pbm"
+        if "$stipple" render "$nff" -s "$size" --format plain-pbm -o "$out" 2>/dev/null &&
+            pamvalidate <"$out" >/dev/null 2>&1 && [ "$(head -c 2 "$out")" = P1 ]; then ok
+        else bad "$name $size plain PBM"; fi
+    done
+done
+
+# --- 2. malformed scenes
+expect_error() { # FILE EXPECTED_LINE
+    local file=$1 line=$2 out="$work/out.pbm"
+    printf 'keep me' >"$out"
+    if "$stipple" render "$file" -o "$out" 2>"$work/err"; then
+        bad "$(basename "$file"): accepted"
+        return
+    fi
+    if ! grep -q "$(basename "$file"):$line:" "$work/err"; then
+        bad "$(basename "$file"): message does not name line $line: $(cat "$work/err")"
+    elif [ "$(cat "$out")" != "keep me" ]; then
+        bad "$(basename "$file"): existing output changed"
+    elif ls -a "$work" | grep -q '^\.out\.pbm\.'; then
+        bad "$(basename "$file"): temporary file left behind"
+    else ok; fi
+    rm -f "$out"
+    if "$stipple" render "$file" -o "$out" 2>/dev/null || [ -e "$out" ]; then
+        bad "$(basename "$file"): output file written"
+    else ok; fi
+}
+printf 'v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\nresolution 64 64\np 3\n0 0 0\n1 0 0\n' >"$work/truncated.nff"
+expect_error "$work/truncated.nff" 11
+printf 'p 4\n0 0 0\n1 0 0\n1 1 0\nfoo\n' >"$work/wrongcount.nff"
+expect_error "$work/wrongcount.nff" 5
+printf 'p 3\n0 0 0\n1 0 0\n1 1.2.3 0\n' >"$work/badnumber.nff"
+expect_error "$work/badnumber.nff" 4
+printf 's 0 0 0 nan\n' >"$work/nan.nff"
+expect_error "$work/nan.nff" 1
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 4\n' >"$work/range.obj"
+expect_error "$work/range.obj" 4
+printf 'v 0 0 0\nv 1 0 0\nf 1 2 -3\n' >"$work/negrange.obj"
+expect_error "$work/negrange.obj" 3
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n1 1 0\n3 0 1 3\n' >"$work/range.off"
+expect_error "$work/range.off" 6
+printf 'OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n' >"$work/short.off"
+expect_error "$work/short.off" 5
+: >"$work/empty.nff"
+if "$stipple" render "$work/empty.nff" -o "$work/e.pbm" 2>"$work/err" || [ -e "$work/e.pbm" ] ||
+    ! grep -q 'empty.nff' "$work/err"; then bad "empty scene accepted or unnamed"; else ok; fi
+if "$stipple" render "$work/missing.nff" -o "$work/m.pbm" 2>/dev/null; then bad "missing scene accepted"; else ok; fi
+if "$stipple" render "$scenes/tetra-s1.nff" -o "$work/x.jpeg" 2>/dev/null; then bad "unknown extension accepted"; else ok; fi
+if "$stipple" render "$scenes/tetra-s1.nff" -o "$work/x.pbm" --levels 1 2>/dev/null; then bad "--levels 1 accepted"; else ok; fi
+
+# --- 3. dither against ImageMagick on a 256x16 ramp with a vertical gradient
+{
+    printf 'P2\n256 16\n255\n'
+    for y in $(seq 0 15); do
+        for x in $(seq 0 255); do printf '%d ' $(((x + y * 7) % 256)); done
+        printf '\n'
+    done
+} >"$work/ramp.pgm"
+if [ -x /usr/bin/convert ]; then
+    for n in 2 4 8; do
+        "$stipple" dither "$work/ramp.pgm" -d "bayer$n" -o "$work/s$n.pbm" &&
+            /usr/bin/convert "$work/ramp.pgm" -ordered-dither "o${n}x$n" "$work/i$n.pbm" || { bad "dither $n ran"; continue; }
+        if cmp -s <(pnmtoplainpnm "$work/s$n.pbm" | tail -n +3 | tr -d ' \n') \
+                  <(pnmtoplainpnm "$work/i$n.pbm" | tail -n +3 | tr -d ' \n'); then ok
+        else bad "dither bayer$n differs from ImageMagick o${n}x$n"; fi
+    done
+else
+    bad "/usr/bin/convert (ImageMagick) is not installed"
+fi
+
+echo "$passes passed, $failures failed"
+[ "$failures" -eq 0 ]

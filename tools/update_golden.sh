@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Regenerate tests/golden/*-128x64.pbm from the current renderer: run after an
+# intended change of the pictures, look at them, and say why in the commit.
+# Usage: tools/update_golden.sh BUILD_DIR [SCENES_DIR]
+set -eu
+build=${1:?usage: tools/update_golden.sh BUILD_DIR [SCENES_DIR]}
+here=$(cd "$(dirname "$0")/.." && pwd)
+scenes=${2:-$here/../shared/scenes}
+for nff in "$scenes"/*.nff; do
+    name=$(basename "$nff" .nff)
+    "$build/tools/stipple" render "$nff" -o "$here/tests/golden/$name-128x64.pbm"
+    echo "wrote tests/golden/$name-128x64.pbm"
+done
