@@ -74,7 +74,7 @@ expect_error() { # FILE EXPECTED_LINE
     else ok; fi
 }
 printf 'v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\nresolution 64 64\np 3\n0 0 0\n1 0 0\n' >"$work/truncated.nff"
-expect_error "$work/truncated.nff" 11
+expect_error "$work/truncated.nff" 8
 printf 'p 4\n0 0 0\n1 0 0\n1 1 0\nfoo\n' >"$work/wrongcount.nff"
 expect_error "$work/wrongcount.nff" 5
 printf 'p 3\n0 0 0\n1 0 0\n1 1.2.3 0\n' >"$work/badnumber.nff"
@@ -88,7 +88,7 @@ expect_error "$work/negrange.obj" 3
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n1 1 0\n3 0 1 3\n' >"$work/range.off"
 expect_error "$work/range.off" 6
 printf 'OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n' >"$work/short.off"
-expect_error "$work/short.off" 5
+expect_error "$work/short.off" 2
 : >"$work/empty.nff"
 if "$stipple" render "$work/empty.nff" -o "$work/e.pbm" 2>"$work/err" || [ -e "$work/e.pbm" ] ||
     ! grep -q 'empty.nff' "$work/err"; then bad "empty scene accepted or unnamed"; else ok; fi

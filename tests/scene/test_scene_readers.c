@@ -539,9 +539,19 @@ static void check_cone(const char *text, stp_scene_vec3 b, double rb, stp_scene_
         double along = dot(c, w);
         stp_scene_vec3 out = {c.x - along * w.x, c.y - along * w.y, c.z - along * w.z};
         double facing = dot(newell(&s, p), out);
+        int k;
         if (inside ? !(facing < 0.0) : !(facing > 0.0)) {
             print_error("cone polygon %zu faces the wrong way (%g)\n", i, facing);
             fail();
+        }
+        /* every corner normal (the tip's too) leans the polygon's way */
+        for (k = 0; k < p->count; k++) {
+            stp_scene_vec3 n = s.normals[p->first + (size_t)k];
+            double side = dot(n, out) - dot(n, w) * dot(out, w);
+            if (inside ? !(side < 0.0) : !(side > 0.0)) {
+                print_error("cone polygon %zu corner %d: normal leans away\n", i, k);
+                fail();
+            }
         }
     }
     stp_scene_free(&s);
@@ -1196,6 +1206,36 @@ static void test_bounds(void **state)
     EXPECT_VEC(lo, -1, 0, 1);
     EXPECT_VEC(hi, 3, 4, 5);
     stp_scene_free(&s);
+
+    /* With three slices and stacks the tessellation falls short of the
+     * analytic extents on every side but the poles' z, and cones along +x
+     * and -x cover both z sides: the bounds must still be exact. */
+    {
+        stp_scene_options o = {3, 3, 3};
+        parse_ok("nff", "s 1 2 3 2\nc\n0 0 0 1\n4 0 0 1\nc\n0 0 9 1\n-4 0 9 1\n", &o, &s);
+        assert_int_equal(stp_scene_bounds(&s, &lo, &hi), 0);
+        EXPECT_NEAR(lo.x, -4, 1e-12);
+        EXPECT_NEAR(lo.y, -1, 1e-12);
+        EXPECT_NEAR(lo.z, -1, 1e-12);
+        EXPECT_NEAR(hi.x, 4, 1e-12);
+        EXPECT_NEAR(hi.y, 4, 1e-12);
+        EXPECT_NEAR(hi.z, 10, 1e-12);
+        stp_scene_free(&s);
+        parse_ok("nff", "s 1 2 3 2\n", &o, &s);
+        assert_int_equal(stp_scene_bounds(&s, &lo, &hi), 0);
+        EXPECT_NEAR(lo.x, -1, 1e-12);
+        EXPECT_NEAR(lo.y, 0, 1e-12);
+        EXPECT_NEAR(hi.x, 3, 1e-12);
+        EXPECT_NEAR(hi.y, 4, 1e-12);
+        stp_scene_free(&s);
+        parse_ok("nff", "c\n0 0 0 1\n4 0 0 1\nc\n4 0 0 1\n0 0 0 1\n", &o, &s);
+        assert_int_equal(stp_scene_bounds(&s, &lo, &hi), 0);
+        EXPECT_NEAR(lo.z, -1, 1e-12);
+        EXPECT_NEAR(hi.z, 1, 1e-12);
+        EXPECT_NEAR(lo.y, -1, 1e-12);
+        EXPECT_NEAR(hi.y, 1, 1e-12);
+        stp_scene_free(&s);
+    }
 
     /* a cone along z: discs of radius 2 at z=0 and 1 at z=4 */
     parse_ok("nff", "c\n0 0 0 2\n0 0 4 1\n", NULL, &s);

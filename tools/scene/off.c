@@ -145,7 +145,7 @@ static int read_body(stp_parser *ps, off_state *st)
 {
     stp_line ln;
     long counts_line;
-    long long nv, nf, i;
+    long long nv = 0, nf = 0, i;
     int material, r;
 
     if (read_header(ps, st, &ln) != 0)

@@ -289,7 +289,7 @@ static int new_capacity(stp_parser *ps, long line, size_t cap, size_t need, size
 
 int stp_grow(stp_parser *ps, long line, void **arr, size_t *cap, size_t need, size_t elem)
 {
-    size_t newcap;
+    size_t newcap = 0;
     void *p;
     if (need <= *cap)
         return 0;
@@ -324,7 +324,7 @@ int stp_add_vertex(stp_parser *ps, long line, const stp_scene_vec3 *v, const stp
     if (need > ps->vertex_cap) {
         /* vertices and normals are parallel: grow both under one capacity. */
         const size_t elem = sizeof(stp_scene_vec3);
-        size_t newcap;
+        size_t newcap = 0;
         void *p;
         if (new_capacity(ps, line, ps->vertex_cap, need, 2 * elem, &newcap) != 0)
             return -1;

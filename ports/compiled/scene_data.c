@@ -1,0 +1,55 @@
+/* Feeding a compiled scene to the core: see stp_scene_data.h.  The order of
+ * calls mirrors tools/render_scene.c's stp_tool_render, because the picture
+ * depends on it (a style change enters a SHADE instruction). */
+#include "stp_scene_data.h"
+
+int stp_scene_data_enter(const stp_scene_data *s, void *mem, size_t mem_size,
+                         stp_renderer **out)
+{
+    stp_renderer *r;
+    const stp_vec3 *v;
+    uint32_t i;
+    uint32_t last_material = UINT32_MAX;
+    int status;
+
+    *out = 0;
+    r = stp_renderer_create(mem, mem_size, s->display_file, s->display_capacity, s->width,
+                            s->height);
+    if (!r)
+        return STP_ERR_ARG;
+    if ((status = stp_set_view(r, &s->view)) != STP_OK ||
+        (status = stp_set_levels(r, s->levels)) != STP_OK ||
+        (status = stp_set_lighting(r, &s->lighting)) != STP_OK)
+        return status;
+    stp_set_shading(r, s->shading);
+    stp_set_backface_removal(r, s->backface_removal);
+    if ((status = stp_segment_create(r, 1)) != STP_OK)
+        return status;
+    v = s->vertices;
+    for (i = 0; i < s->polygon_count; i++) {
+        const stp_scene_data_polygon *p = &s->polygons[i];
+        if (p->material != last_material) {
+            const stp_material *m = &s->materials[p->material];
+            stp_set_object_shade(r, m);
+            /* with shading off the material's reflectivity picks the style */
+            stp_set_fill_style(r, stp_intensity_index(m->reflectivity, s->levels));
+            last_material = p->material;
+        }
+        status = stp_polygon(r, v, p->count);
+        v += p->count;
+        if (status != STP_OK && status != STP_ERR_DEGENERATE)
+            return status;
+    }
+    (void)stp_segment_close(r);
+    *out = r;
+    return STP_OK;
+}
+
+void stp_scene_data_output(const stp_scene_data *s, stp_output *out)
+{
+    out->hidden = s->hidden;
+    out->cell = s->cell;
+    out->gamma = s->gamma;
+    out->styles = 0;
+    out->background = s->background;
+}

@@ -1,0 +1,63 @@
+/*
+ * A scene compiled to C data (by `stipple compile`, tools/compile_scene.c),
+ * and the one routine that feeds it to the core.
+ *
+ * Used where there is no file system and no floating point: the host tool
+ * does every double-precision step (reading NFF, choosing the view and the
+ * light powers, converting to stp_fix) and writes the results as integer
+ * literals, so a firmware build makes exactly the core calls the host's
+ * stp_tool_render makes and gets the same picture, pixel for pixel.
+ *
+ * Portable C99, no libc, no heap: the display file and the painter's sort
+ * array are arrays in the generated source, sized for the scene.
+ */
+#ifndef STIPPLE_PORTS_SCENE_DATA_H
+#define STIPPLE_PORTS_SCENE_DATA_H
+
+#include <stdint.h>
+#include "stipple/stipple.h"
+
+/* One polygon: count vertices, taken in order from the scene's vertex array
+ * (polygon i starts where polygon i-1 ended), and its material's index. */
+typedef struct stp_scene_data_polygon {
+    uint16_t count;
+    uint16_t material;
+} stp_scene_data_polygon;
+
+typedef struct stp_scene_data {
+    uint32_t width, height;        /* the device size the view was set for */
+    int levels;                    /* INTENSITY levels */
+    int shading;                   /* 1: MAKE-SHADE; 0: material fill styles */
+    int backface_removal;
+    stp_view view;
+    stp_lighting lighting;         /* world-space light positions */
+    const stp_material *materials; /* only the materials polygons use */
+    uint32_t material_count;
+    const stp_vec3 *vertices;      /* world space */
+    uint32_t vertex_count;
+    const stp_scene_data_polygon *polygons;
+    uint32_t polygon_count;
+    stp_instr *display_file;       /* capacity: what the scene enters */
+    uint32_t display_capacity;
+    stp_sort_entry *sort;          /* painter only, else NULL */
+    uint32_t sort_count;
+    stp_hidden hidden;             /* what the output should use */
+    const stp_cell *cell;          /* the halftone cell, as a value in ROM */
+    const uint8_t *gamma;          /* levels entries, or NULL for linear */
+    stp_fix background;            /* shade of the empty frame */
+} stp_scene_data;
+
+/* The generated source defines this one object. */
+extern const stp_scene_data stp_compiled_scene;
+
+/* Create the renderer in mem (stp_renderer_size() bytes) over the scene's
+ * display file and enter the scene into segment 1, as stp_tool_render does
+ * (degenerate polygons skipped).  *out receives the renderer.  Returns
+ * STP_OK or the first core error. */
+int stp_scene_data_enter(const stp_scene_data *scene, void *mem, size_t mem_size,
+                         stp_renderer **out);
+
+/* The output settings the scene was compiled with. */
+void stp_scene_data_output(const stp_scene_data *scene, stp_output *out);
+
+#endif

@@ -1,0 +1,90 @@
+/* Packing and sequencing for the controllers of stp_panel.h. */
+#include "stp_panel.h"
+
+int stp_panel_init(const stp_panel_controller *c, const stp_panel_bus *bus)
+{
+    return bus->command(bus->ctx, c->init, c->init_length);
+}
+
+size_t stp_panel_row_bytes(const stp_panel_controller *c, uint32_t width)
+{
+    return c->packing == STP_PANEL_GREY4_LEFT_HIGH ? ((size_t)width + 1u) / 2u : width;
+}
+
+static unsigned mono_bit(const uint8_t *row, uint32_t x)
+{
+    return (row[x >> 3] >> (7u - (x & 7u))) & 1u;
+}
+
+void stp_panel_pack_mono_row(const stp_panel_controller *c, const uint8_t *mono,
+                             uint32_t width, uint8_t *out)
+{
+    uint32_t x;
+    (void)c;
+    for (x = 0; x < width; x += 2) {
+        unsigned left = mono_bit(mono, x) ? STP_PANEL_GREY4_ON : 0u;
+        unsigned right = x + 1 < width && mono_bit(mono, x + 1) ? STP_PANEL_GREY4_ON : 0u;
+        out[x >> 1] = (uint8_t)(left << 4 | right);
+    }
+}
+
+int stp_panel_window_all(const stp_panel_controller *c, const stp_panel_bus *bus)
+{
+    uint8_t cmd[3];
+    int status;
+    uint32_t unit = c->column_unit ? c->column_unit : 1u;
+    uint32_t first = c->column_offset / unit;
+    uint32_t last = first + (c->width + unit - 1u) / unit - 1u;
+    cmd[0] = c->column_command;
+    cmd[1] = (uint8_t)first;
+    cmd[2] = (uint8_t)last;
+    if ((status = bus->command(bus->ctx, cmd, 3)) != 0)
+        return status;
+    cmd[0] = c->row_command;
+    cmd[1] = 0;
+    cmd[2] = (uint8_t)(c->height - 1u);
+    return bus->command(bus->ctx, cmd, 3);
+}
+
+int stp_panel_send_mono_rows(const stp_panel_controller *c, const stp_panel_bus *bus,
+                             const uint8_t *pixels, size_t stride, uint32_t width,
+                             uint32_t rows, uint8_t *scratch)
+{
+    uint32_t y;
+    size_t n = stp_panel_row_bytes(c, width);
+    for (y = 0; y < rows; y++) {
+        int status;
+        stp_panel_pack_mono_row(c, pixels + (size_t)y * stride, width, scratch);
+        if ((status = bus->data(bus->ctx, scratch, n)) != 0)
+            return status;
+    }
+    return 0;
+}
+
+int stp_panel_send_mono_page(const stp_panel_controller *c, const stp_panel_bus *bus,
+                             uint32_t page, const uint8_t *pixels, size_t stride,
+                             uint32_t width, uint8_t *scratch)
+{
+    uint32_t x, bit;
+    int status;
+    uint32_t col = c->column_offset;
+    uint8_t cmd;
+    /* one command per call: I2C controllers take "one command byte follows"
+     * control bytes, and a command per call keeps that the bus's business */
+    cmd = (uint8_t)(c->page_command | page);
+    if ((status = bus->command(bus->ctx, &cmd, 1)) != 0)
+        return status;
+    cmd = (uint8_t)(c->column_low_command | (col & 15u));
+    if ((status = bus->command(bus->ctx, &cmd, 1)) != 0)
+        return status;
+    cmd = (uint8_t)(c->column_high_command | (col >> 4));
+    if ((status = bus->command(bus->ctx, &cmd, 1)) != 0)
+        return status;
+    for (x = 0; x < width; x++) {
+        unsigned byte = 0;
+        for (bit = 0; bit < 8; bit++)
+            byte |= mono_bit(pixels + (size_t)bit * stride, x) << bit;
+        scratch[x] = (uint8_t)byte;
+    }
+    return bus->data(bus->ctx, scratch, width);
+}

@@ -1,0 +1,615 @@
+/*
+ * Property tests of the fixed-point layer (include/stipple/fix.h) against
+ * double (or exact 64/128-bit integer) arithmetic, with a fixed-seed PRNG so
+ * every run checks the same cases.  Each assertion is the error bound the
+ * header documents; where the header documents none (pow, unity), the bound
+ * used is derived in a comment beside it.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include <cmocka.h>
+
+#include "stipple/fix.h"
+
+#define F STP_FIX_FRAC_BITS
+#define ONE STP_FIX_ONE
+#define LSB (1.0 / (double)ONE)
+#define CASES 20000
+#define PI 3.14159265358979323846
+
+__extension__ typedef __int128 i128;
+__extension__ typedef unsigned __int128 u128;
+
+/* ---- fixed-seed PRNG (splitmix64) ---- */
+
+static uint64_t prng_state;
+
+static void prng_seed(uint64_t seed)
+{
+    prng_state = seed;
+}
+
+static uint64_t prng_next(void)
+{
+    uint64_t z = (prng_state += 0x9E3779B97F4A7C15u);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+    return z ^ (z >> 31);
+}
+
+/* Uniform in [0, n). */
+static uint64_t prng_below(uint64_t n)
+{
+    return prng_next() % n;
+}
+
+/* A stp_fix of log-uniform magnitude (1 LSB .. full range) and random sign:
+ * small and large values are both well covered. */
+static stp_fix rand_fix(void)
+{
+    int bits = (int)prng_below(32); /* 0..31 significant bits */
+    uint32_t m = bits == 0 ? 0 : (uint32_t)(prng_next() >> (64 - bits));
+    stp_fix v = (stp_fix)(m > (uint32_t)INT32_MAX ? (uint32_t)INT32_MAX : m);
+    return (prng_next() & 1) ? -v : v;
+}
+
+static stp_fix rand_fix_positive(void)
+{
+    stp_fix v = rand_fix();
+    v = v < 0 ? -v : v;
+    return v == 0 ? 1 : v;
+}
+
+static double to_d(stp_fix a)
+{
+    return (double)a * LSB;
+}
+
+static double sat_d(double v_lsb)
+{
+    return v_lsb > (double)STP_FIX_MAX ? (double)STP_FIX_MAX
+                                       : (v_lsb < (double)STP_FIX_MIN ? (double)STP_FIX_MIN : v_lsb);
+}
+
+/* ---- conversions and saturating add/sub ---- */
+
+static void test_from_int_and_ratio(void **state)
+{
+    (void)state;
+    assert_int_equal(stp_fix_from_int(3), 3 * ONE);
+    assert_int_equal(stp_fix_from_int(-7), -7 * ONE);
+    assert_int_equal(stp_fix_from_int(INT32_MAX), STP_FIX_MAX);
+    assert_int_equal(stp_fix_from_int(INT32_MIN), STP_FIX_MIN);
+    assert_int_equal(stp_fix_from_ratio(1, 2), ONE / 2);
+    assert_int_equal(stp_fix_from_ratio(-1, 2), -ONE / 2);
+    assert_int_equal(stp_fix_from_ratio(1, -4), -ONE / 4);
+    /* 1/3 rounded to nearest */
+    assert_int_equal(stp_fix_from_ratio(1, 3), (stp_fix)floor((double)ONE / 3.0 + 0.5));
+    assert_int_equal(stp_fix_from_ratio(2, 3), (stp_fix)floor(2.0 * ONE / 3.0 + 0.5));
+    assert_int_equal(stp_fix_from_ratio(5, 0), STP_FIX_MAX);
+    assert_int_equal(stp_fix_from_ratio(-5, 0), STP_FIX_MIN);
+    assert_int_equal(stp_fix_from_ratio(0, 0), 0);
+    assert_int_equal(stp_fix_from_ratio(INT32_MAX, 1), STP_FIX_MAX);
+}
+
+static void test_add_sub_saturate(void **state)
+{
+    int i;
+    (void)state;
+    assert_int_equal(stp_fix_add(STP_FIX_MAX, 1), STP_FIX_MAX);
+    assert_int_equal(stp_fix_add(STP_FIX_MAX, STP_FIX_MAX), STP_FIX_MAX);
+    assert_int_equal(stp_fix_add(STP_FIX_MIN, -1), STP_FIX_MIN);
+    assert_int_equal(stp_fix_sub(STP_FIX_MIN, STP_FIX_MAX), STP_FIX_MIN);
+    assert_int_equal(stp_fix_sub(STP_FIX_MAX, STP_FIX_MIN), STP_FIX_MAX);
+    assert_int_equal(stp_fix_add(INT32_MIN, INT32_MIN), STP_FIX_MIN);
+    prng_seed(11);
+    for (i = 0; i < CASES; i++) {
+        stp_fix a = rand_fix(), b = rand_fix();
+        assert_int_equal(stp_fix_add(a, b), (stp_fix)sat_d((double)a + (double)b));
+        assert_int_equal(stp_fix_sub(a, b), (stp_fix)sat_d((double)a - (double)b));
+    }
+}
+
+/* ---- mul ---- */
+
+/* round(p / 2^F), ties away from zero, in exact integers. */
+static int64_t round_shift_away(int64_t p)
+{
+    int64_t mag = p < 0 ? -p : p;
+    int64_t q = (mag + ((int64_t)1 << (F - 1))) >> F;
+    return p < 0 ? -q : q;
+}
+
+static void test_mul_rounds_to_nearest(void **state)
+{
+    int i;
+    (void)state;
+    prng_seed(1);
+    for (i = 0; i < 4 * CASES; i++) {
+        stp_fix a = rand_fix(), b = rand_fix();
+        stp_fix got = stp_fix_mul(a, b);
+        double exact_lsb = (double)a * (double)b * LSB; /* rel. error 2^-53 */
+        int64_t want = round_shift_away((int64_t)a * b);
+        want = want > STP_FIX_MAX ? STP_FIX_MAX : (want < STP_FIX_MIN ? STP_FIX_MIN : want);
+        if (got != want)
+            fail_msg("mul(%d, %d) = %d, want %lld", a, b, got, (long long)want);
+        /* against double: within half an LSB (plus double's own rounding) */
+        if (fabs(exact_lsb) < (double)STP_FIX_MAX)
+            assert_true(fabs((double)got - exact_lsb) <= 0.5 + fabs(exact_lsb) * 0x1p-50);
+    }
+    /* ties round away from zero */
+    assert_int_equal(stp_fix_mul(1, ONE / 2), 1);
+    assert_int_equal(stp_fix_mul(-1, ONE / 2), -1);
+    assert_int_equal(stp_fix_mul(3, ONE / 2), 2);
+    assert_int_equal(stp_fix_mul(-3, ONE / 2), -2);
+    assert_int_equal(stp_fix_mul(ONE, ONE), ONE);
+    assert_int_equal(stp_fix_mul(-ONE, ONE), -ONE);
+}
+
+static void test_mul_saturates_at_extremes(void **state)
+{
+    (void)state;
+    assert_int_equal(stp_fix_mul(STP_FIX_MAX, STP_FIX_MAX), STP_FIX_MAX);
+    assert_int_equal(stp_fix_mul(STP_FIX_MIN, STP_FIX_MIN), STP_FIX_MAX);
+    assert_int_equal(stp_fix_mul(STP_FIX_MAX, STP_FIX_MIN), STP_FIX_MIN);
+    assert_int_equal(stp_fix_mul(INT32_MIN, INT32_MIN), STP_FIX_MAX);
+    assert_int_equal(stp_fix_mul(INT32_MIN, INT32_MAX), STP_FIX_MIN);
+    assert_int_equal(stp_fix_mul(STP_FIX_MAX, ONE), STP_FIX_MAX);
+    assert_int_equal(stp_fix_mul(STP_FIX_MIN, ONE), STP_FIX_MIN);
+    assert_int_equal(stp_fix_mul(STP_FIX_MAX, 0), 0);
+    assert_int_equal(stp_fix_mul(200 * ONE, 200 * ONE), STP_FIX_MAX);
+    assert_int_equal(stp_fix_mul(-200 * ONE, 200 * ONE), STP_FIX_MIN);
+}
+
+/* ---- div ---- */
+
+static void test_div_truncates_toward_zero(void **state)
+{
+    int i;
+    (void)state;
+    prng_seed(2);
+    for (i = 0; i < 4 * CASES; i++) {
+        stp_fix a = rand_fix(), b = rand_fix();
+        stp_fix got;
+        double q;
+        if (b == 0)
+            continue;
+        got = stp_fix_div(a, b);
+        q = (double)a / (double)b * (double)ONE; /* exact quotient in LSB */
+        if (fabs(q) >= (double)STP_FIX_MAX) {
+            assert_int_equal(got, q > 0 ? STP_FIX_MAX : STP_FIX_MIN);
+            continue;
+        }
+        /* truncation: |got| <= |q| < |got| + 1, same sign (or zero) */
+        if (!(fabs((double)got) <= fabs(q) * (1.0 + 0x1p-50) &&
+              fabs(q) < fabs((double)got) + 1.0 + fabs(q) * 0x1p-50 && (double)got * q >= 0.0))
+            fail_msg("div(%d, %d) = %d, quotient %.6f LSB", a, b, got, q);
+    }
+    assert_int_equal(stp_fix_div(ONE, 3 * ONE), ONE / 3);
+    assert_int_equal(stp_fix_div(-ONE, 3 * ONE), -(ONE / 3));
+    assert_int_equal(stp_fix_div(7 * ONE, -2 * ONE), -7 * ONE / 2);
+}
+
+static void test_div_by_zero_and_overflow_saturate(void **state)
+{
+    (void)state;
+    assert_int_equal(stp_fix_div(ONE, 0), STP_FIX_MAX);
+    assert_int_equal(stp_fix_div(-ONE, 0), STP_FIX_MIN);
+    assert_int_equal(stp_fix_div(0, 0), 0);
+    assert_int_equal(stp_fix_div(1, 0), STP_FIX_MAX);
+    assert_int_equal(stp_fix_div(STP_FIX_MAX, 1), STP_FIX_MAX);
+    assert_int_equal(stp_fix_div(STP_FIX_MIN, 1), STP_FIX_MIN);
+    assert_int_equal(stp_fix_div(STP_FIX_MIN, -1), STP_FIX_MAX);
+    assert_int_equal(stp_fix_div(INT32_MIN, -1), STP_FIX_MAX);
+    assert_int_equal(stp_fix_div(INT32_MIN, INT32_MIN), ONE);
+    assert_int_equal(stp_fix_div(STP_FIX_MAX, ONE / 2), STP_FIX_MAX);
+}
+
+/* ---- square roots ---- */
+
+static void test_isqrt64_is_exact_floor(void **state)
+{
+    int i;
+    static const uint64_t edges[] = {0, 1, 2, 3, 4, 5, 8, 9, 15, 16, 17, 0xFFFFFFFFu,
+                                     0x100000000u, 0xFFFFFFFE00000001u, 0xFFFFFFFE00000000u,
+                                     0xFFFFFFFFFFFFFFFFu, 0x8000000000000000u, 0x4000000000000000u,
+                                     0x3FFFFFFFFFFFFFFFu};
+    (void)state;
+    prng_seed(3);
+    for (i = 0; i < (int)(sizeof edges / sizeof edges[0]) + 4 * CASES; i++) {
+        uint64_t v;
+        uint32_t r;
+        if (i < (int)(sizeof edges / sizeof edges[0])) {
+            v = edges[i];
+        } else if (i % 3 == 0) {
+            /* around a perfect square k^2 */
+            uint64_t k = prng_next() >> (32 + prng_below(32));
+            v = k * k + (uint64_t)prng_below(3) - 1u;
+        } else {
+            v = prng_next() >> prng_below(64);
+        }
+        r = stp_isqrt64(v);
+        if (!((u128)r * r <= v && ((u128)r + 1) * ((u128)r + 1) > v))
+            fail_msg("isqrt64(%llu) = %u", (unsigned long long)v, r);
+    }
+}
+
+static void test_sqrt_is_floor_of_root(void **state)
+{
+    int i;
+    (void)state;
+    prng_seed(4);
+    for (i = 0; i < 4 * CASES; i++) {
+        stp_fix a = rand_fix_positive();
+        stp_fix got = stp_fix_sqrt(a);
+        uint64_t scaled = (uint64_t)a << F; /* sqrt(a 2^F) has F fraction bits */
+        double exact = sqrt((double)a * LSB) * (double)ONE;
+#if STP_SQRT_FAST
+        assert_true(fabs((double)got - exact) <= exact * 0x1p-15 + 1.0);
+        (void)scaled;
+#else
+        if (!((u128)(uint32_t)got * (uint32_t)got <= scaled &&
+              ((u128)got + 1) * ((u128)got + 1) > scaled))
+            fail_msg("sqrt(%d) = %d, not the floor of the root", a, got);
+        assert_true((double)got <= exact + 1e-6 && exact < (double)got + 1.0);
+#endif
+    }
+    assert_int_equal(stp_fix_sqrt(4 * ONE), 2 * ONE);
+    assert_int_equal(stp_fix_sqrt(ONE), ONE);
+    assert_int_equal(stp_fix_sqrt(ONE / 4), ONE / 2);
+}
+
+static void test_sqrt_of_negative_and_extremes(void **state)
+{
+    (void)state;
+    assert_int_equal(stp_fix_sqrt(0), 0);
+    assert_int_equal(stp_fix_sqrt(-1), 0);
+    assert_int_equal(stp_fix_sqrt(-ONE), 0);
+    assert_int_equal(stp_fix_sqrt(STP_FIX_MIN), 0);
+    assert_int_equal(stp_fix_sqrt(INT32_MIN), 0);
+    /* sqrt(MAX) = sqrt(2^31 - 1) 2^(F/2): floor */
+    assert_true(fabs((double)stp_fix_sqrt(STP_FIX_MAX) - sqrt((double)STP_FIX_MAX * ONE)) < 1.0);
+    /* 1 LSB: sqrt(2^-F) = 2^-F/2 */
+    assert_true(fabs((double)stp_fix_sqrt(1) - sqrt((double)ONE)) < 1.0);
+    assert_int_equal(stp_fix_sqrt_wide(-1), 0);
+    assert_int_equal(stp_fix_sqrt_wide(INT64_MIN), 0);
+    assert_int_equal(stp_fix_sqrt_wide(0), 0);
+    assert_int_equal(stp_fix_sqrt_wide(INT64_MAX), STP_FIX_MAX);
+    assert_int_equal(stp_fix_sqrt_wide((int64_t)ONE * ONE), ONE);
+}
+
+static void test_sqrt_wide_is_floor_and_saturates(void **state)
+{
+    int i;
+    (void)state;
+    prng_seed(5);
+    for (i = 0; i < 4 * CASES; i++) {
+        int64_t v = (int64_t)(prng_next() >> (1 + prng_below(63)));
+        stp_fix got = stp_fix_sqrt_wide(v);
+        uint64_t r = (uint64_t)got;
+#if STP_SQRT_FAST
+        double exact = sqrt((double)v);
+        assert_true(fabs((double)got - (exact > (double)STP_FIX_MAX ? (double)STP_FIX_MAX : exact)) <=
+                    exact * 0x1p-15 + 1.0);
+        (void)r;
+#else
+        if ((u128)STP_FIX_MAX * STP_FIX_MAX <= (u128)v) {
+            /* a root above the range saturates (or is MAX exactly) */
+            assert_int_equal(got, STP_FIX_MAX);
+        } else if (!((u128)r * r <= (u128)v && (u128)(r + 1) * (r + 1) > (u128)v)) {
+            fail_msg("sqrt_wide(%lld) = %d", (long long)v, got);
+        }
+#endif
+    }
+}
+
+/* ---- log2, exp2, pow ---- */
+
+static void test_log2_within_two_lsb(void **state)
+{
+    int i, j;
+    (void)state;
+    prng_seed(6);
+    for (i = 0; i < 4 * CASES; i++) {
+        stp_fix a = rand_fix_positive();
+        double exact = log2(to_d(a)) * (double)ONE;
+        stp_fix got = stp_fix_log2(a);
+        /* documented: absolute error < 2^-(F-1), i.e. 2 LSB */
+        if (!(fabs((double)got - exact) < 2.0))
+            fail_msg("log2(%d) = %d, exact %.4f LSB", a, got, exact);
+    }
+    for (j = 0; j < 31; j++) /* powers of two: integers */
+        assert_true(abs(stp_fix_log2((stp_fix)1 << j) - (j - F) * ONE) < 2);
+    assert_int_equal(stp_fix_log2(0), STP_FIX_MIN);
+    assert_int_equal(stp_fix_log2(-ONE), STP_FIX_MIN);
+    assert_int_equal(stp_fix_log2(STP_FIX_MIN), STP_FIX_MIN);
+}
+
+static void test_exp2_relative_error(void **state)
+{
+    /* Documented: relative error < 2^-(F-2).  A result is a multiple of
+     * 2^-F, so rounding alone costs 0.5 LSB: the relative bound can hold
+     * only for results >= 2^-3 (0.5 LSB / 2^-3 = 2^-(F-2)); below that the
+     * assertion is the relative bound plus half an LSB. */
+    double worst_rel = 0.0;
+    int i;
+    (void)state;
+    prng_seed(7);
+    for (i = 0; i < 4 * CASES; i++) {
+        /* exponents over [-(F+2), 15]: results from below 1 LSB to the top */
+        stp_fix a = (stp_fix)((int64_t)prng_below((uint64_t)(F + 17) << F) - ((int64_t)(F + 2) << F));
+        double exact = exp2(to_d(a)) * (double)ONE; /* in LSB */
+        stp_fix got = stp_fix_exp2(a);
+        double err = fabs((double)got - exact);
+        if (exact >= (double)STP_FIX_MAX) {
+            assert_int_equal(got, STP_FIX_MAX);
+            continue;
+        }
+        if (exact >= (double)ONE / 8.0) {
+            if (err / exact > worst_rel)
+                worst_rel = err / exact;
+            if (!(err / exact < ldexp(1.0, -(F - 2))))
+                fail_msg("exp2(%d) = %d, exact %.4f LSB, rel. error %.3g", a, got, exact, err / exact);
+        } else if (!(err <= exact * ldexp(1.0, -(F - 2)) + 0.5)) {
+            fail_msg("exp2(%d) = %d, exact %.4f LSB", a, got, exact);
+        }
+    }
+    print_message("exp2: worst relative error %.3g (bound %.3g)\n", worst_rel, ldexp(1.0, -(F - 2)));
+}
+
+static void test_exp2_saturates_and_underflows(void **state)
+{
+    (void)state;
+    assert_int_equal(stp_fix_exp2(0), ONE);
+    assert_int_equal(stp_fix_exp2(ONE), 2 * ONE);
+    assert_int_equal(stp_fix_exp2(-ONE), ONE / 2);
+    assert_int_equal(stp_fix_exp2((31 - F) * ONE), STP_FIX_MAX);
+    assert_int_equal(stp_fix_exp2(STP_FIX_MAX), STP_FIX_MAX);
+    assert_int_equal(stp_fix_exp2(STP_FIX_MIN), 0);
+    assert_int_equal(stp_fix_exp2(INT32_MIN), 0);
+    assert_int_equal(stp_fix_exp2(-(F + 2) * ONE), 0);
+    assert_int_equal(stp_fix_exp2(-F * ONE), 1);
+}
+
+static void test_pow_against_double(void **state)
+{
+    /* No bound is documented; pow = exp2(e * log2(base)).  log2 is within
+     * 2 LSB, the product e*lg rounds by 0.5 LSB, so the exponent handed to
+     * exp2 is off by at most (2|e| + 0.5) LSB, which scales the result by
+     * 2^that: relative (2|e| + 0.5) 2^-F ln 2; exp2 adds 2^-(F-2) relative
+     * and 0.5 LSB.  Asserted: err <= exact (ln2 (2|e| + 0.5) 2^-F + 2^-(F-2))
+     * + 1 LSB. */
+    int i;
+    (void)state;
+    prng_seed(8);
+    for (i = 0; i < 4 * CASES; i++) {
+        stp_fix base = (stp_fix)(1 + prng_below(100u * (uint64_t)ONE)); /* (0, 100] */
+        stp_fix e = (stp_fix)((int64_t)prng_below(8u * (uint64_t)ONE) - 4 * (int64_t)ONE); /* [-4, 4) */
+        double exact = pow(to_d(base), to_d(e)) * (double)ONE;
+        stp_fix got = stp_fix_pow(base, e);
+        double bound = exact * (log(2.0) * (2.0 * fabs(to_d(e)) + 0.5) * LSB + ldexp(1.0, -(F - 2))) + 1.0;
+        if (exact >= (double)STP_FIX_MAX) {
+            assert_true(got >= (stp_fix)((double)STP_FIX_MAX * (1.0 - 1e-3)));
+            continue;
+        }
+        if (!(fabs((double)got - exact) <= bound))
+            fail_msg("pow(%d, %d) = %d, exact %.3f LSB, bound %.3f", base, e, got, exact, bound);
+    }
+    assert_int_equal(stp_fix_pow(0, ONE), 0);
+    assert_int_equal(stp_fix_pow(-ONE, ONE), 0);
+    assert_true(abs(stp_fix_pow(4 * ONE, ONE / 2) - 2 * ONE) <= 2);
+    assert_true(abs(stp_fix_pow(ONE, 3 * ONE) - ONE) <= 1);
+}
+
+/* ---- sin, cos ---- */
+
+static double sin_deg_ref(stp_fix deg)
+{
+    /* reduce exactly in double (deg is a multiple of 2^-F), then convert */
+    double d = fmod(to_d(deg), 360.0);
+    return sin(d * (PI / 180.0));
+}
+
+static double cos_deg_ref(stp_fix deg)
+{
+    double d = fmod(to_d(deg), 360.0);
+    return cos(d * (PI / 180.0));
+}
+
+static void check_sin_cos(stp_fix deg)
+{
+    double s = to_d(stp_fix_sin_deg(deg)), c = to_d(stp_fix_cos_deg(deg));
+    /* documented: absolute error < 2^-14 for any angle */
+    if (!(fabs(s - sin_deg_ref(deg)) < 0x1p-14))
+        fail_msg("sin_deg(%d = %.5f deg) = %.6f, want %.6f", deg, to_d(deg), s, sin_deg_ref(deg));
+    if (!(fabs(c - cos_deg_ref(deg)) < 0x1p-14))
+        fail_msg("cos_deg(%d = %.5f deg) = %.6f, want %.6f", deg, to_d(deg), c, cos_deg_ref(deg));
+}
+
+static void test_sin_cos_within_2e14_any_angle(void **state)
+{
+    int i, k;
+    (void)state;
+    prng_seed(9);
+    for (i = 0; i < 4 * CASES; i++)
+        check_sin_cos(rand_fix());
+    for (i = 0; i < CASES; i++) /* dense over one turn */
+        check_sin_cos((stp_fix)((int64_t)prng_below(720u * (uint64_t)ONE) - 360 * (int64_t)ONE));
+    for (k = -8; k <= 8; k++) { /* multiples of 45 degrees, and one LSB around */
+        check_sin_cos(k * 45 * ONE);
+        check_sin_cos(k * 45 * ONE + 1);
+        check_sin_cos(k * 45 * ONE - 1);
+    }
+}
+
+static void test_sin_cos_at_range_ends(void **state)
+{
+    stp_fix d;
+    (void)state;
+    /* "any value": the top 90 degrees of the range, where degrees + 90 does
+     * not fit in stp_fix, and the bottom */
+    for (d = STP_FIX_MAX; d > STP_FIX_MAX - 100 * ONE; d -= ONE / 3)
+        check_sin_cos(d);
+    for (d = STP_FIX_MIN; d < STP_FIX_MIN + 100 * ONE; d += ONE / 3)
+        check_sin_cos(d);
+    check_sin_cos(INT32_MIN);
+    check_sin_cos(STP_FIX_MAX);
+}
+
+/* ---- vectors ---- */
+
+static stp_vec3 vec(stp_fix x, stp_fix y, stp_fix z)
+{
+    stp_vec3 v;
+    v.x = x;
+    v.y = y;
+    v.z = z;
+    return v;
+}
+
+static void test_vec3_dot_rounds_and_saturates(void **state)
+{
+    int i;
+    (void)state;
+    prng_seed(10);
+    for (i = 0; i < 4 * CASES; i++) {
+        stp_vec3 a = vec(rand_fix(), rand_fix(), rand_fix());
+        stp_vec3 b = vec(rand_fix(), rand_fix(), rand_fix());
+        i128 exact2 = (i128)a.x * b.x + (i128)a.y * b.y + (i128)a.z * b.z; /* 2F fraction bits */
+        double exact = (double)exact2 / (double)ONE;                         /* LSB */
+        stp_fix got = stp_vec3_dot(a, b);
+        if (exact >= (double)STP_FIX_MAX || exact <= (double)STP_FIX_MIN) {
+            assert_int_equal(got, exact > 0 ? STP_FIX_MAX : STP_FIX_MIN);
+            continue;
+        }
+        /* rounded: within half an LSB (and a hair for double's rounding and
+         * the halving of the products) */
+        if (!(fabs((double)got - exact) <= 0.5 + 1e-3))
+            fail_msg("dot = %d, exact %.6f LSB", got, exact);
+    }
+    assert_int_equal(stp_vec3_dot(vec(ONE, 0, 0), vec(ONE, 0, 0)), ONE);
+    assert_int_equal(stp_vec3_dot(vec(ONE, ONE, ONE), vec(-ONE, ONE, 2 * ONE)), 2 * ONE);
+    assert_int_equal(stp_vec3_dot(vec(STP_FIX_MAX, STP_FIX_MAX, STP_FIX_MAX),
+                                  vec(STP_FIX_MAX, STP_FIX_MAX, STP_FIX_MAX)), STP_FIX_MAX);
+    assert_int_equal(stp_vec3_dot(vec(STP_FIX_MIN, STP_FIX_MIN, STP_FIX_MIN),
+                                  vec(STP_FIX_MAX, STP_FIX_MAX, STP_FIX_MAX)), STP_FIX_MIN);
+    assert_int_equal(stp_vec3_dot(vec(INT32_MIN, INT32_MIN, INT32_MIN),
+                                  vec(INT32_MIN, INT32_MIN, INT32_MIN)), STP_FIX_MAX);
+}
+
+/* Unity tolerances (not documented beyond "full precision"): each component
+ * is a truncated quotient by a floor root computed from ~30-bit scaled
+ * components, so it is within 1 LSB of v_i/|v| (2 when the largest
+ * component is >= 2^30 and is halved first); the unit length then is within
+ * UNIT_LEN_TOL LSB of 1, and the returned length within 2 LSB of |v|. */
+#define UNIT_COMPONENT_TOL 2.0
+#define UNIT_LEN_TOL 3.0
+#define UNIT_RET_TOL 2.0
+
+static void check_unity(stp_vec3 v)
+{
+    stp_vec3 u = vec(12345, 12345, 12345);
+    double dx = v.x, dy = v.y, dz = v.z; /* in LSB */
+    double len = sqrt(dx * dx + dy * dy + dz * dz);
+    stp_fix ret = stp_vec3_unity(v, &u);
+    double ulen = sqrt((double)u.x * u.x + (double)u.y * u.y + (double)u.z * u.z);
+    if (len == 0.0) {
+        assert_int_equal(ret, 0);
+        assert_true(u.x == 0 && u.y == 0 && u.z == 0);
+        return;
+    }
+    if (len >= (double)STP_FIX_MAX)
+        assert_int_equal(ret, STP_FIX_MAX);
+    else if (!(fabs((double)ret - len) <= UNIT_RET_TOL))
+        fail_msg("unity(%d,%d,%d) returned %d, |v| = %.3f LSB", v.x, v.y, v.z, ret, len);
+    if (!(fabs(u.x - dx / len * ONE) <= UNIT_COMPONENT_TOL &&
+          fabs(u.y - dy / len * ONE) <= UNIT_COMPONENT_TOL &&
+          fabs(u.z - dz / len * ONE) <= UNIT_COMPONENT_TOL))
+        fail_msg("unity(%d,%d,%d) = (%d,%d,%d)", v.x, v.y, v.z, u.x, u.y, u.z);
+    if (!(fabs(ulen - (double)ONE) <= UNIT_LEN_TOL))
+        fail_msg("unity(%d,%d,%d): |out| = %.3f LSB, want %d", v.x, v.y, v.z, ulen, ONE);
+}
+
+static void test_vec3_unity_random(void **state)
+{
+    int i;
+    (void)state;
+    prng_seed(12);
+    for (i = 0; i < 4 * CASES; i++) {
+        /* a common magnitude scale so the components are comparable, as in
+         * real direction vectors; then random ones of independent scale */
+        if (i % 2 == 0) {
+            int bits = 1 + (int)prng_below(31);
+            stp_fix lim = (stp_fix)(((uint64_t)1 << bits) - 1);
+            stp_vec3 v = vec((stp_fix)((int64_t)prng_below(2u * (uint64_t)lim + 1) - lim),
+                             (stp_fix)((int64_t)prng_below(2u * (uint64_t)lim + 1) - lim),
+                             (stp_fix)((int64_t)prng_below(2u * (uint64_t)lim + 1) - lim));
+            check_unity(v);
+        } else {
+            check_unity(vec(rand_fix(), rand_fix(), rand_fix()));
+        }
+    }
+}
+
+static void test_vec3_unity_tiny_and_huge(void **state)
+{
+    (void)state;
+    /* 1 LSB vectors keep full precision */
+    check_unity(vec(1, 0, 0));
+    check_unity(vec(0, -1, 0));
+    check_unity(vec(0, 0, 1));
+    check_unity(vec(1, 1, 1));
+    check_unity(vec(1, -1, 0));
+    check_unity(vec(1, 2, 3));
+    check_unity(vec(-3, 1, 2));
+    /* huge: components at the limits; |v| saturates */
+    check_unity(vec(STP_FIX_MAX, STP_FIX_MAX, STP_FIX_MAX));
+    check_unity(vec(STP_FIX_MIN, STP_FIX_MAX, 0));
+    check_unity(vec(STP_FIX_MAX, 1, 0));
+    check_unity(vec(INT32_MIN, 0, 0));
+    check_unity(vec(INT32_MIN, INT32_MIN, INT32_MIN));
+    check_unity(vec(1, STP_FIX_MAX, -1));
+    check_unity(vec((stp_fix)1 << 30, (stp_fix)1 << 30, 0));
+    check_unity(vec(((stp_fix)1 << 29) - 1, 1, 1));
+    /* zero: no direction */
+    check_unity(vec(0, 0, 0));
+    {
+        stp_vec3 u;
+        assert_int_equal(stp_vec3_unity(vec(3 * ONE, 0, 4 * ONE), &u), 5 * ONE);
+        assert_true(abs(u.x - stp_fix_from_ratio(3, 5)) <= 1);
+        assert_true(abs(u.z - stp_fix_from_ratio(4, 5)) <= 1);
+        assert_int_equal(u.y, 0);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_from_int_and_ratio),
+        cmocka_unit_test(test_add_sub_saturate),
+        cmocka_unit_test(test_mul_rounds_to_nearest),
+        cmocka_unit_test(test_mul_saturates_at_extremes),
+        cmocka_unit_test(test_div_truncates_toward_zero),
+        cmocka_unit_test(test_div_by_zero_and_overflow_saturate),
+        cmocka_unit_test(test_isqrt64_is_exact_floor),
+        cmocka_unit_test(test_sqrt_is_floor_of_root),
+        cmocka_unit_test(test_sqrt_of_negative_and_extremes),
+        cmocka_unit_test(test_sqrt_wide_is_floor_and_saturates),
+        cmocka_unit_test(test_log2_within_two_lsb),
+        cmocka_unit_test(test_exp2_relative_error),
+        cmocka_unit_test(test_exp2_saturates_and_underflows),
+        cmocka_unit_test(test_pow_against_double),
+        cmocka_unit_test(test_sin_cos_within_2e14_any_angle),
+        cmocka_unit_test(test_sin_cos_at_range_ends),
+        cmocka_unit_test(test_vec3_dot_rounds_and_saturates),
+        cmocka_unit_test(test_vec3_unity_random),
+        cmocka_unit_test(test_vec3_unity_tiny_and_huge),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,759 @@
+/* Host side: a stp_scene compiled to C for firmware.  See compile_scene.h. */
+#define _POSIX_C_SOURCE 200809L
+#include "compile_scene.h"
+
+#include <errno.h>
+#include <getopt.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene_util.h"
+
+/* ---- the view and lighting stp_tool_render would use ----
+ *
+ * These repeat render_scene.c's choices (its helpers are static there).  They
+ * must stay identical: the QEMU test compares the firmware's picture with
+ * `stipple render` pixel for pixel and tests/firmware/test_scene_data.c does
+ * the same on the host, so a drift shows up at once. */
+
+static stp_vec3 fix3(stp_scene_vec3 v)
+{
+    stp_vec3 r;
+    r.x = stp_tool_fix(v.x);
+    r.y = stp_tool_fix(v.y);
+    r.z = stp_tool_fix(v.z);
+    return r;
+}
+
+static double dist3(stp_scene_vec3 a, stp_scene_vec3 b)
+{
+    double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
+    return sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+static void material_from_scene(const stp_scene_material *m, stp_material *out)
+{
+    double lum = 0.30 * m->color[0] + 0.59 * m->color[1] + 0.11 * m->color[2];
+    double refl = m->kd * lum;
+    out->reflectivity = stp_tool_fix(refl < 0 ? 0 : (refl > 1 ? 1 : refl));
+    out->refraction = stp_tool_fix(m->ior > 1.0 ? m->ior : 10.0);
+    out->gloss = stp_tool_fix(m->shine > 0 ? 2.0 / m->shine : 10.0);
+    out->specular = stp_tool_fix(m->ks < 0 ? 0 : m->ks);
+}
+
+static int setup_view(const stp_scene *scene, const stp_tool_options *opt, stp_view *view,
+                      stp_lighting *lighting, char *err, size_t errlen)
+{
+    stp_scene_vec3 lo, hi, centre, light_pos[STP_MAX_LIGHTS];
+    double radius;
+    int light_count, j;
+
+    if (stp_scene_bounds(scene, &lo, &hi) != 0) {
+        snprintf(err, errlen, "the scene has no polygons to render");
+        return -1;
+    }
+    centre.x = (lo.x + hi.x) / 2;
+    centre.y = (lo.y + hi.y) / 2;
+    centre.z = (lo.z + hi.z) / 2;
+    radius = dist3(lo, hi) / 2;
+    if (radius <= 0)
+        radius = 1;
+
+    memset(view, 0, sizeof *view);
+    if (scene->has_view) {
+        view->from = fix3(scene->from);
+        view->at = fix3(scene->at);
+        view->up = fix3(scene->up);
+        view->fov_degrees = stp_tool_fix(opt->fov > 0 ? opt->fov : scene->angle);
+        view->hither = stp_tool_fix(scene->hither > 0 ? scene->hither : 1e-3);
+    } else {
+        double fov = opt->fov > 0 ? opt->fov : 45.0;
+        double d = radius / sin(fov * 0.5 * 3.14159265358979323846 / 180.0) * 1.05;
+        stp_scene_vec3 from;
+        from.x = centre.x + d * 0.48;
+        from.y = centre.y + d * 0.40;
+        from.z = centre.z + d * 0.78;
+        view->from = fix3(from);
+        view->at = fix3(centre);
+        view->up.x = view->up.z = 0;
+        view->up.y = STP_FIX_ONE;
+        view->fov_degrees = stp_tool_fix(fov);
+        view->hither = stp_tool_fix(d * 1e-3);
+    }
+    if (view->hither <= 0)
+        view->hither = 1;
+    view->projection = opt->perspective ? STP_PERSPECTIVE : STP_PARALLEL;
+    view->window_half = stp_tool_fix(radius);
+
+    if (opt->light_count > 0) {
+        light_count = opt->light_count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : opt->light_count;
+        for (j = 0; j < light_count; j++)
+            light_pos[j] = opt->lights[j];
+    } else if (scene->light_count > 0) {
+        light_count = (int)(scene->light_count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : scene->light_count);
+        for (j = 0; j < light_count; j++)
+            light_pos[j] = scene->lights[j].position;
+    } else {
+        stp_scene_vec3 eye = scene->has_view ? scene->from : centre;
+        light_pos[0].x = eye.x - radius;
+        light_pos[0].y = eye.y + radius * 2;
+        light_pos[0].z = eye.z + radius * 3;
+        light_count = 1;
+    }
+    memset(lighting, 0, sizeof *lighting);
+    lighting->brightness = stp_tool_fix(opt->brightness);
+    lighting->background = stp_tool_fix(opt->background);
+    lighting->attenuation_c = stp_tool_fix(opt->attenuation_c);
+    lighting->count = light_count;
+    for (j = 0; j < light_count; j++) {
+        double power = 1.0 - opt->background;
+        if (opt->auto_power)
+            power *= (opt->attenuation_c + dist3(light_pos[j], centre)) / sqrt((double)light_count);
+        lighting->lights[j].position = fix3(light_pos[j]);
+        lighting->lights[j].power = stp_tool_fix(power);
+    }
+    return 0;
+}
+
+/* ---- sizing: run the scene through the host core once ---- */
+
+static int discard_rows(stp_port *port, uint32_t y0, uint32_t rows, const uint8_t *pixels,
+                        size_t stride)
+{
+    (void)port;
+    (void)y0;
+    (void)rows;
+    (void)pixels;
+    (void)stride;
+    return 0;
+}
+
+/* The display file's exact size comes from entering the scene for real:
+ * clipping adds vertices and SHADE instructions depend on the shades, which
+ * only the core knows.  The core's switches do not change what it enters, so
+ * the host build's count holds for the firmware's configuration. */
+static int measure(const stp_scene *scene, const stp_tool_options *opt, stp_tool_stats *stats,
+                   char *err, size_t errlen)
+{
+    stp_port port;
+    stp_tool_options o = *opt;
+    memset(&port, 0, sizeof port);
+    port.width = (uint32_t)opt->width;
+    port.height = (uint32_t)opt->height;
+    port.format = STP_PIXEL_MONO1;
+    port.flush = discard_rows;
+    o.band_rows = 1; /* the smallest buffers: only the entry counts matter */
+    o.styles = 0;
+    return stp_tool_render(scene, &o, &port, stats, err, errlen);
+}
+
+/* ---- writing ---- */
+
+typedef struct writer {
+    FILE *f;
+    int failed;
+} writer;
+
+static void out(writer *w, const char *fmt, ...)
+{
+    va_list ap;
+    if (!w->f || w->failed)
+        return;
+    va_start(ap, fmt);
+    if (vfprintf(w->f, fmt, ap) < 0)
+        w->failed = 1;
+    va_end(ap);
+}
+
+static void out_vec(writer *w, stp_vec3 v)
+{
+    out(w, "{%ld, %ld, %ld}", (long)v.x, (long)v.y, (long)v.z);
+}
+
+static const char *hidden_name(stp_hidden h)
+{
+    switch (h) {
+    case STP_HIDDEN_PAINTER: return "STP_HIDDEN_PAINTER";
+    case STP_HIDDEN_ZBUFFER: return "STP_HIDDEN_ZBUFFER";
+    default: return "STP_HIDDEN_NONE";
+    }
+}
+
+/* What the scene uses, found once for both outputs. */
+typedef struct plan {
+    stp_view view;
+    stp_lighting lighting;
+    stp_material *materials;   /* compacted: only the used ones */
+    int *material_map;         /* scene material index -> compacted, -1 unused */
+    uint32_t material_count;
+    int default_material;      /* compacted index of the default, -1 unused */
+    int max_vertices;
+    int specular;              /* 1 when some used material has Ks > 0 */
+    unsigned long vertex_count;
+    stp_tool_stats stats;
+    stp_cell cell;
+    uint8_t gamma[256];
+    int has_gamma;
+    stp_fix background;
+} plan;
+
+static int make_plan(const stp_scene *scene, const stp_tool_options *opt, plan *p, char *err,
+                     size_t errlen)
+{
+    size_t i;
+    memset(p, 0, sizeof *p);
+    p->default_material = -1;
+    if (opt->width < 1 || opt->height < 1 || opt->width > 32767 || opt->height > 32767) {
+        snprintf(err, errlen, "bad size %dx%d", opt->width, opt->height);
+        return -1;
+    }
+    if (setup_view(scene, opt, &p->view, &p->lighting, err, errlen) != 0)
+        return -1;
+    if (measure(scene, opt, &p->stats, err, errlen) != 0)
+        return -1;
+    p->materials = calloc(scene->material_count + 1, sizeof *p->materials);
+    p->material_map = malloc((scene->material_count + 1) * sizeof *p->material_map);
+    if (!p->materials || !p->material_map) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    for (i = 0; i < scene->material_count; i++)
+        p->material_map[i] = -1;
+    p->max_vertices = 3;
+    for (i = 0; i < scene->polygon_count; i++) {
+        const stp_scene_polygon *poly = &scene->polygons[i];
+        int *slot = poly->material >= 0 && (size_t)poly->material < scene->material_count
+                        ? &p->material_map[poly->material]
+                        : &p->default_material;
+        if (*slot < 0) {
+            stp_material *m = &p->materials[p->material_count];
+            stp_material_default(m);
+            if (slot != &p->default_material)
+                material_from_scene(&scene->materials[poly->material], m);
+            if (m->specular != 0)
+                p->specular = 1;
+            *slot = (int)p->material_count++;
+        }
+        if (poly->count > p->max_vertices)
+            p->max_vertices = poly->count;
+        p->vertex_count += (unsigned long)poly->count;
+    }
+    if (p->material_count > 65535 || scene->polygon_count > 0xFFFFFFFFu ||
+        p->vertex_count > 0xFFFFFFFFu) {
+        snprintf(err, errlen, "scene too large to compile");
+        return -1;
+    }
+    if (!opt->shading)
+        p->specular = 0; /* no MAKE-SHADE at all */
+    if (stp_tool_cell(opt, &p->cell) != 0) {
+        snprintf(err, errlen, "bad halftone cell");
+        return -1;
+    }
+    if (opt->gamma != 1.0 || opt->gamma_k != 1.0) {
+        if (stp_gamma_table(p->gamma, opt->levels, stp_tool_fix(opt->gamma),
+                            stp_tool_fix(opt->gamma_k)) != 0) {
+            snprintf(err, errlen, "bad gamma table");
+            return -1;
+        }
+        p->has_gamma = 1;
+    }
+    if (scene->has_background) {
+        const double *b = scene->background;
+        double lum = 0.30 * b[0] + 0.59 * b[1] + 0.11 * b[2];
+        p->background = stp_tool_fix(lum < 0 ? 0 : (lum > 1 ? 1 : lum));
+    }
+    return 0;
+}
+
+static void write_config(writer *w, const plan *p, const stp_tool_options *opt)
+{
+    out(w, "/* Generated by `stipple compile`: the least configuration of the core\n"
+           " * this scene needs.  Use it as -DSTP_CONFIG_HEADER='\"<this file>\"' for the\n"
+           " * core and the scene's C source alike. */\n"
+           "#ifndef STP_COMPILED_SCENE_CONFIG_H\n"
+           "#define STP_COMPILED_SCENE_CONFIG_H\n\n");
+    out(w, "/* The scene's literals are stp_fix with this many fractional bits, and\n"
+           " * the host's picture was made with this square root: fixed, not minimal. */\n"
+           "#define STP_FIX_FRAC_BITS %d\n#define STP_SQRT_FAST %d\n\n",
+        STP_FIX_FRAC_BITS, STP_SQRT_FAST);
+    out(w, "/* Its largest polygon (the renderer's scratch space grows with this). */\n"
+           "#define STP_MAX_POLYGON_VERTICES %d\n",
+        p->max_vertices);
+    out(w, "/* Lights in use (at least 1, the core's minimum). */\n"
+           "#define STP_MAX_LIGHTS %d\n",
+        p->lighting.count < 1 ? 1 : p->lighting.count);
+    out(w, "/* The whole scene is entered into one segment. */\n"
+           "#define STP_MAX_SEGMENTS 1\n");
+    out(w, "/* 1 only when shading is on and some material has Ks > 0. */\n"
+           "#define STP_WITH_SPECULAR %d\n",
+        p->specular);
+    out(w, "/* Only the hidden-surface method the output uses (%s). */\n"
+           "#define STP_WITH_ZBUFFER %d\n#define STP_WITH_PAINTER %d\n",
+        hidden_name(opt->hidden), opt->hidden == STP_HIDDEN_ZBUFFER,
+        opt->hidden == STP_HIDDEN_PAINTER);
+    out(w, "/* Scenes hold polygons only. */\n"
+           "#define STP_WITH_LINES 0\n\n#endif\n");
+}
+
+static void write_source(writer *w, const stp_scene *scene, const plan *p,
+                         const stp_tool_options *opt)
+{
+    size_t i;
+    uint32_t j;
+    int k;
+    uint32_t capacity = p->stats.display_entries > 0 ? (uint32_t)p->stats.display_entries : 1;
+    uint32_t sort_count = (uint32_t)(p->stats.polygons_in - p->stats.polygons_skipped);
+
+    out(w, "/* Generated by `stipple compile`: a %dx%d scene of %lu polygons, %lu vertices,\n"
+           " * %lu materials, %d lights; display file %lu entries.  Do not edit. */\n",
+        opt->width, opt->height, (unsigned long)scene->polygon_count, p->vertex_count,
+        (unsigned long)p->material_count, p->lighting.count, (unsigned long)capacity);
+    out(w, "#include \"stp_scene_data.h\"\n\n");
+    out(w, "/* The literals below are in this format; another one would scale them. */\n"
+           "#if STP_FIX_FRAC_BITS != %d\n#error \"compiled for STP_FIX_FRAC_BITS %d\"\n#endif\n"
+           "#if STP_MAX_LIGHTS < %d || STP_MAX_POLYGON_VERTICES < %d\n"
+           "#error \"the core's configuration is too small for this scene\"\n#endif\n\n",
+        STP_FIX_FRAC_BITS, STP_FIX_FRAC_BITS, p->lighting.count < 1 ? 1 : p->lighting.count,
+        p->max_vertices);
+
+    out(w, "static const stp_vec3 vertices[%lu] = {\n", p->vertex_count);
+    for (i = 0; i < scene->polygon_count; i++) {
+        const stp_scene_polygon *poly = &scene->polygons[i];
+        for (k = 0; k < poly->count; k++) {
+            out(w, "    ");
+            out_vec(w, fix3(scene->vertices[poly->first + (size_t)k]));
+            out(w, ",\n");
+        }
+    }
+    out(w, "};\n\n");
+
+    out(w, "static const stp_scene_data_polygon polygons[%lu] = {\n",
+        (unsigned long)scene->polygon_count);
+    for (i = 0; i < scene->polygon_count; i++) {
+        const stp_scene_polygon *poly = &scene->polygons[i];
+        int m = poly->material >= 0 && (size_t)poly->material < scene->material_count
+                    ? p->material_map[poly->material]
+                    : p->default_material;
+        out(w, "    {%d, %d},\n", poly->count, m);
+    }
+    out(w, "};\n\n");
+
+    out(w, "/* reflectivity, refraction, gloss, specular weight */\n"
+           "static const stp_material materials[%lu] = {\n",
+        (unsigned long)p->material_count);
+    for (j = 0; j < p->material_count; j++) {
+        const stp_material *m = &p->materials[j];
+        out(w, "    {%ld, %ld, %ld, %ld},\n", (long)m->reflectivity, (long)m->refraction,
+            (long)m->gloss, (long)m->specular);
+    }
+    out(w, "};\n\n");
+
+    out(w, "static const stp_cell cell = {%d, %d, %d, {", p->cell.kind, p->cell.width,
+        p->cell.height);
+    for (k = 0; k < p->cell.width * p->cell.height; k++)
+        out(w, "%s%d", k ? ", " : "", p->cell.thresholds[k]);
+    out(w, "}, {");
+    for (k = 0; k < 5; k++)
+        out(w, "%s%d", k ? ", " : "", p->cell.patterns[k]);
+    out(w, "}};\n\n");
+
+    if (p->has_gamma) {
+        out(w, "static const uint8_t gamma[%d] = {", opt->levels);
+        for (k = 0; k < opt->levels; k++)
+            out(w, "%s%d", k ? ", " : "", p->gamma[k]);
+        out(w, "};\n\n");
+    }
+
+    /* RAM: written by the core while the scene is entered and sorted */
+    out(w, "static stp_instr display_file[%lu];\n", (unsigned long)capacity);
+    if (opt->hidden == STP_HIDDEN_PAINTER)
+        out(w, "static stp_sort_entry sort[%lu];\n", (unsigned long)(sort_count ? sort_count : 1));
+    out(w, "\n");
+
+    out(w, "const stp_scene_data stp_compiled_scene = {\n");
+    out(w, "    %d, %d, /* width, height */\n", opt->width, opt->height);
+    out(w, "    %d, /* levels */\n    %d, /* shading */\n    %d, /* back-face removal */\n",
+        opt->levels, opt->shading ? 1 : 0, opt->backface_removal ? 1 : 0);
+    out(w, "    { /* view: from, at, up, fov, window half, hither, projection */\n        ");
+    out_vec(w, p->view.from);
+    out(w, ", ");
+    out_vec(w, p->view.at);
+    out(w, ", ");
+    out_vec(w, p->view.up);
+    out(w, ",\n        %ld, %ld, %ld, %s},\n", (long)p->view.fov_degrees,
+        (long)p->view.window_half, (long)p->view.hither,
+        p->view.projection == STP_PARALLEL ? "STP_PARALLEL" : "STP_PERSPECTIVE");
+    out(w, "    { /* lighting: brightness, background, C, count, {position, power} */\n"
+           "        %ld, %ld, %ld, %d, {",
+        (long)p->lighting.brightness, (long)p->lighting.background,
+        (long)p->lighting.attenuation_c, p->lighting.count);
+    for (k = 0; k < p->lighting.count; k++) {
+        out(w, "%s{", k ? ", " : "");
+        out_vec(w, p->lighting.lights[k].position);
+        out(w, ", %ld}", (long)p->lighting.lights[k].power);
+    }
+    out(w, "}},\n");
+    out(w, "    materials, %lu,\n    vertices, %lu,\n    polygons, %lu,\n",
+        (unsigned long)p->material_count, p->vertex_count, (unsigned long)scene->polygon_count);
+    out(w, "    display_file, %lu,\n", (unsigned long)capacity);
+    if (opt->hidden == STP_HIDDEN_PAINTER)
+        out(w, "    sort, %lu,\n", (unsigned long)(sort_count ? sort_count : 1));
+    else
+        out(w, "    0, 0,\n");
+    out(w, "    %s,\n    &cell,\n    %s,\n    %ld /* background */\n};\n",
+        hidden_name(opt->hidden), p->has_gamma ? "gamma" : "0", (long)p->background);
+}
+
+int stp_tool_compile(const stp_scene *scene, const stp_tool_options *opt, FILE *c_out,
+                     FILE *h_out, char *err, size_t errlen)
+{
+    plan p;
+    writer wc, wh;
+    int result = -1;
+
+    if (!scene || !opt) {
+        snprintf(err, errlen, "no scene");
+        return -1;
+    }
+    if (make_plan(scene, opt, &p, err, errlen) != 0)
+        goto done;
+    wc.f = c_out;
+    wc.failed = 0;
+    wh.f = h_out;
+    wh.failed = 0;
+    write_source(&wc, scene, &p, opt);
+    write_config(&wh, &p, opt);
+    if (wc.failed || wh.failed || (c_out && fflush(c_out) != 0) || (h_out && fflush(h_out) != 0)) {
+        snprintf(err, errlen, "write error: %s", strerror(errno));
+        goto done;
+    }
+    result = 0;
+done:
+    free(p.materials);
+    free(p.material_map);
+    return result;
+}
+
+/* ---- the subcommand ---- */
+
+static void usage(FILE *to)
+{
+    fprintf(to,
+            "usage: stipple compile SCENE -o OUT.c [options]\n"
+            "\n"
+            "Compiles SCENE (.nff, .obj, .off) for a firmware build: OUT.c holds the scene as\n"
+            "fixed-point data for ports/compiled/stp_scene_data.h, and a header (OUT_config.h\n"
+            "unless --header says otherwise) sets the core's STP_* switches to what the scene\n"
+            "needs.  The firmware's picture equals 'stipple render SCENE' with the same\n"
+            "options, rendered to 1-bit (MONO1).\n"
+            "\n"
+            "  -o, --output FILE        the C source to write (required)\n"
+            "      --header FILE        the configuration header (default: OUT without .c,\n"
+            "                           plus _config.h)\n"
+            "  -s, --size WxH           device size in pixels (default 128x64)\n"
+            "  -l, --levels N           INTENSITY levels, 2..256 (default 16)\n"
+            "  -d, --dither CELL        bayer2, bayer4 (default), bayer8, seed2x2, pattern2x2,\n"
+            "                           or user:W:H:t,t,...\n"
+            "      --spacing KIND       linear (default), exponential, cubic\n"
+            "  -g, --gamma G            gamma of the device table (default 1)\n"
+            "      --gamma-k K          k of the gamma table (default 1)\n"
+            "      --hidden METHOD      zbuffer (default), painter or none\n"
+            "      --backface           remove back faces\n"
+            "      --no-shading         fill each polygon with its material's reflectivity\n"
+            "      --light X,Y,Z        a light (repeatable, up to %d); replaces the scene's\n"
+            "      --bright B           overall brightness (default 1)\n"
+            "      --ambient B          background light share (default 0.2)\n"
+            "      --attenuation C      C of 1/(C+U) (default 1)\n"
+            "      --raw-power          power 1-B for every light\n"
+            "      --parallel           parallel projection\n"
+            "      --fov DEGREES        field of view (default: the scene's, else 45)\n"
+            "      --slices N           sphere/cone slices (default 16)\n"
+            "      --stacks N           sphere stacks (default 8)\n"
+            "  -h, --help               this help\n",
+            STP_MAX_LIGHTS);
+}
+
+static int fail(const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(stderr, "stipple: compile: ");
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    return 1;
+}
+
+static int parse_int(const char *s, int lo, int hi, int *v)
+{
+    char *end;
+    long l;
+    errno = 0;
+    l = strtol(s, &end, 10);
+    if (errno || end == s || *end || l < lo || l > hi)
+        return -1;
+    *v = (int)l;
+    return 0;
+}
+
+static int parse_double(const char *s, double *v)
+{
+    char *end;
+    double d;
+    errno = 0;
+    d = strtod(s, &end);
+    if (errno || end == s || *end || !isfinite(d))
+        return -1;
+    *v = d;
+    return 0;
+}
+
+/* user:W:H:t,t,... */
+static int parse_user_cell(const char *s, stp_tool_options *opt)
+{
+    int w, h, n = 0, t;
+    const char *p = s;
+    char *end;
+    long l;
+    l = strtol(p, &end, 10);
+    if (end == p || *end != ':' || l < 1 || l > STP_CELL_MAX)
+        return -1;
+    w = (int)l;
+    p = end + 1;
+    l = strtol(p, &end, 10);
+    if (end == p || *end != ':' || l < 1 || l > STP_CELL_MAX)
+        return -1;
+    h = (int)l;
+    p = end + 1;
+    for (;;) {
+        l = strtol(p, &end, 10);
+        if (end == p || l < 0 || l > 255 || n >= w * h)
+            return -1;
+        t = (int)l;
+        opt->user_cell[n++] = (unsigned char)t;
+        if (*end == '\0')
+            break;
+        if (*end != ',')
+            return -1;
+        p = end + 1;
+    }
+    if (n != w * h)
+        return -1;
+    opt->user_cell_w = w;
+    opt->user_cell_h = h;
+    opt->dither = STP_TOOL_DITHER_USER;
+    return 0;
+}
+
+static int parse_dither(const char *s, stp_tool_options *opt)
+{
+    static const struct {
+        const char *name;
+        stp_tool_dither kind;
+    } cells[] = {{"bayer2", STP_TOOL_DITHER_BAYER2}, {"bayer4", STP_TOOL_DITHER_BAYER4},
+                 {"bayer8", STP_TOOL_DITHER_BAYER8}, {"seed2x2", STP_TOOL_DITHER_SEED2X2},
+                 {"pattern2x2", STP_TOOL_DITHER_PATTERN2X2}};
+    size_t i;
+    for (i = 0; i < sizeof cells / sizeof cells[0]; i++) {
+        if (!strcmp(s, cells[i].name)) {
+            opt->dither = cells[i].kind;
+            return 0;
+        }
+    }
+    if (!strncmp(s, "user:", 5))
+        return parse_user_cell(s + 5, opt);
+    return -1;
+}
+
+/* Write to path via a temporary file renamed into place, so a build never
+ * sees half a file after a failure. */
+static FILE *open_tmp(const char *path, char *tmp, size_t tmplen)
+{
+    if ((size_t)snprintf(tmp, tmplen, "%s.tmp", path) >= tmplen)
+        return 0;
+    return fopen(tmp, "w");
+}
+
+enum {
+    OPT_HEADER = 256, OPT_SPACING, OPT_GAMMA_K, OPT_HIDDEN, OPT_BACKFACE, OPT_NO_SHADING,
+    OPT_LIGHT, OPT_BRIGHT, OPT_AMBIENT, OPT_ATTEN, OPT_RAW_POWER, OPT_PARALLEL, OPT_FOV,
+    OPT_SLICES, OPT_STACKS
+};
+
+int stp_tool_compile_main(int argc, char **argv)
+{
+    static const struct option longs[] = {
+        {"output", required_argument, 0, 'o'}, {"header", required_argument, 0, OPT_HEADER},
+        {"size", required_argument, 0, 's'}, {"levels", required_argument, 0, 'l'},
+        {"dither", required_argument, 0, 'd'}, {"spacing", required_argument, 0, OPT_SPACING},
+        {"gamma", required_argument, 0, 'g'}, {"gamma-k", required_argument, 0, OPT_GAMMA_K},
+        {"hidden", required_argument, 0, OPT_HIDDEN}, {"backface", no_argument, 0, OPT_BACKFACE},
+        {"no-shading", no_argument, 0, OPT_NO_SHADING},
+        {"light", required_argument, 0, OPT_LIGHT}, {"bright", required_argument, 0, OPT_BRIGHT},
+        {"ambient", required_argument, 0, OPT_AMBIENT},
+        {"attenuation", required_argument, 0, OPT_ATTEN},
+        {"raw-power", no_argument, 0, OPT_RAW_POWER}, {"parallel", no_argument, 0, OPT_PARALLEL},
+        {"fov", required_argument, 0, OPT_FOV}, {"slices", required_argument, 0, OPT_SLICES},
+        {"stacks", required_argument, 0, OPT_STACKS}, {"help", no_argument, 0, 'h'},
+        {0, 0, 0, 0}};
+    stp_tool_options opt;
+    stp_scene_options sopt;
+    stp_scene scene;
+    const char *c_path = 0, *h_path = 0;
+    char h_default[4096], c_tmp[4200], h_tmp[4200], err[512];
+    FILE *cf = 0, *hf = 0;
+    int c, status = 1;
+
+    stp_tool_options_default(&opt);
+    stp_scene_options_default(&sopt);
+    optind = 1;
+    while ((c = getopt_long(argc, argv, "o:s:l:d:g:h", longs, 0)) != -1) {
+        switch (c) {
+        case 'o': c_path = optarg; break;
+        case OPT_HEADER: h_path = optarg; break;
+        case 's': {
+            int w, h;
+            char extra;
+            if (sscanf(optarg, "%dx%d%c", &w, &h, &extra) != 2 || w < 1 || h < 1 || w > 32767 ||
+                h > 32767)
+                return fail("bad --size '%s' (want WxH, 1..32767 each)", optarg);
+            opt.width = w;
+            opt.height = h;
+            break;
+        }
+        case 'l':
+            if (parse_int(optarg, 2, 256, &opt.levels))
+                return fail("bad --levels '%s' (2..256)", optarg);
+            break;
+        case 'd':
+            if (parse_dither(optarg, &opt))
+                return fail("bad --dither '%s'", optarg);
+            break;
+        case OPT_SPACING:
+            if (!strcmp(optarg, "linear"))
+                opt.spacing = STP_SPACING_LINEAR;
+            else if (!strcmp(optarg, "exponential"))
+                opt.spacing = STP_SPACING_EXPONENTIAL;
+            else if (!strcmp(optarg, "cubic"))
+                opt.spacing = STP_SPACING_CUBIC;
+            else
+                return fail("bad --spacing '%s'", optarg);
+            break;
+        case 'g':
+            if (parse_double(optarg, &opt.gamma) || opt.gamma <= 0)
+                return fail("bad --gamma '%s' (> 0)", optarg);
+            break;
+        case OPT_GAMMA_K:
+            if (parse_double(optarg, &opt.gamma_k) || opt.gamma_k <= 0)
+                return fail("bad --gamma-k '%s' (> 0)", optarg);
+            break;
+        case OPT_HIDDEN:
+            if (!strcmp(optarg, "zbuffer"))
+                opt.hidden = STP_HIDDEN_ZBUFFER;
+            else if (!strcmp(optarg, "painter"))
+                opt.hidden = STP_HIDDEN_PAINTER;
+            else if (!strcmp(optarg, "none"))
+                opt.hidden = STP_HIDDEN_NONE;
+            else
+                return fail("bad --hidden '%s' (zbuffer, painter, none)", optarg);
+            break;
+        case OPT_BACKFACE: opt.backface_removal = 1; break;
+        case OPT_NO_SHADING: opt.shading = 0; break;
+        case OPT_LIGHT: {
+            stp_scene_vec3 pt;
+            char extra;
+            if (opt.light_count >= STP_MAX_LIGHTS)
+                return fail("too many --light options");
+            if (sscanf(optarg, "%lf,%lf,%lf%c", &pt.x, &pt.y, &pt.z, &extra) != 3 ||
+                !isfinite(pt.x) || !isfinite(pt.y) || !isfinite(pt.z))
+                return fail("bad --light '%s' (want X,Y,Z)", optarg);
+            opt.lights[opt.light_count++] = pt;
+            break;
+        }
+        case OPT_BRIGHT:
+            if (parse_double(optarg, &opt.brightness) || opt.brightness < 0)
+                return fail("bad --bright '%s' (>= 0)", optarg);
+            break;
+        case OPT_AMBIENT:
+            if (parse_double(optarg, &opt.background) || opt.background < 0 || opt.background > 1)
+                return fail("bad --ambient '%s' (0..1)", optarg);
+            break;
+        case OPT_ATTEN:
+            if (parse_double(optarg, &opt.attenuation_c) || opt.attenuation_c <= 0)
+                return fail("bad --attenuation '%s' (> 0)", optarg);
+            break;
+        case OPT_RAW_POWER: opt.auto_power = 0; break;
+        case OPT_PARALLEL: opt.perspective = 0; break;
+        case OPT_FOV:
+            if (parse_double(optarg, &opt.fov) || opt.fov <= 0 || opt.fov >= 180)
+                return fail("bad --fov '%s' (0..180)", optarg);
+            break;
+        case OPT_SLICES:
+            if (parse_int(optarg, 3, 1024, &sopt.sphere_slices))
+                return fail("bad --slices '%s' (3..1024)", optarg);
+            sopt.cone_slices = sopt.sphere_slices;
+            break;
+        case OPT_STACKS:
+            if (parse_int(optarg, 2, 1024, &sopt.sphere_stacks))
+                return fail("bad --stacks '%s' (2..1024)", optarg);
+            break;
+        case 'h': usage(stdout); return 0;
+        default: usage(stderr); return 2;
+        }
+    }
+    if (optind != argc - 1) {
+        usage(stderr);
+        return 2;
+    }
+    if (!c_path)
+        return fail("no output given (-o FILE.c)");
+    if (!h_path) {
+        size_t n = strlen(c_path);
+        if (n >= 2 && !strcmp(c_path + n - 2, ".c"))
+            n -= 2;
+        if (n + sizeof "_config.h" > sizeof h_default)
+            return fail("%s: name too long", c_path);
+        memcpy(h_default, c_path, n);
+        memcpy(h_default + n, "_config.h", sizeof "_config.h");
+        h_path = h_default;
+    }
+    if (stp_scene_load(argv[optind], &sopt, &scene, err, sizeof err) != 0)
+        return fail("%s", err);
+    cf = open_tmp(c_path, c_tmp, sizeof c_tmp);
+    hf = open_tmp(h_path, h_tmp, sizeof h_tmp);
+    if (!cf || !hf) {
+        fail("%s: %s", !cf ? c_path : h_path, strerror(errno));
+        goto done;
+    }
+    if (stp_tool_compile(&scene, &opt, cf, hf, err, sizeof err) != 0) {
+        fail("%s: %s", argv[optind], err);
+        goto done;
+    }
+    {
+        int c_bad = fclose(cf) != 0, h_bad = fclose(hf) != 0;
+        cf = hf = 0;
+        if (c_bad || h_bad) {
+            fail("write error: %s", strerror(errno));
+            goto done;
+        }
+    }
+    if (rename(c_tmp, c_path) != 0 || rename(h_tmp, h_path) != 0) {
+        fail("rename: %s", strerror(errno));
+        goto done;
+    }
+    status = 0;
+done:
+    if (cf)
+        fclose(cf);
+    if (hf)
+        fclose(hf);
+    if (status != 0) {
+        remove(c_tmp);
+        remove(h_tmp);
+    }
+    stp_scene_free(&scene);
+    return status;
+}
