@@ -17,5 +17,6 @@
 #include "stipple/dither.h"
 #include "stipple/port.h"
 #include "stipple/render.h"
+#include "stipple/colour.h"
 
 #endif

@@ -54,6 +54,23 @@ static int discard_flush(stp_port *port, uint32_t y0, uint32_t rows, const uint8
     return 0;
 }
 
+/* Hold the picture until the board's "up" key (PE0) changes level, then
+ * return: a test harness takes its screendump first and then presses the
+ * key (QMP send-key up), so the firmware's own exit status still ends QEMU.
+ * A change rather than a level: QEMU's gamepad drives PE0 through an
+ * inverter and the pin reads 0 until the first key event. */
+static void wait_for_key(void)
+{
+    uint32_t first;
+    STP_SYSCTL_RCGC2 |= 1u << 4;
+    STP_GPIO_DIR(STP_GPIO_E) &= ~1u;
+    STP_GPIO_DEN(STP_GPIO_E) |= 1u;
+    first = STP_GPIO_DATA(STP_GPIO_E, 1u);
+    stp_semihost_write("stipple: frame done; press up to finish\n");
+    while (STP_GPIO_DATA(STP_GPIO_E, 1u) == first)
+        ;
+}
+
 static void report(const char *what, uint64_t count)
 {
     char num[12];
@@ -81,10 +98,12 @@ int main(void)
     stp_port port;
     stp_output out;
     stp_frame_memory mem;
-    uint64_t t0, t1, t2, t3;
+    uint64_t t0, t1, t2, t3, t4;
+    uint32_t per_tick;
     int status;
 
     stp_count_start();
+    per_tick = stp_count_calibrate();
     if (scene->width != PANEL_W || scene->height != PANEL_H)
         return fail("scene size", STP_ERR_ARG);
 
@@ -130,11 +149,14 @@ int main(void)
     if (status != STP_OK)
         return fail("render to panel", status);
 
-    report("instructions to enter the scene:", t1 - t0);
-    report("instructions per frame (core):", t2 - t1);
-    report("instructions per frame (core + panel):", stp_count_now() - t3);
+    t4 = stp_count_now();
+    report("instructions per SysTick tick:", per_tick);
+    report("instructions to enter the scene:", (t1 - t0) * per_tick);
+    report("instructions per frame (core):", (t2 - t1) * per_tick);
+    report("instructions per frame (core + panel):", (t4 - t3) * per_tick);
     report("band rows:", STP_FW_BAND_ROWS);
     report("renderer bytes:", sizeof renderer);
     report("display-file entries:", stp_display_file_used(r));
+    wait_for_key();
     return 0;
 }

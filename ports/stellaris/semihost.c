@@ -65,6 +65,19 @@ void stp_count_start(void)
     wraps = 0;
 }
 
+uint32_t stp_count_calibrate(void)
+{
+    /* 2 instructions per iteration (subtract, branch), 2^20 iterations */
+    uint32_t n = 1u << 20;
+    uint64_t t0, t1;
+    t0 = stp_count_now();
+    /* GCC hands ARMv6-M inline assembly over in divided syntax and restores
+     * unified syntax after it: ask for unified so one spelling serves all */
+    __asm__ volatile(".syntax unified\n1:\tsubs %0, %0, #1\n\tbne 1b" : "+l"(n) : : "cc");
+    t1 = stp_count_now();
+    return t1 > t0 ? (uint32_t)((((uint64_t)2u << 20) + (t1 - t0) / 2u) / (t1 - t0)) : 0u;
+}
+
 uint64_t stp_count_now(void)
 {
     uint32_t w, v;

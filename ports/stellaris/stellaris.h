@@ -20,6 +20,7 @@
 #define STP_GPIO_B 0x40005000u
 #define STP_GPIO_C 0x40006000u
 #define STP_GPIO_D 0x40007000u
+#define STP_GPIO_E 0x40024000u
 #define STP_GPIO_DATA(port, mask) STP_REG((port) + ((uint32_t)(mask) << 2))
 #define STP_GPIO_DIR(port) STP_REG((port) + 0x400u)
 #define STP_GPIO_AFSEL(port) STP_REG((port) + 0x420u)
@@ -44,5 +45,11 @@ char *stp_utoa(uint32_t v, char *buf);
  * (the 24-bit counter's wraps are counted by the SysTick interrupt). */
 void stp_count_start(void);
 uint64_t stp_count_now(void);
+
+/* Instructions per SysTick tick, measured over a loop of known length
+ * (QEMU clocks SysTick from the emulated system clock, so a tick is a fixed
+ * number of instructions under -icount shift=0; the ratio depends on the
+ * clock configuration, not on the code).  0 if the counter did not move. */
+uint32_t stp_count_calibrate(void);
 
 #endif

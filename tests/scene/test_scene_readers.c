@@ -530,7 +530,8 @@ static void check_cone(const char *text, stp_scene_vec3 b, double rb, stp_scene_
         EXPECT_NEAR(sqrt(dot(n, n)), 1.0, 1e-12);
         /* perpendicular to the slant line of the side: tilted toward the
          * narrow end by atan((rb - ra) / h) */
-        EXPECT_NEAR(dot(n, w), (inside ? -1.0 : 1.0) * (rb - ra) / sqrt(h * h + (rb - ra) * (rb - ra)),
+        EXPECT_NEAR(dot(n, w),
+                    (inside ? -1.0 : 1.0) * (rb - ra) / sqrt(h * h + (rb - ra) * (rb - ra)),
                     1e-9);
     }
     for (i = 0; i < s.polygon_count; i++) {
@@ -652,7 +653,9 @@ static void test_nff_keeps_vertex_order(void **state)
     stp_scene s;
     (void)state;
     /* clockwise as given: must not be "fixed" */
-    parse_ok("nff", "p 4\n0 0 0\n0 1 0\n1 1 0\n1 0 0\npp 3\n0 0 0 0 0 -1\n0 1 0 0 0 -1\n1 0 0 0 0 -2\n",
+    parse_ok("nff",
+             "p 4\n0 0 0\n0 1 0\n1 1 0\n1 0 0\n"
+             "pp 3\n0 0 0 0 0 -1\n0 1 0 0 0 -1\n1 0 0 0 0 -2\n",
              NULL, &s);
     check_invariants(&s);
     assert_int_equal(s.polygon_count, 2);
@@ -982,6 +985,7 @@ static const bad_case bad_cases[] = {
     {"nff", "c\n0 0 0 1\n0 0 0 1\n", "t:1: c: base and apex coincide"},
     {"nff", "c\n0 0 0 0\n0 0 1 0\n", "t:1: c: both radii are zero"},
     {"nff", "c\n0 0 0 1\n0 0 1 -1\n", "t:1: c: radii have opposite signs"},
+    {"nff", "c\n-1e308 0 0 1\n1e308 0 0 1\n", "t:1: coordinate out of range"},
     /* NFF: view */
     {"nff", "v\nfrom 0 0 0\n", "t:1: view: file ends before 'at'"},
     {"nff", "v x\n", "t:1: v: unexpected 'x'"},
@@ -1024,9 +1028,11 @@ static const bad_case bad_cases[] = {
     {"obj", "v 0 0 0 1 1 1 1\n", "t:1: v: expected 3, 4 or 6 numbers, found 7"},
     {"obj", "vn 0 0\n", "t:1: vn: expected 3 numbers, found 2"},
     {"obj", "vn 0 0 1e400\n", "t:1: number out of range"},
-    {"obj", "v 0 0 0\n" OBJ_TRI "f 1/1 2/1 3/1\n", "t:5: f: texture index 1 out of range (0 defined)"},
+    {"obj", "v 0 0 0\n" OBJ_TRI "f 1/1 2/1 3/1\n",
+     "t:5: f: texture index 1 out of range (0 defined)"},
     {"obj", OBJ_TRI "vn 0 0 1\nf 1//1 2//1 3//\n", "t:5: f: empty normal index"},
-    {"obj", OBJ_TRI "vn 0 0 1\nf 1//1 2//1 3//2\n", "t:5: f: normal index 2 out of range (1 defined)"},
+    {"obj", OBJ_TRI "vn 0 0 1\nf 1//1 2//1 3//2\n",
+     "t:5: f: normal index 2 out of range (1 defined)"},
     {"obj", OBJ_TRI "vt 0 0\nf 1/ 2/1 3/1\n", "t:5: f: empty texture index"},
     {"obj", OBJ_TRI "f /1 2 3\n", "t:4: f: empty vertex index"},
     {"obj", OBJ_TRI "vt 0 0\nvn 0 0 1\nf 1/1/1/1 2 3\n", "t:6: f: bad vertex '1/1/1/1'"},
@@ -1051,7 +1057,8 @@ static const bad_case bad_cases[] = {
     {"off", "OFF\n3 1 0\n0 0 0\n1 0 0 1\n", "t:4: vertex: expected 3 numbers, found more"},
     {"off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1e999 0\n", "t:5: number out of range"},
     {"off", "NOFF\n3 1 0\n" TRI, "t:3: vertex: expected 6 numbers, found 3"},
-    {"off", "COFF\n3 1 0\n0 0 0 1 1 1\n1 0 0 1 1\n", "t:4: vertex: expected 6 or 7 numbers, found 5"},
+    {"off", "COFF\n3 1 0\n0 0 0 1 1 1\n1 0 0 1 1\n",
+     "t:4: vertex: expected 6 or 7 numbers, found 5"},
     {"off", OFF_TRI "3 0 1 3\n", "t:6: face: index 3 out of range (0..2)"},
     {"off", OFF_TRI "3 0 1 -1\n", "t:6: face: index -1 out of range (0..2)"},
     {"off", OFF_TRI "2 0 1\n", "t:6: face: needs at least 3 vertices, not 2"},

@@ -111,8 +111,10 @@ static int tessellate_cone(stp_parser *ps, long line, const stp_scene_prim *pr)
 
     w = vec3(pr->apex.x - pr->base.x, pr->apex.y - pr->base.y, pr->apex.z - pr->base.z);
     h = length(w);
-    if (!(h > 0.0) || !isfinite(h))
-        return stp_fail(ps, line, "cone: degenerate axis");
+    if (!isfinite(h))
+        return stp_fail(ps, line, "coordinate out of range");
+    if (!(h > 0.0))
+        return stp_fail(ps, line, "c: base and apex coincide");
     w = vec3(w.x / h, w.y / h, w.z / h);
     /* u, v, w right-handed, u built from the axis least aligned with w. */
     if (fabs(w.x) <= fabs(w.y) && fabs(w.x) <= fabs(w.z))
@@ -268,13 +270,15 @@ static int read_view(stp_parser *ps, stp_line *vline)
             return stp_fail(ps, field_line[VIEW_UP], "view: 'up' is zero");
         if (!(length(cross(vec3(dir.x / dl, dir.y / dl, dir.z / dl),
                            vec3(s->up.x / ul, s->up.y / ul, s->up.z / ul))) > 1e-9))
-            return stp_fail(ps, field_line[VIEW_UP], "view: 'up' is parallel to the view direction");
+            return stp_fail(ps, field_line[VIEW_UP],
+                            "view: 'up' is parallel to the view direction");
     }
     s->has_view = 1;
     return 0;
 }
 
-/* "p n" / "pp n": n lines of x y z (pp: x y z nx ny nz). */
+/* "p n" / "pp n": n lines of x y z (pp: x y z nx ny nz).  A file that ends
+ * early is reported at the "p" line: its count is what cannot be met. */
 static int read_polygon(stp_parser *ps, nff_state *st, stp_line *head, int with_normals)
 {
     const char *what = with_normals ? "pp" : "p";
@@ -393,6 +397,8 @@ int stp_parse_nff(stp_parser *ps)
         stp_token kw;
         char show[40];
         stp_next_token(&ln, &kw);
+        /* "v must come first" is read as: before any light, material or
+         * geometry.  The SPD writes "b" before "v", so "b" may precede it. */
         if (stp_token_is(&kw, "v")) {
             if (st.seen_view)
                 return stp_fail(ps, ln.number, "v: second view");

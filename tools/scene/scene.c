@@ -195,7 +195,8 @@ int stp_parse_double(stp_parser *ps, long line, const stp_token *tok, double *ou
     if (end != buf + tok->n || tok->n == 0)
         return stp_fail(ps, line, "bad number '%s'", stp_token_show(tok, show, sizeof show));
     if (!isfinite(v))
-        return stp_fail(ps, line, "number out of range '%s'", stp_token_show(tok, show, sizeof show));
+        return stp_fail(ps, line, "number out of range '%s'",
+                        stp_token_show(tok, show, sizeof show));
     *out = v;
     return 0;
 }

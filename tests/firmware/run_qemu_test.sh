@@ -1,0 +1,98 @@
+#!/bin/sh
+# End-to-end firmware test: build the lm3s6965evb firmware for SCENE with the
+# cross toolchain, run it in QEMU, take a screendump of the OLED over QMP and
+# compare it pixel for pixel with `stipple render` of the same scene through
+# the same core (the panel shows the 1-bit halftoned picture: ON as grey 15).
+# Both the scene's minimal configuration and the full library are run.
+#
+# run_qemu_test.sh SOURCE_DIR WORK_DIR STIPPLE COMPILE_TOOL COMPARE SCENE [OPTION...]
+#   STIPPLE       host stipple command (for the reference render)
+#   COMPILE_TOOL  host program taking `compile SCENE -o OUT.c` (stipple itself
+#                 once it has the subcommand, or stp_compile_scene)
+#   COMPARE       compare_screendump
+#   OPTION...     render options shared by both sides (e.g. --hidden painter)
+# Exit status: 0 pass, 1 fail, 77 tools missing (skipped).
+# Environment: STP_FW_CPU (cortex-m3; cortex-m0plus also runs on QEMU's M3),
+# STP_QEMU_TIMEOUT (seconds per QEMU run, 60), STP_BUILD_TIMEOUT (600),
+# STP_FW_BAND_ROWS (4).
+set -eu
+
+if [ $# -lt 6 ]; then
+    echo "usage: $0 SOURCE_DIR WORK_DIR STIPPLE COMPILE_TOOL COMPARE SCENE [OPTION...]" >&2
+    exit 2
+fi
+src=$(cd "$1" && pwd)
+mkdir -p "$2"
+work=$(cd "$2" && pwd)
+stipple=$3 compile_tool=$4 compare=$5 scene=$6
+shift 6
+cpu=${STP_FW_CPU:-cortex-m3}
+qemu_timeout=${STP_QEMU_TIMEOUT:-60}
+build_timeout=${STP_BUILD_TIMEOUT:-600}
+band_rows=${STP_FW_BAND_ROWS:-4}
+here=$(cd "$(dirname "$0")" && pwd)
+
+# 77: CTest's "skipped" (SKIP_RETURN_CODE), so a machine without the tools
+# shows the test as not run rather than passed
+for tool in qemu-system-arm arm-none-eabi-gcc; do
+    command -v "$tool" >/dev/null 2>&1 || { echo "$0: $tool not found: skipped" >&2; exit 77; }
+done
+[ -x /usr/bin/python3 ] || { echo "$0: /usr/bin/python3 not found: skipped" >&2; exit 77; }
+
+# the render options as one CMake list
+options=""
+for o in "$@"; do options="${options:+$options;}$o"; done
+
+fw="$work/fw-$cpu"
+echo "== building the firmware ($cpu) in $fw"
+timeout "$build_timeout" cmake -S "$src/firmware" -B "$fw" \
+    -DCMAKE_TOOLCHAIN_FILE="$src/cmake/toolchain-arm-none-eabi.cmake" -DSTP_CPU="$cpu" \
+    -DSTP_FW_COMPILE_TOOL="$compile_tool" -DSTP_FW_SCENE="$scene" \
+    -DSTP_FW_COMPILE_OPTIONS="$options" -DSTP_FW_BAND_ROWS="$band_rows" >"$work/configure.log" 2>&1 ||
+    { cat "$work/configure.log" >&2; exit 1; }
+timeout "$build_timeout" cmake --build "$fw" >"$work/build.log" 2>&1 ||
+    { cat "$work/build.log" >&2; exit 1; }
+
+echo "== host render"
+"$stipple" render "$scene" -s 128x64 -o "$work/host.pbm" "$@"
+
+status=0
+for image in stipple_fw_lm3s6965evb stipple_fw_lm3s6965evb_full; do
+    elf="$fw/$image.elf"
+    sock="$work/$image.qmp"
+    log="$work/$image.log"
+    dump="$work/$image.ppm"
+    rm -f "$sock" "$log" "$dump"
+    echo "== $image"
+    arm-none-eabi-size "$elf"
+    timeout -k 5 "$qemu_timeout" qemu-system-arm -M lm3s6965evb -kernel "$elf" \
+        -display none -serial null -monitor none \
+        -qmp "unix:$sock,server=on,wait=off" \
+        -semihosting-config enable=on,target=native -icount shift=0 >"$log" 2>&1 &
+    qemu=$!
+    client=0
+    /usr/bin/python3 "$here/qmp_screendump.py" "$sock" "$log" "$dump" "$qemu_timeout" "$qemu" ||
+        client=$?
+    qemu_status=0
+    wait "$qemu" || qemu_status=$?
+    cat "$log"
+    if [ "$client" -ne 0 ]; then
+        echo "FAIL $image: QMP client failed ($client)" >&2
+        status=1
+        continue
+    fi
+    if [ "$qemu_status" -ne 0 ]; then
+        echo "FAIL $image: QEMU exited with $qemu_status (124: timed out)" >&2
+        status=1
+        continue
+    fi
+    grep -q "instructions per frame" "$log" ||
+        { echo "FAIL $image: no instruction count reported" >&2; status=1; continue; }
+    if "$compare" "$dump" "$work/host.pbm" 4; then
+        echo "PASS $image"
+    else
+        echo "FAIL $image: the panel differs from the host render" >&2
+        status=1
+    fi
+done
+exit $status
