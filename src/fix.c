@@ -139,18 +139,14 @@ stp_fix stp_fix_log2(stp_fix a)
     int64_t result;
     if (a <= 0)
         return STP_FIX_MIN;
+    /* a = m 2^(top - F) with m in [1, 2): normalise m straight to Q30 by a
+     * left shift (a < 2^31, so top <= 30 and no bit of a is lost; shifting
+     * right to F fractional bits first would cost up to 1.5 LSB) */
     m = (uint64_t)a;
-    while (m >= ((uint64_t)2 << F)) {
-        m >>= 1;
+    while ((m >> ip) > 1)
         ip++;
-    }
-    while (m < ((uint64_t)1 << F)) {
-        m <<= 1;
-        ip--;
-    }
-    /* m in [2^F, 2^(F+1)): mantissa with F fractional bits; keep 30 bits of
-     * it so the squares keep precision beyond F */
-    m <<= (30 - F);
+    m <<= (30 - ip);
+    ip -= F;
     result = (int64_t)ip * STP_FIX_ONE;
     for (i = F - 1; i >= 0; i--) {
         m = (m * m) >> 30;
@@ -222,11 +218,13 @@ static int64_t sin_quadrant_q30(int64_t t_q30)
     return stp_asr64(p * t_q30, 30);
 }
 
-stp_fix stp_fix_sin_deg(stp_fix degrees)
+/* sin of an angle in degrees given in 64 bits (so cos can add 90 degrees
+ * to any stp_fix without saturating). */
+static stp_fix sin_deg64(int64_t degrees)
 {
     /* reduce to [0, 360) in Q(F) then to a quadrant */
     int64_t full = (int64_t)360 << F;
-    int64_t d = (int64_t)degrees % full;
+    int64_t d = degrees % full;
     int64_t quarter = (int64_t)90 << F;
     int64_t t_q30, s;
     int quadrant, neg = 0;
@@ -243,9 +241,15 @@ stp_fix stp_fix_sin_deg(stp_fix degrees)
     return (stp_fix)(neg ? -s : s);
 }
 
+stp_fix stp_fix_sin_deg(stp_fix degrees)
+{
+    return sin_deg64(degrees);
+}
+
 stp_fix stp_fix_cos_deg(stp_fix degrees)
 {
-    return stp_fix_sin_deg(stp_fix_add(degrees, (stp_fix)90 << F));
+    /* not stp_fix_add: within 90 degrees of STP_FIX_MAX it would saturate */
+    return sin_deg64((int64_t)degrees + ((int64_t)90 << F));
 }
 
 stp_fix stp_vec3_dot(stp_vec3 a, stp_vec3 b)

@@ -80,11 +80,61 @@ static void put_span(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int 
     }
 }
 
+#if STP_WITH_GOURAUD
+/* A smooth span: pixel x has shade s0 + (x - x1) * step (shades with 16
+ * extra fractional bits); each pixel goes through INTENSITY and the gamma
+ * table and is compared with its own threshold (the combined scheme). */
+static void put_span_smooth(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int64_t s0,
+                            int64_t step)
+{
+    uint8_t *row = fr->band + (size_t)(y - fr->y0) * fr->stride;
+    int levels = fr->r->levels;
+    uint32_t x;
+    int64_t s = s0;
+    for (x = x1; x <= x2; x++, s += step) {
+        int64_t sv = stp_asr64(s, 16);
+        stp_fix shade = (stp_fix)(sv < 0 ? 0 : (sv > STP_FIX_ONE ? STP_FIX_ONE : sv));
+        int index = (int)(((int64_t)shade * (levels - 1)) >> STP_FIX_FRAC_BITS) + 1;
+        uint8_t level = level_of(fr, index);
+        switch (fr->port->format) {
+        case STP_PIXEL_MONO1: {
+            uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
+            if (stp_cell_on(fr->cell, x, y, level))
+                row[x >> 3] = (uint8_t)(row[x >> 3] | bit);
+            else
+                row[x >> 3] = (uint8_t)(row[x >> 3] & ~bit);
+            break;
+        }
+        case STP_PIXEL_GREY8: row[x] = level; break;
+        case STP_PIXEL_RGB888: row[3 * x] = row[3 * x + 1] = row[3 * x + 2] = level; break;
+        default: row[x] = style_code(fr, index); break;
+        }
+    }
+}
+#endif
+
+/* A run of a span, flat or smooth. */
+static void paint_run(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style, int smooth,
+                      int64_t s0, int64_t sstep)
+{
+#if STP_WITH_GOURAUD
+    if (smooth) {
+        put_span_smooth(fr, y, x1, x2, s0, sstep);
+        return;
+    }
+#else
+    (void)smooth;
+    (void)s0;
+    (void)sstep;
+#endif
+    put_span(fr, y, x1, x2, style);
+}
+
 #if STP_WITH_ZBUFFER
 /* Depth-tested span: runs of pixels that pass are painted with put_span, so
  * the halftone inner loop stays the same as without a Z buffer. */
 static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style,
-                       int64_t d, int64_t ddx)
+                       int64_t d, int64_t ddx, int smooth, int64_t s0, int64_t sstep)
 {
     uint16_t *z = fr->zbuf + (size_t)(y - fr->y0) * fr->r->width;
     uint32_t x, run = 0;
@@ -99,12 +149,12 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, in
                 in_run = 1;
             }
         } else if (in_run) {
-            put_span(fr, y, run, x - 1, style);
+            paint_run(fr, y, run, x - 1, style, smooth, s0 + (int64_t)(run - x1) * sstep, sstep);
             in_run = 0;
         }
     }
     if (in_run)
-        put_span(fr, y, run, x2, style);
+        paint_run(fr, y, run, x2, style, smooth, s0 + (int64_t)(run - x1) * sstep, sstep);
 }
 
 /* Depth key mapped to the Z buffer's 1..65535 with 12 fractional bits. */
@@ -123,6 +173,11 @@ static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z)
     stp_renderer *r = fr->r;
     const stp_instr *v = &r->df[at];
     int n = v[0].op, i, ne = 0;
+#if STP_WITH_GOURAUD
+    int smooth = v[0].shade >= 0;
+#else
+    const int smooth = 0;
+#endif
     int32_t ymin = INT32_MAX, ymax = INT32_MIN;
     int32_t band_top = (int32_t)(fr->y0 << SUB), band_bottom = (int32_t)((fr->y0 + fr->rows) << SUB);
     uint32_t y, y_first, y_last;
@@ -152,6 +207,12 @@ static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z)
         e->ya = a->y;
         e->yb = b->y;
         e->slope = (((int64_t)b->x - a->x) * 65536) / ((int64_t)b->y - a->y);
+#if STP_WITH_GOURAUD
+        if (smooth) {
+            e->sa = a->shade;
+            e->shade_slope = (((int64_t)b->shade - a->shade) * 65536) / ((int64_t)b->y - a->y);
+        }
+#endif
         ne++;
     }
 #if STP_WITH_ZBUFFER
@@ -197,18 +258,23 @@ static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z)
         for (i = 0; i < ne; i++) {
             const stp_edge *e = &r->edges[i];
             if (e->ya <= yc_row && yc_row < e->yb) {
-                int64_t x = e->xa + stp_floordiv64((int64_t)(yc_row - e->ya) * e->slope, 65536);
-                int32_t xv = (int32_t)x;
+                stp_crossing c;
+                c.x = (int32_t)(e->xa + stp_floordiv64((int64_t)(yc_row - e->ya) * e->slope, 65536));
+#if STP_WITH_GOURAUD
+                if (smooth)
+                    c.shade = (int32_t)(e->sa + stp_floordiv64((int64_t)(yc_row - e->ya) * e->shade_slope, 65536));
+#endif
                 /* insertion sort: crossings are few */
-                for (k = nc; k > 0 && r->crossings[k - 1] > xv; k--)
+                for (k = nc; k > 0 && r->crossings[k - 1].x > c.x; k--)
                     r->crossings[k] = r->crossings[k - 1];
-                r->crossings[k] = xv;
+                r->crossings[k] = c;
                 nc++;
             }
         }
         for (k = 0; k + 1 < nc; k += 2) {
             /* pixels whose centre c satisfies x_left <= c < x_right */
-            int64_t xl = r->crossings[k], xr = r->crossings[k + 1];
+            int64_t xl = r->crossings[k].x, xr = r->crossings[k + 1].x;
+            int64_t s0 = 0, sstep = 0;
             int64_t p1 = stp_floordiv64(xl - HALF_PIXEL + (1 << SUB) - 1, 1 << SUB);
             int64_t p2 = stp_floordiv64(xr - HALF_PIXEL + (1 << SUB) - 1, 1 << SUB) - 1;
             if (p1 < 0)
@@ -217,6 +283,16 @@ static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z)
                 p2 = (int64_t)r->width - 1;
             if (p1 > p2)
                 continue;
+#if STP_WITH_GOURAUD
+            if (smooth) {
+                /* shade along the span from its two crossings, at pixel
+                 * centres, with 16 extra fractional bits */
+                int64_t sl = r->crossings[k].shade, sr = r->crossings[k + 1].shade;
+                int64_t width = xr - xl;
+                sstep = width > 0 ? ((sr - sl) * 65536 * (1 << SUB)) / width : 0;
+                s0 = sl * 65536 + (width > 0 ? ((sr - sl) * 65536 * ((p1 << SUB) + HALF_PIXEL - xl)) / width : 0);
+            }
+#endif
 #if STP_WITH_ZBUFFER
             if (use_z) {
                 int64_t d;
@@ -224,11 +300,12 @@ static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z)
                     continue; /* edge-on: no area on screen */
                 d = dc + ddx * (((int64_t)p1 << SUB) + HALF_PIXEL - xc) +
                     ddy * ((int64_t)yc_row - yc);
-                put_span_z(fr, y, (uint32_t)p1, (uint32_t)p2, style, d, ddx * (1 << SUB));
+                put_span_z(fr, y, (uint32_t)p1, (uint32_t)p2, style, d, ddx * (1 << SUB), smooth, s0,
+                           sstep);
                 continue;
             }
 #endif
-            put_span(fr, y, (uint32_t)p1, (uint32_t)p2, style);
+            paint_run(fr, y, (uint32_t)p1, (uint32_t)p2, style, smooth, s0, sstep);
         }
     }
 }

@@ -320,12 +320,11 @@ static int64_t plane_distance(const stp_renderer *r, int plane, stp_vec3 p)
     }
 }
 
-/* The point where segment a-b crosses a plane, given the signed distances
- * da >= 0 > db or the reverse. */
-static stp_vec3 clip_point(stp_vec3 a, stp_vec3 b, int64_t da, int64_t db)
+/* Where segment a-b crosses a plane, given the signed distances da >= 0 > db
+ * or the reverse: the fraction t of the way from a, in Q30 ([0, 2^30]). */
+static int64_t clip_fraction(int64_t da, int64_t db)
 {
-    int64_t den = da - db, t;
-    stp_vec3 p;
+    int64_t den = da - db;
     /* bring the distances below 2^32 so da << 30 cannot overflow */
     while (den >= ((int64_t)1 << 32) || den <= -((int64_t)1 << 32) ||
            da >= ((int64_t)1 << 32) || da <= -((int64_t)1 << 32)) {
@@ -333,37 +332,76 @@ static stp_vec3 clip_point(stp_vec3 a, stp_vec3 b, int64_t da, int64_t db)
         db /= 2;
         den = da - db;
     }
-    if (den == 0)
-        return a;
-    t = (da * ((int64_t)1 << 30)) / den; /* in [0, 2^30] */
-    p.x = stp_fix_sat64(a.x + stp_asr64(((int64_t)b.x - a.x) * t, 30));
-    p.y = stp_fix_sat64(a.y + stp_asr64(((int64_t)b.y - a.y) * t, 30));
-    p.z = stp_fix_sat64(a.z + stp_asr64(((int64_t)b.z - a.z) * t, 30));
+    return den == 0 ? 0 : (da * ((int64_t)1 << 30)) / den;
+}
+
+static stp_fix lerp_fix(stp_fix a, stp_fix b, int64_t t)
+{
+    return stp_fix_sat64(a + stp_asr64(((int64_t)b - a) * t, 30));
+}
+
+static stp_vec3 clip_point(stp_vec3 a, stp_vec3 b, int64_t da, int64_t db)
+{
+    int64_t t = clip_fraction(da, db);
+    stp_vec3 p;
+    p.x = lerp_fix(a.x, b.x, t);
+    p.y = lerp_fix(a.y, b.y, t);
+    p.z = lerp_fix(a.z, b.z, t);
     return p;
 }
 
 /* Sutherland-Hodgman against the five planes; returns the vertex count of
- * the clipped polygon, its vertices in *result. */
-static int clip_polygon(stp_renderer *r, int n, stp_vec3 **result)
+ * the clipped polygon, its vertices in *result (and, when smooth, its
+ * vertex shades in *shades, interpolated like the positions). */
+static int clip_polygon(stp_renderer *r, int n, int smooth, stp_vec3 **result, stp_fix **shades)
 {
     stp_vec3 *in = r->clip_a, *out = r->clip_b, *tmp;
+#if STP_WITH_GOURAUD
+    stp_fix *s_in = r->shade_a, *s_out = r->shade_b, *s_tmp;
+#endif
     int plane, i, m;
+    (void)smooth;
     for (plane = 0; plane < 5 && n > 0; plane++) {
         m = 0;
         for (i = 0; i < n; i++) {
-            stp_vec3 a = in[i], b = in[(i + 1) % n];
+            int j = (i + 1) % n;
+            stp_vec3 a = in[i], b = in[j];
             int64_t da = plane_distance(r, plane, a), db = plane_distance(r, plane, b);
-            if (da >= 0)
+            if (da >= 0) {
+#if STP_WITH_GOURAUD
+                if (smooth)
+                    s_out[m] = s_in[i];
+#endif
                 out[m++] = a;
-            if ((da >= 0) != (db >= 0))
-                out[m++] = clip_point(a, b, da, db);
+            }
+            if ((da >= 0) != (db >= 0)) {
+                int64_t t = clip_fraction(da, db);
+#if STP_WITH_GOURAUD
+                if (smooth)
+                    s_out[m] = lerp_fix(s_in[i], s_in[j], t);
+#endif
+                out[m].x = lerp_fix(a.x, b.x, t);
+                out[m].y = lerp_fix(a.y, b.y, t);
+                out[m].z = lerp_fix(a.z, b.z, t);
+                m++;
+            }
         }
         n = m;
         tmp = in;
         in = out;
         out = tmp;
+#if STP_WITH_GOURAUD
+        s_tmp = s_in;
+        s_in = s_out;
+        s_out = s_tmp;
+#endif
     }
     *result = in;
+#if STP_WITH_GOURAUD
+    *shades = s_in;
+#else
+    *shades = 0;
+#endif
     return n;
 }
 
@@ -397,13 +435,18 @@ static int check_open(const stp_renderer *r)
     return r->open_segment < 0 ? STP_ERR_NO_SEGMENT : STP_OK;
 }
 
-static void append(stp_renderer *r, int32_t op, int32_t x, int32_t y, int32_t z)
+static void append(stp_renderer *r, int32_t op, int32_t x, int32_t y, int32_t z, int32_t shade)
 {
     stp_instr *in = &r->df[r->used++];
     in->op = op;
     in->x = x;
     in->y = y;
     in->z = z;
+#if STP_WITH_GOURAUD
+    in->shade = shade;
+#else
+    (void)shade;
+#endif
     r->segments[r->open_segment].end = r->used;
 }
 
@@ -446,13 +489,13 @@ int stp_line(stp_renderer *r, stp_vec3 p)
     if (r->capacity - r->used < 2u + (r->current_line_style != r->fill_style ? 1u : 0u))
         return STP_ERR_FULL;
     if (r->current_line_style != r->fill_style) {
-        append(r, STP_OP_LINE_STYLE, r->fill_style, 0, 0);
+        append(r, STP_OP_LINE_STYLE, r->fill_style, 0, 0, -1);
         r->current_line_style = r->fill_style;
     }
     project(r, a, &pa);
     project(r, b, &pb);
-    append(r, STP_OP_MOVE, pa.x, pa.y, pa.z);
-    append(r, STP_OP_LINE, pb.x, pb.y, pb.z);
+    append(r, STP_OP_MOVE, pa.x, pa.y, pa.z, -1);
+    append(r, STP_OP_LINE, pb.x, pb.y, pb.z, -1);
     return STP_OK;
 #else
     (void)r;
@@ -525,10 +568,25 @@ static int newell(stp_renderer *r, int n, stp_vec3 *normal, stp_vec3 *centre)
     return 1;
 }
 
-int stp_polygon(stp_renderer *r, const stp_vec3 *vertices, int n)
+#if STP_WITH_GOURAUD
+/* World direction to view coordinates (rotation only). */
+static stp_vec3 direction_to_view(const stp_renderer *r, stp_vec3 d)
+{
+    stp_vec3 out;
+    out.x = stp_fix_sat64(stp_asr64((int64_t)d.x * r->right.x + (int64_t)d.y * r->right.y + (int64_t)d.z * r->right.z, F));
+    out.y = stp_fix_sat64(stp_asr64((int64_t)d.x * r->up.x + (int64_t)d.y * r->up.y + (int64_t)d.z * r->up.z, F));
+    out.z = stp_fix_sat64(stp_asr64((int64_t)d.x * r->forward.x + (int64_t)d.y * r->forward.y + (int64_t)d.z * r->forward.z, F));
+    return out;
+}
+#endif
+
+/* DISPLAY-FILE-ENTER of a polygon.  smooth: 0 flat; 1 shade each vertex from
+ * normals[]; 2 take shades[] from the caller. */
+static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n, int smooth,
+                         const stp_vec3 *normals, const stp_fix *shades)
 {
     stp_vec3 normal, centre, eye_dir, *clipped;
-    stp_fix n_dot_e;
+    stp_fix n_dot_e, *clipped_shades;
     int i, m, style, status = check_open(r);
     if (status != STP_OK)
         return status;
@@ -572,20 +630,76 @@ int stp_polygon(stp_renderer *r, const stp_vec3 *vertices, int n)
         style = r->fill_style;
         r->last_shade = stp_intensity_shade(style, r->levels);
     }
+#if STP_WITH_GOURAUD
+    if (smooth) {
+        for (i = 0; i < n; i++) {
+            stp_fix s = r->last_shade;
+            if (smooth == 2) {
+                s = stp_fix_clamp(shades[i], 0, ONE);
+            } else if (r->shading) {
+                stp_vec3 vn = normal, to_eye, e = eye_dir, origin = {0, 0, 0};
+                if (stp_vec3_unity(direction_to_view(r, normals[i]), &vn) == 0) {
+                    vn = normal;
+                } else if (stp_vec3_dot(vn, normal) < 0) {
+                    /* turn the vertex normal to the side the face shows: files
+                     * mix windings, and two-sided faces are seen from either */
+                    vn.x = -vn.x;
+                    vn.y = -vn.y;
+                    vn.z = -vn.z;
+                }
+                if (r->projection == STP_PERSPECTIVE) {
+                    to_eye.x = -r->clip_a[i].x;
+                    to_eye.y = -r->clip_a[i].y;
+                    to_eye.z = -r->clip_a[i].z;
+                    if (stp_vec3_unity(to_eye, &e) == 0)
+                        e = eye_dir;
+                }
+                s = stp_shade_point(&r->segment_lighting, &r->material, vn, r->clip_a[i], origin,
+                                    r->projection == STP_PARALLEL, e);
+            }
+            r->shade_a[i] = s;
+        }
+    }
+#else
+    (void)normals;
+    (void)shades;
+    if (smooth)
+        return STP_ERR_UNSUPPORTED;
+#endif
 
-    m = clip_polygon(r, n, &clipped);
+    m = clip_polygon(r, n, smooth, &clipped, &clipped_shades);
     if (m < 3)
         return STP_OK; /* nothing of it is in view */
     if (r->capacity - r->used < (uint32_t)m + (style != r->current_style ? 1u : 0u))
         return STP_ERR_FULL;
     if (style != r->current_style) {
-        append(r, STP_OP_SHADE, style, r->last_shade, 0);
+        append(r, STP_OP_SHADE, style, r->last_shade, 0, -1);
         r->current_style = style;
     }
     for (i = 0; i < m; i++) {
         stp_instr p;
         project(r, clipped[i], &p);
-        append(r, i == 0 ? m : STP_OP_LINE, p.x, p.y, p.z);
+        append(r, i == 0 ? m : STP_OP_LINE, p.x, p.y, p.z, smooth ? clipped_shades[i] : -1);
     }
     return STP_OK;
+}
+
+int stp_polygon(stp_renderer *r, const stp_vec3 *vertices, int n)
+{
+    return enter_polygon(r, vertices, n, 0, 0, 0);
+}
+
+int stp_polygon_smooth(stp_renderer *r, const stp_vec3 *vertices, const stp_vec3 *normals, int n)
+{
+    if (normals == 0)
+        return STP_ERR_ARG;
+    return enter_polygon(r, vertices, n, 1, normals, 0);
+}
+
+int stp_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const stp_fix *shades,
+                              int n)
+{
+    if (shades == 0)
+        return STP_ERR_ARG;
+    return enter_polygon(r, vertices, n, 2, 0, shades);
 }

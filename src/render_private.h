@@ -14,11 +14,26 @@ typedef struct stp_segment {
 } stp_segment;
 
 /* One edge of a polygon being scan-converted, oriented top to bottom.
- * Coordinates Q27.4; slope in Q4 x units per Q4 y unit, Q16. */
+ * Coordinates Q27.4; slope in Q4 x units per Q4 y unit, Q16.  Smooth
+ * polygons: sa the shade at the top, shade_slope its change per Q4 y unit
+ * with 16 more fractional bits. */
 typedef struct stp_edge {
     int32_t xa, ya, yb;
     int64_t slope;
+#if STP_WITH_GOURAUD
+    int32_t sa;
+    int64_t shade_slope;
+#endif
 } stp_edge;
+
+/* A crossing of a row by an edge: x (Q27.4) and, for smooth polygons, the
+ * shade there. */
+typedef struct stp_crossing {
+    int32_t x;
+#if STP_WITH_GOURAUD
+    int32_t shade;
+#endif
+} stp_crossing;
 
 struct stp_renderer {
     stp_instr *df;
@@ -49,8 +64,12 @@ struct stp_renderer {
      * edges; here rather than on the stack so a small MCU stack suffices */
     stp_vec3 clip_a[STP_CLIP_VERTICES];
     stp_vec3 clip_b[STP_CLIP_VERTICES];
+#if STP_WITH_GOURAUD
+    stp_fix shade_a[STP_CLIP_VERTICES]; /* per-vertex shades beside clip_a/b */
+    stp_fix shade_b[STP_CLIP_VERTICES];
+#endif
     stp_edge edges[STP_CLIP_VERTICES];
-    int32_t crossings[STP_CLIP_VERTICES];
+    stp_crossing crossings[STP_CLIP_VERTICES];
 };
 
 #endif

@@ -118,6 +118,8 @@ stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *materi
     n_dot_e = stp_vec3_dot(normal, e);
 
     count = lighting->count < 0 ? 0 : (lighting->count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : lighting->count);
+    if (n_dot_e <= 0)
+        count = 0; /* a back face (or the eye on the point): ambient share only */
     for (j = 0; j < count; j++) {
         const stp_light *light = &lighting->lights[j];
         stp_vec3 l;
@@ -177,7 +179,10 @@ stp_fix stp_intensity_shade(int index, int levels)
         index = 1;
     if (index > levels)
         index = levels;
-    return stp_fix_from_ratio(index - 1, levels - 1);
+    /* ceil((index-1) 2^F / (levels-1)): rounding to nearest could land one
+     * LSB below the style's lower boundary, and stp_intensity_index would
+     * then give index - 1; rounded up it gives index back (levels-1 < 2^F) */
+    return (stp_fix)(((int64_t)(index - 1) * ONE + (levels - 2)) / (levels - 1));
 }
 
 uint8_t stp_style_lookup(const stp_style_table *table, int index)

@@ -295,7 +295,13 @@ static void write_config(writer *w, const plan *p, const stp_tool_options *opt)
         hidden_name(opt->hidden), opt->hidden == STP_HIDDEN_ZBUFFER,
         opt->hidden == STP_HIDDEN_PAINTER);
     out(w, "/* Scenes hold polygons only. */\n"
-           "#define STP_WITH_LINES 0\n\n#endif\n");
+           "#define STP_WITH_LINES 0\n");
+#ifdef STP_WITH_GOURAUD
+    /* a switch of a newer core: known here only when the header has it */
+    out(w, "/* The scene is entered as flat polygons (stp_polygon). */\n"
+           "#define STP_WITH_GOURAUD 0\n");
+#endif
+    out(w, "\n#endif\n");
 }
 
 static void write_source(writer *w, const stp_scene *scene, const plan *p,

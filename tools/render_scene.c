@@ -79,6 +79,77 @@ static void material_from_scene(const stp_scene_material *m, stp_material *out)
     out->specular = stp_tool_fix(m->ks < 0 ? 0 : m->ks);
 }
 
+/* Order of vertex indices by position, for averaging normals over the
+ * polygons that share a vertex (the readers give each polygon its own
+ * copies of its vertices). */
+static const stp_scene_vec3 *sort_positions;
+static int compare_positions(const void *pa, const void *pb)
+{
+    const stp_scene_vec3 *a = &sort_positions[*(const size_t *)pa], *b = &sort_positions[*(const size_t *)pb];
+    if (a->x != b->x)
+        return a->x < b->x ? -1 : 1;
+    if (a->y != b->y)
+        return a->y < b->y ? -1 : 1;
+    if (a->z != b->z)
+        return a->z < b->z ? -1 : 1;
+    return 0;
+}
+
+/* Vertex normals for every vertex: the file's where a polygon has them,
+ * else the area-weighted average of the Newell normals of the polygons
+ * meeting at that position.  Returns a malloc'ed array or NULL. */
+static stp_scene_vec3 *vertex_normals(const stp_scene *scene)
+{
+    size_t nv = scene->vertex_count, i, j, p;
+    stp_scene_vec3 *face = calloc(nv ? nv : 1, sizeof *face), *out = calloc(nv ? nv : 1, sizeof *out);
+    size_t *order = malloc(sizeof *order * (nv ? nv : 1));
+    if (!face || !out || !order) {
+        free(face);
+        free(out);
+        free(order);
+        return NULL;
+    }
+    for (p = 0; p < scene->polygon_count; p++) {
+        const stp_scene_polygon *poly = &scene->polygons[p];
+        stp_scene_vec3 n = {0, 0, 0};
+        int k;
+        for (k = 0; k < poly->count; k++) {
+            const stp_scene_vec3 *a = &scene->vertices[poly->first + (size_t)(k == 0 ? poly->count - 1 : k - 1)];
+            const stp_scene_vec3 *b = &scene->vertices[poly->first + (size_t)k];
+            n.x += (a->y - b->y) * (a->z + b->z);
+            n.y += (a->z - b->z) * (a->x + b->x);
+            n.z += (a->x - b->x) * (a->y + b->y);
+        }
+        for (k = 0; k < poly->count; k++)
+            face[poly->first + (size_t)k] = n;
+    }
+    for (i = 0; i < nv; i++)
+        order[i] = i;
+    sort_positions = scene->vertices;
+    qsort(order, nv, sizeof *order, compare_positions);
+    for (i = 0; i < nv; i = j) {
+        stp_scene_vec3 sum = {0, 0, 0};
+        size_t k;
+        for (j = i; j < nv && compare_positions(&order[i], &order[j]) == 0; j++) {
+            sum.x += face[order[j]].x;
+            sum.y += face[order[j]].y;
+            sum.z += face[order[j]].z;
+        }
+        for (k = i; k < j; k++)
+            out[order[k]] = sum;
+    }
+    for (p = 0; p < scene->polygon_count; p++) {
+        const stp_scene_polygon *poly = &scene->polygons[p];
+        int k;
+        if (poly->has_normals && scene->normals)
+            for (k = 0; k < poly->count; k++)
+                out[poly->first + (size_t)k] = scene->normals[poly->first + (size_t)k];
+    }
+    free(face);
+    free(order);
+    return out;
+}
+
 static double dist3(stp_scene_vec3 a, stp_scene_vec3 b)
 {
     double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
@@ -105,6 +176,7 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
     int status, last_material = -1, band_rows, j, result = -1;
     stp_tool_stats local;
     stp_scene_vec3 light_pos[STP_MAX_LIGHTS];
+    stp_scene_vec3 *normals = 0;
     int light_count;
 
     if (!stats)
@@ -211,9 +283,16 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
         snprintf(err, err_size, "segment: %s", stp_status_text(status));
         goto done;
     }
+    if (opt->smooth) {
+        normals = vertex_normals(scene);
+        if (!normals) {
+            snprintf(err, err_size, "out of memory");
+            goto done;
+        }
+    }
     for (i = 0; i < scene->polygon_count; i++) {
         const stp_scene_polygon *p = &scene->polygons[i];
-        stp_vec3 v[STP_MAX_POLYGON_VERTICES];
+        stp_vec3 v[STP_MAX_POLYGON_VERTICES], vn[STP_MAX_POLYGON_VERTICES];
         int k;
         if (p->material != last_material) {
             stp_material m;
@@ -233,7 +312,23 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
         for (k = 0; k < p->count; k++)
             v[k] = fix3(scene->vertices[p->first + (size_t)k]);
         stats->polygons_in++;
-        status = stp_polygon(r, v, p->count);
+        if (normals) {
+            for (k = 0; k < p->count; k++) {
+                /* normals as unit vectors: their length is irrelevant and
+                 * area-weighted sums may exceed stp_fix's range */
+                stp_scene_vec3 nn = normals[p->first + (size_t)k];
+                double len = sqrt(nn.x * nn.x + nn.y * nn.y + nn.z * nn.z);
+                if (len > 0) {
+                    nn.x /= len;
+                    nn.y /= len;
+                    nn.z /= len;
+                }
+                vn[k] = fix3(nn);
+            }
+            status = stp_polygon_smooth(r, v, vn, p->count);
+        } else {
+            status = stp_polygon(r, v, p->count);
+        }
         if (status == STP_ERR_DEGENERATE) {
             stats->polygons_skipped++;
             continue;
@@ -298,6 +393,7 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
     }
     result = 0;
 done:
+    free(normals);
     free(rmem);
     free(df);
     free(band);

@@ -29,6 +29,8 @@ typedef struct stp_tool_options {
     stp_hidden hidden;       /* (Z buffer) */
     int backface_removal;    /* (0) */
     int shading;             /* 1: MAKE-SHADE per polygon (1) */
+    int smooth;              /* 1: Gouraud from vertex normals: the file's
+                                (NFF pp, OBJ vn), else averaged face normals (0) */
     int band_rows;           /* 0: whole frame */
     double background;       /* BKGRND, the indirect share (0.2) */
     double brightness;       /* BRIGHT (1) */

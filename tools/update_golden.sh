@@ -11,3 +11,5 @@ for nff in "$scenes"/*.nff; do
     "$build/tools/stipple" render "$nff" -o "$here/tests/golden/$name-128x64.pbm"
     echo "wrote tests/golden/$name-128x64.pbm"
 done
+"$build/tools/stipple" render "$scenes/teapot-s2.nff" --smooth -o "$here/tests/golden/teapot-s2-smooth-128x64.pbm"
+echo "wrote tests/golden/teapot-s2-smooth-128x64.pbm"

@@ -63,6 +63,13 @@
 #define STP_WITH_PAINTER 1
 #endif
 
+/* 1: smooth (Gouraud) shading is compiled in: display-file entries carry a
+ * per-vertex shade (4 more bytes each) and spans interpolate it.  0: flat
+ * polygons only, the display file stays at 16 bytes an entry. */
+#ifndef STP_WITH_GOURAUD
+#define STP_WITH_GOURAUD 1
+#endif
+
 /* 1: line drawing (display-file opcodes move/line) is compiled in. */
 #ifndef STP_WITH_LINES
 #define STP_WITH_LINES 1

@@ -66,10 +66,15 @@ enum {
 
 /* One display-file instruction: an opcode and a point.  x, y: device Q27.4;
  * z: depth key, larger = nearer (perspective: 2^30 * hither / z_view, in
- * (0, 2^30]; parallel: -z_view as stp_fix). */
+ * (0, 2^30]; parallel: -z_view as stp_fix).  With STP_WITH_GOURAUD, shade is
+ * the vertex's shade (stp_fix in [0, 1]) for smooth polygons and -1 for flat
+ * ones and for lines. */
 typedef struct stp_instr {
     int32_t op;
     int32_t x, y, z;
+#if STP_WITH_GOURAUD
+    int32_t shade;
+#endif
 } stp_instr;
 
 typedef enum stp_projection {
@@ -172,6 +177,19 @@ int stp_line(stp_renderer *r, stp_vec3 p);
  * (zero Newell normal: repeated/collinear vertices, no area), STP_ERR_FULL
  * (nothing of the polygon is left in the display file). */
 int stp_polygon(stp_renderer *r, const stp_vec3 *vertices, int n);
+
+/* Smooth (Gouraud) polygons (SPEC.md section 4): like stp_polygon, but each
+ * vertex gets its own shade and pixels interpolate it along edges and spans
+ * before the halftone compares it with the cell (the combined scheme).
+ * stp_polygon_smooth computes each vertex's shade with the full shading
+ * equation from its own normal (world units, any length; a zero normal takes
+ * the polygon's) at the vertex; with shading off the fill style's shade is
+ * used everywhere.  stp_polygon_vertex_shades takes the shades (stp_fix,
+ * clamped to [0, 1]) from the caller.  Errors as stp_polygon, and
+ * STP_ERR_UNSUPPORTED without STP_WITH_GOURAUD. */
+int stp_polygon_smooth(stp_renderer *r, const stp_vec3 *vertices, const stp_vec3 *normals, int n);
+int stp_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const stp_fix *shades,
+                              int n);
 
 /* Instructions in use and capacity of the display file. */
 uint32_t stp_display_file_used(const stp_renderer *r);

@@ -56,7 +56,8 @@ typedef struct stp_panel_bus {
 } stp_panel_bus;
 
 extern const stp_panel_controller stp_panel_ssd0323; /* 128x64, 4-bit grey, SPI */
-extern const stp_panel_controller stp_panel_ssd0303; /* 96x16 visible, mono, I2C */
+/* To come: stp_panel_ssd0303 (lm3s811evb, 96x16 visible, mono, I2C), a
+ * STP_PANEL_PAGES controller at column offset 36. */
 
 /* Send the init sequence.  Returns 0 or the bus error. */
 int stp_panel_init(const stp_panel_controller *c, const stp_panel_bus *bus);

@@ -51,6 +51,55 @@ static void render(const stp_scene *scene, const stp_tool_options *opt, stp_posi
         fail_msg("render failed: %s", err);
 }
 
+/* Compare a 1-bit frame with tests/golden/<name>.pbm; on a mismatch save the
+ * render beside the build as <name>.actual.pbm.  Returns the failures (0/1). */
+static int compare_golden(const stp_posix_frame *frame, const char *name)
+{
+    stp_posix_image golden;
+    char path[1024], err[512];
+    uint32_t x, y, differ = 0;
+    snprintf(path, sizeof path, "%s/tests/golden/%s.pbm", env_or("STP_SOURCE_DIR", "."), name);
+    if (stp_posix_read_pnm(path, &golden, err, sizeof err) != 0) {
+        print_error("%s: no golden image (%s)\n", name, err);
+        return 1;
+    }
+    assert_int_equal(golden.width, frame->width);
+    assert_int_equal(golden.height, frame->height);
+    for (y = 0; y < frame->height; y++)
+        for (x = 0; x < frame->width; x++) {
+            /* MONO1 bit 1 = ON = light; the PBM reader gives 255 for white */
+            int on = (frame->pixels[y * frame->stride + x / 8] >> (7 - x % 8)) & 1;
+            if (on != (golden.samples[y * golden.width + x] == 255))
+                differ++;
+        }
+    stp_posix_image_free(&golden);
+    if (differ) {
+        char actual[1024];
+        snprintf(actual, sizeof actual, "%s/%s.actual.pbm", env_or("STP_BINARY_DIR", "."), name);
+        (void)stp_posix_write(frame, actual, STP_POSIX_FILE_P4, err, sizeof err);
+        print_error("%s: %u pixels differ from the golden image; render saved as %s\n", name,
+                    differ, actual);
+        return 1;
+    }
+    return 0;
+}
+
+/* Gouraud shading of the teapot's pp patches (smooth) against its golden. */
+static void test_golden_smooth_teapot(void **state)
+{
+    stp_scene scene;
+    stp_tool_options opt;
+    stp_posix_frame frame;
+    (void)state;
+    load("teapot-s2", &scene);
+    stp_tool_options_default(&opt);
+    opt.smooth = 1;
+    render(&scene, &opt, &frame, STP_PIXEL_MONO1);
+    stp_scene_free(&scene);
+    assert_int_equal(compare_golden(&frame, "teapot-s2-smooth-128x64"), 0);
+    stp_posix_frame_free(&frame);
+}
+
 static void test_golden_128x64(void **state)
 {
     size_t i;
@@ -60,39 +109,13 @@ static void test_golden_128x64(void **state)
         stp_scene scene;
         stp_tool_options opt;
         stp_posix_frame frame;
-        stp_posix_image golden;
-        char path[1024], err[512];
-        uint32_t x, y, differ = 0;
+        char name[128];
         load(scenes[i], &scene);
         stp_tool_options_default(&opt);
         render(&scene, &opt, &frame, STP_PIXEL_MONO1);
         stp_scene_free(&scene);
-        snprintf(path, sizeof path, "%s/tests/golden/%s-128x64.pbm", env_or("STP_SOURCE_DIR", "."),
-                 scenes[i]);
-        if (stp_posix_read_pnm(path, &golden, err, sizeof err) != 0) {
-            print_error("%s: no golden image (%s)\n", scenes[i], err);
-            failures++;
-        } else {
-            assert_int_equal(golden.width, frame.width);
-            assert_int_equal(golden.height, frame.height);
-            for (y = 0; y < frame.height; y++)
-                for (x = 0; x < frame.width; x++) {
-                    /* MONO1 bit 1 = ON = light; the PBM reader gives 255 for white */
-                    int on = (frame.pixels[y * frame.stride + x / 8] >> (7 - x % 8)) & 1;
-                    if (on != (golden.samples[y * golden.width + x] == 255))
-                        differ++;
-                }
-            stp_posix_image_free(&golden);
-        }
-        if (differ) {
-            char actual[1024];
-            snprintf(actual, sizeof actual, "%s/%s-128x64.actual.pbm",
-                     env_or("STP_BINARY_DIR", "."), scenes[i]);
-            (void)stp_posix_write(&frame, actual, STP_POSIX_FILE_P4, err, sizeof err);
-            print_error("%s: %u pixels differ from the golden image; render saved as %s\n",
-                        scenes[i], differ, actual);
-            failures++;
-        }
+        snprintf(name, sizeof name, "%s-128x64", scenes[i]);
+        failures += compare_golden(&frame, name);
         stp_posix_frame_free(&frame);
     }
     assert_int_equal(failures, 0);
@@ -114,6 +137,7 @@ static void test_bands_equal_full_frame(void **state)
                 stp_posix_frame full;
                 stp_tool_options_default(&opt);
                 opt.hidden = methods[m];
+                opt.smooth = (int)(i % 2); /* flat and Gouraud alike */
                 render(&scene, &opt, &full, formats[f]);
                 for (b = 0; b < 3; b++) {
                     stp_posix_frame banded;
@@ -162,6 +186,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_golden_128x64),
+        cmocka_unit_test(test_golden_smooth_teapot),
         cmocka_unit_test(test_bands_equal_full_frame),
         cmocka_unit_test(test_renders_show_something),
     };
