@@ -9,6 +9,7 @@ packages=(
     imagemagick                        # the reference for the Bayer cells
     gcc-arm-none-eabi binutils-arm-none-eabi  # the Cortex-M0 check of the core
     gcc-riscv64-unknown-elf            # the RISC-V check of the core
+    qemu-system-arm python3            # the firmware in an emulated Stellaris board (QMP client)
     dpkg-dev                           # dpkg-deb, to unpack the test photo's package
 )
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }

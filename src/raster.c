@@ -371,6 +371,7 @@ static void replay(const frame *fr, int skip_polygons, int use_z)
 #endif
                 pen = in;
             }
+            (void)pen; /* read only when lines are compiled in */
         }
         (void)line_style;
     }
@@ -503,6 +504,7 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
     background_style = stp_intensity_index(output->background, r->levels);
 
     polygons = scan_polygons(&fr, hidden == STP_HIDDEN_PAINTER ? mem->sort : 0);
+    (void)polygons; /* read only by the painter's sort */
 #if STP_WITH_PAINTER
     if (hidden == STP_HIDDEN_PAINTER)
         sort_entries(mem->sort, polygons);

@@ -5,6 +5,10 @@
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
 
+/* STP_RENDERER_BYTES must bound the object: a negative array size here
+ * stops the build when it does not. */
+typedef char stp_renderer_bytes_bound[sizeof(stp_renderer) <= STP_RENDERER_BYTES ? 1 : -1];
+
 size_t stp_renderer_size(void)
 {
     return sizeof(stp_renderer);
@@ -340,6 +344,7 @@ static stp_fix lerp_fix(stp_fix a, stp_fix b, int64_t t)
     return stp_fix_sat64(a + stp_asr64(((int64_t)b - a) * t, 30));
 }
 
+#if STP_WITH_LINES
 static stp_vec3 clip_point(stp_vec3 a, stp_vec3 b, int64_t da, int64_t db)
 {
     int64_t t = clip_fraction(da, db);
@@ -349,6 +354,7 @@ static stp_vec3 clip_point(stp_vec3 a, stp_vec3 b, int64_t da, int64_t db)
     p.z = lerp_fix(a.z, b.z, t);
     return p;
 }
+#endif
 
 /* Sutherland-Hodgman against the five planes; returns the vertex count of
  * the clipped polygon, its vertices in *result (and, when smooth, its

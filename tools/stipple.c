@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "compile_scene.h"
 #include "render_scene.h"
 #include "scene.h"
 #include "stp_posix.h"
@@ -22,6 +23,8 @@ static void usage_main(FILE *to)
             "commands:\n"
             "  render SCENE -o OUT   render an NFF, OBJ or OFF scene to PBM, PGM, PPM or text\n"
             "  dither IMAGE -o OUT   halftone a PGM/PPM image to PBM\n"
+            "  compile SCENE -o OUT.c  write a scene as C source and a minimal configuration\n"
+            "                        header for firmware (see 'stipple compile --help')\n"
             "  help [COMMAND]        show help\n"
             "\n"
             "Run 'stipple COMMAND --help' for a command's options.\n");
@@ -482,6 +485,8 @@ int main(int argc, char **argv)
         return cmd_render(argc - 1, argv + 1);
     if (!strcmp(argv[1], "dither"))
         return cmd_dither(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "compile"))
+        return stp_tool_compile_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
         if (argc > 2 && !strcmp(argv[2], "render"))
             usage_render(stdout);

@@ -7,7 +7,6 @@
 
 #include "stp_scene_data.h"
 #include "stipple/stipple.h"
-#include "render_private.h" /* sizeof(struct stp_renderer) for static storage */
 
 #ifndef STP_FW_BAND_ROWS
 #define STP_FW_BAND_ROWS 4
@@ -25,7 +24,7 @@ void _start(void)
                      "la sp, __stack_top\n\tj stp_rv32_main");
 }
 
-static struct stp_renderer renderer;
+static stp_renderer_storage renderer; /* sized by STP_RENDERER_BYTES */
 static uint8_t band[STP_FW_BAND_ROWS * MAX_W];
 static uint16_t zbuf[STP_FW_BAND_ROWS * MAX_W];
 volatile int stp_rv32_status; /* for a debugger: the render's result */

@@ -17,7 +17,7 @@
  * in 32 bits).  16 (default): range [-32768, 32768), step 1.5e-5.
  * 20: range [-2048, 2048), step 9.5e-7, for small scenes wanting precision.
  * 12: range [-524288, 524288), step 2.4e-4, for large coordinates.
- * Allowed: 12..24. */
+ * Allowed: 12..20 (angles in degrees, up to 360, must fit). */
 #ifndef STP_FIX_FRAC_BITS
 #define STP_FIX_FRAC_BITS 16
 #endif
@@ -75,8 +75,8 @@
 #define STP_WITH_LINES 1
 #endif
 
-#if STP_FIX_FRAC_BITS < 12 || STP_FIX_FRAC_BITS > 24
-#error "STP_FIX_FRAC_BITS must be within 12..24"
+#if STP_FIX_FRAC_BITS < 12 || STP_FIX_FRAC_BITS > 20
+#error "STP_FIX_FRAC_BITS must be within 12..20"
 #endif
 #if STP_MAX_POLYGON_VERTICES < 3 || STP_MAX_POLYGON_VERTICES > 4096
 #error "STP_MAX_POLYGON_VERTICES must be within 3..4096"

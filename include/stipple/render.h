@@ -105,6 +105,18 @@ typedef struct stp_renderer stp_renderer;
 /* Bytes a renderer object needs (its alignment is that of int64_t). */
 size_t stp_renderer_size(void);
 
+/* An upper bound of stp_renderer_size() known at compile time, for static
+ * allocation without a heap (render.c checks the bound when it is built):
+ *   static stp_renderer_storage storage;
+ *   r = stp_renderer_create(&storage, sizeof storage, ...); */
+#define STP_RENDERER_BYTES                                                                      \
+    (1024u + 32u * STP_MAX_SEGMENTS + 48u * STP_MAX_LIGHTS + 96u * (STP_MAX_POLYGON_VERTICES + 5u))
+typedef union stp_renderer_storage {
+    int64_t align_integer;
+    void *align_pointer;
+    uint8_t bytes[STP_RENDERER_BYTES];
+} stp_renderer_storage;
+
 /* Create a renderer in mem (stp_renderer_size() bytes, aligned for int64_t)
  * with a display file of capacity instructions in display_file.  The device
  * size is fixed at creation (1..32767 each way) because entering an

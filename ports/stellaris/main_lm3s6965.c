@@ -11,7 +11,6 @@
 #include "stp_panel.h"
 #include "stp_scene_data.h"
 #include "stipple/stipple.h"
-#include "render_private.h" /* sizeof(struct stp_renderer): see renderer below */
 
 #ifndef STP_FW_BAND_ROWS
 #define STP_FW_BAND_ROWS 4
@@ -21,10 +20,9 @@
 #define PANEL_H 64u
 #define ROW_BYTES (PANEL_W / 8u)
 
-/* The renderer object, sized at compile time.  The public API gives its size
- * only at run time (stp_renderer_size()); with no heap the storage has to be
- * static, so this one file takes the size from the core's private header. */
-static struct stp_renderer renderer;
+/* The renderer object in static storage, sized by STP_RENDERER_BYTES (the
+ * compile-time bound of stp_renderer_size()). */
+static stp_renderer_storage renderer;
 
 static uint8_t band[STP_FW_BAND_ROWS * ROW_BYTES];
 #if STP_WITH_ZBUFFER
@@ -155,7 +153,7 @@ int main(void)
     report("instructions per frame (core):", (t2 - t1) * per_tick);
     report("instructions per frame (core + panel):", (t4 - t3) * per_tick);
     report("band rows:", STP_FW_BAND_ROWS);
-    report("renderer bytes:", sizeof renderer);
+    report("renderer bytes:", stp_renderer_size());
     report("display-file entries:", stp_display_file_used(r));
     wait_for_key();
     return 0;
