@@ -2,7 +2,7 @@
  * stipple build-time configuration: the one place where every switch of the
  * core is defined, with its default.  A firmware build overrides them with
  * -D on the compiler line or by defining STP_CONFIG_HEADER to the name of a
- * header of its own, included first.  tests/test_config_switches.c builds the
+ * header of its own, included first.  tests/check_switches.sh builds the
  * core with each switch flipped and checks the object code changes, so a
  * switch spelled differently here and in the code cannot go unnoticed.
  */

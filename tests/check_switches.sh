@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Every build switch of include/stipple/config.h must change the core's object
+# code when flipped (a switch spelled differently in two places would
+# silently do nothing), and the core must build warning-free in each position.
+# Usage: check_switches.sh SOURCE_DIR [CC]
+set -u
+src=$1
+cc=${2:-cc}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+build() { # OUT_DIR DEFINES...
+    local out=$1
+    shift
+    mkdir -p "$out"
+    for f in "$src"/src/*.c; do
+        "$cc" -std=c99 -Os -ffreestanding -Wall -Wextra -Wpedantic -Werror -Wshadow -Wconversion \
+            -Wno-sign-conversion "$@" -I "$src/include" -I "$src/src" -c "$f" \
+            -o "$out/$(basename "$f" .c).o" || return 1
+    done
+    # code and constant data only: the object files' other sections carry names
+    for o in "$out"/*.o; do objcopy -O binary -j .text -j '.text.*' -j .rodata -j '.rodata.*' "$o" "$o.bin"; done
+    cat "$out"/*.o.bin | sha256sum | cut -d' ' -f1
+}
+switches=$(grep -oE '^#define (STP_[A-Z0-9_]+) ' "$src/include/stipple/config.h" | awk '{print $2}')
+base=$(build "$work/base") || { echo "FAIL: default build"; exit 1; }
+passes=0 failures=0
+for s in $switches; do
+    default=$(sed -n "s/^#define $s \([0-9]*\).*/\1/p" "$src/include/stipple/config.h")
+    case "$s" in
+        STP_FIX_FRAC_BITS) flipped=12 ;;
+        STP_MAX_POLYGON_VERTICES) flipped=8 ;;
+        STP_MAX_LIGHTS | STP_MAX_SEGMENTS) flipped=1 ;;
+        *) flipped=$((1 - default)) ;;
+    esac
+    if ! sum=$(build "$work/$s" "-D$s=$flipped"); then
+        echo "FAIL: $s=$flipped does not build cleanly"
+        failures=$((failures + 1))
+    elif [ "$sum" = "$base" ]; then
+        echo "FAIL: $s=$flipped leaves the object code unchanged"
+        failures=$((failures + 1))
+    else
+        echo "ok: $s=$flipped changes the object code"
+        passes=$((passes + 1))
+    fi
+done
+echo "$passes passed, $failures failed"
+[ "$failures" -eq 0 ] && [ "$passes" -gt 0 ]
