@@ -502,6 +502,10 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
         fr.cell = &fr.default_cell;
     }
     background_style = stp_intensity_index(output->background, r->levels);
+    /* port.h: STYLE8 without a table holds 0 where nothing is drawn and the
+     * background is 0 (style_code passes 0 through) */
+    if (port->format == STP_PIXEL_STYLE8 && output->styles == 0 && output->background <= 0)
+        background_style = 0;
 
     polygons = scan_polygons(&fr, hidden == STP_HIDDEN_PAINTER ? mem->sort : 0);
     (void)polygons; /* read only by the painter's sort */
@@ -514,8 +518,13 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
         uint32_t y;
         fr.y0 = y0;
         fr.rows = r->height - y0 < mem->band_rows ? r->height - y0 : mem->band_rows;
-        for (y = y0; y < y0 + fr.rows; y++)
+        for (y = y0; y < y0 + fr.rows; y++) {
+            /* MONO1 padding bits past the width reach the port too: make
+             * them 0 rather than whatever the caller's buffer held */
+            if (port->format == STP_PIXEL_MONO1)
+                fr.band[(size_t)(y - y0) * fr.stride + fr.stride - 1] = 0;
             put_span(&fr, y, 0, r->width - 1, background_style);
+        }
 #if STP_WITH_ZBUFFER
         if (hidden == STP_HIDDEN_ZBUFFER) {
             size_t i, n = (size_t)r->width * fr.rows;

@@ -87,13 +87,54 @@ stp_specular_terms stp_specular(stp_fix n_dot_h, stp_fix n_dot_e, stp_fix n_dot_
     return out;
 }
 
-static stp_vec3 vec_sub_sat(stp_vec3 a, stp_vec3 b)
+#if STP_WITH_SPECULAR
+/* D F G/(N.E), with G/(N.E) formed directly: G = min(1, 2 (N.H) min(N.E,
+ * N.L)/(E.H)), so G/(N.E) = min(1/(N.E), 2 (N.H) (min(N.E, N.L)/(N.E))/(E.H)).
+ * Forming the tiny G of a grazing eye first and dividing it by the tiny N.E
+ * afterwards would keep only the few bits G has left.  N.E, N.L > 0 here;
+ * the quotient is capped at STP_FIX_MAX (the shade saturates long before). */
+static stp_fix specular_share(stp_specular_terms s, stp_fix n_dot_h, stp_fix n_dot_e,
+                              stp_fix n_dot_l, stp_fix e_dot_h)
 {
+    int64_t m = n_dot_l < n_dot_e ? n_dot_l : n_dot_e, q, g_ne, cap, df;
+    if (n_dot_h <= 0 || e_dot_h <= 0 || n_dot_e <= 0)
+        return 0;
+    if (n_dot_h > ONE)
+        n_dot_h = ONE;
+    q = (2 * m * n_dot_h) / n_dot_e;           /* 2 (N.H) min/(N.E) <= 2 ONE */
+    g_ne = (q * ONE) / e_dot_h;                /* < 2^(2F+2) */
+    cap = ((int64_t)ONE * ONE) / n_dot_e;      /* G capped at 1 */
+    if (cap < g_ne)
+        g_ne = cap;
+    if (g_ne > STP_FIX_MAX)
+        g_ne = STP_FIX_MAX;
+    df = ((int64_t)s.d * s.f + STP_FIX_HALF) >> F; /* D, F in [0, 1] */
+    return stp_fix_sat64((df * g_ne + STP_FIX_HALF) >> F);
+}
+#endif
+
+/* UNITY of a - b: *out = (a - b)/|a - b|, returning |a - b| with F
+ * fractional bits in 64 bits.  The difference of two stp_fix can exceed the
+ * range (points near opposite ends of it), and so can the length of a
+ * difference within it: the difference is formed in 64 bits and halved
+ * until its length fits (components below 2^30), which keeps its
+ * direction, and the length is scaled back unsaturated (below 2^33). */
+static int64_t unity_diff(stp_vec3 a, stp_vec3 b, stp_vec3 *out)
+{
+    const int64_t lim = ((int64_t)1 << 30) - 1;
+    int64_t dx = (int64_t)a.x - b.x, dy = (int64_t)a.y - b.y, dz = (int64_t)a.z - b.z;
+    int shift = 0;
     stp_vec3 d;
-    d.x = stp_fix_sub(a.x, b.x);
-    d.y = stp_fix_sub(a.y, b.y);
-    d.z = stp_fix_sub(a.z, b.z);
-    return d;
+    while (dx > lim || dx < -lim || dy > lim || dy < -lim || dz > lim || dz < -lim) {
+        dx /= 2;
+        dy /= 2;
+        dz /= 2;
+        shift++;
+    }
+    d.x = (stp_fix)dx;
+    d.y = (stp_fix)dy;
+    d.z = (stp_fix)dz;
+    return (int64_t)stp_vec3_unity(d, out) * ((int64_t)1 << shift);
 }
 
 stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *material,
@@ -114,7 +155,7 @@ stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *materi
     if (parallel)
         e = parallel_dir;
     else
-        (void)stp_vec3_unity(vec_sub_sat(eye, point), &e);
+        (void)unity_diff(eye, point, &e);
     n_dot_e = stp_vec3_dot(normal, e);
 
     count = lighting->count < 0 ? 0 : (lighting->count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : lighting->count);
@@ -123,8 +164,8 @@ stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *materi
     for (j = 0; j < count; j++) {
         const stp_light *light = &lighting->lights[j];
         stp_vec3 l;
-        stp_fix u, n_dot_l, term;
-        u = stp_vec3_unity(vec_sub_sat(light->position, point), &l);
+        stp_fix n_dot_l, term;
+        int64_t u = unity_diff(light->position, point, &l);
         if (u == 0)
             l = normal; /* light on the surface: lit head-on, 1/(C + 0) */
         n_dot_l = stp_vec3_dot(normal, l);
@@ -138,19 +179,19 @@ stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *materi
             le.y = stp_fix_add(l.y, e.y);
             le.z = stp_fix_add(l.z, e.z);
             if (stp_vec3_unity(le, &h) != 0) { /* L + E = 0: H undefined, no highlight */
-                stp_specular_terms s = stp_specular(stp_vec3_dot(normal, h), n_dot_e, n_dot_l,
-                                                    stp_vec3_dot(e, h), material->refraction,
-                                                    material->gloss);
-                stp_fix dgf = stp_fix_mul(stp_fix_mul(s.d, s.g), s.f);
+                stp_fix n_dot_h = stp_vec3_dot(normal, h), e_dot_h = stp_vec3_dot(e, h);
+                stp_specular_terms s = stp_specular(n_dot_h, n_dot_e, n_dot_l, e_dot_h,
+                                                    material->refraction, material->gloss);
                 /* the share DGF/(E.N) explodes as E.N -> 0: it saturates,
                  * and the min(1, ...) below caps the shade */
-                stp_fix share = stp_fix_mul(stp_fix_div(dgf, n_dot_e), material->specular);
+                stp_fix share = stp_fix_mul(specular_share(s, n_dot_h, n_dot_e, n_dot_l, e_dot_h),
+                                            material->specular);
                 term = stp_fix_add(term, share);
             }
         }
 #endif
         /* P_j * term / (C + U_j) in one 64-bit step */
-        term = stp_fix_sat64(((int64_t)term * light->power) / stp_fix_add(c, u));
+        term = stp_fix_sat64(((int64_t)term * light->power) / (c + u));
         sum += term;
     }
     sum += ambient;

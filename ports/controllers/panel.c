@@ -3,7 +3,17 @@
 
 int stp_panel_init(const stp_panel_controller *c, const stp_panel_bus *bus)
 {
-    return bus->command(bus->ctx, c->init, c->init_length);
+    size_t at = 0;
+    while (at < c->init_length) {
+        size_t n = c->init[at];
+        int status;
+        if (n == 0 || n > c->init_length - at - 1u)
+            return -1;
+        if ((status = bus->command(bus->ctx, c->init + at + 1, n)) != 0)
+            return status;
+        at += 1u + n;
+    }
+    return 0;
 }
 
 size_t stp_panel_row_bytes(const stp_panel_controller *c, uint32_t width)

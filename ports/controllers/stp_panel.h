@@ -36,8 +36,12 @@ typedef struct stp_panel_controller {
     uint16_t column_offset;       /* controller column of visible column 0 */
     stp_panel_addressing addressing;
     stp_panel_packing packing;
-    const uint8_t *init;          /* command bytes, sent once, in order */
-    uint16_t init_length;
+    /* The init sequence, sent once, in order, as records: a count n (1..255)
+     * and n bytes, one command and its parameters.  Each record is one
+     * bus->command call: an I2C controller wants a STOP after a command's
+     * parameters (SSD0303), an SPI one does not care where calls end. */
+    const uint8_t *init;
+    uint16_t init_length;         /* bytes of init, the counts included */
     /* STP_PANEL_WINDOW: opcodes taking (start, end); columns are counted in
      * bytes of packed pixels (column_unit pixels each) */
     uint8_t column_command, row_command, column_unit;
@@ -56,10 +60,10 @@ typedef struct stp_panel_bus {
 } stp_panel_bus;
 
 extern const stp_panel_controller stp_panel_ssd0323; /* 128x64, 4-bit grey, SPI */
-/* To come: stp_panel_ssd0303 (lm3s811evb, 96x16 visible, mono, I2C), a
- * STP_PANEL_PAGES controller at column offset 36. */
+extern const stp_panel_controller stp_panel_ssd0303; /* 96x16 of 132x64, mono, I2C */
 
-/* Send the init sequence.  Returns 0 or the bus error. */
+/* Send the init sequence, a bus->command call per record.  Returns 0, the
+ * bus error, or -1 for a record running past init_length or of count 0. */
 int stp_panel_init(const stp_panel_controller *c, const stp_panel_bus *bus);
 
 /* Grey level a MONO1 ON pixel gets on a grey panel (OFF gets 0). */

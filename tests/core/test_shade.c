@@ -43,7 +43,12 @@
  * there the bound scales: SHADE_TOL * SHADE_GRAZING / N.E.  The worst
  * err/tolerance over the whole grid is printed too (0.15 measured).
  */
+#if STP_FIX_FRAC_BITS >= 16
 #define SHADE_TOL 2e-3
+#else
+/* a coarser stp_fix: the same error budget counted in LSB */
+#define SHADE_TOL (2e-3 * (double)(1 << (16 - STP_FIX_FRAC_BITS)))
+#endif
 #define SHADE_GRAZING 0.1
 
 /* Tolerances of the specular factors, each in [0, 1] and computed from

@@ -1,12 +1,15 @@
 #!/usr/bin/python3
 """QMP client for the firmware test (Python standard library only).
 
-qmp_screendump.py SOCKET LOG DUMP TIMEOUT PID
+qmp_screendump.py SOCKET LOG DUMP TIMEOUT PID [SERIAL_SOCKET]
 
 Connects to QEMU's QMP socket, waits until the firmware writes "frame done"
 to LOG (its semihosting output), takes a screendump into DUMP (an absolute
-path: QEMU resolves it, not us), then presses "up" so the firmware exits
-with its own status, and waits for QEMU to close the connection.  If QEMU
+path: QEMU resolves it, not us), then releases the firmware so that it exits
+with its own status, and waits for QEMU to close the connection.  Release:
+the "up" key (QMP send-key; the lm3s6965evb's gamepad), or with
+SERIAL_SOCKET (QEMU's -serial unix:SERIAL_SOCKET,server=on,wait=off) one
+byte sent to the board's UART0 (the lm3s811evb has no keys in QEMU).  If QEMU
 does not go away it is told to quit and the client fails.  Every wait is
 bounded by TIMEOUT seconds, and a QEMU (PID) that exits early ends the
 wait at once.  Exit status 0 on success.
@@ -103,9 +106,27 @@ def wait_for_text(path, text, deadline, pid):
     fail("the firmware did not report '%s' (see %s)" % (text, path))
 
 
+def send_serial_byte(path, deadline):
+    """One byte to the guest's UART through QEMU's serial socket."""
+    while True:
+        s = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        try:
+            s.connect(path)
+            s.settimeout(max(deadline - time.monotonic(), 0.1))
+            s.sendall(b"\n")
+            # keep the connection until QEMU exits: a byte still in the
+            # socket when it is closed may never reach the UART
+            return s
+        except OSError:
+            s.close()
+            if time.monotonic() > deadline:
+                fail("no serial socket at %s" % path)
+            time.sleep(0.05)
+
+
 def main():
-    if len(sys.argv) != 6:
-        fail("usage: qmp_screendump.py SOCKET LOG DUMP TIMEOUT PID")
+    if len(sys.argv) not in (6, 7):
+        fail("usage: qmp_screendump.py SOCKET LOG DUMP TIMEOUT PID [SERIAL_SOCKET]")
     sock_path, log, dump = sys.argv[1], sys.argv[2], sys.argv[3]
     timeout, pid = float(sys.argv[4]), int(sys.argv[5])
     if not os.path.isabs(dump):
@@ -115,11 +136,17 @@ def main():
     qmp.command("qmp_capabilities")
     wait_for_text(log, "frame done", deadline, pid)
     qmp.command("screendump", {"filename": dump})
-    qmp.command("send-key", {"keys": [{"type": "qcode", "data": "up"}]})
+    serial = None
+    if len(sys.argv) == 7:
+        serial = send_serial_byte(sys.argv[6], deadline)
+    else:
+        qmp.command("send-key", {"keys": [{"type": "qcode", "data": "up"}]})
     try:
         while True:
             qmp.read()  # events until QEMU closes the socket on exit
     except EOFError:
+        if serial is not None:
+            serial.close()
         return 0
     except SystemExit:
         try:

@@ -1,11 +1,16 @@
 #!/bin/sh
-# End-to-end firmware test: build the lm3s6965evb firmware for SCENE with the
+# End-to-end firmware test: build a board's firmware for SCENE with the
 # cross toolchain, run it in QEMU, take a screendump of the OLED over QMP and
 # compare it pixel for pixel with `stipple render` of the same scene through
-# the same core (the panel shows the 1-bit halftoned picture: ON as grey 15).
-# Both the scene's minimal configuration and the full library are run.
+# the same core, at the panel's size.  Boards:
+#   lm3s6965evb  SSD0323 128x64 (SSI): the 1-bit halftoned picture, ON as grey
+#                15; the scene's minimal configuration and the full library
+#   lm3s811evb   SSD0303 96x16 mono (I2C): the 1-bit picture; the minimal
+#                configuration only (the full renderer exceeds its 8 KB RAM)
+# Either dump shows a panel pixel as a 4x4 block, 255 for ON and 0 for OFF.
 #
-# run_qemu_test.sh SOURCE_DIR WORK_DIR STIPPLE COMPILE_TOOL COMPARE SCENE [OPTION...]
+# run_qemu_test.sh [--board BOARD] SOURCE_DIR WORK_DIR STIPPLE COMPILE_TOOL COMPARE SCENE [OPTION...]
+#   BOARD         lm3s6965evb (default) or lm3s811evb
 #   STIPPLE       host stipple command (for the reference render)
 #   COMPILE_TOOL  host program taking `compile SCENE -o OUT.c` (stipple itself
 #                 once it has the subcommand, or stp_compile_scene)
@@ -17,10 +22,31 @@
 # STP_FW_BAND_ROWS (4).
 set -eu
 
+board=lm3s6965evb
+if [ "${1:-}" = "--board" ] && [ $# -ge 2 ]; then
+    board=$2
+    shift 2
+fi
 if [ $# -lt 6 ]; then
-    echo "usage: $0 SOURCE_DIR WORK_DIR STIPPLE COMPILE_TOOL COMPARE SCENE [OPTION...]" >&2
+    echo "usage: $0 [--board BOARD] SOURCE_DIR WORK_DIR STIPPLE COMPILE_TOOL COMPARE SCENE [OPTION...]" >&2
     exit 2
 fi
+# per board: the panel's size, the images to run, and how the firmware is
+# told to finish once the screendump is taken (the lm3s6965evb waits for its
+# "up" key; QEMU gives the lm3s811evb no keys, so it waits for a UART0 byte)
+case $board in
+    lm3s6965evb)
+        size=128x64
+        images="stipple_fw_lm3s6965evb stipple_fw_lm3s6965evb_full"
+        uart=no ;;
+    lm3s811evb)
+        size=96x16
+        images="stipple_fw_lm3s811evb"
+        uart=yes ;;
+    *)
+        echo "$0: unknown board '$board' (lm3s6965evb or lm3s811evb)" >&2
+        exit 2 ;;
+esac
 src=$(cd "$1" && pwd)
 mkdir -p "$2"
 work=$(cd "$2" && pwd)
@@ -44,9 +70,10 @@ options=""
 for o in "$@"; do options="${options:+$options;}$o"; done
 
 fw="$work/fw-$cpu"
-echo "== building the firmware ($cpu) in $fw"
+echo "== building the $board firmware ($cpu) in $fw"
 timeout "$build_timeout" cmake -S "$src/firmware" -B "$fw" \
     -DCMAKE_TOOLCHAIN_FILE="$src/cmake/toolchain-arm-none-eabi.cmake" -DSTP_CPU="$cpu" \
+    -DSTP_FW_BOARD="$board" \
     -DSTP_FW_COMPILE_TOOL="$compile_tool" -DSTP_FW_SCENE="$scene" \
     -DSTP_FW_COMPILE_OPTIONS="$options" -DSTP_FW_BAND_ROWS="$band_rows" >"$work/configure.log" 2>&1 ||
     { cat "$work/configure.log" >&2; exit 1; }
@@ -54,24 +81,33 @@ timeout "$build_timeout" cmake --build "$fw" >"$work/build.log" 2>&1 ||
     { cat "$work/build.log" >&2; exit 1; }
 
 echo "== host render"
-"$stipple" render "$scene" -s 128x64 -o "$work/host.pbm" "$@"
+"$stipple" render "$scene" -s "$size" -o "$work/host.pbm" "$@"
 
 status=0
-for image in stipple_fw_lm3s6965evb stipple_fw_lm3s6965evb_full; do
+for image in $images; do
     elf="$fw/$image.elf"
     sock="$work/$image.qmp"
     log="$work/$image.log"
     dump="$work/$image.ppm"
-    rm -f "$sock" "$log" "$dump"
+    serial_sock="$work/$image.uart"
+    rm -f "$sock" "$log" "$dump" "$serial_sock"
+    # the QMP client releases the firmware through this socket when set
+    release=""
+    serial=null
+    if [ "$uart" = yes ]; then
+        serial="unix:$serial_sock,server=on,wait=off"
+        release=$serial_sock
+    fi
     echo "== $image"
     arm-none-eabi-size "$elf"
-    timeout -k 5 "$qemu_timeout" qemu-system-arm -M lm3s6965evb -kernel "$elf" \
-        -display none -serial null -monitor none \
+    timeout -k 5 "$qemu_timeout" qemu-system-arm -M "$board" -kernel "$elf" \
+        -display none -serial "$serial" -monitor none \
         -qmp "unix:$sock,server=on,wait=off" \
         -semihosting-config enable=on,target=native -icount shift=0 >"$log" 2>&1 &
     qemu=$!
     client=0
-    /usr/bin/python3 "$here/qmp_screendump.py" "$sock" "$log" "$dump" "$qemu_timeout" "$qemu" ||
+    /usr/bin/python3 "$here/qmp_screendump.py" "$sock" "$log" "$dump" "$qemu_timeout" "$qemu" \
+        ${release:+"$release"} ||
         client=$?
     qemu_status=0
     wait "$qemu" || qemu_status=$?

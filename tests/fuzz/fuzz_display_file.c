@@ -5,13 +5,14 @@
  *
  * The input is a program: a header picks the device size and the display
  * file's capacity, then each following byte picks a call (view, lights,
- * material, levels, segments, move/line, polygon, render) whose arguments
- * come from the next bytes.  stp_fix values are drawn from small integers,
- * fractions, any 32-bit pattern and a table of extremes (STP_FIX_MAX,
- * STP_FIX_MIN, INT32_MIN, 32767, 2^-16, ...).  Every buffer lent to the core
- * (renderer, display file, band, Z buffer, sort array, gamma and style
- * tables, polygon vertices) is its own heap block of exactly the size the
- * API asks for, so ASan sees any access beyond it.
+ * material, levels, segments, move/line, flat and smooth polygons, render)
+ * whose arguments come from the next bytes.  stp_fix values are drawn from
+ * small integers, fractions, any 32-bit pattern and a table of extremes
+ * (STP_FIX_MAX, STP_FIX_MIN, INT32_MIN, 32767, 2^-16, ...).  Every buffer
+ * lent to the core (renderer, display file, band, Z buffer, sort array,
+ * gamma and style tables, polygon vertices, normals and shades) is its own
+ * heap block of exactly the size the API asks for, so ASan sees any access
+ * beyond it.
  *
  * Checked beyond the sanitizers:
  *  - segments follow a model of the API's rules: the status of create,
@@ -556,11 +557,14 @@ static void op_segment_visibility(state *st, fz_reader *in)
         st->seg[s].visible = visible != 0;
 }
 
-static void op_polygon(state *st, fz_reader *in)
+/* stp_polygon (flat), stp_polygon_smooth (vertex normals) or
+ * stp_polygon_vertex_shades (shades given), by `smooth` 0, 1, 2. */
+static void op_polygon(state *st, fz_reader *in, int smooth)
 {
     uint8_t kind = fz_u8(in);
     int n, i, status, expect = STP_OK;
-    stp_vec3 *v;
+    stp_vec3 *v, *normals = NULL;
+    stp_fix *shades = NULL;
     uint32_t before = stp_display_file_used(st->r);
     stp_fix shade;
 
@@ -588,6 +592,24 @@ static void op_polygon(state *st, fz_reader *in)
                 v[i] = fz_near(in, centre);
         }
     }
+    if (smooth == 1) {
+        /* any normal, none (zero: the polygon's), or one along an axis */
+        normals = (stp_vec3 *)xmalloc(sizeof *normals * (size_t)(n > 0 ? n : 1));
+        for (i = 0; i < n; i++) {
+            uint8_t b = fz_u8(in);
+            if (b < 128) {
+                normals[i] = fz_vec(in);
+            } else {
+                normals[i].x = normals[i].y = normals[i].z = 0;
+                if (b < 224)
+                    *(&normals[i].x + b % 3) = (b & 8) ? -ONE : ONE;
+            }
+        }
+    } else if (smooth == 2) {
+        shades = (stp_fix *)xmalloc(sizeof *shades * (size_t)(n > 0 ? n : 1));
+        for (i = 0; i < n; i++)
+            shades[i] = fz_u8(in) & 1 ? fz_fix(in) : (stp_fix)fz_u8(in) * (ONE / 255);
+    }
     if (st->open < 0)
         expect = STP_ERR_NO_SEGMENT;
     else if (n < 0)
@@ -596,8 +618,15 @@ static void op_polygon(state *st, fz_reader *in)
         expect = STP_ERR_DEGENERATE;
     else if (n > STP_MAX_POLYGON_VERTICES)
         expect = STP_ERR_TOO_MANY_VERTICES;
-    status = stp_polygon(st->r, v, n);
+    if (smooth == 1)
+        status = stp_polygon_smooth(st->r, v, normals, n);
+    else if (smooth == 2)
+        status = stp_polygon_vertex_shades(st->r, v, shades, n);
+    else
+        status = stp_polygon(st->r, v, n);
     free(v);
+    free(normals);
+    free(shades);
     if (expect != STP_OK)
         FZ_CHECK(status == expect, "stp_polygon(n = %d) returned %d, expected %d", n, status,
                  expect);
@@ -663,13 +692,15 @@ static void op_call(state *st, fz_reader *in)
     case 12: op_segment_visibility(st, in); break;
     case 13: op_pen(st, in, 0); break;
     case 14: op_pen(st, in, 1); break;
+    case 15: op_polygon(st, in, 1); break;
+    case 16: op_polygon(st, in, 2); break;
     case 19:
         if (st->renders < FZ_MAX_RENDERS) {
             op_render(st, in, -1);
             break;
         }
         /* fall through */
-    default: op_polygon(st, in); break;
+    default: op_polygon(st, in, 0); break;
     }
     check_counts(st);
 }

@@ -58,7 +58,8 @@ def run(cmd, timeout, **kw):
 
 # ------------------------------------------------------------------ kernel
 
-MODULE_DIRS = ["kernel/drivers/gpu/drm", "kernel/drivers/video"]
+MODULE_DIRS = ["kernel/drivers/gpu/drm", "kernel/drivers/video", "kernel/fs/configfs"]
+CACHE_LAYOUT = 2
 
 
 def fetch_kernel(cache):
@@ -67,8 +68,8 @@ def fetch_kernel(cache):
     if os.path.exists(stamp):
         with open(stamp) as f:
             info = json.load(f)
-        if os.path.exists(info["vmlinuz"]):
-            return info["vmlinuz"], info["modroot"]
+        if info.get("layout") == CACHE_LAYOUT and os.path.exists(info["vmlinuz"]):
+            return info
     if not shutil.which("apt-cache") or not shutil.which("dpkg-deb"):
         skip("apt-cache/dpkg-deb not found: cannot fetch Debian's kernel")
     out = subprocess.run(["apt-cache", "search", "--names-only", r"^linux-image-6\.1\.0-[0-9]+-amd64$"],
@@ -100,14 +101,84 @@ def fetch_kernel(cache):
     tar.stdout.close()
     if tar.wait(timeout=60) != 0:
         sys.exit("dpkg-deb failed on %s" % deb)
+    version = subprocess.run(["dpkg-deb", "-f", deb, "Version"], capture_output=True, text=True,
+                             timeout=60, check=True).stdout.strip()
     os.unlink(deb)
     vmlinuz = [f for f in os.listdir(os.path.join(root, "boot")) if f.startswith("vmlinuz-")][0]
     kver = vmlinuz[len("vmlinuz-"):]
-    info = {"package": pkg, "vmlinuz": os.path.join(root, "boot", vmlinuz),
+    info = {"package": pkg, "version": version, "layout": CACHE_LAYOUT,
+            "vmlinuz": os.path.join(root, "boot", vmlinuz),
             "modroot": os.path.join(root, "lib", "modules", kver)}
     with open(stamp, "w") as f:
         json.dump(info, f)
-    return info["vmlinuz"], info["modroot"]
+    return info
+
+
+def build_gpio_sim(cache, info):
+    """gpio-sim.ko for this kernel, built out of tree (Debian does not enable
+    CONFIG_GPIO_SIM nor CONFIG_IRQ_SIM): drivers/gpio/gpio-sim.c with
+    kernel/irq/irq_sim.c linked in, from linux-source-6.1 of the same
+    version, against linux-headers and linux-kbuild.  6.1 does not export
+    irq_to_desc to modules, so the simulator hands its interrupts over with
+    the exported generic_handle_irq_safe instead.  Returns the path, or None
+    and a reason."""
+    ko = os.path.join(cache, "gpio-sim.ko")
+    if os.path.exists(ko):
+        return ko, None
+    for tool in ("make", "gcc-12", "xz"):
+        if not shutil.which(tool):
+            return None, "%s not found (needed to build gpio-sim.ko)" % tool
+    abi = re.match(r"linux-image-(.*)-amd64$", info["package"]).group(1)
+    ver = info["version"]
+    series = ".".join(abi.split(".")[:2])
+    build = os.path.join(cache, "gpio-sim-build")
+    shutil.rmtree(build, ignore_errors=True)
+    os.makedirs(build)
+    pkgs = ["linux-headers-%s-amd64=%s" % (abi, ver), "linux-headers-%s-common=%s" % (abi, ver),
+            "linux-kbuild-%s=%s" % (series, ver), "linux-source-%s=%s" % (series, ver)]
+    log("downloading %s" % " ".join(pkgs))
+    r = subprocess.run(["apt-get", "download", "-q"] + pkgs, cwd=build, capture_output=True,
+                       text=True, timeout=900)
+    if r.returncode != 0:
+        return None, "apt-get download failed: %s" % r.stderr.strip()[-300:]
+    root = os.path.join(build, "root")
+    for deb in os.listdir(build):
+        if deb.endswith(".deb") and not deb.startswith("linux-source"):
+            run(["dpkg-deb", "-x", os.path.join(build, deb), root], 300)
+    src_deb = [d for d in os.listdir(build) if d.startswith("linux-source")][0]
+    log("unpacking gpio-sim.c, irq_sim.c and gpiolib.h from %s" % src_deb)
+    top = "linux-source-%s" % series
+    sh = ("dpkg-deb --fsys-tarfile '%s' | tar -xO ./usr/src/%s.tar.xz | xz -dc | "
+          "tar -x -C '%s' %s/drivers/gpio/gpio-sim.c %s/drivers/gpio/gpiolib.h "
+          "%s/kernel/irq/irq_sim.c") % (os.path.join(build, src_deb), top, build, top, top, top)
+    run(["sh", "-c", sh], 600)
+    hdr = os.path.join(root, "usr", "src", "linux-headers-%s-amd64" % abi)
+    mk = os.path.join(hdr, "Makefile")
+    with open(mk) as f:
+        text = f.read()
+    with open(mk, "w") as f:  # it includes the common tree by absolute path
+        f.write(text.replace("include /usr/src/", "include %s/usr/src/" % root))
+    mod = os.path.join(build, "mod")
+    os.makedirs(mod)
+    shutil.copy(os.path.join(build, top, "drivers/gpio/gpio-sim.c"), os.path.join(mod, "gpio-sim-core.c"))
+    shutil.copy(os.path.join(build, top, "drivers/gpio/gpiolib.h"), mod)
+    with open(os.path.join(build, top, "kernel/irq/irq_sim.c")) as f:
+        irq = f.read()
+    old = "handle_simple_irq(irq_to_desc(irqnum));"
+    if old not in irq:
+        return None, "irq_sim.c of %s has no '%s' to replace" % (ver, old)
+    with open(os.path.join(mod, "irq_sim.c"), "w") as f:
+        f.write(irq.replace(old, "generic_handle_irq_safe(irqnum);"))
+    with open(os.path.join(mod, "Kbuild"), "w") as f:
+        f.write("obj-m := gpio-sim.o\ngpio-sim-y := gpio-sim-core.o irq_sim.o\n")
+    log("building gpio-sim.ko")
+    r = subprocess.run(["make", "-C", hdr, "M=" + mod, "modules"], capture_output=True,
+                       text=True, timeout=600)
+    if r.returncode != 0:
+        return None, "building gpio-sim.ko failed: %s" % (r.stdout + r.stderr)[-800:]
+    shutil.copy(os.path.join(mod, "gpio-sim.ko"), ko)
+    shutil.rmtree(build, ignore_errors=True)
+    return ko, None
 
 
 def module_index(modroot):
@@ -163,7 +234,7 @@ def cpio_newc(entries):
     return bytes(out)
 
 
-def build_initramfs(path, busybox, guest, modules, index, script):
+def build_initramfs(path, busybox, guest, modules, index, script, gpiotest=None):
     ents = [("dev", stat.S_IFDIR | 0o755, None, 0, 0),
             ("dev/console", stat.S_IFCHR | 0o600, None, 5, 1),
             ("bin", stat.S_IFDIR | 0o755, None, 0, 0),
@@ -174,6 +245,9 @@ def build_initramfs(path, busybox, guest, modules, index, script):
         ents.append(("bin/busybox", stat.S_IFREG | 0o755, f.read(), 0, 0))
     with open(guest, "rb") as f:
         ents.append(("fbtest", stat.S_IFREG | 0o755, f.read(), 0, 0))
+    if gpiotest:
+        with open(gpiotest, "rb") as f:
+            ents.append(("gpiotest", stat.S_IFREG | 0o755, f.read(), 0, 0))
     for m in modules:
         with open(index[m], "rb") as f:
             ents.append(("mod/%s.ko" % m, stat.S_IFREG | 0o644, f.read(), 0, 0))
@@ -452,7 +526,22 @@ VFB_CASES = [
 ]
 
 
-def guest_script(modules, vfb, fbdev_cases):
+GPIO_SETUP = """G=/sys/kernel/config/gpio-sim/stp
+mount -t configfs none /sys/kernel/config
+mkdir $G $G/bank0
+echo 8 > $G/bank0/num_lines
+echo stp-panel > $G/bank0/label
+i=0
+for n in RST DC BUSY EN BL VCOM; do
+  mkdir $G/bank0/line$i; echo $n > $G/bank0/line$i/name; i=$((i+1))
+done
+echo 1 > $G/live
+C=$(cat $G/bank0/chip_name)
+""" + wait_dev("/dev/$C") + """/gpiotest /sys/devices/platform/$(cat $G/dev_name)/$C $C
+"""
+
+
+def guest_script(modules, vfb, fbdev_cases, gpio=False):
     s = INIT_HEAD
     for m in modules:
         s += "insmod /mod/%s.ko%s\n" % (m, " vfb_enable=1" if m == "vfb" else "")
@@ -466,6 +555,8 @@ def guest_script(modules, vfb, fbdev_cases):
             s += "/fbtest draw /dev/fb1 %d %d\n" % VFB_PORT
             s += "/fbtest dump /dev/fb1\n"
         s += "/fbtest console /dev/fb1\n"
+    if gpio:
+        s += GPIO_SETUP
     s += "/fbtest mode /dev/fb0\n"
     s += "/fbtest draw /dev/fb0 0 0 hold &\n"
     s += "sleep 60\npoweroff -f\n"
@@ -504,10 +595,31 @@ def check_console(out):
     return ok
 
 
-def boot(args, name, vga, modules, vfb, kernel, index, work, append=""):
+GPIO_CHECKS = ["open", "initial", "reset", "dc", "enable-backlight", "busy-idle",
+               "busy-release", "busy-timeout", "vcom-toggle", "vcom-20hz", "busy-active-low",
+               "missing-line", "bad-offset"]
+
+
+def check_gpio(out):
+    ok = True
+    for c in GPIO_CHECKS:
+        m = re.search(r"^STP-GPIO %s (ok|FAIL) (.*)$" % re.escape(c), out, re.M)
+        if not m:
+            log("gpio %s: no result" % c)
+            ok = False
+        else:
+            log("gpio %s: %s %s" % (c, m.group(1), m.group(2)))
+            ok &= m.group(1) == "ok"
+    if not re.search(r"^STP-GPIO-DONE 0 failures$", out, re.M):
+        ok = False
+    return ok
+
+
+def boot(args, name, vga, modules, vfb, kernel, index, work, append="", gpio=False):
     initrd = os.path.join(work, name + ".cpio")
     build_initramfs(initrd, args.busybox, args.guest, modules, index,
-                    guest_script(modules, vfb, VFB_CASES if vfb else []))
+                    guest_script(modules, vfb, VFB_CASES if vfb else [], gpio),
+                    args.gpiotest if gpio else None)
     log("%s: booting (-vga %s, modules %s)" % (name, vga, " ".join(modules)))
     g = Guest(args.qemu, kernel, initrd, vga, work, name, append)
     ok = True
@@ -542,6 +654,8 @@ def boot(args, name, vga, modules, vfb, kernel, index, work, append=""):
                 ok &= compare_dump("%s (%s)" % (cname, " ".join(
                     "%s=%s" % (k, mode[k]) for k in ("bpp", "visual", "line"))), mode, exp, data)
             ok &= check_console(out)
+        if gpio:
+            ok &= check_gpio(out)
         mm = re.search(r"^(STP-MODE /dev/fb0 .*)$", out, re.M)
         mode = parse_mode(mm.group(1))
         exp = Expected(args.fbtest, work, mode["xres"], mode["yres"], mode["bpp"] == 1)
@@ -577,6 +691,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--fbtest", required=True)
     ap.add_argument("--guest", required=True)
+    ap.add_argument("--gpiotest")
     ap.add_argument("--cache", required=True)
     ap.add_argument("--work", required=True)
     ap.add_argument("--qemu", default=shutil.which("qemu-system-x86_64"))
@@ -591,13 +706,25 @@ def main():
         if b"/lib64/ld-linux" in f.read(4096):
             skip("%s is dynamically linked (Debian: busybox-static)" % args.busybox)
     os.makedirs(args.work, exist_ok=True)
-    kernel, modroot = fetch_kernel(args.cache)
-    index = module_index(modroot)
-    log("kernel %s" % kernel)
+    info = fetch_kernel(args.cache)
+    kernel, index = info["vmlinuz"], module_index(info["modroot"])
+    log("kernel %s (%s %s)" % (kernel, info["package"], info["version"]))
     ok = True
+    gpio = False
+    if args.gpiotest and args.only in (None, "std"):
+        ko, why = build_gpio_sim(args.cache, info)
+        if ko:
+            index["gpio_sim"] = ko
+            gpio = True
+        elif os.environ.get("STP_LINUX_TEST_REQUIRED") == "1":
+            log("FAIL (required): gpio-sim: %s" % why)
+            ok = False
+        else:
+            log("gpio-sim not available, GPIO checks skipped: %s" % why)
     if args.only in (None, "std"):
-        ok &= boot(args, "std", "std", module_order(index, ["bochs", "vfb"]), True,
-                   kernel, index, args.work)
+        wanted = ["bochs", "vfb"] + (["configfs", "gpio_sim"] if gpio else [])
+        ok &= boot(args, "std", "std", module_order(index, wanted), True,
+                   kernel, index, args.work, gpio=gpio)
     if args.only in (None, "cirrus"):
         ok &= boot(args, "cirrus", "cirrus", module_order(index, ["cirrus"]), False,
                    kernel, index, args.work)

@@ -45,6 +45,7 @@ typedef struct stiff_case {
     int n;
     ref_vec3 v[STIFF_MAX_VERTS];
     int expect_status; /* the core's status (POLYGON); STP_OK etc. */
+    int or_degenerate; /* STP_ERR_DEGENERATE is accepted too (no shade then) */
     /* answer */
     double expect; /* >= 0: the documented answer; < 0: the reference */
     double tol;    /* allowed |core - answer| */

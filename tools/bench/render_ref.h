@@ -17,8 +17,9 @@
  *   - lighting copied at ref_set_lighting (COPY-LIGHT): positions to view
  *     coordinates with the view then current;
  *   - polygon: Newell normal (Algorithm 10.4) of the view-space vertices,
- *     negated for the left-handed system; zero normal = degenerate (nothing
- *     drawn); shaded at the vertex average; E = unit(-centre) (perspective)
+ *     negated for the left-handed system; a zero normal (below 1e-10 of the
+ *     polygon's extent squared: collinear vertices keep only rounding noise
+ *     of area) = degenerate, nothing drawn; shaded at the vertex average; E = unit(-centre) (perspective)
  *     or (0, 0, -1) (parallel); N.E <= 0 flips N (two-sided lighting) or,
  *     with back-face removal, drops the polygon; INTENSITY index of the shade;
  *   - clipping to the hither plane z >= hither (the window is handled by

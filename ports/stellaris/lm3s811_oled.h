@@ -1,0 +1,12 @@
+/* The lm3s811evb's SSD0303 OLED bus (I2C0, address 0x3D). */
+#ifndef STIPPLE_PORTS_LM3S811_OLED_H
+#define STIPPLE_PORTS_LM3S811_OLED_H
+
+#include "stp_panel.h"
+
+/* I2C0 set-up; call once before using the bus. */
+void stp_lm3s811_oled_setup(void);
+
+extern const stp_panel_bus stp_lm3s811_oled_bus;
+
+#endif

@@ -1,0 +1,126 @@
+#!/usr/bin/env bash
+# Error against run time of every numeric configuration of the core.
+#
+# Runs each bench_<cfg> executable (built by tools/bench/CMakeLists.txt, one
+# per configuration), collects their CSV rows into OUT/bench.csv, plots error
+# against run time into OUT/bench.png (gnuplot, log scales) and prints the
+# table.  Each run's full report goes to OUT/bench-<cfg>.txt.
+#
+# usage: run_bench.sh [--bin-dir DIR] [--out-dir DIR] [--scenes DIR] [--quick] [CFG...]
+#   --bin-dir DIR  where the bench_<cfg> executables are (default: the
+#                  tools/bench folder of ./build)
+#   --out-dir DIR  where bench.csv, bench.png and the reports go (default .)
+#   --scenes DIR   the shared NFF scenes (default: $STP_SCENES_DIR, else the
+#                  executables' built-in path)
+#   --quick        short runs (smoke test; the numbers are rough)
+#   CFG...         configurations to run (default: every bench_* in DIR)
+set -euo pipefail
+
+bin_dir=build/tools/bench
+out_dir=.
+scenes=${STP_SCENES_DIR:-}
+quick=()
+configs=()
+while [ $# -gt 0 ]; do
+    case $1 in
+    --bin-dir) bin_dir=$2; shift 2 ;;
+    --out-dir) out_dir=$2; shift 2 ;;
+    --scenes) scenes=$2; shift 2 ;;
+    --quick) quick=(--quick); shift ;;
+    -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "run_bench.sh: unknown option $1" >&2; exit 2 ;;
+    *) configs+=("$1"); shift ;;
+    esac
+done
+
+if [ ${#configs[@]} -eq 0 ]; then
+    for exe in "$bin_dir"/bench_*; do
+        [ -x "$exe" ] && configs+=("${exe##*/bench_}")
+    done
+fi
+if [ ${#configs[@]} -eq 0 ]; then
+    echo "run_bench.sh: no bench_* executables in $bin_dir (build them first:" \
+         "cmake --build build --target bench)" >&2
+    exit 1
+fi
+
+mkdir -p "$out_dir"
+csv=$out_dir/bench.csv
+tmp=$csv.tmp
+rm -f "$tmp"
+scene_args=()
+[ -n "$scenes" ] && scene_args=(--scenes "$scenes")
+status=0
+for cfg in "${configs[@]}"; do
+    echo "== running bench_$cfg" >&2
+    if ! "$bin_dir/bench_$cfg" --csv "$tmp" "${scene_args[@]}" "${quick[@]}" \
+            > "$out_dir/bench-$cfg.txt"; then
+        echo "run_bench.sh: bench_$cfg reported a failure (see $out_dir/bench-$cfg.txt)" >&2
+        status=1
+    fi
+done
+[ -s "$tmp" ] || { echo "run_bench.sh: no results" >&2; exit 1; }
+mv "$tmp" "$csv"
+
+# The table: errors, then run time.
+awk -F, '
+NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+function v(name) { return $(col[name]) }
+{
+    rows[NR] = sprintf("%-13s %9.2e %9.2e | %8.2e %8.2e %4d | %8.2e %8.2e %6.2f | %7.3f %8.2e | %7.0f %7.0f %7.0f %7.0f | %7.0f %9.0f %7.4f",
+        v("config"), v("rand_max"), v("rand_mean"), v("stiff_max"), v("stiff_mean"),
+        v("stiff_over_half_step"), v("scene_max"), v("scene_mean"), v("style_diff_pct"),
+        v("img_diff_pct"), v("img_blur_mad"), v("ns_per_shade"), v("us_frame_128x64"),
+        v("us_frame_400x240"), v("us_frame_640x480"), v("fill_mpx_s"), v("memset_mpx_s"),
+        v("fill_memset_ratio"))
+}
+END {
+    print ""
+    printf "%-13s %-19s | %-22s | %-24s | %-16s | %-31s | %s\n", "", "random shades", "stiff suite",
+        "scene polygons", "pictures", "run time", "HALFTONE-FILLIN"
+    printf "%-13s %9s %9s | %8s %8s %4s | %8s %8s %6s | %7s %8s | %7s %7s %7s %7s | %7s %9s %7s\n",
+        "config", "max", "mean", "max", "mean", ">1/30", "max", "mean", "style%", "diff%", "blurMAD",
+        "ns/shd", "us@128", "us@400", "us@640", "Mpx/s", "memset", "ratio"
+    for (i = 2; i <= NR; i++) print rows[i]
+    print ""
+    print "errors: absolute shade error against the double reference (1/30 = half an INTENSITY step"
+    print "at 16 levels); pictures: MONO1 renders of the shared scenes and the torus at 128x64 and"
+    print "400x240, differing pixels and the mean absolute difference after a 3x3 box blur;"
+    print "us@WIDTH: torus frame (1000 triangles entered and rendered); Mpx/s: HALFTONE-FILLIN vs memset."
+}' "$csv"
+
+if command -v gnuplot > /dev/null; then
+    term=png
+    gnuplot -e "set terminal" 2>&1 | grep -q pngcairo && term=pngcairo
+    gnuplot <<EOF || { echo "run_bench.sh: gnuplot failed; no plot" >&2; status=1; }
+set terminal $term size 1200,520 font ",10"
+set output "$out_dir/bench.png"
+set datafile separator ","
+set logscale xy
+set grid
+set key top right
+set multiplot layout 1,2 title "stipple: error against run time per numeric configuration"
+set title "shading"
+set xlabel "ns per shade (stp\\\\_shade\\\\_point)"
+set ylabel "absolute shade error vs double reference"
+set yrange [1e-7:1]
+plot "$csv" using "ns_per_shade":"scene_max" with points pt 7 ps 1.2 title "scene polygons, max", \
+     "$csv" using "ns_per_shade":"scene_mean" with points pt 5 ps 1.2 title "scene polygons, mean", \
+     "$csv" using "ns_per_shade":"rand_mean" with points pt 9 ps 1.2 title "random geometry, mean", \
+     "$csv" using "ns_per_shade":"scene_max":"config" with labels offset 0,1 font ",8" notitle, \
+     1.0/30 with lines dt 2 lc rgb "gray40" title "half an INTENSITY step (16 levels)"
+set title "pictures"
+set xlabel "us per torus frame at 400x240 (1000 triangles)"
+set ylabel "share of pixels / blurred mean abs difference"
+set yrange [1e-6:1]
+plot "$csv" using "us_frame_400x240":(column("img_diff_pct")/100) with points pt 7 ps 1.2 title "differing pixels", \
+     "$csv" using "us_frame_400x240":"img_blur_mad" with points pt 5 ps 1.2 title "3x3-blurred mean abs difference", \
+     "$csv" using "us_frame_400x240":(column("img_diff_pct")/100):"config" with labels offset 0,1 font ",8" notitle
+unset multiplot
+EOF
+    [ -s "$out_dir/bench.png" ] && echo "wrote $csv and $out_dir/bench.png" >&2
+else
+    echo "run_bench.sh: gnuplot not found (Debian: apt-get install gnuplot-nox); no plot" >&2
+    echo "wrote $csv" >&2
+fi
+exit $status
