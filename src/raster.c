@@ -50,6 +50,15 @@ static uint8_t style_code(const frame *fr, int index)
     return (uint8_t)index;
 }
 
+/* What a STP_OP_SHADE paints with: its colour on an RGB888 device when it
+ * has one, else its style index. */
+static int paint_of(const frame *fr, const stp_instr *in)
+{
+    if (fr->port->format == STP_PIXEL_RGB888 && (in->z & STP_COLOUR_FLAG))
+        return in->z;
+    return in->x;
+}
+
 /* Paint pixels x1..x2 of band row `row` (absolute y) in a style. */
 static void put_span(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style)
 {
@@ -66,9 +75,20 @@ static void put_span(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int 
         break;
     }
     case STP_PIXEL_RGB888: {
-        uint8_t v = level_of(fr, style);
-        for (x = x1; x <= x2; x++)
-            row[3 * x] = row[3 * x + 1] = row[3 * x + 2] = v;
+        uint8_t c[3];
+        if (style & STP_COLOUR_FLAG) {
+            /* a colour: each channel's style index through the same levels */
+            c[0] = level_of(fr, ((style >> 16) & 0xFF) + 1);
+            c[1] = level_of(fr, ((style >> 8) & 0xFF) + 1);
+            c[2] = level_of(fr, (style & 0xFF) + 1);
+        } else {
+            c[0] = c[1] = c[2] = level_of(fr, style);
+        }
+        for (x = x1; x <= x2; x++) {
+            row[3 * x] = c[0];
+            row[3 * x + 1] = c[1];
+            row[3 * x + 2] = c[2];
+        }
         break;
     }
     default: {
@@ -359,7 +379,7 @@ static void replay(const frame *fr, int skip_polygons, int use_z)
                     draw_polygon(fr, k, style, use_z);
                 k += (uint32_t)in->op - 1;
             } else if (in->op == STP_OP_SHADE) {
-                style = in->x;
+                style = paint_of(fr, in);
             } else if (in->op == STP_OP_LINE_STYLE) {
                 line_style = in->x;
             } else if (in->op == STP_OP_MOVE) {
@@ -431,7 +451,7 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
         for (k = seg->start; k < seg->end; k++) {
             const stp_instr *in = &r->df[k];
             if (in->op == STP_OP_SHADE)
-                style = in->x;
+                style = paint_of(fr, in);
             if (in->op >= 3) {
                 int32_t far_key = INT32_MAX;
                 for (i = 0; i < in->op; i++) {
@@ -446,7 +466,7 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
                 if (sort) {
                     sort[count].index = k;
                     sort[count].key = far_key;
-                    sort[count].style = (uint16_t)style;
+                    sort[count].style = style;
                 }
                 count++;
                 k += (uint32_t)in->op - 1;
@@ -502,6 +522,13 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
         fr.cell = &fr.default_cell;
     }
     background_style = stp_intensity_index(output->background, r->levels);
+    if (port->format == STP_PIXEL_RGB888 && output->background_colour) {
+        int c;
+        background_style = STP_COLOUR_FLAG;
+        for (c = 0; c < 3; c++)
+            background_style |= (stp_intensity_index(output->background_colour[c], r->levels) - 1)
+                                << (16 - 8 * c);
+    }
     /* port.h: STYLE8 without a table holds 0 where nothing is drawn and the
      * background is 0 (style_code passes 0 through) */
     if (port->format == STP_PIXEL_STYLE8 && output->styles == 0 && output->background <= 0)

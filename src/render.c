@@ -42,6 +42,8 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     r->backface_removal = 0;
     r->current_style = -1;
     r->current_line_style = -1;
+    r->colour = 0;
+    r->current_colour = 0;
     r->last_shade = -1;
     r->pen_valid = 0;
     view.from.x = view.from.y = 0;
@@ -164,6 +166,18 @@ int stp_set_levels(stp_renderer *r, int levels)
         r->fill_style = levels;
     r->current_style = -1;
     return STP_OK;
+}
+
+int stp_set_colour(stp_renderer *r, int on)
+{
+    if (r == 0)
+        return STP_ERR_ARG;
+#if STP_WITH_COLOUR
+    r->colour = on != 0;
+    return STP_OK;
+#else
+    return on ? STP_ERR_UNSUPPORTED : STP_OK;
+#endif
 }
 
 void stp_set_backface_removal(stp_renderer *r, int on)
@@ -594,6 +608,8 @@ static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n, int s
     stp_vec3 normal, centre, eye_dir, *clipped;
     stp_fix n_dot_e, *clipped_shades;
     int i, m, style, status = check_open(r);
+    int32_t colour;
+    uint32_t attribute;
     if (status != STP_OK)
         return status;
     if (vertices == 0 || n < 3)
@@ -627,10 +643,23 @@ static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n, int s
         normal.y = -normal.y;
         normal.z = -normal.z;
     }
+    colour = 0;
     if (r->shading) {
         stp_vec3 origin = {0, 0, 0};
-        r->last_shade = stp_shade_point(&r->segment_lighting, &r->material, normal, centre,
-                                        origin, r->projection == STP_PARALLEL, eye_dir);
+#if STP_WITH_COLOUR
+        if (r->colour) {
+            stp_fix rgb[3];
+            int c;
+            stp_shade_point_colour(&r->segment_lighting, &r->material, normal, centre, origin,
+                                   r->projection == STP_PARALLEL, eye_dir, rgb);
+            r->last_shade = stp_shade_luminance(rgb);
+            colour = STP_COLOUR_FLAG;
+            for (c = 0; c < 3; c++)
+                colour |= (int32_t)(stp_intensity_index(rgb[c], r->levels) - 1) << (16 - 8 * c);
+        } else
+#endif
+            r->last_shade = stp_shade_point(&r->segment_lighting, &r->material, normal, centre,
+                                            origin, r->projection == STP_PARALLEL, eye_dir);
         style = stp_intensity_index(r->last_shade, r->levels);
     } else {
         style = r->fill_style;
@@ -676,11 +705,13 @@ static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n, int s
     m = clip_polygon(r, n, smooth, &clipped, &clipped_shades);
     if (m < 3)
         return STP_OK; /* nothing of it is in view */
-    if (r->capacity - r->used < (uint32_t)m + (style != r->current_style ? 1u : 0u))
+    attribute = style != r->current_style || colour != r->current_colour ? 1u : 0u;
+    if (r->capacity - r->used < (uint32_t)m + attribute)
         return STP_ERR_FULL;
-    if (style != r->current_style) {
-        append(r, STP_OP_SHADE, style, r->last_shade, 0, -1);
+    if (attribute) {
+        append(r, STP_OP_SHADE, style, r->last_shade, colour, -1);
         r->current_style = style;
+        r->current_colour = colour;
     }
     for (i = 0; i < m; i++) {
         stp_instr p;

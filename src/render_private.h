@@ -55,6 +55,8 @@ struct stp_renderer {
     int shading, fill_style, levels, backface_removal;
     int current_style;      /* polygon style last entered in the open segment, -1 none */
     int current_line_style; /* line style likewise */
+    int colour;             /* colour shading on */
+    int32_t current_colour; /* colour last entered with current_style */
     stp_fix last_shade;
 
     int pen_valid;

@@ -17,6 +17,8 @@ void stp_lighting_default(stp_lighting *lighting)
         lighting->lights[i].position.y = 0;
         lighting->lights[i].position.z = ONE;
         lighting->lights[i].power = ONE;
+        lighting->lights[i].colour[0] = lighting->lights[i].colour[1] =
+            lighting->lights[i].colour[2] = ONE;
     }
 }
 
@@ -26,6 +28,7 @@ void stp_material_default(stp_material *material)
     material->refraction = 10 * ONE;
     material->gloss = 10 * ONE;
     material->specular = ONE;
+    material->colour[0] = material->colour[1] = material->colour[2] = ONE;
 }
 
 #if STP_WITH_SPECULAR
@@ -198,6 +201,31 @@ stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *materi
     sum = stp_fix_sat64(sum);
     sum = stp_fix_mul(lighting->brightness, (stp_fix)sum);
     return stp_fix_clamp((stp_fix)sum, 0, ONE);
+}
+
+void stp_shade_point_colour(const stp_lighting *lighting, const stp_material *material,
+                            stp_vec3 normal, stp_vec3 point, stp_vec3 eye, int parallel,
+                            stp_vec3 parallel_dir, stp_fix out[3])
+{
+    /* three passes of the grey equation with the channel's R and P_j: the
+     * directions are recomputed each time, which keeps one code path (and
+     * one set of tests) for grey and colour */
+    stp_lighting lit = *lighting;
+    stp_material mat = *material;
+    int c, j, count = lighting->count < 0 ? 0 : (lighting->count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : lighting->count);
+    for (c = 0; c < 3; c++) {
+        mat.reflectivity = stp_fix_mul(material->reflectivity, material->colour[c]);
+        for (j = 0; j < count; j++)
+            lit.lights[j].power = stp_fix_mul(lighting->lights[j].power, lighting->lights[j].colour[c]);
+        out[c] = stp_shade_point(&lit, &mat, normal, point, eye, parallel, parallel_dir);
+    }
+}
+
+stp_fix stp_shade_luminance(const stp_fix rgb[3])
+{
+    /* weights in Q16 summing to exactly 65536 so white stays 1 */
+    int64_t y = (int64_t)rgb[0] * 19661 + (int64_t)rgb[1] * 38666 + (int64_t)rgb[2] * 7209;
+    return (stp_fix)((y + 32768) >> 16);
 }
 
 static int clamp_levels(int levels)

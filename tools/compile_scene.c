@@ -12,12 +12,9 @@
 
 #include "scene_util.h"
 
-/* ---- the view and lighting stp_tool_render would use ----
- *
- * These repeat render_scene.c's choices (its helpers are static there).  They
- * must stay identical: the QEMU test compares the firmware's picture with
- * `stipple render` pixel for pixel and tests/firmware/test_scene_data.c does
- * the same on the host, so a drift shows up at once. */
+/* The view, lighting and materials come from stp_tool_setup and
+ * stp_tool_material, the same calls stp_tool_render makes, so the firmware's
+ * picture matches `stipple render` (the QEMU test checks it pixel for pixel). */
 
 static stp_vec3 fix3(stp_scene_vec3 v)
 {
@@ -28,95 +25,7 @@ static stp_vec3 fix3(stp_scene_vec3 v)
     return r;
 }
 
-static double dist3(stp_scene_vec3 a, stp_scene_vec3 b)
-{
-    double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
-    return sqrt(dx * dx + dy * dy + dz * dz);
-}
 
-static void material_from_scene(const stp_scene_material *m, stp_material *out)
-{
-    double lum = 0.30 * m->color[0] + 0.59 * m->color[1] + 0.11 * m->color[2];
-    double refl = m->kd * lum;
-    out->reflectivity = stp_tool_fix(refl < 0 ? 0 : (refl > 1 ? 1 : refl));
-    out->refraction = stp_tool_fix(m->ior > 1.0 ? m->ior : 10.0);
-    out->gloss = stp_tool_fix(m->shine > 0 ? 2.0 / m->shine : 10.0);
-    out->specular = stp_tool_fix(m->ks < 0 ? 0 : m->ks);
-}
-
-static int setup_view(const stp_scene *scene, const stp_tool_options *opt, stp_view *view,
-                      stp_lighting *lighting, char *err, size_t errlen)
-{
-    stp_scene_vec3 lo, hi, centre, light_pos[STP_MAX_LIGHTS];
-    double radius;
-    int light_count, j;
-
-    if (stp_scene_bounds(scene, &lo, &hi) != 0) {
-        snprintf(err, errlen, "the scene has no polygons to render");
-        return -1;
-    }
-    centre.x = (lo.x + hi.x) / 2;
-    centre.y = (lo.y + hi.y) / 2;
-    centre.z = (lo.z + hi.z) / 2;
-    radius = dist3(lo, hi) / 2;
-    if (radius <= 0)
-        radius = 1;
-
-    memset(view, 0, sizeof *view);
-    if (scene->has_view) {
-        view->from = fix3(scene->from);
-        view->at = fix3(scene->at);
-        view->up = fix3(scene->up);
-        view->fov_degrees = stp_tool_fix(opt->fov > 0 ? opt->fov : scene->angle);
-        view->hither = stp_tool_fix(scene->hither > 0 ? scene->hither : 1e-3);
-    } else {
-        double fov = opt->fov > 0 ? opt->fov : 45.0;
-        double d = radius / sin(fov * 0.5 * 3.14159265358979323846 / 180.0) * 1.05;
-        stp_scene_vec3 from;
-        from.x = centre.x + d * 0.48;
-        from.y = centre.y + d * 0.40;
-        from.z = centre.z + d * 0.78;
-        view->from = fix3(from);
-        view->at = fix3(centre);
-        view->up.x = view->up.z = 0;
-        view->up.y = STP_FIX_ONE;
-        view->fov_degrees = stp_tool_fix(fov);
-        view->hither = stp_tool_fix(d * 1e-3);
-    }
-    if (view->hither <= 0)
-        view->hither = 1;
-    view->projection = opt->perspective ? STP_PERSPECTIVE : STP_PARALLEL;
-    view->window_half = stp_tool_fix(radius);
-
-    if (opt->light_count > 0) {
-        light_count = opt->light_count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : opt->light_count;
-        for (j = 0; j < light_count; j++)
-            light_pos[j] = opt->lights[j];
-    } else if (scene->light_count > 0) {
-        light_count = (int)(scene->light_count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : scene->light_count);
-        for (j = 0; j < light_count; j++)
-            light_pos[j] = scene->lights[j].position;
-    } else {
-        stp_scene_vec3 eye = scene->has_view ? scene->from : centre;
-        light_pos[0].x = eye.x - radius;
-        light_pos[0].y = eye.y + radius * 2;
-        light_pos[0].z = eye.z + radius * 3;
-        light_count = 1;
-    }
-    memset(lighting, 0, sizeof *lighting);
-    lighting->brightness = stp_tool_fix(opt->brightness);
-    lighting->background = stp_tool_fix(opt->background);
-    lighting->attenuation_c = stp_tool_fix(opt->attenuation_c);
-    lighting->count = light_count;
-    for (j = 0; j < light_count; j++) {
-        double power = 1.0 - opt->background;
-        if (opt->auto_power)
-            power *= (opt->attenuation_c + dist3(light_pos[j], centre)) / sqrt((double)light_count);
-        lighting->lights[j].position = fix3(light_pos[j]);
-        lighting->lights[j].power = stp_tool_fix(power);
-    }
-    return 0;
-}
 
 /* ---- sizing: run the scene through the host core once ---- */
 
@@ -210,7 +119,7 @@ static int make_plan(const stp_scene *scene, const stp_tool_options *opt, plan *
         snprintf(err, errlen, "bad size %dx%d", opt->width, opt->height);
         return -1;
     }
-    if (setup_view(scene, opt, &p->view, &p->lighting, err, errlen) != 0)
+    if (stp_tool_setup(scene, opt, &p->view, &p->lighting, err, errlen) != 0)
         return -1;
     if (measure(scene, opt, &p->stats, err, errlen) != 0)
         return -1;
@@ -232,7 +141,7 @@ static int make_plan(const stp_scene *scene, const stp_tool_options *opt, plan *
             stp_material *m = &p->materials[p->material_count];
             stp_material_default(m);
             if (slot != &p->default_material)
-                material_from_scene(&scene->materials[poly->material], m);
+                stp_tool_material(&scene->materials[poly->material], opt->colour, m);
             if (m->specular != 0)
                 p->specular = 1;
             *slot = (int)p->material_count++;
@@ -347,13 +256,14 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
     }
     out(w, "};\n\n");
 
-    out(w, "/* reflectivity, refraction, gloss, specular weight */\n"
+    out(w, "/* reflectivity, refraction, gloss, specular weight, colour */\n"
            "static const stp_material materials[%lu] = {\n",
         (unsigned long)p->material_count);
     for (j = 0; j < p->material_count; j++) {
         const stp_material *m = &p->materials[j];
-        out(w, "    {%ld, %ld, %ld, %ld},\n", (long)m->reflectivity, (long)m->refraction,
-            (long)m->gloss, (long)m->specular);
+        out(w, "    {%ld, %ld, %ld, %ld, {%ld, %ld, %ld}},\n", (long)m->reflectivity,
+            (long)m->refraction, (long)m->gloss, (long)m->specular, (long)m->colour[0],
+            (long)m->colour[1], (long)m->colour[2]);
     }
     out(w, "};\n\n");
 
@@ -392,14 +302,16 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
     out(w, ",\n        %ld, %ld, %ld, %s},\n", (long)p->view.fov_degrees,
         (long)p->view.window_half, (long)p->view.hither,
         p->view.projection == STP_PARALLEL ? "STP_PARALLEL" : "STP_PERSPECTIVE");
-    out(w, "    { /* lighting: brightness, background, C, count, {position, power} */\n"
+    out(w, "    { /* lighting: brightness, background, C, count, {position, power, colour} */\n"
            "        %ld, %ld, %ld, %d, {",
         (long)p->lighting.brightness, (long)p->lighting.background,
         (long)p->lighting.attenuation_c, p->lighting.count);
     for (k = 0; k < p->lighting.count; k++) {
         out(w, "%s{", k ? ", " : "");
         out_vec(w, p->lighting.lights[k].position);
-        out(w, ", %ld}", (long)p->lighting.lights[k].power);
+        out(w, ", %ld, {%ld, %ld, %ld}}", (long)p->lighting.lights[k].power,
+            (long)p->lighting.lights[k].colour[0], (long)p->lighting.lights[k].colour[1],
+            (long)p->lighting.lights[k].colour[2]);
     }
     out(w, "}},\n");
     out(w, "    materials, %lu,\n    vertices, %lu,\n    polygons, %lu,\n",

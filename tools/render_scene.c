@@ -69,10 +69,20 @@ int stp_tool_cell(const stp_tool_options *opt, stp_cell *cell)
  * k = 2/Shine (Phong cos^s and the facet distribution agree near the
  * highlight when k = 2/s), the seed's 10 when Shine <= 0;
  * specular weight = Ks. */
-static void material_from_scene(const stp_scene_material *m, stp_material *out)
+static double clamp01(double v)
+{
+    return v < 0 ? 0 : (v > 1 ? 1 : v);
+}
+
+void stp_tool_material(const stp_scene_material *m, int colour, stp_material *out)
 {
     double lum = 0.30 * m->color[0] + 0.59 * m->color[1] + 0.11 * m->color[2];
-    double refl = m->kd * lum;
+    /* grey: the colour's luminance goes into R; colour: R = Kd and the
+     * colour itself splits it over the channels */
+    double refl = colour ? m->kd : m->kd * lum;
+    int c;
+    for (c = 0; c < 3; c++)
+        out->colour[c] = stp_tool_fix(colour ? clamp01(m->color[c]) : 1.0);
     out->reflectivity = stp_tool_fix(refl < 0 ? 0 : (refl > 1 ? 1 : refl));
     out->refraction = stp_tool_fix(m->ior > 1.0 ? m->ior : 10.0);
     out->gloss = stp_tool_fix(m->shine > 0 ? 2.0 / m->shine : 10.0);
@@ -156,32 +166,16 @@ static double dist3(stp_scene_vec3 a, stp_scene_vec3 b)
     return sqrt(dx * dx + dy * dy + dz * dz);
 }
 
-int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_port *port,
-                    stp_tool_stats *stats, char *err, size_t err_size)
+int stp_tool_setup(const stp_scene *scene, const stp_tool_options *opt, stp_view *view_out,
+                   stp_lighting *lighting_out, char *err, size_t err_size)
 {
     stp_scene_vec3 lo, hi, centre;
     double radius;
     stp_view view;
     stp_lighting lighting;
-    stp_renderer *r = 0;
-    void *rmem = 0;
-    stp_instr *df = 0;
-    uint8_t *band = 0, *gamma = 0;
-    uint16_t *zbuf = 0;
-    stp_sort_entry *sort = 0;
-    stp_cell cell;
-    stp_output out;
-    stp_frame_memory mem;
-    size_t capacity = 16, i;
-    int status, last_material = -1, band_rows, j, result = -1;
-    stp_tool_stats local;
     stp_scene_vec3 light_pos[STP_MAX_LIGHTS];
-    stp_scene_vec3 *normals = 0;
-    int light_count;
+    int light_count, j, ch;
 
-    if (!stats)
-        stats = &local;
-    memset(stats, 0, sizeof *stats);
     if (stp_scene_bounds(scene, &lo, &hi) != 0) {
         snprintf(err, err_size, "the scene has no polygons to render");
         return -1;
@@ -252,7 +246,43 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
             power *= (opt->attenuation_c + dist3(light_pos[j], centre)) / sqrt((double)light_count);
         lighting.lights[j].position = fix3(light_pos[j]);
         lighting.lights[j].power = stp_tool_fix(power);
+        for (ch = 0; ch < 3; ch++)
+            lighting.lights[j].colour[ch] =
+                stp_tool_fix(opt->colour && opt->light_count <= 0 && (size_t)j < scene->light_count
+                                 ? clamp01(scene->lights[j].color[ch])
+                                 : 1.0);
     }
+
+    *view_out = view;
+    *lighting_out = lighting;
+    return 0;
+}
+
+int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_port *port,
+                    stp_tool_stats *stats, char *err, size_t err_size)
+{
+    stp_view view;
+    stp_lighting lighting;
+    stp_renderer *r = 0;
+    void *rmem = 0;
+    stp_instr *df = 0;
+    uint8_t *band = 0, *gamma = 0;
+    uint16_t *zbuf = 0;
+    stp_sort_entry *sort = 0;
+    stp_cell cell;
+    stp_output out;
+    stp_frame_memory mem;
+    size_t capacity = 16, i;
+    int status, last_material = -1, band_rows, ch, result = -1;
+    stp_fix background_rgb[3];
+    stp_tool_stats local;
+    stp_scene_vec3 *normals = 0;
+
+    if (!stats)
+        stats = &local;
+    memset(stats, 0, sizeof *stats);
+    if (stp_tool_setup(scene, opt, &view, &lighting, err, err_size) != 0)
+        return -1;
 
     for (i = 0; i < scene->polygon_count; i++)
         capacity += (size_t)scene->polygons[i].count + 6;
@@ -278,6 +308,10 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
         goto done;
     }
     stp_set_shading(r, opt->shading);
+    if (opt->colour && (status = stp_set_colour(r, 1)) != STP_OK) {
+        snprintf(err, err_size, "colour: %s", stp_status_text(status));
+        goto done;
+    }
     stp_set_backface_removal(r, opt->backface_removal);
     if ((status = stp_segment_create(r, 1)) != STP_OK) {
         snprintf(err, err_size, "segment: %s", stp_status_text(status));
@@ -298,7 +332,7 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
             stp_material m;
             stp_material_default(&m);
             if (p->material >= 0 && (size_t)p->material < scene->material_count)
-                material_from_scene(&scene->materials[p->material], &m);
+                stp_tool_material(&scene->materials[p->material], opt->colour, &m);
             stp_set_object_shade(r, &m);
             /* with shading off the material's reflectivity picks the style */
             stp_set_fill_style(r, stp_intensity_index(m.reflectivity, opt->levels));
@@ -383,6 +417,11 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
         const double *b = scene->background;
         double lum = 0.30 * b[0] + 0.59 * b[1] + 0.11 * b[2];
         out.background = stp_tool_fix(lum < 0 ? 0 : (lum > 1 ? 1 : lum));
+        if (opt->colour) {
+            for (ch = 0; ch < 3; ch++)
+                background_rgb[ch] = stp_tool_fix(clamp01(b[ch]));
+            out.background_colour = background_rgb;
+        }
     }
     stats->frame_bytes = stp_renderer_size() + sizeof *df * stats->display_entries + mem.band_size +
                          sizeof(uint16_t) * mem.zbuf_count + sizeof(stp_sort_entry) * mem.sort_count;

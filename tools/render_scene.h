@@ -29,6 +29,8 @@ typedef struct stp_tool_options {
     stp_hidden hidden;       /* (Z buffer) */
     int backface_removal;    /* (0) */
     int shading;             /* 1: MAKE-SHADE per polygon (1) */
+    int colour;              /* 1: shade per channel (10.45) with NFF colours;
+                                RGB888 ports show colour (0) */
     int smooth;              /* 1: Gouraud from vertex normals: the file's
                                 (NFF pp, OBJ vn), else averaged face normals (0) */
     int band_rows;           /* 0: whole frame */
@@ -58,6 +60,17 @@ typedef struct stp_tool_stats {
  * Returns 0, or -1 with a message in err. */
 int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_port *port,
                     stp_tool_stats *stats, char *err, size_t err_size);
+
+/* The view and lighting stp_tool_render uses for a scene: the scene's view
+ * (else one that frames its bounds at 45 degrees), the options' lights, else
+ * the scene's, else one above and left of the eye, with powers and colours
+ * as the README's "How NFF materials and lights map" says.  Returns 0, or -1
+ * with a message (an empty scene). */
+int stp_tool_setup(const stp_scene *scene, const stp_tool_options *opt, stp_view *view,
+                   stp_lighting *lighting, char *err, size_t err_size);
+
+/* The seed's material parameters for an NFF material (README). */
+void stp_tool_material(const stp_scene_material *m, int colour, stp_material *out);
 
 /* Double to stp_fix, saturating. */
 stp_fix stp_tool_fix(double v);

@@ -70,6 +70,12 @@
 #define STP_WITH_GOURAUD 1
 #endif
 
+/* 1: colour shading (10.45) is compiled in: stp_set_colour shades each
+ * polygon per channel for RGB888 output. */
+#ifndef STP_WITH_COLOUR
+#define STP_WITH_COLOUR 1
+#endif
+
 /* 1: line drawing (display-file opcodes move/line) is compiled in. */
 #ifndef STP_WITH_LINES
 #define STP_WITH_LINES 1

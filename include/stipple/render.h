@@ -60,9 +60,14 @@ enum {
     /* op >= 3: an op-sided polygon; this entry holds vertex 0 and the next
      * op-1 entries (opcode STP_OP_LINE) hold vertices 1..op-1. */
     STP_OP_SHADE = 0,       /* fill style for following polygons: x = style
-                               index 1..levels, y = the shade (stp_fix) */
+                               index 1..levels, y = the shade (stp_fix),
+                               z = colour: 0 for grey, else STP_COLOUR_FLAG |
+                               (r-1) << 16 | (g-1) << 8 | (b-1), the style
+                               index of each channel */
     STP_OP_LINE_STYLE = -1  /* style for following lines: x = style index */
 };
+
+#define STP_COLOUR_FLAG 0x01000000
 
 /* One display-file instruction: an opcode and a point.  x, y: device Q27.4;
  * z: depth key, larger = nearer (perspective: 2^30 * hither / z_view, in
@@ -152,6 +157,13 @@ void stp_set_shading(stp_renderer *r, int on);
 /* Fill style used while shading is off, as an INTENSITY index 1..levels. */
 void stp_set_fill_style(stp_renderer *r, int index);
 
+/* Colour shading (10.45) on (1) or off (0, default): polygons entered while
+ * it is on are shaded per channel with the material's and the lights'
+ * colours; RGB888 output shows the colour, the other formats its luminance
+ * (stp_shade_luminance).  Smooth polygons stay grey.  Returns
+ * STP_ERR_UNSUPPORTED without STP_WITH_COLOUR. */
+int stp_set_colour(stp_renderer *r, int on);
+
 /* Number of INTENSITY levels, 2..256 (default 16). */
 int stp_set_levels(stp_renderer *r, int levels);
 
@@ -222,6 +234,7 @@ typedef struct stp_output {
                                         NULL: linear (index-1)*255/(levels-1) */
     const stp_style_table *styles;   /* STYLE8: codes; NULL: the index itself */
     stp_fix background;              /* shade of the empty frame, [0, 1] */
+    const stp_fix *background_colour; /* RGB888: its colour (3 shades), or NULL */
 } stp_output;
 
 /* Memory the caller lends to one stp_render call.
@@ -232,7 +245,7 @@ typedef struct stp_output {
 typedef struct stp_sort_entry {
     uint32_t index;  /* display-file entry of the polygon */
     int32_t key;     /* depth key of its farthest vertex */
-    uint16_t style;  /* its fill style */
+    int32_t style;   /* its fill style (or colour, for RGB888 output) */
 } stp_sort_entry;
 typedef struct stp_frame_memory {
     uint8_t *band;

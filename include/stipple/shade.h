@@ -13,11 +13,14 @@
 #include <stdint.h>
 #include "stipple/fix.h"
 
-/* One point light: position (view or world units, see where it is used) and
- * power P_j of (10.16).  The seed's single light has P = 1 - background. */
+/* One point light: position (view or world units, see where it is used),
+ * power P_j of (10.16) (the seed's single light has P = 1 - background) and
+ * colour, the share of the power in red, green, blue, each in [0, 1]
+ * (default 1, 1, 1; used by colour shading only). */
 typedef struct stp_light {
     stp_vec3 position;
     stp_fix power;
+    stp_fix colour[3];
 } stp_light;
 
 /* The lighting of a view (SET-LIGHT, 10.8, extended to several lights).
@@ -46,6 +49,8 @@ typedef struct stp_material {
     stp_fix refraction;
     stp_fix gloss;
     stp_fix specular;
+    stp_fix colour[3]; /* reflectivity's share per channel, [0, 1] (1, 1, 1);
+                          colour shading only */
 } stp_material;
 
 /* The seed's defaults (INITIALIZE-10): light at (0,0,1) with power 1,
@@ -78,6 +83,19 @@ stp_specular_terms stp_specular(stp_fix n_dot_h, stp_fix n_dot_e, stp_fix n_dot_
 stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *material,
                         stp_vec3 normal, stp_vec3 point, stp_vec3 eye, int parallel,
                         stp_vec3 parallel_dir);
+
+/* Colour shading (10.45): the shade of each channel c = 0, 1, 2 (red, green,
+ * blue) into out[c], as stp_shade_point with R_c = R * material colour[c] and
+ * P_j,c = P_j * light j's colour[c].  The specular share is not tinted by the
+ * material (the seed: it is colour-independent) but carries the light's
+ * colour.  Each channel is capped at 1 on its own. */
+void stp_shade_point_colour(const stp_lighting *lighting, const stp_material *material,
+                            stp_vec3 normal, stp_vec3 point, stp_vec3 eye, int parallel,
+                            stp_vec3 parallel_dir, stp_fix out[3]);
+
+/* Luminance of a colour shade: 0.30 r + 0.59 g + 0.11 b, the Y of the seed's
+ * YIQ (10.38), which is what a monochrome display shows of a colour. */
+stp_fix stp_shade_luminance(const stp_fix rgb[3]);
 
 /* INTENSITY (Algorithm 10.6): shade s in [0, 1] (clamped) to a style number
  * 1..levels, INT(s*(levels-1) + 1), darkest first.  levels in 2..256 (values

@@ -638,9 +638,12 @@ stp_linuxfb *stp_linuxfb_open(const char *path, const stp_linuxfb_options *opt_i
     }
     fb->base = fb->map + start + fb->base_off;
 
-    if (vt_take(opt->tty, err, errlen) < 0)
-        goto fail;
-    fb->console_switched = g_vt_fd >= 0;
+    {
+        int vt = vt_take(opt->tty, err, errlen);
+        if (vt < 0)
+            goto fail;
+        fb->console_switched = vt == 1; /* this device holds the console */
+    }
     if (opt->clear)
         stp_linuxfb_clear(fb);
     return fb;

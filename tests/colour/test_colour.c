@@ -12,6 +12,8 @@
 #include <cmocka.h>
 
 #include "stipple/colour.h"
+#include "stipple/shade.h"
+#include "reference/shade_ref.h"
 
 static double d(stp_fix v)
 {
@@ -180,6 +182,80 @@ static void test_colour_tables(void **state)
     assert_int_equal(t.entry[0], 0xFFFF00);
 }
 
+/* (10.45): each channel is the shading equation with B, R and P_j of that
+ * channel; the specular term is not tinted by the material.  Checked against
+ * the double-precision reference with R_c = R * colour_c and
+ * P_j,c = P_j * light colour_c, over a grid of normals and colours. */
+static void test_colour_shading_per_channel(void **state)
+{
+    static const double colours[4][3] = {{1, 1, 1}, {1, 0.2, 0.2}, {0.1, 0.7, 0.3}, {0, 0, 1}};
+    static const double light_colours[3][3] = {{1, 1, 1}, {1, 0.8, 0.5}, {0.2, 0.4, 1}};
+    double worst = 0;
+    int a, mc, lc, c;
+    (void)state;
+    for (a = 0; a < 12; a++)
+        for (mc = 0; mc < 4; mc++)
+            for (lc = 0; lc < 3; lc++) {
+                double ang = a * 0.13;
+                stp_lighting lit;
+                stp_material mat;
+                stp_vec3 n, p = {0, 0, 0}, eye, dir = {0, 0, 0};
+                stp_fix got[3];
+                ref_lighting rl;
+                ref_material rm;
+                ref_vec3 rn = {sin(ang), 0, cos(ang)}, rp = {0, 0, 0}, re = {0.3, 0.4, 4}, rd = {0, 0, 0};
+                stp_lighting_default(&lit);
+                stp_material_default(&mat);
+                lit.background = fx(0.2);
+                lit.count = 1;
+                lit.lights[0].position.x = fx(1);
+                lit.lights[0].position.y = fx(2);
+                lit.lights[0].position.z = fx(3);
+                lit.lights[0].power = fx(3);
+                mat.reflectivity = fx(0.8);
+                mat.refraction = fx(1.5);
+                mat.gloss = fx(0.3);
+                mat.specular = fx(0.7);
+                for (c = 0; c < 3; c++) {
+                    mat.colour[c] = fx(colours[mc][c]);
+                    lit.lights[0].colour[c] = fx(light_colours[lc][c]);
+                }
+                n.x = fx(rn.x);
+                n.y = 0;
+                n.z = fx(rn.z);
+                eye.x = fx(re.x);
+                eye.y = fx(re.y);
+                eye.z = fx(re.z);
+                stp_shade_point_colour(&lit, &mat, n, p, eye, 0, dir, got);
+                for (c = 0; c < 3; c++) {
+                    double want;
+                    rl.brightness = 1;
+                    rl.background = 0.2;
+                    rl.c = 1;
+                    rl.count = 1;
+                    rl.lights[0].position.x = 1;
+                    rl.lights[0].position.y = 2;
+                    rl.lights[0].position.z = 3;
+                    rl.lights[0].power = 3 * light_colours[lc][c];
+                    rm.reflectivity = 0.8 * colours[mc][c];
+                    rm.refraction = 1.5;
+                    rm.gloss = 0.3;
+                    rm.specular = 0.7;
+                    want = ref_shade_point(&rl, &rm, rn, rp, re, 0, rd);
+                    if (fabs(d(got[c]) - want) > worst)
+                        worst = fabs(d(got[c]) - want);
+                }
+            }
+    /* the grey equation's tolerance (tests/core/test_shade.c) */
+    assert_near(worst, 0, 2e-3, "colour shade against the reference");
+    {
+        stp_fix rgb[3] = {STP_FIX_ONE, STP_FIX_ONE, STP_FIX_ONE};
+        assert_int_equal(stp_shade_luminance(rgb), STP_FIX_ONE);
+        rgb[1] = rgb[2] = 0;
+        assert_near(d(stp_shade_luminance(rgb)), 0.30, 1e-4, "luminance of red");
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -189,6 +265,7 @@ int main(void)
         cmocka_unit_test(test_hsv_hls_hsi_known_values),
         cmocka_unit_test(test_round_trips_over_the_cube),
         cmocka_unit_test(test_colour_tables),
+        cmocka_unit_test(test_colour_shading_per_channel),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -100,6 +100,49 @@ static void test_golden_smooth_teapot(void **state)
     stp_posix_frame_free(&frame);
 }
 
+/* Colour shading (10.45) to RGB888 against golden PPMs, byte for byte. */
+static void test_golden_colour(void **state)
+{
+    static const char *const colour_scenes[] = {"balls-s1", "mount-s2", "tetra-s1"};
+    size_t i;
+    int failures = 0;
+    (void)state;
+    for (i = 0; i < 3; i++) {
+        stp_scene scene;
+        stp_tool_options opt;
+        stp_posix_frame frame;
+        stp_posix_image golden;
+        char path[1024], err[512];
+        size_t k, differ = 0;
+        load(colour_scenes[i], &scene);
+        stp_tool_options_default(&opt);
+        opt.colour = 1;
+        render(&scene, &opt, &frame, STP_PIXEL_RGB888);
+        stp_scene_free(&scene);
+        snprintf(path, sizeof path, "%s/tests/golden/%s-colour-128x64.ppm",
+                 env_or("STP_SOURCE_DIR", "."), colour_scenes[i]);
+        if (stp_posix_read_pnm(path, &golden, err, sizeof err) != 0) {
+            print_error("%s\n", err);
+            failures++;
+        } else {
+            assert_int_equal(golden.channels, 3);
+            assert_int_equal(golden.width * golden.height * 3, frame.stride * frame.height);
+            for (k = 0; k < frame.stride * frame.height; k++)
+                differ += frame.pixels[k] != golden.samples[k];
+            stp_posix_image_free(&golden);
+        }
+        if (differ) {
+            snprintf(path, sizeof path, "%s/%s-colour-128x64.actual.ppm", env_or("STP_BINARY_DIR", "."),
+                     colour_scenes[i]);
+            (void)stp_posix_write(&frame, path, STP_POSIX_FILE_P6, err, sizeof err);
+            print_error("%s: %zu samples differ; render saved as %s\n", colour_scenes[i], differ, path);
+            failures++;
+        }
+        stp_posix_frame_free(&frame);
+    }
+    assert_int_equal(failures, 0);
+}
+
 static void test_golden_128x64(void **state)
 {
     size_t i;
@@ -187,6 +230,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_golden_128x64),
         cmocka_unit_test(test_golden_smooth_teapot),
+        cmocka_unit_test(test_golden_colour),
         cmocka_unit_test(test_bands_equal_full_frame),
         cmocka_unit_test(test_renders_show_something),
     };

@@ -16,8 +16,12 @@ Boots Debian's own kernel (linux-image-6.1.*-amd64 of Debian 12, fetched with
     24 and 32 bpp: the memory is read back through read(2) on /dev/fb1,
     printed base64 on the serial console and compared byte for byte with
     what the fbdev rules (stp_linuxfb.h) say those pixels must be.
+  * -vga std with vga=0x318: vesafb (built in), 24 bpp: screendump again.
   * the VT: KD_GRAPHICS while the port is open, KD_TEXT again after close,
     exit() and SIGTERM/SIGINT; open errors are clear messages.
+  * with --gpiotest: the panel control lines (stipple_gpio, libgpiod v2)
+    against gpio-sim in the std guest; gpio-sim.ko is built out of tree from
+    Debian's linux-source/linux-headers of the same version (cached).
 
 The expected bytes are computed here from the reference picture and the
 mode the kernel reports, not by the port's own conversion code.
@@ -27,6 +31,7 @@ set STP_LINUX_TEST_REQUIRED=1 to make that a failure instead).
 """
 import argparse
 import base64
+import concurrent.futures
 import json
 import os
 import re
@@ -35,13 +40,16 @@ import socket
 import stat
 import subprocess
 import sys
+import threading
 import time
 
 T0 = time.monotonic()
+LOG_LOCK = threading.Lock()
 
 
 def log(msg):
-    print("[%6.2fs] %s" % (time.monotonic() - T0, msg), flush=True)
+    with LOG_LOCK:
+        print("[%6.2fs] %s" % (time.monotonic() - T0, msg), flush=True)
 
 
 def skip(msg):
@@ -625,9 +633,9 @@ def boot(args, name, vga, modules, vfb, kernel, index, work, append="", gpio=Fal
     ok = True
     try:
         g.connect(10)
-        g.wait_for(r"^STP-BOOTED", 40)
+        g.wait_for(r"^STP-BOOTED", 60)
         log("%s: booted" % name)
-        m, out = g.wait_for(r"^STP-DRAWN /dev/fb0 (\d+) ms", 45)
+        m, out = g.wait_for(r"^STP-DRAWN /dev/fb0 (\d+) ms", 60)
         log("%s: fb0 drawn in the guest (%s ms render)" % (name, m.group(1)))
         ok &= check_common(out)
         if "STP-ERROR" in out:
@@ -692,6 +700,7 @@ def main():
     ap.add_argument("--fbtest", required=True)
     ap.add_argument("--guest", required=True)
     ap.add_argument("--gpiotest")
+    ap.add_argument("--jobs", type=int, default=0, help="guests at once (default: cores)")
     ap.add_argument("--cache", required=True)
     ap.add_argument("--work", required=True)
     ap.add_argument("--qemu", default=shutil.which("qemu-system-x86_64"))
@@ -721,16 +730,24 @@ def main():
             ok = False
         else:
             log("gpio-sim not available, GPIO checks skipped: %s" % why)
+    runs = []
     if args.only in (None, "std"):
         wanted = ["bochs", "vfb"] + (["configfs", "gpio_sim"] if gpio else [])
-        ok &= boot(args, "std", "std", module_order(index, wanted), True,
-                   kernel, index, args.work, gpio=gpio)
+        runs.append(dict(name="std", vga="std", modules=module_order(index, wanted), vfb=True,
+                         gpio=gpio))
     if args.only in (None, "cirrus"):
-        ok &= boot(args, "cirrus", "cirrus", module_order(index, ["cirrus"]), False,
-                   kernel, index, args.work)
+        runs.append(dict(name="cirrus", vga="cirrus", modules=module_order(index, ["cirrus"]),
+                         vfb=False))
     if args.only in (None, "vesa"):
         # vesafb is built in: no modules; 0x318 = 1024x768, 24 bpp
-        ok &= boot(args, "vesa", "std", [], False, kernel, index, args.work, "vga=0x318")
+        runs.append(dict(name="vesa", vga="std", modules=[], vfb=False, append="vga=0x318"))
+    # the guests are independent: boot as many at once as there are cores
+    jobs = max(1, min(len(runs), args.jobs or (os.cpu_count() or 1)))
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = [pool.submit(boot, args, kernel=kernel, index=index, work=args.work, **r)
+                   for r in runs]
+        for f in futures:
+            ok &= f.result()
     log("PASS" if ok else "FAIL")
     return 0 if ok else 1
 

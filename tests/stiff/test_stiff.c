@@ -603,6 +603,48 @@ static void test_pictures_of_clipped_polygons(void **state)
     }
 }
 
+/* The fill rule's ties: with a parallel view of 16 pixels per unit, vertices
+ * on pixel centres and edges vertical, horizontal or at 45 degrees, the
+ * core's device coordinates and edge crossings are exact, so every centre
+ * on an edge is decided by the top-left rule alone: the core and the
+ * reference must agree pixel for pixel. */
+static void test_fill_rule_ties_exact(void **state)
+{
+    /* device (x, y) of the vertices, y down */
+    static const double shapes[][5][2] = {
+        {{10.5, 5.5}, {20.5, 5.5}, {20.5, 15.5}, {10.5, 15.5}, {-1, -1}},  /* square */
+        {{40.5, 4.5}, {50.5, 14.5}, {40.5, 24.5}, {30.5, 14.5}, {-1, -1}}, /* diamond */
+        {{5.5, 30.5}, {25.5, 30.5}, {5.5, 45.5}, {-1, -1}, {-1, -1}},     /* right triangle */
+        {{33, 30}, {60, 30}, {60, 44}, {33, 44}, {-1, -1}},               /* edges between centres */
+    };
+    size_t k;
+    (void)state;
+    for (k = 0; k < sizeof shapes / sizeof shapes[0]; k++) {
+        picture_case pc;
+        double perimeter;
+        int covered, diff, i;
+        memset(&pc, 0, sizeof pc);
+        pc.name = "fill rule";
+        pc.view.from = v3(0, 0, -4);
+        pc.view.up = v3(0, 1, 0);
+        pc.view.hither = 1.0 / 64;
+        pc.view.window_half = 1.5; /* 48 / 2 / 1.5 = 16 pixels per unit */
+        pc.view.perspective = 0;
+        for (i = 0; i < 5 && shapes[k][i][0] >= 0; i++) {
+            /* view x is world -x here (x right in a left-handed view of a
+             * right-handed world seen along +z) */
+            pc.v[i] = v3(-(shapes[k][i][0] - PW / 2.0) / 16, (PH / 2.0 - shapes[k][i][1]) / 16, 0);
+            pc.n++;
+        }
+        diff = compare_coverage(&pc, &perimeter, &covered);
+        print_message("fill-rule shape %zu: covered %d, differing %d\n", k, covered, diff);
+        assert_true(covered > 0);
+        if (k == 0)
+            assert_int_equal(covered, 100); /* centres 10.5..19.5 both ways */
+        assert_int_equal(diff, 0);
+    }
+}
+
 int main(void)
 {
     static const struct CMUnitTest fixed[] = {
@@ -612,6 +654,7 @@ int main(void)
         cmocka_unit_test(test_property_intensity),
         cmocka_unit_test(test_property_wild_inputs),
         cmocka_unit_test(test_pictures_of_clipped_polygons),
+        cmocka_unit_test(test_fill_rule_ties_exact),
     };
     size_t n = stiff_case_count(), i;
     struct CMUnitTest *tests = calloc(n, sizeof *tests);
