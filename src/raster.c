@@ -133,10 +133,100 @@ static void put_span_smooth(const frame *fr, uint32_t y, uint32_t x1, uint32_t x
 }
 #endif
 
-/* A run of a span, flat or smooth. */
-static void paint_run(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style, int smooth,
-                      int64_t s0, int64_t sstep)
+#if STP_WITH_TRANSPARENCY
+/* Inverse of INTENSITY for an 8-bit drive value: the style whose level is
+ * nearest (the gamma table, or the linear ramp). */
+static int index_of_level(const frame *fr, uint8_t level)
 {
+    int levels = fr->r->levels, best = 1, i, dbest = 256;
+    if (!fr->out->gamma)
+        return (level * (levels - 1) + 127) / 255 + 1;
+    for (i = 1; i <= levels; i++) {
+        int dd = fr->out->gamma[i - 1] - level;
+        if (dd < 0)
+            dd = -dd;
+        if (dd < dbest) {
+            dbest = dd;
+            best = i;
+        }
+    }
+    return best;
+}
+
+/* (10.20): v = min(1, v_r + t v_t) as a style index, v_r and v_t shades. */
+static int blend(const frame *fr, stp_fix v_r, stp_fix t, stp_fix v_t)
+{
+    return stp_intensity_index(stp_fix_add(v_r, stp_fix_mul(t, v_t)), fr->r->levels);
+}
+
+/* A transparent span: each pixel's shade under it is read back from the
+ * band through the inverse of INTENSITY and blended with the polygon's. */
+static void put_span_blend(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style,
+                           stp_fix t)
+{
+    uint8_t *row = fr->band + (size_t)(y - fr->y0) * fr->stride;
+    int levels = fr->r->levels;
+    uint32_t x;
+    switch (fr->port->format) {
+    case STP_PIXEL_MONO1: {
+        /* one bilevel pixel inverts to 0 or 1: its halftone density is
+         * the shade, so blending per pixel keeps it on average */
+        stp_fix v_r = stp_intensity_shade(style, levels);
+        for (x = x1; x <= x2; x++) {
+            uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
+            stp_fix v_t = (row[x >> 3] & bit) ? STP_FIX_ONE : 0;
+            if (stp_cell_on(fr->cell, x, y, level_of(fr, blend(fr, v_r, t, v_t))))
+                row[x >> 3] = (uint8_t)(row[x >> 3] | bit);
+            else
+                row[x >> 3] = (uint8_t)(row[x >> 3] & ~bit);
+        }
+        break;
+    }
+    case STP_PIXEL_GREY8: {
+        stp_fix v_r = stp_intensity_shade(style, levels);
+        for (x = x1; x <= x2; x++)
+            row[x] = level_of(fr, blend(fr, v_r, t, stp_intensity_shade(index_of_level(fr, row[x]), levels)));
+        break;
+    }
+    case STP_PIXEL_RGB888: {
+        int c;
+        stp_fix v_r[3];
+        for (c = 0; c < 3; c++)
+            v_r[c] = stp_intensity_shade((style & STP_COLOUR_FLAG) ? ((style >> (16 - 8 * c)) & 0xFF) + 1 : style,
+                                         levels);
+        for (x = x1; x <= x2; x++)
+            for (c = 0; c < 3; c++) {
+                uint8_t *p = &row[3 * x + (uint32_t)c];
+                *p = level_of(fr, blend(fr, v_r[c], t, stp_intensity_shade(index_of_level(fr, *p), levels)));
+            }
+        break;
+    }
+    default: {
+        stp_fix v_r = stp_intensity_shade(style, levels);
+        for (x = x1; x <= x2; x++) {
+            int under = fr->out->styles ? stp_style_inverse(fr->out->styles, row[x]) : row[x];
+            stp_fix v_t = under > 0 ? stp_intensity_shade(under, levels) : 0;
+            row[x] = style_code(fr, blend(fr, v_r, t, v_t));
+        }
+        break;
+    }
+    }
+}
+#endif
+
+/* A run of a span: flat, smooth or transparent. */
+static void paint_run(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style, int smooth,
+                      int64_t s0, int64_t sstep, stp_fix t)
+{
+#if STP_WITH_TRANSPARENCY
+    if (t > 0) {
+        /* a smooth transparent polygon blends with its flat shade */
+        put_span_blend(fr, y, x1, x2, style, t);
+        return;
+    }
+#else
+    (void)t;
+#endif
 #if STP_WITH_GOURAUD
     if (smooth) {
         put_span_smooth(fr, y, x1, x2, s0, sstep);
@@ -154,7 +244,7 @@ static void paint_run(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int
 /* Depth-tested span: runs of pixels that pass are painted with put_span, so
  * the halftone inner loop stays the same as without a Z buffer. */
 static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style,
-                       int64_t d, int64_t ddx, int smooth, int64_t s0, int64_t sstep)
+                       int64_t d, int64_t ddx, int smooth, int64_t s0, int64_t sstep, stp_fix t)
 {
     uint16_t *z = fr->zbuf + (size_t)(y - fr->y0) * fr->r->width;
     uint32_t x, run = 0;
@@ -163,18 +253,19 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, in
         int64_t dv = stp_asr64(d, 12);
         uint16_t depth = (uint16_t)(dv < 1 ? 1 : (dv > 65535 ? 65535 : dv));
         if (depth > z[x]) {
-            z[x] = depth;
+            if (t == 0)
+                z[x] = depth; /* transparent polygons do not hide what follows */
             if (!in_run) {
                 run = x;
                 in_run = 1;
             }
         } else if (in_run) {
-            paint_run(fr, y, run, x - 1, style, smooth, s0 + (int64_t)(run - x1) * sstep, sstep);
+            paint_run(fr, y, run, x - 1, style, smooth, s0 + (int64_t)(run - x1) * sstep, sstep, t);
             in_run = 0;
         }
     }
     if (in_run)
-        paint_run(fr, y, run, x2, style, smooth, s0 + (int64_t)(run - x1) * sstep, sstep);
+        paint_run(fr, y, run, x2, style, smooth, s0 + (int64_t)(run - x1) * sstep, sstep, t);
 }
 
 /* Depth key mapped to the Z buffer's 1..65535 with 12 fractional bits. */
@@ -188,7 +279,7 @@ static int64_t depth_q12(const frame *fr, int32_t key)
 #endif
 
 /* Scan-convert the polygon whose header is df[at] into the current band. */
-static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z)
+static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z, stp_fix t)
 {
     stp_renderer *r = fr->r;
     const stp_instr *v = &r->df[at];
@@ -219,9 +310,9 @@ static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z)
         if (a->y == b->y)
             continue;
         if (a->y > b->y) {
-            const stp_instr *t = a;
+            const stp_instr *swap = a;
             a = b;
-            b = t;
+            b = swap;
         }
         e->xa = a->x;
         e->ya = a->y;
@@ -321,11 +412,11 @@ static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z)
                 d = dc + ddx * (((int64_t)p1 << SUB) + HALF_PIXEL - xc) +
                     ddy * ((int64_t)yc_row - yc);
                 put_span_z(fr, y, (uint32_t)p1, (uint32_t)p2, style, d, ddx * (1 << SUB), smooth, s0,
-                           sstep);
+                           sstep, t);
                 continue;
             }
 #endif
-            paint_run(fr, y, (uint32_t)p1, (uint32_t)p2, style, smooth, s0, sstep);
+            paint_run(fr, y, (uint32_t)p1, (uint32_t)p2, style, smooth, s0, sstep, t);
         }
     }
 }
@@ -361,13 +452,15 @@ static void draw_line(const frame *fr, const stp_instr *a, const stp_instr *b, i
 
 /* Walk the visible segments in display order: polygons (unless skip_polygons)
  * and lines, each with the style in force. */
-static void replay(const frame *fr, int skip_polygons, int use_z)
+/* pass: which polygons to draw: 0 all, 1 opaque only, 2 transparent only. */
+static void replay(const frame *fr, int skip_polygons, int use_z, int pass)
 {
     stp_renderer *r = fr->r;
     int s;
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
         int style = r->fill_style, line_style = r->fill_style;
+        stp_fix t = 0;
         const stp_instr *pen = 0;
         uint32_t k;
         if (!seg->used || !seg->visible)
@@ -375,9 +468,11 @@ static void replay(const frame *fr, int skip_polygons, int use_z)
         for (k = seg->start; k < seg->end; k++) {
             const stp_instr *in = &r->df[k];
             if (in->op >= 3) {
-                if (!skip_polygons)
-                    draw_polygon(fr, k, style, use_z);
+                if (!skip_polygons && (pass == 0 || (pass == 1) == (t == 0)))
+                    draw_polygon(fr, k, style, use_z, t);
                 k += (uint32_t)in->op - 1;
+            } else if (in->op == STP_OP_TRANSPARENCY) {
+                t = in->x;
             } else if (in->op == STP_OP_SHADE) {
                 style = paint_of(fr, in);
             } else if (in->op == STP_OP_LINE_STYLE) {
@@ -446,12 +541,15 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
         int style = r->fill_style;
+        stp_fix t = 0;
         if (!seg->used || !seg->visible)
             continue;
         for (k = seg->start; k < seg->end; k++) {
             const stp_instr *in = &r->df[k];
             if (in->op == STP_OP_SHADE)
                 style = paint_of(fr, in);
+            if (in->op == STP_OP_TRANSPARENCY)
+                t = in->x;
             if (in->op >= 3) {
                 int32_t far_key = INT32_MAX;
                 for (i = 0; i < in->op; i++) {
@@ -467,6 +565,7 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
                     sort[count].index = k;
                     sort[count].key = far_key;
                     sort[count].style = style;
+                    sort[count].transmission = t;
                 }
                 count++;
                 k += (uint32_t)in->op - 1;
@@ -563,12 +662,18 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
         if (hidden == STP_HIDDEN_PAINTER) {
             uint32_t i;
             for (i = 0; i < polygons; i++)
-                draw_polygon(&fr, mem->sort[i].index, mem->sort[i].style, 0);
-            replay(&fr, 1, 0); /* lines on top, in display order */
+                draw_polygon(&fr, mem->sort[i].index, mem->sort[i].style, 0, mem->sort[i].transmission);
+            replay(&fr, 1, 0, 0); /* lines on top, in display order */
         } else
 #endif
         {
-            replay(&fr, 0, hidden == STP_HIDDEN_ZBUFFER);
+            if (hidden == STP_HIDDEN_ZBUFFER) {
+                /* opaque first, then the transparent ones over them */
+                replay(&fr, 0, 1, 1);
+                replay(&fr, 0, 1, 2);
+            } else {
+                replay(&fr, 0, 0, 0);
+            }
         }
         if (port->flush(port, y0, fr.rows, fr.band, fr.stride) < 0)
             return STP_ERR_PORT;

@@ -44,6 +44,10 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     r->current_line_style = -1;
     r->colour = 0;
     r->current_colour = 0;
+    r->t_min = r->t_max = 0;
+    r->t_attenuation = ONE;
+    r->t_power = 2;
+    r->current_transmission = 0;
     r->last_shade = -1;
     r->pen_valid = 0;
     view.from.x = view.from.y = 0;
@@ -180,6 +184,32 @@ int stp_set_colour(stp_renderer *r, int on)
 #endif
 }
 
+int stp_set_transparency(stp_renderer *r, stp_fix t_min, stp_fix t_max, int power,
+                         stp_fix absorption, stp_fix thickness)
+{
+    if (r == 0 || t_min < 0 || t_max < 0 || t_min > ONE || t_max > ONE || power < 1 || power > 4 ||
+        absorption < 0 || thickness < 0)
+        return STP_ERR_ARG;
+#if STP_WITH_TRANSPARENCY
+    r->t_min = t_min;
+    r->t_max = t_max;
+    r->t_power = power;
+    /* e^(-a d) = 2^(-a d log2 e) */
+    {
+        stp_fix ad = stp_fix_mul(absorption, thickness);
+        /* exactly 1 without absorption: exp2's rounding must not dim t */
+        r->t_attenuation = ad == 0 ? ONE
+                                   : stp_fix_clamp(stp_fix_exp2(-stp_fix_mul(ad, stp_fix_from_ratio(94548, 65536))),
+                                                   0, ONE);
+    }
+    return STP_OK;
+#else
+    (void)thickness;
+    (void)absorption;
+    return t_min == 0 && t_max == 0 ? STP_OK : STP_ERR_UNSUPPORTED;
+#endif
+}
+
 void stp_set_backface_removal(stp_renderer *r, int on)
 {
     r->backface_removal = on != 0;
@@ -215,6 +245,7 @@ int stp_segment_create(stp_renderer *r, int id)
     r->open_segment = i;
     r->current_style = -1;
     r->current_line_style = -1;
+    r->current_transmission = 0;
     r->pen_valid = 0;
     /* COPY-LIGHT: the lighting belongs to the view; fix it for this segment
      * with the lights in view coordinates */
@@ -609,6 +640,7 @@ static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n, int s
     stp_fix n_dot_e, *clipped_shades;
     int i, m, style, status = check_open(r);
     int32_t colour;
+    stp_fix transmission;
     uint32_t attribute;
     if (status != STP_OK)
         return status;
@@ -706,9 +738,28 @@ static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n, int s
     if (m < 3)
         return STP_OK; /* nothing of it is in view */
     attribute = style != r->current_style || colour != r->current_colour ? 1u : 0u;
+    transmission = 0;
+#if STP_WITH_TRANSPARENCY
+    if (r->t_max > 0 || r->t_min > 0) {
+        /* (10.21): t = (t_max - t_min)(N.E)^power + t_min, then (10.18) */
+        stp_fix ne = stp_fix_clamp(n_dot_e < 0 ? -n_dot_e : n_dot_e, 0, ONE), p = ONE;
+        int k;
+        for (k = 0; k < r->t_power; k++)
+            p = stp_fix_mul(p, ne);
+        transmission = stp_fix_clamp(
+            stp_fix_mul(stp_fix_add(stp_fix_mul(r->t_max - r->t_min, p), r->t_min), r->t_attenuation),
+            0, ONE);
+    }
+#endif
+    if (transmission != r->current_transmission)
+        attribute++;
     if (r->capacity - r->used < (uint32_t)m + attribute)
         return STP_ERR_FULL;
-    if (attribute) {
+    if (transmission != r->current_transmission) {
+        append(r, STP_OP_TRANSPARENCY, transmission, 0, 0, -1);
+        r->current_transmission = transmission;
+    }
+    if (style != r->current_style || colour != r->current_colour) {
         append(r, STP_OP_SHADE, style, r->last_shade, colour, -1);
         r->current_style = style;
         r->current_colour = colour;

@@ -56,6 +56,10 @@ struct stp_renderer {
     int current_style;      /* polygon style last entered in the open segment, -1 none */
     int current_line_style; /* line style likewise */
     int colour;             /* colour shading on */
+    stp_fix t_min, t_max, t_attenuation; /* transparency (t_attenuation:
+                                            e^(-a d), 1 when none) */
+    int t_power;
+    stp_fix current_transmission; /* t last entered in the open segment */
     int32_t current_colour; /* colour last entered with current_style */
     stp_fix last_shade;
 

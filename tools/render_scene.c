@@ -334,6 +334,19 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
             if (p->material >= 0 && (size_t)p->material < scene->material_count)
                 stp_tool_material(&scene->materials[p->material], opt->colour, &m);
             stp_set_object_shade(r, &m);
+            /* NFF's T: the surface transmits up to T facing the eye and T/2
+             * at grazing angles, (10.21) with power 2; no thickness known */
+            if (opt->transparency) {
+                double t = p->material >= 0 && (size_t)p->material < scene->material_count
+                               ? scene->materials[p->material].t
+                               : 0.0;
+                t = t < 0 ? 0 : (t > 1 ? 1 : t);
+                status = stp_set_transparency(r, stp_tool_fix(t / 2), stp_tool_fix(t), 2, 0, 0);
+                if (status != STP_OK) {
+                    snprintf(err, err_size, "transparency: %s", stp_status_text(status));
+                    goto done;
+                }
+            }
             /* with shading off the material's reflectivity picks the style */
             stp_set_fill_style(r, stp_intensity_index(m.reflectivity, opt->levels));
             last_material = p->material;

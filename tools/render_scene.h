@@ -31,6 +31,7 @@ typedef struct stp_tool_options {
     int shading;             /* 1: MAKE-SHADE per polygon (1) */
     int colour;              /* 1: shade per channel (10.45) with NFF colours;
                                 RGB888 ports show colour (0) */
+    int transparency;        /* 1: NFF's T makes surfaces transparent (0) */
     int smooth;              /* 1: Gouraud from vertex normals: the file's
                                 (NFF pp, OBJ vn), else averaged face normals (0) */
     int band_rows;           /* 0: whole frame */

@@ -55,6 +55,9 @@ static void usage_render(FILE *to)
             "      --no-shading         fill each polygon with its material's reflectivity\n"
             "      --color              colour shading (10.45) with the scene's colours; with a\n"
             "                           .ppm output the picture is in colour (default: grey)\n"
+            "      --transparent        NFF's T makes surfaces transparent: v = v_r + t v_t,\n"
+            "                           t from T/2 (grazing) to T (facing); best with\n"
+            "                           --hidden painter (back to front)\n"
             "      --smooth             Gouraud shading from vertex normals (NFF pp, OBJ vn;\n"
             "                           averaged face normals where the file has none)\n"
             "  -b, --band ROWS          render in bands of ROWS rows (default: whole frame)\n"
@@ -217,7 +220,7 @@ static stp_pixel_format format_for_kind(stp_posix_file_kind kind)
 enum {
     OPT_FORMAT = 256, OPT_SPACING, OPT_GAMMA_K, OPT_HIDDEN, OPT_BACKFACE, OPT_NO_SHADING,
     OPT_LIGHT, OPT_BRIGHT, OPT_AMBIENT, OPT_ATTEN, OPT_RAW_POWER, OPT_PARALLEL, OPT_FOV,
-    OPT_SLICES, OPT_STACKS, OPT_STATS, OPT_PLAIN, OPT_SMOOTH, OPT_COLOUR
+    OPT_SLICES, OPT_STACKS, OPT_STATS, OPT_PLAIN, OPT_SMOOTH, OPT_COLOUR, OPT_TRANSPARENT
 };
 
 static int cmd_render(int argc, char **argv)
@@ -229,7 +232,7 @@ static int cmd_render(int argc, char **argv)
         {"gamma", required_argument, 0, 'g'}, {"gamma-k", required_argument, 0, OPT_GAMMA_K},
         {"hidden", required_argument, 0, OPT_HIDDEN}, {"backface", no_argument, 0, OPT_BACKFACE},
         {"no-shading", no_argument, 0, OPT_NO_SHADING}, {"smooth", no_argument, 0, OPT_SMOOTH},
-        {"color", no_argument, 0, OPT_COLOUR}, {"colour", no_argument, 0, OPT_COLOUR}, {"band", required_argument, 0, 'b'},
+        {"color", no_argument, 0, OPT_COLOUR}, {"transparent", no_argument, 0, OPT_TRANSPARENT}, {"colour", no_argument, 0, OPT_COLOUR}, {"band", required_argument, 0, 'b'},
         {"light", required_argument, 0, OPT_LIGHT}, {"bright", required_argument, 0, OPT_BRIGHT},
         {"ambient", required_argument, 0, OPT_AMBIENT},
         {"attenuation", required_argument, 0, OPT_ATTEN},
@@ -302,6 +305,7 @@ static int cmd_render(int argc, char **argv)
         case OPT_NO_SHADING: opt.shading = 0; break;
         case OPT_SMOOTH: opt.smooth = 1; break;
         case OPT_COLOUR: opt.colour = 1; break;
+        case OPT_TRANSPARENT: opt.transparency = 1; break;
         case 'b':
             if (parse_int(optarg, 1, 32767, &opt.band_rows))
                 return fail("bad --band '%s' (1..32767)", optarg);

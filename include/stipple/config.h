@@ -76,6 +76,12 @@
 #define STP_WITH_COLOUR 1
 #endif
 
+/* 1: transparency (SPEC.md section 5) is compiled in: a polygon blends with
+ * what the band already holds, v = v_r + t v_t. */
+#ifndef STP_WITH_TRANSPARENCY
+#define STP_WITH_TRANSPARENCY 1
+#endif
+
 /* 1: line drawing (display-file opcodes move/line) is compiled in. */
 #ifndef STP_WITH_LINES
 #define STP_WITH_LINES 1

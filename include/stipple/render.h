@@ -64,7 +64,9 @@ enum {
                                z = colour: 0 for grey, else STP_COLOUR_FLAG |
                                (r-1) << 16 | (g-1) << 8 | (b-1), the style
                                index of each channel */
-    STP_OP_LINE_STYLE = -1  /* style for following lines: x = style index */
+    STP_OP_LINE_STYLE = -1, /* style for following lines: x = style index */
+    STP_OP_TRANSPARENCY = -2 /* transmission t of following polygons: x = t
+                               (stp_fix in [0, 1]; 0 = opaque) */
 };
 
 #define STP_COLOUR_FLAG 0x01000000
@@ -164,6 +166,22 @@ void stp_set_fill_style(stp_renderer *r, int index);
  * STP_ERR_UNSUPPORTED without STP_WITH_COLOUR. */
 int stp_set_colour(stp_renderer *r, int on);
 
+/* Transparency of the polygons entered next (SPEC.md section 5): each one's
+ * transmission is t = (t_max - t_min) (N.E)^power + t_min (10.21), times
+ * e^(-absorption * thickness) (10.18) where a thickness is known (pass 0 for
+ * none), clamped to [0, 1].  At output the polygon's shade v_r is blended with
+ * the shade v_t already in the band under it, recovered by the inverse of
+ * INTENSITY: v = min(1, v_r + t v_t) (10.20).  On a 1-bit device a pixel's
+ * inverse is 0 or 1, so the blend happens per pixel before the halftone.
+ * Order: with the painter's algorithm polygons blend back to front; with the
+ * Z buffer all opaque polygons are drawn first, then the transparent ones in
+ * display order, depth-tested but not writing depth.  t_min = t_max = 0
+ * (the default) makes polygons opaque.  power: 1..4 (the seed: 2 or 3).
+ * Returns STP_ERR_ARG for values out of range, STP_ERR_UNSUPPORTED without
+ * STP_WITH_TRANSPARENCY. */
+int stp_set_transparency(stp_renderer *r, stp_fix t_min, stp_fix t_max, int power,
+                         stp_fix absorption, stp_fix thickness);
+
 /* Number of INTENSITY levels, 2..256 (default 16). */
 int stp_set_levels(stp_renderer *r, int levels);
 
@@ -246,6 +264,7 @@ typedef struct stp_sort_entry {
     uint32_t index;  /* display-file entry of the polygon */
     int32_t key;     /* depth key of its farthest vertex */
     int32_t style;   /* its fill style (or colour, for RGB888 output) */
+    int32_t transmission; /* its t (0: opaque) */
 } stp_sort_entry;
 typedef struct stp_frame_memory {
     uint8_t *band;

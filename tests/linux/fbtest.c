@@ -331,11 +331,12 @@ static int kd_mode(void)
     return mode;
 }
 
-/* Child: open DEV, tell the parent through fd, then end as `how` says. */
-static void console_child(const char *dev, int fd, const char *how)
+/* Child: open DEV, tell the parent (fd_ready), wait until it has looked at
+ * the console (fd_go), then end as `how` says. */
+static void console_child(const char *dev, int fd_ready, int fd_go, const char *how)
 {
     stp_linuxfb_options opt;
-    char err[256];
+    char err[256], c;
     stp_linuxfb *fb;
     stp_linuxfb_options_default(&opt);
     opt.clear = 0;
@@ -346,7 +347,7 @@ static void console_child(const char *dev, int fd, const char *how)
         fflush(stdout);
         _exit(3);
     }
-    if (write(fd, "r", 1) != 1)
+    if (write(fd_ready, "r", 1) != 1 || read(fd_go, &c, 1) != 1)
         _exit(4);
     if (strcmp(how, "exit") == 0)
         exit(0); /* no close: atexit restores */
@@ -356,29 +357,35 @@ static void console_child(const char *dev, int fd, const char *how)
 
 static int run_child(const char *dev, const char *how, int sig)
 {
-    int p[2], status, mode_during, mode_after;
+    int ready[2], go[2], status, mode_during, mode_after;
     struct pollfd pfd;
     char c;
     pid_t pid;
-    if (pipe(p) != 0)
+    if (pipe(ready) != 0 || pipe(go) != 0)
         return -1;
     pid = fork();
     if (pid == 0) {
-        close(p[0]);
-        console_child(dev, p[1], how);
+        close(ready[0]);
+        close(go[1]);
+        console_child(dev, ready[1], go[0], how);
     }
-    close(p[1]);
-    pfd.fd = p[0];
+    close(ready[1]);
+    close(go[0]);
+    pfd.fd = ready[0];
     pfd.events = POLLIN;
-    if (poll(&pfd, 1, 5000) != 1 || read(p[0], &c, 1) != 1) {
+    if (poll(&pfd, 1, 5000) != 1 || read(ready[0], &c, 1) != 1) {
         printf("STP-CONSOLE %s: child did not open the device\n", how);
         kill(pid, SIGKILL);
         waitpid(pid, &status, 0);
-        close(p[0]);
+        close(ready[0]);
+        close(go[1]);
         return -1;
     }
-    close(p[0]);
+    close(ready[0]);
     mode_during = kd_mode();
+    if (write(go[1], "g", 1) != 1)
+        kill(pid, SIGKILL);
+    close(go[1]);
     if (sig)
         kill(pid, sig);
     waitpid(pid, &status, 0);

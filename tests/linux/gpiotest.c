@@ -251,7 +251,10 @@ int main(int argc, char **argv)
     sleep_ms(30);
     monitor_stop(&m);
     {
-        double min_gap = 1e9, max_gap = 0;
+        /* the thread schedules on absolute times, so a late edge (a loaded
+         * host, an emulated CPU) is followed by an early one: check the
+         * mean period tightly and each gap loosely */
+        double min_gap = 1e9, max_gap = 0, mean = 0;
         int alternating = 1;
         for (i = 1; i < m.count; i++) {
             double g = m.t[i] - m.t[i - 1];
@@ -261,10 +264,13 @@ int main(int argc, char **argv)
                 max_gap = g;
             alternating = alternating && m.v[i] != m.v[i - 1];
         }
-        ok = ok && alternating && m.count >= 10 && m.count <= 17 && min_gap >= 20.0 &&
-             max_gap <= 80.0;
-        report("vcom-20hz", ok, "%d edges in 400 ms (10..17), gaps %.1f..%.1f ms (25 nominal)",
-               m.count, m.count > 1 ? min_gap : 0.0, m.count > 1 ? max_gap : 0.0);
+        if (m.count > 1)
+            mean = (m.t[m.count - 1] - m.t[0]) / (m.count - 1);
+        ok = ok && alternating && m.count >= 12 && m.count <= 17 && mean >= 23.0 &&
+             mean <= 27.0 && min_gap >= 5.0 && max_gap <= 80.0;
+        report("vcom-20hz", ok,
+               "%d edges in 400 ms (12..17), mean gap %.2f ms (23..27), gaps %.1f..%.1f ms",
+               m.count, mean, m.count > 1 ? min_gap : 0.0, m.count > 1 ? max_gap : 0.0);
     }
     stp_gpio_panel_close(p);
 

@@ -745,8 +745,10 @@ static int compare_polygons(const char *name, const stp_scene *scene, poly_error
         if (c < 0)
             continue;
         if (verbose && fabs(c - r) > STIFF_HALF_STEP)
-            printf("  %s polygon %zu (line %d, %d vertices): core %.5f reference %.5f\n", name, i + 1,
-                   scene->polygons[i].source_line, scene->polygons[i].count, c, r);
+            printf("  %s polygon %zu (line %d, %d vertices, size %.2g, |N.E| %.2g): core %.5f "
+                   "reference %.5f\n",
+                   name, i + 1, scene->polygons[i].source_line, scene->polygons[i].count, res.size[i],
+                   res.n_dot_e[i], c, r);
         stat_add(&pe->shade, fabs(c - r));
         stat_add(local, fabs(c - r));
         pe->compared++;
@@ -770,13 +772,14 @@ static double best_time(work_fn fn, void *arg, double budget)
     long per_batch = 1, i;
     double best = 1e30, start, t0, t;
     int batches = 0;
-    /* calibrate: a batch of about 20 ms (1 ms in quick mode) */
+    /* calibrate: batches of about 2 ms, short enough that on a busy machine
+     * many of them run without being preempted (the best is kept) */
     for (;;) {
         t0 = now();
         for (i = 0; i < per_batch; i++)
             fn(arg, i);
         t = now() - t0;
-        if (t > (quick ? 1e-3 : 2e-2) || per_batch > (1L << 26))
+        if (t > 2e-3 || per_batch > (1L << 26))
             break;
         per_batch *= 2;
     }

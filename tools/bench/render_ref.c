@@ -184,6 +184,8 @@ int ref_polygon(ref_ctx *c, const ref_vec3 *world, int n, size_t tag, double *sh
         *shade_out = -1;
     c->last_shade = -1;
     c->last_style = 0;
+    c->last_n_dot_e = -1;
+    c->last_size = 0;
     if (n < 3)
         return n >= 0 ? REF_ERR_DEGENERATE : REF_ERR_ARG;
     v = malloc(sizeof *v * (size_t)n * 3 + sizeof *v * 4);
@@ -213,6 +215,7 @@ int ref_polygon(ref_ctx *c, const ref_vec3 *world, int n, size_t tag, double *sh
     }
     /* left-handed view system: Newell's right-handed sum points the other way */
     rawn = v3(-a, -b, -cc);
+    c->last_size = sqrt(extent2);
     /* |Newell| is twice the area: a polygon of exactly collinear vertices
      * keeps an area of rounding noise only (1e-16 of its extent squared)
      * after the view transform; below 1e-10 of it there is no normal */
@@ -227,6 +230,7 @@ int ref_polygon(ref_ctx *c, const ref_vec3 *world, int n, size_t tag, double *sh
         eye_dir = v3(0, 0, -1);
     }
     n_dot_e = ref_dot(normal, eye_dir);
+    c->last_n_dot_e = fabs(n_dot_e);
     if (n_dot_e <= 0) {
         if (c->backface_removal)
             goto done;
@@ -472,6 +476,8 @@ void ref_render_options_default(ref_render_options *o)
 void ref_render_result_free(ref_render_result *res)
 {
     free(res->shade);
+    free(res->n_dot_e);
+    free(res->size);
     free(res->poly_style);
     free(res->grey);
     free(res->mono);
@@ -595,10 +601,12 @@ int ref_render_scene(const stp_scene *scene, const ref_render_options *opt,
     npx = (size_t)opt->width * (size_t)opt->height;
     res->shade = malloc(sizeof *res->shade * (scene->polygon_count + 1));
     res->poly_style = malloc(sizeof *res->poly_style * (scene->polygon_count + 1));
+    res->n_dot_e = malloc(sizeof *res->n_dot_e * (scene->polygon_count + 1));
+    res->size = malloc(sizeof *res->size * (scene->polygon_count + 1));
     res->grey = malloc(npx);
     res->mono = malloc(npx);
     res->owner = malloc(sizeof *res->owner * npx);
-    if (!res->shade || !res->poly_style || !res->grey || !res->mono || !res->owner)
+    if (!res->shade || !res->poly_style || !res->n_dot_e || !res->size || !res->grey || !res->mono || !res->owner)
         goto fail_mem;
 
     for (i = 0; i < scene->polygon_count; i++) {
@@ -630,6 +638,8 @@ int ref_render_scene(const stp_scene *scene, const ref_render_options *opt,
             verts[k] = from_scene(scene->vertices[p->first + (size_t)k]);
         status = ref_polygon(&ctx, verts, p->count, i, &res->shade[i]);
         res->poly_style[i] = status == REF_OK ? ctx.last_style : 0;
+        res->n_dot_e[i] = status == REF_OK ? ctx.last_n_dot_e : -1;
+        res->size[i] = ctx.last_size;
         if (status == REF_ERR_DEGENERATE)
             res->degenerate++;
         else if (status != REF_OK)

@@ -89,6 +89,8 @@ typedef struct ref_ctx {
     ref_material material;
     double last_shade; /* shade of the last ref_polygon call, -1 if none */
     int last_style;
+    double last_n_dot_e; /* |N.E| of the last polygon (its conditioning), -1 if none */
+    double last_size;    /* its largest distance from its first vertex */
     /* polygons waiting for ref_finish */
     ref_poly2 *polys;
     size_t poly_count, poly_cap;
@@ -164,6 +166,8 @@ typedef struct ref_render_result {
     int width, height;
     size_t polygon_count;    /* the scene's polygons */
     double *shade;           /* per scene polygon, -1 where degenerate/removed */
+    double *n_dot_e;         /* per scene polygon, |N.E| (-1 where degenerate) */
+    double *size;            /* per scene polygon, its extent (world units) */
     int *poly_style;         /* per scene polygon, 0 where degenerate/removed */
     unsigned char *grey;     /* width * height */
     unsigned char *mono;     /* width * height, 0/1 */
