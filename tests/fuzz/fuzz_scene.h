@@ -10,8 +10,10 @@
  *    the vertex array with a valid material, finite numbers everywhere,
  *    normals present where a polygon says so, and stp_scene_bounds agreeing.
  * The scene budget (stp_scene_byte_limit, a test hook of the readers) is
- * lowered to FZ_SCENE_BYTE_LIMIT so inputs of a few KB can reach the
- * "scene too large" path without the fuzzer spending gigabytes.
+ * lowered to 32 KiB..4 MiB, chosen by the input's length, so inputs of a
+ * few KB reach the "scene too large" path without the fuzzer spending
+ * gigabytes; likewise the tessellation is the coarsest allowed (3 slices, 2
+ * stacks) for one length in four, the default (16, 8) otherwise.
  */
 #ifndef STP_FUZZ_SCENE_H
 #define STP_FUZZ_SCENE_H
@@ -24,7 +26,6 @@
 #include "scene_private.h"
 #include "scene_util.h"
 
-#define FZ_SCENE_BYTE_LIMIT ((size_t)4 << 20)
 #define FZ_SCENE_NAME "fuzz-input"
 
 static int fz_finite3(const stp_scene_vec3 *v)
@@ -137,8 +138,13 @@ static int fz_scene_one(const uint8_t *data, size_t size, const char *format)
     char err[256];
     int rc;
 
-    stp_scene_byte_limit = FZ_SCENE_BYTE_LIMIT;
+    stp_scene_byte_limit = (size_t)32768 << (size % 8);
     stp_scene_options_default(&opt);
+    if (size % 4 == 3) {
+        opt.sphere_slices = 3;
+        opt.sphere_stacks = 2;
+        opt.cone_slices = 3;
+    }
     memset(err, 'x', sizeof err);
     /* data is libFuzzer's own exact-sized copy: no terminating NUL to lean on */
     rc = stp_scene_parse((const char *)data, size, format, FZ_SCENE_NAME, &opt, &scene, err,
