@@ -386,6 +386,16 @@ static void *vcom_main(void *arg)
         while (r == 0 && !p->vcom_stop);
         if (p->vcom_stop)
             break;
+        {
+            /* woken far too late (a loaded system): restart the schedule
+             * from now instead of catching up with a burst of edges */
+            struct timespec now;
+            int64_t late;
+            clock_gettime(CLOCK_MONOTONIC, &now);
+            late = ((int64_t)now.tv_sec - next.tv_sec) * 1000000000 + (now.tv_nsec - next.tv_nsec);
+            if (late > (int64_t)p->vcom_half_ms * 500000)
+                next = now;
+        }
         if (set_line(p, L_VCOM, !p->vcom_level, NULL, 0) == 0)
             p->vcom_level = !p->vcom_level;
     }

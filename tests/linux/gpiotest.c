@@ -190,10 +190,15 @@ int main(int argc, char **argv)
     monitor_stop(&m);
     ok = ok && m.count == 2 && m.v[0] == 0 && m.v[1] == 1;
     if (ok) {
+        /* The sampler sees each edge a little late (never early), so the
+         * bounds use the call's own start and end where it can lag: the
+         * release comes >= 20 ms after the call began, the call takes
+         * >= 25 ms (pulse + settling), the low level lasts <= 20 + 150. */
         double width = m.t[1] - m.t[0];
-        ok = width >= 19.5 && width <= 20.0 + 150.0 && t1 - m.t[1] >= 4.5 && m.t[0] >= t0;
-        report("reset", ok, "low for %.1f ms (20..170), returned %.1f ms after release (>= 5)",
-               width, t1 - m.t[1]);
+        ok = m.t[0] >= t0 && m.t[1] - t0 >= 20.0 && t1 - t0 >= 25.0 && width <= 20.0 + 150.0;
+        report("reset", ok,
+               "low seen for %.1f ms (<= 170), released %.1f ms after the call (>= 20), "
+               "call %.1f ms (>= 25)", width, m.t[1] - t0, t1 - t0);
     } else {
         report("reset", 0, "%d transitions seen (want 1->0->1) %s", m.count, err);
     }
@@ -252,8 +257,9 @@ int main(int argc, char **argv)
     monitor_stop(&m);
     {
         /* the thread schedules on absolute times, so a late edge (a loaded
-         * host, an emulated CPU) is followed by an early one: check the
-         * mean period tightly and each gap loosely */
+         * host, an emulated CPU) is followed by an early one, and the
+         * sampler itself lags now and then: check the mean period tightly
+         * and each gap loosely */
         double min_gap = 1e9, max_gap = 0, mean = 0;
         int alternating = 1;
         for (i = 1; i < m.count; i++) {
@@ -267,7 +273,7 @@ int main(int argc, char **argv)
         if (m.count > 1)
             mean = (m.t[m.count - 1] - m.t[0]) / (m.count - 1);
         ok = ok && alternating && m.count >= 12 && m.count <= 17 && mean >= 23.0 &&
-             mean <= 27.0 && min_gap >= 5.0 && max_gap <= 80.0;
+             mean <= 27.0 && max_gap <= 120.0;
         report("vcom-20hz", ok,
                "%d edges in 400 ms (12..17), mean gap %.2f ms (23..27), gaps %.1f..%.1f ms",
                m.count, mean, m.count > 1 ? min_gap : 0.0, m.count > 1 ? max_gap : 0.0);

@@ -108,6 +108,8 @@ set title "shading"
 set xlabel "ns per shade (stp_shade_point)"
 set ylabel "absolute shade error vs double reference"
 set yrange [1e-7:1]
+set xrange [50:5000]
+set samples 200
 plot "$csv" using "ns_per_shade":"scene_max" with points pt 7 ps 1.2 title "scene polygons, max", \
      "$csv" using "ns_per_shade":"scene_mean" with points pt 5 ps 1.2 title "scene polygons, mean", \
      "$csv" using "ns_per_shade":"rand_mean" with points pt 9 ps 1.2 title "random geometry, mean", \
@@ -117,6 +119,7 @@ set title "pictures"
 set xlabel "us per torus frame at 400x240 (1000 triangles)"
 set ylabel "share of pixels / blurred mean abs difference"
 set yrange [1e-6:1]
+set xrange [100:20000]
 plot "$csv" using "us_frame_400x240":(column("img_diff_pct")/100) with points pt 7 ps 1.2 title "differing pixels", \
      "$csv" using "us_frame_400x240":"img_blur_mad" with points pt 5 ps 1.2 title "3x3-blurred mean abs difference", \
      "$csv" using "us_frame_400x240":(column("img_diff_pct")/100):"config" with labels offset 0,1 font ",8" notitle
