@@ -11,15 +11,28 @@ packages=(
     gcc-riscv64-unknown-elf            # the RISC-V check of the core
     qemu-system-arm python3            # the firmware in an emulated Stellaris board (QMP client)
     dpkg-dev                           # dpkg-deb, to unpack the test photo's package
+    gnuplot-nox                        # the error-against-run-time plot
+    qemu-system-x86 busybox-static xz-utils gcc-12  # fbdev tests on Debian's kernel
+    libusb-1.0-0-dev umockdev libumockdev-dev pkg-config  # the USB printer and its emulation
 )
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-# The package lists are refreshed every time: the tests fetch a package
-# (python3-skimage, for its photo) with apt-get download too.
+# libgpiod v2 is in bookworm-backports on Debian 12: add that suite to the
+# machine's existing Debian source entry (no new URL).
+sources=/etc/apt/sources.list.d/debian.sources
+if [ -f "$sources" ] && grep -q '^Suites:.*\bbookworm\b' "$sources" && ! grep -q 'bookworm-backports' "$sources"; then
+    as_root sed -i '0,/^Suites:.*\bbookworm\b.*/s//& bookworm-backports/' "$sources"
+fi
+# The package lists are refreshed every time: the tests fetch packages
+# (python3-skimage for its photo, Debian's kernel) with apt-get download too.
 as_root apt-get update -q >/dev/null
 if [ "${#missing[@]}" -gt 0 ]; then
     as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+if apt-cache policy libgpiod-dev 2>/dev/null | grep -q 'bookworm-backports' &&
+    ! dpkg-query -W -f='${Version}' libgpiod-dev 2>/dev/null | grep -q '^2'; then
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends -t bookworm-backports libgpiod-dev
 fi
