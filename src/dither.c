@@ -138,6 +138,28 @@ void stp_halftone_fillin(uint8_t *row, uint32_t x1, uint32_t x2, uint32_t y,
         }
         return;
     }
+    if (8u % w == 0) {
+        /* The cell's width divides 8, so every byte of the row sees the same
+         * cell columns at the same bits: build that byte once and fill whole
+         * bytes, masking the span's partial first and last bytes. */
+        const uint8_t *cell_row = &cell->thresholds[(y % cell->height) * w];
+        uint32_t b, first = x1 >> 3, last = x2 >> 3;
+        uint8_t pattern = 0, head = (uint8_t)(0xFFu >> (x1 & 7u)),
+                tail = (uint8_t)(0xFFu << (7u - (x2 & 7u)));
+        for (b = 0; b < 8; b++)
+            if (intensity > cell_row[b % w])
+                pattern = (uint8_t)(pattern | (0x80u >> b));
+        if (first == last) {
+            uint8_t mask = (uint8_t)(head & tail);
+            row[first] = (uint8_t)((row[first] & ~mask) | (pattern & mask));
+            return;
+        }
+        row[first] = (uint8_t)((row[first] & ~head) | (pattern & head));
+        for (b = first + 1; b < last; b++)
+            row[b] = pattern;
+        row[last] = (uint8_t)((row[last] & ~tail) | (pattern & tail));
+        return;
+    }
     {
         const uint8_t *cell_row = &cell->thresholds[(y % cell->height) * w];
         for (x = x1; x <= x2; x++) {

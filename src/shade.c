@@ -140,9 +140,12 @@ static int64_t unity_diff(stp_vec3 a, stp_vec3 b, stp_vec3 *out)
     return (int64_t)stp_vec3_unity(d, out) * ((int64_t)1 << shift);
 }
 
-stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *material,
-                        stp_vec3 normal, stp_vec3 point, stp_vec3 eye, int parallel,
-                        stp_vec3 parallel_dir)
+/* MAKE-SHADE with its parts: when terms is not NULL, *ambient_out gets B*R
+ * and terms[j] each light's saturated term (0 for a light that does not
+ * reach the face), for stp_shade_point_terms; stp_shade_point passes NULL. */
+static inline stp_fix shade_parts(const stp_lighting *lighting, const stp_material *material,
+                                  stp_vec3 normal, stp_vec3 point, stp_vec3 eye, int parallel,
+                                  stp_vec3 parallel_dir, stp_fix *ambient_out, stp_fix *terms)
 {
     stp_vec3 e;
     stp_fix n_dot_e, background, refl, c, ambient;
@@ -164,6 +167,11 @@ stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *materi
     count = lighting->count < 0 ? 0 : (lighting->count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : lighting->count);
     if (n_dot_e <= 0)
         count = 0; /* a back face (or the eye on the point): ambient share only */
+    if (terms) {
+        *ambient_out = ambient;
+        for (j = 0; j < STP_MAX_LIGHTS; j++)
+            terms[j] = 0;
+    }
     for (j = 0; j < count; j++) {
         const stp_light *light = &lighting->lights[j];
         stp_vec3 l;
@@ -195,6 +203,8 @@ stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *materi
 #endif
         /* P_j * term / (C + U_j) in one 64-bit step */
         term = stp_fix_sat64(((int64_t)term * light->power) / (c + u));
+        if (terms)
+            terms[j] = term;
         sum += term;
     }
     sum += ambient;
@@ -202,6 +212,39 @@ stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *materi
     sum = stp_fix_mul(lighting->brightness, (stp_fix)sum);
     return stp_fix_clamp((stp_fix)sum, 0, ONE);
 }
+
+stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *material,
+                        stp_vec3 normal, stp_vec3 point, stp_vec3 eye, int parallel,
+                        stp_vec3 parallel_dir)
+{
+    return shade_parts(lighting, material, normal, point, eye, parallel, parallel_dir, 0, 0);
+}
+
+#if STP_WITH_SHADOWS
+stp_fix stp_shade_point_terms(const stp_lighting *lighting, const stp_material *material,
+                              stp_vec3 normal, stp_vec3 point, stp_vec3 eye, int parallel,
+                              stp_vec3 parallel_dir, stp_fix *ambient, stp_fix terms[STP_MAX_LIGHTS])
+{
+    return shade_parts(lighting, material, normal, point, eye, parallel, parallel_dir, ambient,
+                       terms);
+}
+
+stp_fix stp_shade_combine(stp_fix brightness, stp_fix ambient, const stp_fix *terms, int count,
+                          uint32_t lit)
+{
+    /* the order of stp_shade_point: the terms' sum, the ambient part, one
+     * saturation, BRIGHT, the cap */
+    int64_t sum = 0;
+    int j;
+    for (j = 0; j < count && j < 32; j++)
+        if (lit & ((uint32_t)1 << j))
+            sum += terms[j];
+    sum += ambient;
+    sum = stp_fix_sat64(sum);
+    sum = stp_fix_mul(brightness, (stp_fix)sum);
+    return stp_fix_clamp((stp_fix)sum, 0, ONE);
+}
+#endif
 
 void stp_shade_point_colour(const stp_lighting *lighting, const stp_material *material,
                             stp_vec3 normal, stp_vec3 point, stp_vec3 eye, int parallel,

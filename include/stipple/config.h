@@ -82,6 +82,15 @@
 #define STP_WITH_TRANSPARENCY 1
 #endif
 
+/* 1: shadows (SPEC.md section 5) by a shadow Z buffer per light are
+ * compiled in: stp_set_shadow_map, depth rasterised into the maps as
+ * polygons are entered, a per-pixel test at output.  The renderer object
+ * grows by about 100 bytes per light; a render with no map set draws the
+ * same pixels as a build without. */
+#ifndef STP_WITH_SHADOWS
+#define STP_WITH_SHADOWS 1
+#endif
+
 /* 1: line drawing (display-file opcodes move/line) is compiled in. */
 #ifndef STP_WITH_LINES
 #define STP_WITH_LINES 1
@@ -95,6 +104,9 @@
 #endif
 #if STP_MAX_LIGHTS < 1 || STP_MAX_SEGMENTS < 1
 #error "STP_MAX_LIGHTS and STP_MAX_SEGMENTS must be at least 1"
+#endif
+#if STP_WITH_SHADOWS && STP_MAX_LIGHTS > 32
+#error "STP_WITH_SHADOWS keeps one bit per light: STP_MAX_LIGHTS must be at most 32"
 #endif
 #if !STP_WITH_ZBUFFER && !STP_WITH_PAINTER
 /* Neither method: polygons are drawn in display-file order (the caller's

@@ -65,9 +65,32 @@ enum {
                                (r-1) << 16 | (g-1) << 8 | (b-1), the style
                                index of each channel */
     STP_OP_LINE_STYLE = -1, /* style for following lines: x = style index */
-    STP_OP_TRANSPARENCY = -2 /* transmission t of following polygons: x = t
+    STP_OP_TRANSPARENCY = -2, /* transmission t of following polygons: x = t
                                (stp_fix in [0, 1]; 0 = opaque) */
+    STP_OP_LIGHT_TERM = -3  /* shadow record of the NEXT polygon only
+                               (STP_WITH_SHADOWS; entered only for polygons
+                               that a shadow map can darken, see
+                               stp_set_shadow_map).  The records stand just
+                               before the polygon's header, after its
+                               STP_OP_SHADE / STP_OP_TRANSPARENCY.  First
+                               one with x = STP_LIGHT_TERM_GREY or
+                               STP_LIGHT_TERM_COLOUR: y = the part of the
+                               shade no map can take away, B.R plus the terms
+                               of the lights without a map (stp_fix, before
+                               BRIGHT), z = BRIGHT; then one per light j
+                               with a map that reaches the face: x = j |
+                               (the map's generation << 8), y = the light's
+                               term P_j (R (N.L_j) + DGF/(N.E)) / (C + U_j)
+                               (stp_fix, before BRIGHT), z = the depth bias
+                               of the test, in map depth units */
 };
+
+/* x of the first STP_OP_LIGHT_TERM record: how a shadowed pixel is re-lit.
+ * GREY: the flat grey style came from these terms and is recomputed from
+ * them; COLOUR: a colour polygon, whose channels are scaled (render.h,
+ * stp_set_shadow_map). */
+#define STP_LIGHT_TERM_GREY (-1)
+#define STP_LIGHT_TERM_COLOUR (-2)
 
 #define STP_COLOUR_FLAG 0x01000000
 
@@ -117,7 +140,8 @@ size_t stp_renderer_size(void);
  *   static stp_renderer_storage storage;
  *   r = stp_renderer_create(&storage, sizeof storage, ...); */
 #define STP_RENDERER_BYTES                                                                      \
-    (1024u + 32u * STP_MAX_SEGMENTS + 48u * STP_MAX_LIGHTS + 96u * (STP_MAX_POLYGON_VERTICES + 5u))
+    (1024u + 32u * STP_MAX_SEGMENTS + (48u + 112u * STP_WITH_SHADOWS) * STP_MAX_LIGHTS +          \
+     96u * (STP_MAX_POLYGON_VERTICES + 5u))
 typedef union stp_renderer_storage {
     int64_t align_integer;
     void *align_pointer;
@@ -232,6 +256,96 @@ int stp_polygon(stp_renderer *r, const stp_vec3 *vertices, int n);
 int stp_polygon_smooth(stp_renderer *r, const stp_vec3 *vertices, const stp_vec3 *normals, int n);
 int stp_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const stp_fix *shades,
                               int n);
+
+/* --- shadows (SPEC.md section 5: a shadow Z buffer per light)
+ *
+ * A shadow map is a 16-bit depth buffer in caller memory, a perspective
+ * view of the scene from one light: its axis runs from the light towards
+ * `target`, fov_degrees is the full angle across its shorter side (texels
+ * are square), and its up is the view's up (its forward when the axis runs
+ * along the view's up).  Texel (u, v), v down like the device, holds
+ * depth[v * width + u]: 0 where no polygon covers its centre, else
+ * q = floor(65535 near / z_l), clamped to 1..65535, of the polygon nearest
+ * the light there (z_l: distance along the axis; larger q = nearer the
+ * light; q is affine over a polygon's texels, so it is interpolated like
+ * the device's depth key).  Texel centres follow the device's fill rule.
+ *
+ * Order of calls.  The display file holds device coordinates only, so the
+ * maps are drawn as polygons are ENTERED: set the view and the lighting,
+ * then the maps (the call clears its map), then create the segments and
+ * enter every polygon, casters included, then stp_render.  Every polygon
+ * entered while a map is set is drawn into it (stp_polygon,
+ * stp_polygon_smooth, stp_polygon_vertex_shades; any segment, visible or
+ * not; back faces, polygons outside the view and transparent ones too: a
+ * map holds depth only, so transparent polygons cast full shadows).  A
+ * polygon entered before its light's map was set (or set again) casts no
+ * shadow into it and receives none from that light.  stp_set_view removes
+ * every map: the maps' transform starts from view coordinates.  Deleting a
+ * segment does not take its polygons out of the maps.  The maps must stay
+ * valid until stp_render returns.
+ *
+ * Receivers: polygons entered with shading on by stp_polygon or
+ * stp_polygon_smooth, in a segment whose copy of the light (COPY-LIGHT)
+ * stands where the light stood when its map was set, get STP_OP_LIGHT_TERM
+ * records for the lights with a map whose term is > 0.  Caller-given shades
+ * (stp_polygon_vertex_shades) and shading off receive no shadow.  Lines
+ * neither cast nor receive.
+ *
+ * The test, per pixel of a receiver and per light with a record: the pixel
+ * centre's view point is recovered from its device position and the depth
+ * key interpolated over the polygon (perspective: z = 2^30 hither / key;
+ * parallel: z = -key), turned into the light's frame and projected into the
+ * map.  A point outside the map's pyramid or nearer the light than `near`
+ * is lit (the map must cover the receivers).  Otherwise, with q_p its own
+ * depth (8 more fractional bits) and m the texel it falls in, it is hidden
+ * from the light when m != 0 and m > q_p + bias, where
+ *   bias = min(b, max(1, q_p / 8)),  b = 1 + |dq/du| + |dq/dv|,
+ * b computed at entry from the receiver's own projection into the map (its
+ * depth slope over one texel) and kept in its record.  Why: a texel holds
+ * the depth at its centre, up to half a texel away from the point in u and
+ * in v, so a lit surface's own texel can exceed q_p by half that slope plus
+ * rounding: b covers twice that, against shadow acne.  The cap q_p / 8 (an
+ * occluder must be about 11% nearer the light than the point) bounds the
+ * light that leaks under casters for receivers almost edge-on to the light,
+ * whose slope is huge (they get little of its light anyway).
+ *
+ * A hidden pixel loses that light's term:
+ *   flat grey polygons: s = min(1, BRIGHT (ambient part + sum of the terms
+ *   of the lights that reach it)) -> INTENSITY -> the usual output
+ *   (halftone, grey, style, transparency blend), exactly;
+ *   colour polygons (each channel) and smooth polygons (the interpolated
+ *   shade): scaled by that shade over the polygon's full flat grey shade,
+ *   an approximation (exact for one white light without highlight).
+ * A pixel that every light reaches is painted as without shadows. */
+
+/* Where a shadow map looks: see above.  near > 0 also sets the depth
+ * resolution: q = 65535 near / z_l, so one unit of q is z_l^2 / (65535 near)
+ * deep; points farther than 65535 near all get q = 1 (never hidden). */
+typedef struct stp_shadow_view {
+    stp_vec3 target;     /* world point on the map's axis */
+    stp_fix fov_degrees; /* full angle across the shorter side, (0, 180) */
+    stp_fix near;        /* distance of the near plane from the light, > 0 */
+} stp_shadow_view;
+
+/* Set (and clear) light `light`'s shadow map: depth holds count >=
+ * width * height entries; width, height 1..32767.  The light's position is
+ * the current lighting's (stp_set_light / stp_set_lighting before this
+ * call).  view NULL: target = the view's look-at point, fov 90 degrees,
+ * near = |target - light| / 16.  To cover a scene of bounding sphere
+ * (c, radius) from a light at distance d > radius of c: target c,
+ * fov = 2 asin(radius / d) and a margin, near a little under d - radius
+ * (tools/shadows_setup.c does this).  Errors: STP_ERR_ARG (r or depth NULL,
+ * light outside 0..count-1 of the current lighting, a size out of range),
+ * STP_ERR_MEMORY (count < width * height), STP_ERR_VIEW (target at the
+ * light, fov outside (0, 180), near <= 0), STP_ERR_UNSUPPORTED without
+ * STP_WITH_SHADOWS. */
+int stp_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count, uint32_t width,
+                       uint32_t height, const stp_shadow_view *view);
+
+/* Forget light `light`'s map (polygons entered next neither cast into it nor
+ * receive its shadow; records already entered are ignored).  STP_ERR_ARG
+ * for a light outside 0..STP_MAX_LIGHTS-1; STP_OK without STP_WITH_SHADOWS. */
+int stp_remove_shadow_map(stp_renderer *r, int light);
 
 /* Instructions in use and capacity of the display file. */
 uint32_t stp_display_file_used(const stp_renderer *r);

@@ -84,6 +84,27 @@ stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *materi
                         stp_vec3 normal, stp_vec3 point, stp_vec3 eye, int parallel,
                         stp_vec3 parallel_dir);
 
+#if STP_WITH_SHADOWS
+/* stp_shade_point with its parts kept apart, for shadows (render.h,
+ * stp_set_shadow_map): *ambient = B*R and terms[j] (STP_MAX_LIGHTS entries)
+ * = P_j*(R*(N.L_j) + Ks*D*G*F/(N.E))/(C + U_j), saturated to stp_fix, for
+ * each light j that reaches the face, 0 for the others (N.L_j <= 0, j beyond
+ * the count, every light of a back face).  Returns the same shade as
+ * stp_shade_point, which is stp_shade_combine(BRIGHT, *ambient, terms,
+ * STP_MAX_LIGHTS, all ones). */
+stp_fix stp_shade_point_terms(const stp_lighting *lighting, const stp_material *material,
+                              stp_vec3 normal, stp_vec3 point, stp_vec3 eye, int parallel,
+                              stp_vec3 parallel_dir, stp_fix *ambient, stp_fix terms[STP_MAX_LIGHTS]);
+
+/* The shade of a point from its parts, with only the lights whose bit is set
+ * in lit (bit j: terms[j], j < count, j < 32):
+ * min(1, brightness * (ambient + sum of those terms)), clamped to [0, 1], in
+ * stp_shade_point's order of operations (the sum formed in 64 bits and
+ * saturated once, then BRIGHT). */
+stp_fix stp_shade_combine(stp_fix brightness, stp_fix ambient, const stp_fix *terms, int count,
+                          uint32_t lit);
+#endif
+
 /* Colour shading (10.45): the shade of each channel c = 0, 1, 2 (red, green,
  * blue) into out[c], as stp_shade_point with R_c = R * material colour[c] and
  * P_j,c = P_j * light j's colour[c].  The specular share is not tinted by the
