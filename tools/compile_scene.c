@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "options.h"
 #include "scene_util.h"
 
 /* The view, lighting and materials come from stp_tool_setup and
@@ -371,27 +372,8 @@ static void usage(FILE *to)
             "  -o, --output FILE        the C source to write (required)\n"
             "      --header FILE        the configuration header (default: OUT without .c,\n"
             "                           plus _config.h)\n"
-            "  -s, --size WxH           device size in pixels (default 128x64)\n"
-            "  -l, --levels N           INTENSITY levels, 2..256 (default 16)\n"
-            "  -d, --dither CELL        bayer2, bayer4 (default), bayer8, seed2x2, pattern2x2,\n"
-            "                           or user:W:H:t,t,...\n"
-            "      --spacing KIND       linear (default), exponential, cubic\n"
-            "  -g, --gamma G            gamma of the device table (default 1)\n"
-            "      --gamma-k K          k of the gamma table (default 1)\n"
-            "      --hidden METHOD      zbuffer (default), painter or none\n"
-            "      --backface           remove back faces\n"
-            "      --no-shading         fill each polygon with its material's reflectivity\n"
-            "      --light X,Y,Z        a light (repeatable, up to %d); replaces the scene's\n"
-            "      --bright B           overall brightness (default 1)\n"
-            "      --ambient B          background light share (default 0.2)\n"
-            "      --attenuation C      C of 1/(C+U) (default 1)\n"
-            "      --raw-power          power 1-B for every light\n"
-            "      --parallel           parallel projection\n"
-            "      --fov DEGREES        field of view (default: the scene's, else 45)\n"
-            "      --slices N           sphere/cone slices (default 16)\n"
-            "      --stacks N           sphere stacks (default 8)\n"
-            "  -h, --help               this help\n",
-            STP_MAX_LIGHTS);
+            "  -h, --help               this help\n");
+    stp_tool_options_help(to);
 }
 
 static int fail(const char *fmt, ...)
@@ -405,89 +387,6 @@ static int fail(const char *fmt, ...)
     return 1;
 }
 
-static int parse_int(const char *s, int lo, int hi, int *v)
-{
-    char *end;
-    long l;
-    errno = 0;
-    l = strtol(s, &end, 10);
-    if (errno || end == s || *end || l < lo || l > hi)
-        return -1;
-    *v = (int)l;
-    return 0;
-}
-
-static int parse_double(const char *s, double *v)
-{
-    char *end;
-    double d;
-    errno = 0;
-    d = strtod(s, &end);
-    if (errno || end == s || *end || !isfinite(d))
-        return -1;
-    *v = d;
-    return 0;
-}
-
-/* user:W:H:t,t,... */
-static int parse_user_cell(const char *s, stp_tool_options *opt)
-{
-    int w, h, n = 0, t;
-    const char *p = s;
-    char *end;
-    long l;
-    l = strtol(p, &end, 10);
-    if (end == p || *end != ':' || l < 1 || l > STP_CELL_MAX)
-        return -1;
-    w = (int)l;
-    p = end + 1;
-    l = strtol(p, &end, 10);
-    if (end == p || *end != ':' || l < 1 || l > STP_CELL_MAX)
-        return -1;
-    h = (int)l;
-    p = end + 1;
-    for (;;) {
-        l = strtol(p, &end, 10);
-        if (end == p || l < 0 || l > 255 || n >= w * h)
-            return -1;
-        t = (int)l;
-        opt->user_cell[n++] = (unsigned char)t;
-        if (*end == '\0')
-            break;
-        if (*end != ',')
-            return -1;
-        p = end + 1;
-    }
-    if (n != w * h)
-        return -1;
-    opt->user_cell_w = w;
-    opt->user_cell_h = h;
-    opt->dither = STP_TOOL_DITHER_USER;
-    return 0;
-}
-
-static int parse_dither(const char *s, stp_tool_options *opt)
-{
-    static const struct {
-        const char *name;
-        stp_tool_dither kind;
-    } cells[] = {{"bayer2", STP_TOOL_DITHER_BAYER2}, {"bayer4", STP_TOOL_DITHER_BAYER4},
-                 {"bayer8", STP_TOOL_DITHER_BAYER8}, {"seed2x2", STP_TOOL_DITHER_SEED2X2},
-                 {"pattern2x2", STP_TOOL_DITHER_PATTERN2X2}};
-    size_t i;
-    for (i = 0; i < sizeof cells / sizeof cells[0]; i++) {
-        if (!strcmp(s, cells[i].name)) {
-            opt->dither = cells[i].kind;
-            return 0;
-        }
-    }
-    if (!strncmp(s, "user:", 5))
-        return parse_user_cell(s + 5, opt);
-    return -1;
-}
-
-/* Write to path via a temporary file renamed into place, so a build never
- * sees half a file after a failure. */
 static FILE *open_tmp(const char *path, char *tmp, size_t tmplen)
 {
     if ((size_t)snprintf(tmp, tmplen, "%s.tmp", path) >= tmplen)
@@ -495,28 +394,15 @@ static FILE *open_tmp(const char *path, char *tmp, size_t tmplen)
     return fopen(tmp, "w");
 }
 
-enum {
-    OPT_HEADER = 256, OPT_SPACING, OPT_GAMMA_K, OPT_HIDDEN, OPT_BACKFACE, OPT_NO_SHADING,
-    OPT_LIGHT, OPT_BRIGHT, OPT_AMBIENT, OPT_ATTEN, OPT_RAW_POWER, OPT_PARALLEL, OPT_FOV,
-    OPT_SLICES, OPT_STACKS
-};
+enum { OPT_HEADER = STP_TOOL_OPT_COMMAND };
 
 int stp_tool_compile_main(int argc, char **argv)
 {
-    static const struct option longs[] = {
-        {"output", required_argument, 0, 'o'}, {"header", required_argument, 0, OPT_HEADER},
-        {"size", required_argument, 0, 's'}, {"levels", required_argument, 0, 'l'},
-        {"dither", required_argument, 0, 'd'}, {"spacing", required_argument, 0, OPT_SPACING},
-        {"gamma", required_argument, 0, 'g'}, {"gamma-k", required_argument, 0, OPT_GAMMA_K},
-        {"hidden", required_argument, 0, OPT_HIDDEN}, {"backface", no_argument, 0, OPT_BACKFACE},
-        {"no-shading", no_argument, 0, OPT_NO_SHADING},
-        {"light", required_argument, 0, OPT_LIGHT}, {"bright", required_argument, 0, OPT_BRIGHT},
-        {"ambient", required_argument, 0, OPT_AMBIENT},
-        {"attenuation", required_argument, 0, OPT_ATTEN},
-        {"raw-power", no_argument, 0, OPT_RAW_POWER}, {"parallel", no_argument, 0, OPT_PARALLEL},
-        {"fov", required_argument, 0, OPT_FOV}, {"slices", required_argument, 0, OPT_SLICES},
-        {"stacks", required_argument, 0, OPT_STACKS}, {"help", no_argument, 0, 'h'},
-        {0, 0, 0, 0}};
+    static const struct option own[] = {{"output", required_argument, 0, 'o'},
+                                        {"header", required_argument, 0, OPT_HEADER},
+                                        {"help", no_argument, 0, 'h'},
+                                        {0, 0, 0, 0}};
+    struct option longs[64];
     stp_tool_options opt;
     stp_scene_options sopt;
     stp_scene scene;
@@ -528,96 +414,17 @@ int stp_tool_compile_main(int argc, char **argv)
     stp_tool_options_default(&opt);
     stp_scene_options_default(&sopt);
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:s:l:d:g:h", longs, 0)) != -1) {
+    if (stp_tool_long_options(longs, sizeof longs / sizeof longs[0], own) != 0)
+        return fail("internal: option table too small");
+    while ((c = getopt_long(argc, argv, STP_TOOL_SHORT_OPTIONS "o:h", longs, 0)) != -1) {
+        int applied = stp_tool_apply_option(c, optarg, &opt, &sopt, err, sizeof err);
+        if (applied < 0)
+            return fail("%s", err);
+        if (applied)
+            continue;
         switch (c) {
         case 'o': c_path = optarg; break;
         case OPT_HEADER: h_path = optarg; break;
-        case 's': {
-            int w, h;
-            char extra;
-            if (sscanf(optarg, "%dx%d%c", &w, &h, &extra) != 2 || w < 1 || h < 1 || w > 32767 ||
-                h > 32767)
-                return fail("bad --size '%s' (want WxH, 1..32767 each)", optarg);
-            opt.width = w;
-            opt.height = h;
-            break;
-        }
-        case 'l':
-            if (parse_int(optarg, 2, 256, &opt.levels))
-                return fail("bad --levels '%s' (2..256)", optarg);
-            break;
-        case 'd':
-            if (parse_dither(optarg, &opt))
-                return fail("bad --dither '%s'", optarg);
-            break;
-        case OPT_SPACING:
-            if (!strcmp(optarg, "linear"))
-                opt.spacing = STP_SPACING_LINEAR;
-            else if (!strcmp(optarg, "exponential"))
-                opt.spacing = STP_SPACING_EXPONENTIAL;
-            else if (!strcmp(optarg, "cubic"))
-                opt.spacing = STP_SPACING_CUBIC;
-            else
-                return fail("bad --spacing '%s'", optarg);
-            break;
-        case 'g':
-            if (parse_double(optarg, &opt.gamma) || opt.gamma <= 0)
-                return fail("bad --gamma '%s' (> 0)", optarg);
-            break;
-        case OPT_GAMMA_K:
-            if (parse_double(optarg, &opt.gamma_k) || opt.gamma_k <= 0)
-                return fail("bad --gamma-k '%s' (> 0)", optarg);
-            break;
-        case OPT_HIDDEN:
-            if (!strcmp(optarg, "zbuffer"))
-                opt.hidden = STP_HIDDEN_ZBUFFER;
-            else if (!strcmp(optarg, "painter"))
-                opt.hidden = STP_HIDDEN_PAINTER;
-            else if (!strcmp(optarg, "none"))
-                opt.hidden = STP_HIDDEN_NONE;
-            else
-                return fail("bad --hidden '%s' (zbuffer, painter, none)", optarg);
-            break;
-        case OPT_BACKFACE: opt.backface_removal = 1; break;
-        case OPT_NO_SHADING: opt.shading = 0; break;
-        case OPT_LIGHT: {
-            stp_scene_vec3 pt;
-            char extra;
-            if (opt.light_count >= STP_MAX_LIGHTS)
-                return fail("too many --light options");
-            if (sscanf(optarg, "%lf,%lf,%lf%c", &pt.x, &pt.y, &pt.z, &extra) != 3 ||
-                !isfinite(pt.x) || !isfinite(pt.y) || !isfinite(pt.z))
-                return fail("bad --light '%s' (want X,Y,Z)", optarg);
-            opt.lights[opt.light_count++] = pt;
-            break;
-        }
-        case OPT_BRIGHT:
-            if (parse_double(optarg, &opt.brightness) || opt.brightness < 0)
-                return fail("bad --bright '%s' (>= 0)", optarg);
-            break;
-        case OPT_AMBIENT:
-            if (parse_double(optarg, &opt.background) || opt.background < 0 || opt.background > 1)
-                return fail("bad --ambient '%s' (0..1)", optarg);
-            break;
-        case OPT_ATTEN:
-            if (parse_double(optarg, &opt.attenuation_c) || opt.attenuation_c <= 0)
-                return fail("bad --attenuation '%s' (> 0)", optarg);
-            break;
-        case OPT_RAW_POWER: opt.auto_power = 0; break;
-        case OPT_PARALLEL: opt.perspective = 0; break;
-        case OPT_FOV:
-            if (parse_double(optarg, &opt.fov) || opt.fov <= 0 || opt.fov >= 180)
-                return fail("bad --fov '%s' (0..180)", optarg);
-            break;
-        case OPT_SLICES:
-            if (parse_int(optarg, 3, 1024, &sopt.sphere_slices))
-                return fail("bad --slices '%s' (3..1024)", optarg);
-            sopt.cone_slices = sopt.sphere_slices;
-            break;
-        case OPT_STACKS:
-            if (parse_int(optarg, 2, 1024, &sopt.sphere_stacks))
-                return fail("bad --stacks '%s' (2..1024)", optarg);
-            break;
         case 'h': usage(stdout); return 0;
         default: usage(stderr); return 2;
         }

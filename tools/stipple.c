@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "compile_scene.h"
+#include "options.h"
 #include "render_scene.h"
 #include "scene.h"
 #include "stp_posix.h"
@@ -37,44 +38,15 @@ static void usage_render(FILE *to)
             "\n"
             "Renders SCENE (.nff, .obj, .off) with the fixed-point core.  OUT's extension picks\n"
             "the output: .pbm (halftoned 1-bit), .pgm (grey), .ppm (colour file of the grey\n"
-            "picture), .txt (line-printer text, one character per pixel); '-' writes to stdout\n"
-            "in the --format given (default txt).\n"
+            "picture, or of the colour one with --color), .txt (line-printer text, one\n"
+            "character per pixel); '-' writes to stdout in the --format given (default txt).\n"
             "\n"
             "  -o, --output FILE        where to write (required)\n"
-            "  -s, --size WxH           device size in pixels (default 128x64)\n"
             "      --format KIND        pbm, plain-pbm, pgm, ppm or txt (default: from OUT)\n"
-            "  -l, --levels N           INTENSITY levels, 2..256 (default 16)\n"
-            "  -d, --dither CELL        bayer2, bayer4 (default), bayer8, seed2x2, pattern2x2,\n"
-            "                           or user:W:H:t,t,... (thresholds 0..255, row-major)\n"
-            "      --spacing KIND       threshold spacing of Bayer cells: linear (default),\n"
-            "                           exponential, cubic\n"
-            "  -g, --gamma G            gamma of the device table V = (I/k)^(1/G) (default 1)\n"
-            "      --gamma-k K          k of the gamma table (default 1)\n"
-            "      --hidden METHOD      zbuffer (default), painter or none\n"
-            "      --backface           remove back faces (for closed meshes)\n"
-            "      --no-shading         fill each polygon with its material's reflectivity\n"
-            "      --color              colour shading (10.45) with the scene's colours; with a\n"
-            "                           .ppm output the picture is in colour (default: grey)\n"
-            "      --transparent        NFF's T makes surfaces transparent: v = v_r + t v_t,\n"
-            "                           t from T/2 (grazing) to T (facing); best with\n"
-            "                           --hidden painter (back to front)\n"
-            "      --smooth             Gouraud shading from vertex normals (NFF pp, OBJ vn;\n"
-            "                           averaged face normals where the file has none)\n"
             "  -b, --band ROWS          render in bands of ROWS rows (default: whole frame)\n"
-            "      --light X,Y,Z        a light (repeatable, up to %d); replaces the scene's\n"
-            "      --bright B           overall brightness BRIGHT (default 1)\n"
-            "      --ambient B          background (indirect) light share (default 0.2)\n"
-            "      --attenuation C      C of the distance term 1/(C+U) (default 1)\n"
-            "      --raw-power          use power 1-B for every light (the seed's SET-LIGHT)\n"
-            "                           instead of cancelling attenuation at the scene centre\n"
-            "      --parallel           parallel instead of perspective projection\n"
-            "      --fov DEGREES        field of view over the shorter side (default: the\n"
-            "                           scene's, else 45)\n"
-            "      --slices N           sphere/cone slices for tessellation (default 16)\n"
-            "      --stacks N           sphere stacks (default 8)\n"
             "      --stats              print display-file and memory figures on stderr\n"
-            "  -h, --help               this help\n",
-            STP_MAX_LIGHTS);
+            "  -h, --help               this help\n");
+    stp_tool_options_help(to);
 }
 
 static void usage_dither(FILE *to)
@@ -106,89 +78,6 @@ static int fail(const char *fmt, ...)
     return 1;
 }
 
-static int parse_int(const char *s, int lo, int hi, int *out)
-{
-    char *end;
-    long v;
-    errno = 0;
-    v = strtol(s, &end, 10);
-    if (errno || end == s || *end || v < lo || v > hi)
-        return -1;
-    *out = (int)v;
-    return 0;
-}
-
-static int parse_double(const char *s, double *out)
-{
-    char *end;
-    double v;
-    errno = 0;
-    v = strtod(s, &end);
-    if (errno || end == s || *end || !isfinite(v))
-        return -1;
-    *out = v;
-    return 0;
-}
-
-static int parse_dither(const char *s, stp_tool_options *opt)
-{
-    if (!strcmp(s, "bayer2"))
-        opt->dither = STP_TOOL_DITHER_BAYER2;
-    else if (!strcmp(s, "bayer4"))
-        opt->dither = STP_TOOL_DITHER_BAYER4;
-    else if (!strcmp(s, "bayer8"))
-        opt->dither = STP_TOOL_DITHER_BAYER8;
-    else if (!strcmp(s, "seed2x2"))
-        opt->dither = STP_TOOL_DITHER_SEED2X2;
-    else if (!strcmp(s, "pattern2x2"))
-        opt->dither = STP_TOOL_DITHER_PATTERN2X2;
-    else if (!strncmp(s, "user:", 5)) {
-        int w, h, i, n;
-        char *copy = strdup(s + 5), *tok, *save = 0;
-        if (!copy)
-            return -1;
-        tok = strtok_r(copy, ":", &save);
-        if (!tok || parse_int(tok, 1, STP_CELL_MAX, &w)) {
-            free(copy);
-            return -1;
-        }
-        tok = strtok_r(0, ":", &save);
-        if (!tok || parse_int(tok, 1, STP_CELL_MAX, &h)) {
-            free(copy);
-            return -1;
-        }
-        n = 0;
-        for (tok = strtok_r(0, ",", &save); tok; tok = strtok_r(0, ",", &save)) {
-            if (n >= w * h || parse_int(tok, 0, 255, &i)) {
-                free(copy);
-                return -1;
-            }
-            opt->user_cell[n++] = (unsigned char)i;
-        }
-        free(copy);
-        if (n != w * h)
-            return -1;
-        opt->user_cell_w = w;
-        opt->user_cell_h = h;
-        opt->dither = STP_TOOL_DITHER_USER;
-    } else
-        return -1;
-    return 0;
-}
-
-static int parse_spacing(const char *s, stp_spacing *out)
-{
-    if (!strcmp(s, "linear"))
-        *out = STP_SPACING_LINEAR;
-    else if (!strcmp(s, "exponential"))
-        *out = STP_SPACING_EXPONENTIAL;
-    else if (!strcmp(s, "cubic"))
-        *out = STP_SPACING_CUBIC;
-    else
-        return -1;
-    return 0;
-}
-
 static int parse_kind(const char *s, stp_posix_file_kind *kind)
 {
     if (!strcmp(s, "pbm"))
@@ -217,29 +106,15 @@ static stp_pixel_format format_for_kind(stp_posix_file_kind kind)
     }
 }
 
-enum {
-    OPT_FORMAT = 256, OPT_SPACING, OPT_GAMMA_K, OPT_HIDDEN, OPT_BACKFACE, OPT_NO_SHADING,
-    OPT_LIGHT, OPT_BRIGHT, OPT_AMBIENT, OPT_ATTEN, OPT_RAW_POWER, OPT_PARALLEL, OPT_FOV,
-    OPT_SLICES, OPT_STACKS, OPT_STATS, OPT_PLAIN, OPT_SMOOTH, OPT_COLOUR, OPT_TRANSPARENT
-};
+enum { OPT_FORMAT = STP_TOOL_OPT_COMMAND, OPT_STATS, OPT_PLAIN };
 
 static int cmd_render(int argc, char **argv)
 {
-    static const struct option longs[] = {
-        {"output", required_argument, 0, 'o'}, {"size", required_argument, 0, 's'},
-        {"format", required_argument, 0, OPT_FORMAT}, {"levels", required_argument, 0, 'l'},
-        {"dither", required_argument, 0, 'd'}, {"spacing", required_argument, 0, OPT_SPACING},
-        {"gamma", required_argument, 0, 'g'}, {"gamma-k", required_argument, 0, OPT_GAMMA_K},
-        {"hidden", required_argument, 0, OPT_HIDDEN}, {"backface", no_argument, 0, OPT_BACKFACE},
-        {"no-shading", no_argument, 0, OPT_NO_SHADING}, {"smooth", no_argument, 0, OPT_SMOOTH},
-        {"color", no_argument, 0, OPT_COLOUR}, {"transparent", no_argument, 0, OPT_TRANSPARENT}, {"colour", no_argument, 0, OPT_COLOUR}, {"band", required_argument, 0, 'b'},
-        {"light", required_argument, 0, OPT_LIGHT}, {"bright", required_argument, 0, OPT_BRIGHT},
-        {"ambient", required_argument, 0, OPT_AMBIENT},
-        {"attenuation", required_argument, 0, OPT_ATTEN},
-        {"raw-power", no_argument, 0, OPT_RAW_POWER}, {"parallel", no_argument, 0, OPT_PARALLEL},
-        {"fov", required_argument, 0, OPT_FOV}, {"slices", required_argument, 0, OPT_SLICES},
-        {"stacks", required_argument, 0, OPT_STACKS}, {"stats", no_argument, 0, OPT_STATS},
-        {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
+    static const struct option own[] = {
+        {"output", required_argument, 0, 'o'}, {"format", required_argument, 0, OPT_FORMAT},
+        {"band", required_argument, 0, 'b'},   {"stats", no_argument, 0, OPT_STATS},
+        {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
+    struct option longs[64];
     stp_tool_options opt;
     stp_scene_options sopt;
     stp_scene scene;
@@ -253,100 +128,24 @@ static int cmd_render(int argc, char **argv)
 
     stp_tool_options_default(&opt);
     stp_scene_options_default(&sopt);
+    if (stp_tool_long_options(longs, sizeof longs / sizeof longs[0], own) != 0)
+        return fail("internal: option table too small");
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:s:l:d:g:b:h", longs, 0)) != -1) {
+    while ((c = getopt_long(argc, argv, STP_TOOL_SHORT_OPTIONS "o:b:h", longs, 0)) != -1) {
+        int applied = stp_tool_apply_option(c, optarg, &opt, &sopt, err, sizeof err);
+        if (applied < 0)
+            return fail("%s", err);
+        if (applied)
+            continue;
         switch (c) {
         case 'o': out_path = optarg; break;
-        case 's': {
-            int w, h;
-            char extra;
-            if (sscanf(optarg, "%dx%d%c", &w, &h, &extra) != 2 || w < 1 || h < 1 || w > 32767 ||
-                h > 32767)
-                return fail("bad --size '%s' (want WxH, 1..32767 each)", optarg);
-            opt.width = w;
-            opt.height = h;
-            break;
-        }
         case OPT_FORMAT:
             if (parse_kind(optarg, &kind))
                 return fail("bad --format '%s' (pbm, plain-pbm, pgm, ppm, txt)", optarg);
             break;
-        case 'l':
-            if (parse_int(optarg, 2, 256, &opt.levels))
-                return fail("bad --levels '%s' (2..256)", optarg);
-            break;
-        case 'd':
-            if (parse_dither(optarg, &opt))
-                return fail("bad --dither '%s'", optarg);
-            break;
-        case OPT_SPACING:
-            if (parse_spacing(optarg, &opt.spacing))
-                return fail("bad --spacing '%s'", optarg);
-            break;
-        case 'g':
-            if (parse_double(optarg, &opt.gamma) || opt.gamma <= 0)
-                return fail("bad --gamma '%s' (> 0)", optarg);
-            break;
-        case OPT_GAMMA_K:
-            if (parse_double(optarg, &opt.gamma_k) || opt.gamma_k <= 0)
-                return fail("bad --gamma-k '%s' (> 0)", optarg);
-            break;
-        case OPT_HIDDEN:
-            if (!strcmp(optarg, "zbuffer"))
-                opt.hidden = STP_HIDDEN_ZBUFFER;
-            else if (!strcmp(optarg, "painter"))
-                opt.hidden = STP_HIDDEN_PAINTER;
-            else if (!strcmp(optarg, "none"))
-                opt.hidden = STP_HIDDEN_NONE;
-            else
-                return fail("bad --hidden '%s' (zbuffer, painter, none)", optarg);
-            break;
-        case OPT_BACKFACE: opt.backface_removal = 1; break;
-        case OPT_NO_SHADING: opt.shading = 0; break;
-        case OPT_SMOOTH: opt.smooth = 1; break;
-        case OPT_COLOUR: opt.colour = 1; break;
-        case OPT_TRANSPARENT: opt.transparency = 1; break;
         case 'b':
-            if (parse_int(optarg, 1, 32767, &opt.band_rows))
+            if (stp_tool_parse_int(optarg, 1, 32767, &opt.band_rows))
                 return fail("bad --band '%s' (1..32767)", optarg);
-            break;
-        case OPT_LIGHT: {
-            stp_scene_vec3 p;
-            char extra;
-            if (opt.light_count >= STP_MAX_LIGHTS)
-                return fail("too many --light options");
-            if (sscanf(optarg, "%lf,%lf,%lf%c", &p.x, &p.y, &p.z, &extra) != 3 || !isfinite(p.x) ||
-                !isfinite(p.y) || !isfinite(p.z))
-                return fail("bad --light '%s' (want X,Y,Z)", optarg);
-            opt.lights[opt.light_count++] = p;
-            break;
-        }
-        case OPT_BRIGHT:
-            if (parse_double(optarg, &opt.brightness) || opt.brightness < 0)
-                return fail("bad --bright '%s' (>= 0)", optarg);
-            break;
-        case OPT_AMBIENT:
-            if (parse_double(optarg, &opt.background) || opt.background < 0 || opt.background > 1)
-                return fail("bad --ambient '%s' (0..1)", optarg);
-            break;
-        case OPT_ATTEN:
-            if (parse_double(optarg, &opt.attenuation_c) || opt.attenuation_c <= 0)
-                return fail("bad --attenuation '%s' (> 0)", optarg);
-            break;
-        case OPT_RAW_POWER: opt.auto_power = 0; break;
-        case OPT_PARALLEL: opt.perspective = 0; break;
-        case OPT_FOV:
-            if (parse_double(optarg, &opt.fov) || opt.fov <= 0 || opt.fov >= 180)
-                return fail("bad --fov '%s' (0..180)", optarg);
-            break;
-        case OPT_SLICES:
-            if (parse_int(optarg, 3, 1024, &sopt.sphere_slices))
-                return fail("bad --slices '%s' (3..1024)", optarg);
-            sopt.cone_slices = sopt.sphere_slices;
-            break;
-        case OPT_STACKS:
-            if (parse_int(optarg, 2, 1024, &sopt.sphere_stacks))
-                return fail("bad --stacks '%s' (2..1024)", optarg);
             break;
         case OPT_STATS: show_stats = 1; break;
         case 'h': usage_render(stdout); return 0;
@@ -407,8 +206,8 @@ static int cmd_dither(int argc, char **argv)
 {
     static const struct option longs[] = {
         {"output", required_argument, 0, 'o'}, {"plain", no_argument, 0, OPT_PLAIN},
-        {"dither", required_argument, 0, 'd'}, {"spacing", required_argument, 0, OPT_SPACING},
-        {"gamma", required_argument, 0, 'g'}, {"gamma-k", required_argument, 0, OPT_GAMMA_K},
+        {"dither", required_argument, 0, 'd'}, {"spacing", required_argument, 0, STP_TOOL_OPT_SPACING},
+        {"gamma", required_argument, 0, 'g'}, {"gamma-k", required_argument, 0, STP_TOOL_OPT_GAMMA_K},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     stp_tool_options opt;
     stp_posix_image img;
@@ -427,23 +226,15 @@ static int cmd_dither(int argc, char **argv)
         case 'o': out_path = optarg; break;
         case OPT_PLAIN: plain = 1; break;
         case 'd':
-            if (parse_dither(optarg, &opt))
-                return fail("bad --dither '%s'", optarg);
-            break;
-        case OPT_SPACING:
-            if (parse_spacing(optarg, &opt.spacing))
-                return fail("bad --spacing '%s'", optarg);
-            break;
+        case STP_TOOL_OPT_SPACING:
         case 'g':
-            if (parse_double(optarg, &opt.gamma) || opt.gamma <= 0)
-                return fail("bad --gamma '%s' (> 0)", optarg);
-            use_gamma = 1;
+        case STP_TOOL_OPT_GAMMA_K: {
+            stp_scene_options unused;
+            if (stp_tool_apply_option(c, optarg, &opt, &unused, err, sizeof err) < 0)
+                return fail("%s", err);
+            use_gamma |= c == 'g' || c == STP_TOOL_OPT_GAMMA_K;
             break;
-        case OPT_GAMMA_K:
-            if (parse_double(optarg, &opt.gamma_k) || opt.gamma_k <= 0)
-                return fail("bad --gamma-k '%s' (> 0)", optarg);
-            use_gamma = 1;
-            break;
+        }
         case 'h': usage_dither(stdout); return 0;
         default: usage_dither(stderr); return 2;
         }

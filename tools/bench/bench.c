@@ -246,12 +246,6 @@ typedef struct core_scene {
     int opened;
 } core_scene;
 
-static double dist3(stp_scene_vec3 a, stp_scene_vec3 b)
-{
-    double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
-    return sqrt(dx * dx + dy * dy + dz * dz);
-}
-
 static stp_vec3 sfix3(stp_scene_vec3 v)
 {
     stp_vec3 r;
@@ -274,77 +268,15 @@ static void core_scene_free(core_scene *cs)
 static int core_scene_prepare(core_scene *cs, const stp_scene *scene, const stp_tool_options *opt,
                               char *err, size_t err_size)
 {
-    stp_scene_vec3 lo, hi, centre;
-    double radius;
     stp_view view;
     stp_lighting lighting;
-    stp_scene_vec3 light_pos[STP_MAX_LIGHTS];
-    int light_count, j, status;
+    int status;
     size_t i, capacity = 16;
 
     memset(cs, 0, sizeof *cs);
-    if (stp_scene_bounds(scene, &lo, &hi) != 0) {
-        snprintf(err, err_size, "no polygons");
+    /* the view and lights stp_tool_render uses */
+    if (stp_tool_setup(scene, opt, &view, &lighting, err, err_size) != 0)
         return -1;
-    }
-    centre.x = (lo.x + hi.x) / 2;
-    centre.y = (lo.y + hi.y) / 2;
-    centre.z = (lo.z + hi.z) / 2;
-    radius = dist3(lo, hi) / 2;
-    if (radius <= 0)
-        radius = 1;
-    memset(&view, 0, sizeof view);
-    if (scene->has_view) {
-        view.from = sfix3(scene->from);
-        view.at = sfix3(scene->at);
-        view.up = sfix3(scene->up);
-        view.fov_degrees = stp_tool_fix(opt->fov > 0 ? opt->fov : scene->angle);
-        view.hither = stp_tool_fix(scene->hither > 0 ? scene->hither : 1e-3);
-    } else {
-        double fov = opt->fov > 0 ? opt->fov : 45.0;
-        double d = radius / sin(fov * 0.5 * 3.14159265358979323846 / 180.0) * 1.05;
-        stp_scene_vec3 from;
-        from.x = centre.x + d * 0.48;
-        from.y = centre.y + d * 0.40;
-        from.z = centre.z + d * 0.78;
-        view.from = sfix3(from);
-        view.at = sfix3(centre);
-        view.up.x = view.up.z = 0;
-        view.up.y = STP_FIX_ONE;
-        view.fov_degrees = stp_tool_fix(fov);
-        view.hither = stp_tool_fix(d * 1e-3);
-    }
-    if (view.hither <= 0)
-        view.hither = 1;
-    view.projection = opt->perspective ? STP_PERSPECTIVE : STP_PARALLEL;
-    view.window_half = stp_tool_fix(radius);
-    if (opt->light_count > 0) {
-        light_count = opt->light_count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : opt->light_count;
-        for (j = 0; j < light_count; j++)
-            light_pos[j] = opt->lights[j];
-    } else if (scene->light_count > 0) {
-        light_count = (int)(scene->light_count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : scene->light_count);
-        for (j = 0; j < light_count; j++)
-            light_pos[j] = scene->lights[j].position;
-    } else {
-        stp_scene_vec3 eye = scene->has_view ? scene->from : centre;
-        light_pos[0].x = eye.x - radius;
-        light_pos[0].y = eye.y + radius * 2;
-        light_pos[0].z = eye.z + radius * 3;
-        light_count = 1;
-    }
-    memset(&lighting, 0, sizeof lighting);
-    lighting.brightness = stp_tool_fix(opt->brightness);
-    lighting.background = stp_tool_fix(opt->background);
-    lighting.attenuation_c = stp_tool_fix(opt->attenuation_c);
-    lighting.count = light_count;
-    for (j = 0; j < light_count; j++) {
-        double power = 1.0 - opt->background;
-        if (opt->auto_power)
-            power *= (opt->attenuation_c + dist3(light_pos[j], centre)) / sqrt((double)light_count);
-        lighting.lights[j].position = sfix3(light_pos[j]);
-        lighting.lights[j].power = stp_tool_fix(power);
-    }
     for (i = 0; i < scene->polygon_count; i++)
         capacity += (size_t)scene->polygons[i].count + 6;
     cs->capacity = (uint32_t)capacity;
@@ -362,16 +294,8 @@ static int core_scene_prepare(core_scene *cs, const stp_scene *scene, const stp_
     for (i = 0; i <= scene->material_count; i++) {
         stp_material *m = &cs->materials[i];
         stp_material_default(m);
-        if (i < scene->material_count) {
-            /* render_scene.c's material_from_scene */
-            const stp_scene_material *sm = &scene->materials[i];
-            double lum = 0.30 * sm->color[0] + 0.59 * sm->color[1] + 0.11 * sm->color[2];
-            double refl = sm->kd * lum;
-            m->reflectivity = stp_tool_fix(refl < 0 ? 0 : (refl > 1 ? 1 : refl));
-            m->refraction = stp_tool_fix(sm->ior > 1.0 ? sm->ior : 10.0);
-            m->gloss = stp_tool_fix(sm->shine > 0 ? 2.0 / sm->shine : 10.0);
-            m->specular = stp_tool_fix(sm->ks < 0 ? 0 : sm->ks);
-        }
+        if (i < scene->material_count)
+            stp_tool_material(&scene->materials[i], opt->colour, m);
     }
     cs->levels = opt->levels;
     cs->r = stp_renderer_create(cs->rmem, stp_renderer_size(), cs->df, cs->capacity,

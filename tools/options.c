@@ -1,0 +1,275 @@
+/* Shared render options: see options.h. */
+#define _POSIX_C_SOURCE 200809L
+#include "options.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const struct option shared[] = {
+    {"size", required_argument, 0, 's'},
+    {"levels", required_argument, 0, 'l'},
+    {"dither", required_argument, 0, 'd'},
+    {"spacing", required_argument, 0, STP_TOOL_OPT_SPACING},
+    {"gamma", required_argument, 0, 'g'},
+    {"gamma-k", required_argument, 0, STP_TOOL_OPT_GAMMA_K},
+    {"hidden", required_argument, 0, STP_TOOL_OPT_HIDDEN},
+    {"backface", no_argument, 0, STP_TOOL_OPT_BACKFACE},
+    {"no-shading", no_argument, 0, STP_TOOL_OPT_NO_SHADING},
+    {"smooth", no_argument, 0, STP_TOOL_OPT_SMOOTH},
+    {"color", no_argument, 0, STP_TOOL_OPT_COLOUR},
+    {"colour", no_argument, 0, STP_TOOL_OPT_COLOUR},
+    {"transparent", no_argument, 0, STP_TOOL_OPT_TRANSPARENT},
+    {"light", required_argument, 0, STP_TOOL_OPT_LIGHT},
+    {"bright", required_argument, 0, STP_TOOL_OPT_BRIGHT},
+    {"ambient", required_argument, 0, STP_TOOL_OPT_AMBIENT},
+    {"attenuation", required_argument, 0, STP_TOOL_OPT_ATTEN},
+    {"raw-power", no_argument, 0, STP_TOOL_OPT_RAW_POWER},
+    {"parallel", no_argument, 0, STP_TOOL_OPT_PARALLEL},
+    {"fov", required_argument, 0, STP_TOOL_OPT_FOV},
+    {"slices", required_argument, 0, STP_TOOL_OPT_SLICES},
+    {"stacks", required_argument, 0, STP_TOOL_OPT_STACKS},
+};
+
+int stp_tool_long_options(struct option *out, size_t cap, const struct option *extra)
+{
+    size_t n = sizeof shared / sizeof shared[0], k = 0;
+    while (extra[k].name)
+        k++;
+    if (n + k + 1 > cap)
+        return -1;
+    memcpy(out, shared, sizeof shared);
+    memcpy(out + n, extra, sizeof *extra * (k + 1));
+    return 0;
+}
+
+int stp_tool_parse_int(const char *s, int lo, int hi, int *out)
+{
+    char *end;
+    long v;
+    errno = 0;
+    v = strtol(s, &end, 10);
+    if (errno || end == s || *end || v < lo || v > hi)
+        return -1;
+    *out = (int)v;
+    return 0;
+}
+
+int stp_tool_parse_double(const char *s, double *out)
+{
+    char *end;
+    double v;
+    errno = 0;
+    v = strtod(s, &end);
+    if (errno || end == s || *end || !isfinite(v))
+        return -1;
+    *out = v;
+    return 0;
+}
+
+int stp_tool_parse_dither(const char *s, stp_tool_options *opt)
+{
+    static const struct {
+        const char *name;
+        stp_tool_dither dither;
+    } names[] = {{"bayer2", STP_TOOL_DITHER_BAYER2},   {"bayer4", STP_TOOL_DITHER_BAYER4},
+                 {"bayer8", STP_TOOL_DITHER_BAYER8},   {"seed2x2", STP_TOOL_DITHER_SEED2X2},
+                 {"pattern2x2", STP_TOOL_DITHER_PATTERN2X2}};
+    size_t i;
+    int w, h, n = 0, t;
+    char *copy, *tok, *save = 0;
+    for (i = 0; i < sizeof names / sizeof names[0]; i++)
+        if (!strcmp(s, names[i].name)) {
+            opt->dither = names[i].dither;
+            return 0;
+        }
+    /* user:W:H:t,t,... (row-major thresholds) */
+    if (strncmp(s, "user:", 5) != 0 || !(copy = strdup(s + 5)))
+        return -1;
+    tok = strtok_r(copy, ":", &save);
+    if (!tok || stp_tool_parse_int(tok, 1, STP_CELL_MAX, &w))
+        goto bad;
+    tok = strtok_r(0, ":", &save);
+    if (!tok || stp_tool_parse_int(tok, 1, STP_CELL_MAX, &h))
+        goto bad;
+    for (tok = strtok_r(0, ",", &save); tok; tok = strtok_r(0, ",", &save)) {
+        if (n >= w * h || stp_tool_parse_int(tok, 0, 255, &t))
+            goto bad;
+        opt->user_cell[n++] = (unsigned char)t;
+    }
+    if (n != w * h)
+        goto bad;
+    free(copy);
+    opt->user_cell_w = w;
+    opt->user_cell_h = h;
+    opt->dither = STP_TOOL_DITHER_USER;
+    return 0;
+bad:
+    free(copy);
+    return -1;
+}
+
+int stp_tool_parse_spacing(const char *s, stp_spacing *out)
+{
+    if (!strcmp(s, "linear"))
+        *out = STP_SPACING_LINEAR;
+    else if (!strcmp(s, "exponential"))
+        *out = STP_SPACING_EXPONENTIAL;
+    else if (!strcmp(s, "cubic"))
+        *out = STP_SPACING_CUBIC;
+    else
+        return -1;
+    return 0;
+}
+
+/* Set *field from arg when it parses and lies in [lo, hi] (bounds inclusive
+ * unless open_lo / open_hi). */
+static int parse_range(const char *arg, double lo, int open_lo, double hi, int open_hi,
+                       double *field)
+{
+    double v;
+    if (stp_tool_parse_double(arg, &v) || v < lo || (open_lo && v == lo) || v > hi ||
+        (open_hi && v == hi))
+        return -1;
+    *field = v;
+    return 0;
+}
+
+int stp_tool_apply_option(int code, const char *arg, stp_tool_options *opt,
+                          stp_scene_options *sopt, char *err, size_t err_size)
+{
+    const char *what = 0;
+    switch (code) {
+    case 's': {
+        int w, h;
+        char extra;
+        if (sscanf(arg, "%dx%d%c", &w, &h, &extra) != 2 || w < 1 || h < 1 || w > 32767 || h > 32767) {
+            what = "--size (want WxH, 1..32767 each)";
+            break;
+        }
+        opt->width = w;
+        opt->height = h;
+        return 1;
+    }
+    case 'l':
+        if (stp_tool_parse_int(arg, 2, 256, &opt->levels))
+            what = "--levels (2..256)";
+        break;
+    case 'd':
+        if (stp_tool_parse_dither(arg, opt))
+            what = "--dither";
+        break;
+    case STP_TOOL_OPT_SPACING:
+        if (stp_tool_parse_spacing(arg, &opt->spacing))
+            what = "--spacing (linear, exponential, cubic)";
+        break;
+    case 'g':
+        if (parse_range(arg, 0, 1, 1e6, 0, &opt->gamma))
+            what = "--gamma (> 0)";
+        break;
+    case STP_TOOL_OPT_GAMMA_K:
+        if (parse_range(arg, 0, 1, 1e6, 0, &opt->gamma_k))
+            what = "--gamma-k (> 0)";
+        break;
+    case STP_TOOL_OPT_HIDDEN:
+        if (!strcmp(arg, "zbuffer"))
+            opt->hidden = STP_HIDDEN_ZBUFFER;
+        else if (!strcmp(arg, "painter"))
+            opt->hidden = STP_HIDDEN_PAINTER;
+        else if (!strcmp(arg, "none"))
+            opt->hidden = STP_HIDDEN_NONE;
+        else
+            what = "--hidden (zbuffer, painter, none)";
+        break;
+    case STP_TOOL_OPT_BACKFACE: opt->backface_removal = 1; break;
+    case STP_TOOL_OPT_NO_SHADING: opt->shading = 0; break;
+    case STP_TOOL_OPT_SMOOTH: opt->smooth = 1; break;
+    case STP_TOOL_OPT_COLOUR: opt->colour = 1; break;
+    case STP_TOOL_OPT_TRANSPARENT: opt->transparency = 1; break;
+    case STP_TOOL_OPT_LIGHT: {
+        stp_scene_vec3 p;
+        char extra;
+        if (opt->light_count >= STP_MAX_LIGHTS) {
+            what = "--light (too many)";
+            break;
+        }
+        if (sscanf(arg, "%lf,%lf,%lf%c", &p.x, &p.y, &p.z, &extra) != 3 || !isfinite(p.x) ||
+            !isfinite(p.y) || !isfinite(p.z)) {
+            what = "--light (want X,Y,Z)";
+            break;
+        }
+        opt->lights[opt->light_count++] = p;
+        return 1;
+    }
+    case STP_TOOL_OPT_BRIGHT:
+        if (parse_range(arg, 0, 0, 1e6, 0, &opt->brightness))
+            what = "--bright (>= 0)";
+        break;
+    case STP_TOOL_OPT_AMBIENT:
+        if (parse_range(arg, 0, 0, 1, 0, &opt->background))
+            what = "--ambient (0..1)";
+        break;
+    case STP_TOOL_OPT_ATTEN:
+        if (parse_range(arg, 0, 1, 1e6, 0, &opt->attenuation_c))
+            what = "--attenuation (> 0)";
+        break;
+    case STP_TOOL_OPT_RAW_POWER: opt->auto_power = 0; break;
+    case STP_TOOL_OPT_PARALLEL: opt->perspective = 0; break;
+    case STP_TOOL_OPT_FOV:
+        if (parse_range(arg, 0, 1, 180, 1, &opt->fov))
+            what = "--fov (0..180)";
+        break;
+    case STP_TOOL_OPT_SLICES:
+        if (stp_tool_parse_int(arg, 3, 1024, &sopt->sphere_slices))
+            what = "--slices (3..1024)";
+        else
+            sopt->cone_slices = sopt->sphere_slices;
+        break;
+    case STP_TOOL_OPT_STACKS:
+        if (stp_tool_parse_int(arg, 2, 1024, &sopt->sphere_stacks))
+            what = "--stacks (2..1024)";
+        break;
+    default: return 0;
+    }
+    if (what) {
+        snprintf(err, err_size, "bad %s: '%s'", what, arg ? arg : "");
+        return -1;
+    }
+    return 1;
+}
+
+void stp_tool_options_help(FILE *to)
+{
+    fprintf(to,
+            "  -s, --size WxH           device size in pixels (default 128x64)\n"
+            "  -l, --levels N           INTENSITY levels, 2..256 (default 16)\n"
+            "  -d, --dither CELL        bayer2, bayer4 (default), bayer8, seed2x2, pattern2x2,\n"
+            "                           or user:W:H:t,t,... (thresholds 0..255, row-major)\n"
+            "      --spacing KIND       threshold spacing of Bayer cells: linear (default),\n"
+            "                           exponential, cubic\n"
+            "  -g, --gamma G            gamma of the device table V = (I/k)^(1/G) (default 1)\n"
+            "      --gamma-k K          k of the gamma table (default 1)\n"
+            "      --hidden METHOD      zbuffer (default), painter or none\n"
+            "      --backface           remove back faces (for closed meshes)\n"
+            "      --no-shading         fill each polygon with its material's reflectivity\n"
+            "      --smooth             Gouraud shading from vertex normals (NFF pp, OBJ vn;\n"
+            "                           averaged face normals where the file has none)\n"
+            "      --color              colour shading (10.45) with the scene's colours; with a\n"
+            "                           .ppm output the picture is in colour (default: grey)\n"
+            "      --transparent        NFF's T makes surfaces transparent: v = v_r + t v_t,\n"
+            "                           t from T/2 (grazing) to T (facing); best with\n"
+            "                           --hidden painter (back to front)\n"
+            "      --light X,Y,Z        a light (repeatable, up to %d); replaces the scene's\n"
+            "      --bright B           overall brightness BRIGHT (default 1)\n"
+            "      --ambient B          background (indirect) light share (default 0.2)\n"
+            "      --attenuation C      C of the distance term 1/(C+U) (default 1)\n"
+            "      --raw-power          use power 1-B for every light (the seed's SET-LIGHT)\n"
+            "                           instead of cancelling attenuation at the scene centre\n"
+            "      --parallel           parallel instead of perspective projection\n"
+            "      --fov DEGREES        field of view over the shorter side (default: the\n"
+            "                           scene's, else 45)\n"
+            "      --slices N           sphere/cone slices for tessellation (default 16)\n"
+            "      --stacks N           sphere stacks (default 8)\n",
+            STP_MAX_LIGHTS);
+}

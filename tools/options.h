@@ -1,0 +1,62 @@
+/*
+ * Command-line options shared by the commands that render a scene (stipple
+ * render, stipple compile): one parser and one help text, so the two cannot
+ * drift apart.
+ */
+#ifndef STIPPLE_TOOLS_OPTIONS_H
+#define STIPPLE_TOOLS_OPTIONS_H
+
+#include <getopt.h>
+#include <stddef.h>
+#include <stdio.h>
+
+#include "render_scene.h"
+#include "scene.h"
+
+/* Codes of the long-only shared options; a command's own options use codes
+ * from STP_TOOL_OPT_COMMAND on. */
+enum {
+    STP_TOOL_OPT_SPACING = 256,
+    STP_TOOL_OPT_GAMMA_K,
+    STP_TOOL_OPT_HIDDEN,
+    STP_TOOL_OPT_BACKFACE,
+    STP_TOOL_OPT_NO_SHADING,
+    STP_TOOL_OPT_SMOOTH,
+    STP_TOOL_OPT_COLOUR,
+    STP_TOOL_OPT_TRANSPARENT,
+    STP_TOOL_OPT_LIGHT,
+    STP_TOOL_OPT_BRIGHT,
+    STP_TOOL_OPT_AMBIENT,
+    STP_TOOL_OPT_ATTEN,
+    STP_TOOL_OPT_RAW_POWER,
+    STP_TOOL_OPT_PARALLEL,
+    STP_TOOL_OPT_FOV,
+    STP_TOOL_OPT_SLICES,
+    STP_TOOL_OPT_STACKS,
+    STP_TOOL_OPT_COMMAND = 512
+};
+
+/* Short options of the shared set, for getopt_long's optstring. */
+#define STP_TOOL_SHORT_OPTIONS "s:l:d:g:"
+
+/* Fill out[] with the shared long options followed by extra (both ending in
+ * a zero entry); returns 0, or -1 when cap is too small. */
+int stp_tool_long_options(struct option *out, size_t cap, const struct option *extra);
+
+/* Apply option `code` with argument arg.  Returns 1 when it is a shared
+ * option and was applied, 0 when it is not a shared option, -1 when its
+ * argument is bad (message in err). */
+int stp_tool_apply_option(int code, const char *arg, stp_tool_options *opt,
+                          stp_scene_options *sopt, char *err, size_t err_size);
+
+/* The shared options' help lines. */
+void stp_tool_options_help(FILE *to);
+
+/* Parsers used by the shared options and by `stipple dither`; each returns 0,
+ * or -1 for a bad value (output untouched). */
+int stp_tool_parse_int(const char *s, int lo, int hi, int *out);
+int stp_tool_parse_double(const char *s, double *out);
+int stp_tool_parse_dither(const char *s, stp_tool_options *opt);
+int stp_tool_parse_spacing(const char *s, stp_spacing *out);
+
+#endif
