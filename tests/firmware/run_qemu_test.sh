@@ -17,6 +17,13 @@
 #   COMPARE       compare_screendump
 #   OPTION...     render options shared by both sides (e.g. --hidden painter)
 # Exit status: 0 pass, 1 fail, 77 tools missing (skipped).
+# WORK_DIR/figures.csv receives the instruction counts each image reported
+# (QEMU -icount shift=0, emulated instructions), one row per image that
+# passed: board,cpu,scene,config,instr_per_shade,instr_enter,instr_frame,
+# instr_frame_with_transfer,options; config is "minimal" (the scene's own
+# configuration) or "full" (the default one), scene the file's name without
+# .nff; a figure the firmware does not report is left empty (the lm3s811evb
+# reports no per-shade figure).
 # Environment: STP_FW_CPU (cortex-m3; cortex-m0plus also runs on QEMU's M3),
 # STP_QEMU_TIMEOUT (seconds per QEMU run, 60), STP_BUILD_TIMEOUT (600),
 # STP_FW_BAND_ROWS (4).
@@ -83,6 +90,15 @@ timeout "$build_timeout" cmake --build "$fw" >"$work/build.log" 2>&1 ||
 echo "== host render"
 "$stipple" render "$scene" -s "$size" -o "$work/host.pbm" "$@"
 
+# "stipple: WHAT N" from a firmware log; empty when it is not there
+figure() {
+    sed -n "s/^stipple: $2 \([0-9][0-9]*\)\r*\$/\1/p" "$1" | head -n 1
+}
+figures="$work/figures.csv"
+scene_name=$(basename "$scene" .nff)
+echo "board,cpu,scene,config,instr_per_shade,instr_enter,instr_frame,instr_frame_with_transfer,options" \
+    >"$figures"
+
 status=0
 for image in $images; do
     elf="$fw/$image.elf"
@@ -126,6 +142,15 @@ for image in $images; do
         { echo "FAIL $image: no instruction count reported" >&2; status=1; continue; }
     if "$compare" "$dump" "$work/host.pbm" 4; then
         echo "PASS $image"
+        case $image in
+            *_full) config=full ;;
+            *) config=minimal ;;
+        esac
+        per_shade=$(figure "$log" "instructions per shade:")
+        enter=$(figure "$log" "instructions to enter the scene:")
+        frame=$(figure "$log" "instructions per frame (core):")
+        transfer=$(figure "$log" "instructions per frame (core + panel):")
+        echo "$board,$cpu,$scene_name,$config,$per_shade,$enter,$frame,$transfer,$*" >>"$figures"
     else
         echo "FAIL $image: the panel differs from the host render" >&2
         status=1

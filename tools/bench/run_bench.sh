@@ -6,13 +6,16 @@
 # against run time into OUT/bench.png (gnuplot, log scales) and prints the
 # table.  Each run's full report goes to OUT/bench-<cfg>.txt.
 #
-# usage: run_bench.sh [--bin-dir DIR] [--out-dir DIR] [--scenes DIR] [--quick] [CFG...]
+# usage: run_bench.sh [--bin-dir DIR] [--out-dir DIR] [--scenes DIR] [--quick]
+#                     [--firmware FILE] [CFG...]
 #   --bin-dir DIR  where the bench_<cfg> executables are (default: the
 #                  tools/bench folder of ./build)
 #   --out-dir DIR  where bench.csv, bench.png and the reports go (default .)
 #   --scenes DIR   the shared NFF scenes (default: $STP_SCENES_DIR, else the
 #                  executables' built-in path)
 #   --quick        short runs (smoke test; the numbers are rough)
+#   --firmware FILE  the Cortex-M instruction counts (tools/bench/firmware_figures.sh):
+#                  printed as a second table and copied to OUT/firmware.csv
 #   CFG...         configurations to run (default: every bench_* in DIR)
 set -euo pipefail
 
@@ -21,13 +24,15 @@ out_dir=.
 scenes=${STP_SCENES_DIR:-}
 quick=()
 configs=()
+firmware=""
 while [ $# -gt 0 ]; do
     case $1 in
     --bin-dir) bin_dir=$2; shift 2 ;;
     --out-dir) out_dir=$2; shift 2 ;;
     --scenes) scenes=$2; shift 2 ;;
     --quick) quick=(--quick); shift ;;
-    -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --firmware) firmware=$2; shift 2 ;;
+    -h|--help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "run_bench.sh: unknown option $1" >&2; exit 2 ;;
     *) configs+=("$1"); shift ;;
     esac
@@ -42,6 +47,11 @@ if [ ${#configs[@]} -eq 0 ]; then
     echo "run_bench.sh: no bench_* executables in $bin_dir (build them first:" \
          "cmake --build build --target bench)" >&2
     exit 1
+fi
+
+if [ -n "$firmware" ] && ! head -n 1 "$firmware" 2>/dev/null | grep -q "instr_per_shade"; then
+    echo "run_bench.sh: $firmware is not a firmware figures CSV (tools/bench/firmware_figures.sh)" >&2
+    exit 2
 fi
 
 mkdir -p "$out_dir"
@@ -91,6 +101,37 @@ END {
     print "run time: ns per stp_shade_point; us per torus frame (1000 triangles entered and"
     print "  rendered) at 128x64, 400x240, 640x480; HALFTONE-FILLIN vs memset in Mpixel/s"
 }' "$csv"
+
+# The Cortex-M figures: emulated instructions, the same on every run.
+if [ -n "$firmware" ]; then
+    awk -F, '
+    NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+    function v(name) { return (name in col) ? $(col[name]) : "" }
+    function n(x) { return x == "" ? "-" : x }
+    {
+        rows[NR] = sprintf("%-12s %-13s %-13s %-8s %11s %13s %13s %15s%s", v("board"), v("scene"), v("cpu"),
+            v("config"), n(v("instr_per_shade")), n(v("instr_enter")), n(v("instr_frame")),
+            n(v("instr_frame_with_transfer")), v("options") == "" ? "" : "  (" v("options") ")")
+    }
+    END {
+        print ""
+        print "Cortex-M (QEMU -icount, emulated instructions)"
+        printf "%-12s %-13s %-13s %-8s %11s %13s %13s %15s\n", "board", "scene", "cpu", "config",
+            "per shade", "enter scene", "frame (core)", "frame + panel"
+        for (i = 2; i <= NR; i++) print rows[i]
+        print ""
+        print "per shade: one stp_shade_point call with its argument passing and loop, mean over"
+        print "  256 calls on 64 of the scene'"'"'s polygons; frame: one 128x64 render of the entered"
+        print "  scene in 4-row bands, through the core alone / with the SSD0323 transfer over SSI;"
+        print "  config: the scene'"'"'s compiled minimal configuration or the full library; M0+"
+        print "  images run on QEMU'"'"'s Cortex-M3 (counts are instructions, not cycles)"
+    }' "$firmware"
+    if [ "$(cd "$(dirname "$firmware")" && pwd)/$(basename "$firmware")" != \
+         "$(cd "$out_dir" && pwd)/firmware.csv" ]; then
+        cp "$firmware" "$out_dir/firmware.csv"
+    fi
+    echo "wrote $out_dir/firmware.csv" >&2
+fi
 
 if command -v gnuplot > /dev/null; then
     term=png
