@@ -28,6 +28,10 @@ typedef struct frame {
     uint16_t *zbuf;
     uint32_t y0, rows; /* current band */
     int32_t key_min, key_max; /* depth-key range of the visible polygons */
+#if STP_WITH_SHADOWS
+    stp_shadow_poly *shadow; /* the polygon being drawn's shadow records;
+                                NULL when no light has a map */
+#endif
 } frame;
 
 /* 8-bit drive value of a style index (gamma table or linear). */
@@ -215,8 +219,8 @@ static void put_span_blend(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2
 #endif
 
 /* A run of a span: flat, smooth or transparent. */
-static void paint_run(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style, int smooth,
-                      int64_t s0, int64_t sstep, stp_fix t)
+static void paint_run_plain(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style,
+                            int smooth, int64_t s0, int64_t sstep, stp_fix t)
 {
 #if STP_WITH_TRANSPARENCY
     if (t > 0) {
@@ -238,6 +242,71 @@ static void paint_run(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int
     (void)sstep;
 #endif
     put_span(fr, y, x1, x2, style);
+}
+
+#if STP_WITH_SHADOWS
+/* Pixels x1..x2 of a shadowed polygon hidden from the lights in `hidden`
+ * (render.h, stp_set_shadow_map): a flat grey polygon takes the style of
+ * its shade re-lit without them; a colour polygon's channels and a smooth
+ * polygon's interpolated shade are scaled by that shade over its full one. */
+static void paint_hidden(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style,
+                         int smooth, int64_t s0, int64_t sstep, stp_fix t, uint32_t hidden)
+{
+    const stp_shadow_poly *sp = fr->shadow;
+    int levels = fr->r->levels;
+    stp_fix lit = stp_shadow_shade(sp, ~hidden), ratio = STP_FIX_ONE;
+    if (sp->full > 0)
+        ratio = (stp_fix)(((int64_t)lit << STP_FIX_FRAC_BITS) / sp->full); /* lit <= full */
+    if (style & STP_COLOUR_FLAG) {
+        int c, shaded = STP_COLOUR_FLAG;
+        for (c = 0; c < 3; c++) {
+            stp_fix v = stp_intensity_shade(((style >> (16 - 8 * c)) & 0xFF) + 1, levels);
+            shaded |= (stp_intensity_index(stp_fix_mul(v, ratio), levels) - 1) << (16 - 8 * c);
+        }
+        style = shaded;
+    } else if (sp->grey) {
+        style = stp_intensity_index(lit, levels);
+    } else {
+        style = stp_intensity_index(stp_fix_mul(stp_intensity_shade(style, levels), ratio), levels);
+    }
+    if (smooth) {
+        /* shades with 16 extra fractional bits, below 2^(F+18): the
+         * products stay below 2^59 */
+        s0 = stp_asr64(s0 * ratio, STP_FIX_FRAC_BITS);
+        sstep = stp_asr64(sstep * ratio, STP_FIX_FRAC_BITS);
+    }
+    paint_run_plain(fr, y, x1, x2, style, smooth, s0, sstep, t);
+}
+#endif
+
+/* A run of a span; with shadow records, split into runs of pixels hidden
+ * from the same lights. */
+static void paint_run(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style, int smooth,
+                      int64_t s0, int64_t sstep, stp_fix t)
+{
+#if STP_WITH_SHADOWS
+    if (fr->shadow && fr->shadow->count > 0) {
+        uint32_t x = x1, hidden = stp_shadow_hidden(fr->r, fr->shadow, x1, y);
+        while (x <= x2) {
+            uint32_t end = x, next = 0;
+            int64_t sx = s0 + (int64_t)(x - x1) * sstep;
+            while (end < x2) {
+                next = stp_shadow_hidden(fr->r, fr->shadow, end + 1, y);
+                if (next != hidden)
+                    break;
+                end++;
+            }
+            if (hidden == 0)
+                paint_run_plain(fr, y, x, end, style, smooth, sx, sstep, t);
+            else
+                paint_hidden(fr, y, x, end, style, smooth, sx, sstep, t, hidden);
+            x = end + 1;
+            hidden = next;
+        }
+        return;
+    }
+#endif
+    paint_run_plain(fr, y, x1, x2, style, smooth, s0, sstep, t);
 }
 
 #if STP_WITH_ZBUFFER
@@ -303,6 +372,10 @@ static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z, stp
     }
     if (ymax <= band_top || ymin >= band_bottom)
         return;
+#if STP_WITH_SHADOWS
+    if (fr->shadow)
+        stp_shadow_polygon(r, at, fr->shadow);
+#endif
     /* edges oriented top to bottom, horizontal ones dropped */
     for (i = 0; i < n; i++) {
         const stp_instr *a = &v[i], *b = &v[(i + 1) % n];
@@ -579,6 +652,9 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
                const stp_frame_memory *mem)
 {
     frame fr;
+#if STP_WITH_SHADOWS
+    stp_shadow_poly shadow_poly;
+#endif
     uint32_t y0, polygons = 0;
     int background_style;
     stp_hidden hidden;
@@ -614,6 +690,10 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
     fr.out = output;
     fr.band = mem->band;
     fr.zbuf = mem->zbuf;
+#if STP_WITH_SHADOWS
+    shadow_poly.count = 0;
+    fr.shadow = stp_shadow_any(r) ? &shadow_poly : 0;
+#endif
     if (output->cell) {
         fr.cell = output->cell;
     } else {

@@ -50,6 +50,13 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     r->current_transmission = 0;
     r->last_shade = -1;
     r->pen_valid = 0;
+#if STP_WITH_SHADOWS
+    for (i = 0; i < STP_MAX_LIGHTS; i++) {
+        r->shadow[i].depth = 0;
+        r->shadow_record[i] = UINT32_MAX;
+    }
+    r->shadow_generation = 0;
+#endif
     view.from.x = view.from.y = 0;
     view.from.z = -ONE;
     view.at.x = view.at.y = view.at.z = 0;
@@ -122,6 +129,15 @@ int stp_set_view(stp_renderer *r, const stp_view *v)
     r->projection = v->projection;
     r->hither = v->hither;
     r->pen_valid = 0;
+#if STP_WITH_SHADOWS
+    {
+        /* the maps' transforms start from this view's coordinates */
+        int j;
+        r->at = v->at;
+        for (j = 0; j < STP_MAX_LIGHTS; j++)
+            r->shadow[j].depth = 0;
+    }
+#endif
     return STP_OK;
 }
 
@@ -342,6 +358,13 @@ static void world_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
     out->y = stp_fix_sat64(stp_asr64(dx * r->up.x + dy * r->up.y + dz * r->up.z, F));
     out->z = stp_fix_sat64(stp_asr64(dx * r->forward.x + dy * r->forward.y + dz * r->forward.z, F));
 }
+
+#if STP_WITH_SHADOWS
+void stp_view_point(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
+{
+    world_to_view(r, p, out);
+}
+#endif
 
 /* Signed distance of view point p from clip plane `plane` (0: hither,
  * 1..4: left, right, top, bottom of the window), >= 0 inside.  Scaled by a
@@ -633,8 +656,8 @@ static stp_vec3 direction_to_view(const stp_renderer *r, stp_vec3 d)
 
 /* DISPLAY-FILE-ENTER of a polygon.  smooth: 0 flat; 1 shade each vertex from
  * normals[]; 2 take shades[] from the caller. */
-static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n, int smooth,
-                         const stp_vec3 *normals, const stp_fix *shades)
+static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n, int smooth,
+                            const stp_vec3 *normals, const stp_fix *shades)
 {
     stp_vec3 normal, centre, eye_dir, *clipped;
     stp_fix n_dot_e, *clipped_shades;
@@ -642,6 +665,10 @@ static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n, int s
     int32_t colour;
     stp_fix transmission;
     uint32_t attribute;
+#if STP_WITH_SHADOWS
+    stp_instr record[STP_MAX_LIGHTS + 1];
+    int records;
+#endif
     if (status != STP_OK)
         return status;
     if (vertices == 0 || n < 3)
@@ -753,6 +780,14 @@ static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n, int s
 #endif
     if (transmission != r->current_transmission)
         attribute++;
+#if STP_WITH_SHADOWS
+    /* shadow records: what the raster needs to re-light a pixel hidden
+     * from a light (render.h, STP_OP_LIGHT_TERM) */
+    records = 0;
+    if (r->shading && smooth != 2)
+        records = stp_shadow_records(r, normal, centre, eye_dir, colour != 0, record);
+    attribute += (uint32_t)records;
+#endif
     if (r->capacity - r->used < (uint32_t)m + attribute)
         return STP_ERR_FULL;
     if (transmission != r->current_transmission) {
@@ -764,12 +799,32 @@ static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n, int s
         r->current_style = style;
         r->current_colour = colour;
     }
+#if STP_WITH_SHADOWS
+    for (i = 0; i < records; i++) {
+        if (i > 0)
+            r->shadow_record[record[i].x & 0xFF] = r->used;
+        append(r, STP_OP_LIGHT_TERM, record[i].x, record[i].y, record[i].z, -1);
+    }
+#endif
     for (i = 0; i < m; i++) {
         stp_instr p;
         project(r, clipped[i], &p);
         append(r, i == 0 ? m : STP_OP_LINE, p.x, p.y, p.z, smooth ? clipped_shades[i] : -1);
     }
     return STP_OK;
+}
+
+static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n, int smooth,
+                         const stp_vec3 *normals, const stp_fix *shades)
+{
+    int status = enter_polygon_df(r, vertices, n, smooth, normals, shades);
+#if STP_WITH_SHADOWS
+    /* every polygon entered casts into the maps, in view or not, back face
+     * or not (render.h) */
+    if (status == STP_OK)
+        stp_shadow_enter(r, vertices, n);
+#endif
+    return status;
 }
 
 int stp_polygon(stp_renderer *r, const stp_vec3 *vertices, int n)

@@ -35,6 +35,42 @@ typedef struct stp_crossing {
 #endif
 } stp_crossing;
 
+#if STP_WITH_SHADOWS
+/* A light's shadow map (render.h, stp_set_shadow_map).  The light's frame:
+ * origin at the light, z along the map's axis, x right, y up (left-handed
+ * like the view).  A view point p goes to the light's frame as
+ * p_l = m p + t: m is the rotation (Q28: entries are cosines, |m| <= 1 + a
+ * rounding), t the view's origin (the eye) in the light's frame (stp_fix). */
+typedef struct stp_shadow_map {
+    uint16_t *depth;     /* NULL: no map for this light */
+    uint32_t width, height;
+    uint32_t generation; /* 1..2^23-1, kept in the records (STP_OP_LIGHT_TERM) */
+    int32_t m[3][3];
+    stp_fix t[3];
+    stp_vec3 light_view; /* the light in view coordinates when the map was set */
+    stp_fix focal;       /* texels per unit of x_l / z_l, F fractional bits */
+    stp_fix near;        /* > 0 */
+} stp_shadow_map;
+
+/* What the raster needs to re-light the pixels of one polygon, gathered
+ * from its STP_OP_LIGHT_TERM records (shadow.c). */
+typedef struct stp_shadow_poly {
+    int count;                    /* lights tested; 0: the polygon has no record */
+    int light[STP_MAX_LIGHTS];    /* their indices */
+    int32_t bias[STP_MAX_LIGHTS]; /* their b (map depth units) */
+    uint32_t tested;              /* bit j: light j is tested */
+    int grey;                     /* STP_LIGHT_TERM_GREY record */
+    stp_fix ambient, brightness;
+    stp_fix terms[STP_MAX_LIGHTS]; /* by light index; 0 for untested ones */
+    stp_fix full;                 /* the shade with every light */
+    /* depth key plane: key(xq, yq) = (k0 + gx (xq - x0) + gy (yq - y0))
+     * 2^shift / 2^16 raw key units, xq, yq device Q27.4 */
+    int64_t k0, gx, gy;
+    int32_t x0, y0;
+    int shift;
+} stp_shadow_poly;
+#endif
+
 struct stp_renderer {
     stp_instr *df;
     uint32_t capacity, used;
@@ -76,6 +112,43 @@ struct stp_renderer {
 #endif
     stp_edge edges[STP_CLIP_VERTICES];
     stp_crossing crossings[STP_CLIP_VERTICES];
+
+#if STP_WITH_SHADOWS
+    stp_shadow_map shadow[STP_MAX_LIGHTS];
+    uint32_t shadow_generation; /* of the last map set */
+    uint32_t shadow_record[STP_MAX_LIGHTS]; /* display-file entry of the
+                                               polygon being entered's record
+                                               for light j, or UINT32_MAX */
+    stp_vec3 at; /* the view's look-at point (world) */
+#endif
 };
+
+#if STP_WITH_SHADOWS
+/* render.c: a world point in view coordinates (the display file's
+ * transform). */
+void stp_view_point(const stp_renderer *r, stp_vec3 p, stp_vec3 *out);
+
+/* shadow.c, at entry: the STP_OP_LIGHT_TERM records of a polygon shaded
+ * with this normal at this centre (view coordinates; colour: a colour
+ * polygon), in record[] (1 + STP_MAX_LIGHTS entries, op unset): returns
+ * how many, 0 when no map can darken it.  Biases are 1 until
+ * stp_shadow_enter sets them through r->shadow_record. */
+int stp_shadow_records(const stp_renderer *r, stp_vec3 normal, stp_vec3 centre, stp_vec3 eye_dir,
+                       int colour, stp_instr *record);
+/* shadow.c, at entry, once the polygon (world vertices, n validated) is in
+ * the display file or was dropped from it with STP_OK: draw its depth into
+ * every map and patch its records' biases. */
+void stp_shadow_enter(stp_renderer *r, const stp_vec3 *vertices, int n);
+
+/* shadow.c, at output: gather the records of the polygon whose header is
+ * df[at] (sp->count = 0 when it has none); the lights that do not reach
+ * device pixel (x, y) of it (bit j: light j); the polygon's shade with
+ * only the lights in `lit`. */
+void stp_shadow_polygon(const stp_renderer *r, uint32_t at, stp_shadow_poly *sp);
+uint32_t stp_shadow_hidden(const stp_renderer *r, const stp_shadow_poly *sp, uint32_t x, uint32_t y);
+stp_fix stp_shadow_shade(const stp_shadow_poly *sp, uint32_t lit);
+/* 1 when some light has a map set */
+int stp_shadow_any(const stp_renderer *r);
+#endif
 
 #endif

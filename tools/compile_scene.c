@@ -206,11 +206,10 @@ static void write_config(writer *w, const plan *p, const stp_tool_options *opt)
         opt->hidden == STP_HIDDEN_PAINTER);
     out(w, "/* Scenes hold polygons only. */\n"
            "#define STP_WITH_LINES 0\n");
-#ifdef STP_WITH_GOURAUD
-    /* a switch of a newer core: known here only when the header has it */
-    out(w, "/* The scene is entered as flat polygons (stp_polygon). */\n"
-           "#define STP_WITH_GOURAUD 0\n");
-#endif
+    out(w, "/* The scene is entered as flat grey polygons (stp_polygon), opaque and\n"
+           " * without shadow maps. */\n"
+           "#define STP_WITH_GOURAUD 0\n#define STP_WITH_COLOUR 0\n"
+           "#define STP_WITH_TRANSPARENCY 0\n#define STP_WITH_SHADOWS 0\n");
     out(w, "\n#endif\n");
 }
 
@@ -433,6 +432,10 @@ int stp_tool_compile_main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
+    /* the compiled-scene firmware path enters flat, grey, opaque polygons */
+    if (opt.smooth || opt.colour || opt.transparency || opt.shadow_resolution)
+        return fail("--smooth, --color, --transparent and --shadows are not supported for "
+                    "compiled scenes yet");
     if (!c_path)
         return fail("no output given (-o FILE.c)");
     if (!h_path) {

@@ -30,6 +30,7 @@ static const struct option shared[] = {
     {"fov", required_argument, 0, STP_TOOL_OPT_FOV},
     {"slices", required_argument, 0, STP_TOOL_OPT_SLICES},
     {"stacks", required_argument, 0, STP_TOOL_OPT_STACKS},
+    {"shadows", required_argument, 0, STP_TOOL_OPT_SHADOWS},
 };
 
 int stp_tool_long_options(struct option *out, size_t cap, const struct option *extra)
@@ -230,6 +231,14 @@ int stp_tool_apply_option(int code, const char *arg, stp_tool_options *opt,
         if (stp_tool_parse_int(arg, 2, 1024, &sopt->sphere_stacks))
             what = "--stacks (2..1024)";
         break;
+    case STP_TOOL_OPT_SHADOWS: {
+        int n;
+        if (stp_tool_parse_int(arg, 1, 4096, &n))
+            what = "--shadows (1..4096)";
+        else
+            opt->shadow_resolution = (unsigned)n;
+        break;
+    }
     default: return 0;
     }
     if (what) {
@@ -270,6 +279,8 @@ void stp_tool_options_help(FILE *to)
             "      --fov DEGREES        field of view over the shorter side (default: the\n"
             "                           scene's, else 45)\n"
             "      --slices N           sphere/cone slices for tessellation (default 16)\n"
-            "      --stacks N           sphere stacks (default 8)\n",
+            "      --stacks N           sphere stacks (default 8)\n"
+            "      --shadows N          shadows: a shadow Z buffer of N x N texels per light\n"
+            "                           (512 suits 320x240; memory 2 N^2 bytes per light)\n",
             STP_MAX_LIGHTS);
 }

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "scene_util.h"
+#include "shadows_setup.h"
 
 void stp_tool_options_default(stp_tool_options *opt)
 {
@@ -277,6 +278,7 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
     stp_fix background_rgb[3];
     stp_tool_stats local;
     stp_scene_vec3 *normals = 0;
+    uint16_t *shadow_maps = 0;
 
     if (!stats)
         stats = &local;
@@ -285,7 +287,10 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
         return -1;
 
     for (i = 0; i < scene->polygon_count; i++)
-        capacity += (size_t)scene->polygons[i].count + 6;
+        /* the polygon, a style and a transparency attribute, and with
+         * shadows its light records */
+        capacity += (size_t)scene->polygons[i].count + 6 +
+                    (opt->shadow_resolution ? 1u + STP_MAX_LIGHTS : 0u);
     if (capacity > 0xFFFFFFFFu) {
         snprintf(err, err_size, "scene too large for one display file");
         return -1;
@@ -313,6 +318,17 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
         goto done;
     }
     stp_set_backface_removal(r, opt->backface_removal);
+    if (opt->shadow_resolution > 0 && lighting.count > 0) {
+        size_t n = (size_t)opt->shadow_resolution * opt->shadow_resolution * (size_t)lighting.count;
+        shadow_maps = malloc(sizeof *shadow_maps * n);
+        if (!shadow_maps) {
+            snprintf(err, err_size, "out of memory for the shadow maps");
+            goto done;
+        }
+        if (stp_tool_shadows_setup(r, scene, &view, (double)opt->width / opt->height, &lighting,
+                                   opt->shadow_resolution, shadow_maps, n, err, err_size) != 0)
+            goto done;
+    }
     if ((status = stp_segment_create(r, 1)) != STP_OK) {
         snprintf(err, err_size, "segment: %s", stp_status_text(status));
         goto done;
@@ -445,6 +461,7 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
     }
     result = 0;
 done:
+    free(shadow_maps);
     free(normals);
     free(rmem);
     free(df);

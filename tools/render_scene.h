@@ -32,6 +32,8 @@ typedef struct stp_tool_options {
     int colour;              /* 1: shade per channel (10.45) with NFF colours;
                                 RGB888 ports show colour (0) */
     int transparency;        /* 1: NFF's T makes surfaces transparent (0) */
+    unsigned shadow_resolution; /* >0: a shadow map of this many texels square
+                                   per light (0: no shadows) */
     int smooth;              /* 1: Gouraud from vertex normals: the file's
                                 (NFF pp, OBJ vn), else averaged face normals (0) */
     int band_rows;           /* 0: whole frame */

@@ -17,3 +17,7 @@ for name in balls-s1 mount-s2 tetra-s1; do
     "$build/tools/stipple" render "$scenes/$name.nff" --color -o "$here/tests/golden/$name-colour-128x64.ppm"
     echo "wrote tests/golden/$name-colour-128x64.ppm"
 done
+for name in balls-s1 mount-s2; do
+    "$build/tools/stipple" render "$scenes/$name.nff" --shadows 256 -o "$here/tests/golden/$name-shadows-128x64.pbm"
+    echo "wrote tests/golden/$name-shadows-128x64.pbm"
+done

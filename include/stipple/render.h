@@ -298,16 +298,19 @@ int stp_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const s
  * map.  A point outside the map's pyramid or nearer the light than `near`
  * is lit (the map must cover the receivers).  Otherwise, with q_p its own
  * depth (8 more fractional bits) and m the texel it falls in, it is hidden
- * from the light when m != 0 and m > q_p + bias, where
- *   bias = min(b, max(1, q_p / 8)),  b = 1 + |dq/du| + |dq/dv|,
- * b computed at entry from the receiver's own projection into the map (its
+ * from the light when m != 0 and m > q_p + b, where the bias
+ *   b = 1 + |dq/du| + |dq/dv|  (rounded up, at most 65535)
+ * is computed at entry from the receiver's own projection into the map (its
  * depth slope over one texel) and kept in its record.  Why: a texel holds
  * the depth at its centre, up to half a texel away from the point in u and
  * in v, so a lit surface's own texel can exceed q_p by half that slope plus
- * rounding: b covers twice that, against shadow acne.  The cap q_p / 8 (an
- * occluder must be about 11% nearer the light than the point) bounds the
- * light that leaks under casters for receivers almost edge-on to the light,
- * whose slope is huge (they get little of its light anyway).
+ * the floors: b covers twice that, so a lit surface never shadows itself
+ * (shadow acne), at any angle to the light and any map resolution (tested
+ * down to 2 degrees on 16 x 16 maps).  The price: an occluder less than b
+ * nearer the light than the receiver does not shadow it, so a shadow can
+ * start up to about a texel's footprint away from where its caster touches
+ * the receiver, more for a receiver almost edge-on to the light (which gets
+ * little of its light anyway).
  *
  * A hidden pixel loses that light's term:
  *   flat grey polygons: s = min(1, BRIGHT (ambient part + sum of the terms

@@ -55,6 +55,9 @@ class Qmp:
                 chunk = self.sock.recv(65536)
             except socket.timeout:
                 fail("timed out waiting for QEMU")
+            except ConnectionResetError:
+                # QEMU exiting with our bytes unread resets rather than closes
+                raise EOFError
             if not chunk:
                 raise EOFError
             self.buf += chunk

@@ -5,14 +5,16 @@
  *
  * The input is a program: a header picks the device size and the display
  * file's capacity, then each following byte picks a call (view, lights,
- * material, levels, segments, move/line, flat and smooth polygons, render)
- * whose arguments come from the next bytes.  stp_fix values are drawn from
+ * material, levels, colour, transparency, shadow maps, segments, move/line,
+ * flat and smooth polygons, render) whose arguments come from the next
+ * bytes.  stp_fix values are drawn from
  * small integers, fractions, any 32-bit pattern and a table of extremes
  * (STP_FIX_MAX, STP_FIX_MIN, INT32_MIN, 32767, 2^-16, ...).  Every buffer
  * lent to the core (renderer, display file, band, Z buffer, sort array,
- * gamma and style tables, polygon vertices, normals and shades) is its own
- * heap block of exactly the size the API asks for, so ASan sees any access
- * beyond it.
+ * gamma and style tables, polygon vertices, normals and shades, shadow
+ * maps) is its own heap block of exactly the size the API asks for, so ASan
+ * sees any access beyond it; a shadow map's block is freed as soon as the
+ * API says it is no longer used (replaced, removed, or a new view).
  *
  * Checked beyond the sanitizers:
  *  - segments follow a model of the API's rules: the status of create,
@@ -131,7 +133,16 @@ typedef struct state {
     seg_model seg[STP_MAX_SEGMENTS];
     stp_vec3 target; /* the view's "at": polygons built near it are seen */
     int renders;
+    int colour_seen; /* colour shading was on at some time: colour polygons */
+    int light_count; /* lights of the current lighting */
+    uint16_t *maps[STP_MAX_LIGHTS]; /* shadow maps lent to the renderer */
 } state;
+
+static void drop_map(state *st, int light)
+{
+    free(st->maps[light]);
+    st->maps[light] = NULL;
+}
 
 static int find_seg(const state *st, int id)
 {
@@ -232,6 +243,7 @@ typedef struct render_args {
     uint8_t *gamma;
     stp_style_table styles;
     uint8_t *style_codes;
+    stp_fix *background_colour;
 } render_args;
 
 static void *xmalloc(size_t n)
@@ -316,7 +328,7 @@ static int render_once(state *st, const render_args *a, fault f, uint32_t fail_a
     return status;
 }
 
-static int pixel_differs(const state *st, stp_pixel_format fmt, const uint8_t *a,
+static int pixel_differs(const state *st, stp_pixel_format fmt, int grey, const uint8_t *a,
                          const uint8_t *b, uint32_t *x_out, uint32_t *y_out)
 {
     size_t stride = stp_row_bytes(fmt, st->width);
@@ -331,8 +343,9 @@ static int pixel_differs(const state *st, stp_pixel_format fmt, const uint8_t *a
                 break;
             case STP_PIXEL_RGB888:
                 differ = memcmp(ra + 3 * x, rb + 3 * x, 3) != 0;
-                FZ_CHECK(ra[3 * x] == ra[3 * x + 1] && ra[3 * x] == ra[3 * x + 2],
-                         "RGB888 pixel (%u, %u) not grey", (unsigned)x, (unsigned)y);
+                FZ_CHECK(!grey || (ra[3 * x] == ra[3 * x + 1] && ra[3 * x] == ra[3 * x + 2]),
+                         "RGB888 pixel (%u, %u) not grey without colour", (unsigned)x,
+                         (unsigned)y);
                 break;
             default: differ = ra[x] != rb[x]; break;
             }
@@ -414,6 +427,13 @@ static void op_render(state *st, fz_reader *in, int final_hidden)
         a.out.styles = &a.styles;
     }
     a.out.background = fz_fix(in);
+    if (fz_u8(in) % 4 == 0) {
+        int c;
+        a.background_colour = (stp_fix *)xmalloc(3 * sizeof *a.background_colour);
+        for (c = 0; c < 3; c++)
+            a.background_colour[c] = fz_fix(in);
+        a.out.background_colour = a.background_colour;
+    }
     if (final_hidden < 0 && fz_u8(in) % 4 == 0) {
         f = (fault)fz_range(in, 1, FAULT_COUNT - 1);
         fail_at = fz_u8(in);
@@ -432,7 +452,8 @@ static void op_render(state *st, fz_reader *in, int final_hidden)
             whole_args.out.styles = &whole_args.styles;
         FZ_CHECK(render_once(st, &whole_args, FAULT_NONE, 0, &whole) == STP_OK,
                  "one-band render failed");
-        FZ_CHECK(!pixel_differs(st, a.format, banded, whole, &x, &y),
+        FZ_CHECK(!pixel_differs(st, a.format, !st->colour_seen && a.background_colour == NULL,
+                                banded, whole, &x, &y),
                  "pixel (%u, %u) differs between bands of %u rows and one band of %u "
                  "(format %d, hidden %d, %ux%u)",
                  (unsigned)x, (unsigned)y, (unsigned)a.band_rows, (unsigned)st->height,
@@ -442,6 +463,7 @@ static void op_render(state *st, fz_reader *in, int final_hidden)
     free(whole);
     free(a.gamma);
     free(a.style_codes);
+    free(a.background_colour);
     st->renders++;
 }
 
@@ -463,8 +485,13 @@ static void op_view(state *st, fz_reader *in)
     FZ_CHECK(status == STP_OK || status == STP_ERR_VIEW || (bad_projection && status == STP_ERR_ARG),
              "stp_set_view returned %d", status);
     FZ_CHECK(!(bad_projection && status == STP_OK), "an unknown projection was accepted");
-    if (status == STP_OK)
+    if (status == STP_OK) {
+        int j;
         st->target = v.at;
+        /* "stp_set_view removes every map" */
+        for (j = 0; j < STP_MAX_LIGHTS; j++)
+            drop_map(st, j);
+    }
 }
 
 static void op_lighting(state *st, fz_reader *in)
@@ -477,14 +504,78 @@ static void op_lighting(state *st, fz_reader *in)
     l.attenuation_c = fz_fix(in);
     l.count = fz_range(in, -1, STP_MAX_LIGHTS + 1);
     for (i = 0; i < STP_MAX_LIGHTS; i++) {
+        int c;
         l.lights[i].position = fz_vec(in);
         l.lights[i].power = fz_fix(in);
+        for (c = 0; c < 3; c++)
+            l.lights[i].colour[c] = fz_u8(in) & 1 ? fz_fix(in) : ONE;
     }
     status = stp_set_lighting(st->r, &l);
     if (l.count < 0 || l.count > STP_MAX_LIGHTS)
         FZ_CHECK(status == STP_ERR_ARG, "light count %d gave %d", l.count, status);
     else
         FZ_CHECK(status == STP_OK, "light count %d gave %d", l.count, status);
+    if (status == STP_OK)
+        st->light_count = l.count;
+}
+
+/* stp_set_shadow_map: one fault at most (light, size, short buffer); the
+ * view's own values may be refused (STP_ERR_VIEW).  The old buffer of a
+ * light is freed once a new map replaces it, so ASan sees a stale use. */
+static void op_shadow_map(state *st, fz_reader *in)
+{
+    stp_shadow_view view;
+    uint32_t w = (uint32_t)fz_range(in, 1, 48), h = (uint32_t)fz_range(in, 1, 48);
+    int light = fz_range(in, 0, STP_MAX_LIGHTS - 1), expect = STP_OK, status;
+    size_t count;
+    uint16_t *depth;
+    uint8_t how = fz_u8(in);
+
+    switch (fz_u8(in) % 16) {
+    case 0: light = fz_u8(in) & 1 ? -1 : STP_MAX_LIGHTS; expect = STP_ERR_ARG; break;
+    case 1: w = fz_u8(in) & 1 ? 0 : 32768; expect = STP_ERR_ARG; break;
+    case 2: h = 0; expect = STP_ERR_ARG; break;
+    default: break;
+    }
+    if (light >= 0 && light < STP_MAX_LIGHTS && light >= st->light_count)
+        expect = STP_ERR_ARG;
+    count = (size_t)w * h;
+    if (expect == STP_OK && (how & 8)) {
+        count--;
+        expect = STP_ERR_MEMORY;
+    }
+    depth = (uint16_t *)xmalloc((count > 0 ? count : 1) * sizeof *depth);
+    view.target = how & 2 ? fz_vec(in) : fz_near(in, st->target);
+    view.fov_degrees = how & 4 ? fz_fix(in) : fz_range(in, 1, 179) * ONE;
+    view.near = how & 16 ? fz_fix(in) : (stp_fix)fz_u8(in) * (ONE / 16);
+    status = stp_set_shadow_map(st->r, light, depth, count, w, h, how & 1 ? &view : NULL);
+    if (expect == STP_OK)
+        FZ_CHECK(status == STP_OK || status == STP_ERR_VIEW,
+                 "stp_set_shadow_map(light %d, %ux%u) returned %d", light, (unsigned)w,
+                 (unsigned)h, status);
+    else
+        FZ_CHECK(status == expect, "stp_set_shadow_map(light %d, %ux%u, count %zu) returned %d, "
+                 "expected %d", light, (unsigned)w, (unsigned)h, count, status, expect);
+    if (status == STP_OK) {
+        size_t i;
+        for (i = 0; i < count; i++)
+            FZ_CHECK(depth[i] == 0, "a new shadow map is not cleared");
+        drop_map(st, light);
+        st->maps[light] = depth;
+    } else {
+        free(depth);
+    }
+}
+
+static void op_remove_shadow_map(state *st, fz_reader *in)
+{
+    int light = fz_range(in, -1, STP_MAX_LIGHTS);
+    int status = stp_remove_shadow_map(st->r, light);
+    int valid = light >= 0 && light < STP_MAX_LIGHTS;
+    FZ_CHECK(status == (valid ? STP_OK : STP_ERR_ARG), "stp_remove_shadow_map(%d) returned %d",
+             light, status);
+    if (valid)
+        drop_map(st, light);
 }
 
 static int fz_seg_id(fz_reader *in)
@@ -653,23 +744,55 @@ static void op_pen(state *st, fz_reader *in, int line)
     account(st, before, status, 0);
 }
 
+static void op_transparency(state *st, fz_reader *in)
+{
+    stp_fix t_min, t_max, absorption, thickness;
+    int power, status, in_range;
+    if (fz_u8(in) & 1) {
+        t_min = fz_fix(in);
+        t_max = fz_fix(in);
+        power = fz_range(in, -1, 6);
+        absorption = fz_fix(in);
+        thickness = fz_fix(in);
+    } else {
+        t_min = (stp_fix)fz_u8(in) * (ONE / 255);
+        t_max = (stp_fix)fz_u8(in) * (ONE / 255);
+        power = fz_range(in, 1, 4);
+        absorption = (stp_fix)fz_u8(in) * (ONE / 16);
+        thickness = (stp_fix)fz_u8(in) * (ONE / 64);
+    }
+    in_range = t_min >= 0 && t_min <= ONE && t_max >= 0 && t_max <= ONE && power >= 1 &&
+               power <= 4 && absorption >= 0 && thickness >= 0;
+    status = stp_set_transparency(st->r, t_min, t_max, power, absorption, thickness);
+    FZ_CHECK(status == (in_range ? STP_OK : STP_ERR_ARG),
+             "stp_set_transparency(%d, %d, %d, %d, %d) returned %d", (int)t_min, (int)t_max,
+             power, (int)absorption, (int)thickness, status);
+}
+
 static void op_call(state *st, fz_reader *in)
 {
-    switch (fz_u8(in) % 20) {
+    switch (fz_u8(in) % 26) {
     case 0: op_view(st, in); break;
     case 1: {
         stp_vec3 p = fz_vec(in);
         stp_fix bright = fz_fix(in);
         stp_set_light(st->r, p, bright, fz_fix(in));
+        st->light_count = 1;
         break;
     }
     case 2: op_lighting(st, in); break;
     case 3: {
         stp_material m;
+        stp_material_default(&m);
         m.reflectivity = fz_fix(in);
         m.refraction = fz_fix(in);
         m.gloss = fz_fix(in);
         m.specular = fz_fix(in);
+        if (fz_u8(in) & 1) {
+            int c;
+            for (c = 0; c < 3; c++)
+                m.colour[c] = fz_fix(in);
+        }
         stp_set_object_shade(st->r, &m);
         break;
     }
@@ -694,6 +817,15 @@ static void op_call(state *st, fz_reader *in)
     case 14: op_pen(st, in, 1); break;
     case 15: op_polygon(st, in, 1); break;
     case 16: op_polygon(st, in, 2); break;
+    case 17: {
+        int on = (int8_t)fz_u8(in) % 3;
+        FZ_CHECK(stp_set_colour(st->r, on) == STP_OK, "stp_set_colour(%d) failed", on);
+        st->colour_seen |= on != 0;
+        break;
+    }
+    case 18: op_transparency(st, in); break;
+    case 20: op_shadow_map(st, in); break;
+    case 21: op_remove_shadow_map(st, in); break;
     case 19:
         if (st->renders < FZ_MAX_RENDERS) {
             op_render(st, in, -1);
@@ -736,6 +868,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     st.capacity = 1u + fz_u16(&in) % 2048u;
     st.levels = 16;
+    st.light_count = 1;
     st.open = -1;
     st.target.x = st.target.y = st.target.z = 0;
 
@@ -759,6 +892,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     for (hidden = 0; hidden < 3; hidden++)
         op_render(&st, &in, hidden);
 
+    for (calls = 0; calls < STP_MAX_LIGHTS; calls++)
+        drop_map(&st, calls);
     free(st.df);
     free(mem);
     return 0;

@@ -106,6 +106,32 @@ static void test_golden_smooth_teapot(void **state)
 
 #endif
 
+#if STP_WITH_SHADOWS
+/* Shadow maps (256 texels square per light) on the balls and mount scenes. */
+static void test_golden_shadows(void **state)
+{
+    static const char *const names[] = {"balls-s1", "mount-s2"};
+    size_t i;
+    int failures = 0;
+    (void)state;
+    for (i = 0; i < 2; i++) {
+        stp_scene scene;
+        stp_tool_options opt;
+        stp_posix_frame frame;
+        char name[128];
+        load(names[i], &scene);
+        stp_tool_options_default(&opt);
+        opt.shadow_resolution = 256;
+        render(&scene, &opt, &frame, STP_PIXEL_MONO1);
+        stp_scene_free(&scene);
+        snprintf(name, sizeof name, "%s-shadows-128x64", names[i]);
+        failures += compare_golden(&frame, name);
+        stp_posix_frame_free(&frame);
+    }
+    assert_int_equal(failures, 0);
+}
+#endif
+
 #if STP_WITH_COLOUR
 /* Colour shading (10.45) to RGB888 against golden PPMs, byte for byte. */
 static void test_golden_colour(void **state)
@@ -243,6 +269,9 @@ int main(void)
 #endif
 #if STP_WITH_COLOUR
         cmocka_unit_test(test_golden_colour),
+#endif
+#if STP_WITH_SHADOWS
+        cmocka_unit_test(test_golden_shadows),
 #endif
         cmocka_unit_test(test_bands_equal_full_frame),
         cmocka_unit_test(test_renders_show_something),
