@@ -256,6 +256,51 @@ static void test_colour_shading_per_channel(void **state)
     }
 }
 
+/* Stiff: colours outside the gamut.  A colour outside [0, 1] goes through
+ * every model without undefined behaviour and comes back where the model is
+ * linear (CMY exactly, YIQ to rounding); a chromaticity outside the
+ * monitor's triangle (spectral 520 nm green) gets a negative red from the
+ * inverse matrix, which is reported as is, not clamped. */
+static void test_out_of_gamut(void **state)
+{
+    stp_rgb c, back;
+    stp_vec3 v;
+    stp_xy prim[3];
+    stp_vec3 white;
+    stp_mat3 m, inv;
+    (void)state;
+    c.r = fx(1.5);
+    c.g = fx(-0.2);
+    c.b = fx(0.5);
+    back = stp_cmy_to_rgb(stp_rgb_to_cmy(c));
+    assert_int_equal(back.r, c.r);
+    assert_int_equal(back.g, c.g);
+    back = stp_iqy_to_rgb(stp_rgb_to_iqy(c));
+    assert_near(d(back.r), 1.5, 5e-4, "YIQ out of gamut");
+    assert_near(d(back.g), -0.2, 5e-4, "YIQ out of gamut");
+    v = stp_rgb_to_hsv(c); /* defined: finite hue and saturation */
+    assert_true(v.x >= 0 && v.x < 360 * STP_FIX_ONE);
+    v = stp_rgb_to_hls(c);
+    v = stp_rgb_to_hsi(c);
+    assert_true(v.x >= 0 && v.x < 360 * STP_FIX_ONE);
+    prim[0].x = fx(0.628); prim[0].y = fx(0.346);
+    prim[1].x = fx(0.268); prim[1].y = fx(0.588);
+    prim[2].x = fx(0.150); prim[2].y = fx(0.070);
+    white.x = fx(0.950); white.y = fx(1); white.z = fx(1.089);
+    assert_int_equal(stp_colour_rgb_to_xyz_matrix_xyz(prim, white, &m, NULL), 0);
+    assert_int_equal(stp_mat3_inverse(&m, &inv), 0);
+    {
+        /* 520 nm: x = 0.0743, y = 0.8338, Y = 1 */
+        stp_vec3 xyz, rgb;
+        xyz.x = fx(0.0743 / 0.8338);
+        xyz.y = fx(1);
+        xyz.z = fx((1 - 0.0743 - 0.8338) / 0.8338);
+        rgb = stp_mat3_apply(&inv, xyz);
+        assert_true(rgb.x < 0);
+        assert_true(rgb.y > STP_FIX_ONE);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -266,6 +311,7 @@ int main(void)
         cmocka_unit_test(test_round_trips_over_the_cube),
         cmocka_unit_test(test_colour_tables),
         cmocka_unit_test(test_colour_shading_per_channel),
+        cmocka_unit_test(test_out_of_gamut),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
