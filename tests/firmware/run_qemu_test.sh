@@ -99,13 +99,18 @@ scene_name=$(basename "$scene" .nff)
 echo "board,cpu,scene,config,instr_per_shade,instr_enter,instr_frame,instr_frame_with_transfer,options" \
     >"$figures"
 
+# Unix socket paths must stay under 108 bytes, which a build tree in a deep
+# checkout exceeds: the sockets live in a short folder of their own.
+sockdir=$(mktemp -d /tmp/stpq.XXXXXX)
+trap 'rm -rf "$sockdir"' EXIT
+
 status=0
 for image in $images; do
     elf="$fw/$image.elf"
-    sock="$work/$image.qmp"
+    sock="$sockdir/$image.qmp"
     log="$work/$image.log"
     dump="$work/$image.ppm"
-    serial_sock="$work/$image.uart"
+    serial_sock="$sockdir/$image.uart"
     rm -f "$sock" "$log" "$dump" "$serial_sock"
     # the QMP client releases the firmware through this socket when set
     release=""

@@ -40,6 +40,7 @@ import socket
 import stat
 import subprocess
 import sys
+import tempfile
 import threading
 import time
 
@@ -283,7 +284,10 @@ def wait_dev(dev):
 class Guest:
     def __init__(self, qemu, kernel, initrd, vga, work, name, append=""):
         self.serial = os.path.join(work, name + ".serial")
-        self.qmp_path = os.path.join(work, name + ".qmp")
+        # Unix socket paths must stay under 108 bytes: a deep build tree
+        # would exceed that, so the socket lives in a short folder
+        self.sock_dir = tempfile.mkdtemp(prefix="stpq", dir="/tmp")
+        self.qmp_path = os.path.join(self.sock_dir, name + ".qmp")
         for p in (self.serial, self.qmp_path):
             if os.path.exists(p):
                 os.unlink(p)
@@ -374,6 +378,7 @@ class Guest:
         if self.qmp:
             self.qmp.close()
         self.proc.stdout.close()
+        shutil.rmtree(self.sock_dir, ignore_errors=True)
 
 
 # ------------------------------------------------------------------ pictures
