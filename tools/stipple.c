@@ -45,6 +45,9 @@ static void usage_render(FILE *to)
             "      --format KIND        pbm, plain-pbm, pgm, ppm or txt (default: from OUT)\n"
             "  -b, --band ROWS          render in bands of ROWS rows (default: whole frame)\n"
             "      --stats              print display-file and memory figures on stderr\n"
+            "      --palette grey|pseudo  .ppm through a 256-entry colour table: the frame is\n"
+            "                           an indexed frame buffer of styles; pseudo maps dark to\n"
+            "                           blue and light to red; --gamma applies per primary\n"
             "  -h, --help               this help\n");
     stp_tool_options_help(to);
 }
@@ -106,13 +109,48 @@ static stp_pixel_format format_for_kind(stp_posix_file_kind kind)
     }
 }
 
-enum { OPT_FORMAT = STP_TOOL_OPT_COMMAND, OPT_STATS, OPT_PLAIN };
+enum { OPT_FORMAT = STP_TOOL_OPT_COMMAND, OPT_STATS, OPT_PLAIN, OPT_PALETTE };
+
+/* Turn an indexed frame buffer (STYLE8: style index 1..levels per pixel)
+ * into RGB through a 256-entry colour table, grey or pseudocolour, with the
+ * gamma table applied to each primary (SPEC.md section 6). */
+static int index_to_colour(stp_posix_frame *frame, int levels, int pseudo, const stp_tool_options *opt)
+{
+    stp_colour_table table;
+    stp_posix_frame rgb;
+    uint8_t gamma[256];
+    uint32_t x, y;
+    if (pseudo)
+        stp_colour_table_pseudocolour(&table);
+    else
+        stp_colour_table_grey(&table);
+    if ((opt->gamma != 1.0 || opt->gamma_k != 1.0) &&
+        stp_gamma_table(gamma, 256, stp_tool_fix(opt->gamma), stp_tool_fix(opt->gamma_k)) == 0)
+        stp_colour_table_apply_gamma(&table, gamma, gamma, gamma);
+    if (stp_posix_frame_init(&rgb, frame->width, frame->height, STP_PIXEL_RGB888) != 0)
+        return -1;
+    for (y = 0; y < frame->height; y++)
+        for (x = 0; x < frame->width; x++) {
+            int index = frame->pixels[y * frame->stride + x];
+            uint32_t entry = table.entry[index < 1 ? 0 : ((index - 1) * 255 + (levels - 1) / 2) / (levels - 1)];
+            uint8_t *p = &rgb.pixels[y * rgb.stride + 3 * x];
+            p[0] = (uint8_t)(entry >> 16);
+            p[1] = (uint8_t)(entry >> 8);
+            p[2] = (uint8_t)entry;
+        }
+    stp_posix_frame_free(frame);
+    *frame = rgb;
+    /* the port points back at its frame: re-aim it after the move */
+    frame->port.user = frame;
+    return 0;
+}
 
 static int cmd_render(int argc, char **argv)
 {
     static const struct option own[] = {
         {"output", required_argument, 0, 'o'}, {"format", required_argument, 0, OPT_FORMAT},
         {"band", required_argument, 0, 'b'},   {"stats", no_argument, 0, OPT_STATS},
+        {"palette", required_argument, 0, OPT_PALETTE},
         {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     struct option longs[64];
     stp_tool_options opt;
@@ -124,7 +162,7 @@ static int cmd_render(int argc, char **argv)
     stp_posix_file_kind kind = STP_POSIX_FILE_UNKNOWN;
     const char *out_path = 0, *scene_path;
     char err[512];
-    int c, show_stats = 0;
+    int c, show_stats = 0, palette = 0;
 
     stp_tool_options_default(&opt);
     stp_scene_options_default(&sopt);
@@ -148,6 +186,14 @@ static int cmd_render(int argc, char **argv)
                 return fail("bad --band '%s' (1..32767)", optarg);
             break;
         case OPT_STATS: show_stats = 1; break;
+        case OPT_PALETTE:
+            if (!strcmp(optarg, "grey") || !strcmp(optarg, "gray"))
+                palette = 1;
+            else if (!strcmp(optarg, "pseudo"))
+                palette = 2;
+            else
+                return fail("bad --palette '%s' (grey, pseudo)", optarg);
+            break;
         case 'h': usage_render(stdout); return 0;
         default: usage_render(stderr); return 2;
         }
@@ -177,8 +223,11 @@ static int cmd_render(int argc, char **argv)
             opt.levels = lp.levels;
         opt.styles = &lp;
     }
+    if (palette && (kind != STP_POSIX_FILE_P6 || opt.colour))
+        return fail("--palette needs a .ppm output (and no --color)");
+    /* with a palette the frame is an indexed frame buffer: style indices */
     if (stp_posix_frame_init(&frame, (uint32_t)opt.width, (uint32_t)opt.height,
-                             format_for_kind(kind)) != 0) {
+                             palette ? STP_PIXEL_STYLE8 : format_for_kind(kind)) != 0) {
         stp_scene_free(&scene);
         return fail("out of memory for the frame");
     }
@@ -194,6 +243,10 @@ static int cmd_render(int argc, char **argv)
                 "%zu bytes of frame memory\n",
                 scene_path, stats.polygons_in, stats.polygons_skipped, stats.display_entries,
                 stats.frame_bytes);
+    if (palette && index_to_colour(&frame, opt.levels, palette == 2, &opt) != 0) {
+        stp_posix_frame_free(&frame);
+        return fail("out of memory for the frame");
+    }
     if (stp_posix_write(&frame, out_path, kind, err, sizeof err) != 0) {
         stp_posix_frame_free(&frame);
         return fail("%s", err);

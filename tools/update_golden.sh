@@ -21,3 +21,6 @@ for name in balls-s1 mount-s2; do
     "$build/tools/stipple" render "$scenes/$name.nff" --shadows 256 -o "$here/tests/golden/$name-shadows-128x64.pbm"
     echo "wrote tests/golden/$name-shadows-128x64.pbm"
 done
+"$build/tools/stipple" render "$scenes/mount-s2.nff" --color --transparent --hidden painter \
+    -o "$here/tests/golden/mount-s2-transparent-colour-128x64.ppm"
+echo "wrote tests/golden/mount-s2-transparent-colour-128x64.ppm"

@@ -96,6 +96,22 @@ if "$stipple" render "$work/missing.nff" -o "$work/m.pbm" 2>/dev/null; then bad 
 if "$stipple" render "$scenes/tetra-s1.nff" -o "$work/x.jpeg" 2>/dev/null; then bad "unknown extension accepted"; else ok; fi
 if "$stipple" render "$scenes/tetra-s1.nff" -o "$work/x.pbm" --levels 1 2>/dev/null; then bad "--levels 1 accepted"; else ok; fi
 
+# --- indexed frame buffer through a colour table: the grey table gives the
+# grey picture itself; pseudocolour maps each grey to one colour and back
+"$stipple" render "$scenes/teapot-s1.nff" -s 64x32 -o "$work/plain.ppm" &&
+    "$stipple" render "$scenes/teapot-s1.nff" -s 64x32 --palette grey -o "$work/grey.ppm" &&
+    "$stipple" render "$scenes/teapot-s1.nff" -s 64x32 --palette pseudo -o "$work/pseudo.ppm" ||
+    bad "--palette renders"
+if cmp -s "$work/plain.ppm" "$work/grey.ppm"; then ok; else bad "--palette grey differs from the grey picture"; fi
+pairs=$(paste -d' ' <(pnmtoplainpnm "$work/grey.ppm" | tail -n +4 | tr -s ' \n' '\n' | grep . | paste -d, - - -) \
+                    <(pnmtoplainpnm "$work/pseudo.ppm" | tail -n +4 | tr -s ' \n' '\n' | grep . | paste -d, - - -) | sort -u)
+greys=$(echo "$pairs" | cut -d' ' -f1 | sort -u | wc -l)
+colours=$(echo "$pairs" | cut -d' ' -f2 | sort -u | wc -l)
+if [ "$(echo "$pairs" | wc -l)" = "$greys" ] && [ "$greys" = "$colours" ] && [ "$greys" -gt 2 ]; then ok
+else bad "--palette pseudo is not one colour per grey ($greys greys, $colours colours)"; fi
+if "$stipple" render "$scenes/teapot-s1.nff" --palette pseudo -o "$work/x.pbm" 2>/dev/null; then
+    bad "--palette accepted for PBM"; else ok; fi
+
 # --- 3. dither against ImageMagick on a 256x16 ramp with a vertical gradient
 {
     printf 'P2\n256 16\n255\n'

@@ -136,11 +136,13 @@ static void test_golden_shadows(void **state)
 /* Colour shading (10.45) to RGB888 against golden PPMs, byte for byte. */
 static void test_golden_colour(void **state)
 {
-    static const char *const colour_scenes[] = {"balls-s1", "mount-s2", "tetra-s1"};
+    /* the last one again with its glass spheres transparent, back to front */
+    static const char *const colour_scenes[] = {"balls-s1", "mount-s2", "tetra-s1", "mount-s2"};
+    static const char *const suffix[] = {"", "", "", "-transparent"};
     size_t i;
     int failures = 0;
     (void)state;
-    for (i = 0; i < 3; i++) {
+    for (i = 0; i < 4; i++) {
         stp_scene scene;
         stp_tool_options opt;
         stp_posix_frame frame;
@@ -150,10 +152,14 @@ static void test_golden_colour(void **state)
         load(colour_scenes[i], &scene);
         stp_tool_options_default(&opt);
         opt.colour = 1;
+        if (*suffix[i]) {
+            opt.transparency = STP_WITH_TRANSPARENCY;
+            opt.hidden = STP_HIDDEN_PAINTER;
+        }
         render(&scene, &opt, &frame, STP_PIXEL_RGB888);
         stp_scene_free(&scene);
-        snprintf(path, sizeof path, "%s/tests/golden/%s-colour-128x64.ppm",
-                 env_or("STP_SOURCE_DIR", "."), colour_scenes[i]);
+        snprintf(path, sizeof path, "%s/tests/golden/%s%s-colour-128x64.ppm",
+                 env_or("STP_SOURCE_DIR", "."), colour_scenes[i], suffix[i]);
         if (stp_posix_read_pnm(path, &golden, err, sizeof err) != 0) {
             print_error("%s\n", err);
             failures++;
@@ -165,8 +171,8 @@ static void test_golden_colour(void **state)
             stp_posix_image_free(&golden);
         }
         if (differ) {
-            snprintf(path, sizeof path, "%s/%s-colour-128x64.actual.ppm", env_or("STP_BINARY_DIR", "."),
-                     colour_scenes[i]);
+            snprintf(path, sizeof path, "%s/%s%s-colour-128x64.actual.ppm", env_or("STP_BINARY_DIR", "."),
+                     colour_scenes[i], suffix[i]);
             (void)stp_posix_write(&frame, path, STP_POSIX_FILE_P6, err, sizeof err);
             print_error("%s: %zu samples differ; render saved as %s\n", colour_scenes[i], differ, path);
             failures++;
