@@ -392,34 +392,16 @@ static int64_t plane_distance(const stp_renderer *r, int plane, stp_vec3 p)
     }
 }
 
-/* Where segment a-b crosses a plane, given the signed distances da >= 0 > db
- * or the reverse: the fraction t of the way from a, in Q30 ([0, 2^30]). */
-static int64_t clip_fraction(int64_t da, int64_t db)
-{
-    int64_t den = da - db;
-    /* bring the distances below 2^32 so da << 30 cannot overflow */
-    while (den >= ((int64_t)1 << 32) || den <= -((int64_t)1 << 32) ||
-           da >= ((int64_t)1 << 32) || da <= -((int64_t)1 << 32)) {
-        da /= 2;
-        db /= 2;
-        den = da - db;
-    }
-    return den == 0 ? 0 : (da * ((int64_t)1 << 30)) / den;
-}
 
-static stp_fix lerp_fix(stp_fix a, stp_fix b, int64_t t)
-{
-    return stp_fix_sat64(a + stp_asr64(((int64_t)b - a) * t, 30));
-}
 
 #if STP_WITH_LINES
 static stp_vec3 clip_point(stp_vec3 a, stp_vec3 b, int64_t da, int64_t db)
 {
-    int64_t t = clip_fraction(da, db);
+    int64_t t = stp_clip_fraction(da, db);
     stp_vec3 p;
-    p.x = lerp_fix(a.x, b.x, t);
-    p.y = lerp_fix(a.y, b.y, t);
-    p.z = lerp_fix(a.z, b.z, t);
+    p.x = stp_lerp_fix(a.x, b.x, t);
+    p.y = stp_lerp_fix(a.y, b.y, t);
+    p.z = stp_lerp_fix(a.z, b.z, t);
     return p;
 }
 #endif
@@ -449,14 +431,14 @@ static int clip_polygon(stp_renderer *r, int n, int smooth, stp_vec3 **result, s
                 out[m++] = a;
             }
             if ((da >= 0) != (db >= 0)) {
-                int64_t t = clip_fraction(da, db);
+                int64_t t = stp_clip_fraction(da, db);
 #if STP_WITH_GOURAUD
                 if (smooth)
-                    s_out[m] = lerp_fix(s_in[i], s_in[j], t);
+                    s_out[m] = stp_lerp_fix(s_in[i], s_in[j], t);
 #endif
-                out[m].x = lerp_fix(a.x, b.x, t);
-                out[m].y = lerp_fix(a.y, b.y, t);
-                out[m].z = lerp_fix(a.z, b.z, t);
+                out[m].x = stp_lerp_fix(a.x, b.x, t);
+                out[m].y = stp_lerp_fix(a.y, b.y, t);
+                out[m].z = stp_lerp_fix(a.z, b.z, t);
                 m++;
             }
         }

@@ -116,29 +116,6 @@ static stp_fix specular_share(stp_specular_terms s, stp_fix n_dot_h, stp_fix n_d
 }
 #endif
 
-/* UNITY of a - b: *out = (a - b)/|a - b|, returning |a - b| with F
- * fractional bits in 64 bits.  The difference of two stp_fix can exceed the
- * range (points near opposite ends of it), and so can the length of a
- * difference within it: the difference is formed in 64 bits and halved
- * until its length fits (components below 2^30), which keeps its
- * direction, and the length is scaled back unsaturated (below 2^33). */
-static int64_t unity_diff(stp_vec3 a, stp_vec3 b, stp_vec3 *out)
-{
-    const int64_t lim = ((int64_t)1 << 30) - 1;
-    int64_t dx = (int64_t)a.x - b.x, dy = (int64_t)a.y - b.y, dz = (int64_t)a.z - b.z;
-    int shift = 0;
-    stp_vec3 d;
-    while (dx > lim || dx < -lim || dy > lim || dy < -lim || dz > lim || dz < -lim) {
-        dx /= 2;
-        dy /= 2;
-        dz /= 2;
-        shift++;
-    }
-    d.x = (stp_fix)dx;
-    d.y = (stp_fix)dy;
-    d.z = (stp_fix)dz;
-    return (int64_t)stp_vec3_unity(d, out) * ((int64_t)1 << shift);
-}
 
 /* MAKE-SHADE with its parts: when terms is not NULL, *ambient_out gets B*R
  * and terms[j] each light's saturated term (0 for a light that does not
@@ -161,7 +138,7 @@ static inline stp_fix shade_parts(const stp_lighting *lighting, const stp_materi
     if (parallel)
         e = parallel_dir;
     else
-        (void)unity_diff(eye, point, &e);
+        (void)stp_unity_diff(eye, point, &e);
     n_dot_e = stp_vec3_dot(normal, e);
 
     count = lighting->count < 0 ? 0 : (lighting->count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : lighting->count);
@@ -176,7 +153,7 @@ static inline stp_fix shade_parts(const stp_lighting *lighting, const stp_materi
         const stp_light *light = &lighting->lights[j];
         stp_vec3 l;
         stp_fix n_dot_l, term;
-        int64_t u = unity_diff(light->position, point, &l);
+        int64_t u = stp_unity_diff(light->position, point, &l);
         if (u == 0)
             l = normal; /* light on the surface: lit head-on, 1/(C + 0) */
         n_dot_l = stp_vec3_dot(normal, l);

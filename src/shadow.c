@@ -60,26 +60,6 @@ static stp_vec3 cross3(stp_vec3 a, stp_vec3 b)
     return c;
 }
 
-/* UNITY of a - b formed in 64 bits (the difference of two stp_fix may not
- * fit one): returns |a - b| (F bits, up to 2^33), 0 for a == b. */
-static int64_t unity_diff(stp_vec3 a, stp_vec3 b, stp_vec3 *out)
-{
-    const int64_t lim = ((int64_t)1 << 30) - 1;
-    int64_t dx = (int64_t)a.x - b.x, dy = (int64_t)a.y - b.y, dz = (int64_t)a.z - b.z;
-    int shift = 0;
-    stp_vec3 d;
-    while (dx > lim || dx < -lim || dy > lim || dy < -lim || dz > lim || dz < -lim) {
-        dx /= 2;
-        dy /= 2;
-        dz /= 2;
-        shift++;
-    }
-    d.x = (stp_fix)dx;
-    d.y = (stp_fix)dy;
-    d.z = (stp_fix)dz;
-    return (int64_t)stp_vec3_unity(d, out) * ((int64_t)1 << shift);
-}
-
 /* Sum of three products of F-bit values (2F fractional bits) in Q28. */
 static int32_t to_q28(int64_t v)
 {
@@ -140,7 +120,7 @@ int stp_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count
         fov = view ? view->fov_degrees : 90 * ONE;
         if (fov <= 0 || fov >= 180 * ONE)
             return STP_ERR_VIEW;
-        dist = unity_diff(target, lpos, &fwd);
+        dist = stp_unity_diff(target, lpos, &fwd);
         if (dist == 0)
             return STP_ERR_VIEW;
         near = view ? view->near : stp_fix_sat64(dist / 16);
@@ -288,25 +268,6 @@ static int64_t map_plane(const stp_shadow_map *sm, int plane, stp_vec3 p)
     }
 }
 
-/* The fraction (Q30) of the way from a to b where the distance crosses 0
- * (render.c's clip_fraction). */
-static int64_t clip_fraction(int64_t da, int64_t db)
-{
-    int64_t den = da - db;
-    while (den >= ((int64_t)1 << 32) || den <= -((int64_t)1 << 32) || da >= ((int64_t)1 << 32) ||
-           da <= -((int64_t)1 << 32)) {
-        da /= 2;
-        db /= 2;
-        den = da - db;
-    }
-    return den == 0 ? 0 : (da * ((int64_t)1 << 30)) / den;
-}
-
-static stp_fix lerp_fix(stp_fix a, stp_fix b, int64_t t)
-{
-    return stp_fix_sat64(a + stp_asr64(((int64_t)b - a) * t, 30));
-}
-
 /* Sutherland-Hodgman against the map's pyramid, from r->clip_a (light
  * frame); the result in *result, the other buffer in *spare. */
 static int clip_to_map(stp_renderer *r, const stp_shadow_map *sm, int n, stp_vec3 **result,
@@ -322,10 +283,10 @@ static int clip_to_map(stp_renderer *r, const stp_shadow_map *sm, int n, stp_vec
             if (da >= 0)
                 out[m++] = a;
             if ((da >= 0) != (db >= 0)) {
-                int64_t t = clip_fraction(da, db);
-                out[m].x = lerp_fix(a.x, b.x, t);
-                out[m].y = lerp_fix(a.y, b.y, t);
-                out[m].z = lerp_fix(a.z, b.z, t);
+                int64_t t = stp_clip_fraction(da, db);
+                out[m].x = stp_lerp_fix(a.x, b.x, t);
+                out[m].y = stp_lerp_fix(a.y, b.y, t);
+                out[m].z = stp_lerp_fix(a.z, b.z, t);
                 m++;
             }
         }
