@@ -17,4 +17,9 @@ for kind in plain sanitize; do
     cmake --build "$build" -j"$(nproc)"
     ctest --test-dir "$build" --output-on-failure -j"$(nproc)" || status=1
 done
+# A short fuzzing run of every libFuzzer target (clang, ASan+UBSan), after
+# replaying the committed corpus and regressions.
+echo "=== fuzz"
+"$here/tests/fuzz/run_fuzz.sh" --replay || status=1
+"$here/tests/fuzz/run_fuzz.sh" --no-build -t "${STP_FUZZ_SECONDS:-20}" || status=1
 exit $status
