@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Build the libFuzzer targets with clang in their own build directory and run
 # each one over its committed seed corpus for a while; or replay the
-# committed inputs; or minimise the corpus.
+# committed inputs; or add the few inputs that cover new edges to the corpus.
 #
 # Usage: tests/fuzz/run_fuzz.sh [options] [TARGET...]
 #   -t SECONDS      fuzzing time per target (default 20; env STP_FUZZ_SECONDS)
@@ -10,8 +10,9 @@
 #   --no-build      use the binaries already in --bin-dir
 #   --replay        run every committed input (corpus/<target>/ and
 #                   regressions/<target>/) once and stop: the regression test
-#   --merge         minimise corpus/<target>/ with -merge=1, keeping its files
-#                   plus what the last fuzzing run found (work/<target>/)
+#   --merge         add to corpus/<target>/ the fewest inputs of the last
+#                   fuzzing runs (<bin-dir>/work/<target>/) that cover edges
+#                   its files do not (-set_cover_merge=1); its files stay
 #   -- ARGS...      further libFuzzer flags for the fuzzing runs
 # TARGET: fuzz_nff fuzz_obj fuzz_off fuzz_pnm fuzz_display_file (default all).
 #
@@ -102,10 +103,9 @@ for t in "${targets[@]}"; do
         fi
         ;;
     merge)
-        fresh=$(mktemp -d "$bin_dir/work/merge-$t.XXXXXX")
-        if "$exe" -merge=1 "${dict[@]}" "$fresh" "$seeds" "$work" >"$log" 2>&1; then
-            find "$seeds" -type f ! -name '.*' ! -name '*.md' -delete
-            cp "$fresh"/* "$seeds"/ 2>/dev/null
+        # The committed files stay; a greedy set cover over edges (counters
+        # off) picks the fewest found inputs that cover what they do not.
+        if "$exe" -set_cover_merge=1 -use_counters=0 "$seeds" "$work" >"$log" 2>&1; then
             echo "== $t: corpus now $(find "$seeds" -type f | wc -l) files," \
                  "$(du -sb "$seeds" | cut -f1) bytes"
         else
@@ -113,7 +113,6 @@ for t in "${targets[@]}"; do
             tail -n 40 "$log" >&2
             status=1
         fi
-        rm -rf "$fresh"
         ;;
     fuzz)
         before=$(find "$artifacts" -type f | wc -l)
