@@ -49,6 +49,10 @@ static uint8_t level_of(const frame *fr, int index)
 
 static uint8_t style_code(const frame *fr, int index)
 {
+    /* indices entered under more levels than are now set show as the top
+     * style (0 stays 0: "nothing drawn") */
+    if (index > fr->r->levels)
+        index = fr->r->levels;
     if (fr->out->styles)
         return stp_style_lookup(fr->out->styles, index);
     return (uint8_t)index;
@@ -667,6 +671,9 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
         return STP_ERR_ARG;
     if (mem->band_size < fr.stride * mem->band_rows)
         return STP_ERR_MEMORY;
+    /* STYLE8 without a table stores the index in a byte: 1..255 */
+    if (port->format == STP_PIXEL_STYLE8 && output->styles == 0 && r->levels > 255)
+        return STP_ERR_ARG;
     hidden = output->hidden;
     if (hidden == STP_HIDDEN_ZBUFFER) {
 #if STP_WITH_ZBUFFER

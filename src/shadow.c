@@ -99,7 +99,7 @@ int stp_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count
                        uint32_t height, const stp_shadow_view *view)
 {
 #if STP_WITH_SHADOWS
-    stp_shadow_map *sm;
+    stp_shadow_map *sm, built; /* built aside: a refused call changes nothing */
     stp_vec3 target, fwd, right, up, basis[3], vbasis[3];
     stp_fix fov, near, half, s, c;
     int64_t dist;
@@ -113,7 +113,8 @@ int stp_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count
     texels = (size_t)width * height;
     if (count < texels)
         return STP_ERR_MEMORY;
-    sm = &r->shadow[light];
+    built = r->shadow[light];
+    sm = &built;
     {
         stp_vec3 lpos = r->user_lighting.lights[light].position;
         target = view ? view->target : r->at;
@@ -174,6 +175,7 @@ int stp_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count
     sm->height = height;
     r->shadow_generation = r->shadow_generation % 0x7FFFFFu + 1u;
     sm->generation = r->shadow_generation;
+    r->shadow[light] = built;
     return STP_OK;
 #else
     (void)light;

@@ -24,7 +24,8 @@ typedef enum stp_pixel_format {
     STP_PIXEL_RGB888 = 2,
     /* 8-bit style codes: each pixel holds the code the style table gives for
      * its INTENSITY index (a line printer's character, say); without a table,
-     * the index 1..levels itself (0 where nothing is drawn and the
+     * the index 1..levels itself (so at most 255 levels: stp_render refuses
+     * 256 with STP_ERR_ARG) (0 where nothing is drawn and the
      * background is 0). */
     STP_PIXEL_STYLE8 = 3
 } stp_pixel_format;

@@ -17,6 +17,8 @@
  * API says it is no longer used (replaced, removed, or a new view).
  *
  * Checked beyond the sanitizers:
+ *  - a setting call that fails (view, lighting, levels, transparency, shadow
+ *    maps, segments) leaves the renderer object unchanged, byte for byte;
  *  - segments follow a model of the API's rules: the status of create,
  *    close, delete and visibility; the display file's use (each segment's
  *    share is removed on delete, used <= capacity, failed calls enter
@@ -29,7 +31,11 @@
  *  - the picture does not depend on the band height: each render is done
  *    again in one band as tall as the frame and must match pixel for pixel
  *    (render.h: "the result is the same pixel for pixel whatever the band
- *    height"); RGB888 pixels are grey (R = G = B).
+ *    height");
+ *  - the formats agree (without transparency): MONO1 is the GREY8 picture
+ *    through the halftone cell, RGB888 without colour is grey (R = G = B =
+ *    GREY8), STYLE8 without a style table holds indices 1..levels whose
+ *    levels GREY8 shows (port.h; 0 only for a background of 0).
  */
 #include <string.h>
 
@@ -134,9 +140,30 @@ typedef struct state {
     stp_vec3 target; /* the view's "at": polygons built near it are seen */
     int renders;
     int colour_seen; /* colour shading was on at some time: colour polygons */
+    int transparency_seen; /* polygons may be transparent */
     int light_count; /* lights of the current lighting */
     uint16_t *maps[STP_MAX_LIGHTS]; /* shadow maps lent to the renderer */
+    uint8_t *snapshot; /* the renderer object before a setting call */
+    size_t mem_size;
 } state;
+
+/* A refused setting must leave the renderer as it was: the renderer object
+ * is compared byte for byte with its copy from before the call. */
+static void snap(state *st)
+{
+    memcpy(st->snapshot, (const void *)st->r, st->mem_size);
+}
+
+static void same_if_failed(const state *st, int status, const char *call)
+{
+    size_t i;
+    if (status == STP_OK)
+        return;
+    for (i = 0; i < st->mem_size; i++)
+        FZ_CHECK(st->snapshot[i] == ((const uint8_t *)st->r)[i],
+                 "%s failed (%d) but changed the renderer (byte %zu of %zu)", call, status, i,
+                 st->mem_size);
+}
 
 static void drop_map(state *st, int light)
 {
@@ -308,6 +335,12 @@ static int render_once(state *st, const render_args *a, fault f, uint32_t fail_a
         }
         default: break;
         }
+        /* port.h: STYLE8 without a table holds indices 1..255 only; the
+         * check comes after the argument and buffer-size checks */
+        if ((expect == STP_OK || expect == STP_ERR_MEMORY || expect == STP_ERR_PORT) &&
+            f != FAULT_BAND_SIZE &&
+            cap.port.format == STP_PIXEL_STYLE8 && out.styles == NULL && st->levels > 255)
+            expect = STP_ERR_ARG;
         status = stp_render(st->r, &cap.port, &out, &mem);
     }
     FZ_CHECK(status == expect, "stp_render returned %d (%s), expected %d (fault %d)", status,
@@ -383,8 +416,78 @@ static void pick_cell(fz_reader *in, render_args *a)
     a->out.cell = &a->cell;
 }
 
+/* The 8-bit level GREY8 shows for a style index (render.h, stp_output). */
+static int level_of(const state *st, const render_args *a, int index)
+{
+    if (index < 1)
+        index = 1;
+    if (index > st->levels)
+        index = st->levels;
+    if (a->out.gamma)
+        return a->out.gamma[index - 1];
+    return ((index - 1) * 255 + (st->levels - 1) / 2) / (st->levels - 1);
+}
+
+/* The same picture in GREY8 decides the other formats: MONO1 is GREY8
+ * through the halftone cell (stp_cell_on), RGB888 without colour is GREY8
+ * in each channel, STYLE8 without a table holds the index 1..levels whose
+ * level GREY8 shows (0: the background, when it is 0).  Not with
+ * transparency: its blend reads back the device's own pixels, which differ
+ * (1-bit on MONO1) by design. */
+static void cross_check(state *st, const render_args *a, const uint8_t *frame)
+{
+    render_args g = *a;
+    uint8_t *grey = NULL;
+    stp_cell bayer;
+    const stp_cell *cell = a->out.cell;
+    size_t stride = stp_row_bytes(a->format, st->width);
+    uint32_t x, y;
+
+    if (a->format == STP_PIXEL_GREY8 || st->transparency_seen ||
+        (a->format == STP_PIXEL_RGB888 && (st->colour_seen || a->background_colour)) ||
+        (a->format == STP_PIXEL_STYLE8 && a->out.styles))
+        return;
+    g.format = STP_PIXEL_GREY8;
+    g.band_rows = st->height;
+    if (g.out.cell == &a->cell)
+        g.out.cell = &g.cell;
+    FZ_CHECK(render_once(st, &g, FAULT_NONE, 0, &grey) == STP_OK, "GREY8 render failed");
+    if (cell == NULL) {
+        FZ_CHECK(stp_cell_bayer(&bayer, 4) == 0, "Bayer 4x4 refused");
+        cell = &bayer;
+    }
+    for (y = 0; y < st->height; y++) {
+        for (x = 0; x < st->width; x++) {
+            const uint8_t *p = frame + (size_t)y * stride;
+            uint8_t v = grey[(size_t)y * st->width + x];
+            switch (a->format) {
+            case STP_PIXEL_MONO1: {
+                int bit = (p[x >> 3] >> (7u - (x & 7u))) & 1;
+                FZ_CHECK(bit == (stp_cell_on(cell, x, y, v) != 0),
+                         "MONO1 pixel (%u, %u) is %d, GREY8 level %u gives %d", (unsigned)x,
+                         (unsigned)y, bit, v, !bit);
+                break;
+            }
+            case STP_PIXEL_RGB888:
+                FZ_CHECK(p[3 * x] == v, "RGB888 pixel (%u, %u) is %u, GREY8 %u", (unsigned)x,
+                         (unsigned)y, p[3 * x], v);
+                break;
+            default:
+                FZ_CHECK(p[x] <= st->levels, "STYLE8 pixel (%u, %u) holds index %u of %d levels",
+                         (unsigned)x, (unsigned)y, p[x], st->levels);
+                FZ_CHECK(v == level_of(st, a, p[x]),
+                         "STYLE8 pixel (%u, %u) holds index %u (level %d) where GREY8 shows %u "
+                         "(%d levels)",
+                         (unsigned)x, (unsigned)y, p[x], level_of(st, a, p[x]), v, st->levels);
+                break;
+            }
+        }
+    }
+    free(grey);
+}
+
 /* Render with arguments from the input, check it, and unless a fault was
- * injected, render again in one band and compare. */
+ * injected, render again in one band and compare, and against GREY8. */
 static void op_render(state *st, fz_reader *in, int final_hidden)
 {
     render_args a;
@@ -458,6 +561,7 @@ static void op_render(state *st, fz_reader *in, int final_hidden)
                  "(format %d, hidden %d, %ux%u)",
                  (unsigned)x, (unsigned)y, (unsigned)a.band_rows, (unsigned)st->height,
                  (int)a.format, (int)a.hidden, (unsigned)st->width, (unsigned)st->height);
+        cross_check(st, &a, banded);
     }
     free(banded);
     free(whole);
@@ -481,7 +585,9 @@ static void op_view(state *st, fz_reader *in)
     v.hither = fz_fix(in);
     v.projection = (stp_projection)fz_range(in, 0, 2);
     bad_projection = v.projection != STP_PERSPECTIVE && v.projection != STP_PARALLEL;
+    snap(st);
     status = stp_set_view(st->r, &v);
+    same_if_failed(st, status, "stp_set_view");
     FZ_CHECK(status == STP_OK || status == STP_ERR_VIEW || (bad_projection && status == STP_ERR_ARG),
              "stp_set_view returned %d", status);
     FZ_CHECK(!(bad_projection && status == STP_OK), "an unknown projection was accepted");
@@ -510,7 +616,9 @@ static void op_lighting(state *st, fz_reader *in)
         for (c = 0; c < 3; c++)
             l.lights[i].colour[c] = fz_u8(in) & 1 ? fz_fix(in) : ONE;
     }
+    snap(st);
     status = stp_set_lighting(st->r, &l);
+    same_if_failed(st, status, "stp_set_lighting");
     if (l.count < 0 || l.count > STP_MAX_LIGHTS)
         FZ_CHECK(status == STP_ERR_ARG, "light count %d gave %d", l.count, status);
     else
@@ -548,7 +656,9 @@ static void op_shadow_map(state *st, fz_reader *in)
     view.target = how & 2 ? fz_vec(in) : fz_near(in, st->target);
     view.fov_degrees = how & 4 ? fz_fix(in) : fz_range(in, 1, 179) * ONE;
     view.near = how & 16 ? fz_fix(in) : (stp_fix)fz_u8(in) * (ONE / 16);
+    snap(st);
     status = stp_set_shadow_map(st->r, light, depth, count, w, h, how & 1 ? &view : NULL);
+    same_if_failed(st, status, "stp_set_shadow_map");
     if (expect == STP_OK)
         FZ_CHECK(status == STP_OK || status == STP_ERR_VIEW,
                  "stp_set_shadow_map(light %d, %ux%u) returned %d", light, (unsigned)w,
@@ -570,7 +680,10 @@ static void op_shadow_map(state *st, fz_reader *in)
 static void op_remove_shadow_map(state *st, fz_reader *in)
 {
     int light = fz_range(in, -1, STP_MAX_LIGHTS);
-    int status = stp_remove_shadow_map(st->r, light);
+    int status;
+    snap(st);
+    status = stp_remove_shadow_map(st->r, light);
+    same_if_failed(st, status, "stp_remove_shadow_map");
     int valid = light >= 0 && light < STP_MAX_LIGHTS;
     FZ_CHECK(status == (valid ? STP_OK : STP_ERR_ARG), "stp_remove_shadow_map(%d) returned %d",
              light, status);
@@ -604,7 +717,9 @@ static void op_segment_create(state *st, fz_reader *in)
         expect = STP_ERR_FULL;
     else
         expect = STP_OK;
+    snap(st);
     status = stp_segment_create(st->r, id);
+    same_if_failed(st, status, "stp_segment_create");
     FZ_CHECK(status == expect, "stp_segment_create(%d) returned %d, expected %d", id, status,
              expect);
     if (status == STP_OK) {
@@ -617,7 +732,10 @@ static void op_segment_create(state *st, fz_reader *in)
 
 static void op_segment_close(state *st)
 {
-    int status = stp_segment_close(st->r);
+    int status;
+    snap(st);
+    status = stp_segment_close(st->r);
+    same_if_failed(st, status, "stp_segment_close");
     FZ_CHECK(status == (st->open >= 0 ? STP_OK : STP_ERR_SEGMENT), "stp_segment_close gave %d",
              status);
     if (st->open >= 0) {
@@ -630,7 +748,10 @@ static void op_segment_delete(state *st, fz_reader *in)
 {
     int id = fz_seg_id(in), s = find_seg(st, id);
     int expect = s < 0 || st->seg[s].open ? STP_ERR_SEGMENT : STP_OK;
-    int status = stp_segment_delete(st->r, id);
+    int status;
+    snap(st);
+    status = stp_segment_delete(st->r, id);
+    same_if_failed(st, status, "stp_segment_delete");
     FZ_CHECK(status == expect, "stp_segment_delete(%d) returned %d, expected %d", id, status,
              expect);
     if (status == STP_OK)
@@ -641,7 +762,10 @@ static void op_segment_visibility(state *st, fz_reader *in)
 {
     int id = fz_seg_id(in), s = find_seg(st, id);
     int visible = (int)(int8_t)fz_u8(in) % 3;
-    int status = stp_segment_visibility(st->r, id, visible);
+    int status;
+    snap(st);
+    status = stp_segment_visibility(st->r, id, visible);
+    same_if_failed(st, status, "stp_segment_visibility");
     FZ_CHECK(status == (s < 0 ? STP_ERR_SEGMENT : STP_OK),
              "stp_segment_visibility(%d) returned %d", id, status);
     if (s >= 0)
@@ -763,7 +887,11 @@ static void op_transparency(state *st, fz_reader *in)
     }
     in_range = t_min >= 0 && t_min <= ONE && t_max >= 0 && t_max <= ONE && power >= 1 &&
                power <= 4 && absorption >= 0 && thickness >= 0;
+    snap(st);
     status = stp_set_transparency(st->r, t_min, t_max, power, absorption, thickness);
+    same_if_failed(st, status, "stp_set_transparency");
+    if (status == STP_OK && (t_min != 0 || t_max != 0))
+        st->transparency_seen = 1;
     FZ_CHECK(status == (in_range ? STP_OK : STP_ERR_ARG),
              "stp_set_transparency(%d, %d, %d, %d, %d) returned %d", (int)t_min, (int)t_max,
              power, (int)absorption, (int)thickness, status);
@@ -800,7 +928,10 @@ static void op_call(state *st, fz_reader *in)
     case 5: stp_set_fill_style(st->r, fz_range(in, -2, 300)); break;
     case 6: {
         int levels = fz_u8(in) & 1 ? fz_range(in, 2, 256) : fz_range(in, -1, 300);
-        int status = stp_set_levels(st->r, levels);
+        int status;
+        snap(st);
+        status = stp_set_levels(st->r, levels);
+        same_if_failed(st, status, "stp_set_levels");
         FZ_CHECK(status == (levels >= 2 && levels <= 256 ? STP_OK : STP_ERR_ARG),
                  "stp_set_levels(%d) returned %d", levels, status);
         if (status == STP_OK)
@@ -873,6 +1004,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     st.target.x = st.target.y = st.target.z = 0;
 
     mem = xmalloc(mem_size);
+    st.mem_size = mem_size;
+    st.snapshot = (uint8_t *)xmalloc(mem_size);
     st.df = (stp_instr *)xmalloc(st.capacity * sizeof *st.df);
     FZ_CHECK(stp_renderer_create(mem, mem_size - 1, st.df, st.capacity, st.width, st.height) ==
                  NULL,
@@ -895,6 +1028,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     for (calls = 0; calls < STP_MAX_LIGHTS; calls++)
         drop_map(&st, calls);
     free(st.df);
+    free(st.snapshot);
     free(mem);
     return 0;
 }
