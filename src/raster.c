@@ -1,6 +1,7 @@
 /* The display-file interpreter: hidden surfaces, scan conversion and band
  * output.  See the fill rule in include/stipple/render.h. */
 #include "render_private.h"
+#include "output_private.h"
 
 #define SUB STP_SUBPIXEL_BITS
 #define HALF_PIXEL (1 << (SUB - 1))
@@ -37,25 +38,14 @@ typedef struct frame {
 /* 8-bit drive value of a style index (gamma table or linear). */
 static uint8_t level_of(const frame *fr, int index)
 {
-    int levels = fr->r->levels;
-    if (index < 1)
-        index = 1;
-    if (index > levels)
-        index = levels;
-    if (fr->out->gamma)
-        return fr->out->gamma[index - 1];
-    return (uint8_t)(((index - 1) * 255 + (levels - 1) / 2) / (levels - 1));
+    return stp_output_level(fr->out, fr->r->levels, index);
 }
 
+/* indices entered under more levels than are now set show as the top
+ * style (0 stays 0: "nothing drawn") */
 static uint8_t style_code(const frame *fr, int index)
 {
-    /* indices entered under more levels than are now set show as the top
-     * style (0 stays 0: "nothing drawn") */
-    if (index > fr->r->levels)
-        index = fr->r->levels;
-    if (fr->out->styles)
-        return stp_style_lookup(fr->out->styles, index);
-    return (uint8_t)index;
+    return stp_output_style_code(fr->out, fr->r->levels, index);
 }
 
 /* What a STP_OP_SHADE paints with: its colour on an RGB888 device when it

@@ -1,6 +1,7 @@
 /* The display file: viewing, segments and DISPLAY-FILE-ENTER (transform,
  * SHADE-CHECK, clip, project, store).  See include/stipple/render.h. */
 #include "render_private.h"
+#include "view_private.h"
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -70,64 +71,22 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     return r;
 }
 
-static stp_vec3 cross(stp_vec3 a, stp_vec3 b)
-{
-    stp_vec3 c;
-    c.x = stp_fix_sat64(stp_asr64((int64_t)a.y * b.z - (int64_t)a.z * b.y, F));
-    c.y = stp_fix_sat64(stp_asr64((int64_t)a.z * b.x - (int64_t)a.x * b.z, F));
-    c.z = stp_fix_sat64(stp_asr64((int64_t)a.x * b.y - (int64_t)a.y * b.x, F));
-    return c;
-}
-
 int stp_set_view(stp_renderer *r, const stp_view *v)
 {
-    stp_vec3 dir, right, up;
-    uint32_t short_side;
+    stp_view_frame vf;
+    int status;
     if (r == 0 || v == 0)
         return STP_ERR_ARG;
-    dir.x = stp_fix_sub(v->at.x, v->from.x);
-    dir.y = stp_fix_sub(v->at.y, v->from.y);
-    dir.z = stp_fix_sub(v->at.z, v->from.z);
-    if (stp_vec3_unity(dir, &dir) == 0)
-        return STP_ERR_VIEW;
-    {
-        stp_vec3 upn;
-        if (stp_vec3_unity(v->up, &upn) == 0)
-            return STP_ERR_VIEW;
-        /* right = dir x up; a short cross product means up is (nearly)
-         * along the line of sight: no roll can be derived */
-        right = cross(dir, upn);
-        if (stp_vec3_unity(right, &right) < (ONE >> 10))
-            return STP_ERR_VIEW;
-    }
-    up = cross(right, dir);
-    (void)stp_vec3_unity(up, &up);
-    if (v->hither <= 0)
-        return STP_ERR_VIEW;
-    short_side = r->width < r->height ? r->width : r->height;
-    if (v->projection == STP_PERSPECTIVE) {
-        /* focal = (short/2) / tan(fov/2), in pixels, F fractional bits */
-        stp_fix half = v->fov_degrees / 2, s, c;
-        if (v->fov_degrees <= 0 || v->fov_degrees >= 180 * ONE)
-            return STP_ERR_VIEW;
-        s = stp_fix_sin_deg(half);
-        c = stp_fix_cos_deg(half);
-        if (s <= 0)
-            return STP_ERR_VIEW;
-        r->focal = stp_fix_sat64(((int64_t)short_side * c * (ONE / 2)) / s);
-    } else if (v->projection == STP_PARALLEL) {
-        if (v->window_half <= 0)
-            return STP_ERR_VIEW;
-        r->focal = stp_fix_sat64(((int64_t)short_side * ONE * (ONE / 2)) / v->window_half);
-    } else {
-        return STP_ERR_ARG;
-    }
-    r->from = v->from;
-    r->forward = dir;
-    r->right = right;
-    r->up = up;
-    r->projection = v->projection;
-    r->hither = v->hither;
+    status = stp_view_frame_make(v, r->width, r->height, &vf);
+    if (status != STP_OK)
+        return status;
+    r->focal = vf.focal;
+    r->from = vf.from;
+    r->forward = vf.forward;
+    r->right = vf.right;
+    r->up = vf.up;
+    r->projection = vf.projection;
+    r->hither = vf.hither;
     r->pen_valid = 0;
 #if STP_WITH_SHADOWS
     {

@@ -31,7 +31,7 @@ void stp_material_default(stp_material *material)
     material->colour[0] = material->colour[1] = material->colour[2] = ONE;
 }
 
-#if STP_WITH_SPECULAR
+#if STP_WITH_SPECULAR || STP_WITH_RAYTRACE
 /* Fresnel factor (10.6)-(10.8) in the listing's order of operations.
  * c = E.H in (0, 1], n > 0.  Result clamped to [0, 1]. */
 static stp_fix fresnel(stp_fix c, stp_fix n)
@@ -56,6 +56,13 @@ static stp_fix fresnel(stp_fix c, stp_fix n)
     /* r2 <= 2^F and ONE + t2 < 2^47: the product fits */
     fr = (r2 * (ONE + t2)) >> (F + 1);
     return fr > ONE ? ONE : (stp_fix)fr;
+}
+
+stp_fix stp_fresnel(stp_fix c, stp_fix n)
+{
+    if (c <= 0)
+        return ONE;
+    return fresnel(c > ONE ? ONE : c, n <= 0 ? 1 : n);
 }
 #endif
 

@@ -16,6 +16,7 @@
  *     +-2^40 (a polygon seen edge-on), so a key at a pixel stays below 2^62.
  * Every quotient that could overflow goes through shl_div, which saturates. */
 #include "render_private.h"
+#include "view_private.h"
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -49,15 +50,6 @@ static int64_t shl_div(int64_t a, int t, int64_t b)
         return a < 0 ? -((int64_t)1 << 62) : ((int64_t)1 << 62);
     q = (int64_t)((ua << t) / (uint64_t)b);
     return a < 0 ? -q : q;
-}
-
-static stp_vec3 cross3(stp_vec3 a, stp_vec3 b)
-{
-    stp_vec3 c;
-    c.x = stp_fix_sat64(stp_asr64((int64_t)a.y * b.z - (int64_t)a.z * b.y, F));
-    c.y = stp_fix_sat64(stp_asr64((int64_t)a.z * b.x - (int64_t)a.x * b.z, F));
-    c.z = stp_fix_sat64(stp_asr64((int64_t)a.x * b.y - (int64_t)a.y * b.x, F));
-    return c;
 }
 
 /* Sum of three products of F-bit values (2F fractional bits) in Q28. */
@@ -131,13 +123,13 @@ int stp_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count
             near = 1;
         /* the map's roll: the view's up, or its forward when the axis runs
          * along the view's up (as stp_set_view derives its own) */
-        right = cross3(fwd, r->up);
+        right = stp_vec3_cross(fwd, r->up);
         if (stp_vec3_unity(right, &right) < (ONE >> 10)) {
-            right = cross3(fwd, r->forward);
+            right = stp_vec3_cross(fwd, r->forward);
             if (stp_vec3_unity(right, &right) == 0)
                 return STP_ERR_VIEW;
         }
-        up = cross3(right, fwd);
+        up = stp_vec3_cross(right, fwd);
         (void)stp_vec3_unity(up, &up);
         basis[0] = right;
         basis[1] = up;

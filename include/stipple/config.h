@@ -96,6 +96,20 @@
 #define STP_WITH_LINES 1
 #endif
 
+/* 1: the ray tracer (include/stipple/raytrace.h) is compiled in.  It lives
+ * in its own object file, so a program that never calls it does not link
+ * it even when it is on; 0 takes its code out of the library
+ * (stp_rt_create then returns NULL). */
+#ifndef STP_WITH_RAYTRACE
+#define STP_WITH_RAYTRACE 1
+#endif
+
+/* Deepest recursion the ray tracer accepts (stp_rt_set_recursion); each
+ * level is one stack frame of about 300 bytes. */
+#ifndef STP_RT_MAX_DEPTH
+#define STP_RT_MAX_DEPTH 8
+#endif
+
 #if STP_FIX_FRAC_BITS < 12 || STP_FIX_FRAC_BITS > 20
 #error "STP_FIX_FRAC_BITS must be within 12..20"
 #endif

@@ -69,6 +69,15 @@ typedef struct stp_specular_terms {
 stp_specular_terms stp_specular(stp_fix n_dot_h, stp_fix n_dot_e, stp_fix n_dot_l,
                                 stp_fix e_dot_h, stp_fix refraction, stp_fix gloss);
 
+#if STP_WITH_SPECULAR || STP_WITH_RAYTRACE
+/* The Fresnel factor F of (10.6)-(10.8), in [0, 1], for the cosine c of
+ * the angle of incidence (E.H for a highlight, E.N for a mirror
+ * reflection, (10.22)) and the index of refraction n (> 0; values <= 0 are
+ * taken as 2^-F).  c <= 0 (grazing or behind) gives 1, as does an
+ * imaginary g (n < 1 beyond the critical angle). */
+stp_fix stp_fresnel(stp_fix c, stp_fix n);
+#endif
+
 /* MAKE-SHADE (Algorithm 10.5, extended to (10.16)) for one surface point.
  *   normal     unit surface normal N (from stp_vec3_unity)
  *   point      the point, in the same frame as the lights' positions

@@ -1,0 +1,27 @@
+/* Private: the view frame shared by the polygon renderer and the ray
+ * tracer, and the cross product the core's files share. */
+#ifndef STIPPLE_VIEW_PRIVATE_H
+#define STIPPLE_VIEW_PRIVATE_H
+
+#include "stipple/render.h"
+
+/* A view turned into what both renderers use: an orthonormal left-handed
+ * basis (unit stp_vec3: x right, y up, z forward along the line of sight),
+ * the centre of projection and the focal length: perspective, pixels per
+ * unit of x/z; parallel, pixels per world unit (F fractional bits). */
+typedef struct stp_view_frame {
+    stp_vec3 from, right, up, forward;
+    stp_fix focal, hither;
+    stp_projection projection;
+} stp_view_frame;
+
+/* The frame of view v on a width x height device.  Returns STP_OK,
+ * STP_ERR_VIEW (from == at, up along the line of sight, fov outside
+ * (0, 180), hither or window_half <= 0) or STP_ERR_ARG (a bad projection);
+ * *out is written only on success. */
+int stp_view_frame_make(const stp_view *v, uint32_t width, uint32_t height, stp_view_frame *out);
+
+/* a x b with F fractional bits, each component saturated. */
+stp_vec3 stp_vec3_cross(stp_vec3 a, stp_vec3 b);
+
+#endif
