@@ -433,6 +433,9 @@ int stp_tool_compile_main(int argc, char **argv)
         return 2;
     }
     /* the compiled-scene firmware path enters flat, grey, opaque polygons */
+    if (opt.raytrace)
+        return fail("--raytrace is not supported for compiled scenes (they carry a display "
+                    "file)");
     if (opt.smooth || opt.colour || opt.transparency || opt.shadow_resolution)
         return fail("--smooth, --color, --transparent and --shadows are not supported for "
                     "compiled scenes yet");

@@ -31,6 +31,10 @@ static const struct option shared[] = {
     {"slices", required_argument, 0, STP_TOOL_OPT_SLICES},
     {"stacks", required_argument, 0, STP_TOOL_OPT_STACKS},
     {"shadows", required_argument, 0, STP_TOOL_OPT_SHADOWS},
+    {"raytrace", no_argument, 0, STP_TOOL_OPT_RAYTRACE},
+    {"depth", required_argument, 0, STP_TOOL_OPT_DEPTH},
+    {"min-weight", required_argument, 0, STP_TOOL_OPT_MIN_WEIGHT},
+    {"no-hierarchy", no_argument, 0, STP_TOOL_OPT_NO_HIERARCHY},
 };
 
 int stp_tool_long_options(struct option *out, size_t cap, const struct option *extra)
@@ -239,6 +243,16 @@ int stp_tool_apply_option(int code, const char *arg, stp_tool_options *opt,
             opt->shadow_resolution = (unsigned)n;
         break;
     }
+    case STP_TOOL_OPT_RAYTRACE: opt->raytrace = 1; break;
+    case STP_TOOL_OPT_DEPTH:
+        if (stp_tool_parse_int(arg, 0, STP_RT_MAX_DEPTH, &opt->rt_depth))
+            what = "--depth (0..max)";
+        break;
+    case STP_TOOL_OPT_MIN_WEIGHT:
+        if (parse_range(arg, 0, 0, 1, 0, &opt->rt_min_weight))
+            what = "--min-weight (0..1)";
+        break;
+    case STP_TOOL_OPT_NO_HIERARCHY: opt->rt_hierarchy = 0; break;
     default: return 0;
     }
     if (what) {
@@ -281,6 +295,14 @@ void stp_tool_options_help(FILE *to)
             "      --slices N           sphere/cone slices for tessellation (default 16)\n"
             "      --stacks N           sphere stacks (default 8)\n"
             "      --shadows N          shadows: a shadow Z buffer of N x N texels per light\n"
-            "                           (512 suits 320x240; memory 2 N^2 bytes per light)\n",
-            STP_MAX_LIGHTS);
+            "                           (512 suits 320x240; memory 2 N^2 bytes per light)\n"
+            "      --raytrace           ray-trace instead (SPEC.md 5): spheres and cones stay\n"
+            "                           analytic, shadows by shadow rays, reflections weighted\n"
+            "                           Ks F, refraction through NFF's T (Snell in spheres)\n"
+            "      --depth N            ray tracer: deepest reflection/refraction, 0..%d\n"
+            "                           (default 4)\n"
+            "      --min-weight W       ray tracer: rays weighing less are not cast, 0..1\n"
+            "                           (default 0.015625)\n"
+            "      --no-hierarchy       ray tracer: test every object (no bounding volumes)\n",
+            STP_MAX_LIGHTS, STP_RT_MAX_DEPTH);
 }

@@ -26,6 +26,9 @@ void stp_tool_options_default(stp_tool_options *opt)
     opt->attenuation_c = 1.0;
     opt->auto_power = 1;
     opt->perspective = 1;
+    opt->rt_depth = 4;
+    opt->rt_min_weight = 1.0 / 64;
+    opt->rt_hierarchy = 1;
 }
 
 stp_fix stp_tool_fix(double v)
@@ -40,7 +43,7 @@ stp_fix stp_tool_fix(double v)
     return (stp_fix)lround(s);
 }
 
-static stp_vec3 fix3(stp_scene_vec3 v)
+stp_vec3 stp_tool_vec3(stp_scene_vec3 v)
 {
     stp_vec3 r;
     r.x = stp_tool_fix(v.x);
@@ -190,9 +193,9 @@ int stp_tool_setup(const stp_scene *scene, const stp_tool_options *opt, stp_view
 
     memset(&view, 0, sizeof view);
     if (scene->has_view) {
-        view.from = fix3(scene->from);
-        view.at = fix3(scene->at);
-        view.up = fix3(scene->up);
+        view.from = stp_tool_vec3(scene->from);
+        view.at = stp_tool_vec3(scene->at);
+        view.up = stp_tool_vec3(scene->up);
         view.fov_degrees = stp_tool_fix(opt->fov > 0 ? opt->fov : scene->angle);
         view.hither = stp_tool_fix(scene->hither > 0 ? scene->hither : 1e-3);
     } else {
@@ -204,8 +207,8 @@ int stp_tool_setup(const stp_scene *scene, const stp_tool_options *opt, stp_view
         from.x = centre.x + d * 0.48;
         from.y = centre.y + d * 0.40;
         from.z = centre.z + d * 0.78;
-        view.from = fix3(from);
-        view.at = fix3(centre);
+        view.from = stp_tool_vec3(from);
+        view.at = stp_tool_vec3(centre);
         view.up.x = view.up.z = 0;
         view.up.y = STP_FIX_ONE;
         view.fov_degrees = stp_tool_fix(fov);
@@ -245,7 +248,7 @@ int stp_tool_setup(const stp_scene *scene, const stp_tool_options *opt, stp_view
         double power = 1.0 - opt->background;
         if (opt->auto_power)
             power *= (opt->attenuation_c + dist3(light_pos[j], centre)) / sqrt((double)light_count);
-        lighting.lights[j].position = fix3(light_pos[j]);
+        lighting.lights[j].position = stp_tool_vec3(light_pos[j]);
         lighting.lights[j].power = stp_tool_fix(power);
         for (ch = 0; ch < 3; ch++)
             lighting.lights[j].colour[ch] =
@@ -256,6 +259,44 @@ int stp_tool_setup(const stp_scene *scene, const stp_tool_options *opt, stp_view
 
     *view_out = view;
     *lighting_out = lighting;
+    return 0;
+}
+
+int stp_tool_output(const stp_scene *scene, const stp_tool_options *opt, stp_output *out,
+                    stp_cell *cell, uint8_t **gamma, stp_fix background_rgb[3], char *err,
+                    size_t err_size)
+{
+    int ch;
+    memset(out, 0, sizeof *out);
+    *gamma = 0;
+    out->hidden = opt->hidden;
+    if (stp_tool_cell(opt, cell) != 0) {
+        snprintf(err, err_size, "bad halftone cell");
+        return -1;
+    }
+    out->cell = cell;
+    if (opt->gamma != 1.0 || opt->gamma_k != 1.0) {
+        *gamma = malloc((size_t)opt->levels);
+        if (!*gamma || stp_gamma_table(*gamma, opt->levels, stp_tool_fix(opt->gamma),
+                                       stp_tool_fix(opt->gamma_k)) != 0) {
+            snprintf(err, err_size, "bad gamma table");
+            free(*gamma);
+            *gamma = 0;
+            return -1;
+        }
+        out->gamma = *gamma;
+    }
+    out->styles = opt->styles;
+    if (scene->has_background) {
+        const double *b = scene->background;
+        double lum = 0.30 * b[0] + 0.59 * b[1] + 0.11 * b[2];
+        out->background = stp_tool_fix(lum < 0 ? 0 : (lum > 1 ? 1 : lum));
+        if (opt->colour) {
+            for (ch = 0; ch < 3; ch++)
+                background_rgb[ch] = stp_tool_fix(clamp01(b[ch]));
+            out->background_colour = background_rgb;
+        }
+    }
     return 0;
 }
 
@@ -274,12 +315,20 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
     stp_output out;
     stp_frame_memory mem;
     size_t capacity = 16, i;
-    int status, last_material = -1, band_rows, ch, result = -1;
+    int status, last_material = -1, band_rows, result = -1;
     stp_fix background_rgb[3];
     stp_tool_stats local;
     stp_scene_vec3 *normals = 0;
     uint16_t *shadow_maps = 0;
 
+    if (opt->raytrace) {
+#if STP_WITH_RAYTRACE
+        return stp_tool_raytrace(scene, opt, port, stats, err, err_size);
+#else
+        snprintf(err, err_size, "this build has no ray tracer (STP_WITH_RAYTRACE 0)");
+        return -1;
+#endif
+    }
     if (!stats)
         stats = &local;
     memset(stats, 0, sizeof *stats);
@@ -373,7 +422,7 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
             goto done;
         }
         for (k = 0; k < p->count; k++)
-            v[k] = fix3(scene->vertices[p->first + (size_t)k]);
+            v[k] = stp_tool_vec3(scene->vertices[p->first + (size_t)k]);
         stats->polygons_in++;
         if (normals) {
             for (k = 0; k < p->count; k++) {
@@ -386,7 +435,7 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
                     nn.y /= len;
                     nn.z /= len;
                 }
-                vn[k] = fix3(nn);
+                vn[k] = stp_tool_vec3(nn);
             }
             status = stp_polygon_smooth(r, v, vn, p->count);
         } else {
@@ -425,33 +474,8 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
         snprintf(err, err_size, "out of memory");
         goto done;
     }
-    memset(&out, 0, sizeof out);
-    out.hidden = opt->hidden;
-    if (stp_tool_cell(opt, &cell) != 0) {
-        snprintf(err, err_size, "bad halftone cell");
+    if (stp_tool_output(scene, opt, &out, &cell, &gamma, background_rgb, err, err_size) != 0)
         goto done;
-    }
-    out.cell = &cell;
-    if (opt->gamma != 1.0 || opt->gamma_k != 1.0) {
-        gamma = malloc((size_t)opt->levels);
-        if (!gamma || stp_gamma_table(gamma, opt->levels, stp_tool_fix(opt->gamma),
-                                      stp_tool_fix(opt->gamma_k)) != 0) {
-            snprintf(err, err_size, "bad gamma table");
-            goto done;
-        }
-        out.gamma = gamma;
-    }
-    out.styles = opt->styles;
-    if (scene->has_background) {
-        const double *b = scene->background;
-        double lum = 0.30 * b[0] + 0.59 * b[1] + 0.11 * b[2];
-        out.background = stp_tool_fix(lum < 0 ? 0 : (lum > 1 ? 1 : lum));
-        if (opt->colour) {
-            for (ch = 0; ch < 3; ch++)
-                background_rgb[ch] = stp_tool_fix(clamp01(b[ch]));
-            out.background_colour = background_rgb;
-        }
-    }
     stats->frame_bytes = stp_renderer_size() + sizeof *df * stats->display_entries + mem.band_size +
                          sizeof(uint16_t) * mem.zbuf_count + sizeof(stp_sort_entry) * mem.sort_count;
     status = stp_render(r, port, &out, &mem);

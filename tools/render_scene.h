@@ -47,6 +47,13 @@ typedef struct stp_tool_options {
     int perspective;         /* 1 (0: parallel) */
     double fov;              /* degrees; 0: the scene's, else 45 */
     const stp_style_table *styles; /* STYLE8 codes (NULL: index) */
+    int raytrace;            /* 1: the ray tracer instead of the polygon
+                                renderer (0); NFF spheres and cones stay
+                                analytic, T is transmission */
+    int rt_depth;            /* ray tracer: maximum recursion depth (4) */
+    double rt_min_weight;    /* ray tracer: weight below which a secondary
+                                ray is not cast (1/64) */
+    int rt_hierarchy;        /* ray tracer: bounding-volume hierarchy (1) */
 } stp_tool_options;
 
 void stp_tool_options_default(stp_tool_options *opt);
@@ -56,8 +63,52 @@ typedef struct stp_tool_stats {
     unsigned long polygons_in;     /* polygons given to the core */
     unsigned long polygons_skipped;/* degenerate ones the core refused */
     unsigned long display_entries; /* display-file entries used */
-    size_t frame_bytes;            /* renderer + display file + band + z + sort */
+    size_t frame_bytes;            /* renderer + display file + band + z + sort;
+                                      ray tracer: its object + objects +
+                                      points + hierarchy + band */
+    /* ray tracer only */
+    unsigned long rt_objects;      /* spheres, cones and polygons */
+    unsigned long rt_nodes;        /* hierarchy nodes built (0: none) */
+    double rt_build_seconds;       /* building the hierarchy */
+    double rt_trace_seconds;       /* tracing and output */
+    unsigned long rt_rays, rt_shadow_rays, rt_box_tests, rt_object_tests;
 } stp_tool_stats;
+
+/* The output description of a render with these options: the halftone
+ * cell (into *cell), the gamma table (allocated into *gamma, NULL when
+ * linear; the caller frees it), style table and the scene's background
+ * (into background_rgb for colour).  Returns 0, or -1 with a message. */
+int stp_tool_output(const stp_scene *scene, const stp_tool_options *opt, stp_output *out,
+                    stp_cell *cell, uint8_t **gamma, stp_fix background_rgb[3], char *err,
+                    size_t err_size);
+
+/* A scene point as stp_vec3 (stp_tool_fix of each coordinate). */
+stp_vec3 stp_tool_vec3(stp_scene_vec3 v);
+
+/* A scene loaded into the core's ray tracer (raytrace_scene.c): the ray
+ * tracer and the memory it was lent, the view, lighting and materials it
+ * was given.  The hierarchy is built when opt->rt_hierarchy is set (the
+ * memory for it is always there, so stp_rt_build can be called later). */
+typedef struct stp_tool_rt {
+    stp_raytracer *rt;
+    void *storage;
+    stp_rt_memory mem;
+    stp_rt_material *materials;
+    size_t material_count, points_used;
+    stp_view view;
+    stp_lighting lighting;
+} stp_tool_rt;
+
+/* Build it (stats: rt_objects, rt_nodes, rt_build_seconds, polygons_in,
+ * polygons_skipped).  Returns 0, or -1 with a message (nothing to free). */
+int stp_tool_rt_build(const stp_scene *scene, const stp_tool_options *opt, stp_tool_rt *t,
+                      stp_tool_stats *stats, char *err, size_t err_size);
+void stp_tool_rt_free(stp_tool_rt *t);
+
+/* Ray-trace scene onto port (raytrace_scene.c; opt->raytrace is implied).
+ * Returns 0, or -1 with a message in err. */
+int stp_tool_raytrace(const stp_scene *scene, const stp_tool_options *opt, stp_port *port,
+                      stp_tool_stats *stats, char *err, size_t err_size);
 
 /* Render scene onto port (its width/height/format must match opt).
  * Returns 0, or -1 with a message in err. */

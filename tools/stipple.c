@@ -10,6 +10,7 @@
 
 #include "compile_scene.h"
 #include "options.h"
+#include "progress.h"
 #include "render_scene.h"
 #include "scene.h"
 #include "stp_posix.h"
@@ -231,13 +232,29 @@ static int cmd_render(int argc, char **argv)
         stp_scene_free(&scene);
         return fail("out of memory for the frame");
     }
-    if (stp_tool_render(&scene, &opt, stp_posix_frame_port(&frame), &stats, err, sizeof err) != 0) {
-        stp_posix_frame_free(&frame);
-        stp_scene_free(&scene);
-        return fail("%s: %s", scene_path, err);
+    {
+        /* a bar on a terminal when the frame takes more than a second */
+        stp_progress progress;
+        stp_port *port = stp_progress_wrap(&progress, stp_posix_frame_port(&frame),
+                                           opt.raytrace ? "ray tracing" : "rendering");
+        int rc = stp_tool_render(&scene, &opt, port, &stats, err, sizeof err);
+        stp_progress_finish(&progress);
+        if (rc != 0) {
+            stp_posix_frame_free(&frame);
+            stp_scene_free(&scene);
+            return fail("%s: %s", scene_path, err);
+        }
     }
     stp_scene_free(&scene);
-    if (show_stats)
+    if (show_stats && opt.raytrace)
+        fprintf(stderr,
+                "%s: %lu objects, %lu hierarchy nodes built in %.6f s, traced in %.3f s: "
+                "%lu rays, %lu shadow rays, %lu box tests, %lu object tests, "
+                "%zu bytes of scene and frame memory\n",
+                scene_path, stats.rt_objects, stats.rt_nodes, stats.rt_build_seconds,
+                stats.rt_trace_seconds, stats.rt_rays, stats.rt_shadow_rays, stats.rt_box_tests,
+                stats.rt_object_tests, stats.frame_bytes);
+    else if (show_stats)
         fprintf(stderr,
                 "%s: %lu polygons (%lu degenerate skipped), %lu display-file entries, "
                 "%zu bytes of frame memory\n",

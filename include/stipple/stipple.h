@@ -18,5 +18,6 @@
 #include "stipple/port.h"
 #include "stipple/render.h"
 #include "stipple/colour.h"
+#include "stipple/raytrace.h"
 
 #endif

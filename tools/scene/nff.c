@@ -47,7 +47,11 @@ static int emit(stp_parser *ps, long line, const stp_scene_vec3 *pos, const stp_
         if (stp_add_vertex(ps, line, &pos[k], &nn) != 0)
             return -1;
     }
-    return stp_add_polygon(ps, line, first, n, material, 1);
+    if (stp_add_polygon(ps, line, first, n, material, 1) != 0)
+        return -1;
+    /* tessellation runs right after its primitive is added */
+    ps->scene->polygons[ps->scene->polygon_count - 1].prim = (int)ps->scene->prim_count - 1;
+    return 0;
 }
 
 /* Unit direction on the sphere for stack i (0 = +z pole, stacks = -z pole)

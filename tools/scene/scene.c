@@ -359,6 +359,7 @@ int stp_add_polygon(stp_parser *ps, long line, size_t first, int count, int mate
     pg->count = count;
     pg->material = material;
     pg->has_normals = has_normals;
+    pg->prim = -1;
     pg->source_line = line > INT_MAX ? INT_MAX : (int)line;
     return 0;
 }

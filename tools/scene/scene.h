@@ -33,6 +33,8 @@ typedef struct stp_scene_polygon {
     int material;    /* index into materials */
     int has_normals;
     int source_line; /* line of the file it came from (for messages) */
+    int prim;        /* index into prims of the sphere or cone it
+                        tessellates, -1 for the file's own polygons */
 } stp_scene_polygon;
 
 /* Analytic primitives are kept (for a ray tracer) besides being tessellated
