@@ -11,6 +11,7 @@
 #include "compile_scene.h"
 #include "options.h"
 #include "progress.h"
+#include "rt_compare.h"
 #include "render_scene.h"
 #include "scene.h"
 #include "stp_posix.h"
@@ -27,6 +28,8 @@ static void usage_main(FILE *to)
             "  dither IMAGE -o OUT   halftone a PGM/PPM image to PBM\n"
             "  compile SCENE -o OUT.c  write a scene as C source and a minimal configuration\n"
             "                        header for firmware (see 'stipple compile --help')\n"
+            "  bench [SCENE...]      ray tracer speed (rays/s, us/frame, with and without its\n"
+            "                        hierarchy) and error against the double reference\n"
             "  help [COMMAND]        show help\n"
             "\n"
             "Run 'stipple COMMAND --help' for a command's options.\n");
@@ -110,7 +113,7 @@ static stp_pixel_format format_for_kind(stp_posix_file_kind kind)
     }
 }
 
-enum { OPT_FORMAT = STP_TOOL_OPT_COMMAND, OPT_STATS, OPT_PLAIN, OPT_PALETTE };
+enum { OPT_FORMAT = STP_TOOL_OPT_COMMAND, OPT_STATS, OPT_PLAIN, OPT_PALETTE, OPT_BENCH_SCENES, OPT_BENCH_BUDGET };
 
 /* Turn an indexed frame buffer (STYLE8: style index 1..levels per pixel)
  * into RGB through a 256-entry colour table, grey or pseudocolour, with the
@@ -344,6 +347,76 @@ static int cmd_dither(int argc, char **argv)
     return 0;
 }
 
+static void usage_bench(FILE *to)
+{
+    fprintf(to,
+            "usage: stipple bench [options] [SCENE...]\n"
+            "\n"
+            "Ray-traces each SCENE (a name in the scenes folder, default balls-s2 and\n"
+            "teapot-s2) with and without the bounding-volume hierarchy and prints its\n"
+            "build time, us per frame, rays, rays per second and the largest and mean\n"
+            "shade error against the double-precision reference ray tracer.\n"
+            "(The polygon renderer's error-against-run-time table is the build target\n"
+            "'bench': cmake --build build --target bench.)\n"
+            "\n"
+            "      --scenes DIR         folder of the .nff files (default: $STP_SCENES_DIR,\n"
+            "                           else the one this build was configured with)\n"
+            "  -s, --size WxH           frame size (default 256x256)\n"
+            "      --depth N            deepest reflection/refraction (default 4)\n"
+            "      --min-weight W       lightest ray cast (default 1/64)\n"
+            "      --budget SECONDS     time per measurement (default 1)\n"
+            "  -h, --help               this help\n");
+}
+
+static int cmd_bench(int argc, char **argv)
+{
+    static const char *const default_names[] = {"balls-s2", "teapot-s2"};
+    static const struct option longs[] = {
+        {"scenes", required_argument, 0, OPT_BENCH_SCENES},
+        {"size", required_argument, 0, 's'},
+        {"depth", required_argument, 0, STP_TOOL_OPT_DEPTH},
+        {"min-weight", required_argument, 0, STP_TOOL_OPT_MIN_WEIGHT},
+        {"budget", required_argument, 0, OPT_BENCH_BUDGET},
+        {"help", no_argument, 0, 'h'},
+        {0, 0, 0, 0}};
+    stp_tool_options opt;
+    stp_scene_options sopt;
+    const char *dir = getenv("STP_SCENES_DIR");
+    double budget = 1.0;
+    char err[512];
+    int c;
+    stp_tool_options_default(&opt);
+    stp_scene_options_default(&sopt);
+    opt.width = opt.height = 256;
+    opt.raytrace = 1;
+    if (!dir || !*dir)
+        dir = STP_DEFAULT_SCENES_DIR;
+    optind = 1;
+    while ((c = getopt_long(argc, argv, "s:h", longs, 0)) != -1) {
+        switch (c) {
+        case OPT_BENCH_SCENES: dir = optarg; break;
+        case OPT_BENCH_BUDGET:
+            if (stp_tool_parse_double(optarg, &budget) || !(budget > 0) || budget > 3600)
+                return fail("bad --budget '%s' (seconds, > 0)", optarg);
+            break;
+        case 's':
+        case STP_TOOL_OPT_DEPTH:
+        case STP_TOOL_OPT_MIN_WEIGHT:
+            if (stp_tool_apply_option(c, optarg, &opt, &sopt, err, sizeof err) < 0)
+                return fail("%s", err);
+            break;
+        case 'h': usage_bench(stdout); return 0;
+        default: usage_bench(stderr); return 2;
+        }
+    }
+    if (optind < argc)
+        return stp_rt_bench(stdout, dir, (const char *const *)(argv + optind), argc - optind, &opt,
+                            budget) == 0
+                   ? 0
+                   : 1;
+    return stp_rt_bench(stdout, dir, default_names, 2, &opt, budget) == 0 ? 0 : 1;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
@@ -354,6 +427,8 @@ int main(int argc, char **argv)
         return cmd_render(argc - 1, argv + 1);
     if (!strcmp(argv[1], "dither"))
         return cmd_dither(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "bench"))
+        return cmd_bench(argc - 1, argv + 1);
     if (!strcmp(argv[1], "compile"))
         return stp_tool_compile_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
@@ -361,6 +436,8 @@ int main(int argc, char **argv)
             usage_render(stdout);
         else if (argc > 2 && !strcmp(argv[2], "dither"))
             usage_dither(stdout);
+        else if (argc > 2 && !strcmp(argv[2], "bench"))
+            usage_bench(stdout);
         else
             usage_main(stdout);
         return 0;

@@ -10,6 +10,8 @@ for nff in "$scenes"/*.nff; do
     name=$(basename "$nff" .nff)
     "$build/tools/stipple" render "$nff" -o "$here/tests/golden/$name-128x64.pbm"
     echo "wrote tests/golden/$name-128x64.pbm"
+    "$build/tools/stipple" render "$nff" --raytrace -o "$here/tests/golden/$name-raytrace-128x64.pbm"
+    echo "wrote tests/golden/$name-raytrace-128x64.pbm"
 done
 "$build/tools/stipple" render "$scenes/teapot-s2.nff" --smooth -o "$here/tests/golden/teapot-s2-smooth-128x64.pbm"
 echo "wrote tests/golden/teapot-s2-smooth-128x64.pbm"

@@ -132,6 +132,32 @@ static void test_golden_shadows(void **state)
 }
 #endif
 
+#if STP_WITH_RAYTRACE
+/* Every scene ray-traced (stipple render --raytrace: depth 4, min weight
+ * 1/64, the hierarchy) against its golden. */
+static void test_golden_raytrace(void **state)
+{
+    size_t i;
+    int failures = 0;
+    (void)state;
+    for (i = 0; i < SCENE_COUNT; i++) {
+        stp_scene scene;
+        stp_tool_options opt;
+        stp_posix_frame frame;
+        char name[128];
+        load(scenes[i], &scene);
+        stp_tool_options_default(&opt);
+        opt.raytrace = 1;
+        render(&scene, &opt, &frame, STP_PIXEL_MONO1);
+        stp_scene_free(&scene);
+        snprintf(name, sizeof name, "%s-raytrace-128x64", scenes[i]);
+        failures += compare_golden(&frame, name);
+        stp_posix_frame_free(&frame);
+    }
+    assert_int_equal(failures, 0);
+}
+#endif
+
 #if STP_WITH_COLOUR
 /* Colour shading (10.45) to RGB888 against golden PPMs, byte for byte. */
 static void test_golden_colour(void **state)
@@ -278,6 +304,9 @@ int main(void)
 #endif
 #if STP_WITH_SHADOWS
         cmocka_unit_test(test_golden_shadows),
+#endif
+#if STP_WITH_RAYTRACE
+        cmocka_unit_test(test_golden_raytrace),
 #endif
         cmocka_unit_test(test_bands_equal_full_frame),
         cmocka_unit_test(test_renders_show_something),
