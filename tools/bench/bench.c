@@ -37,6 +37,7 @@
 #include <time.h>
 
 #include "render_ref.h"
+#include "rt_compare.h"
 #include "render_scene.h"
 #include "scene.h"
 #include "scene_util.h"
@@ -838,6 +839,7 @@ int main(int argc, char **argv)
     fill_work *fw;
     stp_scene torus;
     double ns_shade, us_frame[3], fill_s, memset_s;
+    double rt_max = 0, rt_sum = 0, rt_mean = 0, rt_above_pct = 0, rt_us_frame = 0, rt_mrays = 0;
     static const int sizes[3][2] = {{128, 64}, {400, 240}, {640, 480}};
     long stiff_over = 0, n_random;
     int i, mirror_ok = 1, scene_failures = 0;
@@ -961,6 +963,64 @@ int main(int argc, char **argv)
            ie.renders, ie.diff, ie.pixels, ie.pixels ? 100.0 * (double)ie.diff / (double)ie.pixels : 0.0,
            ie.pixels ? ie.blur_sum / (double)ie.pixels : 0.0, ie.failures ? " (SOME FAILED)" : "");
 
+    /* the ray tracer: every scene against the reference ray tracer at
+     * 96 x 64, and the frame time of balls-s2 (91 spheres) at 128 x 128 */
+    {
+        stp_tool_options ro;
+        stp_rt_speed speed;
+        long above = 0, pixels = 0;
+        char err[512];
+        stp_tool_options_default(&ro);
+        ro.raytrace = 1;
+        ro.width = 96;
+        ro.height = 64;
+        for (k = 0; k < SCENE_COUNT; k++) {
+            stp_scene scene;
+            stp_scene_options sopt;
+            stp_rt_error e;
+            char path[1024];
+            stp_scene_options_default(&sopt);
+            snprintf(path, sizeof path, "%s/%s.nff", scenes_dir, scene_names[k]);
+            if (stp_scene_load(path, &sopt, &scene, err, sizeof err) != 0 ||
+                stp_rt_compare(&scene, &ro, &e, 0, err, sizeof err) != 0) {
+                fprintf(stderr, "bench: ray tracer: %s\n", err);
+                scene_failures++;
+                continue;
+            }
+            if (e.max > rt_max)
+                rt_max = e.max;
+            rt_sum += e.mean * (double)e.pixels;
+            pixels += e.pixels;
+            above += e.above_step;
+            stp_scene_free(&scene);
+        }
+        rt_mean = pixels ? rt_sum / (double)pixels : 0;
+        rt_above_pct = pixels ? 100.0 * (double)above / (double)pixels : 0;
+        {
+            stp_scene scene;
+            stp_scene_options sopt;
+            char path[1024];
+            stp_scene_options_default(&sopt);
+            snprintf(path, sizeof path, "%s/balls-s2.nff", scenes_dir);
+            ro.width = ro.height = 128;
+            if (stp_scene_load(path, &sopt, &scene, err, sizeof err) == 0) {
+                if (stp_rt_time(&scene, &ro, budget, &speed, err, sizeof err) == 0) {
+                    rt_us_frame = speed.frame_us;
+                    rt_mrays = (double)(speed.rays + speed.shadow_rays) / speed.frame_us;
+                } else {
+                    scene_failures++;
+                }
+                stp_scene_free(&scene);
+            } else {
+                fprintf(stderr, "bench: %s\n", err);
+                scene_failures++;
+            }
+        }
+        printf("ray tracer        %6d scenes      shade error max %.2e mean %.2e, %.3f%% of pixels "
+               "above 1/30; balls-s2 128x128 %.0f us/frame, %.3f Mrays/s\n",
+               (int)SCENE_COUNT, rt_max, rt_mean, rt_above_pct, rt_us_frame, rt_mrays);
+    }
+
     /* run time */
     ns_shade = best_time(shade_once, &sw, budget) * 1e9;
     for (i = 0; i < 3; i++)
@@ -993,9 +1053,10 @@ int main(int argc, char **argv)
                        "stiff_over_half_step,scene_max,scene_mean,style_diff_pct,img_diff_px,"
                        "img_pixels,img_diff_pct,img_blur_mad,ns_per_shade,us_frame_128x64,"
                        "us_frame_400x240,us_frame_640x480,fill_mpx_s,memset_mpx_s,"
-                       "fill_memset_ratio,failures\n");
+                       "fill_memset_ratio,rt_max,rt_mean,rt_above_pct,rt_us_frame_balls128,"
+                       "rt_mrays_s,failures\n");
         fprintf(f, "%s,%d,%d,%.3e,%.3e,%.3e,%.3e,%.3e,%ld,%.3e,%.3e,%.3f,%ld,%ld,%.4f,%.3e,%.1f,%.1f,%.1f,%.1f,"
-                   "%.1f,%.1f,%.4f,%d\n",
+                   "%.1f,%.1f,%.4f,%.3e,%.3e,%.3f,%.0f,%.3f,%d\n",
                 STP_BENCH_CONFIG, STP_FIX_FRAC_BITS, STP_SQRT_FAST, rand_err.max, stat_mean(&rand_err),
                 rand_well.max,
                 stiff_err.max, stat_mean(&stiff_err), stiff_over, pe.shade.max, stat_mean(&pe.shade),
@@ -1003,7 +1064,8 @@ int main(int argc, char **argv)
                 ie.pixels, ie.pixels ? 100.0 * (double)ie.diff / (double)ie.pixels : 0.0,
                 ie.pixels ? ie.blur_sum / (double)ie.pixels : 0.0, ns_shade, us_frame[0], us_frame[1],
                 us_frame[2], FILL_W * FILL_H / fill_s * 1e-6, FILL_W * FILL_H / memset_s * 1e-6,
-                memset_s / fill_s, scene_failures + ie.failures + (mirror_ok ? 0 : 1));
+                memset_s / fill_s, rt_max, rt_mean, rt_above_pct, rt_us_frame, rt_mrays,
+                scene_failures + ie.failures + (mirror_ok ? 0 : 1));
         fclose(f);
     }
     stp_scene_free(&torus);

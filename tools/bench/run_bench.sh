@@ -77,20 +77,22 @@ awk -F, '
 NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
 function v(name) { return $(col[name]) }
 {
-    rows[NR] = sprintf("%-13s %9.2e %9.2e %9.2e | %8.2e %8.2e %4d | %8.2e %8.2e %6.2f | %7.3f %8.2e | %7.0f %7.0f %7.0f %7.0f | %7.0f %9.0f %7.4f",
+    rows[NR] = sprintf("%-13s %9.2e %9.2e %9.2e | %8.2e %8.2e %4d | %8.2e %8.2e %6.2f | %7.3f %8.2e | %7.0f %7.0f %7.0f %7.0f | %7.0f %9.0f %7.4f | %8.2e %8.2e %6.3f %7.0f %6.3f",
         v("config"), v("rand_max"), v("rand_mean"), v("rand_max_wellcond"), v("stiff_max"), v("stiff_mean"),
         v("stiff_over_half_step"), v("scene_max"), v("scene_mean"), v("style_diff_pct"),
         v("img_diff_pct"), v("img_blur_mad"), v("ns_per_shade"), v("us_frame_128x64"),
         v("us_frame_400x240"), v("us_frame_640x480"), v("fill_mpx_s"), v("memset_mpx_s"),
-        v("fill_memset_ratio"))
+        v("fill_memset_ratio"), v("rt_max"), v("rt_mean"), v("rt_above_pct"), v("rt_us_frame_balls128"),
+        v("rt_mrays_s"))
 }
 END {
     print ""
-    printf "%-13s %-29s | %-22s | %-24s | %-16s | %-31s | %s\n", "", "random shades", "stiff suite",
-        "scene polygons", "pictures", "run time", "HALFTONE-FILLIN"
-    printf "%-13s %9s %9s %9s | %8s %8s %4s | %8s %8s %6s | %7s %8s | %7s %7s %7s %7s | %7s %9s %7s\n",
+    printf "%-13s %-29s | %-22s | %-24s | %-16s | %-31s | %-25s | %s\n", "", "random shades", "stiff suite",
+        "scene polygons", "pictures", "run time", "HALFTONE-FILLIN", "ray tracer"
+    printf "%-13s %9s %9s %9s | %8s %8s %4s | %8s %8s %6s | %7s %8s | %7s %7s %7s %7s | %7s %9s %7s | %8s %8s %6s %7s %6s\n",
         "config", "max", "mean", "max>2^-10", "max", "mean", ">1/30", "max", "mean", "style%", "diff%", "blurMAD",
-        "ns/shd", "us@128", "us@400", "us@640", "Mpx/s", "memset", "ratio"
+        "ns/shd", "us@128", "us@400", "us@640", "Mpx/s", "memset", "ratio", "max", "mean", ">1/30%",
+        "us/frm", "Mray/s"
     for (i = 2; i <= NR; i++) print rows[i]
     print ""
     print "errors: absolute shade error against the double reference (1/30 = half an INTENSITY"
@@ -100,6 +102,10 @@ END {
     print "  differing pixels, and the mean absolute difference after a 3x3 box blur"
     print "run time: ns per stp_shade_point; us per torus frame (1000 triangles entered and"
     print "  rendered) at 128x64, 400x240, 640x480; HALFTONE-FILLIN vs memset in Mpixel/s"
+    print "ray tracer: every pixel of the 8 scenes at 96x64 against the double reference ray"
+    print "  tracer (shade error max, mean, share of pixels above 1/30); us per frame and"
+    print "  million rays (primary, secondary, shadow) per second, balls-s2 at 128x128 with"
+    print "  the hierarchy"
 }' "$csv"
 
 # The Cortex-M figures: emulated instructions, the same on every run.
