@@ -6,7 +6,11 @@
 #  2. malformed scenes (NFF, OBJ, OFF: truncated, wrong counts, bad numbers,
 #     indices out of range, empty) exit non-zero with "file:line: ..." on
 #     stderr, write no output file and leave an existing one untouched;
-#  3. `stipple dither` gives ImageMagick's -ordered-dither pixels on a ramp.
+#  3. `stipple dither` gives ImageMagick's -ordered-dither pixels on a ramp;
+#  4. every shared scene ray-traces at 512x512 to PPM (colour) and PBM, valid
+#     and of the size asked for, the PPM with at least 3 colours;
+#     bad --depth / --min-weight are refused; a progress bar appears only on
+#     a terminal (stderr here is a file: nothing but the stats line).
 # Usage: test_cli.sh STIPPLE_BINARY SCENES_DIR
 set -u
 stipple=$1
@@ -51,6 +55,35 @@ for nff in "$scenes"/*.nff; do
             pamvalidate <"$out" >/dev/null 2>&1 && [ "$(head -c 2 "$out")" = P1 ]; then ok
         else bad "$name $size plain PBM"; fi
     done
+done
+
+# --- 4. ray tracing every scene at 512x512
+for nff in "$scenes"/*.nff; do
+    name=$(basename "$nff" .nff)
+    for ext in ppm pbm; do
+        out="$work/$name-rt.$ext"
+        colour=""
+        [ "$ext" = ppm ] && colour=--color
+        if ! "$stipple" render "$nff" --raytrace $colour -s 512x512 -o "$out" 2>"$work/err"; then
+            bad "$name --raytrace .$ext: exit status ($(cat "$work/err"))"
+        elif [ -s "$work/err" ]; then
+            bad "$name --raytrace .$ext: unexpected stderr: $(head -c 200 "$work/err")"
+        elif ! pamvalidate <"$out" >/dev/null 2>&1; then
+            bad "$name --raytrace .$ext: pamvalidate rejects it"
+        elif [ "$(pamfile "$out" | grep -o "512 by 512")" != "512 by 512" ]; then
+            bad "$name --raytrace .$ext: wrong size: $(pamfile "$out")"
+        elif [ "$ext" = ppm ] && [ "$(ppmhist -noheader "$out" | wc -l)" -lt 3 ]; then
+            bad "$name --raytrace .ppm: fewer than 3 colours"
+        else ok; fi
+    done
+done
+for bad_opt in "--depth 99" "--depth -1" "--min-weight 2" "--min-weight x"; do
+    # shellcheck disable=SC2086
+    if "$stipple" render "$scenes/tetra-s1.nff" --raytrace $bad_opt -o "$work/x.pbm" 2>"$work/err"; then
+        bad "--raytrace $bad_opt accepted"
+    elif ! grep -q "bad --" "$work/err"; then
+        bad "--raytrace $bad_opt: message: $(cat "$work/err")"
+    else ok; fi
 done
 
 # --- 2. malformed scenes
