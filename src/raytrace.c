@@ -455,11 +455,20 @@ int stp_rt_polygon(stp_raytracer *rt, const stp_vec3 *vertices, const stp_vec3 *
     az = abs64(unit[2]);
     ob->flags = (uint8_t)(ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2));
     if (normals) {
-        stp_vec3 plane = q30_to_vec(unit);
+        stp_vec3 plane = q30_to_vec(unit), u;
+        int64_t side = 0;
         ob->flags |= FLAG_NORMALS;
+        /* a zero normal takes the plane's, turned to the side the others
+         * point to */
+        for (i = 0; i < (uint32_t)n; i++)
+            if (stp_vec3_unity(normals[i], &u) != 0)
+                side += (int64_t)u.x * plane.x + (int64_t)u.y * plane.y + (int64_t)u.z * plane.z;
+        if (side < 0) {
+            plane.x = -plane.x;
+            plane.y = -plane.y;
+            plane.z = -plane.z;
+        }
         for (i = 0; i < (uint32_t)n; i++) {
-            stp_vec3 u;
-            /* a zero normal takes the plane's */
             if (stp_vec3_unity(normals[i], &u) == 0)
                 u = plane;
             rt->mem.points[rt->points + (uint32_t)n + i] = u;
@@ -1092,8 +1101,8 @@ typedef struct rt_colour {
 } rt_colour;
 
 static void trace(stp_raytracer *rt, const rt_ray *ray, int64_t tmin, uint32_t skip, int depth,
-                  stp_fix weight, int parallel_primary, const rt_colour *background,
-                  rt_colour *out, int64_t *t_hit);
+                  stp_fix weight, stp_fix absorption, int parallel_primary,
+                  const rt_colour *background, rt_colour *out, int64_t *t_hit);
 
 /* e^(-a d) for absorption a and distance d (both stp_fix). */
 static stp_fix absorb(stp_fix a, int64_t d)
@@ -1228,11 +1237,12 @@ static void shade_hit(stp_raytracer *rt, const rt_ray *ray, const rt_hit *h, int
                 vv[j] = ray->d[j] - round_shift(2 * dn * n_shade[j], 30);
             if (unit_q30(vv[0], vv[1], vv[2], rdir)) {
                 offset_ray(&r, h->p, n_geo, 1, rdir);
-                trace(rt, &r, 0, skip_for(rt, h->object, n_out, rdir), depth + 1,
-                      stp_fix_mul(weight, w_r), 0, background, &v, &t_next);
                 /* a ray reflected inside a sphere travels through it */
-                if (ob->kind == KIND_SPHERE && dot_dd(rdir, n_out) < 0 && mat->absorption > 0)
-                    w_r = stp_fix_mul(w_r, absorb(mat->absorption, t_next));
+                stp_fix a = ob->kind == KIND_SPHERE && dot_dd(rdir, n_out) < 0 ? mat->absorption : 0;
+                trace(rt, &r, 0, skip_for(rt, h->object, n_out, rdir), depth + 1,
+                      stp_fix_mul(weight, w_r), a, 0, background, &v, &t_next);
+                if (a > 0)
+                    w_r = stp_fix_mul(w_r, absorb(a, t_next));
                 for (c = 0; c < channels; c++)
                     out->c[c] = stp_fix_add(out->c[c], stp_fix_mul(w_r, v.c[c]));
             }
@@ -1241,11 +1251,12 @@ static void shade_hit(stp_raytracer *rt, const rt_ray *ray, const rt_hit *h, int
             rt_ray r;
             rt_colour v;
             int64_t t_next = 0;
+            stp_fix a = ob->kind == KIND_SPHERE && dot_dd(tdir, n_out) < 0 ? mat->absorption : 0;
             offset_ray(&r, h->p, n_geo, -1, tdir);
             trace(rt, &r, 0, skip_for(rt, h->object, n_out, tdir), depth + 1,
-                  stp_fix_mul(weight, w_t), 0, background, &v, &t_next);
-            if (ob->kind == KIND_SPHERE && dot_dd(tdir, n_out) < 0 && mat->absorption > 0)
-                w_t = stp_fix_mul(w_t, absorb(mat->absorption, t_next));
+                  stp_fix_mul(weight, w_t), a, 0, background, &v, &t_next);
+            if (a > 0)
+                w_t = stp_fix_mul(w_t, absorb(a, t_next));
             for (c = 0; c < channels; c++)
                 out->c[c] = stp_fix_add(out->c[c], stp_fix_mul(w_t, v.c[c]));
         }
@@ -1255,9 +1266,12 @@ done:
         out->c[c] = stp_fix_clamp(out->c[c], 0, ONE);
 }
 
+/* Trace one ray.  absorption: a of the sphere the ray travels through
+ * (0: none); the caller scales what it sees by e^(-a t_hit), and the rays
+ * cast from its hit weigh that much less when deciding whether to cast. */
 static void trace(stp_raytracer *rt, const rt_ray *ray, int64_t tmin, uint32_t skip, int depth,
-                  stp_fix weight, int parallel_primary, const rt_colour *background,
-                  rt_colour *out, int64_t *t_hit)
+                  stp_fix weight, stp_fix absorption, int parallel_primary,
+                  const rt_colour *background, rt_colour *out, int64_t *t_hit)
 {
     rt_hit h;
     rt->stats.rays++;
@@ -1267,6 +1281,8 @@ static void trace(stp_raytracer *rt, const rt_ray *ray, int64_t tmin, uint32_t s
         return;
     }
     *t_hit = h.t;
+    if (absorption > 0)
+        weight = stp_fix_mul(weight, absorb(absorption, h.t));
     shade_hit(rt, ray, &h, depth, weight, parallel_primary, background, out);
 }
 
@@ -1337,7 +1353,7 @@ static void trace_pixel(stp_raytracer *rt, uint32_t x, uint32_t y, const rt_colo
     rt_ray ray;
     int64_t tmin, t_hit;
     primary_ray(rt, x, y, &ray, &tmin);
-    trace(rt, &ray, tmin, NO_SKIP, 0, ONE, rt->view.projection == STP_PARALLEL, bg, out, &t_hit);
+    trace(rt, &ray, tmin, NO_SKIP, 0, ONE, 0, rt->view.projection == STP_PARALLEL, bg, out, &t_hit);
     if (!rt->colour)
         out->c[1] = out->c[2] = out->c[0];
 }

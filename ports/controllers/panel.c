@@ -18,6 +18,8 @@ int stp_panel_init(const stp_panel_controller *c, const stp_panel_bus *bus)
 
 size_t stp_panel_row_bytes(const stp_panel_controller *c, uint32_t width)
 {
+    if (c->packing == STP_PANEL_MONO_ROW_MSB_LEFT)
+        return ((size_t)width + 7u) / 8u;
     return c->packing == STP_PANEL_GREY4_LEFT_HIGH ? ((size_t)width + 1u) / 2u : width;
 }
 
@@ -30,7 +32,16 @@ void stp_panel_pack_mono_row(const stp_panel_controller *c, const uint8_t *mono,
                              uint32_t width, uint8_t *out)
 {
     uint32_t x;
-    (void)c;
+    if (c->packing == STP_PANEL_MONO_ROW_MSB_LEFT) {
+        /* stipple's own layout: copy, invert if asked, pad bits set */
+        size_t i, n = ((size_t)width + 7u) / 8u;
+        unsigned pad = (8u - (width & 7u)) & 7u;
+        for (i = 0; i < n; i++)
+            out[i] = (uint8_t)(c->invert ? ~mono[i] : mono[i]);
+        if (n > 0 && pad)
+            out[n - 1] = (uint8_t)(out[n - 1] | ((1u << pad) - 1u));
+        return;
+    }
     for (x = 0; x < width; x += 2) {
         unsigned left = mono_bit(mono, x) ? STP_PANEL_GREY4_ON : 0u;
         unsigned right = x + 1 < width && mono_bit(mono, x + 1) ? STP_PANEL_GREY4_ON : 0u;

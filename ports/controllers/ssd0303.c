@@ -34,5 +34,9 @@ const stp_panel_controller stp_panel_ssd0303 = {
     STP_PANEL_PAGES, STP_PANEL_MONO_COLUMN_LSB_TOP,
     init_sequence, (uint16_t)sizeof init_sequence,
     0, 0, 0,         /* no column/row window */
-    0xB0, 0x00, 0x10 /* page | p, column low | (c & 15), column high | (c >> 4) */
+    0xB0, 0x00, 0x10, /* page | p, column low | (c & 15), column high | (c >> 4) */
+    0, 0, 0, 0,      /* SPI facts: not used by the I2C firmware port */
+    0, 0, 0,         /* no counters */
+    0, 0, 0, 0, 0, 0, 0, /* no line records */
+    0, 0, 0, 0       /* no refresh or sleep sequence */
 };

@@ -32,5 +32,9 @@ const stp_panel_controller stp_panel_ssd0323 = {
     STP_PANEL_WINDOW, STP_PANEL_GREY4_LEFT_HIGH,
     init_sequence, (uint16_t)sizeof init_sequence,
     0x15, 0x75, 2, /* column window in byte units (2 pixels), row window */
-    0, 0, 0
+    0, 0, 0,
+    0, 0, 0, 0,    /* SPI facts: not used by the firmware port */
+    0, 0, 0,       /* no counters */
+    0, 0, 0, 0, 0, 0, 0, /* no line records */
+    0, 0, 0, 0     /* no refresh or sleep sequence */
 };
