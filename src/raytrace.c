@@ -390,7 +390,7 @@ int stp_rt_cone(stp_raytracer *rt, stp_vec3 base, stp_fix base_radius, stp_vec3 
     }
     ob->r0 = base_radius;
     ob->length = (int32_t)len;
-    ob->slope = (int32_t)((((int64_t)apex_radius - base_radius) << 24) / len);
+    ob->slope = (int32_t)((((int64_t)apex_radius - base_radius) * ((int64_t)1 << 24)) / len);
     ob->bound = (int32_t)stp_isqrt64((uint64_t)(half * half + rmax * rmax)) + 2;
     commit_object(rt);
     return STP_OK;

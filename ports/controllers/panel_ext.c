@@ -15,7 +15,8 @@ int stp_panel_run(const uint8_t *seq, uint16_t length, const stp_panel_bus *bus,
             /* a step: 0, op, arg low, arg high */
             if (length - at < 4u || !step)
                 return -1;
-            status = step(step_ctx, seq[at + 1], (unsigned)seq[at + 2] | (unsigned)seq[at + 3] << 8);
+            status = step(step_ctx, seq[at + 1],
+                          (unsigned)seq[at + 2] | (unsigned)seq[at + 3] << 8);
             if (status != 0)
                 return status;
             at += 4u;

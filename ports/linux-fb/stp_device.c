@@ -320,7 +320,8 @@ static int open_usb(stp_device *d, const char *spec, const spec_parts *s,
             return -1;
         }
         if (vid == 0 && pid == 0) {
-            spec_err(err, errlen, spec, "0000:0000 is no device (use usb:class for the first printer)");
+            spec_err(err, errlen, spec,
+                     "0000:0000 is no device (use usb:class for the first printer)");
             return -1;
         }
     }
@@ -364,8 +365,9 @@ static int open_usb(stp_device *d, const char *spec, const spec_parts *s,
             snprintf(d->description, sizeof d->description, "USB printer %04x:%04x %ux%u MONO1",
                      vid, pid, (unsigned)d->port->width, (unsigned)d->port->height);
         else
-            snprintf(d->description, sizeof d->description, "USB printer (first of class 7) %ux%u MONO1",
-                     (unsigned)d->port->width, (unsigned)d->port->height);
+            snprintf(d->description, sizeof d->description,
+                     "USB printer (first of class 7) %ux%u MONO1", (unsigned)d->port->width,
+                     (unsigned)d->port->height);
         return 0;
     }
 #else
@@ -399,7 +401,8 @@ static int open_spi(stp_device *d, const char *spec, const spec_parts *s,
                    err, errlen) != 0)
         return -1;
     if (s->target[0] != '/') {
-        spec_err(err, errlen, spec, "spi needs a spidev path, e.g. spi:/dev/spidev0.0,controller=ssd1306");
+        spec_err(err, errlen, spec,
+                 "spi needs a spidev path, e.g. spi:/dev/spidev0.0,controller=ssd1306");
         return -1;
     }
     name = find_key(s, "controller");

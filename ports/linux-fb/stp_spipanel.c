@@ -461,7 +461,9 @@ stp_spipanel *stp_spipanel_open(const char *path, const stp_panel_controller *c,
         stp_spipanel_close(p);
         return NULL;
     }
-    mode = (uint8_t)((c->spi_mode & 3u) | ((c->bus_flags & STP_PANEL_BUS_CS_HIGH) ? SPI_CS_HIGH : 0));
+    mode = (uint8_t)(c->spi_mode & 3u);
+    if (c->bus_flags & STP_PANEL_BUS_CS_HIGH)
+        mode = (uint8_t)(mode | SPI_CS_HIGH);
     if (ioctl(p->fd, SPI_IOC_WR_MODE, &mode) < 0) {
         set_err(err, errlen, "spi %s: cannot set SPI mode %u%s: %s", path, (unsigned)(mode & 3u),
                 (mode & SPI_CS_HIGH) ? " with chip select active high" : "", strerror(errno));
@@ -492,8 +494,9 @@ stp_spipanel *stp_spipanel_open(const char *path, const stp_panel_controller *c,
             bufsize = c->width;
     }
     if (p->max_transfer < need) {
-        set_err(err, errlen, "spi %s: messages of %zu bytes cannot hold one %s line write (%zu bytes)",
-                path, p->max_transfer, c->name, need);
+        set_err(err, errlen,
+                "spi %s: messages of %zu bytes cannot hold one %s line write (%zu bytes)", path,
+                p->max_transfer, c->name, need);
         stp_spipanel_close(p);
         return NULL;
     }

@@ -15,6 +15,9 @@
  *   "ssd1680"            122x250 (2.13") e-paper, D/C and BUSY required,
  *                        RESET recommended
  *   "ssd1680-128x296"    the same controller on 128x296 (2.9") glass
+ * Any stp_panel_controller with an SPI description (spi_hz set) and PAGES,
+ * LINES or WINDOW_COUNTERS addressing works; SSD0303/SSD0323, described for
+ * their firmware buses only, are refused.
  *
  * The port (stp_spipanel_port): width x height of the controller, format
  * STP_PIXEL_MONO1 only.  stipple's MONO1 bit 1 = ON = light.  ON becomes:

@@ -932,7 +932,7 @@ spi_sim *spi_sim_new(spi_sim_panel panel, guint width, guint height, gsize bufsi
     sim->max_speed_hz = 500000; /* a board's device-tree default */
     sim->bufsiz = bufsiz ? bufsiz : 4096;
     sim->stuck_busy_after = -1;
-    sim->swreset_busy_ms = 15;
+    sim->swreset_busy_ms = 30;
     sim->refresh_busy_ms = 40;
     sim->reset_busy_ms = 5;
     sim->last_m1 = -1;
@@ -988,7 +988,8 @@ char *spi_sim_violations(spi_sim *sim)
     guint i;
     g_mutex_lock(&sim->lock);
     for (i = 0; i < sim->violations->len; i++)
-        g_string_append_printf(s, "%s%s", i ? "; " : "", (char *)g_ptr_array_index(sim->violations, i));
+        g_string_append_printf(s, "%s%s", i ? "; " : "",
+                               (char *)g_ptr_array_index(sim->violations, i));
     g_mutex_unlock(&sim->lock);
     return g_string_free(s, FALSE);
 }

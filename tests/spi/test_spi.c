@@ -325,14 +325,18 @@ static void test_missing_lines(void **state)
     stp_spipanel_lines lines;
     char err[256];
     (void)state;
-    assert_null(stp_spipanel_open("/dev/spidev0.0", &stp_panel_ssd1306, NULL, NULL, err, sizeof err));
+    assert_null(
+        stp_spipanel_open("/dev/spidev0.0", &stp_panel_ssd1306, NULL, NULL, err, sizeof err));
     assert_string_equal(err, "spi /dev/spidev0.0: controller SSD1306 needs a D/C line (dc=LINE)");
     spi_sim_lines(sim, 0, &lines);
     lines.wait_ready = NULL;
-    assert_null(stp_spipanel_open("/dev/spidev0.0", &stp_panel_ssd1680, &lines, NULL, err, sizeof err));
-    assert_string_equal(err, "spi /dev/spidev0.0: controller SSD1680 needs a BUSY line (busy=LINE)");
+    assert_null(
+        stp_spipanel_open("/dev/spidev0.0", &stp_panel_ssd1680, &lines, NULL, err, sizeof err));
+    assert_string_equal(err,
+                        "spi /dev/spidev0.0: controller SSD1680 needs a BUSY line (busy=LINE)");
     /* the firmware-only description of the SSD0323 is refused */
-    assert_null(stp_spipanel_open("/dev/spidev0.0", &stp_panel_ssd0323, &lines, NULL, err, sizeof err));
+    assert_null(
+        stp_spipanel_open("/dev/spidev0.0", &stp_panel_ssd0323, &lines, NULL, err, sizeof err));
     assert_string_equal(err, "spi /dev/spidev0.0: controller SSD0323 has no SPI description here");
     assert_int_equal(sim->messages, 0);
     spi_sim_free(sim);
@@ -426,7 +430,8 @@ static void test_busy_timeout_init(void **state)
     stp_spipanel_options_default(&o);
     o.busy_timeout_ms = 30;
     spi_sim_lines(sim, 0, &lines);
-    assert_null(stp_spipanel_open("/dev/spidev0.0", &stp_panel_ssd1680, &lines, &o, err, sizeof err));
+    assert_null(
+        stp_spipanel_open("/dev/spidev0.0", &stp_panel_ssd1680, &lines, &o, err, sizeof err));
     assert_string_equal(err, "SSD1680 on /dev/spidev0.0: init: panel still busy after 30 ms "
                              "(after command 0x12)");
     assert_clean(sim); /* it waited: nothing was sent while BUSY */
