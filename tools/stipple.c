@@ -12,6 +12,9 @@
 #include "options.h"
 #include "progress.h"
 #include "rt_compare.h"
+#if STP_HAVE_DEVICE
+#include "stp_device.h"
+#endif
 #include "render_scene.h"
 #include "scene.h"
 #include "stp_posix.h"
@@ -39,13 +42,19 @@ static void usage_render(FILE *to)
 {
     fprintf(to,
             "usage: stipple render SCENE -o OUT [options]\n"
+            "       stipple render SCENE --device SPEC [options]\n"
             "\n"
             "Renders SCENE (.nff, .obj, .off) with the fixed-point core.  OUT's extension picks\n"
             "the output: .pbm (halftoned 1-bit), .pgm (grey), .ppm (colour file of the grey\n"
             "picture, or of the colour one with --color), .txt (line-printer text, one\n"
             "character per pixel); '-' writes to stdout in the --format given (default txt).\n"
             "\n"
-            "  -o, --output FILE        where to write (required)\n"
+            "  -o, --output FILE        where to write\n"
+            "      --device SPEC        draw on a Linux device instead, at its size and format:\n"
+            "                           fb:/dev/fbN, usb:VID:PID or usb (receipt printer),\n"
+            "                           spi:/dev/spidevB.C,controller=ssd1306|sharp-ls013b7dh03|\n"
+            "                           ssd1680|ssd1680-128x296,dc=LINE,reset=LINE,busy=LINE,...\n"
+            "                           (see ports/linux-fb/stp_device.h)\n"
             "      --format KIND        pbm, plain-pbm, pgm, ppm or txt (default: from OUT)\n"
             "  -b, --band ROWS          render in bands of ROWS rows (default: whole frame)\n"
             "      --stats              print display-file and memory figures on stderr\n"
@@ -113,7 +122,15 @@ static stp_pixel_format format_for_kind(stp_posix_file_kind kind)
     }
 }
 
-enum { OPT_FORMAT = STP_TOOL_OPT_COMMAND, OPT_STATS, OPT_PLAIN, OPT_PALETTE, OPT_BENCH_SCENES, OPT_BENCH_BUDGET };
+enum {
+    OPT_FORMAT = STP_TOOL_OPT_COMMAND,
+    OPT_STATS,
+    OPT_PLAIN,
+    OPT_PALETTE,
+    OPT_DEVICE,
+    OPT_BENCH_SCENES,
+    OPT_BENCH_BUDGET
+};
 
 /* Turn an indexed frame buffer (STYLE8: style index 1..levels per pixel)
  * into RGB through a 256-entry colour table, grey or pseudocolour, with the
@@ -149,12 +166,75 @@ static int index_to_colour(stp_posix_frame *frame, int levels, int pseudo, const
     return 0;
 }
 
+/* stipple render --device SPEC: the scene onto a Linux device (fbdev, USB
+ * receipt printer, SPI panel; ports/linux-fb/stp_device.h).  The picture
+ * takes the device's size and pixel format unless --size asks for less. */
+static int render_to_device(const char *scene_path, const char *spec, stp_tool_options *opt,
+                            const stp_scene_options *sopt, int size_given, int show_stats)
+{
+#if STP_HAVE_DEVICE
+    stp_scene scene;
+    stp_device_options dopt;
+    stp_device *dev;
+    stp_port *port;
+    stp_tool_stats stats;
+    stp_progress progress;
+    char err[512];
+    int rc;
+    if (stp_scene_load(scene_path, sopt, &scene, err, sizeof err) != 0)
+        return fail("%s", err);
+    stp_device_options_default(&dopt);
+    if (size_given) {
+        dopt.width = (uint32_t)opt->width;
+        dopt.height = (uint32_t)opt->height;
+    }
+    if (opt->colour)
+        dopt.format = STP_PIXEL_RGB888;
+    dev = stp_device_open(spec, &dopt, err, sizeof err);
+    if (!dev) {
+        stp_scene_free(&scene);
+        return fail("%s", err);
+    }
+    port = stp_device_port(dev);
+    opt->width = (int)port->width;
+    opt->height = (int)port->height;
+    rc = stp_tool_render(&scene, opt,
+                         stp_progress_wrap(&progress, port, opt->raytrace ? "ray tracing" : "rendering"),
+                         &stats, err, sizeof err);
+    stp_progress_finish(&progress);
+    stp_scene_free(&scene);
+    if (rc != 0) {
+        const char *why = stp_device_error(dev);
+        fprintf(stderr, "%s: %s: %s%s%s\n", program, scene_path, err, *why ? ": " : "", why);
+        stp_device_close(dev);
+        return 1;
+    }
+    if (stp_device_finish(dev, err, sizeof err) != 0) {
+        stp_device_close(dev);
+        return fail("%s", err);
+    }
+    if (show_stats)
+        fprintf(stderr, "%s: drawn on %s\n", scene_path, stp_device_describe(dev));
+    stp_device_close(dev);
+    return 0;
+#else
+    (void)scene_path;
+    (void)spec;
+    (void)opt;
+    (void)sopt;
+    (void)size_given;
+    (void)show_stats;
+    return fail("render: this build has no Linux device ports (--device)");
+#endif
+}
+
 static int cmd_render(int argc, char **argv)
 {
     static const struct option own[] = {
         {"output", required_argument, 0, 'o'}, {"format", required_argument, 0, OPT_FORMAT},
         {"band", required_argument, 0, 'b'},   {"stats", no_argument, 0, OPT_STATS},
         {"palette", required_argument, 0, OPT_PALETTE},
+        {"device", required_argument, 0, OPT_DEVICE},
         {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     struct option longs[64];
     stp_tool_options opt;
@@ -164,9 +244,9 @@ static int cmd_render(int argc, char **argv)
     stp_style_table lp;
     stp_tool_stats stats;
     stp_posix_file_kind kind = STP_POSIX_FILE_UNKNOWN;
-    const char *out_path = 0, *scene_path;
+    const char *out_path = 0, *scene_path, *device_spec = 0;
     char err[512];
-    int c, show_stats = 0, palette = 0;
+    int c, show_stats = 0, palette = 0, size_given = 0;
 
     stp_tool_options_default(&opt);
     stp_scene_options_default(&sopt);
@@ -175,6 +255,8 @@ static int cmd_render(int argc, char **argv)
     optind = 1;
     while ((c = getopt_long(argc, argv, STP_TOOL_SHORT_OPTIONS "o:b:h", longs, 0)) != -1) {
         int applied = stp_tool_apply_option(c, optarg, &opt, &sopt, err, sizeof err);
+        if (c == 's')
+            size_given = 1;
         if (applied < 0)
             return fail("%s", err);
         if (applied)
@@ -190,6 +272,7 @@ static int cmd_render(int argc, char **argv)
                 return fail("bad --band '%s' (1..32767)", optarg);
             break;
         case OPT_STATS: show_stats = 1; break;
+        case OPT_DEVICE: device_spec = optarg; break;
         case OPT_PALETTE:
             if (!strcmp(optarg, "grey") || !strcmp(optarg, "gray"))
                 palette = 1;
@@ -207,8 +290,13 @@ static int cmd_render(int argc, char **argv)
         return 2;
     }
     scene_path = argv[optind];
+    if (device_spec) {
+        if (out_path || palette || kind != STP_POSIX_FILE_UNKNOWN)
+            return fail("render: --device draws on the device: no -o, --format or --palette");
+        return render_to_device(scene_path, device_spec, &opt, &sopt, size_given, show_stats);
+    }
     if (!out_path)
-        return fail("render: no output given (-o FILE, or -o - for stdout)");
+        return fail("render: no output given (-o FILE, -o - for stdout, or --device SPEC)");
     if (kind == STP_POSIX_FILE_UNKNOWN) {
         kind = stp_posix_kind_from_path(out_path);
         if (kind == STP_POSIX_FILE_UNKNOWN) {
