@@ -106,55 +106,60 @@ static void test_golden_smooth_teapot(void **state)
 
 #endif
 
-#if STP_WITH_SHADOWS
-/* Shadow maps (256 texels square per light) on the balls and mount scenes. */
-static void test_golden_shadows(void **state)
+#if STP_WITH_SHADOWS || STP_WITH_RAYTRACE
+/* Render each named scene at 128 x 64 with the default options changed by
+ * `adjust` and compare it with tests/golden/<name><suffix>.pbm.  Returns
+ * the failures. */
+static int golden_series(const char *const *names, size_t count,
+                         void (*adjust)(stp_tool_options *opt), const char *suffix)
 {
-    static const char *const names[] = {"balls-s1", "mount-s2"};
     size_t i;
     int failures = 0;
-    (void)state;
-    for (i = 0; i < 2; i++) {
+    for (i = 0; i < count; i++) {
         stp_scene scene;
         stp_tool_options opt;
         stp_posix_frame frame;
         char name[128];
         load(names[i], &scene);
         stp_tool_options_default(&opt);
-        opt.shadow_resolution = 256;
+        adjust(&opt);
         render(&scene, &opt, &frame, STP_PIXEL_MONO1);
         stp_scene_free(&scene);
-        snprintf(name, sizeof name, "%s-shadows-128x64", names[i]);
+        snprintf(name, sizeof name, "%s%s", names[i], suffix);
         failures += compare_golden(&frame, name);
         stp_posix_frame_free(&frame);
     }
-    assert_int_equal(failures, 0);
+    return failures;
+}
+#endif
+
+#if STP_WITH_SHADOWS
+static void with_shadows(stp_tool_options *opt)
+{
+    opt->shadow_resolution = 256;
+}
+
+/* Shadow maps (256 texels square per light) on the balls and mount scenes. */
+static void test_golden_shadows(void **state)
+{
+    static const char *const names[] = {"balls-s1", "mount-s2"};
+    (void)state;
+    assert_int_equal(golden_series(names, 2, with_shadows, "-shadows-128x64"), 0);
 }
 #endif
 
 #if STP_WITH_RAYTRACE
+static void with_raytrace(stp_tool_options *opt)
+{
+    opt->raytrace = 1;
+}
+
 /* Every scene ray-traced (stipple render --raytrace: depth 4, min weight
  * 1/64, the hierarchy) against its golden. */
 static void test_golden_raytrace(void **state)
 {
-    size_t i;
-    int failures = 0;
     (void)state;
-    for (i = 0; i < SCENE_COUNT; i++) {
-        stp_scene scene;
-        stp_tool_options opt;
-        stp_posix_frame frame;
-        char name[128];
-        load(scenes[i], &scene);
-        stp_tool_options_default(&opt);
-        opt.raytrace = 1;
-        render(&scene, &opt, &frame, STP_PIXEL_MONO1);
-        stp_scene_free(&scene);
-        snprintf(name, sizeof name, "%s-raytrace-128x64", scenes[i]);
-        failures += compare_golden(&frame, name);
-        stp_posix_frame_free(&frame);
-    }
-    assert_int_equal(failures, 0);
+    assert_int_equal(golden_series(scenes, SCENE_COUNT, with_raytrace, "-raytrace-128x64"), 0);
 }
 #endif
 
