@@ -161,8 +161,12 @@ static int coord_ok(stp_vec3 p)
 static void point_along(const rt_ray *ray, int64_t t, int32_t out[3])
 {
     int i;
-    for (i = 0; i < 3; i++)
-        out[i] = (int32_t)(ray->o[i] + round_shift(t * ray->d[i], 30));
+    for (i = 0; i < 3; i++) {
+        /* within the limit for every hit but a non-planar polygon's plane
+         * far off its vertices, which hit_polygon then rejects */
+        int64_t v = ray->o[i] + round_shift(t * ray->d[i], 30);
+        out[i] = (int32_t)(v > Q30_ONE ? Q30_ONE : (v < -Q30_ONE ? -Q30_ONE : v));
+    }
 }
 
 /* ---- creation and settings ------------------------------------------- */
@@ -454,6 +458,26 @@ int stp_rt_polygon(stp_raytracer *rt, const stp_vec3 *vertices, const stp_vec3 *
     ay = abs64(unit[1]);
     az = abs64(unit[2]);
     ob->flags = (uint8_t)(ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2));
+    {
+        /* A polygon that is not quite planar is hit on its Newell plane
+         * inside its projection, which can lie off its vertices along the
+         * dropped axis: the box also holds each vertex moved onto the plane
+         * along that axis (|n_d| >= 1/sqrt(3), so the quotient is tame),
+         * within the coordinate limit that hit_polygon keeps to. */
+        int d = ob->flags & FLAG_AXIS_MASK, u = d == 0 ? 1 : 0, v = d == 2 ? 1 : 2;
+        for (i = 0; i < (uint32_t)n; i++) {
+            const int32_t *c = (const int32_t *)&vertices[i];
+            int64_t w = (ob->offset - (int64_t)unit[u] * c[u] - (int64_t)unit[v] * c[v]) / unit[d];
+            if (w < -STP_RT_COORD_LIMIT)
+                w = -STP_RT_COORD_LIMIT;
+            if (w > STP_RT_COORD_LIMIT)
+                w = STP_RT_COORD_LIMIT;
+            if (w - 1 < ob->lo[d])
+                ob->lo[d] = (int32_t)w - 1;
+            if (w + 1 > ob->hi[d])
+                ob->hi[d] = (int32_t)w + 1;
+        }
+    }
     if (normals) {
         stp_vec3 plane = q30_to_vec(unit), u;
         int64_t side = 0;
@@ -553,6 +577,11 @@ static int hit_polygon(const stp_raytracer *rt, const stp_rt_object *ob, const r
     if (tt <= tmin || tt > tmax)
         return 0;
     point_along(ray, tt, hit);
+    /* off the vertices of a non-planar polygon, the plane may run beyond
+     * the coordinate limit: no hit there (the box stops at the limit) */
+    if (hit[0] < -STP_RT_COORD_LIMIT || hit[0] > STP_RT_COORD_LIMIT || hit[1] < -STP_RT_COORD_LIMIT ||
+        hit[1] > STP_RT_COORD_LIMIT || hit[2] < -STP_RT_COORD_LIMIT || hit[2] > STP_RT_COORD_LIMIT)
+        return 0;
     if (!inside_polygon(rt, ob, hit))
         return 0;
     *t = tt;
