@@ -339,8 +339,8 @@ int stp_rt_sphere(stp_raytracer *rt, stp_vec3 centre, stp_fix radius, uint32_t m
     c[2] = centre.z;
     for (i = 0; i < 3; i++) {
         ob->a[i] = c[i];
-        ob->lo[i] = c[i] - radius - 1;
-        ob->hi[i] = c[i] + radius + 1;
+        ob->lo[i] = c[i] - radius - 4;
+        ob->hi[i] = c[i] + radius + 4;
     }
     ob->r0 = radius;
     commit_object(rt);
@@ -384,8 +384,8 @@ int stp_rt_cone(stp_raytracer *rt, stp_vec3 base, stp_fix base_radius, stp_vec3 
         /* the end discs reach r sqrt(1 - u_i^2) off the axis along axis i */
         int64_t u = axis[i];
         int64_t across = (int64_t)stp_isqrt64((uint64_t)(Q30_ONE * Q30_ONE - u * u)); /* Q30 */
-        int64_t e0 = ((int64_t)base_radius * across >> 30) + 2;
-        int64_t e1 = ((int64_t)apex_radius * across >> 30) + 2;
+        int64_t e0 = ((int64_t)base_radius * across >> 30) + 4;
+        int64_t e1 = ((int64_t)apex_radius * across >> 30) + 4;
         int64_t lo0 = b[i] - e0, lo1 = a[i] - e1, hi0 = b[i] + e0, hi1 = a[i] + e1;
         ob->a[i] = b[i];
         ob->b[i] = axis[i];
@@ -971,15 +971,21 @@ static void test_object(stp_raytracer *rt, uint32_t index, const rt_ray *ray, in
         hit = hit_polygon(rt, ob, ray, tmin, h->t, &t, p);
     if (!hit || t > h->t || (t == h->t && index > h->object))
         return;
+    if (ob->kind != KIND_POLYGON) {
+        int i;
+        point_along(ray, t, p);
+        /* a hit outside the object's box is rounding (a ray grazing a
+         * hair-thin cone, whose quadratic was scaled): dropping it keeps
+         * what the hierarchy sees equal to what every object sees */
+        for (i = 0; i < 3; i++)
+            if (p[i] < ob->lo[i] || p[i] > ob->hi[i])
+                return;
+    }
     h->t = t;
     h->object = index;
-    if (ob->kind == KIND_POLYGON) {
-        h->p[0] = p[0];
-        h->p[1] = p[1];
-        h->p[2] = p[2];
-    } else {
-        point_along(ray, t, h->p);
-    }
+    h->p[0] = p[0];
+    h->p[1] = p[1];
+    h->p[2] = p[2];
 }
 
 /* The nearest hit with tmin < t < RT_FAR, skipping object `skip`.

@@ -51,10 +51,6 @@ while [ $# -gt 0 ]; do
     *) targets+=("$1"); shift ;;
     esac
 done
-# fuzz_raytrace has an open finding (a fuzzed scene where the hierarchy and
-# testing every object see different pixels, found after ~20 000 runs): it
-# is replayed with the others but fuzzed only when named.
-named=${#targets[@]}
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 case "$seconds" in ''|*[!0-9]*) echo "run_fuzz.sh: -t needs whole seconds" >&2; exit 2 ;; esac
 [ -n "$bin_dir" ] || bin_dir="$build/tests/fuzz"
@@ -69,10 +65,6 @@ export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 
 status=0
 for t in "${targets[@]}"; do
-    if [ "$mode" = fuzz ] && [ "$named" -eq 0 ] && [ "$t" = fuzz_raytrace ]; then
-        echo "== $t: not fuzzed by default (open finding, see the comment above)"
-        continue
-    fi
     exe="$bin_dir/$t"
     seeds="$here/corpus/$t"
     regress="$here/regressions/$t"
