@@ -25,30 +25,6 @@
 #define C 16 /* the centre pixel */
 #define PI 3.14159265358979323846
 
-static ref_vec3 v3(double x, double y, double z)
-{
-    ref_vec3 r;
-    r.x = x;
-    r.y = y;
-    r.z = z;
-    return r;
-}
-
-static ref_vec3 add(ref_vec3 a, ref_vec3 b)
-{
-    return v3(a.x + b.x, a.y + b.y, a.z + b.z);
-}
-
-static ref_vec3 sub(ref_vec3 a, ref_vec3 b)
-{
-    return v3(a.x - b.x, a.y - b.y, a.z - b.z);
-}
-
-static ref_vec3 scale(ref_vec3 a, double s)
-{
-    return v3(a.x * s, a.y * s, a.z * s);
-}
-
 static ref_vec3 unit(ref_vec3 a)
 {
     ref_vec3 u;
@@ -78,7 +54,7 @@ static ref_rt *make_view(ref_vec3 from, ref_vec3 at, double fov, double hither)
     assert_non_null(rt);
     v.from = from;
     v.at = at;
-    v.up = v3(0, 1, 0);
+    v.up = ref_v3(0, 1, 0);
     v.fov_degrees = fov;
     v.window_half = 1;
     v.hither = hither;
@@ -115,10 +91,10 @@ static ref_rt_material mat(double r, double n, double k, double ks, double t, do
 static int add_wall(ref_rt *rt, double z0, int material)
 {
     ref_vec3 v[4];
-    v[0] = v3(-20, -20, z0);
-    v[1] = v3(20, -20, z0);
-    v[2] = v3(20, 20, z0);
-    v[3] = v3(-20, 20, z0);
+    v[0] = ref_v3(-20, -20, z0);
+    v[1] = ref_v3(20, -20, z0);
+    v[2] = ref_v3(20, 20, z0);
+    v[3] = ref_v3(-20, 20, z0);
     return ref_rt_polygon(rt, v, NULL, 4, material);
 }
 
@@ -129,8 +105,8 @@ static int add_wall(ref_rt *rt, double z0, int material)
 static void test_sphere_head_on(void **state)
 {
     ref_rt_material m[1];
-    ref_lighting l = one_light(v3(3, 4, -12), 5, 0.2);
-    ref_rt *rt = make_view(v3(0, 0, -10), v3(0, 0, 0), 90, 1e-3);
+    ref_lighting l = one_light(ref_v3(3, 4, -12), 5, 0.2);
+    ref_rt *rt = make_view(ref_v3(0, 0, -10), ref_v3(0, 0, 0), 90, 1e-3);
     double t, want, w_r;
     ref_vec3 p, n;
     ref_view v;
@@ -138,18 +114,18 @@ static void test_sphere_head_on(void **state)
     m[0] = mat(0.6, 1.5, 0.5, 0.4, 0, 0);
     ref_rt_set_materials(rt, m, 1);
     ref_rt_set_lighting(rt, &l);
-    assert_int_equal(ref_rt_sphere(rt, v3(0, 0, 0), 2, 0), 0);
+    assert_int_equal(ref_rt_sphere(rt, ref_v3(0, 0, 0), 2, 0), 0);
 
     assert_int_equal(ref_rt_primary_hit(rt, C, C, &t), 0);
     assert_true(t == 8.0); /* 10 - 2, exactly */
     assert_int_equal(ref_rt_primary_surface(rt, C, C, &p, &n), 0);
-    vec_close_to(p, v3(0, 0, -2), 1e-15, "hit point");
-    vec_close_to(n, v3(0, 0, -1), 1e-15, "normal");
+    vec_close_to(p, ref_v3(0, 0, -2), 1e-15, "hit point");
+    vec_close_to(n, ref_v3(0, 0, -1), 1e-15, "normal");
 
     /* no recursion: the local shade alone */
     assert_int_equal(ref_rt_set_recursion(rt, 0, 0), REF_OK);
-    want = ref_shade_point(&l, &m[0].surface, v3(0, 0, -1), v3(0, 0, -2), v3(0, 0, -10), 0,
-                           v3(0, 0, 0));
+    want = ref_shade_point(&l, &m[0].surface, ref_v3(0, 0, -1), ref_v3(0, 0, -2), ref_v3(0, 0, -10), 0,
+                           ref_v3(0, 0, 0));
     assert_true(want > 0.6 * 0.2 + 0.05 && want < 0.95); /* lit, not saturated */
     close_to(ref_rt_trace_pixel(rt, C, C, 0.3), want, 1e-12, "local shade");
 
@@ -164,9 +140,9 @@ static void test_sphere_head_on(void **state)
     assert_true(ref_rt_trace_pixel(rt, 0, 0, 0.3) == 0.3);
 
     /* hither beyond the front surface: the back of the sphere at 12 */
-    v.from = v3(0, 0, -10);
-    v.at = v3(0, 0, 0);
-    v.up = v3(0, 1, 0);
+    v.from = ref_v3(0, 0, -10);
+    v.at = ref_v3(0, 0, 0);
+    v.up = ref_v3(0, 1, 0);
     v.fov_degrees = 90;
     v.window_half = 1;
     v.hither = 9;
@@ -183,8 +159,8 @@ static void test_sphere_head_on(void **state)
 static void test_shadow_behind_sphere(void **state)
 {
     ref_rt_material m[2];
-    ref_lighting l = one_light(v3(4, 0, -5), 3, 0.25), dim;
-    ref_rt *rt = make_view(v3(0, 0, -10), v3(0, 0, 0), 90, 1e-3);
+    ref_lighting l = one_light(ref_v3(4, 0, -5), 3, 0.25), dim;
+    ref_rt *rt = make_view(ref_v3(0, 0, -10), ref_v3(0, 0, 0), 90, 1e-3);
     double t, lit, want;
     int wall, ball;
     (void)state;
@@ -193,7 +169,7 @@ static void test_shadow_behind_sphere(void **state)
     ref_rt_set_materials(rt, m, 2);
     ref_rt_set_lighting(rt, &l);
     wall = add_wall(rt, 5, 0);
-    ball = ref_rt_sphere(rt, v3(2, 0, 0), 1, 1);
+    ball = ref_rt_sphere(rt, ref_v3(2, 0, 0), 1, 1);
     assert_int_equal(wall, 0);
     assert_int_equal(ball, 1);
 
@@ -203,16 +179,16 @@ static void test_shadow_behind_sphere(void **state)
     close_to(t, 15, 1e-13, "wall distance");
     close_to(ref_rt_trace_pixel(rt, C, C, 0), 0.25 * 0.7, 1e-15, "shadowed: ambient only");
 
-    lit = ref_shade_point(&l, &m[0].surface, v3(0, 0, -1), v3(0, 0, 5), v3(0, 0, -10), 0,
-                          v3(0, 0, 0));
+    lit = ref_shade_point(&l, &m[0].surface, ref_v3(0, 0, -1), ref_v3(0, 0, 5), ref_v3(0, 0, -10), 0,
+                          ref_v3(0, 0, 0));
     assert_true(lit > 0.25 * 0.7 + 0.05);
 
     /* a transmissive sphere (the table is kept by pointer): power x 0.4 */
     m[1].transmission = 0.4;
     dim = l;
     dim.lights[0].power *= 0.4;
-    want = ref_shade_point(&dim, &m[0].surface, v3(0, 0, -1), v3(0, 0, 5), v3(0, 0, -10), 0,
-                           v3(0, 0, 0));
+    want = ref_shade_point(&dim, &m[0].surface, ref_v3(0, 0, -1), ref_v3(0, 0, 5), ref_v3(0, 0, -10), 0,
+                           ref_v3(0, 0, 0));
     assert_true(want > 0.25 * 0.7 + 0.01 && want < lit - 0.01);
     close_to(ref_rt_trace_pixel(rt, C, C, 0), want, 1e-12, "shadow through t = 0.4");
     ref_rt_free(rt);
@@ -224,8 +200,8 @@ static void test_shadow_behind_sphere(void **state)
 static void test_mirror(void **state)
 {
     ref_rt_material m[2];
-    ref_lighting l = one_light(v3(0, 2, -6), 10, 0.1);
-    ref_rt *rt = make_view(v3(0, 4, -4), v3(0, 0, 0), 90, 1e-3);
+    ref_lighting l = one_light(ref_v3(0, 2, -6), 10, 0.1);
+    ref_rt *rt = make_view(ref_v3(0, 4, -4), ref_v3(0, 0, 0), 90, 1e-3);
     ref_vec3 quad[4], q, nq;
     double t, v_l, v_s, w_r, want;
     (void)state;
@@ -233,12 +209,12 @@ static void test_mirror(void **state)
     m[1] = mat(0.8, 1.5, 10, 0, 0, 0);   /* the sphere: no secondary rays */
     ref_rt_set_materials(rt, m, 2);
     ref_rt_set_lighting(rt, &l);
-    quad[0] = v3(-3, -3, 0);
-    quad[1] = v3(3, -3, 0);
-    quad[2] = v3(3, 3, 0);
-    quad[3] = v3(-3, 3, 0);
+    quad[0] = ref_v3(-3, -3, 0);
+    quad[1] = ref_v3(3, -3, 0);
+    quad[2] = ref_v3(3, 3, 0);
+    quad[3] = ref_v3(-3, 3, 0);
     assert_int_equal(ref_rt_polygon(rt, quad, NULL, 4, 0), 0);
-    assert_int_equal(ref_rt_sphere(rt, v3(0, -4, -4), 1, 1), 1);
+    assert_int_equal(ref_rt_sphere(rt, ref_v3(0, -4, -4), 1, 1), 1);
     assert_int_equal(ref_rt_set_recursion(rt, 4, 0), REF_OK);
 
     assert_int_equal(ref_rt_primary_hit(rt, C, C, &t), 0);
@@ -246,11 +222,11 @@ static void test_mirror(void **state)
 
     /* at the origin: N = (0,0,-1) towards the eye, E.N = 1/sqrt 2; the
      * mirror ray (0,-1,-1)/sqrt 2 meets the sphere at 4 sqrt 2 - 1 */
-    v_l = ref_shade_point(&l, &m[0].surface, v3(0, 0, -1), v3(0, 0, 0), v3(0, 4, -4), 0,
-                          v3(0, 0, 0));
-    q = scale(unit(v3(0, -1, -1)), 4 * sqrt(2.0) - 1);
-    nq = unit(v3(0, 1, 1));
-    v_s = ref_shade_point(&l, &m[1].surface, nq, q, v3(0, 0, 0), 0, v3(0, 0, 0));
+    v_l = ref_shade_point(&l, &m[0].surface, ref_v3(0, 0, -1), ref_v3(0, 0, 0), ref_v3(0, 4, -4), 0,
+                          ref_v3(0, 0, 0));
+    q = ref_scale(unit(ref_v3(0, -1, -1)), 4 * sqrt(2.0) - 1);
+    nq = unit(ref_v3(0, 1, 1));
+    v_s = ref_shade_point(&l, &m[1].surface, nq, q, ref_v3(0, 0, 0), 0, ref_v3(0, 0, 0));
     w_r = ref_fresnel_f(1 / sqrt(2.0), 1e6);
     assert_true(w_r > 0.99 && w_r <= 1);
     assert_true(v_s > 0.3);
@@ -276,8 +252,8 @@ static void test_mirror(void **state)
 static void test_glass_index_one(void **state)
 {
     ref_rt_material m[2];
-    ref_lighting l = one_light(v3(0, 6, -10), 8, 0.2);
-    ref_rt *rt = make_view(v3(0, 0, -10), v3(0, 0, 0), 90, 1e-3);
+    ref_lighting l = one_light(ref_v3(0, 6, -10), 8, 0.2);
+    ref_rt *rt = make_view(ref_v3(0, 0, -10), ref_v3(0, 0, 0), 90, 1e-3);
     ref_vec3 o, d, pw;
     double t, v_wall, want, tw;
     (void)state;
@@ -285,15 +261,15 @@ static void test_glass_index_one(void **state)
     m[1] = mat(0.7, 10, 10, 0, 0, 0); /* the wall */
     ref_rt_set_materials(rt, m, 2);
     ref_rt_set_lighting(rt, &l);
-    assert_int_equal(ref_rt_sphere(rt, v3(0, 0, 0), 1, 0), 0);
+    assert_int_equal(ref_rt_sphere(rt, ref_v3(0, 0, 0), 1, 0), 0);
     assert_int_equal(add_wall(rt, 5, 1), 1);
     assert_int_equal(ref_rt_set_recursion(rt, 4, 0), REF_OK);
 
     assert_int_equal(ref_rt_primary_hit(rt, C, C, &t), 0);
     close_to(t, 9, 1e-14, "glass distance");
     /* (0, 0, 5): its segment to the light passes 1.86 from the sphere */
-    v_wall = ref_shade_point(&l, &m[1].surface, v3(0, 0, -1), v3(0, 0, 5), v3(0, 0, -10), 0,
-                             v3(0, 0, 0));
+    v_wall = ref_shade_point(&l, &m[1].surface, ref_v3(0, 0, -1), ref_v3(0, 0, 5), ref_v3(0, 0, -10), 0,
+                             ref_v3(0, 0, 0));
     assert_true(v_wall > 0.3);
     close_to(ref_rt_trace_pixel(rt, C, C, 0), 0.25 * v_wall, 1e-12, "through glass, n = 1");
 
@@ -301,8 +277,8 @@ static void test_glass_index_one(void **state)
     assert_int_equal(ref_rt_primary_ray(rt, C + 1, C, &o, &d), REF_OK);
     assert_int_equal(ref_rt_primary_hit(rt, C + 1, C, &t), 0);
     tw = (5 - o.z) / d.z;
-    pw = add(o, scale(d, tw));
-    want = 0.25 * ref_shade_point(&l, &m[1].surface, v3(0, 0, -1), pw, o, 0, v3(0, 0, 0));
+    pw = ref_add(o, ref_scale(d, tw));
+    want = 0.25 * ref_shade_point(&l, &m[1].surface, ref_v3(0, 0, -1), pw, o, 0, ref_v3(0, 0, 0));
     close_to(ref_rt_trace_pixel(rt, C + 1, C, 0), want, 1e-12, "off axis, n = 1");
 
     /* absorption over the diameter */
@@ -334,35 +310,35 @@ static void test_glass_index_one(void **state)
 static void test_total_internal_reflection(void **state)
 {
     ref_rt_material m[1];
-    ref_lighting l = one_light(v3(0, 0, 0), 1, 0.1);
-    ref_rt *rt = make_view(v3(0.9, 0, 0), v3(0.9, 0, 1), 90, 1e-3);
-    ref_vec3 d = v3(0, 0, 1), p1, n1, r1, p2, n2, r2, p3, n3;
+    ref_lighting l = one_light(ref_v3(0, 0, 0), 1, 0.1);
+    ref_rt *rt = make_view(ref_v3(0.9, 0, 0), ref_v3(0.9, 0, 1), 90, 1e-3);
+    ref_vec3 d = ref_v3(0, 0, 1), p1, n1, r1, p2, n2, r2, p3, n3;
     double z1 = sqrt(0.19), t, f, w, att, v1, v2, v3_, want;
     (void)state;
     m[0] = mat(0.5, 2, 10, 0.5, 0.6, 0.2);
     ref_rt_set_materials(rt, m, 1);
     ref_rt_set_lighting(rt, &l);
-    assert_int_equal(ref_rt_sphere(rt, v3(0, 0, 0), 1, 0), 0);
+    assert_int_equal(ref_rt_sphere(rt, ref_v3(0, 0, 0), 1, 0), 0);
 
     assert_int_equal(ref_rt_primary_hit(rt, C, C, &t), 0);
     close_to(t, z1, 1e-15, "far root from inside");
-    p1 = v3(0.9, 0, z1);
-    n1 = scale(p1, -1); /* faced: inwards */
+    p1 = ref_v3(0.9, 0, z1);
+    n1 = ref_scale(p1, -1); /* faced: inwards */
     f = ref_fresnel_f(z1, 2); /* c = E.N = z1 */
     w = 0.5 * f + 0.6 * (1 - f); /* Ks F + t (1 - F) */
     att = exp(-0.2 * 2 * z1);
-    r1 = sub(d, scale(n1, 2 * ref_dot(d, n1)));
-    p2 = add(p1, scale(r1, 2 * z1));
+    r1 = ref_sub(d, ref_scale(n1, 2 * ref_dot(d, n1)));
+    p2 = ref_add(p1, ref_scale(r1, 2 * z1));
     close_to(ref_dot(p2, p2), 1, 1e-14, "second point on the sphere");
-    n2 = scale(p2, -1);
-    r2 = sub(r1, scale(n2, 2 * ref_dot(r1, n2)));
-    p3 = add(p2, scale(r2, 2 * z1));
-    n3 = scale(p3, -1);
+    n2 = ref_scale(p2, -1);
+    r2 = ref_sub(r1, ref_scale(n2, 2 * ref_dot(r1, n2)));
+    p3 = ref_add(p2, ref_scale(r2, 2 * z1));
+    n3 = ref_scale(p3, -1);
     close_to(ref_dot(r1, n2), -z1, 1e-14, "same angle at the second point");
 
-    v1 = ref_shade_point(&l, &m[0].surface, n1, p1, v3(0.9, 0, 0), 0, v3(0, 0, 0));
-    v2 = ref_shade_point(&l, &m[0].surface, n2, p2, p1, 0, v3(0, 0, 0));
-    v3_ = ref_shade_point(&l, &m[0].surface, n3, p3, p2, 0, v3(0, 0, 0));
+    v1 = ref_shade_point(&l, &m[0].surface, n1, p1, ref_v3(0.9, 0, 0), 0, ref_v3(0, 0, 0));
+    v2 = ref_shade_point(&l, &m[0].surface, n2, p2, p1, 0, ref_v3(0, 0, 0));
+    v3_ = ref_shade_point(&l, &m[0].surface, n3, p3, p2, 0, ref_v3(0, 0, 0));
     assert_true(v1 > 0.1 && v2 > 0.1 && v3_ > 0.1);
 
     /* a background of 1 would show any ray wrongly sent out */
@@ -387,7 +363,7 @@ static void test_total_internal_reflection(void **state)
 static void test_cone(void **state)
 {
     ref_rt_material m[1];
-    ref_rt *rt = make_view(v3(0, 0, -10), v3(0, 0, 0), 90, 1e-3);
+    ref_rt *rt = make_view(ref_v3(0, 0, -10), ref_v3(0, 0, 0), 90, 1e-3);
     ref_vec3 p, n;
     ref_view v;
     double t, fov;
@@ -395,13 +371,13 @@ static void test_cone(void **state)
     m[0] = mat(0.5, 10, 10, 0, 0, 0);
     ref_rt_set_materials(rt, m, 1);
     /* radius (1 - y)/2 for y in [-1, 1] */
-    assert_int_equal(ref_rt_cone(rt, v3(0, -1, 0), 1, v3(0, 1, 0), 0, 0), 0);
+    assert_int_equal(ref_rt_cone(rt, ref_v3(0, -1, 0), 1, ref_v3(0, 1, 0), 0, 0), 0);
 
     assert_int_equal(ref_rt_primary_hit(rt, C, C, &t), 0);
     close_to(t, 9.5, 1e-14, "cone, centre");
     assert_int_equal(ref_rt_primary_surface(rt, C, C, &p, &n), 0);
     /* gradient of x^2 + z^2 - ((1 - y)/2)^2 at (0, 0, -0.5): (0, 1/2, -1) */
-    vec_close_to(n, unit(v3(0, 0.5, -1)), 1e-14, "cone normal");
+    vec_close_to(n, unit(ref_v3(0, 0.5, -1)), 1e-14, "cone normal");
 
     /* pixel (16, 15): direction (0, 1, 16.5); -10 + 16.5 s = -(1 - s)/2
      * gives s = 9.5/16, y = s inside the range */
@@ -412,15 +388,15 @@ static void test_cone(void **state)
     ref_rt_free(rt);
 
     /* an open cylinder along x, radius 1/2 */
-    rt = make_view(v3(0, 0, -10), v3(0, 0, 0), 90, 1e-3);
+    rt = make_view(ref_v3(0, 0, -10), ref_v3(0, 0, 0), 90, 1e-3);
     ref_rt_set_materials(rt, m, 1);
-    assert_int_equal(ref_rt_cone(rt, v3(-1, 0, 0), 0.5, v3(1, 0, 0), 0.5, 0), 0);
+    assert_int_equal(ref_rt_cone(rt, ref_v3(-1, 0, 0), 0.5, ref_v3(1, 0, 0), 0.5, 0), 0);
     assert_int_equal(ref_rt_primary_hit(rt, C, C, &t), 0);
     close_to(t, 9.5, 1e-14, "cylinder, centre");
     /* along its axis: no caps */
-    v.from = v3(-10, 0, 0);
-    v.at = v3(0, 0, 0);
-    v.up = v3(0, 1, 0);
+    v.from = ref_v3(-10, 0, 0);
+    v.at = ref_v3(0, 0, 0);
+    v.up = ref_v3(0, 1, 0);
     v.window_half = 1;
     v.hither = 1e-3;
     v.perspective = 1;
@@ -433,8 +409,8 @@ static void test_cone(void **state)
     v.fov_degrees = fov;
     assert_int_equal(ref_rt_set_view(rt, &v), REF_OK);
     assert_int_equal(ref_rt_primary_surface(rt, C + 1, C, &p, &n), 0);
-    vec_close_to(p, v3(0, 0, 0.5), 1e-13, "inside wall point");
-    vec_close_to(n, v3(0, 0, -1), 1e-13, "inside wall normal, facing the ray");
+    vec_close_to(p, ref_v3(0, 0, 0.5), 1e-13, "inside wall point");
+    vec_close_to(n, ref_v3(0, 0, -1), 1e-13, "inside wall normal, facing the ray");
     assert_int_equal(ref_rt_primary_hit(rt, C + 1, C, &t), 0);
     close_to(t, 0.5 * sqrt(401.0), 1e-13, "inside wall distance");
     ref_rt_free(rt);
@@ -456,10 +432,10 @@ static ref_vec3 quad_normal(const ref_vec3 *v, const ref_vec3 *nu, ref_vec3 p)
     double w[3];
     bary(p, v[0], v[1], v[2], w);
     if (w[0] >= 0 && w[1] >= 0 && w[2] >= 0)
-        return unit(add(add(scale(nu[0], w[0]), scale(nu[1], w[1])), scale(nu[2], w[2])));
+        return unit(ref_add(ref_add(ref_scale(nu[0], w[0]), ref_scale(nu[1], w[1])), ref_scale(nu[2], w[2])));
     bary(p, v[0], v[2], v[3], w);
     assert_true(w[0] >= 0 && w[1] >= 0 && w[2] >= 0);
-    return unit(add(add(scale(nu[0], w[0]), scale(nu[2], w[1])), scale(nu[3], w[2])));
+    return unit(ref_add(ref_add(ref_scale(nu[0], w[0]), ref_scale(nu[2], w[1])), ref_scale(nu[3], w[2])));
 }
 
 /* Patch normals: at the centre of a quad (the diagonal v0 v2), the average
@@ -468,8 +444,8 @@ static ref_vec3 quad_normal(const ref_vec3 *v, const ref_vec3 *nu, ref_vec3 p)
 static void test_patch_normals(void **state)
 {
     ref_rt_material m[1];
-    ref_lighting l = one_light(v3(3, 2, -5), 4, 0.1);
-    ref_rt *rt = make_view(v3(0, 0, -10), v3(0, 0, 0), 90, 1e-3);
+    ref_lighting l = one_light(ref_v3(3, 2, -5), 4, 0.1);
+    ref_rt *rt = make_view(ref_v3(0, 0, -10), ref_v3(0, 0, 0), 90, 1e-3);
     ref_vec3 v[4], nn[4], nu[4], p, n, want;
     int pix[3][2] = {{C, C}, {C - 4, C + 2}, {C + 3, C - 2}};
     int i;
@@ -478,21 +454,21 @@ static void test_patch_normals(void **state)
     ref_rt_set_materials(rt, m, 1);
     ref_rt_set_lighting(rt, &l);
     assert_int_equal(ref_rt_set_recursion(rt, 0, 0), REF_OK);
-    v[0] = v3(-3, -3, 0);
-    v[1] = v3(3, -3, 0);
-    v[2] = v3(3, 3, 0);
-    v[3] = v3(-3, 3, 0);
-    nn[0] = v3(0.3, 0.2, -1);
-    nn[1] = v3(1.5, 0, -3); /* length 3.35: only its direction counts */
-    nn[2] = v3(-0.1, 0.4, -1);
-    nn[3] = v3(0, -0.5, -1);
+    v[0] = ref_v3(-3, -3, 0);
+    v[1] = ref_v3(3, -3, 0);
+    v[2] = ref_v3(3, 3, 0);
+    v[3] = ref_v3(-3, 3, 0);
+    nn[0] = ref_v3(0.3, 0.2, -1);
+    nn[1] = ref_v3(1.5, 0, -3); /* length 3.35: only its direction counts */
+    nn[2] = ref_v3(-0.1, 0.4, -1);
+    nn[3] = ref_v3(0, -0.5, -1);
     for (i = 0; i < 4; i++)
         nu[i] = unit(nn[i]);
     assert_int_equal(ref_rt_polygon(rt, v, nn, 4, 0), 0);
 
     assert_int_equal(ref_rt_primary_surface(rt, C, C, &p, &n), 0);
-    vec_close_to(p, v3(0, 0, 0), 1e-14, "quad centre");
-    vec_close_to(n, unit(add(nu[0], nu[2])), 1e-14, "centre: unit(N0 + N2)");
+    vec_close_to(p, ref_v3(0, 0, 0), 1e-14, "quad centre");
+    vec_close_to(n, unit(ref_add(nu[0], nu[2])), 1e-14, "centre: unit(N0 + N2)");
 
     for (i = 0; i < 3; i++) {
         double s;
@@ -500,23 +476,23 @@ static void test_patch_normals(void **state)
         close_to(p.z, 0, 1e-14, "on the plane");
         want = quad_normal(v, nu, p);
         vec_close_to(n, want, 1e-13, "interpolated normal");
-        s = ref_shade_point(&l, &m[0].surface, want, p, v3(0, 0, -10), 0, v3(0, 0, 0));
+        s = ref_shade_point(&l, &m[0].surface, want, p, ref_v3(0, 0, -10), 0, ref_v3(0, 0, 0));
         close_to(ref_rt_trace_pixel(rt, pix[i][0], pix[i][1], 0), s, 1e-12, "patch shade");
     }
     /* the normals matter: the flat plane's shade differs */
     {
-        double flat = ref_shade_point(&l, &m[0].surface, v3(0, 0, -1), v3(0, 0, 0),
-                                      v3(0, 0, -10), 0, v3(0, 0, 0));
+        double flat = ref_shade_point(&l, &m[0].surface, ref_v3(0, 0, -1), ref_v3(0, 0, 0),
+                                      ref_v3(0, 0, -10), 0, ref_v3(0, 0, 0));
         assert_true(fabs(ref_rt_trace_pixel(rt, C, C, 0) - flat) > 0.01);
     }
     ref_rt_free(rt);
 
     /* N3 = 0: the plane's normal, on the side of the others (-z), in the
      * triangle (v0, v2, v3) (y > x): pixel (19, 14) hits (-1.82, 1.21) */
-    rt = make_view(v3(0, 0, -10), v3(0, 0, 0), 90, 1e-3);
+    rt = make_view(ref_v3(0, 0, -10), ref_v3(0, 0, 0), 90, 1e-3);
     ref_rt_set_materials(rt, m, 1);
-    nn[3] = v3(0, 0, 0);
-    nu[3] = v3(0, 0, -1);
+    nn[3] = ref_v3(0, 0, 0);
+    nu[3] = ref_v3(0, 0, -1);
     assert_int_equal(ref_rt_polygon(rt, v, nn, 4, 0), 0);
     assert_int_equal(ref_rt_primary_surface(rt, C + 3, C - 2, &p, &n), 0);
     assert_true(p.x < -1.8 && p.y > 1.2);
@@ -530,7 +506,7 @@ static void test_patch_normals(void **state)
 static void test_concave_parallel(void **state)
 {
     ref_rt_material m[1];
-    ref_lighting l = one_light(v3(-3, -2, -4), 4, 0.1);
+    ref_lighting l = one_light(ref_v3(-3, -2, -4), 4, 0.1);
     ref_rt *rt = ref_rt_create(W, H);
     ref_vec3 v[6];
     ref_view view;
@@ -541,20 +517,20 @@ static void test_concave_parallel(void **state)
     ref_rt_set_materials(rt, m, 1);
     ref_rt_set_lighting(rt, &l);
     assert_int_equal(ref_rt_set_recursion(rt, 0, 0), REF_OK);
-    view.from = v3(0, 0, -10);
-    view.at = v3(0, 0, 0);
-    view.up = v3(0, 1, 0);
+    view.from = ref_v3(0, 0, -10);
+    view.at = ref_v3(0, 0, 0);
+    view.up = ref_v3(0, 1, 0);
     view.fov_degrees = 90;
     view.window_half = 3.3; /* focal = 16.5 / 3.3 = 5 pixels per unit */
     view.hither = 1e-3;
     view.perspective = 0;
     assert_int_equal(ref_rt_set_view(rt, &view), REF_OK);
-    v[0] = v3(-2, -2, 0);
-    v[1] = v3(2, -2, 0);
-    v[2] = v3(2, 0, 0);
-    v[3] = v3(0, 0, 0);
-    v[4] = v3(0, 2, 0);
-    v[5] = v3(-2, 2, 0);
+    v[0] = ref_v3(-2, -2, 0);
+    v[1] = ref_v3(2, -2, 0);
+    v[2] = ref_v3(2, 0, 0);
+    v[3] = ref_v3(0, 0, 0);
+    v[4] = ref_v3(0, 2, 0);
+    v[5] = ref_v3(-2, 2, 0);
     assert_int_equal(ref_rt_polygon(rt, v, NULL, 6, 0), 0);
     /* pixel (i, j) sees world x = -(i + 0.5 - 16.5)/5, y = (16.5 - j - 0.5)/5 */
     assert_int_equal(ref_rt_primary_hit(rt, 11, 11, &t), -1); /* (1, 1): the notch */
@@ -563,8 +539,8 @@ static void test_concave_parallel(void **state)
     close_to(t, 10, 1e-14, "parallel distance");
     assert_int_equal(ref_rt_primary_hit(rt, 11, 21, &t), 0);  /* (1, -1) */
     assert_int_equal(ref_rt_primary_hit(rt, 21, 11, &t), 0);  /* (-1, 1) */
-    want = ref_shade_point(&l, &m[0].surface, v3(0, 0, -1), v3(-1, -1, 0), v3(0, 0, 0), 1,
-                           v3(0, 0, -1));
+    want = ref_shade_point(&l, &m[0].surface, ref_v3(0, 0, -1), ref_v3(-1, -1, 0), ref_v3(0, 0, 0), 1,
+                           ref_v3(0, 0, -1));
     assert_true(want > 0.1);
     close_to(ref_rt_trace_pixel(rt, 21, 21, 0), want, 1e-12, "parallel shade");
     ref_rt_free(rt);
@@ -582,20 +558,20 @@ static void test_errors(void **state)
     assert_null(ref_rt_create(5, 32768));
     rt = ref_rt_create(W, H);
     assert_non_null(rt);
-    assert_int_equal(ref_rt_sphere(rt, v3(0, 0, 0), 0, 0), REF_ERR_DEGENERATE);
-    assert_int_equal(ref_rt_sphere(rt, v3(0, 0, 0), -1, 0), REF_ERR_ARG);
-    assert_int_equal(ref_rt_cone(rt, v3(0, 0, 0), 1, v3(0, 0, 0), 1, 0), REF_ERR_DEGENERATE);
-    assert_int_equal(ref_rt_cone(rt, v3(0, 0, 0), 0, v3(0, 1, 0), 0, 0), REF_ERR_ARG);
-    line[0] = v3(0, 0, 0);
-    line[1] = v3(1, 1, 1);
-    line[2] = v3(2, 2, 2);
+    assert_int_equal(ref_rt_sphere(rt, ref_v3(0, 0, 0), 0, 0), REF_ERR_DEGENERATE);
+    assert_int_equal(ref_rt_sphere(rt, ref_v3(0, 0, 0), -1, 0), REF_ERR_ARG);
+    assert_int_equal(ref_rt_cone(rt, ref_v3(0, 0, 0), 1, ref_v3(0, 0, 0), 1, 0), REF_ERR_DEGENERATE);
+    assert_int_equal(ref_rt_cone(rt, ref_v3(0, 0, 0), 0, ref_v3(0, 1, 0), 0, 0), REF_ERR_ARG);
+    line[0] = ref_v3(0, 0, 0);
+    line[1] = ref_v3(1, 1, 1);
+    line[2] = ref_v3(2, 2, 2);
     assert_int_equal(ref_rt_polygon(rt, line, NULL, 3, 0), REF_ERR_DEGENERATE);
     assert_int_equal(ref_rt_polygon(rt, line, NULL, 2, 0), REF_ERR_DEGENERATE);
     assert_int_equal(ref_rt_set_recursion(rt, -1, 0), REF_ERR_ARG);
     assert_int_equal(ref_rt_set_recursion(rt, 2, 1.5), REF_ERR_ARG);
-    v.from = v3(0, 0, 0);
-    v.at = v3(0, 1, 0);
-    v.up = v3(0, 1, 0);
+    v.from = ref_v3(0, 0, 0);
+    v.at = ref_v3(0, 1, 0);
+    v.up = ref_v3(0, 1, 0);
     v.fov_degrees = 90;
     v.window_half = 1;
     v.hither = 1;
@@ -603,7 +579,7 @@ static void test_errors(void **state)
     assert_int_equal(ref_rt_set_view(rt, &v), REF_ERR_VIEW);
     assert_int_equal((int)ref_rt_object_count(rt), 0);
     /* the default view looks from (0,0,-1) along +z */
-    assert_int_equal(ref_rt_sphere(rt, v3(0, 0, 3), 1, 0), 0);
+    assert_int_equal(ref_rt_sphere(rt, ref_v3(0, 0, 3), 1, 0), 0);
     assert_true(ref_rt_trace_pixel(rt, C, C, 0) == -1); /* no material table */
     m[0] = mat(1, 10, 10, 0, 0, 0);
     ref_rt_set_materials(rt, m, 1);

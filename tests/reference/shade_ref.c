@@ -8,6 +8,35 @@ double ref_dot(ref_vec3 a, ref_vec3 b)
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
+ref_vec3 ref_v3(double x, double y, double z)
+{
+    ref_vec3 r;
+    r.x = x;
+    r.y = y;
+    r.z = z;
+    return r;
+}
+
+ref_vec3 ref_add(ref_vec3 a, ref_vec3 b)
+{
+    return ref_v3(a.x + b.x, a.y + b.y, a.z + b.z);
+}
+
+ref_vec3 ref_sub(ref_vec3 a, ref_vec3 b)
+{
+    return ref_v3(a.x - b.x, a.y - b.y, a.z - b.z);
+}
+
+ref_vec3 ref_scale(ref_vec3 a, double s)
+{
+    return ref_v3(a.x * s, a.y * s, a.z * s);
+}
+
+ref_vec3 ref_cross(ref_vec3 a, ref_vec3 b)
+{
+    return ref_v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+
 double ref_unit(ref_vec3 v, ref_vec3 *out)
 {
     double len = sqrt(ref_dot(v, v));

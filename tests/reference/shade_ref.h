@@ -43,6 +43,11 @@ typedef struct ref_material {
 } ref_material;
 
 double ref_dot(ref_vec3 a, ref_vec3 b);
+ref_vec3 ref_v3(double x, double y, double z);
+ref_vec3 ref_add(ref_vec3 a, ref_vec3 b);
+ref_vec3 ref_sub(ref_vec3 a, ref_vec3 b);
+ref_vec3 ref_scale(ref_vec3 a, double s);
+ref_vec3 ref_cross(ref_vec3 a, ref_vec3 b);
 /* v/|v| into *out; returns |v| (0 and *out = 0 for the zero vector). */
 double ref_unit(ref_vec3 v, ref_vec3 *out);
 

@@ -29,15 +29,6 @@ static double from_fix(stp_fix v)
     return (double)v / (double)STP_FIX_ONE;
 }
 
-static ref_vec3 v3(double x, double y, double z)
-{
-    ref_vec3 r;
-    r.x = x;
-    r.y = y;
-    r.z = z;
-    return r;
-}
-
 static ref_vec3 unit(ref_vec3 v)
 {
     ref_vec3 u;
@@ -47,7 +38,7 @@ static ref_vec3 unit(ref_vec3 v)
 
 static ref_vec3 add_scaled(ref_vec3 a, ref_vec3 d, double s)
 {
-    return v3(a.x + d.x * s, a.y + d.y * s, a.z + d.z * s);
+    return ref_v3(a.x + d.x * s, a.y + d.y * s, a.z + d.z * s);
 }
 
 /* Rotation about x by 30 degrees, then about y by 20: puts a polygon off
@@ -55,8 +46,8 @@ static ref_vec3 add_scaled(ref_vec3 a, ref_vec3 d, double s)
 static ref_vec3 tilt(ref_vec3 p)
 {
     double ax = 30 * PI / 180, ay = 20 * PI / 180;
-    ref_vec3 q = v3(p.x, p.y * cos(ax) - p.z * sin(ax), p.y * sin(ax) + p.z * cos(ax));
-    return v3(q.x * cos(ay) + q.z * sin(ay), q.y, -q.x * sin(ay) + q.z * cos(ay));
+    ref_vec3 q = ref_v3(p.x, p.y * cos(ax) - p.z * sin(ax), p.y * sin(ax) + p.z * cos(ax));
+    return ref_v3(q.x * cos(ay) + q.z * sin(ay), q.y, -q.x * sin(ay) + q.z * cos(ay));
 }
 
 /* ---- building the table ---- */
@@ -99,11 +90,11 @@ static void light_dir(stiff_case *c, int j, ref_vec3 dir, double dist)
 static stiff_case *shade_case(const char *name, const char *behaviour)
 {
     stiff_case *c = new_case(name, behaviour, STIFF_SHADE);
-    c->point = v3(0, 0, 4);
-    c->eye = v3(0, 0, 0);
-    c->normal = v3(0, 0, -1);
-    c->pdir = v3(0, 0, -1);
-    light_dir(c, 0, v3(-1, 1, -1), 3);
+    c->point = ref_v3(0, 0, 4);
+    c->eye = ref_v3(0, 0, 0);
+    c->normal = ref_v3(0, 0, -1);
+    c->pdir = ref_v3(0, 0, -1);
+    light_dir(c, 0, ref_v3(-1, 1, -1), 3);
     return c;
 }
 
@@ -112,10 +103,10 @@ static stiff_case *shade_case(const char *name, const char *behaviour)
 static stiff_case *polygon_case(const char *name, const char *behaviour)
 {
     stiff_case *c = new_case(name, behaviour, STIFF_POLYGON);
-    ref_vec3 l = v3(-2, 3, -6);
-    c->view.from = v3(0, 0, -4);
-    c->view.at = v3(0, 0, 0);
-    c->view.up = v3(0, 1, 0);
+    ref_vec3 l = ref_v3(-2, 3, -6);
+    c->view.from = ref_v3(0, 0, -4);
+    c->view.at = ref_v3(0, 0, 0);
+    c->view.up = ref_v3(0, 1, 0);
     c->view.fov_degrees = 60;
     c->view.window_half = 2;
     c->view.hither = 1.0 / 64;
@@ -142,7 +133,7 @@ static void triangle(stiff_case *c, ref_vec3 a, ref_vec3 b, ref_vec3 d)
 /* Normal with N.E = ne for E = (0, 0, -1), tipped towards +x. */
 static ref_vec3 normal_with_ne(double ne)
 {
-    return v3(sqrt(1 - ne * ne), 0, -ne);
+    return ref_v3(sqrt(1 - ne * ne), 0, -ne);
 }
 
 static void build_shade_cases(void)
@@ -165,7 +156,7 @@ static void build_shade_cases(void)
         c = shade_case(light_names[i],
                        "finite: the diffuse term and G (~ N.L) vanish with N.L; a light whose "
                        "N.L rounds to <= 0 counts for nothing, which is within N.L of the truth");
-        light_dir(c, 0, v3(sqrt(1 - d * d), 0, -d), 3);
+        light_dir(c, 0, ref_v3(sqrt(1 - d * d), 0, -d), 3);
     }
     for (i = 0; i < 3; i++) {
         double e = grazing[i];
@@ -193,8 +184,8 @@ static void build_shade_cases(void)
         c = shade_case(corner_names[i],
                        "saturated: L almost opposite E with both grazing makes D G F/(E.N) ~ "
                        "1/(N.E) explode; the quotient saturates and the shade is capped at 1");
-        c->normal = v3(cos(e), 0, -sin(e));
-        light_dir(c, 0, v3(sin(2 * e), 0, cos(2 * e)), 3);
+        c->normal = ref_v3(cos(e), 0, -sin(e));
+        light_dir(c, 0, ref_v3(sin(2 * e), 0, cos(2 * e)), 3);
         if (e < 1e-5) {
             c->tol = 1;
             c->reason = "N.E = N.L = 1e-6 are below the step 2^-16: after rounding the light is "
@@ -206,28 +197,28 @@ static void build_shade_cases(void)
     c = shade_case("opposite_L_plus_E_zero",
                    "documented: L = -E gives N.L = -N.E, so a face seen by the eye is not lit "
                    "by that light: ambient share B R only (H undefined is never needed)");
-    c->lighting.lights[0].position = v3(0, 0, 8);
+    c->lighting.lights[0].position = ref_v3(0, 0, 8);
     c->expect = 0.2 * 0.8;
     c = shade_case("opposite_L_plus_E_zero_edge_on",
                    "documented: L = -E with N perpendicular to both: N.E = N.L = 0, ambient only");
-    c->lighting.lights[0].position = v3(0, 0, 8);
-    c->normal = v3(1, 0, 0);
+    c->lighting.lights[0].position = ref_v3(0, 0, 8);
+    c->normal = ref_v3(1, 0, 0);
     c->expect = 0.2 * 0.8;
 
     c = shade_case("refraction_n_1", "finite: n = 1 gives g = c and F = 0: no highlight");
     c->material.refraction = 1;
-    light_dir(c, 0, v3(0.3, 0.2, -1), 3);
+    light_dir(c, 0, ref_v3(0.3, 0.2, -1), 3);
     c = shade_case("refraction_n_1_plus", "finite: n -> 1+ gives F -> 0 continuously");
     c->material.refraction = 1.0001;
-    light_dir(c, 0, v3(0.3, 0.2, -1), 3);
+    light_dir(c, 0, ref_v3(0.3, 0.2, -1), 3);
     c = shade_case("refraction_n_below_1_real",
                    "finite: n = 0.5 with n^2 + c^2 - 1 > 0: Fresnel as written");
     c->material.refraction = 0.5;
-    light_dir(c, 0, v3(0.3, 0.2, -1), 3);
+    light_dir(c, 0, ref_v3(0.3, 0.2, -1), 3);
     c = shade_case("refraction_n_below_1_total",
                    "documented: n = 0.5 with n^2 + c^2 < 1, g imaginary: total reflection, F = 1");
     c->material.refraction = 0.5;
-    light_dir(c, 0, v3(sin(80 * PI / 180), 0, -cos(80 * PI / 180)), 3);
+    light_dir(c, 0, ref_v3(sin(80 * PI / 180), 0, -cos(80 * PI / 180)), 3);
     c = shade_case("refraction_n_0",
                    "documented: n <= 0 is taken as the smallest step: g imaginary, F = 1");
     c->material.refraction = 0;
@@ -239,15 +230,15 @@ static void build_shade_cases(void)
     c = shade_case("gloss_k_1e-6_on_highlight",
                    "finite: k below the step is taken as 2^-F; on the highlight (H = N) D = 1");
     c->material.gloss = 1e-6;
-    c->lighting.lights[0].position = v3(0, 0, 1);
+    c->lighting.lights[0].position = ref_v3(0, 0, 1);
     c->lighting.lights[0].power = 0.5 * (1 + 3);
     c = shade_case("gloss_k_1e-6_off_highlight",
                    "finite: k -> 0 makes D a spike; off it D ~ (k/(1 - N.H))^2 -> 0");
     c->material.gloss = 1e-6;
-    light_dir(c, 0, v3(sin(PI / 180), 0, -cos(PI / 180)), 3);
+    light_dir(c, 0, ref_v3(sin(PI / 180), 0, -cos(PI / 180)), 3);
     c = shade_case("gloss_k_1e-4_near_highlight", "finite: sharp highlight 1 degree off");
     c->material.gloss = 1e-4;
-    light_dir(c, 0, v3(sin(PI / 180), 0, -cos(PI / 180)), 3);
+    light_dir(c, 0, ref_v3(sin(PI / 180), 0, -cos(PI / 180)), 3);
     c = shade_case("gloss_k_0", "finite: k = 0 is taken as 2^-F (D = 0 off the highlight)");
     c->material.gloss = 0;
     c = shade_case("gloss_k_1e4", "finite: k huge, D -> 1 everywhere");
@@ -270,16 +261,16 @@ static void build_shade_cases(void)
     c = shade_case("light_far_U_30000",
                    "finite: 1/(C + U) ~ 3e-5 does not underflow (P term/(C + U) is one 64-bit "
                    "quotient): almost only the ambient share");
-    c->lighting.lights[0].position = add_scaled(c->point, unit(v3(-1, 1, -1)), 30000);
+    c->lighting.lights[0].position = add_scaled(c->point, unit(ref_v3(-1, 1, -1)), 30000);
     c->lighting.lights[0].power = 1;
     c = shade_case("light_far_U_30000_powered", "finite: a far light with P = 0.5 (C + U)");
-    light_dir(c, 0, v3(-1, 1, -1), 30000);
+    light_dir(c, 0, ref_v3(-1, 1, -1), 30000);
     c = shade_case("light_difference_beyond_range",
                    "finite: light - point exceeds the stp_fix range (both near opposite ends): "
                    "the difference and U are formed in 64 bits, direction and distance kept");
-    c->point = v3(-30000, 0, 4);
-    c->normal = unit(v3(1, 0.5, -0.2));
-    c->lighting.lights[0].position = v3(30000, 10000, 0);
+    c->point = ref_v3(-30000, 0, 4);
+    c->normal = unit(ref_v3(1, 0.5, -0.2));
+    c->lighting.lights[0].position = ref_v3(30000, 10000, 0);
     c->lighting.lights[0].power = 30000; /* about 0.5 (C + U) */
 
     c = shade_case("brightness_1000", "clamped: BRIGHT >> 1 saturates the shade at 1");
@@ -288,7 +279,7 @@ static void build_shade_cases(void)
     c = shade_case("brightness_30000_ambient_only",
                    "clamped: BRIGHT B R saturates in stp_fix and is capped at 1");
     c->lighting.brightness = 30000;
-    c->lighting.lights[0].position = v3(0, 0, 8);
+    c->lighting.lights[0].position = ref_v3(0, 0, 8);
     c->expect = 1;
     c = shade_case("brightness_0", "documented: BRIGHT = 0 gives 0");
     c->lighting.brightness = 0;
@@ -305,13 +296,13 @@ static void build_shade_cases(void)
 
     c = shade_case("reflectivity_0", "finite: R = 0 leaves the highlight only");
     c->material.reflectivity = 0;
-    light_dir(c, 0, v3(0.1, 0.1, -1), 3);
+    light_dir(c, 0, ref_v3(0.1, 0.1, -1), 3);
     c = shade_case("specular_off", "finite: Ks = 0 switches the highlight off");
     c->material.specular = 0;
     c = shade_case("parallel_projection", "finite: E is the given direction for every point");
     c->parallel = 1;
-    c->pdir = unit(v3(0.2, 0.1, -1));
-    c->eye = v3(100, 100, 100); /* ignored */
+    c->pdir = unit(ref_v3(0.2, 0.1, -1));
+    c->eye = ref_v3(100, 100, 100); /* ignored */
     c = shade_case("eye_at_point",
                    "documented: eye - point = 0 has no direction: N.E = 0, ambient only");
     c->eye = c->point;
@@ -319,19 +310,19 @@ static void build_shade_cases(void)
     c = shade_case("four_lights_sum_above_1", "clamped: the lights' sum above 1 is capped");
     c->lighting.count = 4;
     for (i = 0; i < 4; i++)
-        light_dir(c, i, v3(i - 1.5, 1, -1), 3);
+        light_dir(c, i, ref_v3(i - 1.5, 1, -1), 3);
     c->expect = 1;
     c = shade_case("point_near_range",
                    "finite: point and light near the top of Q16.16, differences small");
-    c->point = v3(0, 0, 32000);
-    c->eye = v3(0, 0, 31990);
-    light_dir(c, 0, v3(-1, 1, -1), 500);
+    c->point = ref_v3(0, 0, 32000);
+    c->eye = ref_v3(0, 0, 31990);
+    light_dir(c, 0, ref_v3(-1, 1, -1), 500);
 }
 
 static void build_polygon_cases(void)
 {
     stiff_case *c;
-    ref_vec3 a = tilt(v3(-1, -1, 0)), b = tilt(v3(1, -1, 0)), d = tilt(v3(0, 1, 0));
+    ref_vec3 a = tilt(ref_v3(-1, -1, 0)), b = tilt(ref_v3(1, -1, 0)), d = tilt(ref_v3(0, 1, 0));
     int i;
 
     c = polygon_case("polygon_baseline", "finite: a tilted triangle before the eye");
@@ -351,7 +342,7 @@ static void build_polygon_cases(void)
 
     c = polygon_case("polygon_collinear",
                      "reported: collinear vertices have no normal: STP_ERR_DEGENERATE");
-    triangle(c, v3(-1, -1, 0), v3(0, 0, 0), v3(1, 1, 0));
+    triangle(c, ref_v3(-1, -1, 0), ref_v3(0, 0, 0), ref_v3(1, 1, 0));
     c->expect_status = STP_ERR_DEGENERATE;
 
     c = polygon_case("polygon_collinear_tilted",
@@ -359,16 +350,16 @@ static void build_polygon_cases(void)
                      "may leave a sliver of a few steps' area, which it then shades with the "
                      "normal the rounding gives it (it covers no pixel), else "
                      "STP_ERR_DEGENERATE; the reference calls it degenerate (no comparison)");
-    triangle(c, a, v3((a.x + b.x) / 2, (a.y + b.y) / 2, (a.z + b.z) / 2), b);
+    triangle(c, a, ref_v3((a.x + b.x) / 2, (a.y + b.y) / 2, (a.z + b.z) / 2), b);
     c->or_degenerate = 1;
 
     c = polygon_case("polygon_zero_area_figure8",
                      "reported: a bow-tie whose two loops cancel has a zero Newell normal: "
                      "STP_ERR_DEGENERATE");
-    vertex(c, v3(-1, -1, 0));
-    vertex(c, v3(1, 1, 0));
-    vertex(c, v3(1, -1, 0));
-    vertex(c, v3(-1, 1, 0));
+    vertex(c, ref_v3(-1, -1, 0));
+    vertex(c, ref_v3(1, 1, 0));
+    vertex(c, ref_v3(1, -1, 0));
+    vertex(c, ref_v3(-1, 1, 0));
     c->expect_status = STP_ERR_DEGENERATE;
 
     c = polygon_case("polygon_0_vertices", "reported: STP_ERR_DEGENERATE");
@@ -383,21 +374,21 @@ static void build_polygon_cases(void)
 
     c = polygon_case("polygon_nonplanar_0.1",
                      "finite: Newell's normal is the best-fit plane's; shaded at the average");
-    vertex(c, tilt(v3(-1, -1, 0)));
-    vertex(c, tilt(v3(1, -1, 0)));
-    vertex(c, tilt(v3(1, 1, 0.1)));
-    vertex(c, tilt(v3(-1, 1, 0)));
+    vertex(c, tilt(ref_v3(-1, -1, 0)));
+    vertex(c, tilt(ref_v3(1, -1, 0)));
+    vertex(c, tilt(ref_v3(1, 1, 0.1)));
+    vertex(c, tilt(ref_v3(-1, 1, 0)));
     c = polygon_case("polygon_nonplanar_1", "finite: strongly twisted quad, best-fit normal");
-    vertex(c, tilt(v3(-1, -1, 0)));
-    vertex(c, tilt(v3(1, -1, 0)));
-    vertex(c, tilt(v3(1, 1, 1)));
-    vertex(c, tilt(v3(-1, 1, 0)));
+    vertex(c, tilt(ref_v3(-1, -1, 0)));
+    vertex(c, tilt(ref_v3(1, -1, 0)));
+    vertex(c, tilt(ref_v3(1, 1, 1)));
+    vertex(c, tilt(ref_v3(-1, 1, 0)));
 
     c = polygon_case("polygon_many_sided_max",
                      "finite: STP_MAX_POLYGON_VERTICES vertices on a circle");
     for (i = 0; i < STP_MAX_POLYGON_VERTICES && i < STIFF_MAX_VERTS; i++) {
         double t = 2 * PI * i / STP_MAX_POLYGON_VERTICES;
-        vertex(c, tilt(v3(cos(t), sin(t), 0)));
+        vertex(c, tilt(ref_v3(cos(t), sin(t), 0)));
     }
     if (STP_MAX_POLYGON_VERTICES + 1 <= STIFF_MAX_VERTS) {
         c = polygon_case("polygon_too_many_sided",
@@ -405,87 +396,87 @@ static void build_polygon_cases(void)
                          "STP_ERR_TOO_MANY_VERTICES");
         for (i = 0; i <= STP_MAX_POLYGON_VERTICES; i++) {
             double t = 2 * PI * i / (STP_MAX_POLYGON_VERTICES + 1);
-            vertex(c, tilt(v3(cos(t), sin(t), 0)));
+            vertex(c, tilt(ref_v3(cos(t), sin(t), 0)));
         }
         c->expect_status = STP_ERR_TOO_MANY_VERTICES;
     }
 
     c = polygon_case("polygon_sliver_1e-2", "finite: a thin triangle (width 1e-2 over length 2)");
-    triangle(c, tilt(v3(-1, 0, 0)), tilt(v3(1, 0, 0)), tilt(v3(0, 1e-2, 0)));
+    triangle(c, tilt(ref_v3(-1, 0, 0)), tilt(ref_v3(1, 0, 0)), tilt(ref_v3(0, 1e-2, 0)));
     c = polygon_case("polygon_sliver_1e-3", "finite: a thin triangle (width 1e-3 over length 2)");
-    triangle(c, tilt(v3(-1, 0, 0)), tilt(v3(1, 0, 0)), tilt(v3(0, 1e-3, 0)));
+    triangle(c, tilt(ref_v3(-1, 0, 0)), tilt(ref_v3(1, 0, 0)), tilt(ref_v3(0, 1e-3, 0)));
     c = polygon_case("polygon_sliver_1e-4",
                      "finite: width 1e-4 = 6.5 steps of Q16.16: the normal is defined by a few "
                      "bits of the rounded vertices");
-    triangle(c, tilt(v3(-1, 0, 0)), tilt(v3(1, 0, 0)), tilt(v3(0, 1e-4, 0)));
+    triangle(c, tilt(ref_v3(-1, 0, 0)), tilt(ref_v3(1, 0, 0)), tilt(ref_v3(0, 1e-4, 0)));
 
     c = polygon_case("polygon_tiny_1e-2", "finite: a triangle 1e-2 across");
-    triangle(c, tilt(v3(-1e-2, -1e-2, 0)), tilt(v3(1e-2, -1e-2, 0)), tilt(v3(0, 1e-2, 0)));
+    triangle(c, tilt(ref_v3(-1e-2, -1e-2, 0)), tilt(ref_v3(1e-2, -1e-2, 0)), tilt(ref_v3(0, 1e-2, 0)));
     c = polygon_case("polygon_tiny_1e-3", "finite: a triangle 1e-3 across (65 steps)");
-    triangle(c, tilt(v3(-1e-3, -1e-3, 0)), tilt(v3(1e-3, -1e-3, 0)), tilt(v3(0, 1e-3, 0)));
+    triangle(c, tilt(ref_v3(-1e-3, -1e-3, 0)), tilt(ref_v3(1e-3, -1e-3, 0)), tilt(ref_v3(0, 1e-3, 0)));
     c = polygon_case("polygon_tiny_1e-4",
                      "finite: a triangle 1e-4 across (6.5 steps): its normal is what the "
                      "rounded vertices say");
-    triangle(c, tilt(v3(-1e-4, -1e-4, 0)), tilt(v3(1e-4, -1e-4, 0)), tilt(v3(0, 1e-4, 0)));
+    triangle(c, tilt(ref_v3(-1e-4, -1e-4, 0)), tilt(ref_v3(1e-4, -1e-4, 0)), tilt(ref_v3(0, 1e-4, 0)));
     c = polygon_case("polygon_below_step",
                      "reported: all vertices round to one point: STP_ERR_DEGENERATE (the "
                      "reference, unrounded, still has a normal)");
-    triangle(c, tilt(v3(-1e-7, -1e-7, 0)), tilt(v3(1e-7, -1e-7, 0)), tilt(v3(0, 1e-7, 0)));
+    triangle(c, tilt(ref_v3(-1e-7, -1e-7, 0)), tilt(ref_v3(1e-7, -1e-7, 0)), tilt(ref_v3(0, 1e-7, 0)));
     c->expect_status = STP_ERR_DEGENERATE;
 
     c = polygon_case("polygon_far_corner_of_range",
                      "finite: world coordinates near 30000, seen from near by; view differences "
                      "are formed in 64 bits");
-    c->view.from = v3(29000, 29000, 25000);
-    c->view.at = v3(30000, 30000, 30000);
-    c->lighting.lights[0].position = v3(28000, 31000, 24000);
+    c->view.from = ref_v3(29000, 29000, 25000);
+    c->view.at = ref_v3(30000, 30000, 30000);
+    c->lighting.lights[0].position = ref_v3(28000, 31000, 24000);
     c->lighting.lights[0].power = 0.8 * (1 + 6000);
     for (i = 0; i < 3; i++) {
         ref_vec3 p = i == 0 ? a : (i == 1 ? b : d);
-        vertex(c, v3(30000 + 400 * p.x, 30000 + 400 * p.y, 30000 + 400 * p.z));
+        vertex(c, ref_v3(30000 + 400 * p.x, 30000 + 400 * p.y, 30000 + 400 * p.z));
     }
     c = polygon_case("polygon_span_of_range",
                      "finite: a triangle spanning -30000..30000, axis-aligned view");
-    triangle(c, v3(-30000, -30000, 100), v3(30000, -30000, 100), v3(0, 30000, 300));
+    triangle(c, ref_v3(-30000, -30000, 100), ref_v3(30000, -30000, 100), ref_v3(0, 30000, 300));
     c = polygon_case("polygon_span_rotated_view",
                      "clamped: seen obliquely its view coordinates exceed the range and "
                      "saturate; the shade stays finite");
-    c->view.at = v3(1, 0.5, -3);
-    triangle(c, v3(-30000, -30000, 100), v3(30000, -30000, 100), v3(0, 30000, 300));
+    c->view.at = ref_v3(1, 0.5, -3);
+    triangle(c, ref_v3(-30000, -30000, 100), ref_v3(30000, -30000, 100), ref_v3(0, 30000, 300));
     c = polygon_case("polygon_input_beyond_range",
                      "clamped: world coordinates beyond the range saturate on input");
-    triangle(c, v3(-1e5, -1e5, 50), v3(1e5, -1e5, 50), v3(0, 1e5, 60));
+    triangle(c, ref_v3(-1e5, -1e5, 50), ref_v3(1e5, -1e5, 50), ref_v3(0, 1e5, 60));
 
     c = polygon_case("polygon_behind_eye",
                      "finite: shaded (centre behind the eye, E = unit(-centre)), wholly clipped: "
                      "nothing entered, STP_OK");
-    triangle(c, v3(-1, -1, -8), v3(1, -1, -8), v3(0, 1, -9));
+    triangle(c, ref_v3(-1, -1, -8), ref_v3(1, -1, -8), ref_v3(0, 1, -9));
     c = polygon_case("polygon_partly_behind_eye",
                      "finite: clipped at the hither plane, shaded at the unclipped average");
-    triangle(c, v3(-1, -1, -6), v3(1, -1, 0), v3(0, 1, 1));
+    triangle(c, ref_v3(-1, -1, -6), ref_v3(1, -1, 0), ref_v3(0, 1, 1));
     c = polygon_case("polygon_on_hither_plane",
                      "finite: a square exactly in the hither plane is kept (z >= hither)");
-    vertex(c, v3(-0.01, -0.01, -4 + 1.0 / 64));
-    vertex(c, v3(0.01, -0.01, -4 + 1.0 / 64));
-    vertex(c, v3(0.01, 0.01, -4 + 1.0 / 64));
-    vertex(c, v3(-0.01, 0.01, -4 + 1.0 / 64));
+    vertex(c, ref_v3(-0.01, -0.01, -4 + 1.0 / 64));
+    vertex(c, ref_v3(0.01, -0.01, -4 + 1.0 / 64));
+    vertex(c, ref_v3(0.01, 0.01, -4 + 1.0 / 64));
+    vertex(c, ref_v3(-0.01, 0.01, -4 + 1.0 / 64));
     c = polygon_case("polygon_vertex_at_eye",
                      "documented: a vertex at the eye puts the plane through the eye: edge-on, "
                      "N.E = 0, ambient share only (and no pixel)");
-    triangle(c, v3(0, 0, -4), v3(1, -1, 0), v3(-1, -1, 1));
+    triangle(c, ref_v3(0, 0, -4), ref_v3(1, -1, 0), ref_v3(-1, -1, 1));
     c->expect = 0.2 * 0.8;
     c = polygon_case("polygon_vertex_just_behind_eye",
                      "finite: a vertex just behind the eye is clipped away at the hither plane");
-    triangle(c, v3(0.1, 0.2, -4.5), v3(1, -1, 0), v3(-1, -1, 1));
+    triangle(c, ref_v3(0.1, 0.2, -4.5), ref_v3(1, -1, 0), ref_v3(-1, -1, 1));
     c = polygon_case("polygon_centre_at_eye",
                      "finite: vertex average at the eye: E is taken as the line of sight");
-    vertex(c, v3(-1, -1, -4));
-    vertex(c, v3(1, -1, -4));
-    vertex(c, v3(1, 1, -4));
-    vertex(c, v3(-1, 1, -4));
+    vertex(c, ref_v3(-1, -1, -4));
+    vertex(c, ref_v3(1, -1, -4));
+    vertex(c, ref_v3(1, 1, -4));
+    vertex(c, ref_v3(-1, 1, -4));
     c = polygon_case("polygon_edge_on",
                      "documented: a plane through the eye has N.E = 0: ambient share only");
-    triangle(c, v3(0, -1, 0), v3(0, 1, 0), v3(0, 0, 1));
+    triangle(c, ref_v3(0, -1, 0), ref_v3(0, 1, 0), ref_v3(0, 0, 1));
 }
 
 static void build(void)
@@ -522,7 +513,7 @@ static stp_vec3 fix3(ref_vec3 v)
 
 static ref_vec3 unfix3(stp_vec3 v)
 {
-    return v3(from_fix(v.x), from_fix(v.y), from_fix(v.z));
+    return ref_v3(from_fix(v.x), from_fix(v.y), from_fix(v.z));
 }
 
 static void core_lighting(const ref_lighting *in, stp_lighting *out)

@@ -57,19 +57,10 @@ static double rng_uniform(double lo, double hi)
     return lo + (hi - lo) * (double)(rng_next() >> 11) / 9007199254740992.0;
 }
 
-static ref_vec3 v3(double x, double y, double z)
-{
-    ref_vec3 r;
-    r.x = x;
-    r.y = y;
-    r.z = z;
-    return r;
-}
-
 static ref_vec3 rng_direction(void)
 {
     for (;;) {
-        ref_vec3 v = v3(rng_uniform(-1, 1), rng_uniform(-1, 1), rng_uniform(-1, 1)), u;
+        ref_vec3 v = ref_v3(rng_uniform(-1, 1), rng_uniform(-1, 1), rng_uniform(-1, 1)), u;
         double len = ref_unit(v, &u);
         if (len > 0.1 && len <= 1)
             return u;
@@ -92,7 +83,7 @@ static stp_vec3 fix3(ref_vec3 v)
 
 static ref_vec3 unfix3(stp_vec3 v)
 {
-    return v3(from_fix(v.x), from_fix(v.y), from_fix(v.z));
+    return ref_v3(from_fix(v.x), from_fix(v.y), from_fix(v.z));
 }
 
 /* ---- the cases ---- */
@@ -179,22 +170,22 @@ static void random_input(shade_input *in)
     in->material.refraction = rng_uniform(1.05, 20);
     in->material.gloss = exp(rng_uniform(log(0.02), log(20)));
     in->material.specular = rng_uniform(0, 1);
-    in->point = v3(rng_uniform(-5, 5), rng_uniform(-5, 5), rng_uniform(1, 20));
-    in->eye = v3(0, 0, 0);
+    in->point = ref_v3(rng_uniform(-5, 5), rng_uniform(-5, 5), rng_uniform(1, 20));
+    in->eye = ref_v3(0, 0, 0);
     in->parallel = (rng_next() % 8) == 0;
-    in->pdir = v3(0, 0, -1);
+    in->pdir = ref_v3(0, 0, -1);
     if (in->parallel)
         e = in->pdir;
     else
-        (void)ref_unit(v3(-in->point.x, -in->point.y, -in->point.z), &e);
+        (void)ref_unit(ref_v3(-in->point.x, -in->point.y, -in->point.z), &e);
     in->normal = rng_direction();
     if (ref_dot(in->normal, e) < 0)
-        in->normal = v3(-in->normal.x, -in->normal.y, -in->normal.z);
+        in->normal = ref_v3(-in->normal.x, -in->normal.y, -in->normal.z);
     for (j = 0; j < in->lighting.count; j++) {
         ref_vec3 d = rng_direction();
         double u = rng_uniform(0.5, 30);
         in->lighting.lights[j].position =
-            v3(in->point.x + d.x * u, in->point.y + d.y * u, in->point.z + d.z * u);
+            ref_v3(in->point.x + d.x * u, in->point.y + d.y * u, in->point.z + d.z * u);
         in->lighting.lights[j].power =
             (1 - in->lighting.background) * (in->lighting.c + u) / sqrt((double)in->lighting.count);
     }
@@ -251,12 +242,12 @@ static double min_cosine(const shade_input *in)
     if (in->parallel)
         e = in->pdir;
     else
-        (void)ref_unit(v3(in->eye.x - in->point.x, in->eye.y - in->point.y, in->eye.z - in->point.z), &e);
+        (void)ref_unit(ref_v3(in->eye.x - in->point.x, in->eye.y - in->point.y, in->eye.z - in->point.z), &e);
     m = ref_dot(in->normal, e);
     for (j = 0; j < in->lighting.count; j++) {
         ref_vec3 p = in->lighting.lights[j].position;
         double nl;
-        (void)ref_unit(v3(p.x - in->point.x, p.y - in->point.y, p.z - in->point.z), &l);
+        (void)ref_unit(ref_v3(p.x - in->point.x, p.y - in->point.y, p.z - in->point.z), &l);
         nl = fabs(ref_dot(in->normal, l));
         if (nl < m)
             m = nl;
@@ -324,10 +315,10 @@ static void test_property_specular_terms(void **state)
         stp_specular_terms t;
         stp_fix fnh, fne, fnl, feh, fk, fnr;
         if (ref_dot(n, e) < 0)
-            e = v3(-e.x, -e.y, -e.z);
+            e = ref_v3(-e.x, -e.y, -e.z);
         if (ref_dot(n, l) < 0)
-            l = v3(-l.x, -l.y, -l.z);
-        if (ref_unit(v3(l.x + e.x, l.y + e.y, l.z + e.z), &h) == 0)
+            l = ref_v3(-l.x, -l.y, -l.z);
+        if (ref_unit(ref_v3(l.x + e.x, l.y + e.y, l.z + e.z), &h) == 0)
             continue;
         fnh = stiff_to_fix(ref_dot(n, h));
         fne = stiff_to_fix(ref_dot(n, e));
@@ -415,8 +406,8 @@ static void test_property_wild_inputs(void **state)
             n.x = (stp_fix)(rng_next() % 3) - 1;
             n.y = stiff_to_fix(rng_uniform(-3, 3));
         }
-        p = fix3(v3(rng_uniform(-1, 1) * scale, rng_uniform(-1, 1) * scale, rng_uniform(-1, 1) * scale));
-        e = fix3(v3(rng_uniform(-1, 1) * scale, rng_uniform(-1, 1) * scale, rng_uniform(-1, 1) * scale));
+        p = fix3(ref_v3(rng_uniform(-1, 1) * scale, rng_uniform(-1, 1) * scale, rng_uniform(-1, 1) * scale));
+        e = fix3(ref_v3(rng_uniform(-1, 1) * scale, rng_uniform(-1, 1) * scale, rng_uniform(-1, 1) * scale));
         if (rng_next() % 8 == 0)
             e = p;
         if (rng_next() % 8 == 0) {
@@ -548,8 +539,8 @@ static void test_pictures_of_clipped_polygons(void **state)
     (void)state;
     memset(pcs, 0, sizeof pcs);
     for (i = 0; i < 6; i++) {
-        pcs[i].view.from = v3(0, 0, -4);
-        pcs[i].view.up = v3(0, 1, 0);
+        pcs[i].view.from = ref_v3(0, 0, -4);
+        pcs[i].view.up = ref_v3(0, 1, 0);
         pcs[i].view.fov_degrees = 60;
         pcs[i].view.hither = 1.0 / 64;
         pcs[i].view.window_half = 2;
@@ -557,38 +548,38 @@ static void test_pictures_of_clipped_polygons(void **state)
     }
     pcs[0].name = "partly behind the eye";
     pcs[0].n = 3;
-    pcs[0].v[0] = v3(-1, -1, -6);
-    pcs[0].v[1] = v3(1, -1, 0);
-    pcs[0].v[2] = v3(0, 1, 1);
+    pcs[0].v[0] = ref_v3(-1, -1, -6);
+    pcs[0].v[1] = ref_v3(1, -1, 0);
+    pcs[0].v[2] = ref_v3(0, 1, 1);
     pcs[1].name = "floor through the eye's feet to behind it";
     pcs[1].n = 4;
-    pcs[1].v[0] = v3(-3, -1, -10);
-    pcs[1].v[1] = v3(3, -1, -10);
-    pcs[1].v[2] = v3(3, -1, 10);
-    pcs[1].v[3] = v3(-3, -1, 10);
+    pcs[1].v[0] = ref_v3(-3, -1, -10);
+    pcs[1].v[1] = ref_v3(3, -1, -10);
+    pcs[1].v[2] = ref_v3(3, -1, 10);
+    pcs[1].v[3] = ref_v3(-3, -1, 10);
     pcs[2].name = "square in the hither plane";
     pcs[2].n = 4;
-    pcs[2].v[0] = v3(-0.005, -0.004, -4 + 1.0 / 64);
-    pcs[2].v[1] = v3(0.005, -0.004, -4 + 1.0 / 64);
-    pcs[2].v[2] = v3(0.005, 0.003, -4 + 1.0 / 64);
-    pcs[2].v[3] = v3(-0.005, 0.003, -4 + 1.0 / 64);
+    pcs[2].v[0] = ref_v3(-0.005, -0.004, -4 + 1.0 / 64);
+    pcs[2].v[1] = ref_v3(0.005, -0.004, -4 + 1.0 / 64);
+    pcs[2].v[2] = ref_v3(0.005, 0.003, -4 + 1.0 / 64);
+    pcs[2].v[3] = ref_v3(-0.005, 0.003, -4 + 1.0 / 64);
     pcs[3].name = "wider than the window";
     pcs[3].n = 3;
-    pcs[3].v[0] = v3(-50, -3, 2);
-    pcs[3].v[1] = v3(40, -2, 1);
-    pcs[3].v[2] = v3(0.3, 30, 0.5);
+    pcs[3].v[0] = ref_v3(-50, -3, 2);
+    pcs[3].v[1] = ref_v3(40, -2, 1);
+    pcs[3].v[2] = ref_v3(0.3, 30, 0.5);
     pcs[4].name = "vertex just behind the eye";
     pcs[4].n = 3;
-    pcs[4].v[0] = v3(0.1, 0.2, -4.5);
-    pcs[4].v[1] = v3(1, -1, 0);
-    pcs[4].v[2] = v3(-1, -0.5, 1);
+    pcs[4].v[0] = ref_v3(0.1, 0.2, -4.5);
+    pcs[4].v[1] = ref_v3(1, -1, 0);
+    pcs[4].v[2] = ref_v3(-1, -0.5, 1);
     pcs[5].name = "parallel view, tilted";
     pcs[5].view.perspective = 0;
     pcs[5].n = 4;
-    pcs[5].v[0] = v3(-1.3, -0.9, 0);
-    pcs[5].v[1] = v3(1.1, -1.2, 0.5);
-    pcs[5].v[2] = v3(1.4, 1.0, 1);
-    pcs[5].v[3] = v3(-0.8, 1.3, 0.2);
+    pcs[5].v[0] = ref_v3(-1.3, -0.9, 0);
+    pcs[5].v[1] = ref_v3(1.1, -1.2, 0.5);
+    pcs[5].v[2] = ref_v3(1.4, 1.0, 1);
+    pcs[5].v[3] = ref_v3(-0.8, 1.3, 0.2);
     for (i = 0; i < 6; i++) {
         double perimeter;
         int covered, diff = compare_coverage(&pcs[i], &perimeter, &covered);
@@ -625,15 +616,15 @@ static void test_fill_rule_ties_exact(void **state)
         int covered, diff, i;
         memset(&pc, 0, sizeof pc);
         pc.name = "fill rule";
-        pc.view.from = v3(0, 0, -4);
-        pc.view.up = v3(0, 1, 0);
+        pc.view.from = ref_v3(0, 0, -4);
+        pc.view.up = ref_v3(0, 1, 0);
         pc.view.hither = 1.0 / 64;
         pc.view.window_half = 1.5; /* 48 / 2 / 1.5 = 16 pixels per unit */
         pc.view.perspective = 0;
         for (i = 0; i < 5 && shapes[k][i][0] >= 0; i++) {
             /* view x is world -x here (x right in a left-handed view of a
              * right-handed world seen along +z) */
-            pc.v[i] = v3(-(shapes[k][i][0] - PW / 2.0) / 16, (PH / 2.0 - shapes[k][i][1]) / 16, 0);
+            pc.v[i] = ref_v3(-(shapes[k][i][0] - PW / 2.0) / 16, (PH / 2.0 - shapes[k][i][1]) / 16, 0);
             pc.n++;
         }
         diff = compare_coverage(&pc, &perimeter, &covered);

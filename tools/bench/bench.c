@@ -83,19 +83,10 @@ static double rng_uniform(double lo, double hi)
     return lo + (hi - lo) * (double)(rng_next() >> 11) / 9007199254740992.0;
 }
 
-static ref_vec3 v3(double x, double y, double z)
-{
-    ref_vec3 r;
-    r.x = x;
-    r.y = y;
-    r.z = z;
-    return r;
-}
-
 static ref_vec3 rng_direction(void)
 {
     for (;;) {
-        ref_vec3 v = v3(rng_uniform(-1, 1), rng_uniform(-1, 1), rng_uniform(-1, 1)), u;
+        ref_vec3 v = ref_v3(rng_uniform(-1, 1), rng_uniform(-1, 1), rng_uniform(-1, 1)), u;
         double len = ref_unit(v, &u);
         if (len > 0.1 && len <= 1)
             return u;
@@ -163,21 +154,21 @@ static void random_input(shade_input *in)
     in->material.refraction = rng_uniform(1.05, 20);
     in->material.gloss = exp(rng_uniform(log(0.02), log(20)));
     in->material.specular = rng_uniform(0, 1);
-    in->point = v3(rng_uniform(-5, 5), rng_uniform(-5, 5), rng_uniform(1, 20));
+    in->point = ref_v3(rng_uniform(-5, 5), rng_uniform(-5, 5), rng_uniform(1, 20));
     in->parallel = (rng_next() % 8) == 0;
-    in->pdir = v3(0, 0, -1);
+    in->pdir = ref_v3(0, 0, -1);
     if (in->parallel)
         e = in->pdir;
     else
-        (void)ref_unit(v3(-in->point.x, -in->point.y, -in->point.z), &e);
+        (void)ref_unit(ref_v3(-in->point.x, -in->point.y, -in->point.z), &e);
     in->normal = rng_direction();
     if (ref_dot(in->normal, e) < 0)
-        in->normal = v3(-in->normal.x, -in->normal.y, -in->normal.z);
+        in->normal = ref_v3(-in->normal.x, -in->normal.y, -in->normal.z);
     for (j = 0; j < in->lighting.count; j++) {
         ref_vec3 d = rng_direction();
         double u = rng_uniform(0.5, 30);
         in->lighting.lights[j].position =
-            v3(in->point.x + d.x * u, in->point.y + d.y * u, in->point.z + d.z * u);
+            ref_v3(in->point.x + d.x * u, in->point.y + d.y * u, in->point.z + d.z * u);
         in->lighting.lights[j].power =
             (1 - in->lighting.background) * (in->lighting.c + u) / sqrt((double)in->lighting.count);
     }
@@ -210,12 +201,12 @@ static double min_cosine(const shade_input *in)
     if (in->parallel)
         e = in->pdir;
     else
-        (void)ref_unit(v3(in->eye.x - in->point.x, in->eye.y - in->point.y, in->eye.z - in->point.z), &e);
+        (void)ref_unit(ref_v3(in->eye.x - in->point.x, in->eye.y - in->point.y, in->eye.z - in->point.z), &e);
     m = ref_dot(in->normal, e);
     for (j = 0; j < in->lighting.count; j++) {
         ref_vec3 p = in->lighting.lights[j].position;
         double nl;
-        (void)ref_unit(v3(p.x - in->point.x, p.y - in->point.y, p.z - in->point.z), &l);
+        (void)ref_unit(ref_v3(p.x - in->point.x, p.y - in->point.y, p.z - in->point.z), &l);
         nl = fabs(ref_dot(in->normal, l));
         if (nl < m)
             m = nl;

@@ -5,7 +5,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define RT_PI 3.14159265358979323846
 #define RT_MAX_DEPTH 64
 
 enum { RT_SPHERE = 0, RT_CONE = 1, RT_POLYGON = 2 };
@@ -54,35 +53,6 @@ typedef struct rt_ray {
 
 /* ---- vectors */
 
-static ref_vec3 v3(double x, double y, double z)
-{
-    ref_vec3 r;
-    r.x = x;
-    r.y = y;
-    r.z = z;
-    return r;
-}
-
-static ref_vec3 vadd(ref_vec3 a, ref_vec3 b)
-{
-    return v3(a.x + b.x, a.y + b.y, a.z + b.z);
-}
-
-static ref_vec3 vsub(ref_vec3 a, ref_vec3 b)
-{
-    return v3(a.x - b.x, a.y - b.y, a.z - b.z);
-}
-
-static ref_vec3 vscale(ref_vec3 a, double s)
-{
-    return v3(a.x * s, a.y * s, a.z * s);
-}
-
-static ref_vec3 vcross(ref_vec3 a, ref_vec3 b)
-{
-    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-}
-
 static double vcomp(ref_vec3 a, int axis)
 {
     return axis == 0 ? a.x : (axis == 1 ? a.y : a.z);
@@ -128,13 +98,13 @@ ref_rt *ref_rt_create(int width, int height)
     rt->lighting.background = 0;
     rt->lighting.c = 1;
     rt->lighting.count = 1;
-    rt->lighting.lights[0].position = v3(0, 0, 1);
+    rt->lighting.lights[0].position = ref_v3(0, 0, 1);
     rt->lighting.lights[0].power = 1;
     rt->max_depth = 4;
     rt->min_weight = 1.0 / 64;
     memset(&v, 0, sizeof v);
-    v.from = v3(0, 0, -1);
-    v.up = v3(0, 1, 0);
+    v.from = ref_v3(0, 0, -1);
+    v.up = ref_v3(0, 1, 0);
     v.fov_degrees = 90;
     v.window_half = 1;
     v.hither = 1.0 / 256;
@@ -155,33 +125,16 @@ void ref_rt_free(ref_rt *rt)
 
 int ref_rt_set_view(ref_rt *rt, const ref_view *v)
 {
-    ref_vec3 dir, upn, right, up;
-    double short_side = rt->width < rt->height ? rt->width : rt->height, focal;
-    if (!v || ref_unit(vsub(v->at, v->from), &dir) == 0.0 || ref_unit(v->up, &upn) == 0.0)
+    ref_view_frame f;
+    if (ref_view_frame_make(v, rt->width, rt->height, &f) != REF_OK)
         return REF_ERR_VIEW;
-    /* up (nearly) along the line of sight: the core's threshold, 2^-10 */
-    if (ref_unit(vcross(dir, upn), &right) < 1.0 / 1024)
-        return REF_ERR_VIEW;
-    (void)ref_unit(vcross(right, dir), &up);
-    if (!(v->hither > 0))
-        return REF_ERR_VIEW;
-    if (v->perspective) {
-        double half = v->fov_degrees / 2 * RT_PI / 180;
-        if (!(v->fov_degrees > 0 && v->fov_degrees < 180))
-            return REF_ERR_VIEW;
-        focal = short_side / 2 * cos(half) / sin(half);
-    } else {
-        if (!(v->window_half > 0))
-            return REF_ERR_VIEW;
-        focal = short_side / 2 / v->window_half;
-    }
-    rt->from = v->from;
-    rt->forward = dir;
-    rt->right = right;
-    rt->up = up;
-    rt->focal = focal;
-    rt->hither = v->hither;
-    rt->perspective = v->perspective != 0;
+    rt->from = f.from;
+    rt->forward = f.forward;
+    rt->right = f.right;
+    rt->up = f.up;
+    rt->focal = f.focal;
+    rt->hither = f.hither;
+    rt->perspective = f.perspective;
     update_eps(rt);
     return REF_OK;
 }
@@ -269,7 +222,7 @@ int ref_rt_cone(ref_rt *rt, ref_vec3 base, double base_radius, ref_vec3 apex, do
         !isfinite(apex_radius) || base_radius < 0 || apex_radius < 0 ||
         (base_radius == 0 && apex_radius == 0))
         return REF_ERR_ARG;
-    length = ref_unit(vsub(apex, base), &axis);
+    length = ref_unit(ref_sub(apex, base), &axis);
     if (length == 0)
         return REF_ERR_DEGENERATE;
     o = new_object(rt);
@@ -305,7 +258,7 @@ int ref_rt_polygon(ref_rt *rt, const ref_vec3 *v, const ref_vec3 *normals, int n
     /* Newell's sums (SPEC.md section 1) relative to v0 (they do not change
      * under translation) */
     for (i = 0; i < n; i++) {
-        ref_vec3 p = vsub(v[i == 0 ? n - 1 : i - 1], v[0]), q = vsub(v[i], v[0]);
+        ref_vec3 p = ref_sub(v[i == 0 ? n - 1 : i - 1], v[0]), q = ref_sub(v[i], v[0]);
         double d2 = ref_dot(q, q);
         if (d2 > extent2)
             extent2 = d2;
@@ -313,7 +266,7 @@ int ref_rt_polygon(ref_rt *rt, const ref_vec3 *v, const ref_vec3 *normals, int n
         b += (p.z - q.z) * (p.x + q.x);
         c += (p.x - q.x) * (p.y + q.y);
     }
-    rawn = v3(a, b, c);
+    rawn = ref_v3(a, b, c);
     if (ref_unit(rawn, &normal) <= 1e-10 * extent2)
         return REF_ERR_DEGENERATE;
     need = rt->vert_count + (size_t)n;
@@ -350,19 +303,19 @@ int ref_rt_polygon(ref_rt *rt, const ref_vec3 *v, const ref_vec3 *normals, int n
     }
     if (fabs(normal.z) > best)
         o->drop = 2;
-    sum = v3(0, 0, 0);
+    sum = ref_v3(0, 0, 0);
     for (i = 0; i < n; i++) {
-        ref_vec3 u = v3(0, 0, 0);
+        ref_vec3 u = ref_v3(0, 0, 0);
         rt->verts[o->first + (size_t)i] = v[i];
         if (normals)
             (void)ref_unit(normals[i], &u);
         rt->norms[o->first + (size_t)i] = u;
-        sum = vadd(sum, u);
+        sum = ref_add(sum, u);
         grow_scale(rt, v[i], 0);
     }
     if (normals) {
         /* a zero normal takes the plane's, on the side of the given ones */
-        ref_vec3 plane = ref_dot(sum, normal) < 0 ? vscale(normal, -1) : normal;
+        ref_vec3 plane = ref_dot(sum, normal) < 0 ? ref_scale(normal, -1) : normal;
         for (i = 0; i < n; i++) {
             ref_vec3 *u = &rt->norms[o->first + (size_t)i];
             if (u->x == 0 && u->y == 0 && u->z == 0)
@@ -406,9 +359,9 @@ static int polygon_inside(const ref_rt *rt, const rt_object *o, ref_vec3 p)
  * increasing order; returns how many (0..2). */
 static int cone_roots(const rt_object *o, const rt_ray *r, int starts_here, double t[2])
 {
-    ref_vec3 w = vsub(r->o, o->a);
+    ref_vec3 w = ref_sub(r->o, o->a);
     double wa = ref_dot(w, o->axis), da = ref_dot(r->d, o->axis);
-    ref_vec3 qw = vsub(w, vscale(o->axis, wa)), qd = vsub(r->d, vscale(o->axis, da));
+    ref_vec3 qw = ref_sub(w, ref_scale(o->axis, wa)), qd = ref_sub(r->d, ref_scale(o->axis, da));
     double rw = o->radius + o->slope * wa, rd = o->slope * da;
     double qa = ref_dot(qd, qd) - rd * rd;
     double qb = ref_dot(qw, qd) - rw * rd;
@@ -453,7 +406,7 @@ static double hit_object(const ref_rt *rt, size_t id, const rt_ray *r, double t_
     int starts_here = r->start >= 0 && (size_t)r->start == id;
     switch (o->kind) {
     case RT_SPHERE: {
-        ref_vec3 oc = vsub(r->o, o->a);
+        ref_vec3 oc = ref_sub(r->o, o->a);
         double b = ref_dot(oc, r->d), h2, h, t;
         if (starts_here) {
             /* leaving outwards: convex, no hit; heading in: the far root */
@@ -464,7 +417,7 @@ static double hit_object(const ref_rt *rt, size_t id, const rt_ray *r, double t_
         }
         /* perpendicular form: h^2 = r^2 - |oc - (oc.d) d|^2 */
         {
-            ref_vec3 perp = vsub(oc, vscale(r->d, b));
+            ref_vec3 perp = ref_sub(oc, ref_scale(r->d, b));
             h2 = o->radius * o->radius - ref_dot(perp, perp);
         }
         if (h2 < 0)
@@ -483,7 +436,7 @@ static double hit_object(const ref_rt *rt, size_t id, const rt_ray *r, double t_
             double s;
             if (t[k] < t_lo)
                 continue;
-            s = ref_dot(vsub(vadd(r->o, vscale(r->d, t[k])), o->a), o->axis);
+            s = ref_dot(ref_sub(ref_add(r->o, ref_scale(r->d, t[k])), o->a), o->axis);
             if (s >= 0 && s <= o->length)
                 return t[k];
         }
@@ -499,7 +452,7 @@ static double hit_object(const ref_rt *rt, size_t id, const rt_ray *r, double t_
         t = (o->offset - ref_dot(o->a, r->o)) / denom;
         if (!(t >= t_lo) || !isfinite(t))
             return HUGE_VAL;
-        return polygon_inside(rt, o, vadd(r->o, vscale(r->d, t))) ? t : HUGE_VAL;
+        return polygon_inside(rt, o, ref_add(r->o, ref_scale(r->d, t))) ? t : HUGE_VAL;
     }
     }
 }
@@ -565,8 +518,8 @@ static ref_vec3 patch_normal(const ref_rt *rt, const rt_object *o, ref_vec3 p)
     }
     if (best_i < 0)
         return o->a;
-    sum = vadd(vadd(vscale(nv[0], best_w[0]), vscale(nv[best_i], best_w[1])),
-               vscale(nv[best_i + 1], best_w[2]));
+    sum = ref_add(ref_add(ref_scale(nv[0], best_w[0]), ref_scale(nv[best_i], best_w[1])),
+               ref_scale(nv[best_i + 1], best_w[2]));
     if (ref_unit(sum, &out) == 0)
         return o->a;
     return out;
@@ -578,17 +531,17 @@ static ref_vec3 object_normal(const ref_rt *rt, const rt_object *o, ref_vec3 p)
     ref_vec3 n;
     switch (o->kind) {
     case RT_SPHERE:
-        if (ref_unit(vsub(p, o->a), &n) == 0)
-            n = v3(0, 0, -1);
+        if (ref_unit(ref_sub(p, o->a), &n) == 0)
+            n = ref_v3(0, 0, -1);
         return n;
     case RT_CONE: {
         /* gradient of |q|^2 - r(s)^2: q - r(s) slope axis */
-        ref_vec3 w = vsub(p, o->a), q, qn;
+        ref_vec3 w = ref_sub(p, o->a), q, qn;
         double s = ref_dot(w, o->axis);
-        q = vsub(w, vscale(o->axis, s));
+        q = ref_sub(w, ref_scale(o->axis, s));
         if (ref_unit(q, &qn) == 0)
             return o->axis; /* the apex point itself: no normal, take the axis */
-        (void)ref_unit(vsub(qn, vscale(o->axis, o->slope)), &n);
+        (void)ref_unit(ref_sub(qn, ref_scale(o->axis, o->slope)), &n);
         return n;
     }
     default:
@@ -605,7 +558,7 @@ static double visibility(const ref_rt *rt, ref_vec3 p, long start, ref_vec3 l)
     rt_ray s;
     double u, vis = 1;
     size_t i;
-    u = ref_unit(vsub(l, p), &s.d);
+    u = ref_unit(ref_sub(l, p), &s.d);
     if (u == 0)
         return 1;
     s.o = p;
@@ -641,9 +594,9 @@ static double trace(const ref_rt *rt, const rt_ray *r, int depth, double path, d
         return background;
     o = &rt->objects[id];
     m = &rt->materials[o->material];
-    p = vadd(r->o, vscale(r->d, t));
+    p = ref_add(r->o, ref_scale(r->d, t));
     n_out = object_normal(rt, o, p);
-    n = ref_dot(n_out, r->d) > 0 ? vscale(n_out, -1) : n_out;
+    n = ref_dot(n_out, r->d) > 0 ? ref_scale(n_out, -1) : n_out;
     if (r->inside >= 0)
         att = exp(-rt->materials[rt->objects[r->inside].material].absorption * t);
     path_here = path * att;
@@ -653,7 +606,7 @@ static double trace(const ref_rt *rt, const rt_ray *r, int depth, double path, d
     for (j = 0; j < lit.count; j++)
         if (lit.lights[j].power != 0)
             lit.lights[j].power *= visibility(rt, p, id, lit.lights[j].position);
-    e = vscale(r->d, -1);
+    e = ref_scale(r->d, -1);
     if (r->primary && !rt->perspective)
         v = ref_shade_point(&lit, &m->surface, n, p, r->o, 1, e);
     else
@@ -683,7 +636,7 @@ static double trace(const ref_rt *rt, const rt_ray *r, int depth, double path, d
                 w_r += w_t;
                 w_t = 0;
             } else {
-                (void)ref_unit(vadd(vscale(r->d, eta), vscale(n, eta * c - sqrt(k))), &tr.d);
+                (void)ref_unit(ref_add(ref_scale(r->d, eta), ref_scale(n, eta * c - sqrt(k))), &tr.d);
                 if (ref_dot(tr.d, n_out) < 0)
                     tr.inside = id;
             }
@@ -692,7 +645,7 @@ static double trace(const ref_rt *rt, const rt_ray *r, int depth, double path, d
         rr.o = p;
         rr.start = id;
         rr.primary = 0;
-        rr.d = vsub(r->d, vscale(n, 2 * ref_dot(r->d, n)));
+        rr.d = ref_sub(r->d, ref_scale(n, 2 * ref_dot(r->d, n)));
         rr.inside = o->kind == RT_SPHERE && ref_dot(rr.d, n_out) < 0 ? id : -1;
         if (w_r > 0 && depth < rt->max_depth && path_here * w_r >= rt->min_weight)
             v += w_r * trace(rt, &rr, depth + 1, path_here * w_r, background);
@@ -715,11 +668,11 @@ int ref_rt_primary_ray(const ref_rt *rt, int x, int y, ref_vec3 *origin, ref_vec
     py = rt->height / 2.0 - y - 0.5;
     if (rt->perspective) {
         *origin = rt->from;
-        (void)ref_unit(vadd(vadd(vscale(rt->right, px), vscale(rt->up, py)),
-                            vscale(rt->forward, rt->focal)),
+        (void)ref_unit(ref_add(ref_add(ref_scale(rt->right, px), ref_scale(rt->up, py)),
+                            ref_scale(rt->forward, rt->focal)),
                        dir);
     } else {
-        *origin = vadd(rt->from, vadd(vscale(rt->right, px / rt->focal), vscale(rt->up, py / rt->focal)));
+        *origin = ref_add(rt->from, ref_add(ref_scale(rt->right, px / rt->focal), ref_scale(rt->up, py / rt->focal)));
         *dir = rt->forward;
     }
     return REF_OK;
@@ -757,9 +710,9 @@ int ref_rt_primary_surface(const ref_rt *rt, int x, int y, ref_vec3 *point, ref_
     r.primary = 1;
     id = nearest(rt, &r, &t);
     if (id >= 0) {
-        ref_vec3 p = vadd(r.o, vscale(r.d, t)), n = object_normal(rt, &rt->objects[id], p);
+        ref_vec3 p = ref_add(r.o, ref_scale(r.d, t)), n = object_normal(rt, &rt->objects[id], p);
         if (ref_dot(n, r.d) > 0)
-            n = vscale(n, -1);
+            n = ref_scale(n, -1);
         if (point)
             *point = p;
         if (normal)

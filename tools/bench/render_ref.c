@@ -10,25 +10,6 @@
 
 #define REF_PI 3.14159265358979323846
 
-static ref_vec3 v3(double x, double y, double z)
-{
-    ref_vec3 r;
-    r.x = x;
-    r.y = y;
-    r.z = z;
-    return r;
-}
-
-static ref_vec3 vsub(ref_vec3 a, ref_vec3 b)
-{
-    return v3(a.x - b.x, a.y - b.y, a.z - b.z);
-}
-
-static ref_vec3 vcross(ref_vec3 a, ref_vec3 b)
-{
-    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-}
-
 int ref_ctx_init(ref_ctx *c, int width, int height)
 {
     ref_view v;
@@ -46,15 +27,15 @@ int ref_ctx_init(ref_ctx *c, int width, int height)
     c->lighting.background = 0;
     c->lighting.c = 1;
     c->lighting.count = 1;
-    c->lighting.lights[0].position = v3(0, 0, 1);
+    c->lighting.lights[0].position = ref_v3(0, 0, 1);
     c->lighting.lights[0].power = 1;
     c->material.reflectivity = 1;
     c->material.refraction = 10;
     c->material.gloss = 10;
     c->material.specular = 1;
     memset(&v, 0, sizeof v);
-    v.from = v3(0, 0, -1);
-    v.up = v3(0, 1, 0);
+    v.from = ref_v3(0, 0, -1);
+    v.up = ref_v3(0, 1, 0);
     v.fov_degrees = 90;
     v.window_half = 1;
     v.hither = 1.0 / 256;
@@ -70,41 +51,57 @@ void ref_ctx_free(ref_ctx *c)
     memset(c, 0, sizeof *c);
 }
 
-int ref_set_view(ref_ctx *c, const ref_view *v)
+int ref_view_frame_make(const ref_view *v, int width, int height, ref_view_frame *out)
 {
     ref_vec3 dir, upn, right, up;
-    double short_side = c->width < c->height ? c->width : c->height;
-    if (ref_unit(vsub(v->at, v->from), &dir) == 0.0 || ref_unit(v->up, &upn) == 0.0)
+    double short_side = width < height ? width : height, focal;
+    if (!v || ref_unit(ref_sub(v->at, v->from), &dir) == 0.0 || ref_unit(v->up, &upn) == 0.0)
         return REF_ERR_VIEW;
     /* up (nearly) along the line of sight: the core's threshold, 2^-10 */
-    if (ref_unit(vcross(dir, upn), &right) < 1.0 / 1024)
+    if (ref_unit(ref_cross(dir, upn), &right) < 1.0 / 1024)
         return REF_ERR_VIEW;
-    (void)ref_unit(vcross(right, dir), &up);
+    (void)ref_unit(ref_cross(right, dir), &up);
     if (!(v->hither > 0))
         return REF_ERR_VIEW;
     if (v->perspective) {
         double half = v->fov_degrees / 2 * REF_PI / 180;
         if (!(v->fov_degrees > 0 && v->fov_degrees < 180))
             return REF_ERR_VIEW;
-        c->focal = short_side / 2 * cos(half) / sin(half);
+        focal = short_side / 2 * cos(half) / sin(half);
     } else {
         if (!(v->window_half > 0))
             return REF_ERR_VIEW;
-        c->focal = short_side / 2 / v->window_half;
+        focal = short_side / 2 / v->window_half;
     }
-    c->from = v->from;
-    c->forward = dir;
-    c->right = right;
-    c->up = up;
-    c->hither = v->hither;
-    c->perspective = v->perspective != 0;
+    out->from = v->from;
+    out->forward = dir;
+    out->right = right;
+    out->up = up;
+    out->focal = focal;
+    out->hither = v->hither;
+    out->perspective = v->perspective != 0;
+    return REF_OK;
+}
+
+int ref_set_view(ref_ctx *c, const ref_view *v)
+{
+    ref_view_frame f;
+    if (ref_view_frame_make(v, c->width, c->height, &f) != REF_OK)
+        return REF_ERR_VIEW;
+    c->focal = f.focal;
+    c->from = f.from;
+    c->forward = f.forward;
+    c->right = f.right;
+    c->up = f.up;
+    c->hither = f.hither;
+    c->perspective = f.perspective;
     return REF_OK;
 }
 
 ref_vec3 ref_world_to_view(const ref_ctx *c, ref_vec3 p)
 {
-    ref_vec3 d = vsub(p, c->from);
-    return v3(ref_dot(d, c->right), ref_dot(d, c->up), ref_dot(d, c->forward));
+    ref_vec3 d = ref_sub(p, c->from);
+    return ref_v3(ref_dot(d, c->right), ref_dot(d, c->up), ref_dot(d, c->forward));
 }
 
 void ref_set_lighting(ref_ctx *c, const ref_lighting *world)
@@ -192,7 +189,7 @@ int ref_polygon(ref_ctx *c, const ref_vec3 *world, int n, size_t tag, double *sh
     if (!v)
         return REF_ERR_ARG;
     clip = v + n;
-    centre = v3(0, 0, 0);
+    centre = ref_v3(0, 0, 0);
     for (i = 0; i < n; i++) {
         v[i] = ref_world_to_view(c, world[i]);
         centre.x += v[i].x;
@@ -205,7 +202,7 @@ int ref_polygon(ref_ctx *c, const ref_vec3 *world, int n, size_t tag, double *sh
     /* Newell's sums (Algorithm 10.4) on coordinates relative to vertex 0
      * (the sums do not change under translation; this keeps their bits) */
     for (i = 0; i < n; i++) {
-        ref_vec3 p = vsub(v[i == 0 ? n - 1 : i - 1], v[0]), q = vsub(v[i], v[0]);
+        ref_vec3 p = ref_sub(v[i == 0 ? n - 1 : i - 1], v[0]), q = ref_sub(v[i], v[0]);
         double d2 = ref_dot(q, q);
         if (d2 > extent2)
             extent2 = d2;
@@ -214,7 +211,7 @@ int ref_polygon(ref_ctx *c, const ref_vec3 *world, int n, size_t tag, double *sh
         cc += (p.x - q.x) * (p.y + q.y);
     }
     /* left-handed view system: Newell's right-handed sum points the other way */
-    rawn = v3(-a, -b, -cc);
+    rawn = ref_v3(-a, -b, -cc);
     c->last_size = sqrt(extent2);
     /* |Newell| is twice the area: a polygon of exactly collinear vertices
      * keeps an area of rounding noise only (1e-16 of its extent squared)
@@ -224,20 +221,20 @@ int ref_polygon(ref_ctx *c, const ref_vec3 *world, int n, size_t tag, double *sh
         goto done;
     }
     if (c->perspective) {
-        if (ref_unit(v3(-centre.x, -centre.y, -centre.z), &eye_dir) == 0.0)
-            eye_dir = v3(0, 0, -1);
+        if (ref_unit(ref_v3(-centre.x, -centre.y, -centre.z), &eye_dir) == 0.0)
+            eye_dir = ref_v3(0, 0, -1);
     } else {
-        eye_dir = v3(0, 0, -1);
+        eye_dir = ref_v3(0, 0, -1);
     }
     n_dot_e = ref_dot(normal, eye_dir);
     c->last_n_dot_e = fabs(n_dot_e);
     if (n_dot_e <= 0) {
         if (c->backface_removal)
             goto done;
-        normal = v3(-normal.x, -normal.y, -normal.z);
+        normal = ref_v3(-normal.x, -normal.y, -normal.z);
     }
     if (c->shading) {
-        s = ref_shade_point(&c->lighting, &c->material, normal, centre, v3(0, 0, 0),
+        s = ref_shade_point(&c->lighting, &c->material, normal, centre, ref_v3(0, 0, 0),
                             !c->perspective, eye_dir);
         style = intensity_of(s, c->levels);
     } else {
@@ -258,7 +255,7 @@ int ref_polygon(ref_ctx *c, const ref_vec3 *world, int n, size_t tag, double *sh
             clip[m++] = p;
         if ((dp >= 0) != (dq >= 0)) {
             double t = dp / (dp - dq);
-            clip[m++] = v3(p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t, c->hither);
+            clip[m++] = ref_v3(p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t, c->hither);
         }
     }
     if (m < 3)
@@ -487,12 +484,12 @@ void ref_render_result_free(ref_render_result *res)
 
 static ref_vec3 from_scene(stp_scene_vec3 v)
 {
-    return v3(v.x, v.y, v.z);
+    return ref_v3(v.x, v.y, v.z);
 }
 
 static double dist3(ref_vec3 a, ref_vec3 b)
 {
-    ref_vec3 d = vsub(a, b);
+    ref_vec3 d = ref_sub(a, b);
     return sqrt(ref_dot(d, d));
 }
 
@@ -530,7 +527,7 @@ int ref_render_scene(const stp_scene *scene, const ref_render_options *opt,
     }
     lo = from_scene(slo);
     hi = from_scene(shi);
-    centre = v3((lo.x + hi.x) / 2, (lo.y + hi.y) / 2, (lo.z + hi.z) / 2);
+    centre = ref_v3((lo.x + hi.x) / 2, (lo.y + hi.y) / 2, (lo.z + hi.z) / 2);
     radius = dist3(lo, hi) / 2;
     if (radius <= 0)
         radius = 1;
@@ -545,9 +542,9 @@ int ref_render_scene(const stp_scene *scene, const ref_render_options *opt,
     } else {
         double fov = opt->fov > 0 ? opt->fov : 45.0;
         double d = radius / sin(fov * 0.5 * REF_PI / 180.0) * 1.05;
-        view.from = v3(centre.x + d * 0.48, centre.y + d * 0.40, centre.z + d * 0.78);
+        view.from = ref_v3(centre.x + d * 0.48, centre.y + d * 0.40, centre.z + d * 0.78);
         view.at = centre;
-        view.up = v3(0, 1, 0);
+        view.up = ref_v3(0, 1, 0);
         view.fov_degrees = fov;
         view.hither = d * 1e-3;
     }
@@ -565,7 +562,7 @@ int ref_render_scene(const stp_scene *scene, const ref_render_options *opt,
             light_pos[j] = from_scene(scene->lights[j].position);
     } else {
         ref_vec3 eye = scene->has_view ? from_scene(scene->from) : centre;
-        light_pos[0] = v3(eye.x - radius, eye.y + radius * 2, eye.z + radius * 3);
+        light_pos[0] = ref_v3(eye.x - radius, eye.y + radius * 2, eye.z + radius * 3);
         light_count = 1;
     }
     memset(&lighting, 0, sizeof lighting);

@@ -66,6 +66,21 @@ typedef struct ref_view {
     int perspective;    /* 1 perspective, 0 parallel */
 } ref_view;
 
+/* A view turned into its basis and focal length (both references use it):
+ * forward = unit(at - from), right = unit(forward x up), up' = right x
+ * forward; focal = (short side / 2) / tan(fov / 2) pixels (perspective) or
+ * (short side / 2) / window_half pixels per unit (parallel). */
+typedef struct ref_view_frame {
+    ref_vec3 from, right, up, forward;
+    double focal, hither;
+    int perspective;
+} ref_view_frame;
+
+/* REF_OK, or REF_ERR_VIEW (from == at, zero up, |unit(forward x up)| below
+ * the core's 2^-10, fov outside (0, 180), window_half or hither <= 0);
+ * *out is written only on success. */
+int ref_view_frame_make(const ref_view *v, int width, int height, ref_view_frame *out);
+
 /* One polygon kept for scan conversion. */
 typedef struct ref_poly2 {
     size_t first;     /* into the context's projected vertices */
