@@ -12,6 +12,30 @@ uint8_t stp_output_level(const stp_output *out, int levels, int index)
     return (uint8_t)(((index - 1) * 255 + (levels - 1) / 2) / (levels - 1));
 }
 
+void stp_output_put_shade(uint8_t *row, stp_pixel_format format, uint32_t x, uint32_t y,
+                          const stp_output *out, const stp_cell *cell, int levels, stp_fix shade)
+{
+    int index = stp_intensity_index(shade, levels);
+    uint8_t level;
+    if (format == STP_PIXEL_STYLE8) {
+        row[x] = stp_output_style_code(out, levels, index);
+        return;
+    }
+    level = stp_output_level(out, levels, index);
+    switch (format) {
+    case STP_PIXEL_MONO1: {
+        uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
+        if (stp_cell_on(cell, x, y, level))
+            row[x >> 3] = (uint8_t)(row[x >> 3] | bit);
+        else
+            row[x >> 3] = (uint8_t)(row[x >> 3] & ~bit);
+        break;
+    }
+    case STP_PIXEL_GREY8: row[x] = level; break;
+    default: row[3 * x] = row[3 * x + 1] = row[3 * x + 2] = level; break;
+    }
+}
+
 uint8_t stp_output_style_code(const stp_output *out, int levels, int index)
 {
     if (index > levels)

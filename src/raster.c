@@ -106,27 +106,12 @@ static void put_span_smooth(const frame *fr, uint32_t y, uint32_t x1, uint32_t x
                             int64_t step)
 {
     uint8_t *row = fr->band + (size_t)(y - fr->y0) * fr->stride;
-    int levels = fr->r->levels;
     uint32_t x;
     int64_t s = s0;
     for (x = x1; x <= x2; x++, s += step) {
         int64_t sv = stp_asr64(s, 16);
         stp_fix shade = (stp_fix)(sv < 0 ? 0 : (sv > STP_FIX_ONE ? STP_FIX_ONE : sv));
-        int index = (int)(((int64_t)shade * (levels - 1)) >> STP_FIX_FRAC_BITS) + 1;
-        uint8_t level = level_of(fr, index);
-        switch (fr->port->format) {
-        case STP_PIXEL_MONO1: {
-            uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
-            if (stp_cell_on(fr->cell, x, y, level))
-                row[x >> 3] = (uint8_t)(row[x >> 3] | bit);
-            else
-                row[x >> 3] = (uint8_t)(row[x >> 3] & ~bit);
-            break;
-        }
-        case STP_PIXEL_GREY8: row[x] = level; break;
-        case STP_PIXEL_RGB888: row[3 * x] = row[3 * x + 1] = row[3 * x + 2] = level; break;
-        default: row[x] = style_code(fr, index); break;
-        }
+        stp_output_put_shade(row, fr->port->format, x, y, fr->out, fr->cell, fr->r->levels, shade);
     }
 }
 #endif

@@ -1410,11 +1410,6 @@ int stp_rt_trace_pixel(stp_raytracer *rt, uint32_t x, uint32_t y, const stp_fix 
     return STP_OK;
 }
 
-static int index_of(stp_fix shade, int levels)
-{
-    return (int)(((int64_t)shade * (levels - 1)) >> F) + 1;
-}
-
 int stp_rt_render(stp_raytracer *rt, stp_port *port, const stp_output *output, uint8_t *band,
                   size_t band_size, uint32_t band_rows)
 {
@@ -1459,27 +1454,12 @@ int stp_rt_render(stp_raytracer *rt, stp_port *port, const stp_output *output, u
                 stp_fix grey;
                 trace_pixel(rt, x, y, &bg, &v);
                 grey = rt->colour ? stp_shade_luminance(v.c) : v.c[0];
-                switch (port->format) {
-                case STP_PIXEL_MONO1: {
-                    uint8_t level = stp_output_level(output, rt->levels, index_of(grey, rt->levels));
-                    uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
-                    if (stp_cell_on(cell, x, y, level))
-                        row[x >> 3] = (uint8_t)(row[x >> 3] | bit);
-                    else
-                        row[x >> 3] = (uint8_t)(row[x >> 3] & ~bit);
-                    break;
-                }
-                case STP_PIXEL_GREY8:
-                    row[x] = stp_output_level(output, rt->levels, index_of(grey, rt->levels));
-                    break;
-                case STP_PIXEL_RGB888:
+                if (port->format == STP_PIXEL_RGB888 && rt->colour) {
                     for (c = 0; c < 3; c++)
-                        row[3 * x + (uint32_t)c] =
-                            stp_output_level(output, rt->levels, index_of(v.c[c], rt->levels));
-                    break;
-                default:
-                    row[x] = stp_output_style_code(output, rt->levels, index_of(grey, rt->levels));
-                    break;
+                        row[3 * x + (uint32_t)c] = stp_output_level(
+                            output, rt->levels, stp_intensity_index(v.c[c], rt->levels));
+                } else {
+                    stp_output_put_shade(row, port->format, x, y, output, cell, rt->levels, grey);
                 }
             }
         }
