@@ -24,26 +24,11 @@
 
 #include "render_scene.h"
 #include "stp_posix.h"
+#include "test_scenes.h"
 
 static const char *const scenes[] = {"tetra-s1", "tetra-s2", "mount-s2", "teapot-s1",
                                      "teapot-s2", "gears-s1", "balls-s1", "balls-s2"};
 #define SCENE_COUNT (sizeof scenes / sizeof scenes[0])
-
-static const char *env_or(const char *name, const char *fallback)
-{
-    const char *v = getenv(name);
-    return v && *v ? v : fallback;
-}
-
-static void load(const char *name, stp_scene *scene)
-{
-    char path[1024], err[512];
-    stp_scene_options sopt;
-    stp_scene_options_default(&sopt);
-    snprintf(path, sizeof path, "%s/%s.nff", env_or("STP_SCENES_DIR", "../shared/scenes"), name);
-    if (stp_scene_load(path, &sopt, scene, err, sizeof err) != 0)
-        fail_msg("cannot load %s: %s", path, err);
-}
 
 static void render(const stp_scene *scene, const stp_tool_options *opt, stp_posix_frame *frame,
                    stp_pixel_format fmt)
@@ -61,7 +46,7 @@ static int compare_golden(const stp_posix_frame *frame, const char *name)
     stp_posix_image golden;
     char path[1024], err[512];
     uint32_t x, y, differ = 0;
-    snprintf(path, sizeof path, "%s/tests/golden/%s.pbm", env_or("STP_SOURCE_DIR", "."), name);
+    snprintf(path, sizeof path, "%s/tests/golden/%s.pbm", stp_test_env_or("STP_SOURCE_DIR", "."), name);
     if (stp_posix_read_pnm(path, &golden, err, sizeof err) != 0) {
         print_error("%s: no golden image (%s)\n", name, err);
         return 1;
@@ -78,7 +63,7 @@ static int compare_golden(const stp_posix_frame *frame, const char *name)
     stp_posix_image_free(&golden);
     if (differ) {
         char actual[1024];
-        snprintf(actual, sizeof actual, "%s/%s.actual.pbm", env_or("STP_BINARY_DIR", "."), name);
+        snprintf(actual, sizeof actual, "%s/%s.actual.pbm", stp_test_env_or("STP_BINARY_DIR", "."), name);
         (void)stp_posix_write(frame, actual, STP_POSIX_FILE_P4, err, sizeof err);
         print_error("%s: %u pixels differ from the golden image; render saved as %s\n", name,
                     differ, actual);
@@ -95,7 +80,7 @@ static void test_golden_smooth_teapot(void **state)
     stp_tool_options opt;
     stp_posix_frame frame;
     (void)state;
-    load("teapot-s2", &scene);
+    stp_test_load_scene("teapot-s2", &scene);
     stp_tool_options_default(&opt);
     opt.smooth = 1;
     render(&scene, &opt, &frame, STP_PIXEL_MONO1);
@@ -120,7 +105,7 @@ static int golden_series(const char *const *names, size_t count,
         stp_tool_options opt;
         stp_posix_frame frame;
         char name[128];
-        load(names[i], &scene);
+        stp_test_load_scene(names[i], &scene);
         stp_tool_options_default(&opt);
         adjust(&opt);
         render(&scene, &opt, &frame, STP_PIXEL_MONO1);
@@ -180,7 +165,7 @@ static void test_golden_colour(void **state)
         stp_posix_image golden;
         char path[1024], err[512];
         size_t k, differ = 0;
-        load(colour_scenes[i], &scene);
+        stp_test_load_scene(colour_scenes[i], &scene);
         stp_tool_options_default(&opt);
         opt.colour = 1;
         if (*suffix[i]) {
@@ -190,7 +175,7 @@ static void test_golden_colour(void **state)
         render(&scene, &opt, &frame, STP_PIXEL_RGB888);
         stp_scene_free(&scene);
         snprintf(path, sizeof path, "%s/tests/golden/%s%s-colour-128x64.ppm",
-                 env_or("STP_SOURCE_DIR", "."), colour_scenes[i], suffix[i]);
+                 stp_test_env_or("STP_SOURCE_DIR", "."), colour_scenes[i], suffix[i]);
         if (stp_posix_read_pnm(path, &golden, err, sizeof err) != 0) {
             print_error("%s\n", err);
             failures++;
@@ -202,7 +187,7 @@ static void test_golden_colour(void **state)
             stp_posix_image_free(&golden);
         }
         if (differ) {
-            snprintf(path, sizeof path, "%s/%s%s-colour-128x64.actual.ppm", env_or("STP_BINARY_DIR", "."),
+            snprintf(path, sizeof path, "%s/%s%s-colour-128x64.actual.ppm", stp_test_env_or("STP_BINARY_DIR", "."),
                      colour_scenes[i], suffix[i]);
             (void)stp_posix_write(&frame, path, STP_POSIX_FILE_P6, err, sizeof err);
             print_error("%s: %zu samples differ; render saved as %s\n", colour_scenes[i], differ, path);
@@ -225,7 +210,7 @@ static void test_golden_128x64(void **state)
         stp_tool_options opt;
         stp_posix_frame frame;
         char name[128];
-        load(scenes[i], &scene);
+        stp_test_load_scene(scenes[i], &scene);
         stp_tool_options_default(&opt);
         render(&scene, &opt, &frame, STP_PIXEL_MONO1);
         stp_scene_free(&scene);
@@ -245,7 +230,7 @@ static void test_bands_equal_full_frame(void **state)
     (void)state;
     for (i = 0; i < SCENE_COUNT; i++) {
         stp_scene scene;
-        load(scenes[i], &scene);
+        stp_test_load_scene(scenes[i], &scene);
         for (f = 0; f < 3; f++)
             for (m = 0; m < 3; m++) {
                 stp_tool_options opt;
@@ -284,7 +269,7 @@ static void test_renders_show_something(void **state)
         stp_posix_frame frame;
         size_t k, levels_seen = 0;
         int seen[256] = {0};
-        load(scenes[i], &scene);
+        stp_test_load_scene(scenes[i], &scene);
         stp_tool_options_default(&opt);
         render(&scene, &opt, &frame, STP_PIXEL_STYLE8);
         for (k = 0; k < frame.stride * frame.height; k++)

@@ -22,28 +22,13 @@
 
 #include "render_scene.h"
 #include "rt_compare.h"
+#include "test_scenes.h"
 #include "scene.h"
 #include "stipple/stipple.h"
 
 static const char *const scenes[] = {"tetra-s1", "tetra-s2", "mount-s2", "teapot-s1",
                                      "teapot-s2", "gears-s1", "balls-s1", "balls-s2"};
 #define SCENE_COUNT (sizeof scenes / sizeof scenes[0])
-
-static const char *env_or(const char *name, const char *fallback)
-{
-    const char *v = getenv(name);
-    return v && *v ? v : fallback;
-}
-
-static void load(const char *name, stp_scene *scene)
-{
-    char path[1024], err[512];
-    stp_scene_options sopt;
-    stp_scene_options_default(&sopt);
-    snprintf(path, sizeof path, "%s/%s.nff", env_or("STP_SCENES_DIR", "../shared/scenes"), name);
-    if (stp_scene_load(path, &sopt, scene, err, sizeof err) != 0)
-        fail_msg("cannot load %s: %s", path, err);
-}
 
 static void parse(const char *text, stp_scene *scene)
 {
@@ -92,7 +77,7 @@ static void test_scenes_against_reference(void **state)
     for (i = 0; i < SCENE_COUNT; i++) {
         stp_scene scene;
         stp_tool_options opt;
-        load(scenes[i], &scene);
+        stp_test_load_scene(scenes[i], &scene);
         options(&opt, 96, 64);
         (void)check_against_reference(scenes[i], &scene, &opt, 2e-3, 0.01);
         stp_scene_free(&scene);
@@ -114,7 +99,7 @@ static void test_hierarchy_equals_every_object(void **state)
         char err[512];
         uint32_t x, y;
         long differ = 0;
-        load(scenes[i], &scene);
+        stp_test_load_scene(scenes[i], &scene);
         options(&opt, 80, 60);
         memset(&st, 0, sizeof st);
         assert_int_equal(stp_tool_rt_build(&scene, &opt, &with, &st, err, sizeof err), 0);
@@ -172,7 +157,7 @@ static void test_bands_equal_full_frame(void **state)
     char err[512];
     size_t f, b;
     (void)state;
-    load("balls-s1", &scene);
+    stp_test_load_scene("balls-s1", &scene);
     options(&opt, (int)w, (int)h);
     memset(&st, 0, sizeof st);
     assert_int_equal(stp_tool_rt_build(&scene, &opt, &t, &st, err, sizeof err), 0);

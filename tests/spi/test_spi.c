@@ -28,28 +28,14 @@
 
 #include "render_scene.h"
 #include "scene.h"
+#include "spi_expect.h"
 #include "spi_sim.h"
+#include "test_scenes.h"
 #include "stp_device.h"
 #include "stp_posix.h"
 #include "stp_spipanel.h"
 
 static const uint32_t band_heights[] = {1, 3, 8, 0}; /* 0: the whole frame */
-
-static const char *env_or(const char *name, const char *fallback)
-{
-    const char *v = getenv(name);
-    return v && *v ? v : fallback;
-}
-
-static void load_scene(const char *name, stp_scene *scene)
-{
-    char path[1024], err[512];
-    stp_scene_options so;
-    stp_scene_options_default(&so);
-    snprintf(path, sizeof path, "%s/%s", env_or("STP_SCENES_DIR", "../shared/scenes"), name);
-    if (stp_scene_load(path, &so, scene, err, sizeof err) != 0)
-        fail_msg("cannot load %s: %s", path, err);
-}
 
 static void tool_options(stp_tool_options *to, uint32_t w, uint32_t h, uint32_t band)
 {
@@ -57,63 +43,6 @@ static void tool_options(stp_tool_options *to, uint32_t w, uint32_t h, uint32_t 
     to->width = (int)w;
     to->height = (int)h;
     to->band_rows = (int)band;
-}
-
-/* The scene's MONO1 picture in memory: what the glass must show. */
-static void expected(const stp_scene *scene, uint32_t w, uint32_t h, stp_posix_frame *frame)
-{
-    stp_tool_options to;
-    char err[512];
-    uint32_t x, y, on = 0;
-    tool_options(&to, w, h, 0);
-    assert_int_equal(stp_posix_frame_init(frame, w, h, STP_PIXEL_MONO1), 0);
-    if (stp_tool_render(scene, &to, stp_posix_frame_port(frame), NULL, err, sizeof err) != 0)
-        fail_msg("render in memory: %s", err);
-    for (y = 0; y < h; y++)
-        for (x = 0; x < w; x++)
-            on += (frame->pixels[y * frame->stride + x / 8] >> (7 - x % 8)) & 1u;
-    /* a picture, not a blank: both kinds of pixel in quantity */
-    if (!(on > w * h / 20 && on < w * h - w * h / 20))
-        fail_msg("%u of %u pixels ON: not a useful test picture", on, w * h);
-}
-
-/* Saves a failing glass beside the build for a look. */
-static void save_glass(spi_sim *sim, const char *name)
-{
-    stp_posix_frame f;
-    char path[1024], err[256];
-    uint32_t y;
-    if (stp_posix_frame_init(&f, sim->width, sim->height, STP_PIXEL_MONO1) != 0)
-        return;
-    for (y = 0; y < sim->height; y++)
-        memcpy(f.pixels + y * f.stride, sim->glass + y * sim->stride, f.stride);
-    snprintf(path, sizeof path, "%s/%s.glass.pbm", env_or("STP_BINARY_DIR", "."), name);
-    if (stp_posix_write(&f, path, STP_POSIX_FILE_P4, err, sizeof err) == 0)
-        print_message("glass saved as %s\n", path);
-    stp_posix_frame_free(&f);
-}
-
-static void assert_glass(spi_sim *sim, const stp_posix_frame *want, const char *name)
-{
-    uint32_t x, y, diff = 0, fx = 0, fy = 0;
-    assert_int_equal(sim->width, want->width);
-    assert_int_equal(sim->height, want->height);
-    g_mutex_lock(&sim->lock);
-    for (y = 0; y < want->height; y++)
-        for (x = 0; x < want->width; x++) {
-            unsigned a = (sim->glass[y * sim->stride + x / 8] >> (7 - x % 8)) & 1u;
-            unsigned b = (want->pixels[y * want->stride + x / 8] >> (7 - x % 8)) & 1u;
-            if (a != b && diff++ == 0) {
-                fx = x;
-                fy = y;
-            }
-        }
-    g_mutex_unlock(&sim->lock);
-    if (diff) {
-        save_glass(sim, name);
-        fail_msg("%s: %u pixels differ from the render, the first at (%u, %u)", name, diff, fx,
-                 fy);
-    }
 }
 
 static void assert_clean(spi_sim *sim)
@@ -152,8 +81,8 @@ static void render_bands(spi_sim *sim, stp_spipanel *p, const char *scene_name, 
     size_t i;
     stp_port *port = stp_spipanel_port(p);
     assert_int_equal(port->format, STP_PIXEL_MONO1);
-    load_scene(scene_name, &scene);
-    expected(&scene, port->width, port->height, &want);
+    stp_test_load_scene(scene_name, &scene);
+    spi_expected_render(&scene, port->width, port->height, &want);
     for (i = 0; i < sizeof band_heights / sizeof band_heights[0]; i++) {
         stp_tool_options to;
         char err[512], name[128];
@@ -163,7 +92,7 @@ static void render_bands(spi_sim *sim, stp_spipanel *p, const char *scene_name, 
             fail_msg("%s, bands of %u: %s (%s)", label, band_heights[i], err,
                      stp_spipanel_error(p));
         snprintf(name, sizeof name, "%s-band%u", label, band_heights[i]);
-        assert_glass(sim, &want, name);
+        spi_assert_glass(sim, &want, name);
         assert_clean(sim);
     }
     stp_posix_frame_free(&want);
@@ -289,14 +218,14 @@ static void test_ssd1680_296(void **state)
     guint polls;
     (void)state;
     p = open_panel(sim, &stp_panel_ssd1680_128x296, 0, NULL);
-    load_scene("mount-s2.nff", &scene);
-    expected(&scene, 128, 296, &want);
+    stp_test_load_scene("mount-s2.nff", &scene);
+    spi_expected_render(&scene, 128, 296, &want);
     tool_options(&to, 128, 296, 5);
     polls = sim->busy_polls;
     if (stp_tool_render(&scene, &to, stp_spipanel_port(p), NULL, err, sizeof err) != 0)
         fail_msg("%s (%s)", err, stp_spipanel_error(p));
     assert_true(sim->busy_polls > polls); /* the refresh waited for BUSY */
-    assert_glass(sim, &want, "ssd1680-296-mount");
+    spi_assert_glass(sim, &want, "ssd1680-296-mount");
     assert_int_equal(sim->max_message, 4096);
     assert_clean(sim);
     stp_spipanel_close(p);
@@ -354,7 +283,7 @@ static void test_eio_mid_frame(void **state)
     (void)state;
     p = open_panel(sim, &stp_panel_sharp_ls013b7dh03, 0, NULL);
     sim->fail_after = 500;
-    load_scene("tetra-s1.nff", &scene);
+    stp_test_load_scene("tetra-s1.nff", &scene);
     tool_options(&to, 128, 128, 8);
     assert_int_not_equal(stp_tool_render(&scene, &to, stp_spipanel_port(p), NULL, err, sizeof err),
                          0);
@@ -459,13 +388,13 @@ static void test_device_sharp(void **state)
     assert_int_equal(port->height, 128);
     assert_int_equal(port->format, STP_PIXEL_MONO1);
     assert_string_equal(stp_device_describe(d), "LS013B7DH03 128x128 MONO1 on /dev/spidev0.0");
-    load_scene("balls-s1.nff", &scene);
-    expected(&scene, 128, 128, &want);
+    stp_test_load_scene("balls-s1.nff", &scene);
+    spi_expected_render(&scene, 128, 128, &want);
     tool_options(&to, 128, 128, 16);
     spi_sim_scramble(sim, 99);
     if (stp_tool_render(&scene, &to, port, NULL, err, sizeof err) != 0)
         fail_msg("%s (%s)", err, stp_device_error(d));
-    assert_glass(sim, &want, "device-sharp-balls");
+    spi_assert_glass(sim, &want, "device-sharp-balls");
     assert_int_equal(stp_device_finish(d, err, sizeof err), 0);
     assert_int_equal(stp_device_tick(d, err, sizeof err), 0);
     assert_int_equal(sim->speed_max, 500000);

@@ -27,71 +27,14 @@
 
 #include "render_scene.h"
 #include "scene.h"
+#include "spi_expect.h"
 #include "spi_sim.h"
+#include "test_scenes.h"
 #include "stp_posix.h"
 
 extern char **environ;
 
 static const char *stipple_path;
-
-static const char *env_or(const char *name, const char *fallback)
-{
-    const char *v = getenv(name);
-    return v && *v ? v : fallback;
-}
-
-static void scene_path(const char *name, char *path, size_t len)
-{
-    snprintf(path, len, "%s/%s", env_or("STP_SCENES_DIR", "../shared/scenes"), name);
-}
-
-/* The scene's MONO1 picture in memory, as test_spi.c renders it. */
-static void expected(const char *name, uint32_t w, uint32_t h, stp_posix_frame *frame)
-{
-    stp_scene scene;
-    stp_scene_options so;
-    stp_tool_options to;
-    char path[1024], err[512];
-    uint32_t x, y, on = 0;
-    scene_path(name, path, sizeof path);
-    stp_scene_options_default(&so);
-    if (stp_scene_load(path, &so, &scene, err, sizeof err) != 0)
-        fail_msg("cannot load %s: %s", path, err);
-    stp_tool_options_default(&to);
-    to.width = (int)w;
-    to.height = (int)h;
-    to.band_rows = 0;
-    assert_int_equal(stp_posix_frame_init(frame, w, h, STP_PIXEL_MONO1), 0);
-    if (stp_tool_render(&scene, &to, stp_posix_frame_port(frame), NULL, err, sizeof err) != 0)
-        fail_msg("render in memory: %s", err);
-    stp_scene_free(&scene);
-    for (y = 0; y < h; y++)
-        for (x = 0; x < w; x++)
-            on += (frame->pixels[y * frame->stride + x / 8] >> (7 - x % 8)) & 1u;
-    if (!(on > w * h / 20 && on < w * h - w * h / 20))
-        fail_msg("%u of %u pixels ON: not a useful test picture", on, w * h);
-}
-
-static void assert_glass(spi_sim *sim, const stp_posix_frame *want, const char *name)
-{
-    uint32_t x, y, diff = 0, fx = 0, fy = 0;
-    assert_int_equal(sim->width, want->width);
-    assert_int_equal(sim->height, want->height);
-    g_mutex_lock(&sim->lock);
-    for (y = 0; y < want->height; y++)
-        for (x = 0; x < want->width; x++) {
-            unsigned a = (sim->glass[y * sim->stride + x / 8] >> (7 - x % 8)) & 1u;
-            unsigned b = (want->pixels[y * want->stride + x / 8] >> (7 - x % 8)) & 1u;
-            if (a != b && diff++ == 0) {
-                fx = x;
-                fy = y;
-            }
-        }
-    g_mutex_unlock(&sim->lock);
-    if (diff)
-        fail_msg("%s: %u pixels differ from the render, the first at (%u, %u)", name, diff, fx,
-                 fy);
-}
 
 /* Runs stipple with args (NULL-terminated, without argv[0]); returns its
  * wait status and its stderr in err (NUL-terminated, truncated). */
@@ -148,8 +91,13 @@ static void test_cli_render_sharp(void **state)
     const char *bad[] = {"render", path, "--device", "spi:/dev/spidev0.0,controller=nope", NULL};
     int status;
     (void)state;
-    scene_path("tetra-s1.nff", path, sizeof path);
-    expected("tetra-s1.nff", 128, 128, &want);
+    stp_test_scene_path("tetra-s1.nff", path, sizeof path);
+    {
+        stp_scene scene;
+        stp_test_load_scene("tetra-s1.nff", &scene);
+        spi_expected_render(&scene, 128, 128, &want);
+        stp_scene_free(&scene);
+    }
 
     /* a bad controller: refused before the panel is touched */
     spi_sim_scramble(sim, 7);
@@ -181,7 +129,7 @@ static void test_cli_render_sharp(void **state)
     if (*v)
         fail_msg("protocol violations: %s", v);
     g_free(v);
-    assert_glass(sim, &want, "cli-sharp-tetra");
+    spi_assert_glass(sim, &want, "cli-sharp-tetra");
 
     stp_posix_frame_free(&want);
     spi_sim_free(sim);
