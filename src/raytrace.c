@@ -44,6 +44,7 @@ struct stp_raytracer {
     stp_lighting lighting;
     const stp_rt_material *materials;
     uint32_t material_count;
+    uint32_t max_material; /* the largest material index of the objects */
     int max_depth;
     stp_fix min_weight;
     int levels, colour, has_hierarchy;
@@ -318,6 +319,9 @@ static stp_rt_object *new_object(stp_raytracer *rt, int kind, uint32_t material)
 
 static void commit_object(stp_raytracer *rt)
 {
+    uint32_t m = rt->mem.objects[rt->objects].material;
+    if (rt->objects == 0 || m > rt->max_material)
+        rt->max_material = m;
     rt->objects++;
     rt->has_hierarchy = 0;
 }
@@ -1373,13 +1377,11 @@ static void primary_ray(const stp_raytracer *rt, uint32_t x, uint32_t y, rt_ray 
     *tmin -= 1; /* hits at t > tmin: the hither plane itself counts */
 }
 
+/* Every object's material is in the table (kept as a running maximum, so
+ * a pixel's trace does not walk the objects). */
 static int check_materials(const stp_raytracer *rt)
 {
-    uint32_t i;
-    for (i = 0; i < rt->objects; i++)
-        if (rt->mem.objects[i].material >= rt->material_count)
-            return STP_ERR_ARG;
-    return STP_OK;
+    return rt->objects == 0 || rt->max_material < rt->material_count ? STP_OK : STP_ERR_ARG;
 }
 
 static void trace_pixel(stp_raytracer *rt, uint32_t x, uint32_t y, const rt_colour *bg,
