@@ -1154,6 +1154,30 @@ static stp_fix absorb(stp_fix a, int64_t d)
     return stp_fix_exp2((stp_fix)-e);
 }
 
+/* A reflected (side 1) or transmitted (side -1) ray from hit h in unit
+ * direction dir, of weight w: what it sees, times w and, when it travels
+ * inside the sphere it starts on, e^(-a d) over its length, is added to
+ * out. */
+static void secondary(stp_raytracer *rt, const rt_hit *h, const int32_t n_out[3],
+                      const int32_t n_geo[3], int side, const int32_t dir[3], int depth,
+                      stp_fix weight, stp_fix w, stp_fix absorption, const rt_colour *background,
+                      rt_colour *out)
+{
+    const stp_rt_object *ob = &rt->mem.objects[h->object];
+    stp_fix a = ob->kind == KIND_SPHERE && dot_dd(dir, n_out) < 0 ? absorption : 0;
+    int64_t t_next = 0;
+    rt_ray r;
+    rt_colour v;
+    int c, channels = rt->colour ? 3 : 1;
+    offset_ray(&r, h->p, n_geo, side, dir);
+    trace(rt, &r, 0, skip_for(rt, h->object, n_out, dir), depth + 1, stp_fix_mul(weight, w), a, 0,
+          background, &v, &t_next);
+    if (a > 0)
+        w = stp_fix_mul(w, absorb(a, t_next));
+    for (c = 0; c < channels; c++)
+        out->c[c] = stp_fix_add(out->c[c], stp_fix_mul(w, v.c[c]));
+}
+
 /* The light the surface hit by `ray` at h sends back along it. */
 static void shade_hit(stp_raytracer *rt, const rt_ray *ray, const rt_hit *h, int depth,
                       stp_fix weight, int parallel_primary, const rt_colour *background,
@@ -1268,37 +1292,17 @@ static void shade_hit(stp_raytracer *rt, const rt_ray *ray, const rt_hit *h, int
             }
         }
         if (w_r > 0 && stp_fix_mul(weight, w_r) >= rt->min_weight) {
-            rt_ray r;
-            rt_colour v;
-            int64_t dn = dot_dd(ray->d, n_shade), vv[3], t_next = 0;
+            int64_t dn = dot_dd(ray->d, n_shade), vv[3];
             int32_t rdir[3];
             for (j = 0; j < 3; j++)
                 vv[j] = ray->d[j] - round_shift(2 * dn * n_shade[j], 30);
-            if (unit_q30(vv[0], vv[1], vv[2], rdir)) {
-                offset_ray(&r, h->p, n_geo, 1, rdir);
-                /* a ray reflected inside a sphere travels through it */
-                stp_fix a = ob->kind == KIND_SPHERE && dot_dd(rdir, n_out) < 0 ? mat->absorption : 0;
-                trace(rt, &r, 0, skip_for(rt, h->object, n_out, rdir), depth + 1,
-                      stp_fix_mul(weight, w_r), a, 0, background, &v, &t_next);
-                if (a > 0)
-                    w_r = stp_fix_mul(w_r, absorb(a, t_next));
-                for (c = 0; c < channels; c++)
-                    out->c[c] = stp_fix_add(out->c[c], stp_fix_mul(w_r, v.c[c]));
-            }
+            if (unit_q30(vv[0], vv[1], vv[2], rdir))
+                secondary(rt, h, n_out, n_geo, 1, rdir, depth, weight, w_r, mat->absorption,
+                          background, out);
         }
-        if (transmit) {
-            rt_ray r;
-            rt_colour v;
-            int64_t t_next = 0;
-            stp_fix a = ob->kind == KIND_SPHERE && dot_dd(tdir, n_out) < 0 ? mat->absorption : 0;
-            offset_ray(&r, h->p, n_geo, -1, tdir);
-            trace(rt, &r, 0, skip_for(rt, h->object, n_out, tdir), depth + 1,
-                  stp_fix_mul(weight, w_t), a, 0, background, &v, &t_next);
-            if (a > 0)
-                w_t = stp_fix_mul(w_t, absorb(a, t_next));
-            for (c = 0; c < channels; c++)
-                out->c[c] = stp_fix_add(out->c[c], stp_fix_mul(w_t, v.c[c]));
-        }
+        if (transmit)
+            secondary(rt, h, n_out, n_geo, -1, tdir, depth, weight, w_t, mat->absorption,
+                      background, out);
     }
 done:
     for (c = 0; c < channels; c++)
