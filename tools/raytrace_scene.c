@@ -23,13 +23,19 @@ static double seconds_now(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
+uint32_t stp_tool_rt_material(const stp_scene *scene, int material)
+{
+    return material >= 0 && (size_t)material < scene->material_count
+               ? (uint32_t)material
+               : (uint32_t)scene->material_count;
+}
+
 int stp_tool_rt_build(const stp_scene *scene, const stp_tool_options *opt, stp_tool_rt *t,
                       stp_tool_stats *stats, char *err, size_t err_size)
 {
     stp_rt_memory mem;
     stp_rt_material *materials = 0;
     size_t objects = 0, points = 0, i, material_count;
-    uint32_t default_material;
     int status;
     double t0;
 
@@ -55,7 +61,6 @@ int stp_tool_rt_build(const stp_scene *scene, const stp_tool_options *opt, stp_t
     }
     /* the scene's materials, then a default for polygons without one */
     material_count = scene->material_count + 1;
-    default_material = (uint32_t)scene->material_count;
     materials = calloc(material_count, sizeof *materials);
     mem.objects = calloc(objects, sizeof *mem.objects);
     mem.object_capacity = (uint32_t)objects;
@@ -99,9 +104,7 @@ int stp_tool_rt_build(const stp_scene *scene, const stp_tool_options *opt, stp_t
     }
     for (i = 0; i < scene->prim_count; i++) {
         const stp_scene_prim *pr = &scene->prims[i];
-        uint32_t m = pr->material >= 0 && (size_t)pr->material < scene->material_count
-                         ? (uint32_t)pr->material
-                         : default_material;
+        uint32_t m = stp_tool_rt_material(scene, pr->material);
         /* NFF: a negative radius only turns the tessellation's normals
          * inwards; the ray tracer's lighting is two-sided anyway */
         double rb = pr->base_radius < 0 ? -pr->base_radius : pr->base_radius;
@@ -124,9 +127,7 @@ int stp_tool_rt_build(const stp_scene *scene, const stp_tool_options *opt, stp_t
     for (i = 0; i < scene->polygon_count; i++) {
         const stp_scene_polygon *p = &scene->polygons[i];
         stp_vec3 v[STP_MAX_POLYGON_VERTICES], vn[STP_MAX_POLYGON_VERTICES];
-        uint32_t m = p->material >= 0 && (size_t)p->material < scene->material_count
-                         ? (uint32_t)p->material
-                         : default_material;
+        uint32_t m = stp_tool_rt_material(scene, p->material);
         int k;
         if (p->prim >= 0)
             continue;

@@ -105,6 +105,11 @@ int stp_tool_rt_build(const stp_scene *scene, const stp_tool_options *opt, stp_t
                       stp_tool_stats *stats, char *err, size_t err_size);
 void stp_tool_rt_free(stp_tool_rt *t);
 
+/* The ray tracer's material slot of a scene material index: the index
+ * itself when it names one of the scene's materials, else the default
+ * material that follows them (scene->material_count). */
+uint32_t stp_tool_rt_material(const stp_scene *scene, int material);
+
 /* Ray-trace scene onto port (raytrace_scene.c; opt->raytrace is implied).
  * Returns 0, or -1 with a message in err. */
 int stp_tool_raytrace(const stp_scene *scene, const stp_tool_options *opt, stp_port *port,

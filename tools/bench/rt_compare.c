@@ -22,23 +22,14 @@ static double dfix(stp_fix v)
 }
 
 /* a scene point as the core got it, in double */
-static ref_vec3 dvec(stp_scene_vec3 v)
-{
-    stp_vec3 f = stp_tool_vec3(v);
-    ref_vec3 r;
-    r.x = dfix(f.x);
-    r.y = dfix(f.y);
-    r.z = dfix(f.z);
-    return r;
-}
-
 static ref_vec3 dvec_fix(stp_vec3 f)
 {
-    ref_vec3 r;
-    r.x = dfix(f.x);
-    r.y = dfix(f.y);
-    r.z = dfix(f.z);
-    return r;
+    return ref_v3(dfix(f.x), dfix(f.y), dfix(f.z));
+}
+
+static ref_vec3 dvec(stp_scene_vec3 v)
+{
+    return dvec_fix(stp_tool_vec3(v));
 }
 
 /* The reference given the core's inputs (t from stp_tool_rt_build). */
@@ -51,7 +42,6 @@ static ref_rt *reference_of(const stp_scene *scene, const stp_tool_options *opt,
     ref_lighting l;
     size_t i;
     int j, k;
-    int default_material = (int)scene->material_count;
     if (!ref || !table) {
         ref_rt_free(ref);
         free(table);
@@ -88,8 +78,7 @@ static ref_rt *reference_of(const stp_scene *scene, const stp_tool_options *opt,
     (void)ref_rt_set_recursion(ref, opt->rt_depth, dfix(stp_tool_fix(opt->rt_min_weight)));
     for (i = 0; i < scene->prim_count; i++) {
         const stp_scene_prim *pr = &scene->prims[i];
-        int m = pr->material >= 0 && (size_t)pr->material < scene->material_count ? pr->material
-                                                                                  : default_material;
+        int m = (int)stp_tool_rt_material(scene, pr->material);
         double rb = dfix(stp_tool_fix(fabs(pr->base_radius)));
         double ra = dfix(stp_tool_fix(fabs(pr->apex_radius)));
         if (pr->kind == STP_SCENE_SPHERE)
@@ -100,8 +89,7 @@ static ref_rt *reference_of(const stp_scene *scene, const stp_tool_options *opt,
     for (i = 0; i < scene->polygon_count; i++) {
         const stp_scene_polygon *p = &scene->polygons[i];
         ref_vec3 vv[STP_MAX_POLYGON_VERTICES], vn[STP_MAX_POLYGON_VERTICES];
-        int m = p->material >= 0 && (size_t)p->material < scene->material_count ? p->material
-                                                                                : default_material;
+        int m = (int)stp_tool_rt_material(scene, p->material);
         if (p->prim >= 0 || p->count > STP_MAX_POLYGON_VERTICES)
             continue;
         for (k = 0; k < p->count; k++) {
