@@ -1054,59 +1054,95 @@ static int nearest_hit(stp_raytracer *rt, const rt_ray *ray, int64_t tmin, uint3
     return h->object != NO_SKIP;
 }
 
+/* The transparent objects a shadow ray crosses, by object index, so their
+ * transmissions are multiplied in index order: fixed-point products round,
+ * and the order the hierarchy meets objects in must not change a pixel.
+ * Beyond RT_CROSSED_MAX of them (only with that many transparent objects
+ * between a point and a light) the rest fold into `extra` in the order met. */
+#define RT_CROSSED_MAX 16
+typedef struct rt_crossed {
+    uint32_t count;
+    uint32_t index[RT_CROSSED_MAX];
+    stp_fix t[RT_CROSSED_MAX];
+    stp_fix extra;
+} rt_crossed;
+
+/* Test object idx against a shadow ray ending at dist: 0 when an opaque
+ * object blocks it, else 1 (a transparent one crossed is recorded). */
+static int shadow_test(stp_raytracer *rt, uint32_t idx, const rt_ray *ray, int64_t dist,
+                       rt_crossed *cr)
+{
+    rt_hit h;
+    stp_fix t;
+    uint32_t k;
+    h.t = dist;
+    h.object = NO_SKIP;
+    test_object(rt, idx, ray, 0, &h);
+    if (h.object == NO_SKIP)
+        return 1;
+    t = rt->materials[rt->mem.objects[idx].material].transmission;
+    if (t <= 0)
+        return 0;
+    if (cr->count == RT_CROSSED_MAX) {
+        cr->extra = stp_fix_mul(cr->extra, t);
+        return 1;
+    }
+    for (k = cr->count; k > 0 && cr->index[k - 1] > idx; k--) {
+        cr->index[k] = cr->index[k - 1];
+        cr->t[k] = cr->t[k - 1];
+    }
+    cr->index[k] = idx;
+    cr->t[k] = t;
+    cr->count++;
+    return 1;
+}
+
 /* The light a shadow ray lets through from its origin to distance dist:
  * the product of the transmissions of the objects it crosses (once per
- * object), 0 at the first opaque one. */
+ * object, in index order), 0 at the first opaque one. */
 static stp_fix visibility(stp_raytracer *rt, const rt_ray *ray, int64_t dist, uint32_t skip)
 {
     stp_fix vis = ONE;
+    rt_crossed cr;
     rt_slab slab;
     uint32_t stack[STACK_MAX], top = 0, i;
     int64_t enter, leave;
     rt->stats.shadow_rays++;
+    cr.count = 0;
+    cr.extra = ONE;
     if (!rt->has_hierarchy) {
-        for (i = 0; i < rt->objects && vis > 0; i++) {
-            rt_hit h;
-            if (i == skip)
-                continue;
-            h.t = dist;
-            h.object = NO_SKIP;
-            test_object(rt, i, ray, 0, &h);
-            if (h.object != NO_SKIP)
-                vis = stp_fix_mul(vis, rt->materials[rt->mem.objects[i].material].transmission);
-        }
-        return vis;
-    }
-    slab_setup(ray, &slab);
-    rt->stats.box_tests++;
-    if (box_range(ray, &slab, rt->mem.nodes[0].lo, rt->mem.nodes[0].hi, &enter, &leave) && leave > 0)
-        stack[top++] = 0;
-    while (top > 0 && vis > 0) {
-        const stp_rt_node *node = &rt->mem.nodes[stack[--top]];
-        if (node->count > 0) {
-            uint32_t k;
-            for (k = node->first; k < node->first + node->count && vis > 0; k++) {
-                rt_hit h;
-                uint32_t idx = rt->mem.order[k];
-                if (idx == skip)
-                    continue;
-                h.t = dist;
-                h.object = NO_SKIP;
-                test_object(rt, idx, ray, 0, &h);
-                if (h.object != NO_SKIP)
-                    vis = stp_fix_mul(vis, rt->materials[rt->mem.objects[idx].material].transmission);
-            }
-        } else {
-            int c;
-            for (c = 0; c < 2; c++) {
-                const stp_rt_node *ch = &rt->mem.nodes[node->first + (uint32_t)c];
-                rt->stats.box_tests++;
-                if (box_range(ray, &slab, ch->lo, ch->hi, &enter, &leave) && leave > 0 &&
-                    enter <= dist)
-                    stack[top++] = node->first + (uint32_t)c;
+        for (i = 0; i < rt->objects; i++)
+            if (i != skip && !shadow_test(rt, i, ray, dist, &cr))
+                return 0;
+    } else {
+        slab_setup(ray, &slab);
+        rt->stats.box_tests++;
+        if (box_range(ray, &slab, rt->mem.nodes[0].lo, rt->mem.nodes[0].hi, &enter, &leave) &&
+            leave > 0)
+            stack[top++] = 0;
+        while (top > 0) {
+            const stp_rt_node *node = &rt->mem.nodes[stack[--top]];
+            if (node->count > 0) {
+                uint32_t k;
+                for (k = node->first; k < node->first + node->count; k++)
+                    if (rt->mem.order[k] != skip &&
+                        !shadow_test(rt, rt->mem.order[k], ray, dist, &cr))
+                        return 0;
+            } else {
+                int c;
+                for (c = 0; c < 2; c++) {
+                    const stp_rt_node *ch = &rt->mem.nodes[node->first + (uint32_t)c];
+                    rt->stats.box_tests++;
+                    if (box_range(ray, &slab, ch->lo, ch->hi, &enter, &leave) && leave > 0 &&
+                        enter <= dist)
+                        stack[top++] = node->first + (uint32_t)c;
+                }
             }
         }
     }
+    for (i = 0; i < cr.count; i++)
+        vis = stp_fix_mul(vis, cr.t[i]);
+    vis = stp_fix_mul(vis, cr.extra);
     return vis > 0 ? vis : 0;
 }
 

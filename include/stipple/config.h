@@ -105,7 +105,9 @@
 #endif
 
 /* Deepest recursion the ray tracer accepts (stp_rt_set_recursion); each
- * level is one stack frame of about 300 bytes. */
+ * level holds about 1.25 KB of stack on Cortex-M0+ (arm-none-eabi-gcc -Os
+ * -fstack-usage: shade_hit 1120 B, secondary 120 B), and the deepest level
+ * about 1 KB more while it searches: depth 4 needs about 6 KB. */
 #ifndef STP_RT_MAX_DEPTH
 #define STP_RT_MAX_DEPTH 8
 #endif
