@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Cross toolchain: Debian's arm-none-eabi-gcc for a Cortex-M without FPU.
 #
 #   cmake -S firmware -B build-fw \

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Cross toolchain: Debian's riscv64-unknown-elf-gcc building 32-bit code,
 # rv32imac / ilp32 (integer, multiply/divide, atomics, compressed; no FPU),
 # freestanding, no C library (-nostdlib; libgcc for 64-bit division only).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Fails when a firmware image links a floating-point routine (the core must
 # be integer only: no soft float) or a C library allocator/stdio function.
 # cmake -DNM=arm-none-eabi-nm -DIMAGE=fw.elf -P check_image.cmake

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The main job on a fresh machine: install, build, render the Utah teapot from
 # the Standard Procedural Databases to a PBM and print it as a line-printer dump.
 # Usage: scripts/demo.sh [SCENE.nff]

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Install what stipple's build, tests and demo need, from Debian's packages.
 # Idempotent; uses sudo when not root.
 set -eu
 packages=(
-    cmake make gcc libc6-dev           # the build
+    cmake make gcc g++ libc6-dev       # the build (g++: the C++ consumer tests)
     libcmocka-dev                      # the test framework
     netpbm                             # pamvalidate and friends, for the outputs
     imagemagick                        # the reference for the Bayer cells

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The tests on a fresh machine: install, then build and run the whole suite
 # twice, plainly and under AddressSanitizer + UndefinedBehaviorSanitizer.
 # Usage: scripts/test.sh

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Colour models: see include/stipple/colour.h. */
 #include "stipple/colour.h"
 #include "fix_private.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Halftone cells and HALFTONE-FILLIN: see include/stipple/dither.h. */
 #include "stipple/dither.h"
 

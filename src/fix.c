@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fixed-point arithmetic: see include/stipple/fix.h for formats and errors. */
 #include "stipple/fix.h"
 #include "fix_private.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Private helpers of the fixed-point code shared by the core's files. */
 #ifndef STIPPLE_FIX_PRIVATE_H
 #define STIPPLE_FIX_PRIVATE_H

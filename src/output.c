@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Style index to device value (see output_private.h). */
 #include "output_private.h"
 

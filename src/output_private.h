@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Private: how a style index becomes a device value, shared by the polygon
  * raster and the ray tracer so both map shades to pixels identically. */
 #ifndef STIPPLE_OUTPUT_PRIVATE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The display-file interpreter: hidden surfaces, scan conversion and band
  * output.  See the fill rule in include/stipple/render.h. */
 #include "render_private.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The ray tracer (include/stipple/raytrace.h).
  *
  * Number formats (F = STP_FIX_FRAC_BITS):

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The display file: viewing, segments and DISPLAY-FILE-ENTER (transform,
  * SHADE-CHECK, clip, project, store).  See include/stipple/render.h. */
 #include "render_private.h"

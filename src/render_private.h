@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Private: the renderer object and what render.c and raster.c share. */
 #ifndef STIPPLE_RENDER_PRIVATE_H
 #define STIPPLE_RENDER_PRIVATE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* MAKE-SHADE, INTENSITY and gamma tables: see include/stipple/shade.h. */
 #include "stipple/shade.h"
 #include "fix_private.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Status texts: see stp_status_text in include/stipple/render.h. */
 #include "stipple/render.h"
 

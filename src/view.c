@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The view frame (see view_private.h). */
 #include "view_private.h"
 #include "fix_private.h"

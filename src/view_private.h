@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Private: the view frame shared by the polygon renderer and the ray
  * tracer, and the cross product the core's files share. */
 #ifndef STIPPLE_VIEW_PRIVATE_H

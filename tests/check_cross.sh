@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The core builds for small integer-only targets and needs nothing hosted.
 #
 #   tests/check_cross.sh [ROOT [WORK_DIR]]     (ROOT: the checkout, default ..)

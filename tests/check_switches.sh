@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Every build switch of include/stipple/config.h must change the core's object
 # code when flipped (a switch spelled differently in two places would
 # silently do nothing), and the core must build warning-free in each position.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Fetch the "camera" test picture and ImageMagick's ordered dithers of it,
 # for tests/core/test_dither_camera.c (run by CTest as the setup of the
 # fixture "camera").

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Shared by the cmocka tests that load the shared scenes: where things are
  * (CTest's environment: STP_SCENES_DIR, STP_SOURCE_DIR, STP_BINARY_DIR) and

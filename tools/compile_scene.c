@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Host side: a stp_scene compiled to C for firmware.  See compile_scene.h. */
 #define _POSIX_C_SOURCE 200809L
 #include "compile_scene.h"

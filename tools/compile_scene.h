@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Host side: compile a scene into C for a firmware build (`stipple compile`).
  *

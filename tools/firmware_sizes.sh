@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Code and RAM of the lm3s6965evb firmware for every shared scene, minimal
 # configuration (the scene's generated config header) and full library, on
 # Cortex-M0+ and M4: prints a Markdown table of arm-none-eabi-size figures.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared render options: see options.h. */
 #define _POSIX_C_SOURCE 200809L
 #include "options.h"

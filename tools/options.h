@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Command-line options shared by the commands that render a scene (stipple
  * render, stipple compile): one parser and one help text, so the two cannot

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Progress bar port: see progress.h. */
 #define _POSIX_C_SOURCE 200809L
 #include "progress.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * A progress bar on stderr for long renders: a port that passes every band
  * on to another port and, once a frame has taken more than a second, draws

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The README's ray-tracing comparisons: each scene ray-traced at 512x512 in
 # colour (256 levels) and halftoned to PBM, beside the Standard Procedural
 # Databases' own picture, scaled to 256 pixels a panel, as

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Host side: a stp_scene through the core's ray tracer.  See render_scene.h
  * (stp_tool_raytrace).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Host side: a stp_scene through the core.  See render_scene.h. */
 #include "render_scene.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Host side: render a stp_scene through the fixed-point core onto a port.
  * Used by the stipple command, the golden-image tests and the benchmarks.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Host side: shadow maps covering a scene.  See shadows_setup.h. */
 #include "shadows_setup.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Host side: shadow maps that cover a scene, for stp_tool_render and the
  * stipple command (render.h, stp_set_shadow_map).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The stipple command: render a scene, or halftone an image. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -34,6 +35,7 @@ static void usage_main(FILE *to)
             "  bench [SCENE...]      ray tracer speed (rays/s, us/frame, with and without its\n"
             "                        hierarchy) and error against the double reference\n"
             "  help [COMMAND]        show help\n"
+            "  --version             print the version and exit\n"
             "\n"
             "Run 'stipple COMMAND --help' for a command's options.\n");
 }
@@ -510,6 +512,10 @@ int main(int argc, char **argv)
     if (argc < 2) {
         usage_main(stderr);
         return 2;
+    }
+    if (!strcmp(argv[1], "--version") || !strcmp(argv[1], "version")) {
+        printf("stipple %s\n", stp_version());
+        return 0;
     }
     if (!strcmp(argv[1], "render"))
         return cmd_render(argc - 1, argv + 1);

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Regenerate tests/golden/*-128x64.pbm from the current renderer: run after an
 # intended change of the pictures, look at them, and say why in the commit.
 # Usage: tools/update_golden.sh BUILD_DIR [SCENES_DIR]

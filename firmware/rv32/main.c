@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * RISC-V (rv32imac) link check: the core and a compiled scene rendered in
  * bands to a port that discards them.  It proves the freestanding build

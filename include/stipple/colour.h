@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Colour models (SPEC.md section 6), in stp_fix.
  *
@@ -12,6 +13,10 @@
 
 #include <stdint.h>
 #include "stipple/fix.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct stp_rgb {
     stp_fix r, g, b;
@@ -97,5 +102,9 @@ void stp_colour_table_pseudocolour(stp_colour_table *t);
  * stp_gamma_table with 256 levels). */
 void stp_colour_table_apply_gamma(stp_colour_table *t, const uint8_t *gamma_r,
                                   const uint8_t *gamma_g, const uint8_t *gamma_b);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

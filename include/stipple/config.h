@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * stipple build-time configuration: the one place where every switch of the
  * core is defined, with its default.  A firmware build overrides them with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Halftone cells (SPEC.md section 3): ordered-dither threshold matrices and
  * 2x2 pattern cells.  An intensity is an 8-bit drive value 0..255 (after the
@@ -9,6 +10,10 @@
 
 #include <stdint.h>
 #include "stipple/fix.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #define STP_CELL_MAX 16 /* largest cell side */
 
@@ -85,5 +90,9 @@ void stp_halftone_fillin(uint8_t *row, uint32_t x1, uint32_t x2, uint32_t y,
  * grey[x] is ON under the cell at (x, y). */
 void stp_halftone_row(uint8_t *out, const uint8_t *grey, uint32_t width, uint32_t y,
                       const stp_cell *cell);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

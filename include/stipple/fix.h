@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * stp_fix: the core's fixed-point scalar.
  *
@@ -18,6 +19,10 @@
 
 #include <stdint.h>
 #include "stipple/config.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef int32_t stp_fix;
 
@@ -92,5 +97,9 @@ stp_fix stp_vec3_dot(stp_vec3 a, stp_vec3 b);
  * before the root).  A zero vector returns 0 and leaves *out = {0,0,0}: the
  * caller must treat it as "no direction". */
 stp_fix stp_vec3_unity(stp_vec3 v, stp_vec3 *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

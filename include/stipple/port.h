@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The port interface: the only door between the core and a device.
  *
@@ -12,6 +13,10 @@
 
 #include <stddef.h>
 #include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef enum stp_pixel_format {
     /* 1 bit per pixel, rows packed most significant bit first (pixel 0 of a
@@ -48,5 +53,9 @@ typedef struct stp_port {
     stp_flush_fn flush;
     void *user;                   /* the port's own state */
 } stp_port;
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The ray tracer (SPEC.md section 5, last item): one ray per pixel from the
  * eye, the nearest hit shaded with (10.16), a shadow ray to each light, and
@@ -80,6 +81,10 @@
 #include "stipple/port.h"
 #include "stipple/render.h"
 #include "stipple/shade.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* Coordinates (raw stp_fix) must lie within +-2^28: 4096 world units at
  * F = 16, 256 at F = 20. */
@@ -237,5 +242,9 @@ int stp_rt_trace_pixel(stp_raytracer *rt, uint32_t x, uint32_t y, const stp_fix 
  * STP_ERR_ARG, STP_ERR_MEMORY (band too small), STP_ERR_PORT. */
 int stp_rt_render(stp_raytracer *rt, stp_port *port, const stp_output *output, uint8_t *band,
                   size_t band_size, uint32_t band_rows);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

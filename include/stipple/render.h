@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The renderer: display file (SPEC.md section 7), viewing, hidden surfaces,
  * scan conversion and band output.
@@ -30,6 +31,10 @@
 #include "stipple/fix.h"
 #include "stipple/port.h"
 #include "stipple/shade.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #define STP_SUBPIXEL_BITS 4
 
@@ -400,5 +405,9 @@ typedef struct stp_frame_memory {
  * STP_ERR_UNSUPPORTED (a hidden-surface method compiled out), STP_ERR_PORT. */
 int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
                const stp_frame_memory *memory);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

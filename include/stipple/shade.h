@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Shading (SPEC.md section 2), INTENSITY and gamma (section 3).
  *
@@ -12,6 +13,10 @@
 
 #include <stdint.h>
 #include "stipple/fix.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* One point light: position (view or world units, see where it is used),
  * power P_j of (10.16) (the seed's single light has P = 1 - background) and
@@ -153,5 +158,9 @@ int stp_style_inverse(const stp_style_table *table, uint8_t code);
  * levels is out of range (out untouched).  Error: at most 1 of 255 against
  * the real function (tests/test_gamma.c). */
 int stp_gamma_table(uint8_t *out, int levels, stp_fix gamma, stp_fix k);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

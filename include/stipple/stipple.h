@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * stipple: fixed-point renderer of lit polygon scenes for bilevel, grey and
  * colour devices.  Include this for the whole public API.
@@ -12,6 +13,7 @@
 #define STIPPLE_STIPPLE_H
 
 #include "stipple/config.h"
+#include "stipple/version.h"
 #include "stipple/fix.h"
 #include "stipple/shade.h"
 #include "stipple/dither.h"

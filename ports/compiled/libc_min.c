@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The two C library functions the compiler itself may call (struct copies,
  * zeroing) in a build with no C library.  Byte loops: small, and these are
  * never on the renderer's hot paths. */

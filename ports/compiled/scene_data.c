@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Feeding a compiled scene to the core: see stp_scene_data.h.  The order of
  * calls mirrors tools/render_scene.c's stp_tool_render, because the picture
  * depends on it (a style change enters a SHADE instruction). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * A scene compiled to C data (by `stipple compile`, tools/compile_scene.c),
  * and the one routine that feeds it to the core.
@@ -16,6 +17,10 @@
 
 #include <stdint.h>
 #include "stipple/stipple.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* One polygon: count vertices, taken in order from the scene's vertex array
  * (polygon i starts where polygon i-1 ended), and its material's index. */
@@ -59,5 +64,9 @@ int stp_scene_data_enter(const stp_scene_data *scene, void *mem, size_t mem_size
 
 /* The output settings the scene was compiled with. */
 void stp_scene_data_output(const stp_scene_data *scene, stp_output *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Packing and sequencing for the controllers of stp_panel.h. */
 #include "stp_panel.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sequences with steps, SSD16xx RAM windows and memory-LCD line records
  * (stp_panel.h).  Added with the Linux SPI path; the firmware images do not
  * link this file, so panel.c and their panels are unchanged.  Portable C99:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sharp LS013B7DH03: 128x128 memory LCD (a controller-less panel whose
  * serial interface is the "controller"), on SPI without a D/C line.
  *

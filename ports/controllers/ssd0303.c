@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Solomon SSD0303: 132x64 mono OLED controller on I2C (the lm3s811evb's
  * OSRAM 96x16 panel, wired to columns 36..131 of pages 0 and 1).
  *

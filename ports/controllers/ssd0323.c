@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Solomon SSD0323: 128x64 4-bit grey OLED controller on SPI (the
  * lm3s6965evb's panel).  The sequence below is one QEMU 7.2 accepts and that
  * follows the datasheet's order: display off, set up addressing, timing and

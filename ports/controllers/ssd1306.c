@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Solomon SSD1306: 128x64 mono OLED controller, here on 4-wire SPI (SCLK,
  * SDIN, CS# active low, D/C#: low = command, high = data; a command's
  * parameters also go with D/C# low).  SPI mode 0 (data sampled on the rising

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Solomon SSD1680: black/white(/red) e-paper controller (176 sources x 296
  * gates of RAM), on 4-wire SPI: CS# active low, D/C# low for a command byte
  * and high for its parameters and RAM data; SPI mode 0; the datasheet allows

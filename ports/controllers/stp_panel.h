@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Display controllers described as data, and the few routines that turn the
  * core's bands into their command and data bytes.
@@ -13,6 +14,10 @@
 
 #include <stddef.h>
 #include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef enum stp_panel_addressing {
     /* A column window and a row window, each set by a command with start
@@ -194,5 +199,9 @@ uint8_t stp_panel_line_mode(const stp_panel_controller *c, int hold, int vcom);
  * row into out (stp_panel_line_record_bytes bytes); returns that count. */
 size_t stp_panel_line_record(const stp_panel_controller *c, uint32_t y, const uint8_t *mono,
                              uint8_t *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Device specs onto the Linux ports (see stp_device.h).  STP_DEVICE_WITH_USB
  * and STP_DEVICE_WITH_GPIO say which optional pieces this build has. */
 #include "stp_device.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * One output device from one string: the Linux ports (fbdev, USB receipt
  * printer, SPI panel) behind a device spec, for the stipple command's
@@ -54,6 +55,10 @@
 
 #include "stipple/port.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define STP_DEVICE_FORMAT_AUTO (-1)
 
 typedef struct stp_device_options {
@@ -94,5 +99,9 @@ int stp_device_tick(stp_device *d, char *err, size_t errlen);
 /* Releases the device (an SSD1680 goes to deep sleep when a reset line can
  * wake it; a USB printer is given back to usblp).  d may be NULL. */
 void stp_device_close(stp_device *d);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Panel control lines through libgpiod v2 (see stp_gpio.h). */
 #include "stp_gpio.h"
 

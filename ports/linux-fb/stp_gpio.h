@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Panel control lines through the GPIO character device (libgpiod v2).
  *
@@ -26,6 +27,10 @@
 #define STP_GPIO_H
 
 #include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct stp_gpio_panel_config {
     const char *reset, *dc, *busy, *enable, *backlight, *vcom; /* NULL: absent */
@@ -62,5 +67,9 @@ void stp_gpio_panel_vcom_stop(stp_gpio_panel *p);
 
 /* Stops VCOM, releases the lines (they keep their last level). */
 void stp_gpio_panel_close(stp_gpio_panel *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Linux fbdev port (see stp_linuxfb.h for the rules it follows).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Linux framebuffer (fbdev) port: draws the renderer's bands straight into
  * the memory of /dev/fbN.
@@ -59,6 +60,10 @@
 
 #include "stipple/port.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum stp_linuxfb_bit_order {
     STP_LINUXFB_BITS_AUTO = 0,  /* the kernel's convention (see above) */
     STP_LINUXFB_BITS_LSB_FIRST, /* pixel x at bit x % 8 */
@@ -116,5 +121,9 @@ void stp_linuxfb_clear(stp_linuxfb *fb);
 /* Puts back the colour map and the console mode, unmaps and closes.
  * fb may be NULL. */
 void stp_linuxfb_close(stp_linuxfb *fb);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* SPI panels through spidev (see stp_spipanel.h). */
 #include "stp_spipanel.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * SPI panels with no kernel driver: the display controllers described as
  * data in ports/controllers (stp_panel.h) driven through the spidev
@@ -59,6 +60,10 @@
 
 #include "stipple/port.h"
 #include "stp_panel.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* The panel's control lines.  Every member may be NULL when the line is not
  * wired; stp_spipanel_open refuses a controller that needs a missing one
@@ -136,6 +141,10 @@ void stp_spipanel_close(stp_spipanel *p);
  * defined for users of stipple_spipanel). */
 void stp_spipanel_lines_from_gpio(stp_gpio_panel *g, const stp_gpio_panel_config *cfg,
                                   stp_spipanel_lines *lines);
+#endif
+
+#ifdef __cplusplus
+}
 #endif
 
 #endif

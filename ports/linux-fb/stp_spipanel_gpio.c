@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* stp_spipanel_lines onto stp_gpio_panel (libgpiod v2): the real control
  * lines of an SPI panel.  Built only with libgpiod (see stp_spipanel.h). */
 #include "stp_spipanel.h"

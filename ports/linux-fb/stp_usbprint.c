@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * USB ESC/POS printer port (see stp_usbprint.h).
  */

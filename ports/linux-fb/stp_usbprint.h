@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * USB ESC/POS thermal receipt printer port, through libusb-1.0.
  *
@@ -43,6 +44,10 @@
 
 #include "stipple/port.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct stp_usbprint_options {
     uint16_t vendor_id, product_id; /* both 0: the first printer-class device */
     uint32_t width, height;         /* dots (384: 58 mm paper, 576: 80 mm) */
@@ -82,5 +87,9 @@ const char *stp_usbprint_error(const stp_usbprint *p);
 
 /* Releases the interface, gives it back to usblp, closes.  p may be NULL. */
 void stp_usbprint_close(stp_usbprint *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Text output of STYLE8 frames, the way the seed printed pictures on a line
  * printer: one character per pixel, one line per row.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Atomic file replacement: write a temporary file beside the target, make it
  * durable, rename it over the target.  rename() within one directory is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The frame port: gathers a renderer's bands into one buffer, and the
  * dispatch from a frame to the file writers.

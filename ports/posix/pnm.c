@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Netpbm files: PBM/PGM/PPM writers for frames, and a reader for all six
  * PNM variants into 8-bit samples.  Format reference: the Netpbm manual

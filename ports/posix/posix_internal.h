@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Private to the POSIX port: shared between its source files, not installed.
  */

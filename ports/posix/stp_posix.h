@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * stipple POSIX port: host-side output and input of pictures.
  *
@@ -26,6 +27,10 @@
 
 #include "stipple/port.h"
 #include "stipple/shade.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* ---------------------------------------------------------------- frames */
 
@@ -171,5 +176,9 @@ int stp_posix_read_grey(const char *path, stp_posix_image *img, char *err, size_
 
 /* Frees img's samples and zeroes it.  img may be zeroed or already freed. */
 void stp_posix_image_free(stp_posix_image *img);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The lm3s6965evb's OLED: an SSD0323 on SSI0 (a PL022 at 0x40008000), data/
  * command on PC7 (high = data), and PD0, which QEMU wires to the panel's
  * chip select, held high. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The lm3s811evb's OLED: an SSD0303 at I2C address 0x3D on I2C0.
  *
  * Every I2C write to the controller starts with a control byte: 0x80 (Co = 1,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * stipple firmware for the lm3s6965evb: render the compiled scene in bands
  * onto the SSD0323 OLED, report instruction counts over semihosting, exit.

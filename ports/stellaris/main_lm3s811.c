@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * stipple firmware for the lm3s811evb: render the compiled scene in bands
  * onto the SSD0303 96x16 OLED (I2C), report instruction counts over

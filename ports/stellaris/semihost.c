@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* ARM semihosting and SysTick instruction counting for the Stellaris port. */
 #include "stellaris.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Cortex-M start-up for the Stellaris port: vector table, reset handler, and
  * fault handlers that report over semihosting (a fault under QEMU should end
  * the test with a message, not hang until its timeout). */

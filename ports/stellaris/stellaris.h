@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stellaris (LM3S) bare-metal port: registers, semihosting, instruction
  * counting.  Only what the stipple firmware uses.

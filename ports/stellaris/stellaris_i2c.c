@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Polled I2C master for the Stellaris parts: see stellaris_i2c.h. */
 #include "stellaris_i2c.h"
 #include "stellaris.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Polled I2C master of the Stellaris parts (LM3S811: I2C0 at 0x40020000,
  * SCL on PB2, SDA on PB3).  Writes only: all the firmware's devices are
@@ -12,6 +13,10 @@
 #define STIPPLE_PORTS_STELLARIS_I2C_H
 
 #include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #define STP_I2C0_BASE 0x40020000u
 
@@ -45,5 +50,9 @@ int stp_stellaris_i2c_put(stp_stellaris_i2c *bus, uint8_t byte);
 /* Send the held byte with STOP and end the transfer.  Returns 0 or -1 if
  * any byte of the transfer failed. */
 int stp_stellaris_i2c_end(stp_stellaris_i2c *bus);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # End-to-end checks of the stipple command (run by CTest):
 #  1. every shared scene renders at 128x64 and 512x512 to PBM (raw and plain),
 #     PGM, PPM and text; every PNM passes netpbm's pamvalidate and has the
@@ -23,6 +24,12 @@ ok() { passes=$((passes + 1)); }
 bad() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
 
 command -v pamvalidate >/dev/null || { echo "FAIL: pamvalidate (netpbm) is not installed" >&2; exit 1; }
+
+# --- 0. --version prints the version written in include/stipple/version.h
+header=$(dirname "$0")/../../include/stipple/version.h
+want=$(awk '/^#define STP_VERSION_(MAJOR|MINOR|PATCH) /{v = v (v == "" ? "" : ".") $3} END{print v}' "$header")
+got=$("$stipple" --version)
+if [ "$got" = "stipple $want" ]; then ok; else bad "--version printed '$got', want 'stipple $want'"; fi
 
 # --- 1. every scene, both sizes, every output kind
 for nff in "$scenes"/*.nff; do

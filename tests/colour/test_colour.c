@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Colour models against the seed (SPEC.md section 6): the worked monitor
  * matrix (10.35) and its inverse (10.36) to three decimals, YIQ (10.38), and

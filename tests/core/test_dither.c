@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Halftone cells and HALFTONE-FILLIN (include/stipple/dither.h): Bayer
  * thresholds against ImageMagick's published rank matrices, the seed's 2x2

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ImageMagick check: stp_halftone_row with stp_cell_bayer(n) on the 8-bit
  * "camera" picture gives exactly the pixels of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Property tests of the fixed-point layer (include/stipple/fix.h) against
  * double (or exact 64/128-bit integer) arithmetic, with a fixed-seed PRNG so

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The renderer through its public API (include/stipple/render.h): the fill
  * rule, hidden surfaces, back faces, bands, the display file and segments,

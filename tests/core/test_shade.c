@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Shading, INTENSITY, style tables and gamma (include/stipple/shade.h)
  * against the double-precision reference tests/reference/shade_ref.c, which

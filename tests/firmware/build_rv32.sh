@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # RISC-V check: the core and a compiled scene cross-compiled for rv32imac
 # with the firmware project's own checks (no soft float, no C library,
 # warnings are errors) and linked into firmware/rv32's image.

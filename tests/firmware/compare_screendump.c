@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * compare_screendump DUMP.ppm HOST.pbm [SCALE]
  *

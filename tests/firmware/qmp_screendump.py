@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """QMP client for the firmware test (Python standard library only).
 
 qmp_screendump.py SOCKET LOG DUMP TIMEOUT PID [SERIAL_SOCKET]

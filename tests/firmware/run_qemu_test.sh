@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # End-to-end firmware test: build a board's firmware for SCENE with the
 # cross toolchain, run it in QEMU, take a screendump of the OLED over QMP and
 # compare it pixel for pixel with `stipple render` of the same scene through

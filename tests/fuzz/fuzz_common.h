@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Shared by the libFuzzer targets in this folder: a reader that turns the
  * fuzz input into numbers (past the end it yields zeros, so every input is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * libFuzzer target: the display file and its interpreter, through the public
  * API of include/stipple/render.h (it offers no way to load raw

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer target: the OFF reader (stp_scene_parse with format "off").
  * The input is the file text; see fuzz_scene.h for what is checked. */
 #include "fuzz_scene.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * libFuzzer target: the PNM reader of the POSIX port (stp_posix_read_pnm and
  * stp_posix_read_grey).  The reader takes a path, so each input is written

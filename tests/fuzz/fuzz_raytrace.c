@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * libFuzzer target: the ray tracer on fuzzed scenes.  The input picks a
  * view, lights, materials and up to 24 spheres, cones and polygons (patches

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The body of the scene-reader targets (fuzz_nff.c, fuzz_obj.c, fuzz_off.c):
  * the fuzz input is the file text, parsed from memory with

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Build the libFuzzer targets with clang in their own build directory and run
 # each one over its committed seed corpus for a while; or replay the
 # committed inputs; or add the few inputs that cover new edges to the corpus.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Gouraud shading (SPEC.md section 4) through the public API: shades given
  * per vertex are interpolated along edges and spans; every pixel's shade is

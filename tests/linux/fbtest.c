@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fbtest: the program the Linux framebuffer test runs, both on the host
  * (to produce the expected picture) and, statically linked, inside a QEMU

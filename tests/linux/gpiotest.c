@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gpiotest: the panel control lines (stipple_gpio, libgpiod v2) against the
  * kernel's GPIO simulator (gpio-sim) inside the test guest.

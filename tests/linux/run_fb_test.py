@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """stipple_linuxfb against a real kernel.
 
 Boots Debian's own kernel (linux-image-6.1.*-amd64 of Debian 12, fetched with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Tests of the POSIX port: the frame port's band handling, the PBM/PGM/PPM
  * and ASCII writers (exact bytes, and netpbm's pamvalidate accepting them),

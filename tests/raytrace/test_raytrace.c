@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The core's ray tracer (include/stipple/raytrace.h):
  *   - every shared scene against the double-precision reference ray tracer

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The double-precision reference ray tracer (tools/bench/raytrace_ref.h)
  * against scenes whose answer is worked out here by hand: hit distances

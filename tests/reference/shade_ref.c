@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Double-precision reference of SPEC.md sections 2 and 3: see shade_ref.h. */
 #include "shade_ref.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Double-precision reference of the shading system, written from SPEC.md
  * section 2 (MAKE-SHADE, Algorithm 10.5, extended to several lights as in

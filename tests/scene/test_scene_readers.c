@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Tests of the scene readers: the shared SPD scenes with their known
  * counts, tessellation geometry, OBJ and OFF, on-disk fixtures, and a table

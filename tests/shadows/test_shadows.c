@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Shadows by a shadow Z buffer per light (SPEC.md section 5; render.h,
  * stp_set_shadow_map) through the public API.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The expected picture and the glass comparison: see spi_expect.h. */
 #include <setjmp.h>
 #include <stdarg.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * What the emulated panels of tests/spi must show, shared by test_spi and
  * test_spi_cli: the scene's MONO1 render in memory, and the comparison of

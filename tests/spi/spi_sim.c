@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The emulated SPI panels (see spi_sim.h). */
 #include "spi_sim.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Emulated SPI panels for umockdev: a character device /dev/spidev0.0 whose
  * ioctl handler (in-process, like tests/usb/printer_sim.c) behaves as the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * stp_device.c compiled as a build without libusb and libgpiod would compile
  * it (no STP_DEVICE_WITH_USB, no STP_DEVICE_WITH_GPIO): USB specs and SPI

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * SPI panels through the real stp_spipanel and stp_device code, talking
  * spidev ioctls to emulated controllers (spi_sim.c) under umockdev; the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The stipple command against an emulated SPI panel: `stipple render SCENE
  * --device spi:...` runs as a child process; it inherits umockdev's preload

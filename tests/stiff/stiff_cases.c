@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The stiff and extreme suite: see stiff_cases.h. */
 #include "stiff_cases.h"
 

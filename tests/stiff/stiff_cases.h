@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The stiff and extreme suite (issue 3, item 3) as a table shared by the
  * cmocka tests (tests/stiff/test_stiff.c, default configuration) and the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The stiff and extreme suite and the property tests of the shading
  * function (issue 3, items 3 and 4), for the configuration this is built

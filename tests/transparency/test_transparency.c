@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Transparency (SPEC.md section 5, (10.20), (10.21)) through the public API:
  * an opaque square behind a transparent one; in the overlap the pixel must

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The emulated USB receipt printer (see printer_sim.h). */
 #include "printer_sim.h"
 

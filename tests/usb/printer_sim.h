@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * An emulated USB ESC/POS receipt printer for umockdev: the sysfs entries of
  * a printer-class device and a usbfs ioctl handler that behaves as the

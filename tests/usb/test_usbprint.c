@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The USB receipt printer port through the real libusb-1.0, talking usbfs to
  * an emulated printer (printer_sim.c) under umockdev.  Run under

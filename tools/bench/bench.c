@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * stipple benchmark: error against run time for one numeric configuration.
  *

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Instruction counts of the lm3s6965evb firmware (issue 7 item 5), for the
 # Cortex-M columns of the benchmark (issue 3).
 #

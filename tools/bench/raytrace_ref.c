@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Double-precision reference ray tracer: see raytrace_ref.h. */
 #include "raytrace_ref.h"
 

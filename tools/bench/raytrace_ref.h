@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Double-precision reference ray tracer (host only).
  *

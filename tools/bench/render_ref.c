@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Double-precision reference renderer: see render_ref.h. */
 #include "render_ref.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Double-precision reference renderer (host only).
  *

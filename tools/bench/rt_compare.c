@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The ray tracer against its reference, and its speed: see rt_compare.h. */
 #define _POSIX_C_SOURCE 200809L
 #include "rt_compare.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The ray tracer against its double-precision reference, and its speed
  * (host only).  Used by tests/raytrace, by the error-against-run-time

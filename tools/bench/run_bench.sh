@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Error against run time of every numeric configuration of the core.
 #
 # Runs each bench_<cfg> executable (built by tools/bench/CMakeLists.txt, one

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * NFF (Neutral File Format, Eric Haines' SPD) reader.  Line oriented: each
  * entity's fields sit on the lines the format gives them, extra whitespace

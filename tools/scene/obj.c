@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Wavefront OBJ reader: v, vn and f (v, v/vt, v//vn, v/vt/vn, negative
  * indices relative to the data read so far).  Texture coordinates are only

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * OFF reader (Geomview Object File Format, ASCII): header OFF, COFF, NOFF or
  * CNOFF (the counts may follow on the same line), "nv nf [ne]", nv vertex

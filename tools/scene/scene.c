@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Scene model: options, loading by extension, freeing, and the scanner,
  * number parsing and growable arrays shared by the NFF, OBJ and OFF readers.

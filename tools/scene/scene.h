@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Host-side scene model and readers (NFF, Wavefront OBJ, OFF).
  * Host code: may use libc, the heap and double precision.  The stipple

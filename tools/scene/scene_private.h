@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Internals shared by the scene readers: a line/token scanner over a memory
  * buffer, strict number parsing, error formatting and the growable scene
