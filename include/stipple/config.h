@@ -3,15 +3,23 @@
  * stipple build-time configuration: the one place where every switch of the
  * core is defined, with its default.  A firmware build overrides them with
  * -D on the compiler line or by defining STP_CONFIG_HEADER to the name of a
- * header of its own, included first.  tests/check_switches.sh builds the
- * core with each switch flipped and checks the object code changes, so a
- * switch spelled differently here and in the code cannot go unnoticed.
+ * header of its own, included first.  Numeric switches must be plain
+ * decimal literals (config_guard.h pastes them into a symbol name).
+ * tests/check_switches.sh builds the core with each switch flipped and
+ * checks the object code changes, so a switch spelled differently here and
+ * in the code cannot go unnoticed.
  */
 #ifndef STIPPLE_CONFIG_H
 #define STIPPLE_CONFIG_H
 
 #ifdef STP_CONFIG_HEADER
 #include STP_CONFIG_HEADER
+#endif
+/* CMake's STP_CONFIG_HEADER option installs the header under this name and
+ * passes -DSTP_USER_CONFIG=1 to the library and its consumers (stipple.pc,
+ * stipple::core). */
+#if defined(STP_USER_CONFIG) && STP_USER_CONFIG
+#include "stipple/user_config.h"
 #endif
 
 /* Fractional bits of stp_fix (the core's one scalar type, a signed Q format

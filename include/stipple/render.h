@@ -27,6 +27,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "stipple/config.h"
+#include "stipple/config_guard.h"
 #include "stipple/dither.h"
 #include "stipple/fix.h"
 #include "stipple/port.h"

@@ -13,6 +13,7 @@
 #define STIPPLE_STIPPLE_H
 
 #include "stipple/config.h"
+#include "stipple/config_guard.h"
 #include "stipple/version.h"
 #include "stipple/fix.h"
 #include "stipple/shade.h"
