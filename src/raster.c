@@ -638,7 +638,12 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
     uint32_t y0, polygons = 0;
     int background_style;
     stp_hidden hidden;
-    if (r == 0 || port == 0 || output == 0 || mem == 0 || port->flush == 0 || mem->band == 0)
+    stp_output default_output;
+    if (output == 0) {
+        (void)stp_output_default(&default_output);
+        output = &default_output;
+    }
+    if (r == 0 || port == 0 || mem == 0 || port->flush == 0 || mem->band == 0)
         return STP_ERR_ARG;
     if (port->width != r->width || port->height != r->height)
         return STP_ERR_ARG;

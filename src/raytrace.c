@@ -16,6 +16,7 @@
  * Where a product can exceed 64 bits (the cone's quadratic), lengths are
  * scaled down by a power of two first (the quadratic is homogeneous in
  * length) and mul_shift forms the 128-bit product's high part. */
+#include "align_private.h"
 #include "stipple/raytrace.h"
 
 #include "fix_private.h"
@@ -181,6 +182,12 @@ size_t stp_rt_size(void)
 /* keeps STP_RAYTRACER_BYTES honest: a negative array size if it is short */
 typedef char stp_rt_bytes_bound_check[(sizeof(stp_raytracer) <= STP_RAYTRACER_BYTES) ? 1 : -1];
 
+/* C99 has no alignof: a type's alignment is its offset after a char. */
+struct raytracer_alignment {
+    char c;
+    stp_raytracer rt;
+};
+
 stp_raytracer *stp_rt_create(void *mem, size_t mem_size, const stp_rt_memory *m, uint32_t width,
                              uint32_t height)
 {
@@ -191,6 +198,9 @@ stp_raytracer *stp_rt_create(void *mem, size_t mem_size, const stp_rt_memory *m,
         width > 32767 || height > 32767)
         return 0;
     if ((m->objects == 0 && m->object_capacity > 0) || (m->points == 0 && m->point_capacity > 0))
+        return 0;
+    /* misaligned, the object would fault later on a Cortex-M0 */
+    if (!stp_is_aligned(mem, offsetof(struct raytracer_alignment, rt)))
         return 0;
     for (i = 0; i < sizeof(stp_raytracer); i++)
         ((uint8_t *)mem)[i] = 0;

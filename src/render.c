@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The display file: viewing, segments and DISPLAY-FILE-ENTER (transform,
  * SHADE-CHECK, clip, project, store).  See include/stipple/render.h. */
+#include "align_private.h"
 #include "render_private.h"
 #include "view_private.h"
 
@@ -17,6 +18,17 @@ size_t stp_renderer_size(void)
 }
 
 static void world_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out);
+static void close_implicit_segment(stp_renderer *r);
+
+/* C99 has no alignof: a type's alignment is its offset after a char. */
+struct renderer_alignment {
+    char c;
+    stp_renderer r;
+};
+struct instr_alignment {
+    char c;
+    stp_instr i;
+};
 
 stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display_file,
                                   uint32_t capacity, uint32_t width, uint32_t height)
@@ -26,6 +38,11 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     int i;
     if (mem == 0 || mem_size < sizeof(stp_renderer) || display_file == 0 || capacity == 0 ||
         width < 1 || height < 1 || width > 32767 || height > 32767)
+        return 0;
+    /* a misaligned object would fault on the first 64-bit access on a
+     * Cortex-M0 rather than fail here */
+    if (!stp_is_aligned(mem, offsetof(struct renderer_alignment, r)) ||
+        !stp_is_aligned(display_file, offsetof(struct instr_alignment, i)))
         return 0;
     r->df = display_file;
     r->capacity = capacity;
@@ -81,6 +98,7 @@ int stp_set_view(stp_renderer *r, const stp_view *v)
     status = stp_view_frame_make(v, r->width, r->height, &vf);
     if (status != STP_OK)
         return status;
+    close_implicit_segment(r);
     r->focal = vf.focal;
     r->from = vf.from;
     r->forward = vf.forward;
@@ -101,20 +119,28 @@ int stp_set_view(stp_renderer *r, const stp_view *v)
     return STP_OK;
 }
 
-void stp_set_light(stp_renderer *r, stp_vec3 position, stp_fix brightness, stp_fix background)
+int stp_set_light(stp_renderer *r, stp_vec3 position, stp_fix brightness, stp_fix background)
 {
-    stp_lighting *l = &r->user_lighting;
-    l->background = stp_fix_clamp(background, 0, ONE);
-    l->brightness = brightness < 0 ? 0 : brightness;
+    stp_lighting *l;
+    if (r == 0 || brightness < 0 || background < 0 || background > ONE)
+        return STP_ERR_ARG;
+    close_implicit_segment(r);
+    l = &r->user_lighting;
+    l->background = background;
+    l->brightness = brightness;
     l->count = 1;
     l->lights[0].position = position;
     l->lights[0].power = ONE - l->background;
+    r->shading = 1;
+    return STP_OK;
 }
 
 int stp_set_lighting(stp_renderer *r, const stp_lighting *lighting)
 {
     if (r == 0 || lighting == 0 || lighting->count < 0 || lighting->count > STP_MAX_LIGHTS)
         return STP_ERR_ARG;
+    close_implicit_segment(r);
+    r->shading = 1;
     r->user_lighting = *lighting;
     r->user_lighting.background = stp_fix_clamp(lighting->background, 0, ONE);
     if (r->user_lighting.brightness < 0)
@@ -122,19 +148,33 @@ int stp_set_lighting(stp_renderer *r, const stp_lighting *lighting)
     return STP_OK;
 }
 
-void stp_set_object_shade(stp_renderer *r, const stp_material *material)
+int stp_set_object_shade(stp_renderer *r, const stp_material *material)
 {
+    int c;
+    if (r == 0 || material == 0 || material->reflectivity < 0 || material->reflectivity > ONE ||
+        material->refraction < 0 || material->gloss < 0 || material->specular < 0)
+        return STP_ERR_ARG;
+    for (c = 0; c < 3; c++)
+        if (material->colour[c] < 0 || material->colour[c] > ONE)
+            return STP_ERR_ARG;
     r->material = *material;
+    return STP_OK;
 }
 
-void stp_set_shading(stp_renderer *r, int on)
+int stp_set_shading(stp_renderer *r, int on)
 {
+    if (r == 0)
+        return STP_ERR_ARG;
     r->shading = on != 0;
+    return STP_OK;
 }
 
-void stp_set_fill_style(stp_renderer *r, int index)
+int stp_set_fill_style(stp_renderer *r, int index)
 {
-    r->fill_style = index < 1 ? 1 : (index > r->levels ? r->levels : index);
+    if (r == 0 || index < 1 || index > r->levels)
+        return STP_ERR_ARG;
+    r->fill_style = index;
+    return STP_OK;
 }
 
 int stp_set_levels(stp_renderer *r, int levels)
@@ -186,9 +226,12 @@ int stp_set_transparency(stp_renderer *r, stp_fix t_min, stp_fix t_max, int powe
 #endif
 }
 
-void stp_set_backface_removal(stp_renderer *r, int on)
+int stp_set_backface_removal(stp_renderer *r, int on)
 {
+    if (r == 0)
+        return STP_ERR_ARG;
     r->backface_removal = on != 0;
+    return STP_OK;
 }
 
 /* ---- segments ---- */
@@ -202,16 +245,21 @@ static int find_segment(const stp_renderer *r, int id)
     return -1;
 }
 
-int stp_segment_create(stp_renderer *r, int id)
+/* A free slot of the segment table, or -1. */
+static int free_segment_slot(const stp_renderer *r)
 {
-    int i, j;
-    if (r == 0 || id < 0 || id > 32767)
-        return STP_ERR_ARG;
-    if (r->open_segment >= 0 || find_segment(r, id) >= 0)
-        return STP_ERR_SEGMENT;
-    for (i = 0; i < STP_MAX_SEGMENTS && r->segments[i].used; i++)
-        ;
-    if (i == STP_MAX_SEGMENTS)
+    int i;
+    for (i = 0; i < STP_MAX_SEGMENTS; i++)
+        if (!r->segments[i].used)
+            return i;
+    return -1;
+}
+
+/* Open segment id (checked by the caller: no segment open, id not in use). */
+static int open_segment(stp_renderer *r, int id)
+{
+    int i = free_segment_slot(r), j;
+    if (i < 0)
         return STP_ERR_FULL;
     r->segments[i].used = 1;
     r->segments[i].open = 1;
@@ -230,6 +278,37 @@ int stp_segment_create(stp_renderer *r, int id)
         world_to_view(r, r->user_lighting.lights[j].position,
                       &r->segment_lighting.lights[j].position);
     return STP_OK;
+}
+
+/* Implicit segments: drawing with no open segment opens one, with the first
+ * free id of -1, -2, ...; it stays open until a segment is created or the
+ * view or the lighting changes (so the next one copies the new lighting). */
+static int open_implicit_segment(stp_renderer *r)
+{
+    int id = -1;
+    while (find_segment(r, id) >= 0)
+        id--; /* at most STP_MAX_SEGMENTS steps */
+    return open_segment(r, id);
+}
+
+static void close_implicit_segment(stp_renderer *r)
+{
+    if (r->open_segment >= 0 && r->segments[r->open_segment].id < 0) {
+        r->segments[r->open_segment].open = 0;
+        r->open_segment = -1;
+    }
+}
+
+int stp_segment_create(stp_renderer *r, int id)
+{
+    if (r == 0 || id < 0 || id > 32767)
+        return STP_ERR_ARG;
+    if ((r->open_segment >= 0 && r->segments[r->open_segment].id >= 0) || find_segment(r, id) >= 0)
+        return STP_ERR_SEGMENT;
+    if (free_segment_slot(r) < 0)
+        return STP_ERR_FULL; /* before ending an implicit one: a failed call changes nothing */
+    close_implicit_segment(r);
+    return open_segment(r, id);
 }
 
 int stp_segment_close(stp_renderer *r)
@@ -444,11 +523,11 @@ static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
     out->y = (int32_t)(y < 0 ? 0 : (y > hq ? hq : y));
 }
 
-static int check_open(const stp_renderer *r)
+static int check_open(stp_renderer *r)
 {
     if (r == 0)
         return STP_ERR_ARG;
-    return r->open_segment < 0 ? STP_ERR_NO_SEGMENT : STP_OK;
+    return r->open_segment < 0 ? open_implicit_segment(r) : STP_OK;
 }
 
 static void append(stp_renderer *r, int32_t op, int32_t x, int32_t y, int32_t z, int32_t shade)
@@ -603,7 +682,7 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n, in
 {
     stp_vec3 normal, centre, eye_dir, *clipped;
     stp_fix n_dot_e, *clipped_shades;
-    int i, m, style, status = check_open(r);
+    int i, m, style, status;
     int32_t colour;
     stp_fix transmission;
     uint32_t attribute;
@@ -611,12 +690,13 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n, in
     stp_instr record[STP_MAX_LIGHTS + 1];
     int records;
 #endif
-    if (status != STP_OK)
-        return status;
-    if (vertices == 0 || n < 3)
-        return n < 3 && n >= 0 ? STP_ERR_DEGENERATE : STP_ERR_ARG;
+    if (r == 0 || vertices == 0 || n < 3)
+        return n < 3 && n >= 0 && r != 0 ? STP_ERR_DEGENERATE : STP_ERR_ARG;
     if (n > STP_MAX_POLYGON_VERTICES)
         return STP_ERR_TOO_MANY_VERTICES;
+    /* an implicit segment is opened only for a call that can draw */
+    if ((status = check_open(r)) != STP_OK)
+        return status;
     for (i = 0; i < n; i++)
         world_to_view(r, vertices[i], &r->clip_a[i]);
     r->last_shade = -1;

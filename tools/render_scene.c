@@ -362,12 +362,15 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
         snprintf(err, err_size, "view: %s", stp_status_text(status));
         goto done;
     }
-    stp_set_shading(r, opt->shading);
+    if ((status = stp_set_shading(r, opt->shading)) != STP_OK ||
+        (status = stp_set_backface_removal(r, opt->backface_removal)) != STP_OK) {
+        snprintf(err, err_size, "shading: %s", stp_status_text(status));
+        goto done;
+    }
     if (opt->colour && (status = stp_set_colour(r, 1)) != STP_OK) {
         snprintf(err, err_size, "colour: %s", stp_status_text(status));
         goto done;
     }
-    stp_set_backface_removal(r, opt->backface_removal);
     if (opt->shadow_resolution > 0 && lighting.count > 0) {
         size_t n = (size_t)opt->shadow_resolution * opt->shadow_resolution * (size_t)lighting.count;
         shadow_maps = malloc(sizeof *shadow_maps * n);
@@ -399,7 +402,11 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
             stp_material_default(&m);
             if (p->material >= 0 && (size_t)p->material < scene->material_count)
                 stp_tool_material(&scene->materials[p->material], opt->colour, &m);
-            stp_set_object_shade(r, &m);
+            if ((status = stp_set_object_shade(r, &m)) != STP_OK) {
+                snprintf(err, err_size, "material of polygon %zu (line %d): %s", i + 1, p->source_line,
+                         stp_status_text(status));
+                goto done;
+            }
             /* NFF's T: the surface transmits up to T facing the eye and T/2
              * at grazing angles, (10.21) with power 2; no thickness known */
             if (opt->transparency) {
@@ -414,7 +421,7 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
                 }
             }
             /* with shading off the material's reflectivity picks the style */
-            stp_set_fill_style(r, stp_intensity_index(m.reflectivity, opt->levels));
+            (void)stp_set_fill_style(r, stp_intensity_index(m.reflectivity, opt->levels)); /* in range */
             last_material = p->material;
         }
         if (p->count > STP_MAX_POLYGON_VERTICES) {

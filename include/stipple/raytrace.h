@@ -160,12 +160,13 @@ typedef union stp_raytracer_storage {
     uint8_t bytes[STP_RAYTRACER_BYTES];
 } stp_raytracer_storage;
 
-/* Create a ray tracer in mem (stp_rt_size() bytes) for a width x height
+/* Create a ray tracer in mem (stp_rt_size() bytes, aligned for int64_t and
+ * pointers: an stp_raytracer_storage or malloc) for a width x height
  * device (1..32767 each) with the scene memory m (copied; the arrays are
  * used in place).  Starts with: the default view of stp_renderer_create,
  * the seed's default lighting, no materials, 16 levels, grey, max depth 4,
  * min weight 1/64, no hierarchy.  Returns NULL for a NULL or too small
- * argument, or STP_WITH_RAYTRACE 0. */
+ * argument, mem not aligned, or STP_WITH_RAYTRACE 0. */
 stp_raytracer *stp_rt_create(void *mem, size_t mem_size, const stp_rt_memory *m, uint32_t width,
                              uint32_t height);
 

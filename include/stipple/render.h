@@ -44,7 +44,8 @@ typedef enum stp_status {
     STP_OK = 0,
     STP_ERR_ARG = -1,          /* a NULL pointer or a value out of its range */
     STP_ERR_FULL = -2,         /* the display file or segment table is full */
-    STP_ERR_NO_SEGMENT = -3,   /* drawing with no open segment */
+    STP_ERR_NO_SEGMENT = -3,   /* unused since 0.3 (drawing opens an implicit
+                                  segment); kept so old code compiles */
     STP_ERR_SEGMENT = -4,      /* no such segment, or one already open */
     STP_ERR_TOO_MANY_VERTICES = -5, /* polygon above STP_MAX_POLYGON_VERTICES */
     STP_ERR_DEGENERATE = -6,   /* polygon with fewer than 3 distinct vertices
@@ -154,40 +155,55 @@ typedef union stp_renderer_storage {
     uint8_t bytes[STP_RENDERER_BYTES];
 } stp_renderer_storage;
 
-/* Create a renderer in mem (stp_renderer_size() bytes, aligned for int64_t)
- * with a display file of capacity instructions in display_file.  The device
- * size is fixed at creation (1..32767 each way) because entering an
- * instruction projects it onto the device.  Everything else starts at the
- * seed's defaults (INITIALIZE-10): light at (0,0,1), brightness 1,
- * background 0, C = 1, R = 1, n = 10, k = 10, shading off, 16 levels,
- * Bayer 4x4 cell, identity gamma, no hidden-surface removal, back faces kept,
- * view from (0,0,-1) at the origin, 90 degrees, hither 2^-8.
- * Returns the handle, or NULL for a NULL or too small argument. */
+/* Create a renderer in mem (stp_renderer_size() bytes, aligned for int64_t
+ * and pointers: an stp_renderer_storage, or memory from malloc) with a
+ * display file of capacity instructions in display_file.  The device size is
+ * fixed at creation (1..32767 each way) because entering an instruction
+ * projects it onto the device.  Everything else starts at the seed's
+ * defaults (INITIALIZE-10): light at (0,0,1), brightness 1, background 0,
+ * C = 1, R = 1, n = 10, k = 10, shading off (on from the first
+ * stp_set_light / stp_set_lighting), 16 levels, Bayer 4x4 cell, identity
+ * gamma, no hidden-surface removal, back faces kept, view from (0,0,-1) at
+ * the origin, 90 degrees, hither 2^-8.
+ * Returns the handle, or NULL for a NULL or too small argument, or mem or
+ * display_file not aligned for their types (checked here: a misaligned
+ * object would fault later on a Cortex-M0).  Linked under a name that spells
+ * the configuration (stipple/config_guard.h). */
 stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display_file,
                                   uint32_t capacity, uint32_t width, uint32_t height);
 
 /* --- viewing and attributes (take effect for instructions entered after) */
 
-/* Set the view.  Returns STP_OK or STP_ERR_VIEW / STP_ERR_ARG. */
+/* Set the view.  Returns STP_OK or STP_ERR_VIEW / STP_ERR_ARG.  Ends an
+ * implicit segment (see segments below). */
 int stp_set_view(stp_renderer *r, const stp_view *view);
 
 /* SET-LIGHT (10.8): one light at (x, y, z) world units with the given
- * brightness (>= 0) and background (clamped to [0, 1]); its power is
- * 1 - background.  Replaces all lights. */
-void stp_set_light(stp_renderer *r, stp_vec3 position, stp_fix brightness, stp_fix background);
+ * brightness (>= 0) and background in [0, 1]; its power is 1 - background.
+ * Replaces all lights, turns shading on (stp_set_shading(r, 0) after it
+ * turns it off again) and ends an implicit segment.  STP_ERR_ARG for NULL or
+ * a value out of range (nothing changed). */
+int stp_set_light(stp_renderer *r, stp_vec3 position, stp_fix brightness, stp_fix background);
 
-/* Set the whole lighting (several lights, positions in world units).
+/* Set the whole lighting (several lights, positions in world units); turns
+ * shading on and ends an implicit segment, as stp_set_light.
  * Returns STP_ERR_ARG for count outside 0..STP_MAX_LIGHTS. */
 int stp_set_lighting(stp_renderer *r, const stp_lighting *lighting);
 
-/* SET-OBJECT-SHADE (10.7) with the specular weight; see stp_material. */
-void stp_set_object_shade(stp_renderer *r, const stp_material *material);
+/* SET-OBJECT-SHADE (10.7) with the specular weight; see stp_material.
+ * STP_ERR_ARG for NULL, reflectivity or a colour share outside [0, 1],
+ * refraction, gloss or specular < 0 (nothing changed; 0 is read as shade.h
+ * says). */
+int stp_set_object_shade(stp_renderer *r, const stp_material *material);
 
-/* SET-SHADING: on (1) or off (0).  Off: polygons take the current style. */
-void stp_set_shading(stp_renderer *r, int on);
+/* SET-SHADING: on (non-zero) or off (0).  Off: polygons take the fill
+ * style.  Off at creation; stp_set_light turns it on.  STP_ERR_ARG for a
+ * NULL r. */
+int stp_set_shading(stp_renderer *r, int on);
 
-/* Fill style used while shading is off, as an INTENSITY index 1..levels. */
-void stp_set_fill_style(stp_renderer *r, int index);
+/* Fill style used while shading is off, as an INTENSITY index 1..levels
+ * (default: levels, the lightest).  STP_ERR_ARG outside (nothing changed). */
+int stp_set_fill_style(stp_renderer *r, int index);
 
 /* Colour shading (10.45) on (1) or off (0, default): polygons entered while
  * it is on are shaded per channel with the material's and the lights'
@@ -215,15 +231,25 @@ int stp_set_transparency(stp_renderer *r, stp_fix t_min, stp_fix t_max, int powe
 /* Number of INTENSITY levels, 2..256 (default 16). */
 int stp_set_levels(stp_renderer *r, int levels);
 
-/* Back-face removal on (1) or off (0, default: back faces are shaded as if
- * seen from their front, which suits open meshes). */
-void stp_set_backface_removal(stp_renderer *r, int on);
+/* Back-face removal on (non-zero) or off (0, default: back faces are shaded
+ * as if seen from their front, which suits open meshes).  STP_ERR_ARG for a
+ * NULL r. */
+int stp_set_backface_removal(stp_renderer *r, int on);
 
-/* --- segments (the display file's grouping) */
+/* --- segments (the display file's grouping)
+ *
+ * Drawing (stp_polygon, stp_move, ...) with no open segment opens an
+ * implicit one, id -1 (or -2, -3, ... while those exist), which collects the
+ * polygons until stp_segment_create, stp_segment_close, stp_set_view,
+ * stp_set_light or stp_set_lighting ends it; the next drawing call opens
+ * another (with the lighting of that moment: COPY-LIGHT).  So a program that
+ * needs no segments never names one.  Implicit segments take slots of
+ * STP_MAX_SEGMENTS and can be deleted or hidden by their ids like others. */
 
-/* Create and open segment id (0..32767).  The current lighting is copied
- * into it (COPY-LIGHT) with light positions in view coordinates.  Errors:
- * STP_ERR_SEGMENT if a segment is open or id exists, STP_ERR_FULL. */
+/* Create and open segment id (0..32767), ending an open implicit segment.
+ * The current lighting is copied into it (COPY-LIGHT) with light positions
+ * in view coordinates.  Errors: STP_ERR_ARG, STP_ERR_SEGMENT if a segment
+ * is open or id exists, STP_ERR_FULL. */
 int stp_segment_create(stp_renderer *r, int id);
 /* Close the open segment (STP_ERR_SEGMENT if none). */
 int stp_segment_close(stp_renderer *r);
@@ -236,7 +262,8 @@ int stp_segment_visibility(stp_renderer *r, int id, int visible);
 /* --- drawing (DISPLAY-FILE-ENTER: transform, shade, project, clip, store) */
 
 /* Move the pen / draw a line to a world point.  Lines are clipped to the
- * hither plane and the window. */
+ * hither plane and the window.  Errors: STP_ERR_ARG, STP_ERR_FULL (the
+ * display file, or no segment slot for an implicit segment). */
 int stp_move(stp_renderer *r, stp_vec3 p);
 int stp_line(stp_renderer *r, stp_vec3 p);
 
@@ -245,9 +272,10 @@ int stp_line(stp_renderer *r, stp_vec3 p);
  * normal (SHADE-CHECK) and a STP_OP_SHADE instruction is entered before
  * it when the style changes.  A polygon wholly clipped away, or a back face
  * with back-face removal on, enters nothing and returns STP_OK.
- * Errors: STP_ERR_NO_SEGMENT, STP_ERR_TOO_MANY_VERTICES, STP_ERR_DEGENERATE
- * (zero Newell normal: repeated/collinear vertices, no area), STP_ERR_FULL
- * (nothing of the polygon is left in the display file). */
+ * Errors: STP_ERR_ARG, STP_ERR_TOO_MANY_VERTICES, STP_ERR_DEGENERATE (zero
+ * Newell normal: repeated/collinear vertices, no area), STP_ERR_FULL
+ * (nothing of the polygon is left in the display file; or no segment slot
+ * for an implicit segment). */
 int stp_polygon(stp_renderer *r, const stp_vec3 *vertices, int n);
 
 /* Smooth (Gouraud) polygons (SPEC.md section 4): like stp_polygon, but each
@@ -399,10 +427,35 @@ typedef struct stp_frame_memory {
     size_t sort_count;
 } stp_frame_memory;
 
+/* The default output: the Z buffer (without STP_WITH_ZBUFFER the painter's
+ * sort, without that display-file order), the Bayer 4x4 cell, the linear
+ * gamma, no style table, background 0 (black, OFF).  STP_ERR_ARG for NULL. */
+int stp_output_default(stp_output *output);
+
+/* Bytes of frame memory for band_rows rows of port (hidden: the method
+ * stp_render will use; polygons: stp_polygon_count(), for the painter's
+ * sort), plus up to 3 bytes for aligning the start of a buffer.  0 for a
+ * NULL port or an unknown format. */
+size_t stp_frame_memory_bytes(const stp_port *port, stp_hidden hidden, uint32_t band_rows,
+                              uint32_t polygons);
+
+/* Lay out one caller buffer (any alignment, size bytes) as the frame memory
+ * of a stp_render call for port and output (NULL: stp_output_default): the
+ * painter's sort array first (stp_polygon_count(r) entries, so call it after
+ * the last polygon), then for the Z buffer one 16-bit entry per pixel of a
+ * band, then the band, with as many rows as fit, at most port->height.
+ * More rows: fewer passes over the display file (the picture is the same).
+ * Errors: STP_ERR_ARG (a NULL argument; r may be NULL unless the method is
+ * the painter's; an unknown pixel format), STP_ERR_MEMORY (not even one row
+ * fits; *memory then zeroed). */
+int stp_frame_memory_split(stp_frame_memory *memory, const stp_renderer *r, const stp_port *port,
+                           const stp_output *output, void *buffer, size_t size);
+
 /* Interpret the display file and send the picture to the port, band by band
  * (the display file is re-read for each band; the result is the same pixel
  * for pixel whatever the band height).  The port's size must be the
- * renderer's.  Errors: STP_ERR_ARG, STP_ERR_MEMORY (a buffer too small),
+ * renderer's.  output NULL: stp_output_default's.  Errors: STP_ERR_ARG,
+ * STP_ERR_MEMORY (a buffer too small),
  * STP_ERR_UNSUPPORTED (a hidden-surface method compiled out), STP_ERR_PORT. */
 int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
                const stp_frame_memory *memory);

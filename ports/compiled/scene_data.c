@@ -22,18 +22,19 @@ int stp_scene_data_enter(const stp_scene_data *s, void *mem, size_t mem_size,
         (status = stp_set_levels(r, s->levels)) != STP_OK ||
         (status = stp_set_lighting(r, &s->lighting)) != STP_OK)
         return status;
-    stp_set_shading(r, s->shading);
-    stp_set_backface_removal(r, s->backface_removal);
-    if ((status = stp_segment_create(r, 1)) != STP_OK)
+    if ((status = stp_set_shading(r, s->shading)) != STP_OK ||
+        (status = stp_set_backface_removal(r, s->backface_removal)) != STP_OK ||
+        (status = stp_segment_create(r, 1)) != STP_OK)
         return status;
     v = s->vertices;
     for (i = 0; i < s->polygon_count; i++) {
         const stp_scene_data_polygon *p = &s->polygons[i];
         if (p->material != last_material) {
             const stp_material *m = &s->materials[p->material];
-            stp_set_object_shade(r, m);
             /* with shading off the material's reflectivity picks the style */
-            stp_set_fill_style(r, stp_intensity_index(m->reflectivity, s->levels));
+            if ((status = stp_set_object_shade(r, m)) != STP_OK ||
+                (status = stp_set_fill_style(r, stp_intensity_index(m->reflectivity, s->levels))) != STP_OK)
+                return status;
             last_material = p->material;
         }
         status = stp_polygon(r, v, p->count);

@@ -937,13 +937,17 @@ static void test_segment_errors(void **state)
     assert_int_equal(stp_segment_visibility(f.r, 77, 0), STP_ERR_SEGMENT);
     assert_int_equal(stp_segment_create(f.r, -1), STP_ERR_ARG);
     assert_int_equal(stp_segment_create(f.r, 32768), STP_ERR_ARG);
-    /* drawing with no open segment */
-    assert_int_equal(poly(&f, tri, 3, 0, 3), STP_ERR_NO_SEGMENT);
-    assert_int_equal(stp_move(f.r, vec(0, 0, 0)), STP_ERR_NO_SEGMENT);
-    assert_int_equal(stp_line(f.r, vec(1, 1, 0)), STP_ERR_NO_SEGMENT);
+    /* drawing with no open segment opens an implicit one, id -1, which
+     * stp_segment_create ends */
+    assert_int_equal(poly(&f, tri, 3, 0, 3), STP_OK);
+    assert_int_equal(stp_move(f.r, vec(0, 0, 0)), STP_OK);
+    assert_int_equal(stp_line(f.r, vec(1, 1, 0)), STP_OK);
+    assert_true(stp_display_file_used(f.r) > 0);
+    assert_int_equal(stp_segment_delete(f.r, -1), STP_ERR_SEGMENT); /* open */
+    assert_int_equal(stp_segment_create(f.r, 2), STP_OK);
+    assert_int_equal(stp_segment_delete(f.r, -1), STP_OK);
     assert_int_equal(stp_display_file_used(f.r), 0);
     /* degenerate and oversized polygons */
-    assert_int_equal(stp_segment_create(f.r, 2), STP_OK);
     {
         stp_vec3 v[STP_MAX_POLYGON_VERTICES + 1];
         int i;

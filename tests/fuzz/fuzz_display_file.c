@@ -200,6 +200,43 @@ static void check_counts(const state *st)
              (unsigned)stp_polygon_count(st->r), (unsigned)polygons);
 }
 
+/* Implicit segments (render.h): a drawing call with no open segment opens
+ * one with the first free id of -1, -2, ...; creating a segment, closing it
+ * or changing the view or lighting ends it. */
+static int free_slot(const state *st)
+{
+    int slot;
+    for (slot = 0; slot < STP_MAX_SEGMENTS && st->seg[slot].used; slot++)
+        ;
+    return slot < STP_MAX_SEGMENTS ? slot : -1;
+}
+
+static void end_implicit(state *st)
+{
+    if (st->open >= 0 && st->seg[st->open].id < 0) {
+        st->seg[st->open].open = 0;
+        st->open = -1;
+    }
+}
+
+/* Before a drawing call that passed its argument checks: STP_OK (a segment
+ * is open, or the implicit one was opened in the model) or STP_ERR_FULL. */
+static int open_implicit(state *st)
+{
+    int slot, id = -1;
+    if (st->open >= 0)
+        return STP_OK;
+    if ((slot = free_slot(st)) < 0)
+        return STP_ERR_FULL;
+    while (find_seg(st, id) >= 0)
+        id--;
+    memset(&st->seg[slot], 0, sizeof st->seg[slot]);
+    st->seg[slot].used = st->seg[slot].open = st->seg[slot].visible = 1;
+    st->seg[slot].id = id;
+    st->open = slot;
+    return STP_OK;
+}
+
 /* Book what a drawing call entered into the open segment. */
 static void account(state *st, uint32_t before, int status, int polygon)
 {
@@ -594,6 +631,7 @@ static void op_view(state *st, fz_reader *in)
     FZ_CHECK(!(bad_projection && status == STP_OK), "an unknown projection was accepted");
     if (status == STP_OK) {
         int j;
+        end_implicit(st);
         st->target = v.at;
         /* "stp_set_view removes every map" */
         for (j = 0; j < STP_MAX_LIGHTS; j++)
@@ -624,8 +662,10 @@ static void op_lighting(state *st, fz_reader *in)
         FZ_CHECK(status == STP_ERR_ARG, "light count %d gave %d", l.count, status);
     else
         FZ_CHECK(status == STP_OK, "light count %d gave %d", l.count, status);
-    if (status == STP_OK)
+    if (status == STP_OK) {
         st->light_count = l.count;
+        end_implicit(st);
+    }
 }
 
 /* stp_set_shadow_map: one fault at most (light, size, short buffer); the
@@ -707,14 +747,12 @@ static int fz_seg_id(fz_reader *in)
 
 static void op_segment_create(state *st, fz_reader *in)
 {
-    int id = fz_seg_id(in), expect, status, slot;
-    for (slot = 0; slot < STP_MAX_SEGMENTS && st->seg[slot].used; slot++)
-        ;
+    int id = fz_seg_id(in), expect, status, slot = free_slot(st);
     if (id < 0 || id > 32767)
         expect = STP_ERR_ARG;
-    else if (st->open >= 0 || find_seg(st, id) >= 0)
+    else if ((st->open >= 0 && st->seg[st->open].id >= 0) || find_seg(st, id) >= 0)
         expect = STP_ERR_SEGMENT;
-    else if (slot == STP_MAX_SEGMENTS)
+    else if (slot < 0)
         expect = STP_ERR_FULL;
     else
         expect = STP_OK;
@@ -724,6 +762,7 @@ static void op_segment_create(state *st, fz_reader *in)
     FZ_CHECK(status == expect, "stp_segment_create(%d) returned %d, expected %d", id, status,
              expect);
     if (status == STP_OK) {
+        end_implicit(st);
         memset(&st->seg[slot], 0, sizeof st->seg[slot]);
         st->seg[slot].used = st->seg[slot].open = st->seg[slot].visible = 1;
         st->seg[slot].id = id;
@@ -826,14 +865,14 @@ static void op_polygon(state *st, fz_reader *in, int smooth)
         for (i = 0; i < n; i++)
             shades[i] = fz_u8(in) & 1 ? fz_fix(in) : (stp_fix)fz_u8(in) * (ONE / 255);
     }
-    if (st->open < 0)
-        expect = STP_ERR_NO_SEGMENT;
-    else if (n < 0)
+    if (n < 0)
         expect = STP_ERR_ARG;
     else if (n < 3)
         expect = STP_ERR_DEGENERATE;
     else if (n > STP_MAX_POLYGON_VERTICES)
         expect = STP_ERR_TOO_MANY_VERTICES;
+    else
+        expect = open_implicit(st);
     if (smooth == 1)
         status = stp_polygon_smooth(st->r, v, normals, n);
     else if (smooth == 2)
@@ -860,9 +899,10 @@ static void op_pen(state *st, fz_reader *in, int line)
 {
     uint32_t before = stp_display_file_used(st->r);
     stp_vec3 p = fz_u8(in) & 1 ? fz_vec(in) : fz_near(in, st->target);
+    int expect = open_implicit(st);
     int status = line ? stp_line(st->r, p) : stp_move(st->r, p);
-    if (st->open < 0)
-        FZ_CHECK(status == STP_ERR_NO_SEGMENT, "pen call without a segment gave %d", status);
+    if (expect != STP_OK)
+        FZ_CHECK(status == expect, "pen call with no free segment slot gave %d", status);
     else
         FZ_CHECK(status == STP_OK || (line && status == STP_ERR_FULL), "pen call gave %d",
                  status);
@@ -904,9 +944,16 @@ static void op_call(state *st, fz_reader *in)
     case 0: op_view(st, in); break;
     case 1: {
         stp_vec3 p = fz_vec(in);
-        stp_fix bright = fz_fix(in);
-        stp_set_light(st->r, p, bright, fz_fix(in));
-        st->light_count = 1;
+        stp_fix bright = fz_fix(in), background = fz_fix(in);
+        int status, ok = bright >= 0 && background >= 0 && background <= ONE;
+        snap(st);
+        status = stp_set_light(st->r, p, bright, background);
+        same_if_failed(st, status, "stp_set_light");
+        FZ_CHECK(status == (ok ? STP_OK : STP_ERR_ARG), "stp_set_light returned %d", status);
+        if (status == STP_OK) {
+            st->light_count = 1;
+            end_implicit(st);
+        }
         break;
     }
     case 2: op_lighting(st, in); break;
@@ -917,16 +964,33 @@ static void op_call(state *st, fz_reader *in)
         m.refraction = fz_fix(in);
         m.gloss = fz_fix(in);
         m.specular = fz_fix(in);
+        int c, ok, status;
         if (fz_u8(in) & 1) {
-            int c;
             for (c = 0; c < 3; c++)
                 m.colour[c] = fz_fix(in);
         }
-        stp_set_object_shade(st->r, &m);
+        ok = m.reflectivity >= 0 && m.reflectivity <= ONE && m.refraction >= 0 && m.gloss >= 0 &&
+             m.specular >= 0;
+        for (c = 0; c < 3; c++)
+            ok = ok && m.colour[c] >= 0 && m.colour[c] <= ONE;
+        snap(st);
+        status = stp_set_object_shade(st->r, &m);
+        same_if_failed(st, status, "stp_set_object_shade");
+        FZ_CHECK(status == (ok ? STP_OK : STP_ERR_ARG), "stp_set_object_shade returned %d", status);
         break;
     }
-    case 4: stp_set_shading(st->r, (int8_t)fz_u8(in) % 3); break;
-    case 5: stp_set_fill_style(st->r, fz_range(in, -2, 300)); break;
+    case 4:
+        FZ_CHECK(stp_set_shading(st->r, (int8_t)fz_u8(in) % 3) == STP_OK, "stp_set_shading failed");
+        break;
+    case 5: {
+        int index = fz_range(in, -2, 300), status;
+        snap(st);
+        status = stp_set_fill_style(st->r, index);
+        same_if_failed(st, status, "stp_set_fill_style");
+        FZ_CHECK(status == (index >= 1 && index <= st->levels ? STP_OK : STP_ERR_ARG),
+                 "stp_set_fill_style(%d) returned %d", index, status);
+        break;
+    }
     case 6: {
         int levels = fz_u8(in) & 1 ? fz_range(in, 2, 256) : fz_range(in, -1, 300);
         int status;
@@ -939,7 +1003,10 @@ static void op_call(state *st, fz_reader *in)
             st->levels = levels;
         break;
     }
-    case 7: stp_set_backface_removal(st->r, (int8_t)fz_u8(in) % 3); break;
+    case 7:
+        FZ_CHECK(stp_set_backface_removal(st->r, (int8_t)fz_u8(in) % 3) == STP_OK,
+                 "stp_set_backface_removal failed");
+        break;
     case 8:
     case 9: op_segment_create(st, in); break;
     case 10: op_segment_close(st); break;

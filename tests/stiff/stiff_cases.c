@@ -614,9 +614,10 @@ static void run_polygon(const stiff_case *c, stiff_outcome *o)
     core_lighting(&c->lighting, &l);
     if (stp_set_lighting(r, &l) != STP_OK)
         return;
+    stp_material_default(&m);
     core_material(&c->material, &m);
-    stp_set_object_shade(r, &m);
-    stp_set_shading(r, 1);
+    if (stp_set_object_shade(r, &m) != STP_OK)
+        return;
     if (stp_segment_create(r, 1) != STP_OK)
         return;
     for (i = 0; i < c->n; i++)

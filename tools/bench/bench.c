@@ -295,13 +295,13 @@ static int core_scene_prepare(core_scene *cs, const stp_scene *scene, const stp_
                                 (uint32_t)opt->width, (uint32_t)opt->height);
     if (!cs->r || (status = stp_set_view(cs->r, &view)) != STP_OK ||
         (status = stp_set_levels(cs->r, opt->levels)) != STP_OK ||
-        (status = stp_set_lighting(cs->r, &lighting)) != STP_OK) {
+        (status = stp_set_lighting(cs->r, &lighting)) != STP_OK ||
+        (status = stp_set_shading(cs->r, opt->shading)) != STP_OK ||
+        (status = stp_set_backface_removal(cs->r, opt->backface_removal)) != STP_OK) {
         snprintf(err, err_size, "view or lighting refused by the core");
         core_scene_free(cs);
         return -1;
     }
-    stp_set_shading(cs->r, opt->shading);
-    stp_set_backface_removal(cs->r, opt->backface_removal);
     return 0;
 }
 
@@ -323,8 +323,9 @@ static int core_scene_enter(core_scene *cs, const stp_scene *scene, double *shad
             size_t mi = p->material >= 0 && (size_t)p->material < scene->material_count
                             ? (size_t)p->material
                             : scene->material_count;
-            stp_set_object_shade(cs->r, &cs->materials[mi]);
-            stp_set_fill_style(cs->r, stp_intensity_index(cs->materials[mi].reflectivity, cs->levels));
+            if (stp_set_object_shade(cs->r, &cs->materials[mi]) != STP_OK ||
+                stp_set_fill_style(cs->r, stp_intensity_index(cs->materials[mi].reflectivity, cs->levels)) != STP_OK)
+                return -1;
             last_material = p->material;
         }
         if (p->count > STP_MAX_POLYGON_VERTICES)

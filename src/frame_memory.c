@@ -1,0 +1,118 @@
+/* SPDX-License-Identifier: MIT */
+/* Defaults for stp_render: the output and the frame memory carved from one
+ * caller buffer (render.h, stp_output_default and stp_frame_memory_*). */
+#include "align_private.h"
+#include "stipple/render.h"
+
+/* C99 has no alignof: a type's alignment is its offset after a char. */
+struct sort_alignment {
+    char c;
+    stp_sort_entry e;
+};
+#define SORT_ALIGN offsetof(struct sort_alignment, e)
+
+int stp_output_default(stp_output *output)
+{
+    if (output == 0)
+        return STP_ERR_ARG;
+#if STP_WITH_ZBUFFER
+    output->hidden = STP_HIDDEN_ZBUFFER;
+#elif STP_WITH_PAINTER
+    output->hidden = STP_HIDDEN_PAINTER;
+#else
+    output->hidden = STP_HIDDEN_NONE;
+#endif
+    output->cell = 0;
+    output->gamma = 0;
+    output->styles = 0;
+    output->background = 0;
+    output->background_colour = 0;
+    return STP_OK;
+}
+
+/* Bytes of one band row: the pixels and, for the Z buffer, its entries;
+ * 0 for an unknown format or a size that does not fit size_t. */
+static size_t row_bytes(const stp_port *port, stp_hidden hidden)
+{
+    size_t pixels = stp_row_bytes(port->format, port->width), depth = 0;
+    if (hidden == STP_HIDDEN_ZBUFFER)
+        depth = (size_t)port->width * sizeof(uint16_t);
+    if (pixels == 0 || depth > SIZE_MAX - pixels)
+        return 0;
+    return pixels + depth;
+}
+
+size_t stp_frame_memory_bytes(const stp_port *port, stp_hidden hidden, uint32_t band_rows,
+                              uint32_t polygons)
+{
+    size_t row, sort = 0, bytes;
+    if (port == 0 || (row = row_bytes(port, hidden)) == 0)
+        return 0;
+    if (hidden == STP_HIDDEN_PAINTER) {
+        size_t count = polygons; /* a 16-bit size_t may not hold it */
+        if (count != polygons || count > SIZE_MAX / sizeof(stp_sort_entry))
+            return 0;
+        sort = count * sizeof(stp_sort_entry);
+    }
+    if (band_rows > 0 && row > SIZE_MAX / band_rows)
+        return 0;
+    bytes = row * band_rows;
+    if (sort > SIZE_MAX - bytes - (SORT_ALIGN - 1u))
+        return 0;
+    return bytes + sort + (SORT_ALIGN - 1u);
+}
+
+int stp_frame_memory_split(stp_frame_memory *memory, const stp_renderer *r, const stp_port *port,
+                           const stp_output *output, void *buffer, size_t size)
+{
+    stp_output defaults;
+    uint8_t *p = (uint8_t *)buffer;
+    size_t row, sort_count = 0, sort_bytes, rows;
+    if (memory == 0 || port == 0 || buffer == 0)
+        return STP_ERR_ARG;
+    if (output == 0) {
+        (void)stp_output_default(&defaults);
+        output = &defaults;
+    }
+    if ((row = row_bytes(port, output->hidden)) == 0)
+        return STP_ERR_ARG;
+    if (output->hidden == STP_HIDDEN_PAINTER) {
+        if (r == 0)
+            return STP_ERR_ARG;
+        sort_count = stp_polygon_count(r);
+    }
+    memory->band = 0;
+    memory->band_size = 0;
+    memory->band_rows = 0;
+    memory->zbuf = 0;
+    memory->zbuf_count = 0;
+    memory->sort = 0;
+    memory->sort_count = 0;
+    /* the sort entries want 32-bit alignment, the Z buffer 16 */
+    while (!stp_is_aligned(p, SORT_ALIGN) && size > 0) {
+        p++;
+        size--;
+    }
+    sort_bytes = sort_count * sizeof(stp_sort_entry);
+    if (sort_count > SIZE_MAX / sizeof(stp_sort_entry) || sort_bytes > size)
+        return STP_ERR_MEMORY;
+    rows = (size - sort_bytes) / row;
+    if (rows < 1)
+        return STP_ERR_MEMORY;
+    if (rows > port->height)
+        rows = port->height;
+    if (sort_count > 0) {
+        memory->sort = (stp_sort_entry *)(void *)p;
+        memory->sort_count = sort_count;
+        p += sort_bytes;
+    }
+    if (output->hidden == STP_HIDDEN_ZBUFFER) {
+        memory->zbuf = (uint16_t *)(void *)p;
+        memory->zbuf_count = (size_t)port->width * rows;
+        p += memory->zbuf_count * sizeof(uint16_t);
+    }
+    memory->band = p;
+    memory->band_rows = (uint32_t)rows;
+    memory->band_size = stp_row_bytes(port->format, port->width) * rows;
+    return STP_OK;
+}
