@@ -82,6 +82,8 @@ struct stp_renderer {
 
     /* view: orthonormal basis (world units), centre of projection */
     stp_vec3 from, right, up, forward;
+    int64_t from_right, from_up, from_forward; /* from . right etc., 2F
+                                                  fractional bits (< 2^49) */
     stp_projection projection;
     stp_fix hither;
     stp_fix focal; /* perspective: pixels per (x/z); parallel: pixels per unit */
@@ -117,6 +119,7 @@ struct stp_renderer {
 #if STP_WITH_SHADOWS
     stp_shadow_map shadow[STP_MAX_LIGHTS];
     uint32_t shadow_generation; /* of the last map set */
+    uint32_t shadow_set;        /* bit j: shadow[j].depth != 0 */
     uint32_t shadow_record[STP_MAX_LIGHTS]; /* display-file entry of the
                                                polygon being entered's record
                                                for light j, or UINT32_MAX */
