@@ -53,6 +53,8 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     r->current_transmission = 0;
     r->last_shade = -1;
     r->pen_valid = 0;
+    r->model_on = 0;
+    stp_transform_identity(&r->model);
 #if STP_WITH_SHADOWS
     for (i = 0; i < STP_MAX_LIGHTS; i++) {
         r->shadow[i].depth = 0;
@@ -232,6 +234,7 @@ int stp_segment_create(stp_renderer *r, int id)
     r->current_line_style = -1;
     r->current_transmission = 0;
     r->pen_valid = 0;
+    r->model_on = 0;
     /* COPY-LIGHT: the lighting belongs to the view; fix it for this segment
      * with the lights in view coordinates */
     r->segment_lighting = r->user_lighting;
@@ -339,12 +342,44 @@ static void world_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
                              (int64_t)p.z * r->forward.z - r->from_forward);
 }
 
+/* An entered point (model coordinates) to view coordinates. */
+static void vertex_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
+{
+    if (r->model_on)
+        p = stp_transform_point(&r->model, p);
+    world_to_view(r, p, out);
+}
+
 #if STP_WITH_SHADOWS
 void stp_view_point(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
 {
     world_to_view(r, p, out);
 }
+
+void stp_view_vertex(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
+{
+    vertex_to_view(r, p, out);
+}
 #endif
+
+int stp_set_transform(stp_renderer *r, const stp_transform *t)
+{
+    int i, j, identity = 1;
+    if (r == 0)
+        return STP_ERR_ARG;
+    if (r->open_segment < 0)
+        return STP_ERR_NO_SEGMENT;
+    if (t == 0) {
+        r->model_on = 0;
+        return STP_OK;
+    }
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            identity &= t->m[i][j] == (i == j ? ONE : 0);
+    r->model = *t;
+    r->model_on = !(identity && t->t.x == 0 && t->t.y == 0 && t->t.z == 0);
+    return STP_OK;
+}
 
 /* Signed distance of view point p from clip plane `plane` (0: hither,
  * 1..4: left, right, top, bottom of the window), >= 0 inside.  Scaled by a
@@ -491,7 +526,7 @@ int stp_move(stp_renderer *r, stp_vec3 p)
     int status = check_open(r);
     if (status != STP_OK)
         return status;
-    world_to_view(r, p, &r->pen);
+    vertex_to_view(r, p, &r->pen);
     r->pen_valid = 1;
     return STP_OK;
 }
@@ -504,7 +539,7 @@ int stp_line(stp_renderer *r, stp_vec3 p)
     int plane, status = check_open(r);
     if (status != STP_OK)
         return status;
-    world_to_view(r, p, &q);
+    vertex_to_view(r, p, &q);
     if (!r->pen_valid) {
         r->pen = q;
         r->pen_valid = 1;
@@ -594,8 +629,12 @@ static unsigned outcode(const stp_renderer *r, stp_vec3 p)
 static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e)
 {
     int i;
-    for (i = 0; i < e->n; i++)
-        world_to_view(r, vertices[i], &r->clip_a[i]);
+    if (r->model_on)
+        for (i = 0; i < e->n; i++)
+            vertex_to_view(r, vertices[i], &r->clip_a[i]);
+    else
+        for (i = 0; i < e->n; i++)
+            world_to_view(r, vertices[i], &r->clip_a[i]);
 }
 
 /* The outcodes of the vertices, so the clipper runs only on polygons that
@@ -758,7 +797,8 @@ static void shade_vertex(stp_renderer *r, const stp_entry *e, int i)
     } else if (r->shading) {
         stp_vec3 face = stp_unit_to_fix(e->normal), vn = face, to_eye, origin = {0, 0, 0};
         stp_vec3 eye = stp_unit_to_fix(e->eye_dir), ev = eye;
-        if (stp_vec3_unity(direction_to_view(r, e->normals[i]), &vn) == 0) {
+        stp_vec3 nw = r->model_on ? stp_transform_direction(&r->model, e->normals[i]) : e->normals[i];
+        if (stp_vec3_unity(direction_to_view(r, nw), &vn) == 0) {
             vn = face;
         } else if (stp_vec3_dot(vn, face) < 0) {
             /* turn the vertex normal to the side the face shows: files

@@ -104,6 +104,8 @@ struct stp_renderer {
 
     int pen_valid;
     stp_vec3 pen; /* view coordinates */
+    stp_transform model; /* of the open segment's points (stp_set_transform) */
+    int model_on;        /* 0: the identity, skipped */
 
     /* scratch: the clipper's two vertex lists and the scan converter's
      * edges; here rather than on the stack so a small MCU stack suffices */
@@ -129,8 +131,9 @@ struct stp_renderer {
 
 #if STP_WITH_SHADOWS
 /* render.c: a world point in view coordinates (the display file's
- * transform). */
+ * transform), and an entered vertex (the model transform, then that). */
 void stp_view_point(const stp_renderer *r, stp_vec3 p, stp_vec3 *out);
+void stp_view_vertex(const stp_renderer *r, stp_vec3 p, stp_vec3 *out);
 
 /* shadow.c, at entry: the STP_OP_LIGHT_TERM records of a polygon shaded
  * with this normal at this centre (view coordinates; colour: a colour

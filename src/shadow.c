@@ -417,7 +417,7 @@ void stp_shadow_enter(stp_renderer *r, const stp_vec3 *vertices, int n)
         for (i = 0; i < n; i++) {
             stp_vec3 pv;
             int64_t p[3], l[3];
-            stp_view_point(r, vertices[i], &pv);
+            stp_view_vertex(r, vertices[i], &pv);
             p[0] = pv.x;
             p[1] = pv.y;
             p[2] = pv.z;

@@ -161,11 +161,27 @@ int torus_bench_init(torus_bench *b, int width, int height, char *err, size_t er
     return 0;
 }
 
+void torus_bench_pose(torus_bench *b, double tilt_degrees, double spin_degrees, double dx,
+                      double dy, double dz)
+{
+    stp_vec3 d;
+    stp_transform_identity(&b->pose);
+    stp_transform_rotate(&b->pose, 0, stp_tool_fix(tilt_degrees));
+    stp_transform_rotate(&b->pose, 1, stp_tool_fix(spin_degrees));
+    d.x = stp_tool_fix(dx);
+    d.y = stp_tool_fix(dy);
+    d.z = stp_tool_fix(dz);
+    stp_transform_translate(&b->pose, d);
+    b->posed = 1;
+}
+
 int torus_frame(torus_bench *b)
 {
     int t;
     (void)stp_segment_delete(b->r, 1);
     if (stp_segment_create(b->r, 1) != STP_OK)
+        return -1;
+    if (b->posed && stp_set_transform(b->r, &b->pose) != STP_OK)
         return -1;
     stp_set_object_shade(b->r, &b->material);
     for (t = 0; t < TORUS_TRIANGLES; t++) {

@@ -14,7 +14,8 @@
  * attenuation at the centre), so tools/bench/render_ref.c renders the same
  * scene for the tests.
  *
- * Frame (torus_frame): delete and re-create the segment, stp_polygon for
+ * Frame (torus_frame): delete and re-create the segment, set the model
+ * transform when the bench is posed (torus_bench_pose), stp_polygon for
  * each of the 1000 triangles from the caller's stp_vec3 array (shading on:
  * full seed shading D.G.F and attenuation; back-face removal on), then
  * stp_render to MONO1 (MSB-first rows) with the Z buffer, 16 levels and the
@@ -58,7 +59,15 @@ typedef struct torus_bench {
     stp_fix shade[TORUS_TRIANGLES]; /* stp_last_shade of each triangle's entry,
                                        -1 when nothing was shaded (back face) */
     int keep_shades;                /* 1: fill shade[] during torus_frame */
+    int posed;                      /* 1: enter through `pose` (stp_set_transform) */
+    stp_transform pose;
 } torus_bench;
+
+/* Pose the model for the next frames: tilt about x, then spin about y (the
+ * torus's axis), then move by (dx, dy, dz), through the core's model
+ * transform; the vertex array is not touched. */
+void torus_bench_pose(torus_bench *b, double tilt_degrees, double spin_degrees, double dx,
+                      double dy, double dz);
 
 /* Set up a width x height bench (the scene, renderer, memory).  Returns 0,
  * or -1 with a message in err. */

@@ -12,6 +12,8 @@
  *                callgrind)
  *   --size WxH   a size to run (repeatable; default the three above)
  *   --pbm PREFIX write each size's last frame to PREFIX-WxH.pbm
+ *   --spin       spin the model: each frame is entered through a new model
+ *                transform (tilt 20 degrees, spin 3 degrees more each frame)
  * Prints one line per size: "WxH us_per_frame". Instructions per frame are
  * counted by tools/bench/torus_bench.sh, which runs this under callgrind
  * with --toggle-collect=torus_frame (only the frames are counted).
@@ -62,6 +64,8 @@ int main(int argc, char **argv)
 {
     int sizes[MAX_SIZES][2], nsizes = 0, frames = 200, rounds = 5, i, k, round;
     const char *pbm = 0;
+    int spin = 0;
+    long frame_no = 0;
     static torus_bench bench[MAX_SIZES];
     double best[MAX_SIZES];
     char err[256];
@@ -78,11 +82,13 @@ int main(int argc, char **argv)
                 return 2;
             }
             nsizes++;
+        } else if (!strcmp(argv[i], "--spin")) {
+            spin = 1;
         } else if (!strcmp(argv[i], "--pbm") && i + 1 < argc) {
             pbm = argv[++i];
         } else {
             fprintf(stderr, "usage: torus_bench [--frames N] [--rounds N] [--size WxH]... "
-                            "[--pbm PREFIX]\n");
+                            "[--pbm PREFIX] [--spin]\n");
             return 2;
         }
     }
@@ -109,6 +115,8 @@ int main(int argc, char **argv)
             double t0 = now(), t;
             int f;
             for (f = 0; f < frames; f++) {
+                if (spin)
+                    torus_bench_pose(&bench[k], 20, 3.0 * (double)(frame_no++ % 120), 0, 0, 0);
                 if (torus_frame(&bench[k]) != 0) {
                     fprintf(stderr, "torus_bench: %dx%d: the core refused a frame\n",
                             sizes[k][0], sizes[k][1]);
