@@ -330,7 +330,7 @@ static const uint16_t rsqrt_seed[192] = {
     33530, 33461, 33393, 33326, 33259, 33192, 33126, 33060, 32994, 32929, 32864, 32800};
 
 /* 1/sqrt(m / 2^30) in Q30 for m in [2^30, 2^32). */
-static uint64_t rsqrt_q30(uint32_t m)
+static inline uint64_t rsqrt_q30(uint32_t m)
 {
     uint64_t y = (uint64_t)rsqrt_seed[(m >> 24) - 64] << 14;
     int k;
@@ -345,7 +345,7 @@ static uint64_t rsqrt_q30(uint32_t m)
     return y;
 }
 
-uint32_t stp_rsqrt64(uint64_t v, int *exponent)
+static inline uint32_t rsqrt64(uint64_t v, int *exponent)
 {
     /* v = m 2^sh with m in [2^30, 2^32) and sh even, so 1/sqrt(v) =
      * rsqrt_q30(m) 2^-(30 + 15 + sh/2) */
@@ -354,6 +354,18 @@ uint32_t stp_rsqrt64(uint64_t v, int *exponent)
         sh--;
     *exponent = 45 + sh / 2;
     return (uint32_t)rsqrt_q30((uint32_t)(sh >= 0 ? v >> sh : v << -sh));
+}
+
+uint32_t stp_rsqrt64(uint64_t v, int *exponent)
+{
+    return rsqrt64(v, exponent);
+}
+
+/* floor(v / 2^s) for |v| < 2^62, 0 <= s < 62, without a branch on the sign
+ * (2^62 is a multiple of 2^s, so the offset changes nothing but the sign) */
+static inline int64_t floor_shift(int64_t v, int s)
+{
+    return ((v + ((int64_t)1 << 62)) >> s) - ((int64_t)1 << (62 - s));
 }
 
 int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
@@ -379,12 +391,13 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
         z = stp_asr64(z, -up);
     }
     s = (uint64_t)(x * x) + (uint64_t)(y * y) + (uint64_t)(z * z);
-    inv = (int64_t)stp_rsqrt64(s, &e); /* 1/sqrt(s) = inv 2^-e, e = 59 or 60 */
-    e -= 30;                           /* to STP_UNIT */
+    inv = (int64_t)rsqrt64(s, &e); /* 1/sqrt(s) = inv 2^-e, e = 59 or 60 */
+    e -= 30;                       /* to STP_UNIT */
     half = (int64_t)1 << (e - 1);
-    out->x = (int32_t)stp_asr64(x * inv + half, e);
-    out->y = (int32_t)stp_asr64(y * inv + half, e);
-    out->z = (int32_t)stp_asr64(z * inv + half, e);
+    /* |x inv| < 2^60 */
+    out->x = (int32_t)floor_shift(x * inv + half, e);
+    out->y = (int32_t)floor_shift(y * inv + half, e);
+    out->z = (int32_t)floor_shift(z * inv + half, e);
     /* |v| scaled = s / sqrt(s): s >> 30 < 2^32 times inv < 2^31 */
     len = ((s >> 30) * (uint64_t)inv) >> (e - 0);
     return up >= 0 ? (int64_t)(len >> up) : (int64_t)(len << -up);
@@ -401,6 +414,6 @@ uint32_t stp_sqrt64_fast(uint64_t v)
         sh--;
     m = sh >= 0 ? v >> sh : v << -sh;
     /* sqrt(v) = v / sqrt(v) = m 2^sh rsqrt 2^-e: m < 2^32, rsqrt <= 2^30 */
-    r = (m * stp_rsqrt64(v, &e)) >> (e - sh);
+    r = (m * rsqrt64(v, &e)) >> (e - sh);
     return r > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)r;
 }

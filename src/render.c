@@ -18,6 +18,7 @@ size_t stp_renderer_size(void)
 }
 
 static void world_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out);
+static void cache_forget(stp_renderer *r);
 
 stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display_file,
                                   uint32_t capacity, uint32_t width, uint32_t height)
@@ -55,6 +56,11 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     r->pen_valid = 0;
     r->model_on = 0;
     stp_transform_identity(&r->model);
+#if STP_VERTEX_CACHE
+    for (i = 0; i < STP_VERTEX_CACHE; i++)
+        r->cache[i].stamp = 0;
+    r->cache_stamp = 1;
+#endif
 #if STP_WITH_SHADOWS
     for (i = 0; i < STP_MAX_LIGHTS; i++) {
         r->shadow[i].depth = 0;
@@ -99,6 +105,7 @@ int stp_set_view(stp_renderer *r, const stp_view *v)
     r->from_forward = (int64_t)r->from.x * r->forward.x + (int64_t)r->from.y * r->forward.y +
                       (int64_t)r->from.z * r->forward.z;
     r->pen_valid = 0;
+    cache_forget(r);
 #if STP_WITH_SHADOWS
     {
         /* the maps' transforms start from this view's coordinates */
@@ -234,6 +241,8 @@ int stp_segment_create(stp_renderer *r, int id)
     r->current_line_style = -1;
     r->current_transmission = 0;
     r->pen_valid = 0;
+    if (r->model_on)
+        cache_forget(r);
     r->model_on = 0;
     /* COPY-LIGHT: the lighting belongs to the view; fix it for this segment
      * with the lights in view coordinates */
@@ -342,6 +351,22 @@ static void world_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
                              (int64_t)p.z * r->forward.z - r->from_forward);
 }
 
+/* Forget every cached vertex (the view or the model transform changed). */
+static void cache_forget(stp_renderer *r)
+{
+#if STP_VERTEX_CACHE
+    int i;
+    if (++r->cache_stamp == 0) {
+        /* wrapped: clear the entries so an old stamp cannot match */
+        for (i = 0; i < STP_VERTEX_CACHE; i++)
+            r->cache[i].stamp = 0;
+        r->cache_stamp = 1;
+    }
+#else
+    (void)r;
+#endif
+}
+
 /* An entered point (model coordinates) to view coordinates. */
 static void vertex_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
 {
@@ -369,6 +394,7 @@ int stp_set_transform(stp_renderer *r, const stp_transform *t)
         return STP_ERR_ARG;
     if (r->open_segment < 0)
         return STP_ERR_NO_SEGMENT;
+    cache_forget(r);
     if (t == 0) {
         r->model_on = 0;
         return STP_OK;
@@ -625,10 +651,31 @@ static unsigned outcode(const stp_renderer *r, stp_vec3 p)
     return code;
 }
 
-/* Step 1: the vertices to view coordinates (r->clip_a). */
+/* Step 1: the vertices to view coordinates (r->clip_a), through the
+ * vertex cache when there is one. */
 static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e)
 {
     int i;
+#if STP_VERTEX_CACHE
+    for (i = 0; i < e->n; i++) {
+        stp_vec3 p = vertices[i];
+        /* a multiplicative hash of the exact coordinates */
+        uint32_t h = ((uint32_t)p.x * 0x9E3779B1u) ^ ((uint32_t)p.y * 0x85EBCA77u) ^
+                     ((uint32_t)p.z * 0xC2B2AE3Du);
+        stp_vertex_entry *c = &r->cache[(h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1)];
+        if (c->stamp != r->cache_stamp || c->point.x != p.x || c->point.y != p.y ||
+            c->point.z != p.z) {
+            c->stamp = r->cache_stamp;
+            c->point = p;
+            vertex_to_view(r, p, &c->view);
+            c->code = -1;
+            c->dx = STP_CACHE_NOT_PROJECTED;
+        }
+        r->clip_a[i] = c->view;
+        r->cached[i] = c;
+    }
+    return;
+#endif
     if (r->model_on)
         for (i = 0; i < e->n; i++)
             vertex_to_view(r, vertices[i], &r->clip_a[i]);
@@ -639,13 +686,28 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
 
 /* The outcodes of the vertices, so the clipper runs only on polygons that
  * cross a plane (after the back-face test: a removed face needs none). */
-static void enter_outcodes(const stp_renderer *r, stp_entry *e)
+static void enter_outcodes(stp_renderer *r, stp_entry *e)
 {
     int i;
     e->outside_all = 31u;
     e->outside_any = 0;
     for (i = 0; i < e->n; i++) {
-        unsigned code = outcode(r, r->clip_a[i]);
+        unsigned code;
+#if STP_VERTEX_CACHE
+        /* the entry may have been taken by a later vertex of this polygon */
+        stp_vertex_entry *c = r->cached[i];
+        if (c->code >= 0 && c->view.x == r->clip_a[i].x && c->view.y == r->clip_a[i].y &&
+            c->view.z == r->clip_a[i].z) {
+            code = (unsigned)c->code;
+        } else {
+            code = outcode(r, r->clip_a[i]);
+            if (c->view.x == r->clip_a[i].x && c->view.y == r->clip_a[i].y &&
+                c->view.z == r->clip_a[i].z)
+                c->code = (int32_t)code;
+        }
+#else
+        code = outcode(r, r->clip_a[i]);
+#endif
         e->outside_all &= code;
         e->outside_any |= code;
     }
@@ -938,7 +1000,26 @@ static int enter_store(stp_renderer *r, stp_entry *e)
 #endif
     for (i = 0; i < m; i++) {
         stp_instr p;
+#if STP_VERTEX_CACHE
+        /* an unclipped polygon's vertices are the cached ones */
+        stp_vertex_entry *c = e->outside_any == 0 ? r->cached[i] : 0;
+        if (c && c->dx != STP_CACHE_NOT_PROJECTED && c->view.x == clipped[i].x &&
+            c->view.y == clipped[i].y && c->view.z == clipped[i].z) {
+            p.x = c->dx;
+            p.y = c->dy;
+            p.z = c->dz;
+        } else {
+            project(r, clipped[i], &p);
+            if (c && c->view.x == clipped[i].x && c->view.y == clipped[i].y &&
+                c->view.z == clipped[i].z) {
+                c->dx = p.x;
+                c->dy = p.y;
+                c->dz = p.z;
+            }
+        }
+#else
         project(r, clipped[i], &p);
+#endif
         append(r, i == 0 ? m : STP_OP_LINE, p.x, p.y, p.z, smooth ? clipped_shades[i] : -1);
     }
     return STP_OK;

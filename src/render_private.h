@@ -72,6 +72,20 @@ typedef struct stp_shadow_poly {
 } stp_shadow_poly;
 #endif
 
+#if STP_VERTEX_CACHE
+/* One vertex cache entry (config.h, STP_VERTEX_CACHE): an entered point
+ * (before the model transform), its view coordinates and, once known, its
+ * outcode and device position.  Valid while stamp equals the renderer's
+ * cache_stamp (set_view, set_transform and segment_create change that). */
+typedef struct stp_vertex_entry {
+    stp_vec3 point, view;
+    uint32_t stamp;
+    int32_t code;           /* outcode, -1 not yet known */
+    int32_t dx, dy, dz;     /* device position (project), when projected */
+} stp_vertex_entry;
+#define STP_CACHE_NOT_PROJECTED INT32_MIN /* dx of an entry not projected yet */
+#endif
+
 struct stp_renderer {
     stp_instr *df;
     uint32_t capacity, used;
@@ -116,6 +130,11 @@ struct stp_renderer {
     stp_fix shade_b[STP_CLIP_VERTICES];
 #endif
     stp_edge edges[STP_CLIP_VERTICES];
+#if STP_VERTEX_CACHE
+    stp_vertex_entry cache[STP_VERTEX_CACHE];
+    uint32_t cache_stamp; /* >= 1 */
+    stp_vertex_entry *cached[STP_MAX_POLYGON_VERTICES]; /* clip_a[i]'s entry */
+#endif
     stp_crossing crossings[STP_CLIP_VERTICES];
 
 #if STP_WITH_SHADOWS

@@ -146,7 +146,7 @@ size_t stp_renderer_size(void);
  *   static stp_renderer_storage storage;
  *   r = stp_renderer_create(&storage, sizeof storage, ...); */
 #define STP_RENDERER_BYTES                                                                      \
-    (1024u + 32u * STP_MAX_SEGMENTS + (48u + 112u * STP_WITH_SHADOWS) * STP_MAX_LIGHTS + 64u +          \
+    (1024u + 32u * STP_MAX_SEGMENTS + (48u + 112u * STP_WITH_SHADOWS) * STP_MAX_LIGHTS + 64u + 44u * STP_VERTEX_CACHE +          \
      96u * (STP_MAX_POLYGON_VERTICES + 5u))
 typedef union stp_renderer_storage {
     int64_t align_integer;
