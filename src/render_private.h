@@ -72,6 +72,20 @@ typedef struct stp_shadow_poly {
 } stp_shadow_poly;
 #endif
 
+#if STP_VERTEX_CACHE
+/* One vertex cache entry (config.h, STP_VERTEX_CACHE): an entered point
+ * (before the model transform), its view coordinates and, once known, its
+ * outcode and device position.  Valid while stamp equals the renderer's
+ * cache_stamp (set_view, set_transform and segment_create change that). */
+typedef struct stp_vertex_entry {
+    stp_vec3 point, view;
+    uint32_t stamp;
+    int32_t code;           /* outcode, -1 not yet known */
+    int32_t dx, dy, dz;     /* device position (project), when projected */
+} stp_vertex_entry;
+#define STP_CACHE_NOT_PROJECTED INT32_MIN /* dx of an entry not projected yet */
+#endif
+
 struct stp_renderer {
     stp_instr *df;
     uint32_t capacity, used;
@@ -82,6 +96,8 @@ struct stp_renderer {
 
     /* view: orthonormal basis (world units), centre of projection */
     stp_vec3 from, right, up, forward;
+    int64_t from_right, from_up, from_forward; /* from . right etc., 2F
+                                                  fractional bits (< 2^49) */
     stp_projection projection;
     stp_fix hither;
     stp_fix focal; /* perspective: pixels per (x/z); parallel: pixels per unit */
@@ -102,6 +118,8 @@ struct stp_renderer {
 
     int pen_valid;
     stp_vec3 pen; /* view coordinates */
+    stp_transform model; /* of the open segment's points (stp_set_transform) */
+    int model_on;        /* 0: the identity, skipped */
 
     /* scratch: the clipper's two vertex lists and the scan converter's
      * edges; here rather than on the stack so a small MCU stack suffices */
@@ -112,11 +130,17 @@ struct stp_renderer {
     stp_fix shade_b[STP_CLIP_VERTICES];
 #endif
     stp_edge edges[STP_CLIP_VERTICES];
+#if STP_VERTEX_CACHE
+    stp_vertex_entry cache[STP_VERTEX_CACHE];
+    uint32_t cache_stamp; /* >= 1 */
+    stp_vertex_entry *cached[STP_MAX_POLYGON_VERTICES]; /* clip_a[i]'s entry */
+#endif
     stp_crossing crossings[STP_CLIP_VERTICES];
 
 #if STP_WITH_SHADOWS
     stp_shadow_map shadow[STP_MAX_LIGHTS];
     uint32_t shadow_generation; /* of the last map set */
+    uint32_t shadow_set;        /* bit j: shadow[j].depth != 0 */
     uint32_t shadow_record[STP_MAX_LIGHTS]; /* display-file entry of the
                                                polygon being entered's record
                                                for light j, or UINT32_MAX */
@@ -126,8 +150,9 @@ struct stp_renderer {
 
 #if STP_WITH_SHADOWS
 /* render.c: a world point in view coordinates (the display file's
- * transform). */
+ * transform), and an entered vertex (the model transform, then that). */
 void stp_view_point(const stp_renderer *r, stp_vec3 p, stp_vec3 *out);
+void stp_view_vertex(const stp_renderer *r, stp_vec3 p, stp_vec3 *out);
 
 /* shadow.c, at entry: the STP_OP_LIGHT_TERM records of a polygon shaded
  * with this normal at this centre (view coordinates; colour: a colour

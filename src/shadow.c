@@ -79,11 +79,7 @@ static void to_light(const stp_shadow_map *sm, const int64_t p[3], int64_t out[3
 
 int stp_shadow_any(const stp_renderer *r)
 {
-    int j;
-    for (j = 0; j < STP_MAX_LIGHTS; j++)
-        if (r->shadow[j].depth)
-            return 1;
-    return 0;
+    return r->shadow_set != 0;
 }
 
 #endif /* STP_WITH_SHADOWS */
@@ -164,6 +160,7 @@ int stp_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count
     for (i = 0; i < texels; i++)
         depth[i] = 0;
     sm->depth = depth;
+    r->shadow_set |= (uint32_t)1 << light;
     sm->width = width;
     sm->height = height;
     r->shadow_generation = r->shadow_generation % 0x7FFFFFu + 1u;
@@ -187,6 +184,7 @@ int stp_remove_shadow_map(stp_renderer *r, int light)
         return STP_ERR_ARG;
 #if STP_WITH_SHADOWS
     r->shadow[light].depth = 0;
+    r->shadow_set &= ~((uint32_t)1 << light);
 #endif
     return STP_OK;
 }
@@ -419,7 +417,7 @@ void stp_shadow_enter(stp_renderer *r, const stp_vec3 *vertices, int n)
         for (i = 0; i < n; i++) {
             stp_vec3 pv;
             int64_t p[3], l[3];
-            stp_view_point(r, vertices[i], &pv);
+            stp_view_vertex(r, vertices[i], &pv);
             p[0] = pv.x;
             p[1] = pv.y;
             p[2] = pv.z;
