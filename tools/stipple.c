@@ -18,6 +18,7 @@
 #endif
 #include "render_scene.h"
 #include "scene.h"
+#include "scenegen.h"
 #include "stp_posix.h"
 
 static const char *program = "stipple";
@@ -32,6 +33,8 @@ static void usage_main(FILE *to)
             "  dither IMAGE -o OUT   halftone a PGM/PPM image to PBM\n"
             "  compile SCENE -o OUT.c  write a scene as C source and a minimal configuration\n"
             "                        header for firmware (see 'stipple compile --help')\n"
+            "  scene NAME -o OUT.nff write a procedural scene (teapot, tetra, sphereflake,\n"
+            "                        torus, rings, mountain; see 'stipple scene --help')\n"
             "  bench [SCENE...]      ray tracer speed (rays/s, us/frame, with and without its\n"
             "                        hierarchy) and error against the double reference\n"
             "  help [COMMAND]        show help\n"
@@ -523,6 +526,8 @@ int main(int argc, char **argv)
         return cmd_dither(argc - 1, argv + 1);
     if (!strcmp(argv[1], "bench"))
         return cmd_bench(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "scene"))
+        return stp_scenegen_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "compile"))
         return stp_tool_compile_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
