@@ -74,13 +74,14 @@ Z buffer | the nearest surface per pixel | put_span_z | test_zbuffer_interpenetr
 TABLE
 }
 
-# file:line of a function's definition in the core, the ports and the tools:
+# file:line of a function's definition in the core (src/, or the path given):
 # a line starting with its return type or its name whose parameter list ends
 # in '{' (not in ';', as a declaration's does).
 find_function() {
-    local name=${1##*:} where=src include ports tools hits
+    local name=${1##*:} where=src hits
     [ "$name" != "$1" ] && where=${1%:*}
     # shellcheck disable=SC2086
+    # shellcheck disable=SC2016
     hits=$(find $where -name '*.c' -type f | sort | xargs awk -v name="$name" '
         FNR == 1 { open = 0 }
         open == 0 && $0 ~ ("^([A-Za-z_][A-Za-z0-9_ *]*[ *])?" name "[(]") { open = 1; at = FNR }
@@ -93,7 +94,7 @@ find_function() {
 find_test() {
     local name=${1##*:} where=tests hits
     [ "$name" != "$1" ] && where=${1%:*}
-    hits=$(grep -rHn --include='*.c' -E "^static void $name\(void \*\*" $where || true)
+    hits=$(grep -rHn --include='*.c' -E "^static void $name\(void \*\*" "$where" || true)
     report_one "$1" "$hits"
 }
 
