@@ -74,39 +74,47 @@ Z buffer | the nearest surface per pixel | put_span_z | test_zbuffer_interpenetr
 TABLE
 }
 
-# file:line of a function's definition in the core (src/, or the path given):
-# a line starting with its return type or its name whose parameter list ends
-# in '{' (not in ';', as a declaration's does).
-find_function() {
-    local name=${1##*:} where=src hits
-    [ "$name" != "$1" ] && where=${1%:*}
-    # shellcheck disable=SC2086
+# Every function definition in the core as "name file:line": a line starting
+# with its return type or its name whose parameter list ends in '{' (not in
+# ';', as a declaration's does).
+list_functions() {
     # shellcheck disable=SC2016
-    hits=$(find $where -name '*.c' -type f | sort | xargs awk -v name="$name" '
+    find src -name '*.c' -type f | sort | xargs awk '
         FNR == 1 { open = 0 }
-        open == 0 && $0 ~ ("^([A-Za-z_][A-Za-z0-9_ *]*[ *])?" name "[(]") { open = 1; at = FNR }
+        open == 0 && match($0, /^([A-Za-z_][A-Za-z0-9_ *]*[ *])?[A-Za-z_][A-Za-z0-9_]*[(]/) {
+            head = substr($0, 1, RLENGTH - 1); sub(/.*[ *]/, "", head)
+            open = 1; at = FNR; name = head
+        }
         open == 1 && /;[[:space:]]*$/ { open = 0 }
-        open == 1 && /[{][[:space:]]*$/ { print FILENAME ":" at; open = 0 }')
-    report_one "$1" "$hits"
+        open == 1 && /[{][[:space:]]*$/ { print name, FILENAME ":" at; open = 0 }'
 }
 
-# file:line of a cmocka test function in tests/.
-find_test() {
-    local name=${1##*:} where=tests hits
-    [ "$name" != "$1" ] && where=${1%:*}
-    hits=$(grep -rHn --include='*.c' -E "^static void $name\(void \*\*" "$where" || true)
-    report_one "$1" "$hits"
+# Every cmocka test function as "name file:line".
+list_tests() {
+    grep -rHn --include='*.c' -E '^static void [A-Za-z0-9_]+\(void \*\*' tests |
+        sed -E 's/^([^:]*):([0-9]*):static void ([A-Za-z0-9_]*).*/\3 \1:\2/'
 }
+
+# file:line of NAME (or PATH:NAME, PATH a prefix of the file) in a list.
+find_in() {
+    local list=$1 name=${2##*:} path="" hits
+    [ "$name" != "$2" ] && path=${2%:*}
+    hits=$(printf '%s\n' "$list" | awk -v n="$name" -v p="$path" \
+        '$1 == n && index($2, p) == 1 { print $2 }')
+    report_one "$2" "$hits"
+}
+find_function() { find_in "$functions_list" "$1"; }
+find_test() { find_in "$tests_list" "$1"; }
 
 report_one() {
     local count
     count=$(printf '%s' "$2" | grep -c . || true)
     if [ "$count" -ne 1 ]; then
-        echo "equation-index: '$1' is defined $count times${2:+: $(printf '%s' "$2" | cut -d: -f1,2 | tr '\n' ' ')}" >&2
+        echo "equation-index: '$1' is defined $count times${2:+: $(printf '%s' "$2" | tr '\n' ' ')}" >&2
         echo "  (qualify it as path:name, or update the table in scripts/equation-index.sh)" >&2
         return 1
     fi
-    printf '%s\n' "$2" | cut -d: -f1,2
+    printf '%s\n' "$2"
 }
 
 # "`name` [file:line](../file#Lline)" for each name, joined by "<br>".
@@ -150,6 +158,8 @@ generate() {
 }
 
 target=docs/equations.md
+functions_list=$(list_functions)
+tests_list=$(list_tests)
 if [ "${1:-}" = --check ]; then
     fresh=$(mktemp)
     trap 'rm -f "$fresh"' EXIT

@@ -139,7 +139,7 @@ enum {
 
 /* Turn an indexed frame buffer (STYLE8: style index 1..levels per pixel)
  * into RGB through a 256-entry colour table, grey or pseudocolour, with the
- * gamma table applied to each primary (SPEC.md section 6). */
+ * gamma table applied to each primary (docs/model.md section 6). */
 static int index_to_colour(stp_posix_frame *frame, int levels, int pseudo, const stp_tool_options *opt)
 {
     stp_colour_table table;
