@@ -21,7 +21,7 @@ table() {
 ## 1. Vectors and conventions
 UNITY (Algorithm 10.2) | a vector divided by its length, the length returned; a zero vector reported, never divided by | stp_vec3_unity | test_vec3_unity_random test_vec3_unity_tiny_and_huge
 (10.5) | the half-way vector H = (L+E)/\|L+E\| between the light and the eye | shade_parts | test_specular_terms_against_reference test_shade_highlight_sweep
-eye direction | E from the point to the centre of projection, or the fixed direction of a parallel projection | shade_parts direction_to_view | test_shade_grid_against_reference
+eye direction | E from the point to the centre of projection, or the fixed direction of a parallel projection | enter_polygon_df shade_parts | test_shade_grid_against_reference test_backface_removal_keeps_faces_towards_viewer
 Newell's normal (Algorithm 10.4) | the polygon's normal from the sums over its edges of (y'-y)(z'+z) and its cyclic companions, and the vertex average as the point to shade | src/render.c:newell | tests/stiff/test_stiff.c:test_case test_pictures_of_clipped_polygons
 SHADE-CHECK | Newell's sums collected while a polygon is entered, its shade computed at the last vertex and entered before it as a fill style | enter_polygon_df src/render.c:newell | tests/stiff/test_stiff.c:test_case tests/golden/test_golden.c:test_golden_128x64
 ## 2. The shading equation
@@ -36,7 +36,9 @@ SHADE-CHECK | Newell's sums collected while a polygon is entered, its shade comp
 MAKE-SHADE (Algorithm 10.5) | the shade of a face: background only when the light is behind it, capped at 1 and scaled by the brightness | shade_parts | test_shade_no_lights_and_caps test_shade_back_face_is_ambient_only
 (10.45) | colour: the same equation per channel, the highlight colourless | stp_shade_point_colour | test_colour_shading_per_channel
 INITIALIZE-10 | defaults: light at (0,0,1), brightness 1, no background; reflectivity 1, refraction 10, gloss 10; shading off | stp_lighting_default stp_material_default | test_seed_defaults
-SET-LIGHT, SET-OBJECT-SHADE, SET-SHADING (Algorithms 10.7-10.11) | the user's light, object and on/off parameters | stp_set_light stp_set_object_shade stp_set_shading | test_copy_light_per_segment
+SET-LIGHT (Algorithms 10.7-10.11) | the light's position, brightness and background share, kept in [0,1] | stp_set_light stp_set_lighting | test_copy_light_per_segment tests/stiff/test_stiff.c:test_case
+SET-OBJECT-SHADE | reflectivity, index of refraction and gloss of the polygons entered next | stp_set_object_shade | tests/stiff/test_stiff.c:test_case
+SET-SHADING | shading on, or off with polygons in the current fill style | stp_set_shading stp_set_fill_style | test_set_shading
 COPY-LIGHT | a segment keeps the lighting current when it was created, its lights turned into view coordinates | stp_segment_create | test_copy_light_per_segment
 ## 3. From shade to pixels
 INTENSITY (Algorithm 10.6) | a shade in [0,1] to one of N styles, INT(s(N-1)+1) | stp_intensity_index | test_intensity_index_at_step_boundaries test_intensity_index_random_shades test_property_intensity
