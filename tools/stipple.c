@@ -537,6 +537,10 @@ int main(int argc, char **argv)
             usage_dither(stdout);
         else if (argc > 2 && !strcmp(argv[2], "bench"))
             usage_bench(stdout);
+        else if (argc > 2 && !strcmp(argv[2], "scene")) {
+            char *scene_help[] = {argv[2], "--help", NULL};
+            return stp_scenegen_main(2, scene_help);
+        }
         else
             usage_main(stdout);
         return 0;

@@ -14,6 +14,7 @@ failures=0
 fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
 
 names=$("$stipple" scene --list) || fail "--list"
+"$stipple" help scene | grep -q "^usage: stipple scene NAME" || fail "stipple help scene"
 [ "$(echo "$names" | wc -l)" -eq 6 ] || fail "--list gives $(echo "$names" | wc -l) scenes, not 6"
 for name in $names; do
     "$stipple" scene "$name" --size 2 -o "$tmp/$name.nff" || { fail "$name: scene"; continue; }
