@@ -3,10 +3,10 @@
  * A fractal mountain by midpoint displacement (diamond-square) over the
  * square [-1,1]^2: a grid of (2^size+1)^2 heights, corners 0, each level's
  * new points the mean of their neighbours plus a uniform offset in
- * [-a, a], a = 0.5 at the first level and 2^-0.8 times less at each next
- * one; 2*4^size triangles.  The offsets come from a fixed xorshift
+ * [-a, a], a = 0.4 at the first level and half as much at each next one;
+ * 2*4^size triangles.  The offsets come from a fixed xorshift
  * sequence consumed level by level, so every size repeats the smaller
- * sizes' heights at their grid points and |height| < 0.5/(1 - 2^-0.8).
+ * sizes' heights at their grid points and |height| < 0.4/(1 - 1/2) = 0.8.
  */
 #include <math.h>
 #include <stdint.h>
@@ -14,8 +14,8 @@
 
 #include "scenegen_private.h"
 
-#define MOUNTAIN_FIRST_AMPLITUDE 0.5
-#define MOUNTAIN_DECAY 0.5743491774985175 /* 2^-0.8 */
+#define MOUNTAIN_FIRST_AMPLITUDE 0.4
+#define MOUNTAIN_DECAY 0.5
 
 /* A uniform number in [-1, 1] from a xorshift32 state. */
 static double next_offset(uint32_t *state)

@@ -30,6 +30,7 @@ int stp_sg_write_rings(FILE *out, int size)
     const int count = size + 1;
     const double half = 0.5 * RING_STEP * (count - 1) + RING_RADIUS + 2;
     const double floor_z = -RING_RADIUS - RING_TUBE - 0.1;
+    const double chain = 0.5 * RING_STEP * (count - 1) + RING_RADIUS + 0.3; /* half its length */
     stp_sg_vec floor[4];
     int k, s;
     floor[0] = stp_sg_v(half, half, floor_z);
@@ -38,10 +39,10 @@ int stp_sg_write_rings(FILE *out, int size)
     floor[3] = stp_sg_v(half, -half, floor_z);
     stp_sg_comment(out, "rings", size);
     stp_sg_background(out, 0.078, 0.361, 0.753);
-    stp_sg_view(out, stp_sg_v(0.8 * half, -2.2 * half, 1.3 * half), stp_sg_v(0, 0, 0),
+    stp_sg_view(out, stp_sg_v(0.5 * chain, -2.3 * chain, 1.4 * chain), stp_sg_v(0, 0, -0.2 * chain),
                 stp_sg_v(0, 0, 1), 45, 0.1, 512);
-    stp_sg_light(out, stp_sg_v(-3 * half, -4 * half, 5 * half));
-    stp_sg_light(out, stp_sg_v(4 * half, -2 * half, 3 * half));
+    stp_sg_light(out, stp_sg_v(-3 * chain, -4 * chain, 5 * chain));
+    stp_sg_light(out, stp_sg_v(4 * chain, -2 * chain, 3 * chain));
     stp_sg_material(out, 0.6, 0.6, 0.6, 0.8, 0, 100000, 0, 1);
     stp_sg_polygon(out, 4, floor);
     for (k = 0; k < count; k++) {
