@@ -18,4 +18,4 @@ s#tests/test_raster\.c#tests/core/test_raster.c#g
 s#(tests/test_gamma\.c)#(tests/core/test_shade.c)#g
 s#tests/test_gamma\.c#tests/core/test_shade.c#g
 # a build machine's own folder in an example
-s#=/work/shared/scenes/#=$PWD/../shared/scenes/#g
+s#=/work/shared/scenes/#=$PWD/tests/data/spd/#g
