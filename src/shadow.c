@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Shadows by a shadow Z buffer per light (SPEC.md section 5): the maps,
+/* Shadows by a shadow Z buffer per light (docs/model.md section 5): the maps,
  * their depth drawn as polygons are entered, and the per-pixel test of the
  * output.  See stp_set_shadow_map in include/stipple/render.h.
  *

@@ -7,7 +7,7 @@
 set -u
 stipple=$(realpath "$1")
 here=$(cd "$(dirname "$0")/.." && pwd)
-scenes=${2:-$here/../shared/scenes}
+scenes=${2:-$here/tests/data/spd}
 work=${3:-$(mktemp -d)}
 mkdir -p "$work"
 echo "| scene | CPU | minimal .text | minimal .bss | full .text | full .bss |"

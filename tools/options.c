@@ -297,7 +297,7 @@ void stp_tool_options_help(FILE *to)
             "      --stacks N           sphere stacks (default 8)\n"
             "      --shadows N          shadows: a shadow Z buffer of N x N texels per light\n"
             "                           (512 suits 320x240; memory 2 N^2 bytes per light)\n"
-            "      --raytrace           ray-trace instead (SPEC.md 5): spheres and cones stay\n"
+            "      --raytrace           ray-trace (docs/model.md 5): spheres and cones stay\n"
             "                           analytic, shadows by shadow rays, reflections weighted\n"
             "                           Ks F, refraction through NFF's T (Snell in spheres)\n"
             "      --depth N            ray tracer: deepest reflection/refraction, 0..%d\n"

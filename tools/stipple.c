@@ -18,6 +18,7 @@
 #endif
 #include "render_scene.h"
 #include "scene.h"
+#include "scenegen.h"
 #include "stp_posix.h"
 
 static const char *program = "stipple";
@@ -32,6 +33,8 @@ static void usage_main(FILE *to)
             "  dither IMAGE -o OUT   halftone a PGM/PPM image to PBM\n"
             "  compile SCENE -o OUT.c  write a scene as C source and a minimal configuration\n"
             "                        header for firmware (see 'stipple compile --help')\n"
+            "  scene NAME -o OUT.nff write a procedural scene (teapot, tetra, sphereflake,\n"
+            "                        torus, rings, mountain; see 'stipple scene --help')\n"
             "  bench [SCENE...]      ray tracer speed (rays/s, us/frame, with and without its\n"
             "                        hierarchy) and error against the double reference\n"
             "  help [COMMAND]        show help\n"
@@ -136,7 +139,7 @@ enum {
 
 /* Turn an indexed frame buffer (STYLE8: style index 1..levels per pixel)
  * into RGB through a 256-entry colour table, grey or pseudocolour, with the
- * gamma table applied to each primary (SPEC.md section 6). */
+ * gamma table applied to each primary (docs/model.md section 6). */
 static int index_to_colour(stp_posix_frame *frame, int levels, int pseudo, const stp_tool_options *opt)
 {
     stp_colour_table table;
@@ -523,6 +526,8 @@ int main(int argc, char **argv)
         return cmd_dither(argc - 1, argv + 1);
     if (!strcmp(argv[1], "bench"))
         return cmd_bench(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "scene"))
+        return stp_scenegen_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "compile"))
         return stp_tool_compile_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
@@ -532,6 +537,10 @@ int main(int argc, char **argv)
             usage_dither(stdout);
         else if (argc > 2 && !strcmp(argv[2], "bench"))
             usage_bench(stdout);
+        else if (argc > 2 && !strcmp(argv[2], "scene")) {
+            char *scene_help[] = {argv[2], "--help", NULL};
+            return stp_scenegen_main(2, scene_help);
+        }
         else
             usage_main(stdout);
         return 0;

@@ -6,7 +6,7 @@
 set -eu
 build=${1:?usage: tools/update_golden.sh BUILD_DIR [SCENES_DIR]}
 here=$(cd "$(dirname "$0")/.." && pwd)
-scenes=${2:-$here/../shared/scenes}
+scenes=${2:-$here/tests/data/spd}
 for nff in "$scenes"/*.nff; do
     name=$(basename "$nff" .nff)
     "$build/tools/stipple" render "$nff" -o "$here/tests/golden/$name-128x64.pbm"

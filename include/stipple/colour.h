@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Colour models (SPEC.md section 6), in stp_fix.
+ * Colour models (docs/model.md section 6), in stp_fix.
  *
  * RGB components are in [0, 1]; angles (hue) in degrees [0, 360); other
  * ranges are given per function.  Matrices follow the seed's row-vector

@@ -95,13 +95,13 @@
 #define STP_WITH_COLOUR 1
 #endif
 
-/* 1: transparency (SPEC.md section 5) is compiled in: a polygon blends with
+/* 1: transparency (docs/model.md section 5) is compiled in: a polygon blends with
  * what the band already holds, v = v_r + t v_t. */
 #ifndef STP_WITH_TRANSPARENCY
 #define STP_WITH_TRANSPARENCY 1
 #endif
 
-/* 1: shadows (SPEC.md section 5) by a shadow Z buffer per light are
+/* 1: shadows (docs/model.md section 5) by a shadow Z buffer per light are
  * compiled in: stp_set_shadow_map, depth rasterised into the maps as
  * polygons are entered, a per-pixel test at output.  The renderer object
  * grows by about 100 bytes per light; a render with no map set draws the

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Halftone cells (SPEC.md section 3): ordered-dither threshold matrices and
+ * Halftone cells (docs/model.md section 3): ordered-dither threshold matrices and
  * 2x2 pattern cells.  An intensity is an 8-bit drive value 0..255 (after the
  * gamma table); HALFTONE-FILLIN's rule turns a pixel ON (lit, light) when
  * intensity > threshold of the cell entry under it.

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * The ray tracer (SPEC.md section 5, last item): one ray per pixel from the
+ * The ray tracer (docs/model.md section 5, last item): one ray per pixel from the
  * eye, the nearest hit shaded with (10.16), a shadow ray to each light, and
  * reflected and refracted rays followed recursively until a ray hits
  * nothing, the depth limit is reached or its weight is too small to matter.

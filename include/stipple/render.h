@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * The renderer: display file (SPEC.md section 7), viewing, hidden surfaces,
+ * The renderer: display file (docs/model.md section 7), viewing, hidden surfaces,
  * scan conversion and band output.
  *
  * One stp_renderer holds all state; there are no globals, so two renderers
@@ -14,7 +14,7 @@
  * fractional bits), origin at the top-left corner of the top-left pixel, y
  * down; pixel (i, j) has its centre at (i + 0.5, j + 0.5).
  *
- * Fill rule (written down, tested in tests/test_raster.c): a pixel belongs to
+ * Fill rule (written down, tested in tests/core/test_raster.c): a pixel belongs to
  * a polygon when its centre is inside by the even-odd rule; a centre exactly
  * on an edge belongs to the polygon on the edge's right (x) side and below
  * (top-left rule: spans cover x_left <= centre < x_right, edges cover
@@ -213,7 +213,7 @@ int stp_set_fill_style(stp_renderer *r, int index);
  * STP_ERR_UNSUPPORTED without STP_WITH_COLOUR. */
 int stp_set_colour(stp_renderer *r, int on);
 
-/* Transparency of the polygons entered next (SPEC.md section 5): each one's
+/* Transparency of the polygons entered next (docs/model.md section 5): each one's
  * transmission is t = (t_max - t_min) (N.E)^power + t_min (10.21), times
  * e^(-absorption * thickness) (10.18) where a thickness is known (pass 0 for
  * none), clamped to [0, 1].  At output the polygon's shade v_r is blended with
@@ -290,7 +290,7 @@ int stp_line(stp_renderer *r, stp_vec3 p);
  * for an implicit segment). */
 int stp_polygon(stp_renderer *r, const stp_vec3 *vertices, int n);
 
-/* Smooth (Gouraud) polygons (SPEC.md section 4): like stp_polygon, but each
+/* Smooth (Gouraud) polygons (docs/model.md section 4): like stp_polygon, but each
  * vertex gets its own shade and pixels interpolate it along edges and spans
  * before the halftone compares it with the cell (the combined scheme).
  * stp_polygon_smooth computes each vertex's shade with the full shading
@@ -303,7 +303,7 @@ int stp_polygon_smooth(stp_renderer *r, const stp_vec3 *vertices, const stp_vec3
 int stp_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const stp_fix *shades,
                               int n);
 
-/* --- shadows (SPEC.md section 5: a shadow Z buffer per light)
+/* --- shadows (docs/model.md section 5: a shadow Z buffer per light)
  *
  * A shadow map is a 16-bit depth buffer in caller memory, a perspective
  * view of the scene from one light: its axis runs from the light towards

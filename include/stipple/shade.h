@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Shading (SPEC.md section 2), INTENSITY and gamma (section 3).
+ * Shading (docs/model.md section 2), INTENSITY and gamma (section 3).
  *
  * All quantities are stp_fix.  Units: positions in view-plane units, angles
  * as cosines in [-1, 1], shades in [0, 1].  Nothing here can overflow: every
@@ -161,7 +161,7 @@ int stp_style_inverse(const stp_style_table *table, uint8_t code);
  * with I = i/(levels-1), for i in 0..levels-1.  gamma > 0 (<= 0 is taken as
  * 1), k > 0 (<= 0 is taken as 1).  levels in 2..256; returns 0, or -1 when
  * levels is out of range (out untouched).  Error: at most 1 of 255 against
- * the real function (tests/test_gamma.c). */
+ * the real function (tests/core/test_shade.c). */
 int stp_gamma_table(uint8_t *out, int levels, stp_fix gamma, stp_fix k);
 
 #ifdef __cplusplus

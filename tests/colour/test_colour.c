@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Colour models against the seed (SPEC.md section 6): the worked monitor
+ * Colour models against the seed (docs/model.md section 6): the worked monitor
  * matrix (10.35) and its inverse (10.36) to three decimals, YIQ (10.38), and
  * round trips of every model over a grid of the RGB cube.
  */

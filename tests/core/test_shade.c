@@ -2,7 +2,7 @@
 /*
  * Shading, INTENSITY, style tables and gamma (include/stipple/shade.h)
  * against the double-precision reference tests/reference/shade_ref.c, which
- * is written from SPEC.md section 2 and shares no code with src/shade.c.
+ * is written from docs/model.md section 2 and shares no code with src/shade.c.
  */
 #include <math.h>
 #include <setjmp.h>

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Gouraud shading (SPEC.md section 4) through the public API: shades given
+ * Gouraud shading (docs/model.md section 4) through the public API: shades given
  * per vertex are interpolated along edges and spans; every pixel's shade is
  * checked against the interpolation written out here in double precision.
  */

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Double-precision reference of SPEC.md sections 2 and 3: see shade_ref.h. */
+/* Double-precision reference of docs/model.md sections 2 and 3: see shade_ref.h. */
 #include "shade_ref.h"
 
 #include <math.h>

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Double-precision reference of the shading system, written from SPEC.md
+ * Double-precision reference of the shading system, written from docs/model.md
  * section 2 (MAKE-SHADE, Algorithm 10.5, extended to several lights as in
  * (10.16)) and section 3 (INTENSITY, gamma).  It shares no code with
  * src/shade.c and uses the conventions documented for stp_shade_point in

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Shadows by a shadow Z buffer per light (SPEC.md section 5; render.h,
+ * Shadows by a shadow Z buffer per light (docs/model.md section 5; render.h,
  * stp_set_shadow_map) through the public API.
  *
  * Every scene here is a few quads (a floor, casters) whose picture is also
@@ -10,7 +10,7 @@
  * map's pyramid: outside it the renderer documents "lit").  A pixel the
  * trace finds lit by every light must be exactly the pixel of the same
  * scene rendered without any shadow map; a pixel hidden from some lights
- * must be INTENSITY of the shade re-lit without them (SPEC.md section 2,
+ * must be INTENSITY of the shade re-lit without them (docs/model.md section 2,
  * written out here in double).
  *
  * Tolerance: a pixel is only checked when the trace classifies its 8
@@ -370,7 +370,7 @@ static int classify(const scene *s, const camera *c, double xs, double ys, uint3
 }
 
 /* The style of quad `seen` re-lit without the lights in `hidden`: the flat
- * shade at its vertex average, SPEC.md section 2 without the specular term,
+ * shade at its vertex average, docs/model.md section 2 without the specular term,
  * the normal turned to the eye. */
 static int relit_style(const scene *s, const camera *c, int seen, uint32_t hidden)
 {

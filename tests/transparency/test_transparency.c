@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Transparency (SPEC.md section 5, (10.20), (10.21)) through the public API:
+ * Transparency (docs/model.md section 5, (10.20), (10.21)) through the public API:
  * an opaque square behind a transparent one; in the overlap the pixel must
  * be INTENSITY(v_r + t v_t), with v_t recovered from the frame by the inverse
  * of INTENSITY, whatever the hidden-surface method and the entry order.

@@ -20,7 +20,7 @@
 #   --work DIR     where the firmware is built and run (default BUILD/firmware-figures)
 #   --out FILE     the CSV (default WORK/firmware.csv)
 #   --scenes DIR   the shared NFF scenes (default $STP_SCENES_DIR, else
-#                  ../shared/scenes beside the source tree)
+#                  tests/data/spd)
 #   --stipple EXE  host stipple (default BUILD/tools/stipple)
 #   --compare EXE  compare_screendump (default BUILD/tests/firmware/compare_screendump)
 # Environment: STP_FW_FIGURE_SCENES (default "teapot-s1 tetra-s1"),
@@ -35,7 +35,7 @@ src=$(cd "$here/../.." && pwd)
 build=build
 work=""
 out=""
-scenes=${STP_SCENES_DIR:-$src/../shared/scenes}
+scenes=${STP_SCENES_DIR:-$src/tests/data/spd}
 stipple=""
 compare=""
 while [ $# -gt 0 ]; do

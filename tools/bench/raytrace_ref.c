@@ -256,7 +256,7 @@ int ref_rt_polygon(ref_rt *rt, const ref_vec3 *v, const ref_vec3 *normals, int n
     for (i = 0; i < n; i++)
         if (!vfinite(v[i]) || (normals && !vfinite(normals[i])))
             return REF_ERR_ARG;
-    /* Newell's sums (SPEC.md section 1) relative to v0 (they do not change
+    /* Newell's sums (docs/model.md section 1) relative to v0 (they do not change
      * under translation) */
     for (i = 0; i < n; i++) {
         ref_vec3 p = ref_sub(v[i == 0 ? n - 1 : i - 1], v[0]), q = ref_sub(v[i], v[0]);

@@ -2,7 +2,7 @@
 /*
  * Double-precision reference ray tracer (host only).
  *
- * Written from the header comment of include/stipple/raytrace.h and SPEC.md
+ * Written from the header comment of include/stipple/raytrace.h and docs/model.md
  * sections 1, 2 and 5, sharing no code with the fixed-point core (src/): it
  * recomputes in plain double, nothing quantised, what a ray of the core's
  * stp_rt_trace_pixel sees, so that any difference between the two is
@@ -28,7 +28,7 @@
  *   objects       sphere; open truncated cone (NFF `c`: no caps, radius
  *                 linear along the axis from base_radius at base to
  *                 apex_radius at apex); polygon: plane normal by Newell's
- *                 sums (SPEC.md section 1, on the world vertices, relative
+ *                 sums (docs/model.md section 1, on the world vertices, relative
  *                 to v0) normalised, the plane through v0 (N.x = N.v0, as the
  *                 core stores it), inside test even-odd on the projection
  *                 that drops the normal's largest axis (ties: the first of

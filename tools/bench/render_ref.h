@@ -2,7 +2,7 @@
 /*
  * Double-precision reference renderer (host only).
  *
- * Written from SPEC.md and the conventions documented in the public headers
+ * Written from docs/model.md and the conventions documented in the public headers
  * (include/stipple/render.h: view system, fill rule; shade.h: shading
  * conventions), sharing no code with the fixed-point core: it renders the
  * same scenes through the same pipeline choices as stp_tool_render
