@@ -358,7 +358,7 @@ done:
 
 /* ---- the subcommand ---- */
 
-static void usage(FILE *to)
+void stp_tool_compile_usage(FILE *to)
 {
     fprintf(to,
             "usage: stipple compile SCENE -o OUT.c [options]\n"
@@ -406,6 +406,7 @@ int stp_tool_compile_main(int argc, char **argv)
     stp_tool_options opt;
     stp_scene_options sopt;
     stp_scene scene;
+    stp_tool_given given;
     const char *c_path = 0, *h_path = 0;
     char h_default[4096], c_tmp[4200], h_tmp[4200], err[512];
     FILE *cf = 0, *hf = 0;
@@ -413,35 +414,42 @@ int stp_tool_compile_main(int argc, char **argv)
 
     stp_tool_options_default(&opt);
     stp_scene_options_default(&sopt);
+    memset(&given, 0, sizeof given);
+    opterr = 0;
     optind = 1;
     if (stp_tool_long_options(longs, sizeof longs / sizeof longs[0], own) != 0)
         return fail("internal: option table too small");
-    while ((c = getopt_long(argc, argv, STP_TOOL_SHORT_OPTIONS "o:h", longs, 0)) != -1) {
+    while ((c = getopt_long(argc, argv, ":" STP_TOOL_SHORT_OPTIONS "o:h", longs, 0)) != -1) {
         int applied = stp_tool_apply_option(c, optarg, &opt, &sopt, err, sizeof err);
+        if (c > 0 && c < STP_TOOL_OPT_COMMAND)
+            given.code[c] = 1;
         if (applied < 0)
-            return fail("%s", err);
+            return stp_tool_usage_error("compile", "%s", err);
         if (applied)
             continue;
         switch (c) {
         case 'o': c_path = optarg; break;
         case OPT_HEADER: h_path = optarg; break;
-        case 'h': usage(stdout); return 0;
-        default: usage(stderr); return 2;
+        case 'h': stp_tool_compile_usage(stdout); return 0;
+        default: return stp_tool_getopt_error("compile", c, argv);
         }
     }
-    if (optind != argc - 1) {
-        usage(stderr);
-        return 2;
-    }
+    if (optind >= argc)
+        return stp_tool_usage_error("compile", "no scene given");
+    if (optind < argc - 1)
+        return stp_tool_usage_error("compile", "one scene only ('%s' is extra)",
+                                    argv[optind + 1]);
     /* the compiled-scene firmware path enters flat, grey, opaque polygons */
     if (opt.raytrace)
-        return fail("--raytrace is not supported for compiled scenes (they carry a display "
-                    "file)");
+        return stp_tool_usage_error("compile", "--raytrace is not supported for compiled "
+                                               "scenes (they carry a display file)");
+    if (stp_tool_check_renderer(&given, 0, err, sizeof err) != 0)
+        return stp_tool_usage_error("compile", "%s", err);
     if (opt.smooth || opt.colour || opt.transparency || opt.shadow_resolution)
-        return fail("--smooth, --color, --transparent and --shadows are not supported for "
-                    "compiled scenes yet");
+        return stp_tool_usage_error("compile", "--smooth, --color, --transparent and --shadows "
+                                               "are not supported for compiled scenes yet");
     if (!c_path)
-        return fail("no output given (-o FILE.c)");
+        return stp_tool_usage_error("compile", "no output given (-o FILE.c)");
     if (!h_path) {
         size_t n = strlen(c_path);
         if (n >= 2 && !strcmp(c_path + n - 2, ".c"))

@@ -67,6 +67,14 @@ static void usage_render(FILE *to)
     stp_tool_options_help(to);
 }
 
+static void usage_help(FILE *to)
+{
+    fprintf(to, "usage: stipple help [COMMAND]\n"
+                "\n"
+                "Prints the commands, or the options of COMMAND (the same as\n"
+                "'stipple COMMAND --help').\n");
+}
+
 static void usage_dither(FILE *to)
 {
     fprintf(to,
@@ -230,6 +238,35 @@ static int render_to_device(const char *scene_path, const char *spec, stp_tool_o
 #endif
 }
 
+/* Options that depend on the output: the halftone cell is for 1-bit
+ * pictures only, text has its 16 characters as levels, an indexed frame
+ * holds style indices 1..255 in a byte.  Picks the default levels: 256 for
+ * grey and colour pictures (16 would posterise them), 16 otherwise. */
+static int check_output_options(const stp_tool_given *given, stp_posix_file_kind kind,
+                                int palette, stp_tool_options *opt, char *err, size_t err_size)
+{
+    int mono = kind == STP_POSIX_FILE_P4 || kind == STP_POSIX_FILE_P1;
+    if (!mono && (given->code['d'] || given->code[STP_TOOL_OPT_SPACING])) {
+        snprintf(err, err_size, "--%s halftones 1-bit pictures (.pbm) only",
+                 given->code['d'] ? "dither" : "spacing");
+        return -1;
+    }
+    if (kind == STP_POSIX_FILE_ASCII) {
+        if (given->code['l'] && opt->levels != 16) {
+            snprintf(err, err_size, "--levels: text has 16 levels, one per character");
+            return -1;
+        }
+        opt->levels = 16;
+    }
+    if (palette && opt->levels > 255) {
+        snprintf(err, err_size, "--palette: at most 255 levels (a style index is a byte)");
+        return -1;
+    }
+    if (!given->code['l'] && !palette && (kind == STP_POSIX_FILE_P5 || kind == STP_POSIX_FILE_P6))
+        opt->levels = 256;
+    return 0;
+}
+
 static int cmd_render(int argc, char **argv)
 {
     static const struct option own[] = {
@@ -246,32 +283,36 @@ static int cmd_render(int argc, char **argv)
     stp_style_table lp;
     stp_tool_stats stats;
     stp_posix_file_kind kind = STP_POSIX_FILE_UNKNOWN;
+    stp_tool_given given;
     const char *out_path = 0, *scene_path, *device_spec = 0;
     char err[512];
-    int c, show_stats = 0, palette = 0, size_given = 0;
+    int c, show_stats = 0, palette = 0;
 
     stp_tool_options_default(&opt);
     stp_scene_options_default(&sopt);
     if (stp_tool_long_options(longs, sizeof longs / sizeof longs[0], own) != 0)
         return fail("internal: option table too small");
+    memset(&given, 0, sizeof given);
+    opterr = 0;
     optind = 1;
-    while ((c = getopt_long(argc, argv, STP_TOOL_SHORT_OPTIONS "o:b:h", longs, 0)) != -1) {
+    while ((c = getopt_long(argc, argv, ":" STP_TOOL_SHORT_OPTIONS "o:b:h", longs, 0)) != -1) {
         int applied = stp_tool_apply_option(c, optarg, &opt, &sopt, err, sizeof err);
-        if (c == 's')
-            size_given = 1;
+        if (c > 0 && c < STP_TOOL_OPT_COMMAND)
+            given.code[c] = 1;
         if (applied < 0)
-            return fail("%s", err);
+            return stp_tool_usage_error("render", "%s", err);
         if (applied)
             continue;
         switch (c) {
         case 'o': out_path = optarg; break;
         case OPT_FORMAT:
             if (parse_kind(optarg, &kind))
-                return fail("bad --format '%s' (pbm, plain-pbm, pgm, ppm, txt)", optarg);
+                return stp_tool_usage_error("render", "bad --format '%s' (pbm, plain-pbm, pgm, "
+                                                      "ppm, txt)", optarg);
             break;
         case 'b':
             if (stp_tool_parse_int(optarg, 1, 32767, &opt.band_rows))
-                return fail("bad --band '%s' (1..32767)", optarg);
+                return stp_tool_usage_error("render", "bad --band '%s' (1..32767)", optarg);
             break;
         case OPT_STATS: show_stats = 1; break;
         case OPT_DEVICE: device_spec = optarg; break;
@@ -281,44 +322,48 @@ static int cmd_render(int argc, char **argv)
             else if (!strcmp(optarg, "pseudo"))
                 palette = 2;
             else
-                return fail("bad --palette '%s' (grey, pseudo)", optarg);
+                return stp_tool_usage_error("render", "bad --palette '%s' (grey, pseudo)", optarg);
             break;
         case 'h': usage_render(stdout); return 0;
-        default: usage_render(stderr); return 2;
+        default: return stp_tool_getopt_error("render", c, argv);
         }
     }
-    if (optind != argc - 1) {
-        usage_render(stderr);
-        return 2;
-    }
+    if (optind >= argc)
+        return stp_tool_usage_error("render", "no scene given");
+    if (optind < argc - 1)
+        return stp_tool_usage_error("render", "one scene only ('%s' is extra)", argv[optind + 1]);
     scene_path = argv[optind];
+    if (stp_tool_check_renderer(&given, opt.raytrace, err, sizeof err) != 0)
+        return stp_tool_usage_error("render", "%s", err);
     if (device_spec) {
         if (out_path || palette || kind != STP_POSIX_FILE_UNKNOWN)
-            return fail("render: --device draws on the device: no -o, --format or --palette");
-        return render_to_device(scene_path, device_spec, &opt, &sopt, size_given, show_stats);
+            return stp_tool_usage_error("render", "--device draws on the device: no -o, --format "
+                                                  "or --palette");
+        return render_to_device(scene_path, device_spec, &opt, &sopt, given.code['s'], show_stats);
     }
     if (!out_path)
-        return fail("render: no output given (-o FILE, -o - for stdout, or --device SPEC)");
+        return stp_tool_usage_error("render", "no output given (-o FILE, -o - for stdout, or "
+                                              "--device SPEC)");
     if (kind == STP_POSIX_FILE_UNKNOWN) {
         kind = stp_posix_kind_from_path(out_path);
         if (kind == STP_POSIX_FILE_UNKNOWN) {
             if (strcmp(out_path, "-") != 0)
-                return fail("%s: unknown output extension (use .pbm .pgm .ppm .txt or --format)",
-                            out_path);
+                return stp_tool_usage_error("render", "%s: unknown output extension (use .pbm "
+                                                      ".pgm .ppm .txt or --format)", out_path);
             kind = STP_POSIX_FILE_ASCII;
         }
     }
+    if (palette && (kind != STP_POSIX_FILE_P6 || opt.colour))
+        return stp_tool_usage_error("render", "--palette needs a .ppm output (and no --color)");
+    if (check_output_options(&given, kind, palette, &opt, err, sizeof err) != 0)
+        return stp_tool_usage_error("render", "%s", err);
     if (stp_scene_load(scene_path, &sopt, &scene, err, sizeof err) != 0)
         return fail("%s", err);
     if (kind == STP_POSIX_FILE_ASCII) {
         /* the line printer has 16 characters: INTENSITY levels map onto them */
         stp_posix_lineprinter_table(&lp);
-        if (opt.levels != lp.levels)
-            opt.levels = lp.levels;
         opt.styles = &lp;
     }
-    if (palette && (kind != STP_POSIX_FILE_P6 || opt.colour))
-        return fail("--palette needs a .ppm output (and no --color)");
     /* with a palette the frame is an indexed frame buffer: style indices */
     if (stp_posix_frame_init(&frame, (uint32_t)opt.width, (uint32_t)opt.height,
                              palette ? STP_PIXEL_STYLE8 : format_for_kind(kind)) != 0) {
@@ -383,8 +428,9 @@ static int cmd_dither(int argc, char **argv)
     uint32_t y, x;
 
     stp_tool_options_default(&opt);
+    opterr = 0;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:d:g:h", longs, 0)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:d:g:h", longs, 0)) != -1) {
         switch (c) {
         case 'o': out_path = optarg; break;
         case OPT_PLAIN: plain = 1; break;
@@ -394,22 +440,22 @@ static int cmd_dither(int argc, char **argv)
         case STP_TOOL_OPT_GAMMA_K: {
             stp_scene_options unused;
             if (stp_tool_apply_option(c, optarg, &opt, &unused, err, sizeof err) < 0)
-                return fail("%s", err);
+                return stp_tool_usage_error("dither", "%s", err);
             use_gamma |= c == 'g' || c == STP_TOOL_OPT_GAMMA_K;
             break;
         }
         case 'h': usage_dither(stdout); return 0;
-        default: usage_dither(stderr); return 2;
+        default: return stp_tool_getopt_error("dither", c, argv);
         }
     }
-    if (optind != argc - 1) {
-        usage_dither(stderr);
-        return 2;
-    }
+    if (optind >= argc)
+        return stp_tool_usage_error("dither", "no image given");
+    if (optind < argc - 1)
+        return stp_tool_usage_error("dither", "one image only ('%s' is extra)", argv[optind + 1]);
     if (!out_path)
-        return fail("dither: no output given (-o FILE.pbm)");
+        return stp_tool_usage_error("dither", "no output given (-o FILE.pbm)");
     if (strcmp(out_path, "-") != 0 && stp_posix_kind_from_path(out_path) != STP_POSIX_FILE_P4)
-        return fail("%s: dither writes PBM; give a .pbm name", out_path);
+        return stp_tool_usage_error("dither", "%s: dither writes PBM; give a .pbm name", out_path);
     if (stp_tool_cell(&opt, &cell) != 0)
         return fail("bad halftone cell");
     if (use_gamma && stp_gamma_table(table, 256, stp_tool_fix(opt.gamma), stp_tool_fix(opt.gamma_k)))
@@ -481,22 +527,24 @@ static int cmd_bench(int argc, char **argv)
     opt.raytrace = 1;
     if (!dir || !*dir)
         dir = STP_DEFAULT_SCENES_DIR;
+    opterr = 0;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "s:h", longs, 0)) != -1) {
+    while ((c = getopt_long(argc, argv, ":s:h", longs, 0)) != -1) {
         switch (c) {
         case OPT_BENCH_SCENES: dir = optarg; break;
         case OPT_BENCH_BUDGET:
             if (stp_tool_parse_double(optarg, &budget) || !(budget > 0) || budget > 3600)
-                return fail("bad --budget '%s' (seconds, > 0)", optarg);
+                return stp_tool_usage_error("bench", "bad --budget '%s' (seconds, 0..3600)",
+                                            optarg);
             break;
         case 's':
         case STP_TOOL_OPT_DEPTH:
         case STP_TOOL_OPT_MIN_WEIGHT:
             if (stp_tool_apply_option(c, optarg, &opt, &sopt, err, sizeof err) < 0)
-                return fail("%s", err);
+                return stp_tool_usage_error("bench", "%s", err);
             break;
         case 'h': usage_bench(stdout); return 0;
-        default: usage_bench(stderr); return 2;
+        default: return stp_tool_getopt_error("bench", c, argv);
         }
     }
     if (optind < argc)
@@ -507,12 +555,35 @@ static int cmd_bench(int argc, char **argv)
     return stp_rt_bench(stdout, dir, default_names, 2, &opt, budget) == 0 ? 0 : 1;
 }
 
+/* stipple help [COMMAND] */
+static int cmd_help(int argc, char **argv)
+{
+    if (argc < 3) {
+        usage_main(stdout);
+        return 0;
+    }
+    if (argc > 3)
+        return stp_tool_usage_error("help", "one command at a time");
+    if (!strcmp(argv[2], "render"))
+        usage_render(stdout);
+    else if (!strcmp(argv[2], "dither"))
+        usage_dither(stdout);
+    else if (!strcmp(argv[2], "bench"))
+        usage_bench(stdout);
+    else if (!strcmp(argv[2], "compile"))
+        stp_tool_compile_usage(stdout);
+    else if (!strcmp(argv[2], "help") || !strcmp(argv[2], "--help") || !strcmp(argv[2], "-h"))
+        usage_help(stdout);
+    else
+        return stp_tool_usage_error(0, "no command '%s' (render, dither, compile, bench, help)",
+                                    argv[2]);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
-    if (argc < 2) {
-        usage_main(stderr);
-        return 2;
-    }
+    if (argc < 2)
+        return stp_tool_usage_error(0, "no command given (render, dither, compile, bench, help)");
     if (!strcmp(argv[1], "--version") || !strcmp(argv[1], "version")) {
         printf("stipple %s\n", stp_version());
         return 0;
@@ -525,18 +596,7 @@ int main(int argc, char **argv)
         return cmd_bench(argc - 1, argv + 1);
     if (!strcmp(argv[1], "compile"))
         return stp_tool_compile_main(argc - 1, argv + 1);
-    if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
-        if (argc > 2 && !strcmp(argv[2], "render"))
-            usage_render(stdout);
-        else if (argc > 2 && !strcmp(argv[2], "dither"))
-            usage_dither(stdout);
-        else if (argc > 2 && !strcmp(argv[2], "bench"))
-            usage_bench(stdout);
-        else
-            usage_main(stdout);
-        return 0;
-    }
-    fprintf(stderr, "%s: unknown command '%s'\n", program, argv[1]);
-    usage_main(stderr);
-    return 2;
+    if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))
+        return cmd_help(argc, argv);
+    return stp_tool_usage_error(0, "unknown command '%s'", argv[1]);
 }
