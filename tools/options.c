@@ -271,7 +271,8 @@ void stp_tool_options_help(FILE *to)
 {
     fprintf(to,
             "  -s, --size WxH           device size in pixels (default 128x64)\n"
-            "  -l, --levels N           INTENSITY levels, 2..256 (default 16)\n"
+            "  -l, --levels N           INTENSITY levels, 2..256 (default 16; render: 256\n"
+            "                           for grey and colour pictures)\n"
             "  -d, --dither CELL        bayer2, bayer4 (default), bayer8, seed2x2, pattern2x2,\n"
             "                           or user:W:H:t,t,... (thresholds 0..255, row-major)\n"
             "      --spacing KIND       threshold spacing of Bayer cells: linear (default),\n"
@@ -380,4 +381,14 @@ int stp_tool_getopt_error(const char *command, int c, char *const argv[])
     if (c == ':')
         return stp_tool_usage_error(command, "option '%s' needs a value", shown);
     return stp_tool_usage_error(command, "unknown option '%s'", shown);
+}
+
+const char *stp_tool_parse_scene_format(const char *s)
+{
+    static const char *const formats[] = {"nff", "obj", "off", "ply"};
+    size_t i;
+    for (i = 0; i < sizeof formats / sizeof formats[0]; i++)
+        if (!strcmp(s, formats[i]))
+            return formats[i];
+    return 0;
 }

@@ -95,4 +95,8 @@ int stp_tool_parse_double(const char *s, double *out);
 int stp_tool_parse_dither(const char *s, stp_tool_options *opt);
 int stp_tool_parse_spacing(const char *s, stp_spacing *out);
 
+/* --scene-format: the reader's name ("nff", "obj", "off", "ply", static
+ * storage) for s, or NULL when s names none. */
+const char *stp_tool_parse_scene_format(const char *s);
+
 #endif

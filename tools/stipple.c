@@ -19,6 +19,7 @@
 #include "render_scene.h"
 #include "scene.h"
 #include "stp_posix.h"
+#include "stp_posix_png.h"
 
 static const char *program = "stipple";
 
@@ -46,21 +47,29 @@ static void usage_render(FILE *to)
             "usage: stipple render SCENE -o OUT [options]\n"
             "       stipple render SCENE --device SPEC [options]\n"
             "\n"
-            "Renders SCENE (.nff, .obj, .off) with the fixed-point core.  OUT's extension picks\n"
-            "the output: .pbm (halftoned 1-bit), .pgm (grey), .ppm (colour file of the grey\n"
-            "picture, or of the colour one with --color), .txt (line-printer text, one\n"
+            "Renders SCENE (.nff, .obj, .off, .ply; '-' reads standard input, which needs\n"
+            "--scene-format) with the fixed-point core.  OUT's extension picks the output:\n"
+            ".pbm (halftoned 1-bit), .pgm (grey), .ppm (colour file of the grey picture, or\n"
+            "of the colour one with --color), .png (grey, or colour with --color or\n"
+            "--palette; --format png1 for halftoned 1-bit), .txt (line-printer text, one\n"
             "character per pixel); '-' writes to stdout in the --format given (default txt).\n"
+            "Grey and colour pictures have 256 levels unless --levels says otherwise;\n"
+            "1-bit pictures, text and --palette 16.  Options the chosen renderer or output\n"
+            "does not use are refused.\n"
             "\n"
             "  -o, --output FILE        where to write\n"
+            "      --scene-format KIND  nff, obj, off or ply: the scene's format when its\n"
+            "                           name does not say (needed for '-')\n"
             "      --device SPEC        draw on a Linux device instead, at its size and format:\n"
             "                           fb:/dev/fbN, usb:VID:PID or usb (receipt printer),\n"
             "                           spi:/dev/spidevB.C,controller=ssd1306|sharp-ls013b7dh03|\n"
             "                           ssd1680|ssd1680-128x296,dc=LINE,reset=LINE,busy=LINE,...\n"
             "                           (see ports/linux-fb/stp_device.h)\n"
-            "      --format KIND        pbm, plain-pbm, pgm, ppm or txt (default: from OUT)\n"
+            "      --format KIND        pbm, plain-pbm, pgm, ppm, png, png1 or txt (default:\n"
+            "                           from OUT)\n"
             "  -b, --band ROWS          render in bands of ROWS rows (default: whole frame)\n"
             "      --stats              print display-file and memory figures on stderr\n"
-            "      --palette grey|pseudo  .ppm through a 256-entry colour table: the frame is\n"
+            "      --palette grey|pseudo  .ppm/.png through a 256-entry colour table: the frame is\n"
             "                           an indexed frame buffer of styles; pseudo maps dark to\n"
             "                           blue and light to red; --gamma applies per primary\n"
             "  -h, --help               this help\n");
@@ -80,10 +89,12 @@ static void usage_dither(FILE *to)
     fprintf(to,
             "usage: stipple dither IMAGE -o OUT.pbm [options]\n"
             "\n"
-            "Halftones a PGM or PPM image (PPM through luminance) with an ordered-dither cell.\n"
+            "Halftones a PNG, PGM or PPM image ('-' reads standard input; colour through\n"
+            "luminance, alpha ignored) with an ordered-dither cell.\n"
             "With bayer2/4/8 the pixels equal ImageMagick's -ordered-dither o2x2/o4x4/o8x8.\n"
             "\n"
-            "  -o, --output FILE     where to write (.pbm; '-' for stdout)\n"
+            "  -o, --output FILE     where to write (.pbm, or .png for a 1-bit PNG; '-' for\n"
+            "                        PBM on stdout)\n"
             "      --plain           write plain PBM (P1) instead of raw (P4)\n"
             "  -d, --dither CELL     as for render (default bayer4)\n"
             "      --spacing KIND    linear (default), exponential, cubic\n"
@@ -104,9 +115,17 @@ static int fail(const char *fmt, ...)
     return 1;
 }
 
-static int parse_kind(const char *s, stp_posix_file_kind *kind)
+/* png: 1 for "png" (grey, or RGB with --color or --palette: *kind is
+ * settled once the options are known), 2 for "png1" (1-bit), else 0. */
+static int parse_kind(const char *s, stp_posix_file_kind *kind, int *png)
 {
-    if (!strcmp(s, "pbm"))
+    *png = 0;
+    if (!strcmp(s, "png"))
+        *png = 1;
+    else if (!strcmp(s, "png1")) {
+        *png = 2;
+        *kind = STP_POSIX_FILE_P4;
+    } else if (!strcmp(s, "pbm"))
         *kind = STP_POSIX_FILE_P4;
     else if (!strcmp(s, "plain-pbm"))
         *kind = STP_POSIX_FILE_P1;
@@ -139,7 +158,8 @@ enum {
     OPT_PALETTE,
     OPT_DEVICE,
     OPT_BENCH_SCENES,
-    OPT_BENCH_BUDGET
+    OPT_BENCH_BUDGET,
+    OPT_SCENE_FORMAT
 };
 
 /* Turn an indexed frame buffer (STYLE8: style index 1..levels per pixel)
@@ -179,7 +199,8 @@ static int index_to_colour(stp_posix_frame *frame, int levels, int pseudo, const
 /* stipple render --device SPEC: the scene onto a Linux device (fbdev, USB
  * receipt printer, SPI panel; ports/linux-fb/stp_device.h).  The picture
  * takes the device's size and pixel format unless --size asks for less. */
-static int render_to_device(const char *scene_path, const char *spec, stp_tool_options *opt,
+static int render_to_device(const char *scene_path, const char *scene_format, const char *spec,
+                            stp_tool_options *opt,
                             const stp_scene_options *sopt, int size_given, int show_stats)
 {
 #if STP_HAVE_DEVICE
@@ -191,7 +212,7 @@ static int render_to_device(const char *scene_path, const char *spec, stp_tool_o
     stp_progress progress;
     char err[512];
     int rc;
-    if (stp_scene_load(scene_path, sopt, &scene, err, sizeof err) != 0)
+    if (stp_scene_load_as(scene_path, scene_format, sopt, &scene, err, sizeof err) != 0)
         return fail("%s", err);
     stp_device_options_default(&dopt);
     if (size_given) {
@@ -229,6 +250,7 @@ static int render_to_device(const char *scene_path, const char *spec, stp_tool_o
     return 0;
 #else
     (void)scene_path;
+    (void)scene_format;
     (void)spec;
     (void)opt;
     (void)sopt;
@@ -274,6 +296,7 @@ static int cmd_render(int argc, char **argv)
         {"band", required_argument, 0, 'b'},   {"stats", no_argument, 0, OPT_STATS},
         {"palette", required_argument, 0, OPT_PALETTE},
         {"device", required_argument, 0, OPT_DEVICE},
+        {"scene-format", required_argument, 0, OPT_SCENE_FORMAT},
         {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     struct option longs[64];
     stp_tool_options opt;
@@ -284,9 +307,9 @@ static int cmd_render(int argc, char **argv)
     stp_tool_stats stats;
     stp_posix_file_kind kind = STP_POSIX_FILE_UNKNOWN;
     stp_tool_given given;
-    const char *out_path = 0, *scene_path, *device_spec = 0;
+    const char *out_path = 0, *scene_path, *device_spec = 0, *scene_format = 0;
     char err[512];
-    int c, show_stats = 0, palette = 0;
+    int c, show_stats = 0, palette = 0, png = 0, format_given = 0;
 
     stp_tool_options_default(&opt);
     stp_scene_options_default(&sopt);
@@ -306,9 +329,10 @@ static int cmd_render(int argc, char **argv)
         switch (c) {
         case 'o': out_path = optarg; break;
         case OPT_FORMAT:
-            if (parse_kind(optarg, &kind))
+            if (parse_kind(optarg, &kind, &png))
                 return stp_tool_usage_error("render", "bad --format '%s' (pbm, plain-pbm, pgm, "
-                                                      "ppm, txt)", optarg);
+                                                      "ppm, txt, png, png1)", optarg);
+            format_given = 1;
             break;
         case 'b':
             if (stp_tool_parse_int(optarg, 1, 32767, &opt.band_rows))
@@ -316,6 +340,11 @@ static int cmd_render(int argc, char **argv)
             break;
         case OPT_STATS: show_stats = 1; break;
         case OPT_DEVICE: device_spec = optarg; break;
+        case OPT_SCENE_FORMAT:
+            if (!(scene_format = stp_tool_parse_scene_format(optarg)))
+                return stp_tool_usage_error("render", "bad --scene-format '%s' (nff, obj, off, ply)",
+                                            optarg);
+            break;
         case OPT_PALETTE:
             if (!strcmp(optarg, "grey") || !strcmp(optarg, "gray"))
                 palette = 1;
@@ -333,31 +362,40 @@ static int cmd_render(int argc, char **argv)
     if (optind < argc - 1)
         return stp_tool_usage_error("render", "one scene only ('%s' is extra)", argv[optind + 1]);
     scene_path = argv[optind];
+    if (!strcmp(scene_path, "-") && !scene_format)
+        return stp_tool_usage_error("render", "a scene from standard input ('-') needs "
+                                              "--scene-format nff|obj|off|ply");
     if (stp_tool_check_renderer(&given, opt.raytrace, err, sizeof err) != 0)
         return stp_tool_usage_error("render", "%s", err);
     if (device_spec) {
-        if (out_path || palette || kind != STP_POSIX_FILE_UNKNOWN)
+        if (out_path || palette || format_given)
             return stp_tool_usage_error("render", "--device draws on the device: no -o, --format "
                                                   "or --palette");
-        return render_to_device(scene_path, device_spec, &opt, &sopt, given.code['s'], show_stats);
+        return render_to_device(scene_path, scene_format, device_spec, &opt, &sopt,
+                                given.code['s'], show_stats);
     }
     if (!out_path)
         return stp_tool_usage_error("render", "no output given (-o FILE, -o - for stdout, or "
                                               "--device SPEC)");
+    if (!format_given && stp_posix_png_path(out_path))
+        png = 1;
+    if (png == 1)
+        kind = opt.colour || palette ? STP_POSIX_FILE_P6 : STP_POSIX_FILE_P5;
     if (kind == STP_POSIX_FILE_UNKNOWN) {
         kind = stp_posix_kind_from_path(out_path);
         if (kind == STP_POSIX_FILE_UNKNOWN) {
             if (strcmp(out_path, "-") != 0)
                 return stp_tool_usage_error("render", "%s: unknown output extension (use .pbm "
-                                                      ".pgm .ppm .txt or --format)", out_path);
+                                                      ".pgm .ppm .png .txt or --format)", out_path);
             kind = STP_POSIX_FILE_ASCII;
         }
     }
     if (palette && (kind != STP_POSIX_FILE_P6 || opt.colour))
-        return stp_tool_usage_error("render", "--palette needs a .ppm output (and no --color)");
+        return stp_tool_usage_error("render", "--palette needs a .ppm or .png output (and no "
+                                              "--color)");
     if (check_output_options(&given, kind, palette, &opt, err, sizeof err) != 0)
         return stp_tool_usage_error("render", "%s", err);
-    if (stp_scene_load(scene_path, &sopt, &scene, err, sizeof err) != 0)
+    if (stp_scene_load_as(scene_path, scene_format, &sopt, &scene, err, sizeof err) != 0)
         return fail("%s", err);
     if (kind == STP_POSIX_FILE_ASCII) {
         /* the line printer has 16 characters: INTENSITY levels map onto them */
@@ -402,7 +440,8 @@ static int cmd_render(int argc, char **argv)
         stp_posix_frame_free(&frame);
         return fail("out of memory for the frame");
     }
-    if (stp_posix_write(&frame, out_path, kind, err, sizeof err) != 0) {
+    if ((png ? stp_posix_write_png(&frame, out_path, err, sizeof err)
+             : stp_posix_write(&frame, out_path, kind, err, sizeof err)) != 0) {
         stp_posix_frame_free(&frame);
         return fail("%s", err);
     }
@@ -424,7 +463,7 @@ static int cmd_dither(int argc, char **argv)
     uint8_t table[256];
     const char *out_path = 0;
     char err[512];
-    int c, plain = 0, use_gamma = 0;
+    int c, plain = 0, use_gamma = 0, png;
     uint32_t y, x;
 
     stp_tool_options_default(&opt);
@@ -454,13 +493,18 @@ static int cmd_dither(int argc, char **argv)
         return stp_tool_usage_error("dither", "one image only ('%s' is extra)", argv[optind + 1]);
     if (!out_path)
         return stp_tool_usage_error("dither", "no output given (-o FILE.pbm)");
-    if (strcmp(out_path, "-") != 0 && stp_posix_kind_from_path(out_path) != STP_POSIX_FILE_P4)
-        return stp_tool_usage_error("dither", "%s: dither writes PBM; give a .pbm name", out_path);
+    png = stp_posix_png_path(out_path);
+    if (strcmp(out_path, "-") != 0 && !png &&
+        stp_posix_kind_from_path(out_path) != STP_POSIX_FILE_P4)
+        return stp_tool_usage_error("dither", "%s: dither writes PBM or 1-bit PNG; give a .pbm "
+                                              "or .png name", out_path);
+    if (png && plain)
+        return stp_tool_usage_error("dither", "--plain is for PBM, not PNG");
     if (stp_tool_cell(&opt, &cell) != 0)
         return fail("bad halftone cell");
     if (use_gamma && stp_gamma_table(table, 256, stp_tool_fix(opt.gamma), stp_tool_fix(opt.gamma_k)))
         return fail("bad gamma");
-    if (stp_posix_read_grey(argv[optind], &img, err, sizeof err) != 0)
+    if (stp_posix_read_image_grey(argv[optind], &img, err, sizeof err) != 0)
         return fail("%s", err);
     if (stp_posix_frame_init(&frame, img.width, img.height, STP_PIXEL_MONO1) != 0) {
         stp_posix_image_free(&img);
@@ -474,8 +518,9 @@ static int cmd_dither(int argc, char **argv)
         stp_halftone_row(frame.pixels + (size_t)y * frame.stride, grey, img.width, y, &cell);
     }
     stp_posix_image_free(&img);
-    if (stp_posix_write(&frame, out_path, plain ? STP_POSIX_FILE_P1 : STP_POSIX_FILE_P4, err,
-                        sizeof err) != 0) {
+    if ((png ? stp_posix_write_png(&frame, out_path, err, sizeof err)
+             : stp_posix_write(&frame, out_path, plain ? STP_POSIX_FILE_P1 : STP_POSIX_FILE_P4,
+                               err, sizeof err)) != 0) {
         stp_posix_frame_free(&frame);
         return fail("%s", err);
     }
