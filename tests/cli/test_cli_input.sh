@@ -8,15 +8,16 @@
 #     binary little-endian and binary big-endian files, and identically to
 #     the same cube as OFF; a malformed PLY gives "file:line:" (ASCII) or
 #     "file: byte N:" (binary) and writes nothing;
-#  3. PNG out: .png files are valid (pngcheck-free: netpbm's pngtopnm reads
-#     them back) and hold exactly the pixels of the PNM outputs: 8-bit grey
+#  3. PNG out: .png files are valid (netpbm's pngtopnm reads them back) and
+#     hold exactly the pixels of the PNM outputs: 8-bit grey
 #     = .pgm, RGB with --color = .ppm, 1-bit (--format png1) = .pbm;
 #  4. PNG in: `stipple dither photo.png` equals `stipple dither photo.pgm`,
 #     for grey, RGB, palette, 16-bit and grey+alpha PNGs written by netpbm,
 #     and dither can write PNG; a damaged PNG is refused;
-#  5. a real mesh from a Debian package (CGAL demo data) when the fetch
-#     script found one (skipped without network).
-# Usage: test_cli_input.sh STIPPLE_BINARY SCENES_DIR [FETCHED_MESH_DIR]
+#  5. real meshes from a Debian package (CGAL demo data, fetched by
+#     tests/fetch_cgal_meshes.sh): every face declared is drawn, and the
+#     sphere re-encoded as binary PLY of both byte orders draws the same.
+# Usage: test_cli_input.sh STIPPLE_BINARY SCENES_DIR MESH_DIR
 set -u
 stipple=$1
 scenes=$2
@@ -161,16 +162,42 @@ head -c $(($(wc -c <"$work/rgb.png") / 2)) "$work/rgb.png" >"$work/cut.png"
 if [ $? = 1 ] && grep -q "cut.png: " "$work/err" && [ ! -e "$work/cut.pbm" ]; then ok
 else bad "truncated PNG: $(cat "$work/err")"; fi
 
-# --- 5. a real mesh
-if [ -n "$meshes" ] && ls "$meshes"/*.ply >/dev/null 2>&1; then
-    for m in "$meshes"/*.ply; do
-        if "$stipple" render "$m" -s 160x120 --backface -o "$work/real.pgm" --stats 2>"$work/err"; then
-            n=$(grep -o '[0-9]* polygons' "$work/err" | cut -d' ' -f1)
-            if [ "${n:-0}" -gt 100 ]; then ok; else bad "$(basename "$m"): $n polygons"; fi
+# --- 5. real meshes from Debian's CGAL demo data (tests/fetch_cgal_meshes.sh)
+if [ -n "$meshes" ]; then
+    # the polygon counts their headers declare; every face is entered
+    for pair in sphere.ply:320 colored_tetra.ply:4; do
+        m=$meshes/${pair%%:*} want=${pair#*:}
+        if "$stipple" render "$m" -s 160x120 --backface --stats -o "$work/real.pgm" 2>"$work/err"; then
+            n=$(sed -n 's/.*: \([0-9]*\) polygons (0 degenerate skipped).*/\1/p' "$work/err")
+            greys=$(pnmtoplainpnm "$work/real.pgm" | tail -n +4 | tr -s ' \n' '\n' | grep . | sort -u | wc -l)
+            if [ "$n" = "$want" ] && [ "$greys" -ge 2 ]; then ok
+            else bad "$(basename "$m"): '$n' polygons (want $want), $greys greys"; fi
         else bad "$(basename "$m"): $(cat "$work/err")"; fi
     done
+    # the same sphere as binary PLY of both byte orders (re-encoded by perl)
+    # gives the same picture
+    "$stipple" render "$meshes/sphere.ply" -s 96x96 -o "$work/sphere.pgm"
+    for order in little big; do
+        o='<'
+        [ $order = big ] && o='>'
+        perl -e '
+            my ($o, $order) = @ARGV; my $body = 0;
+            while (<STDIN>) {
+                if (!$body) {
+                    s/^format ascii/format binary_${order}_endian/;
+                    print; $body = 1 if /^end_header/; next;
+                }
+                my @f = split;
+                if (@f == 3) { print pack("d$o" x 3, @f) }
+                else { my $n = shift @f; print pack("C", $n), pack("l$o" x $n, @f) }
+            }' "$o" "$order" <"$meshes/sphere.ply" >"$work/sphere-$order.ply"
+        "$stipple" render "$work/sphere-$order.ply" -s 96x96 -o "$work/sphere-$order.pgm" 2>"$work/err" ||
+            bad "binary sphere ($order): $(cat "$work/err")"
+        if cmp -s "$work/sphere.pgm" "$work/sphere-$order.pgm"; then ok
+        else bad "sphere.ply as binary $order-endian renders differently"; fi
+    done
 else
-    echo "note: no fetched Debian mesh (scripts/fetch_ply_meshes.sh); part 5 skipped"
+    bad "no directory of fetched meshes given"
 fi
 
 echo "$passes passed, $failures failed"
