@@ -156,6 +156,8 @@ for pair in rgb.png:photo.ppm grey.png:photo-grey.pgm rgb16.png:photo.ppm pal.pn
     if cmp -s "$work/$png.pbm" "$work/$ref.pbm"; then ok; else bad "dither $png differs from dither $ref"; fi
 done
 "$stipple" dither "$work/rgb.png" -o "$work/d.png" && "$stipple" dither "$work/rgb.png" -o "$work/d.pbm" || bad "dither to PNG"
+if "$stipple" dither - -o "$work/stdin.pbm" <"$work/rgb.png" && cmp -s "$work/stdin.pbm" "$work/d.pbm"; then ok
+else bad "dither of a PNG on stdin differs"; fi
 check_png "$work/d.png" "$work/d.pbm" P4 1
 head -c $(($(wc -c <"$work/rgb.png") / 2)) "$work/rgb.png" >"$work/cut.png"
 "$stipple" dither "$work/cut.png" -o "$work/cut.pbm" 2>"$work/err"
