@@ -358,20 +358,22 @@ done:
 
 /* ---- the subcommand ---- */
 
-static void usage(FILE *to)
+void stp_tool_compile_usage(FILE *to)
 {
     fprintf(to,
             "usage: stipple compile SCENE -o OUT.c [options]\n"
             "\n"
-            "Compiles SCENE (.nff, .obj, .off) for a firmware build: OUT.c holds the scene as\n"
-            "fixed-point data for ports/compiled/stp_scene_data.h, and a header (OUT_config.h\n"
-            "unless --header says otherwise) sets the core's STP_* switches to what the scene\n"
-            "needs.  The firmware's picture equals 'stipple render SCENE' with the same\n"
-            "options, rendered to 1-bit (MONO1).\n"
+            "Compiles SCENE (.nff, .obj, .off, .ply; '-' for standard input) for a firmware\n"
+            "build: OUT.c holds the scene as fixed-point data for\n"
+            "ports/compiled/stp_scene_data.h, and a header (OUT_config.h unless --header\n"
+            "says otherwise) sets the core's STP_* switches to what the scene needs.  The\n"
+            "firmware's picture equals 'stipple render SCENE' with the same options,\n"
+            "rendered to 1-bit (MONO1).\n"
             "\n"
             "  -o, --output FILE        the C source to write (required)\n"
             "      --header FILE        the configuration header (default: OUT without .c,\n"
             "                           plus _config.h)\n"
+            "      --scene-format KIND  nff, obj, off or ply (needed for '-')\n"
             "  -h, --help               this help\n");
     stp_tool_options_help(to);
 }
@@ -394,54 +396,68 @@ static FILE *open_tmp(const char *path, char *tmp, size_t tmplen)
     return fopen(tmp, "w");
 }
 
-enum { OPT_HEADER = STP_TOOL_OPT_COMMAND };
+enum { OPT_HEADER = STP_TOOL_OPT_COMMAND, OPT_SCENE_FORMAT };
 
 int stp_tool_compile_main(int argc, char **argv)
 {
     static const struct option own[] = {{"output", required_argument, 0, 'o'},
                                         {"header", required_argument, 0, OPT_HEADER},
+                                        {"scene-format", required_argument, 0, OPT_SCENE_FORMAT},
                                         {"help", no_argument, 0, 'h'},
                                         {0, 0, 0, 0}};
     struct option longs[64];
     stp_tool_options opt;
     stp_scene_options sopt;
     stp_scene scene;
-    const char *c_path = 0, *h_path = 0;
+    stp_tool_given given;
+    const char *c_path = 0, *h_path = 0, *scene_format = 0;
     char h_default[4096], c_tmp[4200], h_tmp[4200], err[512];
     FILE *cf = 0, *hf = 0;
     int c, status = 1;
 
     stp_tool_options_default(&opt);
     stp_scene_options_default(&sopt);
+    memset(&given, 0, sizeof given);
+    opterr = 0;
     optind = 1;
     if (stp_tool_long_options(longs, sizeof longs / sizeof longs[0], own) != 0)
         return fail("internal: option table too small");
-    while ((c = getopt_long(argc, argv, STP_TOOL_SHORT_OPTIONS "o:h", longs, 0)) != -1) {
+    while ((c = getopt_long(argc, argv, ":" STP_TOOL_SHORT_OPTIONS "o:h", longs, 0)) != -1) {
         int applied = stp_tool_apply_option(c, optarg, &opt, &sopt, err, sizeof err);
+        if (c > 0 && c < STP_TOOL_OPT_COMMAND)
+            given.code[c] = 1;
         if (applied < 0)
-            return fail("%s", err);
+            return stp_tool_usage_error("compile", "%s", err);
         if (applied)
             continue;
         switch (c) {
         case 'o': c_path = optarg; break;
         case OPT_HEADER: h_path = optarg; break;
-        case 'h': usage(stdout); return 0;
-        default: usage(stderr); return 2;
+        case OPT_SCENE_FORMAT:
+            if (!(scene_format = stp_tool_parse_scene_format(optarg)))
+                return stp_tool_usage_error("compile", "bad --scene-format '%s' (nff, obj, off, "
+                                                       "ply)", optarg);
+            break;
+        case 'h': stp_tool_compile_usage(stdout); return 0;
+        default: return stp_tool_getopt_error("compile", c, argv);
         }
     }
-    if (optind != argc - 1) {
-        usage(stderr);
-        return 2;
-    }
+    if (optind >= argc)
+        return stp_tool_usage_error("compile", "no scene given");
+    if (optind < argc - 1)
+        return stp_tool_usage_error("compile", "one scene only ('%s' is extra)",
+                                    argv[optind + 1]);
     /* the compiled-scene firmware path enters flat, grey, opaque polygons */
     if (opt.raytrace)
-        return fail("--raytrace is not supported for compiled scenes (they carry a display "
-                    "file)");
+        return stp_tool_usage_error("compile", "--raytrace is not supported for compiled "
+                                               "scenes (they carry a display file)");
+    if (stp_tool_check_renderer(&given, 0, err, sizeof err) != 0)
+        return stp_tool_usage_error("compile", "%s", err);
     if (opt.smooth || opt.colour || opt.transparency || opt.shadow_resolution)
-        return fail("--smooth, --color, --transparent and --shadows are not supported for "
-                    "compiled scenes yet");
+        return stp_tool_usage_error("compile", "--smooth, --color, --transparent and --shadows "
+                                               "are not supported for compiled scenes yet");
     if (!c_path)
-        return fail("no output given (-o FILE.c)");
+        return stp_tool_usage_error("compile", "no output given (-o FILE.c)");
     if (!h_path) {
         size_t n = strlen(c_path);
         if (n >= 2 && !strcmp(c_path + n - 2, ".c"))
@@ -452,7 +468,10 @@ int stp_tool_compile_main(int argc, char **argv)
         memcpy(h_default + n, "_config.h", sizeof "_config.h");
         h_path = h_default;
     }
-    if (stp_scene_load(argv[optind], &sopt, &scene, err, sizeof err) != 0)
+    if (!strcmp(argv[optind], "-") && !scene_format)
+        return stp_tool_usage_error("compile", "a scene from standard input ('-') needs "
+                                               "--scene-format nff|obj|off|ply");
+    if (stp_scene_load_as(argv[optind], scene_format, &sopt, &scene, err, sizeof err) != 0)
         return fail("%s", err);
     cf = open_tmp(c_path, c_tmp, sizeof c_tmp);
     hf = open_tmp(h_path, h_tmp, sizeof h_tmp);

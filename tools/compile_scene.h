@@ -34,4 +34,7 @@ int stp_tool_compile(const stp_scene *scene, const stp_tool_options *opt, FILE *
  * status (0 done, 1 failure, 2 usage). */
 int stp_tool_compile_main(int argc, char **argv);
 
+/* Its help text. */
+void stp_tool_compile_usage(FILE *to);
+
 #endif

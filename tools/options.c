@@ -5,6 +5,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -146,6 +147,7 @@ int stp_tool_apply_option(int code, const char *arg, stp_tool_options *opt,
                           stp_scene_options *sopt, char *err, size_t err_size)
 {
     const char *what = 0;
+    char depth_what[32];
     switch (code) {
     case 's': {
         int w, h;
@@ -246,8 +248,10 @@ int stp_tool_apply_option(int code, const char *arg, stp_tool_options *opt,
     }
     case STP_TOOL_OPT_RAYTRACE: opt->raytrace = 1; break;
     case STP_TOOL_OPT_DEPTH:
-        if (stp_tool_parse_int(arg, 0, STP_RT_MAX_DEPTH, &opt->rt_depth))
-            what = "--depth (0..max)";
+        if (stp_tool_parse_int(arg, 0, STP_RT_MAX_DEPTH, &opt->rt_depth)) {
+            snprintf(depth_what, sizeof depth_what, "--depth (0..%d)", STP_RT_MAX_DEPTH);
+            what = depth_what;
+        }
         break;
     case STP_TOOL_OPT_MIN_WEIGHT:
         if (parse_range(arg, 0, 0, 1, 0, &opt->rt_min_weight))
@@ -267,7 +271,8 @@ void stp_tool_options_help(FILE *to)
 {
     fprintf(to,
             "  -s, --size WxH           device size in pixels (default 128x64)\n"
-            "  -l, --levels N           INTENSITY levels, 2..256 (default 16)\n"
+            "  -l, --levels N           INTENSITY levels, 2..256 (default 16; render: 256\n"
+            "                           for grey and colour pictures)\n"
             "  -d, --dither CELL        bayer2, bayer4 (default), bayer8, seed2x2, pattern2x2,\n"
             "                           or user:W:H:t,t,... (thresholds 0..255, row-major)\n"
             "      --spacing KIND       threshold spacing of Bayer cells: linear (default),\n"
@@ -306,4 +311,84 @@ void stp_tool_options_help(FILE *to)
             "                           (default 0.015625)\n"
             "      --no-hierarchy       ray tracer: test every object (no bounding volumes)\n",
             STP_MAX_LIGHTS, STP_RT_MAX_DEPTH);
+}
+
+const char *stp_tool_option_name(int code)
+{
+    size_t i;
+    for (i = 0; i < sizeof shared / sizeof shared[0]; i++)
+        if (shared[i].val == code)
+            return shared[i].name;
+    return "?";
+}
+
+/* Options only one of the two renderers reads. */
+static const int polygon_only[] = {STP_TOOL_OPT_HIDDEN,      STP_TOOL_OPT_BACKFACE,
+                                   STP_TOOL_OPT_NO_SHADING,  STP_TOOL_OPT_SMOOTH,
+                                   STP_TOOL_OPT_TRANSPARENT, STP_TOOL_OPT_SHADOWS,
+                                   STP_TOOL_OPT_SLICES,      STP_TOOL_OPT_STACKS};
+static const int raytrace_only[] = {STP_TOOL_OPT_DEPTH, STP_TOOL_OPT_MIN_WEIGHT,
+                                    STP_TOOL_OPT_NO_HIERARCHY};
+
+int stp_tool_check_renderer(const stp_tool_given *given, int raytrace, char *err,
+                            size_t err_size)
+{
+    const int *list = raytrace ? polygon_only : raytrace_only;
+    size_t i, n = raytrace ? sizeof polygon_only / sizeof polygon_only[0]
+                           : sizeof raytrace_only / sizeof raytrace_only[0];
+    char names[160] = "";
+    int found = 0;
+    for (i = 0; i < n; i++)
+        if (given->code[list[i]]) {
+            size_t used = strlen(names);
+            snprintf(names + used, sizeof names - used, "%s--%s", found ? ", " : "",
+                     stp_tool_option_name(list[i]));
+            found++;
+        }
+    if (!found)
+        return 0;
+    if (raytrace)
+        snprintf(err, err_size,
+                 "%s %s of the polygon renderer; the ray tracer (--raytrace) does not use %s",
+                 names, found > 1 ? "are options" : "is an option", found > 1 ? "them" : "it");
+    else
+        snprintf(err, err_size, "%s %s of the ray tracer: add --raytrace", names,
+                 found > 1 ? "are options" : "is an option");
+    return -1;
+}
+
+int stp_tool_usage_error(const char *command, const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(stderr, "stipple%s%s: ", command ? " " : "", command ? command : "");
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fprintf(stderr, "\nTry 'stipple%s%s --help'\n", command ? " " : "", command ? command : "");
+    return 2;
+}
+
+int stp_tool_getopt_error(const char *command, int c, char *const argv[])
+{
+    char shown[64];
+    const char *word = optind > 0 ? argv[optind - 1] : "";
+    /* a long option is the word getopt stopped at (without "=value"); a
+     * short one is the letter in optopt */
+    if (word && !strncmp(word, "--", 2))
+        snprintf(shown, sizeof shown, "%.*s", (int)strcspn(word, "="), word);
+    else
+        snprintf(shown, sizeof shown, "-%c", optopt > 32 && optopt < 127 ? optopt : '?');
+    if (c == ':')
+        return stp_tool_usage_error(command, "option '%s' needs a value", shown);
+    return stp_tool_usage_error(command, "unknown option '%s'", shown);
+}
+
+const char *stp_tool_parse_scene_format(const char *s)
+{
+    static const char *const formats[] = {"nff", "obj", "off", "ply"};
+    size_t i;
+    for (i = 0; i < sizeof formats / sizeof formats[0]; i++)
+        if (!strcmp(s, formats[i]))
+            return formats[i];
+    return 0;
 }

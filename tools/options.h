@@ -55,6 +55,36 @@ int stp_tool_long_options(struct option *out, size_t cap, const struct option *e
 int stp_tool_apply_option(int code, const char *arg, stp_tool_options *opt,
                           stp_scene_options *sopt, char *err, size_t err_size);
 
+/* Which options a command line gave, indexed by option code (short
+ * options by their character, long-only ones by STP_TOOL_OPT_*). */
+typedef struct stp_tool_given {
+    unsigned char code[STP_TOOL_OPT_COMMAND];
+} stp_tool_given;
+
+/* The long name of a shared option code, without "--" ("?" if unknown). */
+const char *stp_tool_option_name(int code);
+
+/* Refuses options the chosen renderer does not read: the polygon
+ * renderer's (--hidden, --backface, --no-shading, --smooth, --transparent,
+ * --shadows, --slices, --stacks) with raytrace set, the ray tracer's
+ * (--depth, --min-weight, --no-hierarchy) without.  Returns 0, or -1 with a
+ * message naming every such option given. */
+int stp_tool_check_renderer(const stp_tool_given *given, int raytrace, char *err,
+                            size_t err_size);
+
+/* A usage error of `stipple COMMAND` (COMMAND NULL: of `stipple` itself):
+ * prints "stipple COMMAND: <message>" and "Try 'stipple COMMAND --help'" on
+ * stderr; returns the exit status 2. */
+int stp_tool_usage_error(const char *command, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* The usage error for getopt_long's return c ('?' unknown option, ':' a
+ * missing value; the optstring must start with ':' and opterr be 0). */
+int stp_tool_getopt_error(const char *command, int c, char *const argv[]);
+
 /* The shared options' help lines. */
 void stp_tool_options_help(FILE *to);
 
@@ -64,5 +94,9 @@ int stp_tool_parse_int(const char *s, int lo, int hi, int *out);
 int stp_tool_parse_double(const char *s, double *out);
 int stp_tool_parse_dither(const char *s, stp_tool_options *opt);
 int stp_tool_parse_spacing(const char *s, stp_spacing *out);
+
+/* --scene-format: the reader's name ("nff", "obj", "off", "ply", static
+ * storage) for s, or NULL when s names none. */
+const char *stp_tool_parse_scene_format(const char *s);
 
 #endif

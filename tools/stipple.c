@@ -20,6 +20,7 @@
 #include "scene.h"
 #include "scenegen.h"
 #include "stp_posix.h"
+#include "stp_posix_png.h"
 
 static const char *program = "stipple";
 
@@ -29,8 +30,9 @@ static void usage_main(FILE *to)
             "usage: stipple COMMAND [options]\n"
             "\n"
             "commands:\n"
-            "  render SCENE -o OUT   render an NFF, OBJ or OFF scene to PBM, PGM, PPM or text\n"
-            "  dither IMAGE -o OUT   halftone a PGM/PPM image to PBM\n"
+            "  render SCENE -o OUT   render an NFF, OBJ, OFF or PLY scene to PBM, PGM, PPM,\n"
+            "                        PNG or text\n"
+            "  dither IMAGE -o OUT   halftone a PNG, PGM or PPM image to PBM or 1-bit PNG\n"
             "  compile SCENE -o OUT.c  write a scene as C source and a minimal configuration\n"
             "                        header for firmware (see 'stipple compile --help')\n"
             "  scene NAME -o OUT.nff write a procedural scene (teapot, tetra, sphereflake,\n"
@@ -49,25 +51,41 @@ static void usage_render(FILE *to)
             "usage: stipple render SCENE -o OUT [options]\n"
             "       stipple render SCENE --device SPEC [options]\n"
             "\n"
-            "Renders SCENE (.nff, .obj, .off) with the fixed-point core.  OUT's extension picks\n"
-            "the output: .pbm (halftoned 1-bit), .pgm (grey), .ppm (colour file of the grey\n"
-            "picture, or of the colour one with --color), .txt (line-printer text, one\n"
+            "Renders SCENE (.nff, .obj, .off, .ply; '-' reads standard input, which needs\n"
+            "--scene-format) with the fixed-point core.  OUT's extension picks the output:\n"
+            ".pbm (halftoned 1-bit), .pgm (grey), .ppm (colour file of the grey picture, or\n"
+            "of the colour one with --color), .png (grey, or colour with --color or\n"
+            "--palette; --format png1 for halftoned 1-bit), .txt (line-printer text, one\n"
             "character per pixel); '-' writes to stdout in the --format given (default txt).\n"
+            "Grey and colour pictures have 256 levels unless --levels says otherwise;\n"
+            "1-bit pictures, text and --palette 16.  Options the chosen renderer or output\n"
+            "does not use are refused.\n"
             "\n"
             "  -o, --output FILE        where to write\n"
+            "      --scene-format KIND  nff, obj, off or ply: the scene's format when its\n"
+            "                           name does not say (needed for '-')\n"
             "      --device SPEC        draw on a Linux device instead, at its size and format:\n"
             "                           fb:/dev/fbN, usb:VID:PID or usb (receipt printer),\n"
             "                           spi:/dev/spidevB.C,controller=ssd1306|sharp-ls013b7dh03|\n"
             "                           ssd1680|ssd1680-128x296,dc=LINE,reset=LINE,busy=LINE,...\n"
             "                           (see ports/linux-fb/stp_device.h)\n"
-            "      --format KIND        pbm, plain-pbm, pgm, ppm or txt (default: from OUT)\n"
+            "      --format KIND        pbm, plain-pbm, pgm, ppm, png, png1 or txt (default:\n"
+            "                           from OUT)\n"
             "  -b, --band ROWS          render in bands of ROWS rows (default: whole frame)\n"
             "      --stats              print display-file and memory figures on stderr\n"
-            "      --palette grey|pseudo  .ppm through a 256-entry colour table: the frame is\n"
+            "      --palette grey|pseudo  .ppm/.png through a 256-entry colour table: the frame is\n"
             "                           an indexed frame buffer of styles; pseudo maps dark to\n"
             "                           blue and light to red; --gamma applies per primary\n"
             "  -h, --help               this help\n");
     stp_tool_options_help(to);
+}
+
+static void usage_help(FILE *to)
+{
+    fprintf(to, "usage: stipple help [COMMAND]\n"
+                "\n"
+                "Prints the commands, or the options of COMMAND (the same as\n"
+                "'stipple COMMAND --help').\n");
 }
 
 static void usage_dither(FILE *to)
@@ -75,10 +93,12 @@ static void usage_dither(FILE *to)
     fprintf(to,
             "usage: stipple dither IMAGE -o OUT.pbm [options]\n"
             "\n"
-            "Halftones a PGM or PPM image (PPM through luminance) with an ordered-dither cell.\n"
+            "Halftones a PNG, PGM or PPM image ('-' reads standard input; colour through\n"
+            "luminance, alpha ignored) with an ordered-dither cell.\n"
             "With bayer2/4/8 the pixels equal ImageMagick's -ordered-dither o2x2/o4x4/o8x8.\n"
             "\n"
-            "  -o, --output FILE     where to write (.pbm; '-' for stdout)\n"
+            "  -o, --output FILE     where to write (.pbm, or .png for a 1-bit PNG; '-' for\n"
+            "                        PBM on stdout)\n"
             "      --plain           write plain PBM (P1) instead of raw (P4)\n"
             "  -d, --dither CELL     as for render (default bayer4)\n"
             "      --spacing KIND    linear (default), exponential, cubic\n"
@@ -99,9 +119,17 @@ static int fail(const char *fmt, ...)
     return 1;
 }
 
-static int parse_kind(const char *s, stp_posix_file_kind *kind)
+/* png: 1 for "png" (grey, or RGB with --color or --palette: *kind is
+ * settled once the options are known), 2 for "png1" (1-bit), else 0. */
+static int parse_kind(const char *s, stp_posix_file_kind *kind, int *png)
 {
-    if (!strcmp(s, "pbm"))
+    *png = 0;
+    if (!strcmp(s, "png"))
+        *png = 1;
+    else if (!strcmp(s, "png1")) {
+        *png = 2;
+        *kind = STP_POSIX_FILE_P4;
+    } else if (!strcmp(s, "pbm"))
         *kind = STP_POSIX_FILE_P4;
     else if (!strcmp(s, "plain-pbm"))
         *kind = STP_POSIX_FILE_P1;
@@ -134,7 +162,8 @@ enum {
     OPT_PALETTE,
     OPT_DEVICE,
     OPT_BENCH_SCENES,
-    OPT_BENCH_BUDGET
+    OPT_BENCH_BUDGET,
+    OPT_SCENE_FORMAT
 };
 
 /* Turn an indexed frame buffer (STYLE8: style index 1..levels per pixel)
@@ -174,7 +203,8 @@ static int index_to_colour(stp_posix_frame *frame, int levels, int pseudo, const
 /* stipple render --device SPEC: the scene onto a Linux device (fbdev, USB
  * receipt printer, SPI panel; ports/linux-fb/stp_device.h).  The picture
  * takes the device's size and pixel format unless --size asks for less. */
-static int render_to_device(const char *scene_path, const char *spec, stp_tool_options *opt,
+static int render_to_device(const char *scene_path, const char *scene_format, const char *spec,
+                            stp_tool_options *opt,
                             const stp_scene_options *sopt, int size_given, int show_stats)
 {
 #if STP_HAVE_DEVICE
@@ -186,7 +216,7 @@ static int render_to_device(const char *scene_path, const char *spec, stp_tool_o
     stp_progress progress;
     char err[512];
     int rc;
-    if (stp_scene_load(scene_path, sopt, &scene, err, sizeof err) != 0)
+    if (stp_scene_load_as(scene_path, scene_format, sopt, &scene, err, sizeof err) != 0)
         return fail("%s", err);
     stp_device_options_default(&dopt);
     if (size_given) {
@@ -224,6 +254,7 @@ static int render_to_device(const char *scene_path, const char *spec, stp_tool_o
     return 0;
 #else
     (void)scene_path;
+    (void)scene_format;
     (void)spec;
     (void)opt;
     (void)sopt;
@@ -233,6 +264,35 @@ static int render_to_device(const char *scene_path, const char *spec, stp_tool_o
 #endif
 }
 
+/* Options that depend on the output: the halftone cell is for 1-bit
+ * pictures only, text has its 16 characters as levels, an indexed frame
+ * holds style indices 1..255 in a byte.  Picks the default levels: 256 for
+ * grey and colour pictures (16 would posterise them), 16 otherwise. */
+static int check_output_options(const stp_tool_given *given, stp_posix_file_kind kind,
+                                int palette, stp_tool_options *opt, char *err, size_t err_size)
+{
+    int mono = kind == STP_POSIX_FILE_P4 || kind == STP_POSIX_FILE_P1;
+    if (!mono && (given->code['d'] || given->code[STP_TOOL_OPT_SPACING])) {
+        snprintf(err, err_size, "--%s halftones 1-bit pictures (.pbm) only",
+                 given->code['d'] ? "dither" : "spacing");
+        return -1;
+    }
+    if (kind == STP_POSIX_FILE_ASCII) {
+        if (given->code['l'] && opt->levels != 16) {
+            snprintf(err, err_size, "--levels: text has 16 levels, one per character");
+            return -1;
+        }
+        opt->levels = 16;
+    }
+    if (palette && opt->levels > 255) {
+        snprintf(err, err_size, "--palette: at most 255 levels (a style index is a byte)");
+        return -1;
+    }
+    if (!given->code['l'] && !palette && (kind == STP_POSIX_FILE_P5 || kind == STP_POSIX_FILE_P6))
+        opt->levels = 256;
+    return 0;
+}
+
 static int cmd_render(int argc, char **argv)
 {
     static const struct option own[] = {
@@ -240,6 +300,7 @@ static int cmd_render(int argc, char **argv)
         {"band", required_argument, 0, 'b'},   {"stats", no_argument, 0, OPT_STATS},
         {"palette", required_argument, 0, OPT_PALETTE},
         {"device", required_argument, 0, OPT_DEVICE},
+        {"scene-format", required_argument, 0, OPT_SCENE_FORMAT},
         {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     struct option longs[64];
     stp_tool_options opt;
@@ -249,79 +310,102 @@ static int cmd_render(int argc, char **argv)
     stp_style_table lp;
     stp_tool_stats stats;
     stp_posix_file_kind kind = STP_POSIX_FILE_UNKNOWN;
-    const char *out_path = 0, *scene_path, *device_spec = 0;
+    stp_tool_given given;
+    const char *out_path = 0, *scene_path, *device_spec = 0, *scene_format = 0;
     char err[512];
-    int c, show_stats = 0, palette = 0, size_given = 0;
+    int c, show_stats = 0, palette = 0, png = 0, format_given = 0;
 
     stp_tool_options_default(&opt);
     stp_scene_options_default(&sopt);
     if (stp_tool_long_options(longs, sizeof longs / sizeof longs[0], own) != 0)
         return fail("internal: option table too small");
+    memset(&given, 0, sizeof given);
+    opterr = 0;
     optind = 1;
-    while ((c = getopt_long(argc, argv, STP_TOOL_SHORT_OPTIONS "o:b:h", longs, 0)) != -1) {
+    while ((c = getopt_long(argc, argv, ":" STP_TOOL_SHORT_OPTIONS "o:b:h", longs, 0)) != -1) {
         int applied = stp_tool_apply_option(c, optarg, &opt, &sopt, err, sizeof err);
-        if (c == 's')
-            size_given = 1;
+        if (c > 0 && c < STP_TOOL_OPT_COMMAND)
+            given.code[c] = 1;
         if (applied < 0)
-            return fail("%s", err);
+            return stp_tool_usage_error("render", "%s", err);
         if (applied)
             continue;
         switch (c) {
         case 'o': out_path = optarg; break;
         case OPT_FORMAT:
-            if (parse_kind(optarg, &kind))
-                return fail("bad --format '%s' (pbm, plain-pbm, pgm, ppm, txt)", optarg);
+            if (parse_kind(optarg, &kind, &png))
+                return stp_tool_usage_error("render", "bad --format '%s' (pbm, plain-pbm, pgm, "
+                                                      "ppm, txt, png, png1)", optarg);
+            format_given = 1;
             break;
         case 'b':
             if (stp_tool_parse_int(optarg, 1, 32767, &opt.band_rows))
-                return fail("bad --band '%s' (1..32767)", optarg);
+                return stp_tool_usage_error("render", "bad --band '%s' (1..32767)", optarg);
             break;
         case OPT_STATS: show_stats = 1; break;
         case OPT_DEVICE: device_spec = optarg; break;
+        case OPT_SCENE_FORMAT:
+            if (!(scene_format = stp_tool_parse_scene_format(optarg)))
+                return stp_tool_usage_error("render", "bad --scene-format '%s' (nff, obj, off, ply)",
+                                            optarg);
+            break;
         case OPT_PALETTE:
             if (!strcmp(optarg, "grey") || !strcmp(optarg, "gray"))
                 palette = 1;
             else if (!strcmp(optarg, "pseudo"))
                 palette = 2;
             else
-                return fail("bad --palette '%s' (grey, pseudo)", optarg);
+                return stp_tool_usage_error("render", "bad --palette '%s' (grey, pseudo)", optarg);
             break;
         case 'h': usage_render(stdout); return 0;
-        default: usage_render(stderr); return 2;
+        default: return stp_tool_getopt_error("render", c, argv);
         }
     }
-    if (optind != argc - 1) {
-        usage_render(stderr);
-        return 2;
-    }
+    if (optind >= argc)
+        return stp_tool_usage_error("render", "no scene given");
+    if (optind < argc - 1)
+        return stp_tool_usage_error("render", "one scene only ('%s' is extra)", argv[optind + 1]);
     scene_path = argv[optind];
+    if (!strcmp(scene_path, "-") && !scene_format)
+        return stp_tool_usage_error("render", "a scene from standard input ('-') needs "
+                                              "--scene-format nff|obj|off|ply");
+    if (stp_tool_check_renderer(&given, opt.raytrace, err, sizeof err) != 0)
+        return stp_tool_usage_error("render", "%s", err);
     if (device_spec) {
-        if (out_path || palette || kind != STP_POSIX_FILE_UNKNOWN)
-            return fail("render: --device draws on the device: no -o, --format or --palette");
-        return render_to_device(scene_path, device_spec, &opt, &sopt, size_given, show_stats);
+        if (out_path || palette || format_given)
+            return stp_tool_usage_error("render", "--device draws on the device: no -o, --format "
+                                                  "or --palette");
+        return render_to_device(scene_path, scene_format, device_spec, &opt, &sopt,
+                                given.code['s'], show_stats);
     }
     if (!out_path)
-        return fail("render: no output given (-o FILE, -o - for stdout, or --device SPEC)");
+        return stp_tool_usage_error("render", "no output given (-o FILE, -o - for stdout, or "
+                                              "--device SPEC)");
+    if (!format_given && stp_posix_png_path(out_path))
+        png = 1;
+    if (png == 1)
+        kind = opt.colour || palette ? STP_POSIX_FILE_P6 : STP_POSIX_FILE_P5;
     if (kind == STP_POSIX_FILE_UNKNOWN) {
         kind = stp_posix_kind_from_path(out_path);
         if (kind == STP_POSIX_FILE_UNKNOWN) {
             if (strcmp(out_path, "-") != 0)
-                return fail("%s: unknown output extension (use .pbm .pgm .ppm .txt or --format)",
-                            out_path);
+                return stp_tool_usage_error("render", "%s: unknown output extension (use .pbm "
+                                                      ".pgm .ppm .png .txt or --format)", out_path);
             kind = STP_POSIX_FILE_ASCII;
         }
     }
-    if (stp_scene_load(scene_path, &sopt, &scene, err, sizeof err) != 0)
+    if (palette && (kind != STP_POSIX_FILE_P6 || opt.colour))
+        return stp_tool_usage_error("render", "--palette needs a .ppm or .png output (and no "
+                                              "--color)");
+    if (check_output_options(&given, kind, palette, &opt, err, sizeof err) != 0)
+        return stp_tool_usage_error("render", "%s", err);
+    if (stp_scene_load_as(scene_path, scene_format, &sopt, &scene, err, sizeof err) != 0)
         return fail("%s", err);
     if (kind == STP_POSIX_FILE_ASCII) {
         /* the line printer has 16 characters: INTENSITY levels map onto them */
         stp_posix_lineprinter_table(&lp);
-        if (opt.levels != lp.levels)
-            opt.levels = lp.levels;
         opt.styles = &lp;
     }
-    if (palette && (kind != STP_POSIX_FILE_P6 || opt.colour))
-        return fail("--palette needs a .ppm output (and no --color)");
     /* with a palette the frame is an indexed frame buffer: style indices */
     if (stp_posix_frame_init(&frame, (uint32_t)opt.width, (uint32_t)opt.height,
                              palette ? STP_PIXEL_STYLE8 : format_for_kind(kind)) != 0) {
@@ -360,7 +444,8 @@ static int cmd_render(int argc, char **argv)
         stp_posix_frame_free(&frame);
         return fail("out of memory for the frame");
     }
-    if (stp_posix_write(&frame, out_path, kind, err, sizeof err) != 0) {
+    if ((png ? stp_posix_write_png(&frame, out_path, err, sizeof err)
+             : stp_posix_write(&frame, out_path, kind, err, sizeof err)) != 0) {
         stp_posix_frame_free(&frame);
         return fail("%s", err);
     }
@@ -382,12 +467,13 @@ static int cmd_dither(int argc, char **argv)
     uint8_t table[256];
     const char *out_path = 0;
     char err[512];
-    int c, plain = 0, use_gamma = 0;
+    int c, plain = 0, use_gamma = 0, png;
     uint32_t y, x;
 
     stp_tool_options_default(&opt);
+    opterr = 0;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "o:d:g:h", longs, 0)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:d:g:h", longs, 0)) != -1) {
         switch (c) {
         case 'o': out_path = optarg; break;
         case OPT_PLAIN: plain = 1; break;
@@ -397,27 +483,32 @@ static int cmd_dither(int argc, char **argv)
         case STP_TOOL_OPT_GAMMA_K: {
             stp_scene_options unused;
             if (stp_tool_apply_option(c, optarg, &opt, &unused, err, sizeof err) < 0)
-                return fail("%s", err);
+                return stp_tool_usage_error("dither", "%s", err);
             use_gamma |= c == 'g' || c == STP_TOOL_OPT_GAMMA_K;
             break;
         }
         case 'h': usage_dither(stdout); return 0;
-        default: usage_dither(stderr); return 2;
+        default: return stp_tool_getopt_error("dither", c, argv);
         }
     }
-    if (optind != argc - 1) {
-        usage_dither(stderr);
-        return 2;
-    }
+    if (optind >= argc)
+        return stp_tool_usage_error("dither", "no image given");
+    if (optind < argc - 1)
+        return stp_tool_usage_error("dither", "one image only ('%s' is extra)", argv[optind + 1]);
     if (!out_path)
-        return fail("dither: no output given (-o FILE.pbm)");
-    if (strcmp(out_path, "-") != 0 && stp_posix_kind_from_path(out_path) != STP_POSIX_FILE_P4)
-        return fail("%s: dither writes PBM; give a .pbm name", out_path);
+        return stp_tool_usage_error("dither", "no output given (-o FILE.pbm)");
+    png = stp_posix_png_path(out_path);
+    if (strcmp(out_path, "-") != 0 && !png &&
+        stp_posix_kind_from_path(out_path) != STP_POSIX_FILE_P4)
+        return stp_tool_usage_error("dither", "%s: dither writes PBM or 1-bit PNG; give a .pbm "
+                                              "or .png name", out_path);
+    if (png && plain)
+        return stp_tool_usage_error("dither", "--plain is for PBM, not PNG");
     if (stp_tool_cell(&opt, &cell) != 0)
         return fail("bad halftone cell");
     if (use_gamma && stp_gamma_table(table, 256, stp_tool_fix(opt.gamma), stp_tool_fix(opt.gamma_k)))
         return fail("bad gamma");
-    if (stp_posix_read_grey(argv[optind], &img, err, sizeof err) != 0)
+    if (stp_posix_read_image_grey(argv[optind], &img, err, sizeof err) != 0)
         return fail("%s", err);
     if (stp_posix_frame_init(&frame, img.width, img.height, STP_PIXEL_MONO1) != 0) {
         stp_posix_image_free(&img);
@@ -431,8 +522,9 @@ static int cmd_dither(int argc, char **argv)
         stp_halftone_row(frame.pixels + (size_t)y * frame.stride, grey, img.width, y, &cell);
     }
     stp_posix_image_free(&img);
-    if (stp_posix_write(&frame, out_path, plain ? STP_POSIX_FILE_P1 : STP_POSIX_FILE_P4, err,
-                        sizeof err) != 0) {
+    if ((png ? stp_posix_write_png(&frame, out_path, err, sizeof err)
+             : stp_posix_write(&frame, out_path, plain ? STP_POSIX_FILE_P1 : STP_POSIX_FILE_P4,
+                               err, sizeof err)) != 0) {
         stp_posix_frame_free(&frame);
         return fail("%s", err);
     }
@@ -484,22 +576,24 @@ static int cmd_bench(int argc, char **argv)
     opt.raytrace = 1;
     if (!dir || !*dir)
         dir = STP_DEFAULT_SCENES_DIR;
+    opterr = 0;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "s:h", longs, 0)) != -1) {
+    while ((c = getopt_long(argc, argv, ":s:h", longs, 0)) != -1) {
         switch (c) {
         case OPT_BENCH_SCENES: dir = optarg; break;
         case OPT_BENCH_BUDGET:
             if (stp_tool_parse_double(optarg, &budget) || !(budget > 0) || budget > 3600)
-                return fail("bad --budget '%s' (seconds, > 0)", optarg);
+                return stp_tool_usage_error("bench", "bad --budget '%s' (seconds, 0..3600)",
+                                            optarg);
             break;
         case 's':
         case STP_TOOL_OPT_DEPTH:
         case STP_TOOL_OPT_MIN_WEIGHT:
             if (stp_tool_apply_option(c, optarg, &opt, &sopt, err, sizeof err) < 0)
-                return fail("%s", err);
+                return stp_tool_usage_error("bench", "%s", err);
             break;
         case 'h': usage_bench(stdout); return 0;
-        default: usage_bench(stderr); return 2;
+        default: return stp_tool_getopt_error("bench", c, argv);
         }
     }
     if (optind < argc)
@@ -510,12 +604,38 @@ static int cmd_bench(int argc, char **argv)
     return stp_rt_bench(stdout, dir, default_names, 2, &opt, budget) == 0 ? 0 : 1;
 }
 
+/* stipple help [COMMAND] */
+static int cmd_help(int argc, char **argv)
+{
+    if (argc < 3) {
+        usage_main(stdout);
+        return 0;
+    }
+    if (argc > 3)
+        return stp_tool_usage_error("help", "one command at a time");
+    if (!strcmp(argv[2], "render"))
+        usage_render(stdout);
+    else if (!strcmp(argv[2], "dither"))
+        usage_dither(stdout);
+    else if (!strcmp(argv[2], "bench"))
+        usage_bench(stdout);
+    else if (!strcmp(argv[2], "compile"))
+        stp_tool_compile_usage(stdout);
+    else if (!strcmp(argv[2], "scene")) {
+        char *scene_help[] = {argv[2], "--help", NULL};
+        return stp_scenegen_main(2, scene_help);
+    } else if (!strcmp(argv[2], "help") || !strcmp(argv[2], "--help") || !strcmp(argv[2], "-h"))
+        usage_help(stdout);
+    else
+        return stp_tool_usage_error(0, "no command '%s' (render, dither, scene, compile, bench, help)",
+                                    argv[2]);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
-    if (argc < 2) {
-        usage_main(stderr);
-        return 2;
-    }
+    if (argc < 2)
+        return stp_tool_usage_error(0, "no command given (render, dither, scene, compile, bench, help)");
     if (!strcmp(argv[1], "--version") || !strcmp(argv[1], "version")) {
         printf("stipple %s\n", stp_version());
         return 0;
@@ -530,22 +650,7 @@ int main(int argc, char **argv)
         return stp_scenegen_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "compile"))
         return stp_tool_compile_main(argc - 1, argv + 1);
-    if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
-        if (argc > 2 && !strcmp(argv[2], "render"))
-            usage_render(stdout);
-        else if (argc > 2 && !strcmp(argv[2], "dither"))
-            usage_dither(stdout);
-        else if (argc > 2 && !strcmp(argv[2], "bench"))
-            usage_bench(stdout);
-        else if (argc > 2 && !strcmp(argv[2], "scene")) {
-            char *scene_help[] = {argv[2], "--help", NULL};
-            return stp_scenegen_main(2, scene_help);
-        }
-        else
-            usage_main(stdout);
-        return 0;
-    }
-    fprintf(stderr, "%s: unknown command '%s'\n", program, argv[1]);
-    usage_main(stderr);
-    return 2;
+    if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))
+        return cmd_help(argc, argv);
+    return stp_tool_usage_error(0, "unknown command '%s'", argv[1]);
 }

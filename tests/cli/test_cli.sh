@@ -137,8 +137,8 @@ if "$stipple" render "$scenes/tetra-s1.nff" -o "$work/x.jpeg" 2>/dev/null; then 
 if "$stipple" render "$scenes/tetra-s1.nff" -o "$work/x.pbm" --levels 1 2>/dev/null; then bad "--levels 1 accepted"; else ok; fi
 
 # --- indexed frame buffer through a colour table: the grey table gives the
-# grey picture itself; pseudocolour maps each grey to one colour and back
-"$stipple" render "$scenes/teapot-s1.nff" -s 64x32 -o "$work/plain.ppm" &&
+# grey picture itself (at the palette's 16 levels); pseudocolour maps each grey to one colour and back
+"$stipple" render "$scenes/teapot-s1.nff" -s 64x32 -l 16 -o "$work/plain.ppm" &&
     "$stipple" render "$scenes/teapot-s1.nff" -s 64x32 --palette grey -o "$work/grey.ppm" &&
     "$stipple" render "$scenes/teapot-s1.nff" -s 64x32 --palette pseudo -o "$work/pseudo.ppm" ||
     bad "--palette renders"

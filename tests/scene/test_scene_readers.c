@@ -886,8 +886,8 @@ static void test_load_errors(void **state)
     /* upper-case extension is recognised: the failure is opening, not the format */
     assert_int_equal(stp_scene_load("/nonexistent/dir/X.OBJ", NULL, &s, err, sizeof err), -1);
     assert_null(strstr(err, "format"));
-    assert_int_equal(stp_scene_load("/nonexistent/scene.ply", NULL, &s, err, sizeof err), -1);
-    expect_prefix(err, "/nonexistent/scene.ply: unknown scene format", "extension");
+    assert_int_equal(stp_scene_load("/nonexistent/scene.stl", NULL, &s, err, sizeof err), -1);
+    expect_prefix(err, "/nonexistent/scene.stl: unknown scene format", "extension");
     assert_int_equal(stp_scene_load("/nonexistent/nff", NULL, &s, err, sizeof err), -1);
     expect_prefix(err, "/nonexistent/nff: unknown scene format", "no extension");
     assert_scene_empty(&s);
@@ -1168,8 +1168,8 @@ static void test_bad_arguments(void **state)
     expect_prefix(err, "t: cone_slices must be 3..1024", "cone slices");
     assert_scene_empty(&s);
 
-    assert_int_equal(parse_as("ply", "s 0 0 0 1\n", 10, NULL, &s, err), -1);
-    expect_prefix(err, "t: unknown format 'ply'", "format");
+    assert_int_equal(parse_as("stl", "s 0 0 0 1\n", 10, NULL, &s, err), -1);
+    expect_prefix(err, "t: unknown format 'stl'", "format");
     assert_int_equal(parse_as("NFF", "s 0 0 0 1\n", 10, NULL, &s, err), -1);
     assert_int_equal(parse_as(NULL, "s 0 0 0 1\n", 10, NULL, &s, err), -1);
     assert_int_equal(parse_as("nff", NULL, 0, NULL, &s, err), -1);

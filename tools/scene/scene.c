@@ -460,6 +460,8 @@ static int parse_impl(const char *text, size_t size, const char *format, const c
         reader = stp_parse_obj;
     else if (strcmp(format, "off") == 0)
         reader = stp_parse_off;
+    else if (strcmp(format, "ply") == 0)
+        reader = stp_parse_ply;
     else
         return fail_plain(err, err_size, name, "unknown format '%.16s'", format);
 
@@ -517,7 +519,14 @@ static int ext_is(const char *ext, const char *want)
 int stp_scene_load(const char *path, const stp_scene_options *opt, stp_scene *scene,
                    char *err, size_t err_size)
 {
-    const char *slash, *dot, *format;
+    return stp_scene_load_as(path, NULL, opt, scene, err, err_size);
+}
+
+int stp_scene_load_as(const char *path, const char *format, const stp_scene_options *opt,
+                      stp_scene *scene, char *err, size_t err_size)
+{
+    const char *slash, *dot;
+    int from_stdin;
     char *text = NULL;
     size_t size = 0, cap = 0;
     FILE *f;
@@ -532,19 +541,28 @@ int stp_scene_load(const char *path, const stp_scene_options *opt, stp_scene *sc
     if (!scene)
         return fail_plain(err, err_size, path, "no scene to fill");
 
+    from_stdin = strcmp(path, "-") == 0;
     slash = strrchr(path, '/');
     dot = strrchr(slash ? slash + 1 : path, '.');
-    if (dot && ext_is(dot + 1, "nff"))
+    if (format)
+        ; /* given: parse_impl checks it */
+    else if (from_stdin)
+        return fail_plain(err, err_size, "stdin", "no scene format given for standard input");
+    else if (dot && ext_is(dot + 1, "nff"))
         format = "nff";
     else if (dot && ext_is(dot + 1, "obj"))
         format = "obj";
     else if (dot && ext_is(dot + 1, "off"))
         format = "off";
+    else if (dot && ext_is(dot + 1, "ply"))
+        format = "ply";
     else
         return fail_plain(err, err_size, path,
-                          "unknown scene format (expected .nff, .obj or .off)");
+                          "unknown scene format (expected .nff, .obj, .off or .ply)");
 
-    f = fopen(path, "rb");
+    if (from_stdin)
+        path = "stdin"; /* the name in messages */
+    f = from_stdin ? stdin : fopen(path, "rb");
     if (!f)
         return fail_plain(err, err_size, path, "%s", strerror(errno));
     /* Read in growing chunks: works for pipes too and never trusts a size
@@ -558,14 +576,16 @@ int stp_scene_load(const char *path, const stp_scene_options *opt, stp_scene *sc
                 newcap = stp_scene_byte_limit;
             if (newcap <= cap) {
                 free(text);
-                fclose(f);
+                if (!from_stdin)
+                    fclose(f);
                 return fail_plain(err, err_size, path, "file too large (over %zu bytes)",
                                   stp_scene_byte_limit);
             }
             p = realloc(text, newcap);
             if (!p) {
                 free(text);
-                fclose(f);
+                if (!from_stdin)
+                    fclose(f);
                 return fail_plain(err, err_size, path, "out of memory");
             }
             text = p;
@@ -577,14 +597,16 @@ int stp_scene_load(const char *path, const stp_scene_options *opt, stp_scene *sc
             if (ferror(f)) {
                 int e = errno;
                 free(text);
-                fclose(f);
+                if (!from_stdin)
+                    fclose(f);
                 return fail_plain(err, err_size, path, "read error: %s",
                                   e ? strerror(e) : "unknown");
             }
             break;
         }
     }
-    fclose(f);
+    if (!from_stdin)
+        fclose(f);
 
     /* The text counts against the budget while the scene is built. */
     rc = parse_impl(text, size, format, path, opt, scene, err, err_size, cap);

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Host-side scene model and readers (NFF, Wavefront OBJ, OFF).
+ * Host-side scene model and readers (NFF, Wavefront OBJ, OFF, PLY).
  * Host code: may use libc, the heap and double precision.  The stipple
  * command turns a stp_scene into calls of the fixed-point core.
  */
@@ -81,14 +81,21 @@ typedef struct stp_scene_options {
 /* Defaults: 16 slices, 8 stacks, 16 cone slices. */
 void stp_scene_options_default(stp_scene_options *opt);
 
-/* Read a scene; the format is chosen by the extension (.nff, .obj, .off;
- * case-insensitive).  On error returns -1 and writes "path:line: what is
+/* Read a scene; the format is chosen by the extension (.nff, .obj, .off,
+ * .ply; case-insensitive).  On error returns -1 and writes "path:line: what is
  * wrong" (or "path: what is wrong" when no line applies) into err; the scene
  * is then empty (freed).  Returns 0 on success. */
 int stp_scene_load(const char *path, const stp_scene_options *opt, stp_scene *scene,
                    char *err, size_t err_size);
 
-/* The same from a memory buffer, format given as "nff", "obj" or "off";
+/* The same with the format given ("nff", "obj", "off", "ply"), or chosen
+ * by the extension when format is NULL.  path "-" reads standard input
+ * (named "stdin" in messages; it is not closed), which needs a format. */
+int stp_scene_load_as(const char *path, const char *format, const stp_scene_options *opt,
+                      stp_scene *scene, char *err, size_t err_size);
+
+/* The same from a memory buffer, format given as "nff", "obj", "off" or
+ * "ply" (binary PLY bodies give "path: byte N: what" instead of a line);
  * name is used in messages (for fuzzing and tests). */
 int stp_scene_parse(const char *text, size_t size, const char *format, const char *name,
                     const stp_scene_options *opt, stp_scene *scene, char *err, size_t err_size);

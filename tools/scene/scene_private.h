@@ -112,5 +112,6 @@ int stp_add_default_material(stp_parser *ps, long line);
 int stp_parse_nff(stp_parser *ps);
 int stp_parse_obj(stp_parser *ps);
 int stp_parse_off(stp_parser *ps);
+int stp_parse_ply(stp_parser *ps);
 
 #endif
