@@ -278,7 +278,12 @@ static int new_capacity(stp_parser *ps, long line, size_t cap, size_t need, size
     size_t want;
 
     if (need > max_elems)
-        return stp_fail(ps, line, "scene too large (over %zu bytes)", stp_scene_byte_limit);
+        return stp_fail(ps, line,
+                        ps->opt->analytic_only
+                            ? "scene too large (over %zu bytes)"
+                            : "scene too large (over %zu bytes; fewer --slices/--stacks, or "
+                              "--raytrace, which keeps spheres and cones unsplit, would help)",
+                        stp_scene_byte_limit);
     want = cap < 16 ? 16 : cap;
     while (want < need && want <= SIZE_MAX / 2)
         want *= 2;
