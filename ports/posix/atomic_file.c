@@ -151,13 +151,15 @@ static void uninstall_cleanup(void)
 
 /* ---- where the bytes go ---------------------------------------------- */
 
-/* A file opened in place (device, FIFO): bytes written, no rename. */
-static int write_in_place(const char *path, stp_posix_emit_fn emit, void *ctx, int truncate,
+/* A file opened in place (device, FIFO, or append: a file the shell
+ * redirected stdout to, which '>' left empty and '>>' wants appended to):
+ * bytes written, no rename. */
+static int write_in_place(const char *path, stp_posix_emit_fn emit, void *ctx, int append,
                           char *err, size_t errlen)
 {
     FILE *fp;
     int fd, e;
-    fd = open(path, O_WRONLY | O_NOCTTY | (truncate ? O_TRUNC : 0));
+    fd = open(path, O_WRONLY | O_NOCTTY | (append ? O_APPEND : 0));
     if (fd < 0) {
         e = saved_errno();
         stp_posix_priv_error(err, errlen, "%s: cannot open: %s", path, strerror(e));
@@ -372,7 +374,8 @@ int stp_posix_write_file(const char *path, stp_posix_emit_fn emit, void *ctx,
         return -1;
     }
     /* /dev/stdout redirected to a file: the shell's descriptor points at
-     * that file, which must be written, not replaced */
+     * that file, which must be written (appended to, as the shell's own
+     * descriptor would), not replaced */
     if (via_proc)
         rc = write_in_place(path, emit, ctx, 1, err, errlen);
     else

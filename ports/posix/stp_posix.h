@@ -124,7 +124,8 @@ int stp_posix_encode(const stp_posix_frame *f, stp_posix_file_kind kind, FILE *o
  * fsync'ed (failure of that last step is ignored: some file systems refuse
  * it).  A symbolic link is followed and the file it ends at is replaced
  * (the link stays a link); a link through /proc (such as /dev/stdout
- * redirected to a file) and a character device or FIFO are written in
+ * redirected to a file: appended to, as the shell's descriptor would) and
+ * a character device or FIFO are written in
  * place; a directory or any other kind of file is refused.  While the
  * temporary file exists, SIGINT, SIGTERM and SIGHUP (unless ignored)
  * remove it and then take their default action; the handlers are the

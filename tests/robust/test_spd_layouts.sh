@@ -3,7 +3,8 @@
 # Every SPD-like database (spd_like.py: the SPD programs' layouts, one-line
 # cones) at size factors 1-3 renders in every mode with exit 0 and a valid
 # file; CRLF and byte-order-mark variants too; a 66 430-sphere sphereflake
-# ray-traces; -o through a symbolic link to /dev/null, a FIFO.
+# ray-traces; -o through a symbolic link to /dev/null, to /proc/self/fd/1
+# (redirected to a file), a FIFO.
 # usage: test_spd_layouts.sh STIPPLE SPD_LIKE_PY WORK_DIR
 set -u
 stipple=$1 gen=$2 work=$3
@@ -58,6 +59,13 @@ reader=$!
 wait "$reader"
 [ -p "$work/fifo.pbm" ] || fail "the FIFO was replaced"
 cmp -s "$work/from-fifo.pbm" "$work/lf.pbm" || fail "what came through the FIFO differs"
+# a link to /proc/self/fd/1 (what /dev/stdout is) with stdout redirected
+# to a file: the bytes go to that file, the link stays
+ln -s /proc/self/fd/1 "$work/stdout.pbm"
+"$stipple" render "$work/rings-s1.nff" --size 64x48 -o "$work/stdout.pbm" > "$work/captured.pbm" ||
+    fail "-o link to /proc/self/fd/1"
+[ -L "$work/stdout.pbm" ] || fail "the link to /proc/self/fd/1 was replaced"
+cmp -s "$work/captured.pbm" "$work/lf.pbm" || fail "what went to the redirected stdout differs"
 if [ "$(find "$work" -name '.*' -type f | wc -l)" -ne 0 ]; then fail "temporary files left"; fi
 [ "$failures" -eq 0 ] && echo "all SPD layouts rendered in every mode"
 exit $((failures > 0))
