@@ -325,9 +325,6 @@ int stp_tool_output(const stp_scene *scene, const stp_tool_options *opt, stp_out
     return 0;
 }
 
-static int render_prepared(const stp_tool_prepared *prep, stp_port *port, stp_tool_stats *stats,
-                           char *err, size_t err_size);
-
 int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_port *port,
                     stp_tool_stats *stats, char *err, size_t err_size)
 {
@@ -343,14 +340,13 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
     }
     if (stp_tool_prepare(scene, opt, &prep, err, err_size) != 0)
         return -1;
-    rc = render_prepared(&prep, port, stats, err, err_size);
+    rc = stp_tool_render_prepared(&prep, port, stats, err, err_size);
     stp_tool_prepared_free(&prep);
     return rc;
 }
 
-/* The polygon renderer on a prepared scene. */
-static int render_prepared(const stp_tool_prepared *prep, stp_port *port, stp_tool_stats *stats,
-                           char *err, size_t err_size)
+int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
+                             stp_tool_stats *stats, char *err, size_t err_size)
 {
     const stp_scene *scene = &prep->scene;
     const stp_tool_options *opt = &prep->opt;

@@ -76,4 +76,11 @@ int stp_tool_split_polygon(const stp_scene_vec3 *v, int count, int max, int **pi
 int stp_tool_setup_prepared(const stp_tool_prepared *p, stp_view *view, stp_lighting *lighting,
                             char *err, size_t err_size);
 
+/* stp_tool_render's polygon path for a prepared scene (prep->opt.raytrace
+ * is ignored), for callers that prepare once and render several times:
+ * preparing a prepared scene again would forget its merged lights'
+ * weights. */
+int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
+                             stp_tool_stats *stats, char *err, size_t err_size);
+
 #endif
