@@ -100,10 +100,11 @@ stp_rgb stp_cmyk_to_rgb(stp_vec3 cmy, stp_fix k)
     return stp_cmy_to_rgb(v3(stp_fix_add(cmy.x, k), stp_fix_add(cmy.y, k), stp_fix_add(cmy.z, k)));
 }
 
-/* (10.38), columns I, Q, Y */
+/* (10.38) row by row as the seed prints it (R, G, B rows; columns I, Q,
+ * Y): a grey gives I and Q within 0.025 of zero (SPEC.md section 6). */
 static const int32_t yiq_q30[3][3] = {
-    {644245094, -300647710, 322122547},  /* R:  0.60 -0.28 0.30 */
-    {225485783, -558345748, 633507676},  /* G:  0.21 -0.52 0.59 */
+    {644245094, 225485783, 322122547},   /* R:  0.60  0.21 0.30 */
+    {-300647710, -558345748, 633507676}, /* G: -0.28 -0.52 0.59 */
     {-322122547, 343597384, 118111601}}; /* B: -0.30  0.32 0.11 */
 
 static void yiq_matrix(stp_mat3 *m)

@@ -12,11 +12,14 @@
 #include <string.h>
 
 #include "options.h"
+#include "scene_prepare.h"
 #include "scene_util.h"
 
-/* The view, lighting and materials come from stp_tool_setup and
- * stp_tool_material, the same calls stp_tool_render makes, so the firmware's
- * picture matches `stipple render` (the QEMU test checks it pixel for pixel). */
+/* The scene is prepared as stp_tool_render prepares it (scene_prepare.h:
+ * units, merged lights, split polygons); the view, lighting and materials
+ * come from stp_tool_setup_prepared and stp_tool_material, the same calls
+ * stp_tool_render makes, so the firmware's picture matches `stipple render`
+ * (the QEMU test checks it pixel for pixel). */
 
 static stp_vec3 fix3(stp_scene_vec3 v)
 {
@@ -46,11 +49,11 @@ static int discard_rows(stp_port *port, uint32_t y0, uint32_t rows, const uint8_
  * clipping adds vertices and SHADE instructions depend on the shades, which
  * only the core knows.  The core's switches do not change what it enters, so
  * the host build's count holds for the firmware's configuration. */
-static int measure(const stp_scene *scene, const stp_tool_options *opt, stp_tool_stats *stats,
-                   char *err, size_t errlen)
+static int measure(const stp_tool_prepared *prep, stp_tool_stats *stats, char *err, size_t errlen)
 {
     stp_port port;
-    stp_tool_options o = *opt;
+    stp_tool_prepared q = *prep; /* shares the scene's arrays: not freed */
+    stp_tool_options *opt = &q.opt, o = q.opt;
     memset(&port, 0, sizeof port);
     port.width = (uint32_t)opt->width;
     port.height = (uint32_t)opt->height;
@@ -58,7 +61,8 @@ static int measure(const stp_scene *scene, const stp_tool_options *opt, stp_tool
     port.flush = discard_rows;
     o.band_rows = 1; /* the smallest buffers: only the entry counts matter */
     o.styles = 0;
-    return stp_tool_render(scene, &o, &port, stats, err, errlen);
+    *opt = o;
+    return stp_tool_render_prepared(&q, &port, stats, err, errlen);
 }
 
 /* ---- writing ---- */
@@ -111,9 +115,10 @@ typedef struct plan {
     stp_fix background;
 } plan;
 
-static int make_plan(const stp_scene *scene, const stp_tool_options *opt, plan *p, char *err,
-                     size_t errlen)
+static int make_plan(const stp_tool_prepared *prep, plan *p, char *err, size_t errlen)
 {
+    const stp_scene *scene = &prep->scene;
+    const stp_tool_options *opt = &prep->opt;
     size_t i;
     memset(p, 0, sizeof *p);
     p->default_material = -1;
@@ -121,9 +126,9 @@ static int make_plan(const stp_scene *scene, const stp_tool_options *opt, plan *
         snprintf(err, errlen, "bad size %dx%d", opt->width, opt->height);
         return -1;
     }
-    if (stp_tool_setup(scene, opt, &p->view, &p->lighting, err, errlen) != 0)
+    if (stp_tool_setup_prepared(prep, &p->view, &p->lighting, err, errlen) != 0)
         return -1;
-    if (measure(scene, opt, &p->stats, err, errlen) != 0)
+    if (measure(prep, &p->stats, err, errlen) != 0)
         return -1;
     p->materials = calloc(scene->material_count + 1, sizeof *p->materials);
     p->material_map = malloc((scene->material_count + 1) * sizeof *p->material_map);
@@ -331,13 +336,18 @@ int stp_tool_compile(const stp_scene *scene, const stp_tool_options *opt, FILE *
 {
     plan p;
     writer wc, wh;
+    stp_tool_prepared prep;
     int result = -1;
 
     if (!scene || !opt) {
         snprintf(err, errlen, "no scene");
         return -1;
     }
-    if (make_plan(scene, opt, &p, err, errlen) != 0)
+    if (stp_tool_prepare(scene, opt, &prep, err, errlen) != 0)
+        return -1;
+    scene = &prep.scene;
+    opt = &prep.opt;
+    if (make_plan(&prep, &p, err, errlen) != 0)
         goto done;
     wc.f = c_out;
     wc.failed = 0;
@@ -353,6 +363,7 @@ int stp_tool_compile(const stp_scene *scene, const stp_tool_options *opt, FILE *
 done:
     free(p.materials);
     free(p.material_map);
+    stp_tool_prepared_free(&prep);
     return result;
 }
 

@@ -246,7 +246,11 @@ int stp_tool_apply_option(int code, const char *arg, stp_tool_options *opt,
             opt->shadow_resolution = (unsigned)n;
         break;
     }
-    case STP_TOOL_OPT_RAYTRACE: opt->raytrace = 1; break;
+    case STP_TOOL_OPT_RAYTRACE:
+        /* traced analytically: no tessellation to hold in memory */
+        opt->raytrace = 1;
+        sopt->analytic_only = 1;
+        break;
     case STP_TOOL_OPT_DEPTH:
         if (stp_tool_parse_int(arg, 0, STP_RT_MAX_DEPTH, &opt->rt_depth)) {
             snprintf(depth_what, sizeof depth_what, "--depth (0..%d)", STP_RT_MAX_DEPTH);

@@ -17,6 +17,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "scene_prepare.h"
+
 static double seconds_now(void)
 {
     struct timespec ts;
@@ -31,18 +33,36 @@ uint32_t stp_tool_rt_material(const stp_scene *scene, int material)
                : (uint32_t)scene->material_count;
 }
 
+static int build_prepared(const stp_tool_prepared *prep, stp_tool_rt *t, stp_tool_stats *stats,
+                          char *err, size_t err_size);
+
 int stp_tool_rt_build(const stp_scene *scene, const stp_tool_options *opt, stp_tool_rt *t,
                       stp_tool_stats *stats, char *err, size_t err_size)
 {
+    stp_tool_prepared prep;
+    int rc;
+    memset(t, 0, sizeof *t);
+    if (stp_tool_prepare(scene, opt, &prep, err, err_size) != 0)
+        return -1;
+    rc = build_prepared(&prep, t, stats, err, err_size);
+    stp_tool_prepared_free(&prep);
+    return rc;
+}
+
+/* The ray tracer loaded with a prepared scene. */
+static int build_prepared(const stp_tool_prepared *prep, stp_tool_rt *t, stp_tool_stats *stats,
+                          char *err, size_t err_size)
+{
+    const stp_scene *scene = &prep->scene;
+    const stp_tool_options *opt = &prep->opt;
     stp_rt_memory mem;
     stp_rt_material *materials = 0;
     size_t objects = 0, points = 0, i, material_count;
     int status;
     double t0;
 
-    memset(t, 0, sizeof *t);
     memset(&mem, 0, sizeof mem);
-    if (stp_tool_setup(scene, opt, &t->view, &t->lighting, err, err_size) != 0)
+    if (stp_tool_setup_prepared(prep, &t->view, &t->lighting, err, err_size) != 0)
         return -1;
     for (i = 0; i < scene->polygon_count; i++) {
         const stp_scene_polygon *p = &scene->polygons[i];

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "scene_prepare.h"
 #include "scene_util.h"
 #include "shadows_setup.h"
 
@@ -171,14 +172,18 @@ static double dist3(stp_scene_vec3 a, stp_scene_vec3 b)
     return sqrt(dx * dx + dy * dy + dz * dz);
 }
 
-int stp_tool_setup(const stp_scene *scene, const stp_tool_options *opt, stp_view *view_out,
-                   stp_lighting *lighting_out, char *err, size_t err_size)
+/* weight[j]: how many lights light j stands for (NULL: 1 each); factor[j]:
+ * a factor on its power (NULL: 1). */
+static int setup_lights(const stp_scene *scene, const stp_tool_options *opt, const double *weight,
+                        const double *factor, stp_view *view_out, stp_lighting *lighting_out,
+                        char *err, size_t err_size)
 {
     stp_scene_vec3 lo, hi, centre;
     double radius;
     stp_view view;
     stp_lighting lighting;
     stp_scene_vec3 light_pos[STP_MAX_LIGHTS];
+    double light_total;
     int light_count, j, ch;
 
     if (stp_scene_bounds(scene, &lo, &hi) != 0) {
@@ -241,14 +246,20 @@ int stp_tool_setup(const stp_scene *scene, const stp_tool_options *opt, stp_view
     lighting.background = stp_tool_fix(opt->background);
     lighting.attenuation_c = stp_tool_fix(opt->attenuation_c);
     lighting.count = light_count;
+    {
+        double total = 0;
+        for (j = 0; j < light_count; j++)
+            total += weight ? weight[j] : 1.0;
+        light_total = total;
+    }
     for (j = 0; j < light_count; j++) {
         /* auto power: P_j = (1 - B)(C + U_j)/sqrt(lights), U_j the distance
          * to the scene's centre, so 1/(C+U) does not darken a scene whose
          * lights stand far off (the SPD files place them 10-150 units away)
          * and several lights together stay near full scale */
-        double power = 1.0 - opt->background;
+        double power = (1.0 - opt->background) * (weight ? weight[j] : 1.0) * (factor ? factor[j] : 1.0);
         if (opt->auto_power)
-            power *= (opt->attenuation_c + dist3(light_pos[j], centre)) / sqrt((double)light_count);
+            power *= (opt->attenuation_c + dist3(light_pos[j], centre)) / sqrt(light_total);
         lighting.lights[j].position = stp_tool_vec3(light_pos[j]);
         lighting.lights[j].power = stp_tool_fix(power);
         for (ch = 0; ch < 3; ch++)
@@ -261,6 +272,19 @@ int stp_tool_setup(const stp_scene *scene, const stp_tool_options *opt, stp_view
     *view_out = view;
     *lighting_out = lighting;
     return 0;
+}
+
+int stp_tool_setup(const stp_scene *scene, const stp_tool_options *opt, stp_view *view,
+                   stp_lighting *lighting, char *err, size_t err_size)
+{
+    return setup_lights(scene, opt, NULL, NULL, view, lighting, err, err_size);
+}
+
+int stp_tool_setup_prepared(const stp_tool_prepared *p, stp_view *view, stp_lighting *lighting,
+                            char *err, size_t err_size)
+{
+    return setup_lights(&p->scene, &p->opt, p->light_weight, p->power_factor, view, lighting, err,
+                        err_size);
 }
 
 int stp_tool_output(const stp_scene *scene, const stp_tool_options *opt, stp_output *out,
@@ -304,6 +328,28 @@ int stp_tool_output(const stp_scene *scene, const stp_tool_options *opt, stp_out
 int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_port *port,
                     stp_tool_stats *stats, char *err, size_t err_size)
 {
+    stp_tool_prepared prep;
+    int rc;
+    if (opt->raytrace) {
+#if STP_WITH_RAYTRACE
+        return stp_tool_raytrace(scene, opt, port, stats, err, err_size);
+#else
+        snprintf(err, err_size, "this build has no ray tracer (STP_WITH_RAYTRACE 0)");
+        return -1;
+#endif
+    }
+    if (stp_tool_prepare(scene, opt, &prep, err, err_size) != 0)
+        return -1;
+    rc = stp_tool_render_prepared(&prep, port, stats, err, err_size);
+    stp_tool_prepared_free(&prep);
+    return rc;
+}
+
+int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
+                             stp_tool_stats *stats, char *err, size_t err_size)
+{
+    const stp_scene *scene = &prep->scene;
+    const stp_tool_options *opt = &prep->opt;
     stp_view view;
     stp_lighting lighting;
     stp_renderer *r = 0;
@@ -322,18 +368,10 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
     stp_scene_vec3 *normals = 0;
     uint16_t *shadow_maps = 0;
 
-    if (opt->raytrace) {
-#if STP_WITH_RAYTRACE
-        return stp_tool_raytrace(scene, opt, port, stats, err, err_size);
-#else
-        snprintf(err, err_size, "this build has no ray tracer (STP_WITH_RAYTRACE 0)");
-        return -1;
-#endif
-    }
     if (!stats)
         stats = &local;
     memset(stats, 0, sizeof *stats);
-    if (stp_tool_setup(scene, opt, &view, &lighting, err, err_size) != 0)
+    if (stp_tool_setup_prepared(prep, &view, &lighting, err, err_size) != 0)
         return -1;
 
     for (i = 0; i < scene->polygon_count; i++)

@@ -100,8 +100,9 @@ typedef struct stp_tool_rt {
     stp_lighting lighting;
 } stp_tool_rt;
 
-/* Build it (stats: rt_objects, rt_nodes, rt_build_seconds, polygons_in,
- * polygons_skipped).  Returns 0, or -1 with a message (nothing to free). */
+/* Build it from the scene as stp_tool_prepare makes it (stats: rt_objects,
+ * rt_nodes, rt_build_seconds, polygons_in, polygons_skipped).  Returns 0,
+ * or -1 with a message (nothing to free). */
 int stp_tool_rt_build(const stp_scene *scene, const stp_tool_options *opt, stp_tool_rt *t,
                       stp_tool_stats *stats, char *err, size_t err_size);
 void stp_tool_rt_free(stp_tool_rt *t);
@@ -116,7 +117,9 @@ uint32_t stp_tool_rt_material(const stp_scene *scene, int material);
 int stp_tool_raytrace(const stp_scene *scene, const stp_tool_options *opt, stp_port *port,
                       stp_tool_stats *stats, char *err, size_t err_size);
 
-/* Render scene onto port (its width/height/format must match opt).
+/* Render scene onto port (its width/height/format must match opt).  The
+ * scene is first prepared for the core (scene_prepare.h: rescaled when out
+ * of range, lights beyond STP_MAX_LIGHTS merged, long polygons split).
  * Returns 0, or -1 with a message in err. */
 int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_port *port,
                     stp_tool_stats *stats, char *err, size_t err_size);

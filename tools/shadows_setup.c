@@ -73,16 +73,33 @@ int stp_tool_shadows_setup(stp_renderer *r, const stp_scene *scene, const stp_vi
     dy = (hi.y - lo.y) / 2;
     dz = (hi.z - lo.z) / 2;
     radius = sqrt(dx * dx + dy * dy + dz * dz);
-    /* the part of the scene the view shows, roughly */
-    at.x = to_double(view->at.x);
-    at.y = to_double(view->at.y);
-    at.z = to_double(view->at.z);
+    /* the part of the scene the view shows, roughly: the window at the
+     * depth of the scene's centre (not at 'at', which NFF may place
+     * anywhere along the line of sight, even next to the eye) */
     if (view->projection == STP_PERSPECTIVE) {
-        dx = at.x - to_double(view->from.x);
-        dy = at.y - to_double(view->from.y);
-        dz = at.z - to_double(view->from.z);
-        seen = sqrt(dx * dx + dy * dy + dz * dz) * tan(to_double(view->fov_degrees) * PI / 360);
+        stp_scene_vec3 from, dir;
+        double len, depth;
+        from.x = to_double(view->from.x);
+        from.y = to_double(view->from.y);
+        from.z = to_double(view->from.z);
+        dir.x = to_double(view->at.x) - from.x;
+        dir.y = to_double(view->at.y) - from.y;
+        dir.z = to_double(view->at.z) - from.z;
+        len = sqrt(dir.x * dir.x + dir.y * dir.y + dir.z * dir.z);
+        depth = len > 0 ? ((centre.x - from.x) * dir.x + (centre.y - from.y) * dir.y +
+                           (centre.z - from.z) * dir.z) / len
+                        : 0;
+        /* a centre behind the eye: what is seen starts at the near side */
+        if (depth < radius / 4)
+            depth = radius / 4;
+        at.x = from.x + dir.x / len * depth;
+        at.y = from.y + dir.y / len * depth;
+        at.z = from.z + dir.z / len * depth;
+        seen = depth * tan(to_double(view->fov_degrees) * PI / 360);
     } else {
+        at.x = to_double(view->at.x);
+        at.y = to_double(view->at.y);
+        at.z = to_double(view->at.z);
         seen = to_double(view->window_half);
     }
     seen *= 2 * (aspect > 1 ? aspect : 1);

@@ -25,9 +25,12 @@ int stp_tool_shadow_view(stp_scene_vec3 centre, double radius, stp_scene_vec3 li
 /* Give each light of `lighting` (what was passed to stp_set_lighting, light
  * positions in world units) a resolution x resolution map.  What a map
  * covers: the scene's bounding sphere, or when smaller the sphere the view
- * sees, centred on its look-at point with twice the radius of the window
- * there (|from - at| tan(fov / 2), or window_half, times the aspect
- * width / height when above 1), so the map's texels are not spent on a
+ * sees, centred where the line of sight passes the scene's centre (its
+ * depth d along the line of sight, at least a quarter of the scene's
+ * radius; parallel views: the look-at point), with twice the radius of the
+ * window there (d tan(fov / 2), or window_half, times the aspect width /
+ * height when above 1): 'at' only gives the direction, as NFF's SPD rings
+ * puts it right next to the eye, so the map's texels are not spent on a
  * floor that reaches far out of the picture.  maps holds map_count >=
  * lighting->count * resolution^2 entries, light j's map from
  * maps + j * resolution^2.  Call after stp_set_view and stp_set_lighting,

@@ -122,9 +122,16 @@ int stp_posix_encode(const stp_posix_frame *f, stp_posix_file_kind kind, FILE *o
  * file (the umask is read by setting it, which is not thread-safe); it is
  * flushed, fsync'ed and renamed over the target, and the directory is
  * fsync'ed (failure of that last step is ignored: some file systems refuse
- * it).  If path is a symbolic link, the link itself is replaced.  On any
- * error the temporary file is removed, the target is untouched and the
- * message names the path, the failed step and strerror. */
+ * it).  A symbolic link is followed and the file it ends at is replaced
+ * (the link stays a link); a link through /proc (such as /dev/stdout
+ * redirected to a file: appended to, as the shell's descriptor would) and
+ * a character device or FIFO are written in
+ * place; a directory or any other kind of file is refused.  While the
+ * temporary file exists, SIGINT, SIGTERM and SIGHUP (unless ignored)
+ * remove it and then take their default action; the handlers are the
+ * caller's again once the call returns.  On any error the temporary file
+ * is removed, the target is untouched and the message names the path, the
+ * failed step and strerror. */
 typedef int (*stp_posix_emit_fn)(FILE *out, void *ctx);
 int stp_posix_write_file(const char *path, stp_posix_emit_fn emit, void *ctx,
                          char *err, size_t errlen);

@@ -93,10 +93,46 @@ static void test_yiq_luminance(void **state)
     c.r = fx(1); c.g = 0; c.b = 0;
     iqy = stp_rgb_to_iqy(c);
     assert_near(d(iqy.x), 0.60, 1e-4, "I of red");
-    assert_near(d(iqy.y), -0.28, 1e-4, "Q of red");
+    assert_near(d(iqy.y), 0.21, 1e-4, "Q of red");
     assert_near(d(iqy.z), 0.30, 1e-4, "Y of red");
     c.r = fx(0.2); c.g = fx(0.5); c.b = fx(0.9);
     assert_near(d(stp_rgb_luminance(c)), 0.30 * 0.2 + 0.59 * 0.5 + 0.11 * 0.9, 1e-4, "luminance");
+}
+
+/* The seed's matrix (10.38), rows R, G, B and columns I, Q, Y, applied in
+ * double precision: every corner of the RGB cube and a few greys match the
+ * fixed-point transform, and greys have I and Q near zero (issue 13). */
+static void test_yiq_seed_rows(void **state)
+{
+    static const double seed[3][3] = {
+        {0.60, 0.21, 0.30}, {-0.28, -0.52, 0.59}, {-0.30, 0.32, 0.11}};
+    static const double probes[][3] = {{1, 1, 1}, {0.5, 0.5, 0.5}, {1, 0, 0}, {0, 1, 0},
+                                       {0, 0, 1}, {1, 1, 0}, {0, 1, 1}, {1, 0, 1},
+                                       {0.25, 0.75, 0.1}};
+    size_t k;
+    int j;
+    (void)state;
+    for (k = 0; k < sizeof probes / sizeof probes[0]; k++) {
+        stp_rgb c;
+        stp_vec3 got;
+        double want[3], have[3];
+        c.r = fx(probes[k][0]);
+        c.g = fx(probes[k][1]);
+        c.b = fx(probes[k][2]);
+        got = stp_rgb_to_iqy(c);
+        have[0] = d(got.x);
+        have[1] = d(got.y);
+        have[2] = d(got.z);
+        for (j = 0; j < 3; j++) {
+            want[j] = probes[k][0] * seed[0][j] + probes[k][1] * seed[1][j] +
+                      probes[k][2] * seed[2][j];
+            assert_near(have[j], want[j], 1e-4, "IQY against the seed's rows");
+        }
+        if (probes[k][0] == probes[k][1] && probes[k][1] == probes[k][2]) {
+            assert_near(have[0], 0.0, 0.025 * probes[k][0], "I of a grey");
+            assert_near(have[1], 0.0, 0.025 * probes[k][0], "Q of a grey");
+        }
+    }
 }
 
 static void test_hsv_hls_hsi_known_values(void **state)
@@ -308,6 +344,7 @@ int main(void)
         cmocka_unit_test(test_seed_monitor_matrix_and_inverse),
         cmocka_unit_test(test_singular_and_bad_input),
         cmocka_unit_test(test_yiq_luminance),
+        cmocka_unit_test(test_yiq_seed_rows),
         cmocka_unit_test(test_hsv_hls_hsi_known_values),
         cmocka_unit_test(test_round_trips_over_the_cube),
         cmocka_unit_test(test_colour_tables),

@@ -693,8 +693,7 @@ static void test_atomic_rename_fails(void **state)
     assert_int_equal(stp_posix_write(&f, tpath("isdir.pgm"), STP_POSIX_FILE_P5, err,
                                      sizeof err), -1);
     assert_contains(err, tpath("isdir.pgm"));
-    assert_contains(err, "rename");
-    assert_contains(err, strerror(EISDIR));
+    assert_contains(err, "directory");
     assert_int_equal(stat(tpath("isdir.pgm"), &st), 0);
     assert_true(S_ISDIR(st.st_mode));
     assert_file_bytes(tpath("isdir.pgm/inside"), "IN", 2);
@@ -741,6 +740,129 @@ static void test_atomic_write_fails(void **state)
     assert_file_bytes(tpath("big.pgm"), "OLD", 3);
     assert_int_equal(count_hidden(g_dir), 0);
     stp_posix_frame_free(&f);
+}
+
+/* Targets that are not plain files (issue 13): a symbolic link keeps being
+ * a link and its target is replaced; a dangling link creates its target; a
+ * FIFO and a character device are written in place, never replaced by a
+ * regular file. */
+static void test_atomic_special_targets(void **state)
+{
+    stp_posix_frame f;
+    struct stat st;
+    char err[512] = "";
+    int p[2];
+
+    (void)state;
+    make_mono(&f);
+    spit(tpath("real.pbm"), "OLD", 3);
+    assert_int_equal(symlink("real.pbm", tpath("link.pbm")), 0);
+    write_ok(&f, tpath("link.pbm"), STP_POSIX_FILE_P4);
+    assert_int_equal(lstat(tpath("link.pbm"), &st), 0);
+    assert_true(S_ISLNK(st.st_mode));
+    assert_file_bytes(tpath("real.pbm"), k_mono_p4, sizeof k_mono_p4);
+
+    assert_int_equal(symlink("made.pbm", tpath("dangling.pbm")), 0);
+    write_ok(&f, tpath("dangling.pbm"), STP_POSIX_FILE_P4);
+    assert_int_equal(lstat(tpath("dangling.pbm"), &st), 0);
+    assert_true(S_ISLNK(st.st_mode));
+    assert_file_bytes(tpath("made.pbm"), k_mono_p4, sizeof k_mono_p4);
+
+    /* /dev/null through a link in the test's directory: the link stays */
+    assert_int_equal(symlink("/dev/null", tpath("null.pbm")), 0);
+    write_ok(&f, tpath("null.pbm"), STP_POSIX_FILE_P4);
+    assert_int_equal(lstat(tpath("null.pbm"), &st), 0);
+    assert_true(S_ISLNK(st.st_mode));
+    assert_int_equal(stat("/dev/null", &st), 0);
+    assert_true(S_ISCHR(st.st_mode));
+
+    /* a FIFO: a child writes, the parent reads what came through */
+    assert_int_equal(mkfifo(tpath("fifo.pbm"), 0600), 0);
+    assert_int_equal(pipe(p), 0);
+    fflush(NULL);
+    {
+        pid_t pid = fork();
+        uint8_t got[256];
+        size_t n = 0;
+        ssize_t r;
+        int fd, status;
+        assert_true(pid >= 0);
+        if (pid == 0)
+            _exit(stp_posix_write(&f, tpath("fifo.pbm"), STP_POSIX_FILE_P4, err, sizeof err) == 0
+                      ? 0
+                      : 1);
+        fd = open(tpath("fifo.pbm"), O_RDONLY);
+        assert_true(fd >= 0);
+        while (n < sizeof got && (r = read(fd, got + n, sizeof got - n)) > 0)
+            n += (size_t)r;
+        close(fd);
+        assert_int_equal(waitpid(pid, &status, 0), pid);
+        assert_true(WIFEXITED(status));
+        assert_int_equal(WEXITSTATUS(status), 0);
+        assert_int_equal(n, sizeof k_mono_p4);
+        assert_memory_equal(got, k_mono_p4, n);
+    }
+    close(p[0]);
+    close(p[1]);
+    assert_int_equal(lstat(tpath("fifo.pbm"), &st), 0);
+    assert_true(S_ISFIFO(st.st_mode));
+    assert_int_equal(count_hidden(g_dir), 0);
+    stp_posix_frame_free(&f);
+}
+
+/* An emit that writes 64 KiB, tells the parent through the pipe that the
+ * temporary file exists, then waits for the parent's signal. */
+static int g_ready_fd = -1;
+static int emit_then_wait(FILE *out, void *ctx)
+{
+    static char chunk[65536];
+    (void)ctx;
+    memset(chunk, 'x', sizeof chunk);
+    if (fwrite(chunk, 1, sizeof chunk, out) != sizeof chunk || fflush(out) != 0)
+        return -1;
+    if (write(g_ready_fd, "r", 1) != 1)
+        return -1;
+    for (;;)
+        pause();
+}
+
+/* SIGINT, SIGTERM and SIGHUP during the write remove the temporary file,
+ * leave the old output as it was and still end the process by the signal. */
+static void test_atomic_signal_removes_temporary(void **state)
+{
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    size_t k;
+
+    (void)state;
+    spit(tpath("signalled.pgm"), "OLD", 3);
+    for (k = 0; k < sizeof sigs / sizeof sigs[0]; k++) {
+        int p[2], status;
+        char c;
+        pid_t pid;
+        assert_int_equal(pipe(p), 0);
+        fflush(NULL);
+        pid = fork();
+        assert_true(pid >= 0);
+        if (pid == 0) {
+            char err[512];
+            close(p[0]);
+            g_ready_fd = p[1];
+            signal(sigs[k], SIG_DFL);
+            (void)stp_posix_write_file(tpath("signalled.pgm"), emit_then_wait, NULL, err,
+                                       sizeof err);
+            _exit(9);
+        }
+        close(p[1]);
+        assert_int_equal(read(p[0], &c, 1), 1);
+        close(p[0]);
+        assert_int_equal(count_hidden(g_dir), 1); /* the temporary file is there */
+        assert_int_equal(kill(pid, sigs[k]), 0);
+        assert_int_equal(waitpid(pid, &status, 0), pid);
+        assert_true(WIFSIGNALED(status));
+        assert_int_equal(WTERMSIG(status), sigs[k]);
+        assert_int_equal(count_hidden(g_dir), 0);
+        assert_file_bytes(tpath("signalled.pgm"), "OLD", 3);
+    }
 }
 
 static void test_write_rejects_kind(void **state)
@@ -970,6 +1092,8 @@ int main(void)
         cmocka_unit_test(test_atomic_bad_directory),
         cmocka_unit_test(test_atomic_rename_fails),
         cmocka_unit_test(test_atomic_write_fails),
+        cmocka_unit_test(test_atomic_special_targets),
+        cmocka_unit_test(test_atomic_signal_removes_temporary),
         cmocka_unit_test(test_write_rejects_kind),
         cmocka_unit_test(test_read_good),
         cmocka_unit_test(test_read_malformed),

@@ -425,6 +425,7 @@ static void test_spd_balls_s1(void **state)
     stp_scene_options o;
     (void)state;
     check_balls("balls-s1.nff", 10, NULL);
+    stp_scene_options_default(&o);
     o.sphere_slices = 5;
     o.sphere_stacks = 3;
     o.cone_slices = 3;
@@ -646,6 +647,98 @@ static void test_nff_layout(void **state)
     assert_int_equal(s.polygons[0].source_line, 12);
     EXPECT_VEC(s.vertices[1], 1, 0, 0);
     EXPECT_VEC(s.vertices[2], 0, 1, 0);
+    stp_scene_free(&s);
+}
+
+static void expect_prefix(const char *err, const char *prefix, const char *what);
+
+/* The layouts the SPD programs write (issue 13): a cone's eight numbers on
+ * the "c" line, polygon vertices on the "p" line, CRLF, a light's colour on
+ * the next line; the same scene as the one-entity-per-line form. */
+static void test_nff_token_stream(void **state)
+{
+    stp_scene a, b;
+    size_t i;
+    (void)state;
+    parse_ok("nff",
+             "v\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\nresolution 8 8\n"
+             "l 1 2 3\n1 1 1\n"
+             "f 1 0 0 1 0 0 0 1\n"
+             "c\n0 0 0 1\n0 0 1 0.5\n"
+             "p 3\n0 0 0\n1 0 0\n0 1 0\n"
+             "s 0 0 0 1\n",
+             NULL, &a);
+    parse_ok("nff",
+             "v from 0 0 -5 at 0 0 0 up 0 1 0 angle 45 hither 1 resolution 8 8\r\n"
+             "l 1 2 3 1 1 1\r\n"
+             "f 1 0 0 1 0 0 0 1\r\n"
+             "c 0 0 0 1 0 0 1 0.5\r\n"
+             "p 3 0 0 0 1 0 0\r\n0 1 0\r\n"
+             "s 0 0 0\t1 # a comment\r\n",
+             NULL, &b);
+    check_invariants(&a);
+    check_invariants(&b);
+    assert_int_equal(a.prim_count, 2);
+    assert_int_equal(b.prim_count, 2);
+    assert_int_equal(b.prims[0].kind, STP_SCENE_CONE);
+    EXPECT_VEC(b.prims[0].apex, 0, 0, 1);
+    EXPECT_EQ_D(b.prims[0].apex_radius, 0.5);
+    assert_int_equal(a.light_count, 1);
+    assert_int_equal(b.light_count, 1);
+    EXPECT_VEC(b.lights[0].position, 1, 2, 3);
+    assert_int_equal(a.polygon_count, b.polygon_count);
+    assert_int_equal(a.vertex_count, b.vertex_count);
+    for (i = 0; i < a.vertex_count; i++)
+        EXPECT_VEC(b.vertices[i], a.vertices[i].x, a.vertices[i].y, a.vertices[i].z);
+    /* messages keep the line of the entity */
+    assert_int_equal(b.polygons[16].source_line, 5);
+    assert_int_equal(a.polygons[16].source_line, 14);
+    stp_scene_free(&a);
+    stp_scene_free(&b);
+}
+
+/* A UTF-8 byte-order mark before the first line: every reader skips it
+ * (OBJ used to lose its first vertex, NFF and OFF refused the file). */
+static void test_byte_order_mark(void **state)
+{
+    static const char *const formats[] = {"nff", "obj", "off"};
+    static const char *const texts[] = {
+        "\xEF\xBB\xBFp 3\n0 0 0\n1 0 0\n0 1 0\n",
+        "\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+        "\xEF\xBB\xBFOFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"};
+    char err[ERR_SIZE];
+    stp_scene s;
+    int k;
+    (void)state;
+    for (k = 0; k < 3; k++) {
+        parse_ok(formats[k], texts[k], NULL, &s);
+        assert_int_equal(s.polygon_count, 1);
+        assert_int_equal(s.vertex_count, 3);
+        EXPECT_VEC(s.vertices[0], 0, 0, 0);
+        EXPECT_VEC(s.vertices[1], 1, 0, 0);
+        stp_scene_free(&s);
+    }
+    /* only at the start: elsewhere it is still a bad token */
+    assert_int_equal(parse_as("nff", "s 0 0 0 1\n\xEF\xBB\xBFs 0 0 0 1\n", 24, NULL, &s, err), -1);
+    expect_prefix(err, "t:2: unknown entity", "BOM on line 2");
+}
+
+/* analytic_only: spheres and cones as prims without tessellation. */
+static void test_analytic_only(void **state)
+{
+    stp_scene_options o;
+    stp_scene s;
+    (void)state;
+    stp_scene_options_default(&o);
+    o.analytic_only = 1;
+    parse_ok("nff", "s 0 0 0 1\nc 0 0 0 1 0 0 1 0\n", &o, &s);
+    assert_int_equal(s.prim_count, 2);
+    assert_int_equal(s.polygon_count, 0);
+    assert_int_equal(s.vertex_count, 0);
+    stp_scene_free(&s);
+    parse_ok("nff", "s 0 0 0 1\np 3\n0 0 0\n1 0 0\n0 1 0\n", &o, &s);
+    assert_int_equal(s.prim_count, 1);
+    assert_int_equal(s.polygon_count, 1);
     stp_scene_free(&s);
 }
 
@@ -958,7 +1051,7 @@ static const bad_case bad_cases[] = {
     {"nff", "b 0 0\ns 0 0 0 1\n", "t:1: b: expected 3 numbers"},
     {"nff", "l 1 2\n", "t:1: l: expected 3 or 6 numbers, found 2"},
     {"nff", "l 1 2 3 4\n", "t:1: l: expected 3 or 6 numbers, found 4"},
-    {"nff", "l 1 2 3 4 5 6 7\n", "t:1: l: expected 3 or 6 numbers, found 7"},
+    {"nff", "l 1 2 3 4 5 6 7\n", "t:1: l: expected 3 or 6 numbers, found more"},
     {"nff", "l 1 2 x\n", "t:1: bad number 'x'"},
     {"nff", "f 1 1 1 1 0 0 0\n", "t:1: f: expected 8 numbers, found 7"},
     {"nff", "f 1 1 1 1 0 0 0 1 9\n", "t:1: f: expected 8 numbers, found more"},
@@ -966,30 +1059,30 @@ static const bad_case bad_cases[] = {
     {"nff", "p 2\n0 0 0\n1 0 0\n", "t:1: p: a polygon needs at least 3 vertices"},
     {"nff", "p 0\n", "t:1: p: a polygon needs at least 3 vertices"},
     {"nff", "p -3\n" TRI, "t:1: p: a polygon needs at least 3 vertices"},
-    {"nff", "p\n" TRI, "t:1: p: missing vertex count"},
+    {"nff", "p\n" TRI, "t:1: p: a polygon needs at least 3 vertices, not 0"},
     {"nff", "p 3.0\n" TRI, "t:1: bad integer '3.0'"},
-    {"nff", "p 3 4\n" TRI, "t:1: p: unexpected '4'"},
+    {"nff", "p 3 4\n" TRI, "t:4: p vertex: expected 3 numbers, found more"},
     {"nff", "p 1000000000\n" TRI, "t:1: p: too many vertices"},
     {"nff", "p 99999999999999999999\n" TRI, "t:1: integer out of range"},
     {"nff", "p 1000000\n" TRI, "t:1: p: file ends after 3 of 1000000 vertices"},
     {"nff", "s 0 0 0 1\np 3\n0 0 0\n1 0 0\n", "t:2: p: file ends after 2 of 3 vertices"},
     {"nff", "p 3\n0 0 0\n1 0 0\n0 1\n", "t:4: p vertex: expected 3 numbers, found 2"},
     {"nff", "p 3\n0 0 0\n1 0 0\n0 1 0 5\n", "t:4: p vertex: expected 3 numbers, found more"},
-    {"nff", "p 3\n0 0 0\np 3\n" TRI, "t:3: bad number 'p'"},
+    {"nff", "p 3\n0 0 0\np 3\n" TRI, "t:1: p: next entity after 1 of 3 vertices"},
     {"nff", "pp 3\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0\n", "t:4: pp vertex: expected 6 numbers"},
-    {"nff", "pp 3\n" TRI, "t:2: pp vertex: expected 6 numbers, found 3"},
+    {"nff", "pp 3\n" TRI, "t:4: pp vertex: expected 6 numbers, found 3"},
     /* NFF: cones */
-    {"nff", "c\n0 0 0 1\n", "t:1: c: file ends before the apex line"},
-    {"nff", "c\n", "t:1: c: file ends before the base line"},
-    {"nff", "c 1\n0 0 0 1\n0 0 1 1\n", "t:1: c: unexpected '1'"},
-    {"nff", "c\n0 0 0 1\n0 0 1\n", "t:3: c apex: expected 4 numbers, found 3"},
+    {"nff", "c\n0 0 0 1\n", "t:2: c: expected 8 numbers, found 4"},
+    {"nff", "c\n", "t:1: c: expected 8 numbers, found 0"},
+    {"nff", "c\n0 0 0 1\n0 0 1 1 5\n", "t:3: c: expected 8 numbers, found more"},
+    {"nff", "c\n0 0 0 1\n0 0 1\n", "t:3: c: expected 8 numbers, found 7"},
     {"nff", "c\n0 0 0 1\n0 0 0 1\n", "t:1: c: base and apex coincide"},
     {"nff", "c\n0 0 0 0\n0 0 1 0\n", "t:1: c: both radii are zero"},
     {"nff", "c\n0 0 0 1\n0 0 1 -1\n", "t:1: c: radii have opposite signs"},
     {"nff", "c\n-1e308 0 0 1\n1e308 0 0 1\n", "t:1: coordinate out of range"},
     /* NFF: view */
     {"nff", "v\nfrom 0 0 0\n", "t:1: view: file ends before 'at'"},
-    {"nff", "v x\n", "t:1: v: unexpected 'x'"},
+    {"nff", "v x\n", "t:1: view: expected 'from', found 'x'"},
     {"nff", "v\nfrom 0 0\n", "t:2: from: expected 3 numbers, found 2"},
     {"nff", VIEW_HEAD "angle 45\nresolution 512 512\np 3\n" TRI,
      "t:7: view: expected 'hither', found 'p'"},
@@ -1001,7 +1094,7 @@ static const bad_case bad_cases[] = {
     {"nff", VIEW_HEAD "angle 45\nhither 1\nresolution 512.5 512\n", "t:7: bad integer '512.5'"},
     {"nff", VIEW_HEAD "angle 45\nhither 1\nresolution 512\n",
      "t:7: resolution: expected 2 integers, found 1"},
-    {"nff", VIEW_HEAD "angle 45\nhither 1\nresolution 512 512 1\n", "t:7: resolution: unexpected"},
+    {"nff", VIEW_HEAD "angle 45\nhither 1\nresolution 512 512 1\n", "t:7: resolution: expected 2 integers, found more"},
     {"nff", VIEW_HEAD "angle 0\n", "t:5: angle must be between 0 and 180 degrees"},
     {"nff", VIEW_HEAD "angle 180\n", "t:5: angle must be between 0 and 180 degrees"},
     {"nff", VIEW_HEAD "hither -1\n", "t:5: hither must not be negative"},
@@ -1219,7 +1312,7 @@ static void test_bounds(void **state)
      * analytic extents on every side but the poles' z, and cones along +x
      * and -x cover both z sides: the bounds must still be exact. */
     {
-        stp_scene_options o = {3, 3, 3};
+        stp_scene_options o = {3, 3, 3, 0};
         parse_ok("nff", "s 1 2 3 2\nc\n0 0 0 1\n4 0 0 1\nc\n0 0 9 1\n-4 0 9 1\n", &o, &s);
         assert_int_equal(stp_scene_bounds(&s, &lo, &hi), 0);
         EXPECT_NEAR(lo.x, -4, 1e-12);
@@ -1281,6 +1374,9 @@ int main(void)
         cmocka_unit_test(test_cone_tessellation),
         cmocka_unit_test(test_nff_default_material),
         cmocka_unit_test(test_nff_layout),
+        cmocka_unit_test(test_nff_token_stream),
+        cmocka_unit_test(test_byte_order_mark),
+        cmocka_unit_test(test_analytic_only),
         cmocka_unit_test(test_nff_keeps_vertex_order),
         cmocka_unit_test(test_obj_face_forms),
         cmocka_unit_test(test_obj_mixed_normals),

@@ -2,6 +2,7 @@
 /* The ray tracer against its reference, and its speed: see rt_compare.h. */
 #define _POSIX_C_SOURCE 200809L
 #include "rt_compare.h"
+#include "scene_prepare.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -113,8 +114,27 @@ static double background_of(const stp_scene *scene)
     return 0;
 }
 
+static int compare_prepared(const stp_scene *scene, const stp_tool_options *opt, stp_rt_error *e,
+                            double *shades, char *err, size_t err_size);
+
+/* Both tracers get the scene as the tools prepare it (units, lights,
+ * split polygons: scene_prepare.h); preparing again inside
+ * stp_tool_rt_build changes nothing. */
 int stp_rt_compare(const stp_scene *scene, const stp_tool_options *opt, stp_rt_error *e,
                    double *shades, char *err, size_t err_size)
+{
+    stp_tool_prepared prep;
+    int rc;
+    memset(e, 0, sizeof *e);
+    if (stp_tool_prepare(scene, opt, &prep, err, err_size) != 0)
+        return -1;
+    rc = compare_prepared(&prep.scene, &prep.opt, e, shades, err, err_size);
+    stp_tool_prepared_free(&prep);
+    return rc;
+}
+
+static int compare_prepared(const stp_scene *scene, const stp_tool_options *opt, stp_rt_error *e,
+                            double *shades, char *err, size_t err_size)
 {
     stp_tool_rt t;
     stp_tool_stats stats;

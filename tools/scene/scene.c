@@ -25,6 +25,7 @@ void stp_scene_options_default(stp_scene_options *opt)
     opt->sphere_slices = 16;
     opt->sphere_stacks = 8;
     opt->cone_slices = 16;
+    opt->analytic_only = 0;
 }
 
 void stp_scene_free(stp_scene *scene)
@@ -277,7 +278,12 @@ static int new_capacity(stp_parser *ps, long line, size_t cap, size_t need, size
     size_t want;
 
     if (need > max_elems)
-        return stp_fail(ps, line, "scene too large (over %zu bytes)", stp_scene_byte_limit);
+        return stp_fail(ps, line,
+                        ps->opt->analytic_only
+                            ? "scene too large (over %zu bytes)"
+                            : "scene too large (over %zu bytes; fewer --slices/--stacks, or "
+                              "--raytrace, which keeps spheres and cones unsplit, would help)",
+                        stp_scene_byte_limit);
     want = cap < 16 ? 16 : cap;
     while (want < need && want <= SIZE_MAX / 2)
         want *= 2;
@@ -475,6 +481,10 @@ static int parse_impl(const char *text, size_t size, const char *format, const c
     ps.scene = scene;
     ps.opt = opt;
     ps.bytes = held;
+    /* A UTF-8 byte-order mark (editors on some systems write one) is not
+     * part of any format's first line. */
+    if (ps.size >= 3 && memcmp(ps.text, "\xEF\xBB\xBF", 3) == 0)
+        ps.pos = 3;
 
     {
         /* An empty or comment-only file has no line to point at. */
@@ -488,7 +498,7 @@ static int parse_impl(const char *text, size_t size, const char *format, const c
     }
 
     rc = reader(&ps);
-    if (rc == 0 && scene->polygon_count == 0)
+    if (rc == 0 && scene->polygon_count == 0 && scene->prim_count == 0)
         rc = stp_fail(&ps, 0, "no geometry");
     if (rc != 0) {
         stp_scene_free(scene);

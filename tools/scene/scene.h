@@ -76,9 +76,13 @@ typedef struct stp_scene_options {
      * slices around (>= 3) and, for spheres, stacks pole to pole (>= 2). */
     int sphere_slices, sphere_stacks;
     int cone_slices;
+    /* 1: NFF spheres and cones are kept only as prims, not tessellated
+     * (for the ray tracer, which traces them analytically); 0 (default):
+     * both. */
+    int analytic_only;
 } stp_scene_options;
 
-/* Defaults: 16 slices, 8 stacks, 16 cone slices. */
+/* Defaults: 16 slices, 8 stacks, 16 cone slices, tessellated. */
 void stp_scene_options_default(stp_scene_options *opt);
 
 /* Read a scene; the format is chosen by the extension (.nff, .obj, .off,

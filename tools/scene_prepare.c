@@ -1,0 +1,353 @@
+/* SPDX-License-Identifier: MIT */
+/* Host side: a scene made fit for the core.  See scene_prepare.h. */
+#include "scene_prepare.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene_util.h"
+
+static stp_scene_vec3 v3(double x, double y, double z)
+{
+    stp_scene_vec3 v;
+    v.x = x;
+    v.y = y;
+    v.z = z;
+    return v;
+}
+
+static double dist(stp_scene_vec3 a, stp_scene_vec3 b)
+{
+    return hypot(hypot(a.x - b.x, a.y - b.y), a.z - b.z);
+}
+
+static double max_abs(stp_scene_vec3 v)
+{
+    return fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
+}
+
+void stp_tool_prepared_free(stp_tool_prepared *p)
+{
+    if (!p)
+        return;
+    stp_scene_free(&p->scene);
+    memset(p, 0, sizeof *p);
+}
+
+/* ---- copying, with big polygons split ----------------------------------- */
+
+static int copy_scene(const stp_scene *in, stp_tool_prepared *out)
+{
+    stp_scene *s = &out->scene;
+    size_t nv = 0, np = 0, i;
+    const int max = STP_MAX_POLYGON_VERTICES;
+
+    /* sizes first: a split polygon of n vertices gives at most n pieces of
+     * at most 3 (ears) or max (fan) vertices, at most 3n vertex copies */
+    for (i = 0; i < in->polygon_count; i++) {
+        size_t n = (size_t)in->polygons[i].count;
+        nv += n > (size_t)max ? 3 * n : n;
+        np += n > (size_t)max ? n : 1;
+    }
+    *s = *in;
+    s->lights = 0;
+    s->light_count = 0;
+    s->materials = malloc(sizeof *s->materials * (in->material_count ? in->material_count : 1));
+    s->vertices = malloc(sizeof *s->vertices * (nv ? nv : 1));
+    s->normals = malloc(sizeof *s->normals * (nv ? nv : 1));
+    s->polygons = malloc(sizeof *s->polygons * (np ? np : 1));
+    s->prims = malloc(sizeof *s->prims * (in->prim_count ? in->prim_count : 1));
+    s->lights = malloc(sizeof *s->lights * (in->light_count > STP_MAX_LIGHTS ? in->light_count
+                                                                              : STP_MAX_LIGHTS));
+    if (!s->materials || !s->vertices || !s->normals || !s->polygons || !s->prims || !s->lights)
+        return -1;
+    if (in->material_count)
+        memcpy(s->materials, in->materials, sizeof *s->materials * in->material_count);
+    if (in->prim_count)
+        memcpy(s->prims, in->prims, sizeof *s->prims * in->prim_count);
+    s->vertex_count = 0;
+    s->polygon_count = 0;
+    for (i = 0; i < in->polygon_count; i++) {
+        const stp_scene_polygon *p = &in->polygons[i];
+        const stp_scene_vec3 *pv = &in->vertices[p->first], *pn = &in->normals[p->first];
+        int *idx = 0, *cnt = 0, pieces, k, used = 0;
+        if (p->count <= max) {
+            memcpy(&s->vertices[s->vertex_count], pv, sizeof *pv * (size_t)p->count);
+            memcpy(&s->normals[s->vertex_count], pn, sizeof *pn * (size_t)p->count);
+            s->polygons[s->polygon_count] = *p;
+            s->polygons[s->polygon_count++].first = s->vertex_count;
+            s->vertex_count += (size_t)p->count;
+            continue;
+        }
+        pieces = stp_tool_split_polygon(pv, p->count, max, &idx, &cnt);
+        if (pieces < 0)
+            return -1;
+        for (k = 0; k < pieces; k++) {
+            stp_scene_polygon *q = &s->polygons[s->polygon_count++];
+            int j;
+            *q = *p;
+            q->first = s->vertex_count;
+            q->count = cnt[k];
+            for (j = 0; j < cnt[k]; j++) {
+                s->vertices[s->vertex_count] = pv[idx[used + j]];
+                s->normals[s->vertex_count++] = pn[idx[used + j]];
+            }
+            used += cnt[k];
+        }
+        free(idx);
+        free(cnt);
+        out->polygons_split++;
+    }
+    return 0;
+}
+
+/* ---- lights ----------------------------------------------------------- */
+
+/* The lights in use (--light's, else the file's) into the copy, merged
+ * down to STP_MAX_LIGHTS: while there are too many, the two whose
+ * directions from the scene's centre make the smallest angle become one,
+ * in their mean direction (weighted by how many lights each stands for) at
+ * their mean distance, with their mean colour and their summed weight.
+ * Seen from the scene, a pair of lights in nearly one direction lights it
+ * nearly as one light of their summed power does. */
+static void gather_lights(const stp_scene *in, const stp_tool_options *opt, stp_scene_vec3 centre,
+                          stp_tool_prepared *out, double *weight)
+{
+    stp_scene *s = &out->scene;
+    size_t n, i, j;
+    if (opt->light_count > 0) {
+        for (i = 0; i < (size_t)opt->light_count; i++) {
+            s->lights[i].position = opt->lights[i];
+            s->lights[i].color[0] = s->lights[i].color[1] = s->lights[i].color[2] = 1.0;
+            weight[i] = 1.0;
+        }
+        n = (size_t)opt->light_count;
+        out->opt.light_count = 0; /* now the copy's own */
+    } else {
+        for (i = 0; i < in->light_count; i++) {
+            s->lights[i] = in->lights[i];
+            weight[i] = 1.0;
+        }
+        n = in->light_count;
+    }
+    out->lights_in = n;
+    while (n > STP_MAX_LIGHTS) {
+        size_t bi = 0, bj = 1;
+        double best = -2;
+        stp_scene_light merged;
+        stp_scene_vec3 d[2], m;
+        double w0, w1, len, r;
+        int c;
+        for (i = 0; i < n; i++)
+            for (j = i + 1; j < n; j++) {
+                stp_scene_vec3 a = s->lights[i].position, b = s->lights[j].position;
+                double la = dist(a, centre), lb = dist(b, centre), cosang;
+                if (!(la > 0) || !(lb > 0))
+                    cosang = 1; /* a light at the centre goes first */
+                else
+                    cosang = ((a.x - centre.x) * (b.x - centre.x) + (a.y - centre.y) * (b.y - centre.y) +
+                              (a.z - centre.z) * (b.z - centre.z)) / (la * lb);
+                if (cosang > best) {
+                    best = cosang;
+                    bi = i;
+                    bj = j;
+                }
+            }
+        w0 = weight[bi];
+        w1 = weight[bj];
+        for (c = 0; c < 2; c++) {
+            stp_scene_vec3 p = s->lights[c ? bj : bi].position;
+            double l = dist(p, centre);
+            d[c] = l > 0 ? v3((p.x - centre.x) / l, (p.y - centre.y) / l, (p.z - centre.z) / l)
+                         : v3(0, 0, 0);
+        }
+        m = v3(w0 * d[0].x + w1 * d[1].x, w0 * d[0].y + w1 * d[1].y, w0 * d[0].z + w1 * d[1].z);
+        len = hypot(hypot(m.x, m.y), m.z);
+        r = (w0 * dist(s->lights[bi].position, centre) + w1 * dist(s->lights[bj].position, centre)) /
+            (w0 + w1);
+        if (len > 0)
+            merged.position = v3(centre.x + m.x / len * r, centre.y + m.y / len * r,
+                                 centre.z + m.z / len * r);
+        else /* opposite lights: keep the first's place */
+            merged.position = s->lights[bi].position;
+        for (c = 0; c < 3; c++)
+            merged.color[c] = (w0 * s->lights[bi].color[c] + w1 * s->lights[bj].color[c]) / (w0 + w1);
+        s->lights[bi] = merged;
+        weight[bi] = w0 + w1;
+        s->lights[bj] = s->lights[n - 1];
+        weight[bj] = weight[n - 1];
+        n--;
+    }
+    s->light_count = n;
+}
+
+/* ---- units ------------------------------------------------------------ */
+
+/* The scene's extent: the radius of its bounds, or the eye's distance
+ * from their centre when larger. */
+static double scene_extent(const stp_scene *s, stp_scene_vec3 lo, stp_scene_vec3 hi,
+                           stp_scene_vec3 centre)
+{
+    double e = dist(lo, hi) / 2;
+    if (s->has_view)
+        e = fmax(e, dist(s->from, centre));
+    return e;
+}
+
+static int needs_rescale(const stp_scene *s, stp_scene_vec3 lo, stp_scene_vec3 hi, double extent)
+{
+    const double lim = STP_TOOL_COORD_LIMIT;
+    if (extent < STP_TOOL_EXTENT_MIN || max_abs(lo) > lim || max_abs(hi) > lim)
+        return 1;
+    return s->has_view && (max_abs(s->from) > lim || max_abs(s->at) > lim);
+}
+
+static stp_scene_vec3 to_units(stp_scene_vec3 v, stp_scene_vec3 off, double k)
+{
+    return v3((v.x - off.x) * k, (v.y - off.y) * k, (v.z - off.z) * k);
+}
+
+/* The smallest object's size against the core's step: an object that the
+ * rescaling leaves under a few steps would vanish or turn to a point. */
+static int check_resolution(const stp_tool_prepared *out, const stp_scene *in, char *err,
+                            size_t err_size)
+{
+    const stp_scene *s = &out->scene;
+    const double step = 1.0 / STP_FIX_ONE, extent_limit = 4 * step;
+    size_t i;
+    for (i = 0; i < s->polygon_count; i++) {
+        const stp_scene_polygon *p = &s->polygons[i];
+        stp_scene_vec3 a = s->vertices[p->first];
+        double size = 0;
+        int k;
+        if (p->prim >= 0)
+            continue; /* checked with its prim */
+        for (k = 1; k < p->count; k++)
+            size = fmax(size, max_abs(to_units(s->vertices[p->first + (size_t)k], a, 1.0)));
+        if (size > 0 && size < extent_limit) {
+            snprintf(err, err_size,
+                     "polygon %zu (line %d): %g units across in a scene %g units across: "
+                     "beyond the core's range of coordinates (2^15 units in steps of 2^-16, "
+                     "after rescaling); remove the far-off or the tiny objects",
+                     i + 1, p->source_line, size / out->scale,
+                     STP_TOOL_EXTENT_TARGET / out->scale);
+            return -1;
+        }
+    }
+    for (i = 0; i < s->prim_count; i++) {
+        const stp_scene_prim *p = &s->prims[i];
+        double size = fmax(fabs(p->base_radius), fabs(p->apex_radius));
+        if (p->kind == STP_SCENE_CONE)
+            size = fmax(size, dist(p->base, p->apex));
+        if (size < extent_limit) {
+            snprintf(err, err_size,
+                     "%s %zu: %g units across in a scene %g units across: beyond the core's "
+                     "range of coordinates (2^15 units in steps of 2^-16, after rescaling)",
+                     p->kind == STP_SCENE_SPHERE ? "sphere" : "cone", i + 1,
+                     size / out->scale, STP_TOOL_EXTENT_TARGET / out->scale);
+            return -1;
+        }
+    }
+    (void)in;
+    return 0;
+}
+
+static void rescale(stp_tool_prepared *out, const stp_tool_options *opt, stp_scene_vec3 off,
+                    double k)
+{
+    stp_scene *s = &out->scene;
+    size_t i;
+    out->scale = k;
+    out->offset = off;
+    for (i = 0; i < s->vertex_count; i++)
+        s->vertices[i] = to_units(s->vertices[i], off, k);
+    for (i = 0; i < s->prim_count; i++) {
+        s->prims[i].base = to_units(s->prims[i].base, off, k);
+        s->prims[i].apex = to_units(s->prims[i].apex, off, k);
+        s->prims[i].base_radius *= k;
+        s->prims[i].apex_radius *= k;
+    }
+    for (i = 0; i < s->light_count; i++)
+        s->lights[i].position = to_units(s->lights[i].position, off, k);
+    if (s->has_view) {
+        stp_scene_vec3 from = to_units(s->from, off, k), at = to_units(s->at, off, k);
+        /* only at's direction matters: a far look-at point is brought to
+         * the scene's distance (shadow maps use it as a hint) */
+        if (max_abs(at) > STP_TOOL_COORD_LIMIT) {
+            stp_scene_vec3 d = v3(s->at.x - s->from.x, s->at.y - s->from.y, s->at.z - s->from.z);
+            double l = hypot(hypot(d.x, d.y), d.z);
+            double r = dist(from, v3(0, 0, 0)) + STP_TOOL_EXTENT_TARGET;
+            at = v3(from.x + d.x / l * r, from.y + d.y / l * r, from.z + d.z / l * r);
+        }
+        s->from = from;
+        s->at = at;
+        s->hither *= k;
+    }
+    /* C of 1/(C + U) is not scaled: it is taken in the units of the
+     * rescaled scene, so it means the same whatever the file's units (a C
+     * of 1 in millimetres would otherwise flatten every light's falloff,
+     * in kilometres sharpen it) */
+    (void)opt;
+}
+
+/* Lights beyond the limit come in along their direction from the centre;
+ * with raw power the light keeps its attenuation at the centre. */
+static void pull_in_lights(stp_tool_prepared *out, stp_scene_vec3 centre)
+{
+    stp_scene *s = &out->scene;
+    size_t i;
+    for (i = 0; i < s->light_count; i++) {
+        stp_scene_vec3 p = s->lights[i].position;
+        double d = dist(p, centre), r = STP_TOOL_COORD_LIMIT / 2;
+        if (max_abs(p) <= STP_TOOL_COORD_LIMIT || !(d > r))
+            continue;
+        s->lights[i].position = v3(centre.x + (p.x - centre.x) / d * r,
+                                   centre.y + (p.y - centre.y) / d * r,
+                                   centre.z + (p.z - centre.z) / d * r);
+        if (!out->opt.auto_power)
+            out->power_factor[i] *= (out->opt.attenuation_c + r) / (out->opt.attenuation_c + d);
+    }
+}
+
+int stp_tool_prepare(const stp_scene *scene, const stp_tool_options *opt, stp_tool_prepared *out,
+                     char *err, size_t err_size)
+{
+    stp_scene_vec3 lo, hi, centre;
+    double extent;
+    size_t i;
+
+    memset(out, 0, sizeof *out);
+    out->opt = *opt;
+    out->scale = 1;
+    if (stp_scene_bounds(scene, &lo, &hi) != 0) {
+        snprintf(err, err_size, "the scene has no polygons to render");
+        return -1;
+    }
+    if (copy_scene(scene, out) != 0) {
+        stp_tool_prepared_free(out);
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    centre = v3((lo.x + hi.x) / 2, (lo.y + hi.y) / 2, (lo.z + hi.z) / 2);
+    gather_lights(scene, opt, centre, out, out->light_weight);
+    for (i = 0; i < STP_MAX_LIGHTS; i++)
+        out->power_factor[i] = 1;
+    extent = scene_extent(scene, lo, hi, centre);
+    if (!(extent > 0))
+        extent = 1;
+    if (needs_rescale(scene, lo, hi, extent)) {
+        /* to one extent whatever the units: files that differ only in
+         * their units give the same scene to the core */
+        double k = STP_TOOL_EXTENT_TARGET / extent;
+        rescale(out, opt, centre, k);
+        if (check_resolution(out, scene, err, err_size) != 0) {
+            stp_tool_prepared_free(out);
+            return -1;
+        }
+        centre = v3(0, 0, 0);
+    }
+    pull_in_lights(out, centre);
+    return 0;
+}
