@@ -17,6 +17,7 @@
 #include "stipple/fix.h"
 #include "stipple/shade.h"
 #include "stipple/dither.h"
+#include "stipple/diffuse.h"
 #include "stipple/port.h"
 #include "stipple/render.h"
 #include "stipple/colour.h"
