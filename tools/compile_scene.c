@@ -159,6 +159,10 @@ static int make_plan(const stp_scene *scene, const stp_tool_options *opt, plan *
     }
     if (!opt->shading)
         p->specular = 0; /* no MAKE-SHADE at all */
+    if (opt->dither == STP_TOOL_DITHER_DIFFUSE) {
+        snprintf(err, errlen, "error diffusion is not available in compiled scenes; use a cell");
+        return -1;
+    }
     if (stp_tool_cell(opt, &p->cell) != 0) {
         snprintf(err, errlen, "bad halftone cell");
         return -1;

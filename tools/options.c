@@ -82,6 +82,14 @@ int stp_tool_parse_dither(const char *s, stp_tool_options *opt)
     } names[] = {{"bayer2", STP_TOOL_DITHER_BAYER2},   {"bayer4", STP_TOOL_DITHER_BAYER4},
                  {"bayer8", STP_TOOL_DITHER_BAYER8},   {"seed2x2", STP_TOOL_DITHER_SEED2X2},
                  {"pattern2x2", STP_TOOL_DITHER_PATTERN2X2}};
+    /* error diffusion: NAME, or NAME:raster for rows all left to right */
+    static const struct {
+        const char *name;
+        stp_diffusion_kernel kernel;
+    } kernels[] = {{"fs", STP_DIFFUSE_FLOYD_STEINBERG},  {"floyd-steinberg", STP_DIFFUSE_FLOYD_STEINBERG},
+                   {"atkinson", STP_DIFFUSE_ATKINSON},   {"sierra-lite", STP_DIFFUSE_SIERRA_LITE},
+                   {"jjn", STP_DIFFUSE_JARVIS_JUDICE_NINKE}, {"stucki", STP_DIFFUSE_STUCKI},
+                   {"burkes", STP_DIFFUSE_BURKES}};
     size_t i;
     int w, h, n = 0, t;
     char *copy, *tok, *save = 0;
@@ -90,6 +98,15 @@ int stp_tool_parse_dither(const char *s, stp_tool_options *opt)
             opt->dither = names[i].dither;
             return 0;
         }
+    for (i = 0; i < sizeof kernels / sizeof kernels[0]; i++) {
+        size_t len = strlen(kernels[i].name);
+        if (!strncmp(s, kernels[i].name, len) && (!s[len] || !strcmp(s + len, ":raster"))) {
+            opt->dither = STP_TOOL_DITHER_DIFFUSE;
+            opt->diffuse_kernel = kernels[i].kernel;
+            opt->diffuse_raster = s[len] != 0;
+            return 0;
+        }
+    }
     /* user:W:H:t,t,... (row-major thresholds) */
     if (strncmp(s, "user:", 5) != 0 || !(copy = strdup(s + 5)))
         return -1;
@@ -269,7 +286,10 @@ void stp_tool_options_help(FILE *to)
             "  -s, --size WxH           device size in pixels (default 128x64)\n"
             "  -l, --levels N           INTENSITY levels, 2..256 (default 16)\n"
             "  -d, --dither CELL        bayer2, bayer4 (default), bayer8, seed2x2, pattern2x2,\n"
-            "                           or user:W:H:t,t,... (thresholds 0..255, row-major)\n"
+            "                           or user:W:H:t,t,... (thresholds 0..255, row-major);\n"
+            "                           or error diffusion of 1-bit output: fs, atkinson,\n"
+            "                           sierra-lite, jjn, stucki, burkes (serpentine; NAME:raster\n"
+            "                           for every row left to right)\n"
             "      --spacing KIND       threshold spacing of Bayer cells: linear (default),\n"
             "                           exponential, cubic\n"
             "  -g, --gamma G            gamma of the device table V = (I/k)^(1/G) (default 1)\n"

@@ -16,7 +16,8 @@ typedef enum stp_tool_dither {
     STP_TOOL_DITHER_BAYER8,
     STP_TOOL_DITHER_SEED2X2,
     STP_TOOL_DITHER_PATTERN2X2,
-    STP_TOOL_DITHER_USER
+    STP_TOOL_DITHER_USER,
+    STP_TOOL_DITHER_DIFFUSE  /* error diffusion (MONO1): diffuse_kernel */
 } stp_tool_dither;
 
 typedef struct stp_tool_options {
@@ -24,6 +25,8 @@ typedef struct stp_tool_options {
     int levels;              /* INTENSITY levels (16) */
     stp_tool_dither dither;  /* (Bayer 4x4) */
     stp_spacing spacing;     /* threshold spacing of Bayer cells (linear) */
+    int diffuse_kernel;      /* STP_TOOL_DITHER_DIFFUSE: stp_diffusion_kernel */
+    int diffuse_raster;      /* 1: every row left to right (0: serpentine) */
     int user_cell_w, user_cell_h;
     unsigned char user_cell[STP_CELL_MAX * STP_CELL_MAX];
     double gamma, gamma_k;   /* (10.44): 1, 1 = linear */
@@ -135,7 +138,13 @@ void stp_tool_material(const stp_scene_material *m, int colour, stp_material *ou
 /* Double to stp_fix, saturating. */
 stp_fix stp_tool_fix(double v);
 
-/* Build the halftone cell the options name. */
+/* The error diffusion the options ask for, for rows of width pixels:
+ * 1 with d filled and d->errors allocated (the caller frees it), 0 when the
+ * options dither with a cell (d->errors NULL), -1 out of memory. */
+int stp_tool_diffusion(const stp_tool_options *opt, uint32_t width, stp_diffusion *d);
+
+/* Build the halftone cell the options name (Bayer 4x4 for diffusion, whose
+ * cell only other formats' fallbacks would use). */
 int stp_tool_cell(const stp_tool_options *opt, stp_cell *cell);
 
 #endif

@@ -72,7 +72,8 @@ static void usage_dither(FILE *to)
     fprintf(to,
             "usage: stipple dither IMAGE -o OUT.pbm [options]\n"
             "\n"
-            "Halftones a PGM or PPM image (PPM through luminance) with an ordered-dither cell.\n"
+            "Halftones a PGM or PPM image (PPM through luminance) with an ordered-dither cell\n"
+            "or error diffusion (-d fs, atkinson, ...).\n"
             "With bayer2/4/8 the pixels equal ImageMagick's -ordered-dither o2x2/o4x4/o8x8.\n"
             "\n"
             "  -o, --output FILE     where to write (.pbm; '-' for stdout)\n"
@@ -376,6 +377,7 @@ static int cmd_dither(int argc, char **argv)
     stp_posix_image img;
     stp_posix_frame frame;
     stp_cell cell;
+    stp_diffusion diffusion;
     uint8_t table[256];
     const char *out_path = 0;
     char err[512];
@@ -420,13 +422,24 @@ static int cmd_dither(int argc, char **argv)
         stp_posix_image_free(&img);
         return fail("out of memory");
     }
+    if (stp_tool_diffusion(&opt, img.width, &diffusion) < 0) {
+        stp_posix_image_free(&img);
+        stp_posix_frame_free(&frame);
+        return fail("out of memory");
+    }
     for (y = 0; y < img.height; y++) {
         uint8_t *grey = img.samples + (size_t)y * img.width;
         if (use_gamma)
             for (x = 0; x < img.width; x++)
                 grey[x] = table[grey[x]];
-        stp_halftone_row(frame.pixels + (size_t)y * frame.stride, grey, img.width, y, &cell);
+        if (diffusion.errors) {
+            stp_diffuse_row(&diffusion, grey, img.width, y); /* packs in place */
+            memcpy(frame.pixels + (size_t)y * frame.stride, grey, frame.stride);
+        } else {
+            stp_halftone_row(frame.pixels + (size_t)y * frame.stride, grey, img.width, y, &cell);
+        }
     }
+    free(diffusion.errors);
     stp_posix_image_free(&img);
     if (stp_posix_write(&frame, out_path, plain ? STP_POSIX_FILE_P1 : STP_POSIX_FILE_P4, err,
                         sizeof err) != 0) {

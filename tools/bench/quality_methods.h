@@ -1,0 +1,21 @@
+/* SPDX-License-Identifier: MIT */
+/* The methods the quality bench (quality.c) compares: either options of a
+ * render (setup) or a dither applied to the ideal picture (on_ideal). */
+#ifndef STIPPLE_BENCH_QUALITY_METHODS_H
+#define STIPPLE_BENCH_QUALITY_METHODS_H
+
+#include <stddef.h>
+#include "render_scene.h"
+
+typedef struct qm_method {
+    const char *name;
+    void (*setup)(stp_tool_options *opt); /* NULL: the defaults */
+    /* ideal[w*h] in [0, 1] -> bits[w*h] 0/1; NULL for a render */
+    void (*on_ideal)(const double *ideal, int w, int h, unsigned char *bits);
+} qm_method;
+
+/* Method 0 is the default render (the cost ratios' base). */
+size_t qm_method_count(void);
+const qm_method *qm_method_at(size_t i);
+
+#endif
