@@ -178,10 +178,12 @@ int stp_tool_apply_option(int code, const char *arg, stp_tool_options *opt,
     case 'l':
         if (stp_tool_parse_int(arg, 2, 256, &opt->levels))
             what = "--levels (2..256)";
+        opt->levels_given = 1;
         break;
     case 'd':
         if (stp_tool_parse_dither(arg, opt))
             what = "--dither";
+        opt->dither_given = 1;
         break;
     case STP_TOOL_OPT_SPACING:
         if (stp_tool_parse_spacing(arg, &opt->spacing))
@@ -284,8 +286,10 @@ void stp_tool_options_help(FILE *to)
 {
     fprintf(to,
             "  -s, --size WxH           device size in pixels (default 128x64)\n"
-            "  -l, --levels N           INTENSITY levels, 2..256 (default 16)\n"
-            "  -d, --dither CELL        bayer2, bayer4 (default), bayer8, seed2x2, pattern2x2,\n"
+            "  -l, --levels N           INTENSITY levels, 2..256 (default 16; 256 for a\n"
+            "                           1-bit picture file)\n"
+            "  -d, --dither CELL        bayer2, bayer4 (default; fs:raster for a 1-bit\n"
+            "                           picture file), bayer8, seed2x2, pattern2x2,\n"
             "                           or user:W:H:t,t,... (thresholds 0..255, row-major);\n"
             "                           or error diffusion of 1-bit output: fs, atkinson,\n"
             "                           sierra-lite, jjn, stucki, burkes (serpentine; NAME:raster\n"

@@ -68,6 +68,17 @@ int stp_tool_cell(const stp_tool_options *opt, stp_cell *cell)
     return -1;
 }
 
+void stp_tool_still_defaults(stp_tool_options *opt)
+{
+    if (!opt->dither_given) {
+        opt->dither = STP_TOOL_DITHER_DIFFUSE;
+        opt->diffuse_kernel = STP_DIFFUSE_FLOYD_STEINBERG;
+        opt->diffuse_raster = 1;
+    }
+    if (!opt->levels_given)
+        opt->levels = 256;
+}
+
 int stp_tool_diffusion(const stp_tool_options *opt, uint32_t width, stp_diffusion *d)
 {
     memset(d, 0, sizeof *d);

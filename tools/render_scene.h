@@ -27,6 +27,7 @@ typedef struct stp_tool_options {
     stp_spacing spacing;     /* threshold spacing of Bayer cells (linear) */
     int diffuse_kernel;      /* STP_TOOL_DITHER_DIFFUSE: stp_diffusion_kernel */
     int diffuse_raster;      /* 1: every row left to right (0: serpentine) */
+    int dither_given, levels_given; /* the option parser saw -d / -l */
     int user_cell_w, user_cell_h;
     unsigned char user_cell[STP_CELL_MAX * STP_CELL_MAX];
     double gamma, gamma_k;   /* (10.44): 1, 1 = linear */
@@ -142,6 +143,12 @@ stp_fix stp_tool_fix(double v);
  * 1 with d filled and d->errors allocated (the caller frees it), 0 when the
  * options dither with a cell (d->errors NULL), -1 out of memory. */
 int stp_tool_diffusion(const stp_tool_options *opt, uint32_t width, stp_diffusion *d);
+
+/* The defaults for a still 1-bit picture (stipple render to a PBM file),
+ * where options did not say otherwise: Floyd-Steinberg diffusion, rows
+ * left to right, 256 levels (the best figure of tools/bench/quality.c;
+ * moving pictures keep the ordered cell, which does not flicker). */
+void stp_tool_still_defaults(stp_tool_options *opt);
 
 /* Build the halftone cell the options name (Bayer 4x4 for diffusion, whose
  * cell only other formats' fallbacks would use). */

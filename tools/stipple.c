@@ -318,6 +318,8 @@ static int cmd_render(int argc, char **argv)
             opt.levels = lp.levels;
         opt.styles = &lp;
     }
+    if (format_for_kind(kind) == STP_PIXEL_MONO1)
+        stp_tool_still_defaults(&opt); /* a still 1-bit picture: diffusion */
     if (palette && (kind != STP_POSIX_FILE_P6 || opt.colour))
         return fail("--palette needs a .ppm output (and no --color)");
     /* with a palette the frame is an indexed frame buffer: style indices */

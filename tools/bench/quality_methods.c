@@ -63,11 +63,11 @@ static void burkes(stp_tool_options *opt)
 }
 
 static const qm_method methods[] = {
-    {"default", 0, 0},
+    {"bayer4, 16 levels", 0, 0}, /* the library's default (and moving pictures') */
     {"bayer4, 256 levels", levels256, 0},
     {"fs, 16 levels", fs16, 0},
     {"fs", fs, 0},
-    {"fs:raster", fs_raster, 0},
+    {"fs:raster (still)", fs_raster, 0}, /* stipple render's default for a PBM */
     {"atkinson", atkinson, 0},
     {"sierra-lite", sierra_lite, 0},
     {"jjn", jjn, 0},
