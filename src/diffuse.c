@@ -3,10 +3,8 @@
 #include "stipple/diffuse.h"
 #include "stipple/render.h"
 
-#define ERR_BITS 6
-#define LEVEL_ONE ((int32_t)255 << ERR_BITS) /* an ON pixel: 16320 */
-#define MIDPOINT ((int32_t)255 << (ERR_BITS - 1)) /* 127.5 levels: 8160 */
-#define ERR_LIMIT ((int32_t)128 << ERR_BITS) /* saturation of an error */
+#define QUARTERS 4 /* errors are whole quarter levels */
+#define ERR_LIMIT (128 * QUARTERS) /* saturation of an error: 128 levels */
 #define MARGIN 2 /* entries left and right of a row for shares past an edge */
 
 typedef struct tap {
@@ -19,8 +17,6 @@ typedef struct kernel_def {
     tap taps[12];
 } kernel_def;
 
-/* Taps in order of their cumulative share (any order works; this one is
- * the reading order). */
 static const kernel_def kernels[STP_DIFFUSE_KERNELS] = {
     {16, 2, 4, {{1, 0, 7}, {-1, 1, 3}, {0, 1, 5}, {1, 1, 1}}},
     {8, 3, 6, {{1, 0, 1}, {2, 0, 1}, {-1, 1, 1}, {0, 1, 1}, {1, 1, 1}, {0, 2, 1}}},
@@ -50,59 +46,63 @@ int stp_diffusion_check(const stp_diffusion *d, uint32_t width)
     return d->error_count < need ? STP_ERR_MEMORY : STP_OK;
 }
 
-/* n / d rounded half away from zero (d > 0). */
-static int32_t round_div(int32_t n, int32_t d)
+/* The error of value v (in 1/(4 divisor) levels) after quantising it, in
+ * quarter levels: (v - output) / divisor rounded half away from zero, the
+ * division made as a multiplication by reciprocal = round(2^shift /
+ * divisor) (no divider on small cores), shift the largest with reciprocal
+ * < 29204: |v - output| <= 1020 divisor + 24576 <= 73536, so the product
+ * stays below 2^31; exact for the power-of-two divisors, within 0.05
+ * quarter level for 42 and 48.  Saturated at 128 levels. */
+static int32_t quantised_error(int32_t v, int on, int32_t divisor, int32_t reciprocal, int shift)
 {
-    return n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d);
-}
-
-/* Spread error e of pixel x of row y over the kernel's taps: share i is
- * the rounded cumulative share up to tap i minus that up to tap i - 1, so
- * the shares add up to round(e total / divisor). */
-static void spread(const kernel_def *k, int16_t *errors, uint32_t span, uint32_t y, uint32_t x,
-                   int dir, int32_t e)
-{
-    int32_t cumulative = 0, given = 0;
-    int i;
-    for (i = 0; i < k->count; i++) {
-        const tap *t = &k->taps[i];
-        int16_t *row = errors + ((y + (uint32_t)t->dy) % k->rows) * span;
-        int32_t share, sum;
-        cumulative += t->weight;
-        sum = round_div(e * cumulative, k->divisor);
-        share = sum - given;
-        given = sum;
-        /* x + MARGIN + dir dx stays in 0..span-1 (|dx| <= MARGIN) */
-        row[(uint32_t)((int32_t)x + MARGIN + dir * t->dx)] =
-            (int16_t)(row[(uint32_t)((int32_t)x + MARGIN + dir * t->dx)] + share);
-    }
+    int32_t e = v - (on ? (int32_t)255 * QUARTERS * divisor : 0), half = (int32_t)1 << (shift - 1);
+    e = e >= 0 ? (e * reciprocal + half) >> shift : -((-e * reciprocal + half) >> shift);
+    if (e > ERR_LIMIT)
+        e = ERR_LIMIT;
+    if (e < -ERR_LIMIT)
+        e = -ERR_LIMIT;
+    return e;
 }
 
 void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, uint32_t y)
 {
     const kernel_def *k = &kernels[d->kernel];
     uint32_t span = width + 2u * MARGIN, i;
-    int16_t *current = d->errors + (y % k->rows) * span;
-    int backwards = d->serpentine && (y & 1u);
+    int16_t *rows[3]; /* rows y, y + 1, y + 2 (slots modulo k->rows) */
+    int16_t *target[12];
+    int32_t weight[12];
+    int32_t divisor = k->divisor, midpoint = (int32_t)255 * (QUARTERS / 2) * divisor;
+    int32_t reciprocal;
+    int shift = 16;
+    int backwards = d->serpentine && (y & 1u), dir = backwards ? -1 : 1, t;
     uint8_t byte = 0;
+    while ((((int32_t)2 << shift) + divisor / 2) / divisor < 29204)
+        shift++;
+    reciprocal = (((int32_t)1 << shift) + divisor / 2) / divisor;
     if (y == 0)
         for (i = 0; i < k->rows * span; i++)
             d->errors[i] = 0;
+    for (t = 0; t < 3; t++)
+        rows[t] = d->errors + ((y + (uint32_t)t) % k->rows) * span + MARGIN;
+    /* each tap's entry of pixel x is target[t][x] */
+    for (t = 0; t < k->count; t++) {
+        target[t] = rows[k->taps[t].dy] + dir * k->taps[t].dx;
+        weight[t] = k->taps[t].weight;
+    }
     for (i = 0; i < width; i++) {
         uint32_t x = backwards ? width - 1u - i : i;
-        int32_t v = ((int32_t)pixels[x] << ERR_BITS) + current[x + MARGIN];
-        int on = v >= MIDPOINT;
-        int32_t e = v - (on ? LEVEL_ONE : 0);
-        if (e > ERR_LIMIT)
-            e = ERR_LIMIT;
-        if (e < -ERR_LIMIT)
-            e = -ERR_LIMIT;
+        int32_t v = (int32_t)pixels[x] * QUARTERS * divisor + rows[0][x];
+        int on = v >= midpoint;
+        int32_t e = quantised_error(v, on, divisor, reciprocal, shift);
         pixels[x] = (uint8_t)on;
-        spread(k, d->errors, span, y, x, backwards ? -1 : 1, e);
+        /* exact shares e w: the entries hold sums of them, read over
+         * divisor above; |entry| <= 512 divisor <= 24576 */
+        for (t = 0; t < k->count; t++)
+            target[t][x] = (int16_t)(target[t][x] + e * weight[t]);
     }
     /* this row's entries become those of row y + rows */
     for (i = 0; i < span; i++)
-        current[i] = 0;
+        rows[0][(int32_t)i - MARGIN] = 0;
     /* pack in place: byte x/8 is written after pixel x has been read, and
      * x/8 <= x */
     for (i = 0; i < width; i++) {

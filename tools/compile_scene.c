@@ -274,12 +274,14 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
 
     out(w, "static const stp_cell cell = {%d, %d, %d, {", p->cell.kind, p->cell.width,
         p->cell.height);
-    for (k = 0; k < p->cell.width * p->cell.height; k++)
-        out(w, "%s%d", k ? ", " : "", p->cell.thresholds[k]);
+    for (k = 0; k < (p->cell.mask ? 1 : p->cell.width * p->cell.height); k++)
+        out(w, "%s%d", k ? ", " : "", p->cell.mask ? 0 : p->cell.thresholds[k]);
     out(w, "}, {");
     for (k = 0; k < 5; k++)
         out(w, "%s%d", k ? ", " : "", p->cell.patterns[k]);
-    out(w, "}};\n\n");
+    /* a mask cell names its const data: the core's blue noise is the one
+     * the options can ask for */
+    out(w, "}, %s};\n\n", p->cell.mask == stp_cell_blue_noise_64 ? "stp_cell_blue_noise_64" : "0");
 
     if (p->has_gamma) {
         out(w, "static const uint8_t gamma[%d] = {", opt->levels);

@@ -81,7 +81,8 @@ int stp_tool_parse_dither(const char *s, stp_tool_options *opt)
         stp_tool_dither dither;
     } names[] = {{"bayer2", STP_TOOL_DITHER_BAYER2},   {"bayer4", STP_TOOL_DITHER_BAYER4},
                  {"bayer8", STP_TOOL_DITHER_BAYER8},   {"seed2x2", STP_TOOL_DITHER_SEED2X2},
-                 {"pattern2x2", STP_TOOL_DITHER_PATTERN2X2}};
+                 {"pattern2x2", STP_TOOL_DITHER_PATTERN2X2}, {"bayer16", STP_TOOL_DITHER_BAYER16},
+                 {"blue-noise", STP_TOOL_DITHER_BLUE_NOISE}};
     /* error diffusion: NAME, or NAME:raster for rows all left to right */
     static const struct {
         const char *name;
@@ -106,6 +107,18 @@ int stp_tool_parse_dither(const char *s, stp_tool_options *opt)
             opt->diffuse_raster = s[len] != 0;
             return 0;
         }
+    }
+    /* clustered:N (0 degrees) or clustered45:N */
+    if (!strncmp(s, "clustered:", 10) || !strncmp(s, "clustered45:", 12)) {
+        int angle = s[9] == ':' ? 0 : 45, side;
+        stp_cell probe;
+        if (stp_tool_parse_int(s + (angle ? 12 : 10), 2, STP_CELL_MAX, &side) ||
+            stp_cell_clustered(&probe, side, angle) != 0)
+            return -1;
+        opt->dither = STP_TOOL_DITHER_CLUSTERED;
+        opt->clustered_n = side;
+        opt->clustered_angle = angle;
+        return 0;
     }
     /* user:W:H:t,t,... (row-major thresholds) */
     if (strncmp(s, "user:", 5) != 0 || !(copy = strdup(s + 5)))
@@ -289,7 +302,9 @@ void stp_tool_options_help(FILE *to)
             "  -l, --levels N           INTENSITY levels, 2..256 (default 16; 256 for a\n"
             "                           1-bit picture file)\n"
             "  -d, --dither CELL        bayer2, bayer4 (default; fs:raster for a 1-bit\n"
-            "                           picture file), bayer8, seed2x2, pattern2x2,\n"
+            "                           picture file), bayer8, bayer16, blue-noise (64x64),\n"
+            "                           clustered:N (dots, N 2..16), clustered45:N (45\n"
+            "                           degrees, N even 4..16), seed2x2, pattern2x2,\n"
             "                           or user:W:H:t,t,... (thresholds 0..255, row-major);\n"
             "                           or error diffusion of 1-bit output: fs, atkinson,\n"
             "                           sierra-lite, jjn, stucki, burkes (serpentine; NAME:raster\n"

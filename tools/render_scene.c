@@ -64,6 +64,10 @@ int stp_tool_cell(const stp_tool_options *opt, stp_cell *cell)
     case STP_TOOL_DITHER_USER:
         return stp_cell_user(cell, opt->user_cell_w, opt->user_cell_h, opt->user_cell);
     case STP_TOOL_DITHER_DIFFUSE: return stp_cell_bayer(cell, 4);
+    case STP_TOOL_DITHER_BAYER16: return stp_cell_bayer_spaced(cell, 16, opt->spacing);
+    case STP_TOOL_DITHER_BLUE_NOISE: stp_cell_blue_noise(cell); return 0;
+    case STP_TOOL_DITHER_CLUSTERED:
+        return stp_cell_clustered(cell, opt->clustered_n, opt->clustered_angle);
     }
     return -1;
 }

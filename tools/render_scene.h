@@ -17,7 +17,10 @@ typedef enum stp_tool_dither {
     STP_TOOL_DITHER_SEED2X2,
     STP_TOOL_DITHER_PATTERN2X2,
     STP_TOOL_DITHER_USER,
-    STP_TOOL_DITHER_DIFFUSE  /* error diffusion (MONO1): diffuse_kernel */
+    STP_TOOL_DITHER_DIFFUSE, /* error diffusion (MONO1): diffuse_kernel */
+    STP_TOOL_DITHER_BAYER16,
+    STP_TOOL_DITHER_BLUE_NOISE, /* the core's 64x64 void-and-cluster mask */
+    STP_TOOL_DITHER_CLUSTERED   /* clustered dots: clustered_n, clustered_angle */
 } stp_tool_dither;
 
 typedef struct stp_tool_options {
@@ -28,6 +31,7 @@ typedef struct stp_tool_options {
     int diffuse_kernel;      /* STP_TOOL_DITHER_DIFFUSE: stp_diffusion_kernel */
     int diffuse_raster;      /* 1: every row left to right (0: serpentine) */
     int dither_given, levels_given; /* the option parser saw -d / -l */
+    int clustered_n, clustered_angle; /* STP_TOOL_DITHER_CLUSTERED: side, 0 or 45 */
     int user_cell_w, user_cell_h;
     unsigned char user_cell[STP_CELL_MAX * STP_CELL_MAX];
     double gamma, gamma_k;   /* (10.44): 1, 1 = linear */

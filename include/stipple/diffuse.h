@@ -10,16 +10,16 @@
  * outside the frame are lost).  Serpentine: odd rows (y odd) run right to
  * left with the kernel mirrored.
  *
- * Number format: errors are Q.6 drive levels (1/64 level) in int16_t.  In
- * exact arithmetic an error never exceeds 127.5 levels (8160) in magnitude
- * when the kernel's weights sum to at most 1 (an incoming error is a mean of
- * earlier ones, and a value beyond the midpoint is quantised towards it);
- * the rounding of shares is saturated at +-128 levels (8192), so a cell
- * holds at most 8192 + 12 and v = 64 level + error at most 24524: int16_t
- * storage, int32_t arithmetic, no overflow.  Shares are rounded so that
- * the shares of one pixel add up to its error times the kernel's total
- * weight, rounded: no error is created or lost by rounding beyond 1/128
- * level per pixel.
+ * Number format: an error is rounded to whole quarter levels (|e| <= 512:
+ * in exact arithmetic an error never exceeds 127.5 levels when the
+ * kernel's weights sum to at most 1, since an incoming error is a mean of
+ * earlier ones and a value beyond the midpoint is quantised towards it;
+ * it is saturated at 128 levels all the same).  An error-row entry holds
+ * the exact sum of the shares e * weight it has received, in 1/(4 divisor)
+ * levels: |entry| <= 512 divisor <= 24576, so int16_t storage; a pixel's
+ * value 4 divisor level + entry is computed in int32_t.  So the shares of
+ * a pixel add up exactly to its (rounded) error: rounding loses at most
+ * 1/8 level per pixel, and no division is made per share.
  */
 #ifndef STIPPLE_DIFFUSE_H
 #define STIPPLE_DIFFUSE_H

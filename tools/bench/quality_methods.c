@@ -62,9 +62,30 @@ static void burkes(stp_tool_options *opt)
     diffuse(opt, STP_DIFFUSE_BURKES, 0, 256);
 }
 
+static void blue_noise(stp_tool_options *opt)
+{
+    opt->dither = STP_TOOL_DITHER_BLUE_NOISE;
+    opt->levels = 256;
+}
+static void bayer16(stp_tool_options *opt)
+{
+    opt->dither = STP_TOOL_DITHER_BAYER16;
+    opt->levels = 256;
+}
+static void clustered45(stp_tool_options *opt)
+{
+    opt->dither = STP_TOOL_DITHER_CLUSTERED;
+    opt->clustered_n = 6;
+    opt->clustered_angle = 45;
+    opt->levels = 256;
+}
+
 static const qm_method methods[] = {
     {"bayer4, 16 levels", 0, 0}, /* the library's default (and moving pictures') */
     {"bayer4, 256 levels", levels256, 0},
+    {"bayer16", bayer16, 0},
+    {"blue-noise", blue_noise, 0},
+    {"clustered45:6", clustered45, 0},
     {"fs, 16 levels", fs16, 0},
     {"fs", fs, 0},
     {"fs:raster (still)", fs_raster, 0}, /* stipple render's default for a PBM */
