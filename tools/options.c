@@ -36,6 +36,10 @@ static const struct option shared[] = {
     {"depth", required_argument, 0, STP_TOOL_OPT_DEPTH},
     {"min-weight", required_argument, 0, STP_TOOL_OPT_MIN_WEIGHT},
     {"no-hierarchy", no_argument, 0, STP_TOOL_OPT_NO_HIERARCHY},
+    {"exposure", required_argument, 0, STP_TOOL_OPT_EXPOSURE},
+    {"grey", required_argument, 0, STP_TOOL_OPT_GREY},
+    {"gray", required_argument, 0, STP_TOOL_OPT_GREY},
+    {"background", required_argument, 0, STP_TOOL_OPT_BACKGROUND},
 };
 
 int stp_tool_long_options(struct option *out, size_t cap, const struct option *extra)
@@ -286,6 +290,38 @@ int stp_tool_apply_option(int code, const char *arg, stp_tool_options *opt,
             what = "--min-weight (0..1)";
         break;
     case STP_TOOL_OPT_NO_HIERARCHY: opt->rt_hierarchy = 0; break;
+    case STP_TOOL_OPT_EXPOSURE:
+        opt->exposure_given = 1;
+        if (!strcmp(arg, "auto"))
+            opt->exposure_auto = 1;
+        else if (!strcmp(arg, "off"))
+            opt->exposure_auto = 0;
+        else
+            what = "--exposure (auto, off)";
+        break;
+    case STP_TOOL_OPT_GREY:
+        if (!strcmp(arg, "contrast"))
+            opt->grey_contrast = 1;
+        else if (!strcmp(arg, "luminance"))
+            opt->grey_contrast = 0;
+        else
+            what = "--grey (luminance, contrast)";
+        break;
+    case STP_TOOL_OPT_BACKGROUND: {
+        double v[3];
+        char extra;
+        int k = sscanf(arg, "%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &extra);
+        if (k == 1)
+            v[1] = v[2] = v[0];
+        if ((k != 1 && k != 3) || (k == 1 && strchr(arg, ',')) || v[0] < 0 || v[0] > 1 ||
+            v[1] < 0 || v[1] > 1 || v[2] < 0 || v[2] > 1) {
+            what = "--background (V or R,G,B, each 0..1)";
+            break;
+        }
+        opt->background_given = 1;
+        memcpy(opt->background_rgb, v, sizeof v);
+        break;
+    }
     default: return 0;
     }
     if (what) {
@@ -343,6 +379,13 @@ void stp_tool_options_help(FILE *to)
             "                           (default 4)\n"
             "      --min-weight W       ray tracer: rays weighing less are not cast, 0..1\n"
             "                           (default 0.015625)\n"
-            "      --no-hierarchy       ray tracer: test every object (no bounding volumes)\n",
+            "      --no-hierarchy       ray tracer: test every object (no bounding volumes)\n"
+            "      --exposure auto|off  auto: brightness scaled so the brightest drawn pixel\n"
+            "                           reaches the top level (default off; auto for a 1-bit\n"
+            "                           picture file)\n"
+            "      --grey MODE          grey from colour: luminance (default) or contrast (the\n"
+            "                           scene's colours spread along their main axis)\n"
+            "      --background V|R,G,B the empty frame's shade or colour (0..1), instead of\n"
+            "                           the scene's\n",
             STP_MAX_LIGHTS, STP_RT_MAX_DEPTH);
 }

@@ -9,6 +9,7 @@
 
 #include "scene_util.h"
 #include "shadows_setup.h"
+#include "tone.h"
 
 void stp_tool_options_default(stp_tool_options *opt)
 {
@@ -81,6 +82,8 @@ void stp_tool_still_defaults(stp_tool_options *opt)
     }
     if (!opt->levels_given)
         opt->levels = 256;
+    if (!opt->exposure_given)
+        opt->exposure_auto = 1;
 }
 
 int stp_tool_diffusion(const stp_tool_options *opt, uint32_t width, stp_diffusion *d)
@@ -353,6 +356,8 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
     int diffusing = 0;
 
     memset(&diffusion, 0, sizeof diffusion);
+    if (stp_tool_tone_wanted(opt))
+        return stp_tool_render_toned(scene, opt, port, stats, err, err_size);
     if (opt->raytrace) {
 #if STP_WITH_RAYTRACE
         return stp_tool_raytrace(scene, opt, port, stats, err, err_size);

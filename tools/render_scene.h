@@ -32,6 +32,13 @@ typedef struct stp_tool_options {
     int diffuse_raster;      /* 1: every row left to right (0: serpentine) */
     int dither_given, levels_given; /* the option parser saw -d / -l */
     int clustered_n, clustered_angle; /* STP_TOOL_DITHER_CLUSTERED: side, 0 or 45 */
+    /* tone (tone.h): */
+    int exposure_auto;       /* 1: BRIGHT scaled so the brightest drawn pixel
+                                reaches the top level (0; 1 for a still PBM) */
+    int exposure_given;      /* the option parser saw --exposure */
+    int grey_contrast;       /* 1: grey keeps the colours' contrast (0) */
+    int background_given;    /* 1: background_rgb replaces the scene's */
+    double background_rgb[3];
     int user_cell_w, user_cell_h;
     unsigned char user_cell[STP_CELL_MAX * STP_CELL_MAX];
     double gamma, gamma_k;   /* (10.44): 1, 1 = linear */

@@ -8,9 +8,10 @@ build=${1:?usage: tools/update_golden.sh BUILD_DIR [SCENES_DIR]}
 here=$(cd "$(dirname "$0")/.." && pwd)
 scenes=${2:-$here/../shared/scenes}
 # The goldens hold the library's defaults (stp_tool_options_default: Bayer
-# 4x4, 16 levels), which the golden tests render; `stipple render` to a PBM
-# file defaults to Floyd-Steinberg at 256 levels (stp_tool_still_defaults).
-lib_defaults="-d bayer4 -l 16"
+# 4x4, 16 levels, no automatic exposure), which the golden tests render;
+# `stipple render` to a PBM file defaults to Floyd-Steinberg at 256 levels
+# with automatic exposure (stp_tool_still_defaults).
+lib_defaults="-d bayer4 -l 16 --exposure off"
 for nff in "$scenes"/*.nff; do
     name=$(basename "$nff" .nff)
     "$build/tools/stipple" render $lib_defaults "$nff" -o "$here/tests/golden/$name-128x64.pbm"

@@ -12,10 +12,11 @@
  * The flicker: the share of pixels that differ between the picture of the
  * scene and that of the scene turned by one degree about the view's up axis
  * through its look-at point (lights stay put).
- * The cost: wall time of one render with the method divided by that of the
- * default render, from rounds that interleave all methods (each figure the
- * median ratio over rounds); "applied to the ideal" methods are the ideal's
- * cost plus the dither and have no cost figure.
+ * The cost: counted by tools/bench/quality_cost.sh (callgrind instructions
+ * inside stp_render, one --once render per method, scene and size); with
+ * --time, also wall time of one render with the method over that of the
+ * first, in rounds that interleave them (the median ratio; a busy machine
+ * blurs it).  "Applied to the ideal" methods have no cost figure.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -28,6 +29,7 @@
 #include "quality_methods.h"
 #include "render_scene.h"
 #include "scene.h"
+#include "tone.h"
 #include "stipple/stipple.h"
 
 #ifndef STP_BENCH_SCENES_DIR
@@ -78,13 +80,31 @@ static int frame_init(frame *f, int w, int h, stp_pixel_format format)
 /* ---- the ideal ---- */
 
 /* 256-level grey render at 4x, box-filtered: ideal[w*h] in [0, 1]. */
-static int render_ideal(const stp_scene *scene, int w, int h, double *ideal)
+static int render_ideal(const stp_scene *scene, const qm_method *m, int w, int h, double *ideal)
 {
     stp_tool_options opt;
     frame f;
     char err[256];
     int x, y, i, j;
     stp_tool_options_default(&opt);
+    /* the method's tone (exposure, grey from colour, background) is part
+     * of what its picture stands for */
+    if (m && m->setup)
+        m->setup(&opt);
+    opt.dither = STP_TOOL_DITHER_BAYER4;
+    opt.band_rows = 0;
+    if (opt.exposure_auto) {
+        /* the picture's exposure, found at the picture's size */
+        double gain;
+        opt.width = w;
+        opt.height = h;
+        if (stp_tool_exposure_gain(scene, &opt, &gain, err, sizeof err) != 0) {
+            fprintf(stderr, "bench_quality: exposure %dx%d: %s\n", w, h, err);
+            return -1;
+        }
+        opt.brightness *= gain;
+        opt.exposure_auto = 0;
+    }
     opt.width = 4 * w;
     opt.height = 4 * h;
     opt.levels = 256;
@@ -252,6 +272,34 @@ static void turn_scene(stp_scene *scene, double degrees)
     }
 }
 
+/* One render of a method (for an instruction count under callgrind). */
+static int render_once(const char *dir, const char *method, const char *scene_name, int w, int h)
+{
+    size_t i, nm = qm_method_count();
+    stp_scene scene;
+    stp_scene_options sopt;
+    char path[1024], err[256];
+    unsigned char *bits = malloc((size_t)w * (size_t)h);
+    int rc = 1;
+    if (!scene_name || !bits)
+        return 2;
+    snprintf(path, sizeof path, "%s/%s.nff", dir, scene_name);
+    stp_scene_options_default(&sopt);
+    if (stp_scene_load(path, &sopt, &scene, err, sizeof err) != 0) {
+        fprintf(stderr, "bench_quality: %s\n", err);
+        free(bits);
+        return 1;
+    }
+    for (i = 0; i < nm; i++)
+        if (!strcmp(qm_method_at(i)->name, method) && !qm_method_at(i)->on_ideal)
+            rc = render_bits(&scene, qm_method_at(i), w, h, bits) == 0 ? 0 : 1;
+    if (i == nm && rc)
+        fprintf(stderr, "bench_quality: no render method '%s' (--list)\n", method);
+    stp_scene_free(&scene);
+    free(bits);
+    return rc;
+}
+
 /* ---- main ---- */
 
 typedef struct result {
@@ -297,13 +345,28 @@ int main(int argc, char **argv)
 {
     const char *dir = getenv("STP_SCENES_DIR");
     const char *only = 0;
-    int quick = 0, a, s, z, mi, rounds = 5;
+    int quick = 0, timed = 0, a, s, z, mi, rounds = 5;
     static const int sizes[2][2] = {{128, 64}, {400, 240}};
     int nsizes = 2;
     size_t nm = qm_method_count();
     result *res;
+    const char *once = 0;
+    int once_w = 128, once_h = 64;
     for (a = 1; a < argc; a++) {
-        if (strcmp(argv[a], "--quick") == 0) {
+        if (strcmp(argv[a], "--list") == 0) {
+            /* the render methods, for quality_cost.sh */
+            for (mi = 0; mi < (int)nm; mi++)
+                if (!qm_method_at((size_t)mi)->on_ideal)
+                    printf("%s\n", qm_method_at((size_t)mi)->name);
+            return 0;
+        } else if (strcmp(argv[a], "--once") == 0 && a + 1 < argc) {
+            once = argv[++a];
+        } else if (strcmp(argv[a], "--size") == 0 && a + 1 < argc) {
+            if (sscanf(argv[++a], "%dx%d", &once_w, &once_h) != 2 || once_w < 1 || once_h < 1)
+                return 2;
+        } else if (strcmp(argv[a], "--time") == 0) {
+            timed = 1;
+        } else if (strcmp(argv[a], "--quick") == 0) {
             quick = 1;
         } else if (strcmp(argv[a], "--small") == 0) {
             nsizes = 1;
@@ -313,20 +376,27 @@ int main(int argc, char **argv)
             only = argv[++a];
         } else {
             fprintf(stderr,
-                    "usage: bench_quality [--scenes DIR] [--scene NAME] [--small] [--quick]\n"
-                    "  --small  128x64 only; --quick  no cost figures (one round)\n");
+                    "usage: bench_quality [--scenes DIR] [--scene NAME] [--small] [--time [--quick]]\n"
+                    "       bench_quality --list | --once METHOD --scene NAME [--size WxH]\n"
+                    "  --small  128x64 only; --time  wall-time ratios (interleaved rounds;\n"
+                    "  --quick: one round); --list  the render methods; --once  one render\n"
+                    "  (for valgrind --tool=callgrind --toggle-collect=stp_render:\n"
+                    "  tools/bench/quality_cost.sh)\n");
             return 2;
         }
     }
     if (!dir)
         dir = STP_BENCH_SCENES_DIR;
+    if (once)
+        return render_once(dir, once, only, once_w, once_h);
     if (quick)
         rounds = 1;
     res = calloc(nm * SCENE_COUNT, sizeof *res);
     if (!res)
         return 2;
     printf("quality: mean |blur(1-bit) - blur(ideal)|, Gaussian sigma 1.5 px; flicker: share of\n"
-           "pixels flipping when the model turns 1 degree; cost: render time / default's\n\n");
+           "pixels flipping when the model turns 1 degree%s\n\n",
+           timed ? "; cost: render time / the first method's" : "");
     for (s = 0; s < (int)SCENE_COUNT; s++) {
         stp_scene scene, turned;
         stp_scene_options sopt;
@@ -349,27 +419,48 @@ int main(int argc, char **argv)
             unsigned char *bits = malloc(n), *bits2 = malloc(n);
             if (!ideal || !ideal2 || !blurred || !bits || !bits2)
                 return 2;
-            if (render_ideal(&scene, w, h, ideal) != 0 || render_ideal(&turned, w, h, ideal2) != 0)
+            double *toned = malloc(sizeof *toned * n), *toned2 = malloc(sizeof *toned2 * n),
+                   *toned_blurred = malloc(sizeof *toned_blurred * n);
+            if (!toned || !toned2 || !toned_blurred)
+                return 2;
+            if (render_ideal(&scene, 0, w, h, ideal) != 0 || render_ideal(&turned, 0, w, h, ideal2) != 0)
                 return 1;
             gauss_blur(ideal, blurred, w, h);
             for (mi = 0; mi < (int)nm; mi++) {
                 const qm_method *m = qm_method_at((size_t)mi);
                 result *rr = &res[(size_t)mi * SCENE_COUNT + (size_t)s];
                 long flips = 0;
-                if (method_bits(&turned, m, w, h, ideal2, bits2) != 0 ||
-                    method_bits(&scene, m, w, h, ideal, bits) != 0)
+                const double *mi_ideal = ideal, *mi_ideal2 = ideal2, *mi_blurred = blurred;
+                stp_tool_options probe;
+                stp_tool_options_default(&probe);
+                if (m->setup)
+                    m->setup(&probe);
+                if (stp_tool_tone_wanted(&probe)) {
+                    if (render_ideal(&scene, m, w, h, toned) != 0 ||
+                        render_ideal(&turned, m, w, h, toned2) != 0)
+                        return 1;
+                    gauss_blur(toned, toned_blurred, w, h);
+                    mi_ideal = toned;
+                    mi_ideal2 = toned2;
+                    mi_blurred = toned_blurred;
+                }
+                if (method_bits(&turned, m, w, h, mi_ideal2, bits2) != 0 ||
+                    method_bits(&scene, m, w, h, mi_ideal, bits) != 0)
                     return 1;
-                rr->error[z] = picture_error(bits, blurred, w, h);
+                rr->error[z] = picture_error(bits, mi_blurred, w, h);
                 for (i = 0; i < n; i++)
                     flips += bits[i] != bits2[i];
                 rr->flicker[z] = (double)flips / (double)n;
-                rr->cost[z] = (m->on_ideal || quick) ? -1
+                rr->cost[z] = (m->on_ideal || !timed) ? -1
                               : cost_ratio(&scene, m, qm_method_at(0), w, h, rounds, bits);
                 rr->ok = 1;
             }
             free(ideal);
             free(ideal2);
             free(blurred);
+            free(toned);
+            free(toned2);
+            free(toned_blurred);
             free(bits);
             free(bits2);
         }
@@ -380,7 +471,7 @@ int main(int argc, char **argv)
         printf("%dx%d\n%-22s", sizes[z][0], sizes[z][1], "error");
         for (s = 0; s < (int)SCENE_COUNT; s++)
             printf(" %9s", scene_names[s]);
-        printf("   %7s %7s %6s\n", "min", "max", "cost");
+        printf("   %7s %7s %6s\n", "min", "max", timed ? "cost" : "");
         for (mi = 0; mi < (int)nm; mi++) {
             const qm_method *m = qm_method_at((size_t)mi);
             double lo = 1e9, hi = -1, cost = -1;
@@ -403,6 +494,33 @@ int main(int argc, char **argv)
             if (cost > 0)
                 printf(" %5.2fx", cost);
             printf("\n");
+        }
+        {
+            /* the issue's target: the still default within 1.2x of
+             * Floyd-Steinberg applied to the ideal, scene by scene */
+            int still = -1, ideal_fs = -1;
+            double worst = 0;
+            for (mi = 0; mi < (int)nm; mi++) {
+                if (!strcmp(qm_method_at((size_t)mi)->name, QM_STILL_DEFAULT))
+                    still = mi;
+                if (!strcmp(qm_method_at((size_t)mi)->name, QM_IDEAL_FS))
+                    ideal_fs = mi;
+            }
+            if (still >= 0 && ideal_fs >= 0) {
+                printf("%-22s", "still / ideal+fs");
+                for (s = 0; s < (int)SCENE_COUNT; s++) {
+                    const result *rs = &res[(size_t)still * SCENE_COUNT + (size_t)s],
+                                 *rf = &res[(size_t)ideal_fs * SCENE_COUNT + (size_t)s];
+                    if (!rs->ok || !rf->ok || rf->error[z] <= 0) {
+                        printf(" %9s", "-");
+                        continue;
+                    }
+                    printf(" %8.3fx", rs->error[z] / rf->error[z]);
+                    if (rs->error[z] / rf->error[z] > worst)
+                        worst = rs->error[z] / rf->error[z];
+                }
+                printf("   worst %.3fx\n", worst);
+            }
         }
         printf("%-22s", "flicker (1 degree)");
         for (s = 0; s < (int)SCENE_COUNT; s++)

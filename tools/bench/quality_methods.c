@@ -41,6 +41,22 @@ static void fs_raster(stp_tool_options *opt)
 {
     diffuse(opt, STP_DIFFUSE_FLOYD_STEINBERG, 1, 256);
 }
+/* stipple render's defaults for a PBM (stp_tool_still_defaults) */
+static void still(stp_tool_options *opt)
+{
+    stp_tool_still_defaults(opt);
+}
+static void still_contrast(stp_tool_options *opt)
+{
+    stp_tool_still_defaults(opt);
+    opt->grey_contrast = 1;
+}
+static void blue_noise_exposed(stp_tool_options *opt)
+{
+    opt->dither = STP_TOOL_DITHER_BLUE_NOISE;
+    opt->levels = 256;
+    opt->exposure_auto = 1;
+}
 static void atkinson(stp_tool_options *opt)
 {
     diffuse(opt, STP_DIFFUSE_ATKINSON, 0, 256);
@@ -88,7 +104,10 @@ static const qm_method methods[] = {
     {"clustered45:6", clustered45, 0},
     {"fs, 16 levels", fs16, 0},
     {"fs", fs, 0},
-    {"fs:raster (still)", fs_raster, 0}, /* stipple render's default for a PBM */
+    {"fs:raster", fs_raster, 0},
+    {QM_STILL_DEFAULT, still, 0},
+    {"still, --grey contrast", still_contrast, 0},
+    {"blue-noise, exposure", blue_noise_exposed, 0},
     {"atkinson", atkinson, 0},
     {"sierra-lite", sierra_lite, 0},
     {"jjn", jjn, 0},
@@ -96,6 +115,7 @@ static const qm_method methods[] = {
     {"burkes", burkes, 0},
     {"ideal + bayer4", 0, bayer4_on_ideal},
     {"ideal + floyd-steinberg", 0, fs_on_ideal},
+    {QM_IDEAL_FS, still, fs_on_ideal},
 };
 
 size_t qm_method_count(void)

@@ -9,10 +9,17 @@
 
 typedef struct qm_method {
     const char *name;
-    void (*setup)(stp_tool_options *opt); /* NULL: the defaults */
+    void (*setup)(stp_tool_options *opt); /* NULL: the defaults; its tone
+                                             (tone.h) shapes the ideal too */
     /* ideal[w*h] in [0, 1] -> bits[w*h] 0/1; NULL for a render */
     void (*on_ideal)(const double *ideal, int w, int h, unsigned char *bits);
 } qm_method;
+
+/* Names of the still default (stipple render to PBM: Floyd-Steinberg at
+ * 256 levels with automatic exposure) and of Floyd-Steinberg applied to
+ * the ideal of the same tone, which the bench compares. */
+#define QM_STILL_DEFAULT "still default"
+#define QM_IDEAL_FS "still ideal + fs"
 
 /* Method 0 is the default render (the cost ratios' base). */
 size_t qm_method_count(void);
