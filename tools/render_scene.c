@@ -9,6 +9,7 @@
 
 #include "scene_util.h"
 #include "shadows_setup.h"
+#include "subdivide.h"
 #include "tone.h"
 
 void stp_tool_options_default(stp_tool_options *opt)
@@ -358,6 +359,21 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
     memset(&diffusion, 0, sizeof diffusion);
     if (stp_tool_tone_wanted(opt))
         return stp_tool_render_toned(scene, opt, port, stats, err, err_size);
+    if (opt->smooth && !opt->raytrace && !opt->subdivided) {
+        /* large smooth polygons in pieces, so a floor under a light keeps
+         * its light (subdivide.h) */
+        stp_scene split;
+        stp_tool_options whole = *opt;
+        int rc = stp_tool_subdivide(scene, opt, &split, err, err_size);
+        if (rc < 0)
+            return -1;
+        whole.subdivided = 1;
+        if (rc == 0)
+            return stp_tool_render(scene, &whole, port, stats, err, err_size);
+        rc = stp_tool_render(&split, &whole, port, stats, err, err_size);
+        stp_tool_subdivided_free(&split);
+        return rc;
+    }
     if (opt->raytrace) {
 #if STP_WITH_RAYTRACE
         return stp_tool_raytrace(scene, opt, port, stats, err, err_size);

@@ -51,7 +51,9 @@ typedef struct stp_tool_options {
     unsigned shadow_resolution; /* >0: a shadow map of this many texels square
                                    per light (0: no shadows) */
     int smooth;              /* 1: Gouraud from vertex normals: the file's
-                                (NFF pp, OBJ vn), else averaged face normals (0) */
+                                (NFF pp, OBJ vn), else averaged face normals (0);
+                                large polygons are split first (subdivide.h) */
+    int subdivided;          /* 1: smooth polygons already split (internal) */
     int band_rows;           /* 0: whole frame */
     double background;       /* BKGRND, the indirect share (0.2) */
     double brightness;       /* BRIGHT (1) */

@@ -96,6 +96,16 @@ static void clustered45(stp_tool_options *opt)
     opt->levels = 256;
 }
 
+static void smooth16(stp_tool_options *opt)
+{
+    opt->smooth = 1;
+}
+static void smooth_fs(stp_tool_options *opt)
+{
+    diffuse(opt, STP_DIFFUSE_FLOYD_STEINBERG, 1, 256);
+    opt->smooth = 1;
+}
+
 static const qm_method methods[] = {
     {"bayer4, 16 levels", 0, 0}, /* the library's default (and moving pictures') */
     {"bayer4, 256 levels", levels256, 0},
@@ -108,6 +118,8 @@ static const qm_method methods[] = {
     {QM_STILL_DEFAULT, still, 0},
     {"still, --grey contrast", still_contrast, 0},
     {"blue-noise, exposure", blue_noise_exposed, 0},
+    {"bayer4, 16, --smooth", smooth16, 0},
+    {"fs:raster, --smooth", smooth_fs, 0},
     {"atkinson", atkinson, 0},
     {"sierra-lite", sierra_lite, 0},
     {"jjn", jjn, 0},
