@@ -13,6 +13,7 @@ static void cell_clear(stp_cell *cell)
         cell->thresholds[i] = 0;
     for (i = 0; i < 5; i++)
         cell->patterns[i] = 0;
+    cell->mask = 0;
 }
 
 /* Rank (0..n*n-1) of entry (x, y) in the Bayer matrix of side n, in the
@@ -68,7 +69,7 @@ static uint8_t spaced_threshold(uint32_t r, uint32_t m, stp_spacing spacing)
 int stp_cell_bayer_spaced(stp_cell *cell, int n, stp_spacing spacing)
 {
     uint32_t x, y, m;
-    if (cell == 0 || (n != 2 && n != 4 && n != 8))
+    if (cell == 0 || (n != 2 && n != 4 && n != 8 && n != 16))
         return -1;
     cell_clear(cell);
     cell->width = cell->height = (uint8_t)n;
@@ -109,6 +110,97 @@ int stp_cell_user(stp_cell *cell, int width, int height, const uint8_t *threshol
     return 0;
 }
 
+void stp_cell_blue_noise(stp_cell *cell)
+{
+    (void)stp_cell_mask(cell, 64, 64, stp_cell_blue_noise_64);
+}
+
+int stp_cell_mask(stp_cell *cell, int width, int height, const uint8_t *thresholds)
+{
+    if (cell == 0 || thresholds == 0 || width < 1 || height < 1 || width > 255 || height > 255)
+        return -1;
+    cell_clear(cell);
+    cell->width = (uint8_t)width;
+    cell->height = (uint8_t)height;
+    cell->mask = thresholds;
+    return 0;
+}
+
+/* Squared distance, in half pixels, from pixel (x, y)'s centre to the
+ * nearest of the points (cx + i n/2... ) given as centres in half pixels of
+ * a lattice repeating every n pixels: the smallest over the wrapped
+ * offsets.  centres: count (x, y) pairs in half pixels. */
+static int32_t nearest_squared(int x, int y, int n, const int *centres, int count)
+{
+    int32_t best = -1;
+    int i;
+    for (i = 0; i < count; i++) {
+        int32_t dx = (int32_t)(2 * x + 1 - centres[2 * i]), dy = (int32_t)(2 * y + 1 - centres[2 * i + 1]);
+        int32_t d;
+        /* wrap into [-n, n] half pixels */
+        dx = (dx % (2 * n) + 2 * n) % (2 * n);
+        dy = (dy % (2 * n) + 2 * n) % (2 * n);
+        if (dx > n)
+            dx = 2 * n - dx;
+        if (dy > n)
+            dy = 2 * n - dy;
+        d = dx * dx + dy * dy;
+        if (best < 0 || d < best)
+            best = d;
+    }
+    return best;
+}
+
+/* Growth key of a pixel: dot side (nearer a dot centre than a hole centre)
+ * by distance from the dot, then the hole side by distance from the hole
+ * downwards.  Distances are below 4 n^2 <= 1024 half pixels squared. */
+static int32_t clustered_key(int x, int y, int n, const int *dots, const int *holes, int count)
+{
+    int32_t d = nearest_squared(x, y, n, dots, count), h = nearest_squared(x, y, n, holes, count);
+    return d <= h ? d : 4096 - h;
+}
+
+int stp_cell_clustered(stp_cell *cell, int n, int angle)
+{
+    /* centres in half pixels: 0 degrees, the dot in the middle of the cell
+     * and the hole at its corner; 45 degrees, dots at the corner and the
+     * middle, holes at the middles of the edges */
+    int dots[4], holes[4], count, x, y, qx, qy;
+    if (cell == 0 || n < 2 || n > STP_CELL_MAX || (angle != 0 && angle != 45) ||
+        (angle == 45 && (n < 4 || n % 2 != 0)))
+        return -1;
+    if (angle == 0) {
+        count = 1;
+        dots[0] = dots[1] = n;
+        holes[0] = holes[1] = 0;
+    } else {
+        count = 2;
+        dots[0] = dots[1] = 0;
+        dots[2] = dots[3] = n;
+        holes[0] = n;
+        holes[1] = 0;
+        holes[2] = 0;
+        holes[3] = n;
+    }
+    cell_clear(cell);
+    cell->width = cell->height = (uint8_t)n;
+    /* rank = the number of pixels that grow before this one */
+    for (y = 0; y < n; y++)
+        for (x = 0; x < n; x++) {
+            int32_t key = clustered_key(x, y, n, dots, holes, count);
+            uint32_t rank = 0;
+            for (qy = 0; qy < n; qy++)
+                for (qx = 0; qx < n; qx++) {
+                    int32_t k = clustered_key(qx, qy, n, dots, holes, count);
+                    if (k < key || (k == key && qy * n + qx < y * n + x))
+                        rank++;
+                }
+            cell->thresholds[y * n + x] =
+                spaced_threshold(rank, (uint32_t)(n * n), STP_SPACING_LINEAR);
+        }
+    return 0;
+}
+
 void stp_cell_pattern2x2(stp_cell *cell)
 {
     /* bits: (y*2 + x); order lower-right (3), upper-left (0), upper-right (1),
@@ -143,7 +235,7 @@ void stp_halftone_fillin(uint8_t *row, uint32_t x1, uint32_t x2, uint32_t y,
         /* The cell's width divides 8, so every byte of the row sees the same
          * cell columns at the same bits: build that byte once and fill whole
          * bytes, masking the span's partial first and last bytes. */
-        const uint8_t *cell_row = &cell->thresholds[(y % cell->height) * w];
+        const uint8_t *cell_row = &stp_cell_table(cell)[(y % cell->height) * w];
         uint32_t b, first = x1 >> 3, last = x2 >> 3;
         uint8_t pattern = 0, head = (uint8_t)(0xFFu >> (x1 & 7u)),
                 tail = (uint8_t)(0xFFu << (7u - (x2 & 7u)));
@@ -162,7 +254,7 @@ void stp_halftone_fillin(uint8_t *row, uint32_t x1, uint32_t x2, uint32_t y,
         return;
     }
     {
-        const uint8_t *cell_row = &cell->thresholds[(y % cell->height) * w];
+        const uint8_t *cell_row = &stp_cell_table(cell)[(y % cell->height) * w];
         for (x = x1; x <= x2; x++) {
             uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
             if (intensity > cell_row[hx])

@@ -635,6 +635,8 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
 #if STP_WITH_SHADOWS
     stp_shadow_poly shadow_poly;
 #endif
+    stp_port grey_port; /* error diffusion: the band is drawn as GREY8 */
+    const stp_port *drawn = port;
     uint32_t y0, polygons = 0;
     int background_style;
     stp_hidden hidden;
@@ -647,7 +649,15 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
         return STP_ERR_ARG;
     if (port->width != r->width || port->height != r->height)
         return STP_ERR_ARG;
-    fr.stride = stp_row_bytes(port->format, port->width);
+    if (output->diffusion && port->format == STP_PIXEL_MONO1) {
+        int status = stp_diffusion_check(output->diffusion, port->width);
+        if (status != STP_OK)
+            return status;
+        grey_port = *port;
+        grey_port.format = STP_PIXEL_GREY8;
+        drawn = &grey_port;
+    }
+    fr.stride = stp_row_bytes(drawn->format, port->width);
     if (fr.stride == 0 || mem->band_rows < 1 || mem->band_rows > r->height)
         return STP_ERR_ARG;
     if (mem->band_size < fr.stride * mem->band_rows)
@@ -674,7 +684,7 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
         return STP_ERR_ARG;
     }
     fr.r = r;
-    fr.port = port;
+    fr.port = drawn;
     fr.out = output;
     fr.band = mem->band;
     fr.zbuf = mem->zbuf;
@@ -715,7 +725,7 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
         for (y = y0; y < y0 + fr.rows; y++) {
             /* MONO1 padding bits past the width reach the port too: make
              * them 0 rather than whatever the caller's buffer held */
-            if (port->format == STP_PIXEL_MONO1)
+            if (drawn->format == STP_PIXEL_MONO1)
                 fr.band[(size_t)(y - y0) * fr.stride + fr.stride - 1] = 0;
             put_span(&fr, y, 0, r->width - 1, background_style);
         }
@@ -742,6 +752,11 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
             } else {
                 replay(&fr, 0, 0, 0);
             }
+        }
+        if (drawn == &grey_port) {
+            /* error diffusion: each grey row becomes a MONO1 row in place */
+            for (y = y0; y < y0 + fr.rows; y++)
+                stp_diffuse_row(output->diffusion, fr.band + (size_t)(y - y0) * fr.stride, r->width, y);
         }
         if (port->flush(port, y0, fr.rows, fr.band, fr.stride) < 0)
             return STP_ERR_PORT;

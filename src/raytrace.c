@@ -1472,11 +1472,19 @@ int stp_rt_render(stp_raytracer *rt, stp_port *port, const stp_output *output, u
     size_t stride;
     uint32_t y0;
     int c;
+    stp_pixel_format drawn; /* error diffusion: rows are traced as GREY8 */
     if (rt == 0 || port == 0 || output == 0 || band == 0 || port->flush == 0)
         return STP_ERR_ARG;
     if (port->width != rt->width || port->height != rt->height)
         return STP_ERR_ARG;
-    stride = stp_row_bytes(port->format, port->width);
+    drawn = port->format;
+    if (output->diffusion && port->format == STP_PIXEL_MONO1) {
+        int status = stp_diffusion_check(output->diffusion, port->width);
+        if (status != STP_OK)
+            return status;
+        drawn = STP_PIXEL_GREY8;
+    }
+    stride = stp_row_bytes(drawn, port->width);
     if (stride == 0 || band_rows < 1 || band_rows > rt->height)
         return STP_ERR_ARG;
     if (band_size < stride * band_rows)
@@ -1500,7 +1508,7 @@ int stp_rt_render(stp_raytracer *rt, stp_port *port, const stp_output *output, u
         uint32_t rows = rt->height - y0 < band_rows ? rt->height - y0 : band_rows, y, x;
         for (y = y0; y < y0 + rows; y++) {
             uint8_t *row = band + (size_t)(y - y0) * stride;
-            if (port->format == STP_PIXEL_MONO1)
+            if (drawn == STP_PIXEL_MONO1)
                 row[stride - 1] = 0; /* padding bits past the width */
             for (x = 0; x < rt->width; x++) {
                 rt_colour v;
@@ -1512,9 +1520,11 @@ int stp_rt_render(stp_raytracer *rt, stp_port *port, const stp_output *output, u
                         row[3 * x + (uint32_t)c] = stp_output_level(
                             output, rt->levels, stp_intensity_index(v.c[c], rt->levels));
                 } else {
-                    stp_output_put_shade(row, port->format, x, y, output, cell, rt->levels, grey);
+                    stp_output_put_shade(row, drawn, x, y, output, cell, rt->levels, grey);
                 }
             }
+            if (drawn != port->format)
+                stp_diffuse_row(output->diffusion, row, rt->width, y);
         }
         if (port->flush(port, y0, rows, band, stride) < 0)
             return STP_ERR_PORT;

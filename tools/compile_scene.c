@@ -164,6 +164,10 @@ static int make_plan(const stp_tool_prepared *prep, plan *p, char *err, size_t e
     }
     if (!opt->shading)
         p->specular = 0; /* no MAKE-SHADE at all */
+    if (opt->dither == STP_TOOL_DITHER_DIFFUSE) {
+        snprintf(err, errlen, "error diffusion is not available in compiled scenes; use a cell");
+        return -1;
+    }
     if (stp_tool_cell(opt, &p->cell) != 0) {
         snprintf(err, errlen, "bad halftone cell");
         return -1;
@@ -275,12 +279,14 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
 
     out(w, "static const stp_cell cell = {%d, %d, %d, {", p->cell.kind, p->cell.width,
         p->cell.height);
-    for (k = 0; k < p->cell.width * p->cell.height; k++)
-        out(w, "%s%d", k ? ", " : "", p->cell.thresholds[k]);
+    for (k = 0; k < (p->cell.mask ? 1 : p->cell.width * p->cell.height); k++)
+        out(w, "%s%d", k ? ", " : "", p->cell.mask ? 0 : p->cell.thresholds[k]);
     out(w, "}, {");
     for (k = 0; k < 5; k++)
         out(w, "%s%d", k ? ", " : "", p->cell.patterns[k]);
-    out(w, "}};\n\n");
+    /* a mask cell names its const data: the core's blue noise is the one
+     * the options can ask for */
+    out(w, "}, %s};\n\n", p->cell.mask == stp_cell_blue_noise_64 ? "stp_cell_blue_noise_64" : "0");
 
     if (p->has_gamma) {
         out(w, "static const uint8_t gamma[%d] = {", opt->levels);

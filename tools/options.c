@@ -37,6 +37,10 @@ static const struct option shared[] = {
     {"depth", required_argument, 0, STP_TOOL_OPT_DEPTH},
     {"min-weight", required_argument, 0, STP_TOOL_OPT_MIN_WEIGHT},
     {"no-hierarchy", no_argument, 0, STP_TOOL_OPT_NO_HIERARCHY},
+    {"exposure", required_argument, 0, STP_TOOL_OPT_EXPOSURE},
+    {"grey", required_argument, 0, STP_TOOL_OPT_GREY},
+    {"gray", required_argument, 0, STP_TOOL_OPT_GREY},
+    {"background", required_argument, 0, STP_TOOL_OPT_BACKGROUND},
 };
 
 int stp_tool_long_options(struct option *out, size_t cap, const struct option *extra)
@@ -82,7 +86,16 @@ int stp_tool_parse_dither(const char *s, stp_tool_options *opt)
         stp_tool_dither dither;
     } names[] = {{"bayer2", STP_TOOL_DITHER_BAYER2},   {"bayer4", STP_TOOL_DITHER_BAYER4},
                  {"bayer8", STP_TOOL_DITHER_BAYER8},   {"seed2x2", STP_TOOL_DITHER_SEED2X2},
-                 {"pattern2x2", STP_TOOL_DITHER_PATTERN2X2}};
+                 {"pattern2x2", STP_TOOL_DITHER_PATTERN2X2}, {"bayer16", STP_TOOL_DITHER_BAYER16},
+                 {"blue-noise", STP_TOOL_DITHER_BLUE_NOISE}};
+    /* error diffusion: NAME, or NAME:raster for rows all left to right */
+    static const struct {
+        const char *name;
+        stp_diffusion_kernel kernel;
+    } kernels[] = {{"fs", STP_DIFFUSE_FLOYD_STEINBERG},  {"floyd-steinberg", STP_DIFFUSE_FLOYD_STEINBERG},
+                   {"atkinson", STP_DIFFUSE_ATKINSON},   {"sierra-lite", STP_DIFFUSE_SIERRA_LITE},
+                   {"jjn", STP_DIFFUSE_JARVIS_JUDICE_NINKE}, {"stucki", STP_DIFFUSE_STUCKI},
+                   {"burkes", STP_DIFFUSE_BURKES}};
     size_t i;
     int w, h, n = 0, t;
     char *copy, *tok, *save = 0;
@@ -91,6 +104,27 @@ int stp_tool_parse_dither(const char *s, stp_tool_options *opt)
             opt->dither = names[i].dither;
             return 0;
         }
+    for (i = 0; i < sizeof kernels / sizeof kernels[0]; i++) {
+        size_t len = strlen(kernels[i].name);
+        if (!strncmp(s, kernels[i].name, len) && (!s[len] || !strcmp(s + len, ":raster"))) {
+            opt->dither = STP_TOOL_DITHER_DIFFUSE;
+            opt->diffuse_kernel = kernels[i].kernel;
+            opt->diffuse_raster = s[len] != 0;
+            return 0;
+        }
+    }
+    /* clustered:N (0 degrees) or clustered45:N */
+    if (!strncmp(s, "clustered:", 10) || !strncmp(s, "clustered45:", 12)) {
+        int angle = s[9] == ':' ? 0 : 45, side;
+        stp_cell probe;
+        if (stp_tool_parse_int(s + (angle ? 12 : 10), 2, STP_CELL_MAX, &side) ||
+            stp_cell_clustered(&probe, side, angle) != 0)
+            return -1;
+        opt->dither = STP_TOOL_DITHER_CLUSTERED;
+        opt->clustered_n = side;
+        opt->clustered_angle = angle;
+        return 0;
+    }
     /* user:W:H:t,t,... (row-major thresholds) */
     if (strncmp(s, "user:", 5) != 0 || !(copy = strdup(s + 5)))
         return -1;
@@ -163,10 +197,12 @@ int stp_tool_apply_option(int code, const char *arg, stp_tool_options *opt,
     case 'l':
         if (stp_tool_parse_int(arg, 2, 256, &opt->levels))
             what = "--levels (2..256)";
+        opt->levels_given = 1;
         break;
     case 'd':
         if (stp_tool_parse_dither(arg, opt))
             what = "--dither";
+        opt->dither_given = 1;
         break;
     case STP_TOOL_OPT_SPACING:
         if (stp_tool_parse_spacing(arg, &opt->spacing))
@@ -262,6 +298,38 @@ int stp_tool_apply_option(int code, const char *arg, stp_tool_options *opt,
             what = "--min-weight (0..1)";
         break;
     case STP_TOOL_OPT_NO_HIERARCHY: opt->rt_hierarchy = 0; break;
+    case STP_TOOL_OPT_EXPOSURE:
+        opt->exposure_given = 1;
+        if (!strcmp(arg, "auto"))
+            opt->exposure_auto = 1;
+        else if (!strcmp(arg, "off"))
+            opt->exposure_auto = 0;
+        else
+            what = "--exposure (auto, off)";
+        break;
+    case STP_TOOL_OPT_GREY:
+        if (!strcmp(arg, "contrast"))
+            opt->grey_contrast = 1;
+        else if (!strcmp(arg, "luminance"))
+            opt->grey_contrast = 0;
+        else
+            what = "--grey (luminance, contrast)";
+        break;
+    case STP_TOOL_OPT_BACKGROUND: {
+        double v[3];
+        char extra;
+        int k = sscanf(arg, "%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &extra);
+        if (k == 1)
+            v[1] = v[2] = v[0];
+        if ((k != 1 && k != 3) || (k == 1 && strchr(arg, ',')) || v[0] < 0 || v[0] > 1 ||
+            v[1] < 0 || v[1] > 1 || v[2] < 0 || v[2] > 1) {
+            what = "--background (V or R,G,B, each 0..1)";
+            break;
+        }
+        opt->background_given = 1;
+        memcpy(opt->background_rgb, v, sizeof v);
+        break;
+    }
     default: return 0;
     }
     if (what) {
@@ -276,9 +344,15 @@ void stp_tool_options_help(FILE *to)
     fprintf(to,
             "  -s, --size WxH           device size in pixels (default 128x64)\n"
             "  -l, --levels N           INTENSITY levels, 2..256 (default 16; render: 256\n"
-            "                           for grey and colour pictures)\n"
-            "  -d, --dither CELL        bayer2, bayer4 (default), bayer8, seed2x2, pattern2x2,\n"
-            "                           or user:W:H:t,t,... (thresholds 0..255, row-major)\n"
+            "                           for grey and colour pictures and 1-bit picture files)\n"
+            "  -d, --dither CELL        bayer2, bayer4 (default; fs:raster for a 1-bit\n"
+            "                           picture file), bayer8, bayer16, blue-noise (64x64),\n"
+            "                           clustered:N (dots, N 2..16), clustered45:N (45\n"
+            "                           degrees, N even 4..16), seed2x2, pattern2x2,\n"
+            "                           or user:W:H:t,t,... (thresholds 0..255, row-major);\n"
+            "                           or error diffusion of 1-bit output: fs, atkinson,\n"
+            "                           sierra-lite, jjn, stucki, burkes (serpentine; NAME:raster\n"
+            "                           for every row left to right)\n"
             "      --spacing KIND       threshold spacing of Bayer cells: linear (default),\n"
             "                           exponential, cubic\n"
             "  -g, --gamma G            gamma of the device table V = (I/k)^(1/G) (default 1)\n"
@@ -313,7 +387,14 @@ void stp_tool_options_help(FILE *to)
             "                           (default 4)\n"
             "      --min-weight W       ray tracer: rays weighing less are not cast, 0..1\n"
             "                           (default 0.015625)\n"
-            "      --no-hierarchy       ray tracer: test every object (no bounding volumes)\n",
+            "      --no-hierarchy       ray tracer: test every object (no bounding volumes)\n"
+            "      --exposure auto|off  auto: brightness scaled so the brightest drawn pixel\n"
+            "                           reaches the top level (default off; auto for a 1-bit\n"
+            "                           picture file)\n"
+            "      --grey MODE          grey from colour: luminance (default) or contrast (the\n"
+            "                           scene's colours spread along their main axis)\n"
+            "      --background V|R,G,B the empty frame's shade or colour (0..1), instead of\n"
+            "                           the scene's\n",
             STP_MAX_LIGHTS, STP_RT_MAX_DEPTH);
 }
 

@@ -215,7 +215,10 @@ int stp_tool_raytrace(const stp_scene *scene, const stp_tool_options *opt, stp_p
     size_t band_size;
     int status, result = -1, band_rows;
     double t0;
+    stp_diffusion diffusion;
+    int diffusing = 0;
 
+    memset(&diffusion, 0, sizeof diffusion);
     if (!stats)
         stats = &local;
     memset(stats, 0, sizeof *stats);
@@ -224,9 +227,15 @@ int stp_tool_raytrace(const stp_scene *scene, const stp_tool_options *opt, stp_p
     if (stp_tool_output(scene, opt, &out, &cell, &gamma, background_rgb, err, err_size) != 0)
         goto done;
     band_rows = opt->band_rows > 0 && opt->band_rows < opt->height ? opt->band_rows : opt->height;
-    band_size = stp_row_bytes(port->format, (uint32_t)opt->width) * (size_t)band_rows;
+    diffusing = port->format == STP_PIXEL_MONO1 &&
+                stp_tool_diffusion(opt, (uint32_t)opt->width, &diffusion) != 0;
+    if (diffusing)
+        out.diffusion = &diffusion;
+    /* error diffusion traces GREY8 rows (raytrace.h, stp_rt_render) */
+    band_size = stp_row_bytes(diffusing ? STP_PIXEL_GREY8 : port->format, (uint32_t)opt->width) *
+                (size_t)band_rows;
     band = malloc(band_size ? band_size : 1);
-    if (!band) {
+    if (!band || (diffusing && !diffusion.errors)) {
         snprintf(err, err_size, "out of memory");
         goto done;
     }
@@ -235,7 +244,7 @@ int stp_tool_raytrace(const stp_scene *scene, const stp_tool_options *opt, stp_p
                          (opt->rt_hierarchy ? (sizeof *t.mem.nodes * stats->rt_nodes +
                                                sizeof *t.mem.order * stats->rt_objects)
                                             : 0) +
-                         band_size;
+                         band_size + sizeof(int16_t) * diffusion.error_count;
     t0 = seconds_now();
     status = stp_rt_render(t.rt, port, &out, band, band_size, (uint32_t)band_rows);
     stats->rt_trace_seconds = seconds_now() - t0;
@@ -254,6 +263,7 @@ int stp_tool_raytrace(const stp_scene *scene, const stp_tool_options *opt, stp_p
     result = 0;
 done:
     stp_tool_rt_free(&t);
+    free(diffusion.errors);
     free(band);
     free(gamma);
     return result;

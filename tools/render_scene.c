@@ -10,6 +10,8 @@
 #include "scene_prepare.h"
 #include "scene_util.h"
 #include "shadows_setup.h"
+#include "subdivide.h"
+#include "tone.h"
 
 void stp_tool_options_default(stp_tool_options *opt)
 {
@@ -64,8 +66,38 @@ int stp_tool_cell(const stp_tool_options *opt, stp_cell *cell)
     case STP_TOOL_DITHER_PATTERN2X2: stp_cell_pattern2x2(cell); return 0;
     case STP_TOOL_DITHER_USER:
         return stp_cell_user(cell, opt->user_cell_w, opt->user_cell_h, opt->user_cell);
+    case STP_TOOL_DITHER_DIFFUSE: return stp_cell_bayer(cell, 4);
+    case STP_TOOL_DITHER_BAYER16: return stp_cell_bayer_spaced(cell, 16, opt->spacing);
+    case STP_TOOL_DITHER_BLUE_NOISE: stp_cell_blue_noise(cell); return 0;
+    case STP_TOOL_DITHER_CLUSTERED:
+        return stp_cell_clustered(cell, opt->clustered_n, opt->clustered_angle);
     }
     return -1;
+}
+
+void stp_tool_still_defaults(stp_tool_options *opt)
+{
+    if (!opt->dither_given) {
+        opt->dither = STP_TOOL_DITHER_DIFFUSE;
+        opt->diffuse_kernel = STP_DIFFUSE_FLOYD_STEINBERG;
+        opt->diffuse_raster = 1;
+    }
+    if (!opt->levels_given)
+        opt->levels = 256;
+    if (!opt->exposure_given)
+        opt->exposure_auto = 1;
+}
+
+int stp_tool_diffusion(const stp_tool_options *opt, uint32_t width, stp_diffusion *d)
+{
+    memset(d, 0, sizeof *d);
+    if (opt->dither != STP_TOOL_DITHER_DIFFUSE)
+        return 0;
+    d->kernel = (uint8_t)opt->diffuse_kernel;
+    d->serpentine = (uint8_t)!opt->diffuse_raster;
+    d->error_count = stp_diffusion_error_count(opt->diffuse_kernel, width);
+    d->errors = malloc(sizeof *d->errors * (d->error_count ? d->error_count : 1));
+    return d->errors ? 1 : -1;
 }
 
 /* Seed parameters from NFF's material (documented in README "Scenes"):
@@ -330,6 +362,23 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
 {
     stp_tool_prepared prep;
     int rc;
+    if (stp_tool_tone_wanted(opt))
+        return stp_tool_render_toned(scene, opt, port, stats, err, err_size);
+    if (opt->smooth && !opt->raytrace && !opt->subdivided) {
+        /* large smooth polygons in pieces, so a floor under a light keeps
+         * its light (subdivide.h) */
+        stp_scene split;
+        stp_tool_options whole = *opt;
+        rc = stp_tool_subdivide(scene, opt, &split, err, err_size);
+        if (rc < 0)
+            return -1;
+        whole.subdivided = 1;
+        if (rc == 0)
+            return stp_tool_render(scene, &whole, port, stats, err, err_size);
+        rc = stp_tool_render(&split, &whole, port, stats, err, err_size);
+        stp_tool_subdivided_free(&split);
+        return rc;
+    }
     if (opt->raytrace) {
 #if STP_WITH_RAYTRACE
         return stp_tool_raytrace(scene, opt, port, stats, err, err_size);
@@ -367,7 +416,10 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
     stp_tool_stats local;
     stp_scene_vec3 *normals = 0;
     uint16_t *shadow_maps = 0;
+    stp_diffusion diffusion;
+    int diffusing = 0;
 
+    memset(&diffusion, 0, sizeof diffusion);
     if (!stats)
         stats = &local;
     memset(stats, 0, sizeof *stats);
@@ -503,7 +555,11 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
     band_rows = opt->band_rows > 0 && opt->band_rows < opt->height ? opt->band_rows : opt->height;
     memset(&mem, 0, sizeof mem);
     mem.band_rows = (uint32_t)band_rows;
-    mem.band_size = stp_row_bytes(port->format, (uint32_t)opt->width) * (size_t)band_rows;
+    diffusing = port->format == STP_PIXEL_MONO1 &&
+                stp_tool_diffusion(opt, (uint32_t)opt->width, &diffusion) != 0;
+    /* error diffusion draws the band as GREY8 (render.h, stp_output) */
+    mem.band_size = stp_row_bytes(diffusing ? STP_PIXEL_GREY8 : port->format, (uint32_t)opt->width) *
+                    (size_t)band_rows;
     band = malloc(mem.band_size);
     mem.band = band;
     if (opt->hidden == STP_HIDDEN_ZBUFFER) {
@@ -520,10 +576,17 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
         snprintf(err, err_size, "out of memory");
         goto done;
     }
+    if (diffusing && !diffusion.errors) {
+        snprintf(err, err_size, "out of memory");
+        goto done;
+    }
     if (stp_tool_output(scene, opt, &out, &cell, &gamma, background_rgb, err, err_size) != 0)
         goto done;
+    if (diffusing)
+        out.diffusion = &diffusion;
     stats->frame_bytes = stp_renderer_size() + sizeof *df * stats->display_entries + mem.band_size +
-                         sizeof(uint16_t) * mem.zbuf_count + sizeof(stp_sort_entry) * mem.sort_count;
+                         sizeof(uint16_t) * mem.zbuf_count + sizeof(stp_sort_entry) * mem.sort_count +
+                         sizeof(int16_t) * diffusion.error_count;
     status = stp_render(r, port, &out, &mem);
     if (status != STP_OK) {
         snprintf(err, err_size, "render: %s", stp_status_text(status));
@@ -531,6 +594,7 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
     }
     result = 0;
 done:
+    free(diffusion.errors);
     free(shadow_maps);
     free(normals);
     free(rmem);

@@ -16,7 +16,11 @@ typedef enum stp_tool_dither {
     STP_TOOL_DITHER_BAYER8,
     STP_TOOL_DITHER_SEED2X2,
     STP_TOOL_DITHER_PATTERN2X2,
-    STP_TOOL_DITHER_USER
+    STP_TOOL_DITHER_USER,
+    STP_TOOL_DITHER_DIFFUSE, /* error diffusion (MONO1): diffuse_kernel */
+    STP_TOOL_DITHER_BAYER16,
+    STP_TOOL_DITHER_BLUE_NOISE, /* the core's 64x64 void-and-cluster mask */
+    STP_TOOL_DITHER_CLUSTERED   /* clustered dots: clustered_n, clustered_angle */
 } stp_tool_dither;
 
 typedef struct stp_tool_options {
@@ -24,6 +28,17 @@ typedef struct stp_tool_options {
     int levels;              /* INTENSITY levels (16) */
     stp_tool_dither dither;  /* (Bayer 4x4) */
     stp_spacing spacing;     /* threshold spacing of Bayer cells (linear) */
+    int diffuse_kernel;      /* STP_TOOL_DITHER_DIFFUSE: stp_diffusion_kernel */
+    int diffuse_raster;      /* 1: every row left to right (0: serpentine) */
+    int dither_given, levels_given; /* the option parser saw -d / -l */
+    int clustered_n, clustered_angle; /* STP_TOOL_DITHER_CLUSTERED: side, 0 or 45 */
+    /* tone (tone.h): */
+    int exposure_auto;       /* 1: BRIGHT scaled so the brightest drawn pixel
+                                reaches the top level (0; 1 for a still PBM) */
+    int exposure_given;      /* the option parser saw --exposure */
+    int grey_contrast;       /* 1: grey keeps the colours' contrast (0) */
+    int background_given;    /* 1: background_rgb replaces the scene's */
+    double background_rgb[3];
     int user_cell_w, user_cell_h;
     unsigned char user_cell[STP_CELL_MAX * STP_CELL_MAX];
     double gamma, gamma_k;   /* (10.44): 1, 1 = linear */
@@ -36,7 +51,9 @@ typedef struct stp_tool_options {
     unsigned shadow_resolution; /* >0: a shadow map of this many texels square
                                    per light (0: no shadows) */
     int smooth;              /* 1: Gouraud from vertex normals: the file's
-                                (NFF pp, OBJ vn), else averaged face normals (0) */
+                                (NFF pp, OBJ vn), else averaged face normals (0);
+                                large polygons are split first (subdivide.h) */
+    int subdivided;          /* 1: smooth polygons already split (internal) */
     int band_rows;           /* 0: whole frame */
     double background;       /* BKGRND, the indirect share (0.2) */
     double brightness;       /* BRIGHT (1) */
@@ -138,7 +155,19 @@ void stp_tool_material(const stp_scene_material *m, int colour, stp_material *ou
 /* Double to stp_fix, saturating. */
 stp_fix stp_tool_fix(double v);
 
-/* Build the halftone cell the options name. */
+/* The error diffusion the options ask for, for rows of width pixels:
+ * 1 with d filled and d->errors allocated (the caller frees it), 0 when the
+ * options dither with a cell (d->errors NULL), -1 out of memory. */
+int stp_tool_diffusion(const stp_tool_options *opt, uint32_t width, stp_diffusion *d);
+
+/* The defaults for a still 1-bit picture (stipple render to a PBM file),
+ * where options did not say otherwise: Floyd-Steinberg diffusion, rows
+ * left to right, 256 levels (the best figure of tools/bench/quality.c;
+ * moving pictures keep the ordered cell, which does not flicker). */
+void stp_tool_still_defaults(stp_tool_options *opt);
+
+/* Build the halftone cell the options name (Bayer 4x4 for diffusion, whose
+ * cell only other formats' fallbacks would use). */
 int stp_tool_cell(const stp_tool_options *opt, stp_cell *cell);
 
 #endif

@@ -94,7 +94,8 @@ static void usage_dither(FILE *to)
             "usage: stipple dither IMAGE -o OUT.pbm [options]\n"
             "\n"
             "Halftones a PNG, PGM or PPM image ('-' reads standard input; colour through\n"
-            "luminance, alpha ignored) with an ordered-dither cell.\n"
+            "luminance, alpha ignored) with an ordered-dither cell or error diffusion\n"
+            "(-d fs, atkinson, ...).\n"
             "With bayer2/4/8 the pixels equal ImageMagick's -ordered-dither o2x2/o4x4/o8x8.\n"
             "\n"
             "  -o, --output FILE     where to write (.pbm, or .png for a 1-bit PNG; '-' for\n"
@@ -406,6 +407,8 @@ static int cmd_render(int argc, char **argv)
         stp_posix_lineprinter_table(&lp);
         opt.styles = &lp;
     }
+    if (format_for_kind(kind) == STP_PIXEL_MONO1)
+        stp_tool_still_defaults(&opt); /* a still 1-bit picture: diffusion */
     /* with a palette the frame is an indexed frame buffer: style indices */
     if (stp_posix_frame_init(&frame, (uint32_t)opt.width, (uint32_t)opt.height,
                              palette ? STP_PIXEL_STYLE8 : format_for_kind(kind)) != 0) {
@@ -464,6 +467,7 @@ static int cmd_dither(int argc, char **argv)
     stp_posix_image img;
     stp_posix_frame frame;
     stp_cell cell;
+    stp_diffusion diffusion;
     uint8_t table[256];
     const char *out_path = 0;
     char err[512];
@@ -514,13 +518,24 @@ static int cmd_dither(int argc, char **argv)
         stp_posix_image_free(&img);
         return fail("out of memory");
     }
+    if (stp_tool_diffusion(&opt, img.width, &diffusion) < 0) {
+        stp_posix_image_free(&img);
+        stp_posix_frame_free(&frame);
+        return fail("out of memory");
+    }
     for (y = 0; y < img.height; y++) {
         uint8_t *grey = img.samples + (size_t)y * img.width;
         if (use_gamma)
             for (x = 0; x < img.width; x++)
                 grey[x] = table[grey[x]];
-        stp_halftone_row(frame.pixels + (size_t)y * frame.stride, grey, img.width, y, &cell);
+        if (diffusion.errors) {
+            stp_diffuse_row(&diffusion, grey, img.width, y); /* packs in place */
+            memcpy(frame.pixels + (size_t)y * frame.stride, grey, frame.stride);
+        } else {
+            stp_halftone_row(frame.pixels + (size_t)y * frame.stride, grey, img.width, y, &cell);
+        }
     }
+    free(diffusion.errors);
     stp_posix_image_free(&img);
     if ((png ? stp_posix_write_png(&frame, out_path, err, sizeof err)
              : stp_posix_write(&frame, out_path, plain ? STP_POSIX_FILE_P1 : STP_POSIX_FILE_P4,

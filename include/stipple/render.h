@@ -28,6 +28,7 @@
 #include <stdint.h>
 #include "stipple/config.h"
 #include "stipple/config_guard.h"
+#include "stipple/diffuse.h"
 #include "stipple/dither.h"
 #include "stipple/fix.h"
 #include "stipple/port.h"
@@ -416,6 +417,13 @@ typedef struct stp_output {
     const stp_style_table *styles;   /* STYLE8: codes; NULL: the index itself */
     stp_fix background;              /* shade of the empty frame, [0, 1] */
     const stp_fix *background_colour; /* RGB888: its colour (3 shades), or NULL */
+    const stp_diffusion *diffusion;  /* MONO1: error diffusion instead of the
+                                        cell (NULL: the cell).  The band is
+                                        drawn as GREY8 and diffused row by
+                                        row as it is flushed, so it needs
+                                        band_rows * width bytes; the error
+                                        rows carry across bands, so bands
+                                        equal the whole frame. */
 } stp_output;
 
 /* Memory the caller lends to one stp_render call.

@@ -18,6 +18,7 @@
 #include "stipple/fix.h"
 #include "stipple/shade.h"
 #include "stipple/dither.h"
+#include "stipple/diffuse.h"
 #include "stipple/port.h"
 #include "stipple/transform.h"
 #include "stipple/render.h"

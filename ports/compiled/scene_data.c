@@ -54,4 +54,6 @@ void stp_scene_data_output(const stp_scene_data *s, stp_output *out)
     out->gamma = s->gamma;
     out->styles = 0;
     out->background = s->background;
+    out->background_colour = 0;
+    out->diffusion = 0;
 }

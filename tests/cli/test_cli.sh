@@ -172,5 +172,28 @@ else
     bad "/usr/bin/convert (ImageMagick) is not installed"
 fi
 
+# --- 4. error diffusion: a still PBM defaults to Floyd-Steinberg at 256
+# levels; `stipple dither -d KERNEL` keeps the ramp's mean (FS loses no
+# error but the shares past the edges: ON pixels = sum of grey / 255 within 32)
+"$stipple" render "$scenes/tetra-s1.nff" -o "$work/still.pbm" &&
+    "$stipple" render "$scenes/tetra-s1.nff" -d fs:raster -l 256 -o "$work/fs.pbm" &&
+    "$stipple" render "$scenes/tetra-s1.nff" -d bayer4 -l 16 -o "$work/bayer.pbm" || bad "diffusion renders ran"
+if cmp -s "$work/still.pbm" "$work/fs.pbm" && ! cmp -s "$work/still.pbm" "$work/bayer.pbm"; then ok
+else bad "the default still PBM is not -d fs:raster -l 256"; fi
+"$stipple" render "$scenes/tetra-s1.nff" -o "$work/still.pgm" -d bayer4 -l 16 &&
+    "$stipple" render "$scenes/tetra-s1.nff" -o "$work/still2.pgm" && cmp -s "$work/still.pgm" "$work/still2.pgm" &&
+    ok || bad "grey pictures changed defaults"
+expected_on=$(pnmtoplainpnm "$work/ramp.pgm" | tail -n +4 | tr -s ' \n' '\n' | grep . |
+    awk '{s += $1} END {printf "%d", s / 255 + 0.5}')
+for kernel in fs fs:raster sierra-lite jjn stucki burkes; do
+    if "$stipple" dither "$work/ramp.pgm" -d "$kernel" -o "$work/d.pbm"; then
+        on=$(pnmtoplainpnm "$work/d.pbm" | tail -n +3 | tr -d ' \n' | tr -d 1 | wc -c)
+        if [ $((on - expected_on)) -le 32 ] && [ $((expected_on - on)) -le 32 ]; then ok
+        else bad "dither -d $kernel: $on lit pixels, the ramp holds $expected_on"; fi
+    else bad "dither -d $kernel ran"; fi
+done
+if "$stipple" dither "$work/ramp.pgm" -d fs:serpentine -o "$work/d.pbm" 2>/dev/null; then
+    bad "dither -d fs:serpentine accepted"; else ok; fi
+
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -89,7 +89,10 @@ timeout "$build_timeout" cmake --build "$fw" >"$work/build.log" 2>&1 ||
     { cat "$work/build.log" >&2; exit 1; }
 
 echo "== host render"
-"$stipple" render "$scene" -s "$size" -o "$work/host.pbm" "$@"
+# compiled scenes use the library's cell, levels and exposure (Bayer 4x4,
+# 16, none), not the command's defaults for a still PBM (Floyd-Steinberg,
+# 256 levels, automatic exposure)
+"$stipple" render "$scene" -s "$size" -d bayer4 -l 16 --exposure off -o "$work/host.pbm" "$@"
 
 # "stipple: WHAT N" from a firmware log; empty when it is not there
 figure() {

@@ -1,0 +1,64 @@
+/* SPDX-License-Identifier: MIT */
+/* Double-precision dithering references: see diffuse_ref.h. */
+#include "diffuse_ref.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* The kernels as published (Floyd & Steinberg 1976; Atkinson's MacPaint
+ * kernel; Frankie Sierra's "lite"; Jarvis, Judice & Ninke 1976; Stucki
+ * 1981; Burkes 1988): weight of (dx, dy) over a divisor. */
+typedef struct tap {
+    int dx, dy, weight;
+} tap;
+typedef struct kernel_def {
+    int divisor, count;
+    tap taps[12];
+} kernel_def;
+
+static const kernel_def kernels[REF_KERNEL_COUNT] = {
+    {16, 4, {{1, 0, 7}, {-1, 1, 3}, {0, 1, 5}, {1, 1, 1}}},
+    {8, 6, {{1, 0, 1}, {2, 0, 1}, {-1, 1, 1}, {0, 1, 1}, {1, 1, 1}, {0, 2, 1}}},
+    {4, 3, {{1, 0, 2}, {-1, 1, 1}, {0, 1, 1}}},
+    {48, 12, {{1, 0, 7}, {2, 0, 5}, {-2, 1, 3}, {-1, 1, 5}, {0, 1, 7}, {1, 1, 5}, {2, 1, 3},
+              {-2, 2, 1}, {-1, 2, 3}, {0, 2, 5}, {1, 2, 3}, {2, 2, 1}}},
+    {42, 12, {{1, 0, 8}, {2, 0, 4}, {-2, 1, 2}, {-1, 1, 4}, {0, 1, 8}, {1, 1, 4}, {2, 1, 2},
+              {-2, 2, 1}, {-1, 2, 2}, {0, 2, 4}, {1, 2, 2}, {2, 2, 1}}},
+    {32, 7, {{1, 0, 8}, {2, 0, 4}, {-2, 1, 2}, {-1, 1, 4}, {0, 1, 8}, {1, 1, 4}, {2, 1, 2}}},
+};
+
+void ref_diffuse(const double *grey, int w, int h, ref_kernel kernel, int serpentine,
+                 unsigned char *bits)
+{
+    const kernel_def *k = &kernels[kernel];
+    double *v = malloc(sizeof *v * (size_t)w * (size_t)h);
+    int x, y, i;
+    if (!v)
+        abort();
+    memcpy(v, grey, sizeof *v * (size_t)w * (size_t)h);
+    for (y = 0; y < h; y++) {
+        int backwards = serpentine && (y & 1), dir = backwards ? -1 : 1;
+        for (i = 0; i < w; i++) {
+            double e;
+            int t;
+            x = backwards ? w - 1 - i : i;
+            bits[y * w + x] = (unsigned char)(v[y * w + x] >= 0.5);
+            e = v[y * w + x] - bits[y * w + x];
+            for (t = 0; t < k->count; t++) {
+                int tx = x + dir * k->taps[t].dx, ty = y + k->taps[t].dy;
+                if (tx >= 0 && tx < w && ty < h)
+                    v[ty * w + tx] += e * k->taps[t].weight / k->divisor;
+            }
+        }
+    }
+    free(v);
+}
+
+void ref_ordered(const double *grey, int w, int h, const unsigned char *t, int tw, int th,
+                 unsigned char *bits)
+{
+    int x, y;
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++)
+            bits[y * w + x] = (unsigned char)(255.0 * grey[y * w + x] > t[(y % th) * tw + x % tw]);
+}
