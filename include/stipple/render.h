@@ -97,7 +97,7 @@ enum {
 #define STP_LIGHT_TERM_GREY (-1)
 #define STP_LIGHT_TERM_COLOUR (-2)
 
-#define STP_COLOUR_FLAG 0x01000000
+#define STP_COLOUR_FLAG ((int32_t)0x01000000)
 
 /* One display-file instruction: an opcode and a point.  x, y: device Q27.4;
  * z: depth key, larger = nearer (perspective: 2^30 * hither / z_view, in
