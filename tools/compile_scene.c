@@ -235,7 +235,7 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
         STP_FIX_FRAC_BITS, STP_FIX_FRAC_BITS, p->lighting.count < 1 ? 1 : p->lighting.count,
         p->max_vertices);
 
-    out(w, "static const stp_vec3 vertices[%lu] = {\n", p->vertex_count);
+    out(w, "static const stp_vec3 vertices[%lu] STP_SCENE_ROM = {\n", p->vertex_count);
     for (i = 0; i < scene->polygon_count; i++) {
         const stp_scene_polygon *poly = &scene->polygons[i];
         for (k = 0; k < poly->count; k++) {
@@ -246,7 +246,7 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
     }
     out(w, "};\n\n");
 
-    out(w, "static const stp_scene_data_polygon polygons[%lu] = {\n",
+    out(w, "static const stp_scene_data_polygon polygons[%lu] STP_SCENE_ROM = {\n",
         (unsigned long)scene->polygon_count);
     for (i = 0; i < scene->polygon_count; i++) {
         const stp_scene_polygon *poly = &scene->polygons[i];
@@ -258,7 +258,7 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
     out(w, "};\n\n");
 
     out(w, "/* reflectivity, refraction, gloss, specular weight, colour */\n"
-           "static const stp_material materials[%lu] = {\n",
+           "static const stp_material materials[%lu] STP_SCENE_ROM = {\n",
         (unsigned long)p->material_count);
     for (j = 0; j < p->material_count; j++) {
         const stp_material *m = &p->materials[j];

@@ -18,6 +18,19 @@
 #include <stdint.h>
 #include "stipple/stipple.h"
 
+/* Where the generated source keeps its vertex, polygon and material tables
+ * (STP_SCENE_ROM after the array's name).  Where const data is read in
+ * place, nothing; on an AVR, whose const data is otherwise copied into its
+ * few KB of SRAM at start-up, program memory, read a record at a time
+ * through STP_SCENE_ROM_COPY(dst, src, bytes). */
+#if defined(__AVR__)
+#include <avr/pgmspace.h>
+#define STP_SCENE_ROM PROGMEM
+#define STP_SCENE_ROM_COPY(dst, src, bytes) memcpy_P((dst), (src), (bytes))
+#else
+#define STP_SCENE_ROM
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -36,11 +49,11 @@ typedef struct stp_scene_data {
     int backface_removal;
     stp_view view;
     stp_lighting lighting;         /* world-space light positions */
-    const stp_material *materials; /* only the materials polygons use */
+    const stp_material *materials; /* only the materials polygons use (STP_SCENE_ROM) */
     uint32_t material_count;
-    const stp_vec3 *vertices;      /* world space */
+    const stp_vec3 *vertices;      /* world space (STP_SCENE_ROM) */
     uint32_t vertex_count;
-    const stp_scene_data_polygon *polygons;
+    const stp_scene_data_polygon *polygons; /* STP_SCENE_ROM */
     uint32_t polygon_count;
     stp_instr *display_file;       /* capacity: what the scene enters */
     uint32_t display_capacity;

@@ -182,6 +182,25 @@ int stp_panel_send_mono_page(const stp_panel_controller *c, const stp_panel_bus 
                              uint32_t page, const uint8_t *pixels, size_t stride,
                              uint32_t width, uint8_t *scratch);
 
+/* PAGES controllers fed by bands of any height: a band row goes to the
+ * page it belongs to; a page the band holds whole is sent straight from the
+ * band, other rows are gathered in page_rows until the page's last row (or
+ * the panel's) has come.  width <= 8 * row_bytes; page_rows holds 8 rows of
+ * row_bytes, columns width bytes (the packed page). */
+typedef struct stp_panel_pages {
+    const stp_panel_controller *controller;
+    const stp_panel_bus *bus;
+    uint32_t width, height;
+    size_t row_bytes;
+    uint8_t *page_rows;
+    uint8_t *columns;
+} stp_panel_pages;
+
+/* Take rows [y0, y0 + rows) of a MONO1 picture (stride bytes apart), as a
+ * stp_port flush does.  Returns 0, or the bus error. */
+int stp_panel_pages_put(const stp_panel_pages *p, uint32_t y0, uint32_t rows,
+                        const uint8_t *pixels, size_t stride);
+
 /* WINDOW_COUNTERS controllers: set the RAM window to the visible area
  * (columns from column_offset), the counters to its first pixel, and send
  * write_command; the frame's packed rows follow as data, top row first. */
