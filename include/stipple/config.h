@@ -12,6 +12,10 @@
 
 #ifdef STP_CONFIG_HEADER
 #include STP_CONFIG_HEADER
+#elif defined(ARDUINO)
+/* The Arduino builder gives a library no -D of its own: the Arduino
+ * library's configuration is stipple_config.h in its src/ folder. */
+#include "stipple_config.h"
 #endif
 
 /* Fractional bits of stp_fix (the core's one scalar type, a signed Q format
