@@ -25,7 +25,7 @@ cp -r "$root/ports/arduino/examples/StippleScene" "$lib/examples/"
 cp "$root"/include/stipple/*.h "$lib/src/stipple/"
 cp "$root"/src/*.c "$root"/src/*.h "$lib/src/core/"
 cp "$root/ports/controllers/stp_panel.h" "$root/ports/controllers/panel.c" \
-   "$root/ports/controllers/panel_ext.c" "$root/ports/controllers/panel_pages.c" \
+   "$root/ports/controllers/panel_pages.c" \
    "$root/ports/controllers/ssd1306.c" "$lib/src/"
 cp "$root/ports/compiled/stp_scene_data.h" "$root/ports/compiled/scene_data.c" "$lib/src/"
 "$stipple" compile "$scene" -s 128x64 -o "$lib/examples/StippleScene/scene.c" \
