@@ -140,13 +140,18 @@ typedef struct stp_renderer stp_renderer;
 /* Bytes a renderer object needs (its alignment is that of int64_t). */
 size_t stp_renderer_size(void);
 
-/* An upper bound of stp_renderer_size() known at compile time, for static
- * allocation without a heap (render.c checks the bound when it is built):
+/* stp_renderer_size() known at compile time, for static allocation without
+ * a heap (render.c checks the bound when it is built):
  *   static stp_renderer_storage storage;
- *   r = stp_renderer_create(&storage, sizeof storage, ...); */
+ *   r = stp_renderer_create(&storage, sizeof storage, ...);
+ * By default an upper bound from the configuration; a build that knows the
+ * exact size for its target and configuration defines it first (the
+ * firmware build measures it: firmware/renderer_bytes.cmake). */
+#ifndef STP_RENDERER_BYTES
 #define STP_RENDERER_BYTES                                                                      \
     (1024u + 32u * STP_MAX_SEGMENTS + (48u + 112u * STP_WITH_SHADOWS) * STP_MAX_LIGHTS +          \
      96u * (STP_MAX_POLYGON_VERTICES + 5u))
+#endif
 typedef union stp_renderer_storage {
     int64_t align_integer;
     void *align_pointer;

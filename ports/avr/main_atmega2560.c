@@ -10,8 +10,9 @@
  * of MONO1 pixels, their Z-buffer rows and one 8-row page being gathered.
  *
  * The verdict goes to GPIOR0 (0: drawn; 1: the scene's size; 2: entering;
- * 3: the panel's init; 4: rendering), then the CPU sleeps with interrupts
- * off, which ends a simavr run (tests/avr).
+ * 3: the panel's init; 4: rendering; 5: STP_RENDERER_BYTES, which the
+ * firmware build measures, is not stp_renderer_size()), then the CPU sleeps
+ * with interrupts off, which ends a simavr run (tests/avr).
  */
 #include <avr/interrupt.h>
 #include <avr/io.h>
@@ -92,6 +93,8 @@ int main(void)
     port.format = STP_PIXEL_MONO1;
     port.user = 0;
     port.flush = flush;
-    finish(stp_render(r, &port, &out, &mem) == STP_OK ? 0 : 4);
+    if (stp_render(r, &port, &out, &mem) != STP_OK)
+        finish(4);
+    finish(STP_RENDERER_BYTES == stp_renderer_size() ? 0 : 5);
     return 0;
 }

@@ -153,6 +153,7 @@ int main(void)
 #endif
     report("band rows:", STP_FW_BAND_ROWS);
     report("renderer bytes:", stp_renderer_size());
+    report("renderer storage bytes:", STP_RENDERER_BYTES); /* the test: the same */
     report("display-file entries:", stp_display_file_used(r));
 #endif
     board->hold();

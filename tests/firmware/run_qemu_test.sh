@@ -158,6 +158,14 @@ for image in $images; do
         status=1
         continue
     fi
+    # the firmware build measures STP_RENDERER_BYTES: it must be the object's size
+    object=$(figure "$log" "renderer bytes:")
+    storage=$(figure "$log" "renderer storage bytes:")
+    if [ -n "$config" ] && { [ -z "$object" ] || [ "$object" != "$storage" ]; }; then
+        echo "FAIL $image: STP_RENDERER_BYTES is not stp_renderer_size()" >&2
+        status=1
+        continue
+    fi
     if "$compare" "$dump" "$work/host.pbm" 4; then
         echo "PASS $image"
         [ -n "$config" ] || continue
