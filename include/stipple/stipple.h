@@ -21,5 +21,6 @@
 #include "stipple/render.h"
 #include "stipple/colour.h"
 #include "stipple/raytrace.h"
+#include "stipple/playback.h"
 
 #endif

@@ -68,6 +68,33 @@ typedef struct stp_scene_data {
 /* The generated source defines this one object. */
 extern const stp_scene_data stp_compiled_scene;
 
+/* A static scene (`stipple compile --static`): the display file entered on
+ * the host, as const data, played back by stp_playback_create's renderer. */
+typedef struct stp_scene_static {
+    uint32_t width, height;        /* the device size it was entered for */
+    int levels;                    /* INTENSITY levels */
+    int fill_style;                /* style in force before the first SHADE */
+    const stp_instr *display_file; /* used entries */
+    uint32_t display_used;
+    stp_sort_entry *sort;          /* painter only, else NULL */
+    uint32_t sort_count;
+    stp_hidden hidden;
+    const stp_cell *cell;
+    const uint8_t *gamma;
+    stp_fix background;
+} stp_scene_static;
+
+/* The generated source of a static scene defines this one object. */
+extern const stp_scene_static stp_compiled_static;
+
+/* The renderer over the scene's display file in mem (stp_renderer_size()
+ * bytes); *out receives it.  Returns STP_OK or STP_ERR_ARG. */
+int stp_scene_static_open(const stp_scene_static *scene, void *mem, size_t mem_size,
+                          stp_renderer **out);
+
+/* The output settings the static scene was compiled with. */
+void stp_scene_static_output(const stp_scene_static *scene, stp_output *out);
+
 /* Create the renderer in mem (stp_renderer_size() bytes) over the scene's
  * display file and enter the scene into segment 1, as stp_tool_render does
  * (degenerate polygons skipped).  *out receives the renderer.  Returns

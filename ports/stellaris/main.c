@@ -7,6 +7,10 @@
  * scene's display file (in the generated source), STP_FW_BAND_ROWS rows of
  * MONO1 pixels and their Z-buffer rows; the picture lives only in the panel.
  *
+ * STP_FW_STATIC 1: the scene is static (`stipple compile --static`): its
+ * display file, entered on the host, is played back from flash
+ * (stp_scene_static_open); nothing is entered on the chip.
+ *
  * STP_FW_BENCH 1 makes the bench image: it also renders the frame once
  * without the panel and reports instruction counts over semihosting
  * ("stipple: WHAT N", read by tests/firmware/run_qemu_test.sh), and with
@@ -17,7 +21,7 @@
 #include "stellaris.h"
 #include "stp_scene_data.h"
 #include "stipple/stipple.h"
-#if STP_FW_SHADE_BENCH
+#if STP_FW_SHADE_BENCH && !STP_FW_STATIC
 #include "bench_shade.h"
 #endif
 
@@ -29,6 +33,21 @@
 #endif
 #ifndef STP_FW_BENCH
 #define STP_FW_BENCH 0
+#endif
+#ifndef STP_FW_STATIC
+#define STP_FW_STATIC 0
+#endif
+
+#if STP_FW_STATIC
+#define SCENE stp_compiled_static
+#define SCENE_TYPE stp_scene_static
+#define scene_open stp_scene_static_open
+#define scene_output stp_scene_static_output
+#else
+#define SCENE stp_compiled_scene
+#define SCENE_TYPE stp_scene_data
+#define scene_open stp_scene_data_enter
+#define scene_output stp_scene_data_output
 #endif
 
 static stp_renderer_storage renderer;
@@ -72,7 +91,7 @@ static int discard_flush(stp_port *port, uint32_t y0, uint32_t rows, const uint8
 
 int main(void)
 {
-    const stp_scene_data *scene = &stp_compiled_scene;
+    const struct SCENE_TYPE *scene = &SCENE;
     const stp_board *board = &stp_board_this;
     stp_renderer *r;
     stp_port port;
@@ -94,14 +113,14 @@ int main(void)
 #if STP_FW_BENCH
     t0 = stp_count_now();
 #endif
-    status = stp_scene_data_enter(scene, &renderer, sizeof renderer, &r);
+    status = scene_open(scene, &renderer, sizeof renderer, &r);
     if (status != STP_OK)
         return fail("enter", status);
 #if STP_FW_BENCH
     t1 = stp_count_now();
 #endif
 
-    stp_scene_data_output(scene, &out);
+    scene_output(scene, &out);
     mem.band = band;
     mem.band_size = sizeof band;
     mem.band_rows = STP_FW_BAND_ROWS;
@@ -144,7 +163,7 @@ int main(void)
     report("instructions to enter the scene:", (t1 - t0) * per_tick);
     report("instructions per frame (core):", (t2 - t1) * per_tick);
     report("instructions per frame (core + panel):", (t4 - t3) * per_tick);
-#if STP_FW_SHADE_BENCH
+#if STP_FW_SHADE_BENCH && !STP_FW_STATIC
     {
         uint32_t calls, per_shade = stp_bench_shade(scene, per_tick, &calls);
         report("instructions per shade:", per_shade);

@@ -30,7 +30,8 @@
 # reports no per-shade figure).
 # Environment: STP_FW_CPU (cortex-m3; cortex-m0plus also runs on QEMU's M3),
 # STP_QEMU_TIMEOUT (seconds per QEMU run, 60), STP_BUILD_TIMEOUT (600),
-# STP_FW_BAND_ROWS (4).
+# STP_FW_BAND_ROWS (4), STP_FW_STATIC (OFF; ON: the scene compiled with
+# --static and played back from flash).
 set -eu
 
 board=lm3s6965evb
@@ -86,7 +87,8 @@ timeout "$build_timeout" cmake -S "$src/firmware" -B "$fw" \
     -DCMAKE_TOOLCHAIN_FILE="$src/cmake/toolchain-arm-none-eabi.cmake" -DSTP_CPU="$cpu" \
     -DSTP_FW_BOARD="$board" \
     -DSTP_FW_COMPILE_TOOL="$compile_tool" -DSTP_FW_SCENE="$scene" \
-    -DSTP_FW_COMPILE_OPTIONS="$options" -DSTP_FW_BAND_ROWS="$band_rows" >"$work/configure.log" 2>&1 ||
+    -DSTP_FW_COMPILE_OPTIONS="$options" -DSTP_FW_BAND_ROWS="$band_rows" \
+    -DSTP_FW_STATIC="${STP_FW_STATIC:-OFF}" >"$work/configure.log" 2>&1 ||
     { cat "$work/configure.log" >&2; exit 1; }
 timeout "$build_timeout" cmake --build "$fw" >"$work/build.log" 2>&1 ||
     { cat "$work/build.log" >&2; exit 1; }
