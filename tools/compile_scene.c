@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "options.h"
+#include "static_order.h"
 #include "stp_scene_data.h"
 #include "scene_util.h"
 
@@ -404,7 +405,7 @@ done:
 /* The static scene's C source: the display file as const data (rodata:
  * flash on a microcontroller), the cell, and stp_compiled_static. */
 static void write_static_source(writer *w, const plan *p, const stp_tool_options *opt,
-                                const stp_instr *df, uint32_t used)
+                                const stp_instr *df, uint32_t used, int asked_zbuffer)
 {
     uint32_t i;
     int fill_style = opt->levels < 16 ? opt->levels : 16; /* stp_renderer_create's */
@@ -413,6 +414,12 @@ static void write_static_source(writer *w, const plan *p, const stp_tool_options
            " * display file %lu entries, played back with stp_playback_create.  Do not\n"
            " * edit. */\n",
         opt->width, opt->height, (unsigned long)used);
+    if (asked_zbuffer && opt->hidden == STP_HIDDEN_NONE)
+        out(w, "/* Hidden surfaces: the polygons are in a painter's order the host found to\n"
+               " * give the Z buffer's picture pixel for pixel; no Z buffer is needed. */\n");
+    else if (asked_zbuffer)
+        out(w, "/* Hidden surfaces: no painter's order gives the Z buffer's picture (cyclic\n"
+               " * overlap, or polygons sharing pixels both ways): the Z buffer stays. */\n");
     out(w, "#include \"stp_scene_data.h\"\n\n");
     out(w, "/* Device coordinates Q27.4; the shade field exists with STP_WITH_GOURAUD. */\n"
            "#if STP_WITH_GOURAUD\n#define I(op, x, y, z, shade) {op, x, y, z, shade}\n"
@@ -465,13 +472,33 @@ static int compile(const stp_scene *scene, const stp_tool_options *opt, int is_s
     wh.f = h_out;
     wh.failed = 0;
     if (is_static) {
+        stp_tool_options painter = *opt;
+        stp_instr *ordered = 0;
+        uint32_t ordered_used = 0;
+        int exact = 0;
         if (enter_on_host(scene, &p, opt, &df, &used, err, errlen) != 0)
             goto done;
-        write_static_source(&wc, &p, opt, df, used);
+        /* a Z buffer only where no painter's order gives its picture */
+        if (opt->hidden == STP_HIDDEN_ZBUFFER) {
+            exact = stp_tool_static_order(df, used, (uint32_t)opt->width, (uint32_t)opt->height,
+                                          &ordered, &ordered_used);
+            if (exact < 0) {
+                snprintf(err, errlen, "out of memory");
+                goto done;
+            }
+        }
+        if (exact) {
+            free(df);
+            df = ordered;
+            used = ordered_used;
+            painter.hidden = STP_HIDDEN_NONE;
+        }
+        write_static_source(&wc, &p, &painter, df, used, opt->hidden == STP_HIDDEN_ZBUFFER);
+        write_config(&wh, &p, &painter);
     } else {
         write_source(&wc, scene, &p, opt);
+        write_config(&wh, &p, opt);
     }
-    write_config(&wh, &p, opt);
     if (wc.failed || wh.failed || (c_out && fflush(c_out) != 0) || (h_out && fflush(h_out) != 0)) {
         snprintf(err, errlen, "write error: %s", strerror(errno));
         goto done;
