@@ -7,8 +7,9 @@
 #include "stp_panel.h"
 
 #define PANEL_W 128u
+#define CHUNK_PIXELS 16u /* packed and sent a piece of a row at a time */
 
-static uint8_t packed[PANEL_W / 2u];
+static uint8_t packed[CHUNK_PIXELS / 2u];
 
 static int panel_start(void)
 {
@@ -19,14 +20,22 @@ static int panel_start(void)
                : -1;
 }
 
+/* Rows go out CHUNK_PIXELS at a time (4-bit grey, two pixels a byte): the
+ * window fills row by row whatever the data calls, and the buffer stays
+ * small. */
 static int flush(stp_port *port, uint32_t y0, uint32_t rows, const uint8_t *pixels, size_t stride)
 {
+    uint32_t y, x;
     (void)port;
     (void)y0; /* bands come top to bottom and the window was set for the frame */
-    return stp_panel_send_mono_rows(&stp_panel_ssd0323, &stp_lm3s6965_oled_bus, pixels, stride,
-                                    PANEL_W, rows, packed) == 0
-               ? 0
-               : -1;
+    for (y = 0; y < rows; y++)
+        for (x = 0; x < PANEL_W; x += CHUNK_PIXELS) {
+            stp_panel_pack_mono_row(&stp_panel_ssd0323, pixels + (size_t)y * stride + x / 8u,
+                                    CHUNK_PIXELS, packed);
+            if (stp_lm3s6965_oled_bus.data(stp_lm3s6965_oled_bus.ctx, packed, sizeof packed) != 0)
+                return -1;
+        }
+    return 0;
 }
 
 /* Hold the picture until the board's "up" key (PE0) changes level: a test
