@@ -274,8 +274,8 @@ stp_rgb stp_hsi_to_rgb(stp_vec3 hsi)
     int64_t r = 2 * (int64_t)m1 * INV_SQRT6 + i1 * INV_SQRT3;
     int64_t g = -(int64_t)m1 * INV_SQRT6 + (int64_t)m2 * INV_SQRT2 + i1 * INV_SQRT3;
     int64_t b = -(int64_t)m1 * INV_SQRT6 - (int64_t)m2 * INV_SQRT2 + i1 * INV_SQRT3;
-    return rgb3(stp_fix_sat64(stp_asr64(r + (1 << 29), 30)), stp_fix_sat64(stp_asr64(g + (1 << 29), 30)),
-                stp_fix_sat64(stp_asr64(b + (1 << 29), 30)));
+    return rgb3(stp_fix_sat64(stp_asr64(r + ((int64_t)1 << 29), 30)), stp_fix_sat64(stp_asr64(g + ((int64_t)1 << 29), 30)),
+                stp_fix_sat64(stp_asr64(b + ((int64_t)1 << 29), 30)));
 }
 
 int stp_colour_rgb_to_xyz_matrix_xyz(const stp_xy primaries[3], stp_vec3 white_xyz,
@@ -335,7 +335,7 @@ void stp_colour_table_pseudocolour(stp_colour_table *t)
 {
     int i;
     for (i = 0; i < 256; i++) {
-        stp_rgb c = stp_hsv_to_rgb(v3(stp_fix_from_ratio(240 * (255 - i), 255), ONE, ONE));
+        stp_rgb c = stp_hsv_to_rgb(v3(stp_fix_from_ratio((int32_t)240 * (255 - i), 255), ONE, ONE));
         t->entry[i] = (byte_of(c.r) << 16) | (byte_of(c.g) << 8) | byte_of(c.b);
     }
 }

@@ -181,7 +181,7 @@ stp_fix stp_fix_exp2(stp_fix a)
     }
     /* r in [1, 2) Q30; result = r * 2^ip with F fractional bits */
     {
-        int shift = ip + F - 30; /* r * 2^(ip) in Q(F) = r >> (30 - F - ip) */
+        int32_t shift = ip + F - 30; /* r * 2^(ip) in Q(F) = r >> (30 - F - ip) */
         if (shift >= 0) {
             if (shift > 31 || (r << shift) > (uint64_t)STP_FIX_MAX)
                 return STP_FIX_MAX;

@@ -10,7 +10,7 @@ uint8_t stp_output_level(const stp_output *out, int levels, int index)
         index = levels;
     if (out->gamma)
         return out->gamma[index - 1];
-    return (uint8_t)(((index - 1) * 255 + (levels - 1) / 2) / (levels - 1));
+    return (uint8_t)(((int32_t)(index - 1) * 255 + (levels - 1) / 2) / (levels - 1)); /* > 2^15 */
 }
 
 void stp_output_put_shade(uint8_t *row, stp_pixel_format format, uint32_t x, uint32_t y,

@@ -12,7 +12,7 @@ size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
     switch (fmt) {
     case STP_PIXEL_MONO1: return ((size_t)width + 7u) / 8u;
     case STP_PIXEL_GREY8:
-    case STP_PIXEL_STYLE8: return width;
+    case STP_PIXEL_STYLE8: return (size_t)width;
     case STP_PIXEL_RGB888: return (size_t)width * 3u;
     default: return 0;
     }
@@ -36,22 +36,27 @@ typedef struct frame {
 #endif
 } frame;
 
-/* 8-bit drive value of a style index (gamma table or linear). */
-static uint8_t level_of(const frame *fr, int index)
+/* A style as the interpreter carries it: an index (0..levels) or, with
+ * STP_COLOUR_FLAG, a colour; 32 bits wide because the flag is bit 24. */
+typedef int32_t paint;
+
+/* 8-bit drive value of a style index (gamma table or linear); index is a
+ * plain style here (0..levels), so it fits an int. */
+static uint8_t level_of(const frame *fr, paint index)
 {
-    return stp_output_level(fr->out, fr->r->levels, index);
+    return stp_output_level(fr->out, fr->r->levels, (int)index);
 }
 
 /* indices entered under more levels than are now set show as the top
  * style (0 stays 0: "nothing drawn") */
-static uint8_t style_code(const frame *fr, int index)
+static uint8_t style_code(const frame *fr, paint index)
 {
-    return stp_output_style_code(fr->out, fr->r->levels, index);
+    return stp_output_style_code(fr->out, fr->r->levels, (int)index);
 }
 
 /* What a STP_OP_SHADE paints with: its colour on an RGB888 device when it
  * has one, else its style index. */
-static int paint_of(const frame *fr, const stp_instr *in)
+static paint paint_of(const frame *fr, const stp_instr *in)
 {
     if (fr->port->format == STP_PIXEL_RGB888 && (in->z & STP_COLOUR_FLAG))
         return in->z;
@@ -59,7 +64,7 @@ static int paint_of(const frame *fr, const stp_instr *in)
 }
 
 /* Paint pixels x1..x2 of band row `row` (absolute y) in a style. */
-static void put_span(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style)
+static void put_span(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, paint style)
 {
     uint8_t *row = fr->band + (size_t)(y - fr->y0) * fr->stride;
     uint32_t x;
@@ -124,7 +129,7 @@ static int index_of_level(const frame *fr, uint8_t level)
 {
     int levels = fr->r->levels, best = 1, i, dbest = 256;
     if (!fr->out->gamma)
-        return (level * (levels - 1) + 127) / 255 + 1;
+        return (int)(((int32_t)level * (levels - 1) + 127) / 255) + 1; /* > 2^15 */
     for (i = 1; i <= levels; i++) {
         int dd = fr->out->gamma[i - 1] - level;
         if (dd < 0)
@@ -145,7 +150,7 @@ static int blend(const frame *fr, stp_fix v_r, stp_fix t, stp_fix v_t)
 
 /* A transparent span: each pixel's shade under it is read back from the
  * band through the inverse of INTENSITY and blended with the polygon's. */
-static void put_span_blend(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style,
+static void put_span_blend(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, paint style,
                            stp_fix t)
 {
     uint8_t *row = fr->band + (size_t)(y - fr->y0) * fr->stride;
@@ -155,7 +160,7 @@ static void put_span_blend(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2
     case STP_PIXEL_MONO1: {
         /* one bilevel pixel inverts to 0 or 1: its halftone density is
          * the shade, so blending per pixel keeps it on average */
-        stp_fix v_r = stp_intensity_shade(style, levels);
+        stp_fix v_r = stp_intensity_shade((int)style, levels);
         for (x = x1; x <= x2; x++) {
             uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
             stp_fix v_t = (row[x >> 3] & bit) ? STP_FIX_ONE : 0;
@@ -167,7 +172,7 @@ static void put_span_blend(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2
         break;
     }
     case STP_PIXEL_GREY8: {
-        stp_fix v_r = stp_intensity_shade(style, levels);
+        stp_fix v_r = stp_intensity_shade((int)style, levels);
         for (x = x1; x <= x2; x++)
             row[x] = level_of(fr, blend(fr, v_r, t, stp_intensity_shade(index_of_level(fr, row[x]), levels)));
         break;
@@ -176,7 +181,7 @@ static void put_span_blend(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2
         int c;
         stp_fix v_r[3];
         for (c = 0; c < 3; c++)
-            v_r[c] = stp_intensity_shade((style & STP_COLOUR_FLAG) ? ((style >> (16 - 8 * c)) & 0xFF) + 1 : style,
+            v_r[c] = stp_intensity_shade((int)((style & STP_COLOUR_FLAG) ? ((style >> (16 - 8 * c)) & 0xFF) + 1 : style),
                                          levels);
         for (x = x1; x <= x2; x++)
             for (c = 0; c < 3; c++) {
@@ -186,7 +191,7 @@ static void put_span_blend(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2
         break;
     }
     default: {
-        stp_fix v_r = stp_intensity_shade(style, levels);
+        stp_fix v_r = stp_intensity_shade((int)style, levels);
         for (x = x1; x <= x2; x++) {
             int under = fr->out->styles ? stp_style_inverse(fr->out->styles, row[x]) : row[x];
             stp_fix v_t = under > 0 ? stp_intensity_shade(under, levels) : 0;
@@ -199,7 +204,7 @@ static void put_span_blend(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2
 #endif
 
 /* A run of a span: flat, smooth or transparent. */
-static void paint_run_plain(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style,
+static void paint_run_plain(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, paint style,
                             int smooth, int64_t s0, int64_t sstep, stp_fix t)
 {
 #if STP_WITH_TRANSPARENCY
@@ -229,7 +234,7 @@ static void paint_run_plain(const frame *fr, uint32_t y, uint32_t x1, uint32_t x
  * (render.h, stp_set_shadow_map): a flat grey polygon takes the style of
  * its shade re-lit without them; a colour polygon's channels and a smooth
  * polygon's interpolated shade are scaled by that shade over its full one. */
-static void paint_hidden(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style,
+static void paint_hidden(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, paint style,
                          int smooth, int64_t s0, int64_t sstep, stp_fix t, uint32_t hidden)
 {
     const stp_shadow_poly *sp = fr->shadow;
@@ -238,16 +243,17 @@ static void paint_hidden(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, 
     if (sp->full > 0)
         ratio = (stp_fix)(((int64_t)lit << STP_FIX_FRAC_BITS) / sp->full); /* lit <= full */
     if (style & STP_COLOUR_FLAG) {
-        int c, shaded = STP_COLOUR_FLAG;
+        int c;
+        paint shaded = STP_COLOUR_FLAG;
         for (c = 0; c < 3; c++) {
-            stp_fix v = stp_intensity_shade(((style >> (16 - 8 * c)) & 0xFF) + 1, levels);
-            shaded |= (stp_intensity_index(stp_fix_mul(v, ratio), levels) - 1) << (16 - 8 * c);
+            stp_fix v = stp_intensity_shade((int)((style >> (16 - 8 * c)) & 0xFF) + 1, levels);
+            shaded |= (paint)(stp_intensity_index(stp_fix_mul(v, ratio), levels) - 1) << (16 - 8 * c);
         }
         style = shaded;
     } else if (sp->grey) {
         style = stp_intensity_index(lit, levels);
     } else {
-        style = stp_intensity_index(stp_fix_mul(stp_intensity_shade(style, levels), ratio), levels);
+        style = stp_intensity_index(stp_fix_mul(stp_intensity_shade((int)style, levels), ratio), levels);
     }
     if (smooth) {
         /* shades with 16 extra fractional bits, below 2^(F+18): the
@@ -261,7 +267,7 @@ static void paint_hidden(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, 
 
 /* A run of a span; with shadow records, split into runs of pixels hidden
  * from the same lights. */
-static void paint_run(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style, int smooth,
+static void paint_run(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, paint style, int smooth,
                       int64_t s0, int64_t sstep, stp_fix t)
 {
 #if STP_WITH_SHADOWS
@@ -292,7 +298,7 @@ static void paint_run(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int
 #if STP_WITH_ZBUFFER
 /* Depth-tested span: runs of pixels that pass are painted with put_span, so
  * the halftone inner loop stays the same as without a Z buffer. */
-static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style,
+static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, paint style,
                        int64_t d, int64_t ddx, int smooth, int64_t s0, int64_t sstep, stp_fix t)
 {
     uint16_t *z = fr->zbuf + (size_t)(y - fr->y0) * fr->r->width;
@@ -328,11 +334,11 @@ static int64_t depth_q12(const frame *fr, int32_t key)
 #endif
 
 /* Scan-convert the polygon whose header is df[at] into the current band. */
-static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z, stp_fix t)
+static void draw_polygon(const frame *fr, uint32_t at, paint style, int use_z, stp_fix t)
 {
     stp_renderer *r = fr->r;
     const stp_instr *v = &r->df[at];
-    int n = v[0].op, i, ne = 0;
+    int n = (int)v[0].op, i, ne = 0; /* a vertex count, <= STP_MAX_POLYGON_VERTICES */
 #if STP_WITH_GOURAUD
     int smooth = v[0].shade >= 0;
 #else
@@ -476,7 +482,7 @@ static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z, stp
 
 #if STP_WITH_LINES
 /* Bresenham from pixel centre to pixel centre; only the rows of the band. */
-static void draw_line(const frame *fr, const stp_instr *a, const stp_instr *b, int style)
+static void draw_line(const frame *fr, const stp_instr *a, const stp_instr *b, paint style)
 {
     int32_t x0 = a->x >> SUB, y0 = a->y >> SUB, x1 = b->x >> SUB, y1 = b->y >> SUB;
     int32_t dx = x1 > x0 ? x1 - x0 : x0 - x1, dy = y1 > y0 ? y0 - y1 : y1 - y0;
@@ -512,7 +518,7 @@ static void replay(const frame *fr, int skip_polygons, int use_z, int pass)
     int s;
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
-        int style = r->fill_style, line_style = r->fill_style;
+        paint style = r->fill_style, line_style = r->fill_style;
         stp_fix t = 0;
         const stp_instr *pen = 0;
         uint32_t k;
@@ -593,7 +599,7 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
     fr->key_max = INT32_MIN;
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
-        int style = r->fill_style;
+        paint style = r->fill_style;
         stp_fix t = 0;
         if (!seg->used || !seg->visible)
             continue;
@@ -638,7 +644,7 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
     stp_port grey_port; /* error diffusion: the band is drawn as GREY8 */
     const stp_port *drawn = port;
     uint32_t y0, polygons = 0;
-    int background_style;
+    paint background_style;
     stp_hidden hidden;
     stp_output default_output;
     if (output == 0) {
@@ -703,7 +709,7 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
         int c;
         background_style = STP_COLOUR_FLAG;
         for (c = 0; c < 3; c++)
-            background_style |= (stp_intensity_index(output->background_colour[c], r->levels) - 1)
+            background_style |= (paint)(stp_intensity_index(output->background_colour[c], r->levels) - 1)
                                 << (16 - 8 * c);
     }
     /* port.h: STYLE8 without a table holds 0 where nothing is drawn and the
@@ -715,7 +721,7 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
     (void)polygons; /* read only by the painter's sort */
 #if STP_WITH_PAINTER
     if (hidden == STP_HIDDEN_PAINTER)
-        sort_entries(mem->sort, polygons);
+        sort_entries(mem->sort, (size_t)polygons);
 #endif
 
     for (y0 = 0; y0 < r->height; y0 += mem->band_rows) {
@@ -731,7 +737,7 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
         }
 #if STP_WITH_ZBUFFER
         if (hidden == STP_HIDDEN_ZBUFFER) {
-            size_t i, n = (size_t)r->width * fr.rows;
+            size_t i, n = (size_t)r->width * (size_t)fr.rows;
             for (i = 0; i < n; i++)
                 fr.zbuf[i] = 0; /* farther than any polygon (they map to >= 1) */
         }

@@ -725,7 +725,7 @@ static void patch_normal(const stp_raytracer *rt, const stp_rt_object *ob, const
     const int32_t *a = (const int32_t *)&pts[0];
     int k, best = 1;
     int64_t best_min = INT64_MIN, w[3] = {0, 0, 0}, sum[3];
-    for (k = 1; k + 1 < ob->count; k++) {
+    for (k = 1; (uint32_t)k + 1u < ob->count; k++) {
         const int32_t *b = (const int32_t *)&pts[k], *c = (const int32_t *)&pts[k + 1];
         int64_t e[3], area, m;
         int q;

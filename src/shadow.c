@@ -99,9 +99,9 @@ int stp_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count
         light >= r->user_lighting.count || width < 1 || height < 1 || width > 32767 ||
         height > 32767)
         return STP_ERR_ARG;
-    texels = (size_t)width * height;
-    if (count < texels)
+    if ((uint64_t)width * height > count) /* in 64 bits: size_t may be 16 */
         return STP_ERR_MEMORY;
+    texels = (size_t)width * (size_t)height;
     built = r->shadow[light];
     sm = &built;
     {
@@ -444,7 +444,7 @@ void stp_shadow_polygon(const stp_renderer *r, uint32_t at, stp_shadow_poly *sp)
     const stp_instr *v = &r->df[at];
     uint32_t first = at, k;
     int64_t fixed, kmax = 0, a = 0, b = 0, c = 0, sx = 0, sy = 0, sk = 0;
-    int n = v[0].op, i, found = 0;
+    int n = (int)v[0].op, i, found = 0; /* a vertex count */
     sp->count = 0;
     sp->tested = 0;
     /* the records: just before the header, the first with x < 0 */

@@ -13,6 +13,8 @@
 
 #include "options.h"
 #include "scene_prepare.h"
+#include "static_order.h"
+#include "stp_scene_data.h"
 #include "scene_util.h"
 
 /* The scene is prepared as stp_tool_render prepares it (scene_prepare.h:
@@ -223,6 +225,30 @@ static void write_config(writer *w, const plan *p, const stp_tool_options *opt)
     out(w, "\n#endif\n");
 }
 
+/* The halftone cell as a value (no cell construction on the chip) and the
+ * gamma table, when there is one. */
+static void write_cell_gamma(writer *w, const plan *p, const stp_tool_options *opt)
+{
+    int k;
+    out(w, "static const stp_cell cell = {%d, %d, %d, {", p->cell.kind, p->cell.width,
+        p->cell.height);
+    for (k = 0; k < (p->cell.mask ? 1 : p->cell.width * p->cell.height); k++)
+        out(w, "%s%d", k ? ", " : "", p->cell.mask ? 0 : p->cell.thresholds[k]);
+    out(w, "}, {");
+    for (k = 0; k < 5; k++)
+        out(w, "%s%d", k ? ", " : "", p->cell.patterns[k]);
+    /* a mask cell names its const data: the core's blue noise is the one
+     * the options can ask for */
+    out(w, "}, %s};\n\n", p->cell.mask == stp_cell_blue_noise_64 ? "stp_cell_blue_noise_64" : "0");
+
+    if (p->has_gamma) {
+        out(w, "static const uint8_t gamma[%d] = {", opt->levels);
+        for (k = 0; k < opt->levels; k++)
+            out(w, "%s%d", k ? ", " : "", p->gamma[k]);
+        out(w, "};\n\n");
+    }
+}
+
 static void write_source(writer *w, const stp_scene *scene, const plan *p,
                          const stp_tool_options *opt)
 {
@@ -244,7 +270,7 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
         STP_FIX_FRAC_BITS, STP_FIX_FRAC_BITS, p->lighting.count < 1 ? 1 : p->lighting.count,
         p->max_vertices);
 
-    out(w, "static const stp_vec3 vertices[%lu] = {\n", p->vertex_count);
+    out(w, "static const stp_vec3 vertices[%lu] STP_SCENE_ROM = {\n", p->vertex_count);
     for (i = 0; i < scene->polygon_count; i++) {
         const stp_scene_polygon *poly = &scene->polygons[i];
         for (k = 0; k < poly->count; k++) {
@@ -255,7 +281,7 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
     }
     out(w, "};\n\n");
 
-    out(w, "static const stp_scene_data_polygon polygons[%lu] = {\n",
+    out(w, "static const stp_scene_data_polygon polygons[%lu] STP_SCENE_ROM = {\n",
         (unsigned long)scene->polygon_count);
     for (i = 0; i < scene->polygon_count; i++) {
         const stp_scene_polygon *poly = &scene->polygons[i];
@@ -267,7 +293,7 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
     out(w, "};\n\n");
 
     out(w, "/* reflectivity, refraction, gloss, specular weight, colour */\n"
-           "static const stp_material materials[%lu] = {\n",
+           "static const stp_material materials[%lu] STP_SCENE_ROM = {\n",
         (unsigned long)p->material_count);
     for (j = 0; j < p->material_count; j++) {
         const stp_material *m = &p->materials[j];
@@ -277,23 +303,7 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
     }
     out(w, "};\n\n");
 
-    out(w, "static const stp_cell cell = {%d, %d, %d, {", p->cell.kind, p->cell.width,
-        p->cell.height);
-    for (k = 0; k < (p->cell.mask ? 1 : p->cell.width * p->cell.height); k++)
-        out(w, "%s%d", k ? ", " : "", p->cell.mask ? 0 : p->cell.thresholds[k]);
-    out(w, "}, {");
-    for (k = 0; k < 5; k++)
-        out(w, "%s%d", k ? ", " : "", p->cell.patterns[k]);
-    /* a mask cell names its const data: the core's blue noise is the one
-     * the options can ask for */
-    out(w, "}, %s};\n\n", p->cell.mask == stp_cell_blue_noise_64 ? "stp_cell_blue_noise_64" : "0");
-
-    if (p->has_gamma) {
-        out(w, "static const uint8_t gamma[%d] = {", opt->levels);
-        for (k = 0; k < opt->levels; k++)
-            out(w, "%s%d", k ? ", " : "", p->gamma[k]);
-        out(w, "};\n\n");
-    }
+    write_cell_gamma(w, p, opt);
 
     /* RAM: written by the core while the scene is entered and sorted */
     out(w, "static stp_instr display_file[%lu];\n", (unsigned long)capacity);
@@ -337,12 +347,130 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
         hidden_name(opt->hidden), p->has_gamma ? "gamma" : "0", (long)p->background);
 }
 
-int stp_tool_compile(const stp_scene *scene, const stp_tool_options *opt, FILE *c_out,
-                     FILE *h_out, char *err, size_t errlen)
+/* ---- static scenes: the display file entered on the host ---- */
+
+/* The scene entered through the host core exactly as the firmware's
+ * stp_scene_data_enter would (the same data, the same calls): *df receives
+ * the display file (malloc'ed, *used entries).  Returns 0, or -1 with err. */
+static int enter_on_host(const stp_scene *scene, const plan *p, const stp_tool_options *opt,
+                         stp_instr **df, uint32_t *used, char *err, size_t errlen)
+{
+    uint32_t capacity = p->stats.display_entries > 0 ? (uint32_t)p->stats.display_entries : 1;
+    stp_vec3 *vertices = malloc((p->vertex_count + 1) * sizeof *vertices);
+    stp_scene_data_polygon *polygons = malloc((scene->polygon_count + 1) * sizeof *polygons);
+    void *mem = malloc(stp_renderer_size());
+    stp_scene_data s;
+    stp_renderer *r;
+    size_t i, n = 0;
+    int k, status, result = -1;
+
+    *df = calloc(capacity, sizeof **df);
+    if (!vertices || !polygons || !mem || !*df) {
+        snprintf(err, errlen, "out of memory");
+        goto done;
+    }
+    for (i = 0; i < scene->polygon_count; i++) {
+        const stp_scene_polygon *poly = &scene->polygons[i];
+        for (k = 0; k < poly->count; k++)
+            vertices[n++] = fix3(scene->vertices[poly->first + (size_t)k]);
+        polygons[i].count = (uint16_t)poly->count;
+        polygons[i].material = (uint16_t)(poly->material >= 0 &&
+                                                  (size_t)poly->material < scene->material_count
+                                              ? p->material_map[poly->material]
+                                              : p->default_material);
+    }
+    memset(&s, 0, sizeof s);
+    s.width = (uint32_t)opt->width;
+    s.height = (uint32_t)opt->height;
+    s.levels = opt->levels;
+    s.shading = opt->shading ? 1 : 0;
+    s.backface_removal = opt->backface_removal ? 1 : 0;
+    s.view = p->view;
+    s.lighting = p->lighting;
+    s.materials = p->materials;
+    s.material_count = p->material_count;
+    s.vertices = vertices;
+    s.vertex_count = (uint32_t)p->vertex_count;
+    s.polygons = polygons;
+    s.polygon_count = (uint32_t)scene->polygon_count;
+    s.display_file = *df;
+    s.display_capacity = capacity;
+    status = stp_scene_data_enter(&s, mem, stp_renderer_size(), &r);
+    if (status != STP_OK) {
+        snprintf(err, errlen, "entering the scene: %s", stp_status_text(status));
+        goto done;
+    }
+    *used = stp_display_file_used(r);
+    result = 0;
+done:
+    free(vertices);
+    free(polygons);
+    free(mem);
+    if (result != 0) {
+        free(*df);
+        *df = 0;
+    }
+    return result;
+}
+
+/* The static scene's C source: the display file as const data (rodata:
+ * flash on a microcontroller), the cell, and stp_compiled_static. */
+static void write_static_source(writer *w, const plan *p, const stp_tool_options *opt,
+                                const stp_instr *df, uint32_t used, int asked_zbuffer)
+{
+    uint32_t i;
+    int fill_style = opt->levels < 16 ? opt->levels : 16; /* stp_renderer_create's */
+    uint32_t sort_count = (uint32_t)(p->stats.polygons_in - p->stats.polygons_skipped);
+    out(w, "/* Generated by `stipple compile --static`: a %dx%d scene entered on the host;\n"
+           " * display file %lu entries, played back with stp_playback_create.  Do not\n"
+           " * edit. */\n",
+        opt->width, opt->height, (unsigned long)used);
+    if (asked_zbuffer && opt->hidden == STP_HIDDEN_NONE)
+        out(w, "/* Hidden surfaces: the polygons are in a painter's order the host found to\n"
+               " * give the Z buffer's picture pixel for pixel; no Z buffer is needed. */\n");
+    else if (asked_zbuffer)
+        out(w, "/* Hidden surfaces: no painter's order gives the Z buffer's picture (cyclic\n"
+               " * overlap, or polygons sharing pixels both ways): the Z buffer stays. */\n");
+    out(w, "#include \"stp_scene_data.h\"\n\n");
+    out(w, "/* Device coordinates Q27.4; the shade field exists with STP_WITH_GOURAUD. */\n"
+           "#if STP_WITH_GOURAUD\n#define I(op, x, y, z, shade) {op, x, y, z, shade}\n"
+           "#else\n#define I(op, x, y, z, shade) {op, x, y, z}\n#endif\n\n");
+    out(w, "static const stp_instr display_file[%lu] = {\n", (unsigned long)used);
+    for (i = 0; i < used; i++) {
+#if STP_WITH_GOURAUD
+        long shade = (long)df[i].shade;
+#else
+        long shade = -1;
+#endif
+        out(w, "    I(%ld, %ld, %ld, %ld, %ld),\n", (long)df[i].op, (long)df[i].x, (long)df[i].y,
+            (long)df[i].z, shade);
+    }
+    out(w, "};\n\n");
+    write_cell_gamma(w, p, opt);
+    if (opt->hidden == STP_HIDDEN_PAINTER)
+        out(w, "static stp_sort_entry sort[%lu];\n\n", (unsigned long)(sort_count ? sort_count : 1));
+    out(w, "const stp_scene_static stp_compiled_static = {\n");
+    out(w, "    %d, %d, /* width, height */\n    %d, /* levels */\n    %d, /* fill style */\n",
+        opt->width, opt->height, opt->levels, fill_style);
+    out(w, "    display_file, %lu,\n", (unsigned long)used);
+    if (opt->hidden == STP_HIDDEN_PAINTER)
+        out(w, "    sort, %lu,\n", (unsigned long)(sort_count ? sort_count : 1));
+    else
+        out(w, "    0, 0,\n");
+    out(w, "    %s,\n    &cell,\n    %s,\n    %ld /* background */\n};\n",
+        hidden_name(opt->hidden), p->has_gamma ? "gamma" : "0", (long)p->background);
+}
+
+/* stp_tool_compile and stp_tool_compile_static: the C source of the scene's
+ * data or (is_static) of its host-entered display file, and the header. */
+static int compile(const stp_scene *scene, const stp_tool_options *opt, int is_static,
+                   FILE *c_out, FILE *h_out, char *err, size_t errlen)
 {
     plan p;
     writer wc, wh;
     stp_tool_prepared prep;
+    stp_instr *df = 0;
+    uint32_t used = 0;
     int result = -1;
 
     if (!scene || !opt) {
@@ -359,18 +487,57 @@ int stp_tool_compile(const stp_scene *scene, const stp_tool_options *opt, FILE *
     wc.failed = 0;
     wh.f = h_out;
     wh.failed = 0;
-    write_source(&wc, scene, &p, opt);
-    write_config(&wh, &p, opt);
+    if (is_static) {
+        stp_tool_options painter = *opt;
+        stp_instr *ordered = 0;
+        uint32_t ordered_used = 0;
+        int exact = 0;
+        if (enter_on_host(scene, &p, opt, &df, &used, err, errlen) != 0)
+            goto done;
+        /* a Z buffer only where no painter's order gives its picture */
+        if (opt->hidden == STP_HIDDEN_ZBUFFER) {
+            exact = stp_tool_static_order(df, used, (uint32_t)opt->width, (uint32_t)opt->height,
+                                          &ordered, &ordered_used);
+            if (exact < 0) {
+                snprintf(err, errlen, "out of memory");
+                goto done;
+            }
+        }
+        if (exact) {
+            free(df);
+            df = ordered;
+            used = ordered_used;
+            painter.hidden = STP_HIDDEN_NONE;
+        }
+        write_static_source(&wc, &p, &painter, df, used, opt->hidden == STP_HIDDEN_ZBUFFER);
+        write_config(&wh, &p, &painter);
+    } else {
+        write_source(&wc, scene, &p, opt);
+        write_config(&wh, &p, opt);
+    }
     if (wc.failed || wh.failed || (c_out && fflush(c_out) != 0) || (h_out && fflush(h_out) != 0)) {
         snprintf(err, errlen, "write error: %s", strerror(errno));
         goto done;
     }
     result = 0;
 done:
+    free(df);
     free(p.materials);
     free(p.material_map);
     stp_tool_prepared_free(&prep);
     return result;
+}
+
+int stp_tool_compile(const stp_scene *scene, const stp_tool_options *opt, FILE *c_out,
+                     FILE *h_out, char *err, size_t errlen)
+{
+    return compile(scene, opt, 0, c_out, h_out, err, errlen);
+}
+
+int stp_tool_compile_static(const stp_scene *scene, const stp_tool_options *opt, FILE *c_out,
+                            FILE *h_out, char *err, size_t errlen)
+{
+    return compile(scene, opt, 1, c_out, h_out, err, errlen);
 }
 
 /* ---- the subcommand ---- */
@@ -388,6 +555,9 @@ void stp_tool_compile_usage(FILE *to)
             "rendered to 1-bit (MONO1).\n"
             "\n"
             "  -o, --output FILE        the C source to write (required)\n"
+            "      --static             enter, shade, clip and project on the host: OUT.c\n"
+            "                           holds the display file as const data, for\n"
+            "                           stp_playback_create (stp_compiled_static)\n"
             "      --header FILE        the configuration header (default: OUT without .c,\n"
             "                           plus _config.h)\n"
             "      --scene-format KIND  nff, obj, off or ply (needed for '-')\n"
@@ -413,13 +583,14 @@ static FILE *open_tmp(const char *path, char *tmp, size_t tmplen)
     return fopen(tmp, "w");
 }
 
-enum { OPT_HEADER = STP_TOOL_OPT_COMMAND, OPT_SCENE_FORMAT };
+enum { OPT_HEADER = STP_TOOL_OPT_COMMAND, OPT_SCENE_FORMAT, OPT_STATIC };
 
 int stp_tool_compile_main(int argc, char **argv)
 {
     static const struct option own[] = {{"output", required_argument, 0, 'o'},
                                         {"header", required_argument, 0, OPT_HEADER},
                                         {"scene-format", required_argument, 0, OPT_SCENE_FORMAT},
+                                        {"static", no_argument, 0, OPT_STATIC},
                                         {"help", no_argument, 0, 'h'},
                                         {0, 0, 0, 0}};
     struct option longs[64];
@@ -430,7 +601,7 @@ int stp_tool_compile_main(int argc, char **argv)
     const char *c_path = 0, *h_path = 0, *scene_format = 0;
     char h_default[4096], c_tmp[4200], h_tmp[4200], err[512];
     FILE *cf = 0, *hf = 0;
-    int c, status = 1;
+    int c, status = 1, is_static = 0;
 
     stp_tool_options_default(&opt);
     stp_scene_options_default(&sopt);
@@ -455,6 +626,7 @@ int stp_tool_compile_main(int argc, char **argv)
                 return stp_tool_usage_error("compile", "bad --scene-format '%s' (nff, obj, off, "
                                                        "ply)", optarg);
             break;
+        case OPT_STATIC: is_static = 1; break;
         case 'h': stp_tool_compile_usage(stdout); return 0;
         default: return stp_tool_getopt_error("compile", c, argv);
         }
@@ -496,7 +668,7 @@ int stp_tool_compile_main(int argc, char **argv)
         fail("%s: %s", !cf ? c_path : h_path, strerror(errno));
         goto done;
     }
-    if (stp_tool_compile(&scene, &opt, cf, hf, err, sizeof err) != 0) {
+    if ((is_static ? stp_tool_compile_static : stp_tool_compile)(&scene, &opt, cf, hf, err, sizeof err) != 0) {
         fail("%s: %s", argv[optind], err);
         goto done;
     }

@@ -32,6 +32,11 @@ int stp_tool_compile(const stp_scene *scene, const stp_tool_options *opt, FILE *
 
 /* The `stipple compile` subcommand: argv[0] is "compile".  Returns the exit
  * status (0 done, 1 failure, 2 usage). */
+/* As stp_tool_compile, but c_out gets the static scene: the display file the
+ * host core entered, as const data (stp_scene_static, stp_compiled_static). */
+int stp_tool_compile_static(const stp_scene *scene, const stp_tool_options *opt, FILE *c_out,
+                            FILE *h_out, char *err, size_t errlen);
+
 int stp_tool_compile_main(int argc, char **argv);
 
 /* Its help text. */

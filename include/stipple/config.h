@@ -14,6 +14,10 @@
 
 #ifdef STP_CONFIG_HEADER
 #include STP_CONFIG_HEADER
+#elif defined(ARDUINO)
+/* The Arduino builder gives a library no -D of its own: the Arduino
+ * library's configuration is stipple_config.h in its src/ folder. */
+#include "stipple_config.h"
 #endif
 /* CMake's STP_CONFIG_HEADER option installs the header under this name and
  * passes -DSTP_USER_CONFIG=1 to the library and its consumers (stipple.pc,

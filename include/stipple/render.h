@@ -101,7 +101,7 @@ enum {
 #define STP_LIGHT_TERM_GREY (-1)
 #define STP_LIGHT_TERM_COLOUR (-2)
 
-#define STP_COLOUR_FLAG 0x01000000
+#define STP_COLOUR_FLAG ((int32_t)0x01000000)
 
 /* One display-file instruction: an opcode and a point.  x, y: device Q27.4;
  * z: depth key, larger = nearer (perspective: 2^30 * hither / z_view, in
@@ -144,13 +144,18 @@ typedef struct stp_renderer stp_renderer;
 /* Bytes a renderer object needs (its alignment is that of int64_t). */
 size_t stp_renderer_size(void);
 
-/* An upper bound of stp_renderer_size() known at compile time, for static
- * allocation without a heap (render.c checks the bound when it is built):
+/* stp_renderer_size() known at compile time, for static allocation without
+ * a heap (render.c checks the bound when it is built):
  *   static stp_renderer_storage storage;
- *   r = stp_renderer_create(&storage, sizeof storage, ...); */
+ *   r = stp_renderer_create(&storage, sizeof storage, ...);
+ * By default an upper bound from the configuration; a build that knows the
+ * exact size for its target and configuration defines it first (the
+ * firmware build measures it: firmware/renderer_bytes.cmake). */
+#ifndef STP_RENDERER_BYTES
 #define STP_RENDERER_BYTES                                                                      \
     (1024u + 32u * STP_MAX_SEGMENTS + (48u + 112u * STP_WITH_SHADOWS) * STP_MAX_LIGHTS + 64u + 44u * STP_VERTEX_CACHE +          \
      96u * (STP_MAX_POLYGON_VERTICES + 5u))
+#endif
 typedef union stp_renderer_storage {
     int64_t align_integer;
     void *align_pointer;

@@ -24,5 +24,6 @@
 #include "stipple/render.h"
 #include "stipple/colour.h"
 #include "stipple/raytrace.h"
+#include "stipple/playback.h"
 
 #endif

@@ -28,16 +28,33 @@ int stp_scene_data_enter(const stp_scene_data *s, void *mem, size_t mem_size,
         return status;
     v = s->vertices;
     for (i = 0; i < s->polygon_count; i++) {
+#ifdef STP_SCENE_ROM_COPY
+        /* the tables are in program memory: a record at a time into RAM */
+        stp_scene_data_polygon poly;
+        stp_material material;
+        stp_vec3 corners[STP_MAX_POLYGON_VERTICES];
+        const stp_scene_data_polygon *p = &poly;
+        const stp_material *m = &material;
+        const stp_vec3 *corner = corners;
+        STP_SCENE_ROM_COPY(&poly, &s->polygons[i], sizeof poly);
+        if (p->count > STP_MAX_POLYGON_VERTICES)
+            return STP_ERR_TOO_MANY_VERTICES;
+        STP_SCENE_ROM_COPY(corners, v, p->count * sizeof corners[0]);
+        if (p->material != last_material)
+            STP_SCENE_ROM_COPY(&material, &s->materials[p->material], sizeof material);
+#else
         const stp_scene_data_polygon *p = &s->polygons[i];
+        const stp_material *m = &s->materials[p->material];
+        const stp_vec3 *corner = v;
+#endif
         if (p->material != last_material) {
-            const stp_material *m = &s->materials[p->material];
             /* with shading off the material's reflectivity picks the style */
             if ((status = stp_set_object_shade(r, m)) != STP_OK ||
                 (status = stp_set_fill_style(r, stp_intensity_index(m->reflectivity, s->levels))) != STP_OK)
                 return status;
             last_material = p->material;
         }
-        status = stp_polygon(r, v, p->count);
+        status = stp_polygon(r, corner, p->count);
         v += p->count;
         if (status != STP_OK && status != STP_ERR_DEGENERATE)
             return status;

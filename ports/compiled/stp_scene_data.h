@@ -18,6 +18,19 @@
 #include <stdint.h>
 #include "stipple/stipple.h"
 
+/* Where the generated source keeps its vertex, polygon and material tables
+ * (STP_SCENE_ROM after the array's name).  Where const data is read in
+ * place, nothing; on an AVR, whose const data is otherwise copied into its
+ * few KB of SRAM at start-up, program memory, read a record at a time
+ * through STP_SCENE_ROM_COPY(dst, src, bytes). */
+#if defined(__AVR__)
+#include <avr/pgmspace.h>
+#define STP_SCENE_ROM PROGMEM
+#define STP_SCENE_ROM_COPY(dst, src, bytes) memcpy_P((dst), (src), (bytes))
+#else
+#define STP_SCENE_ROM
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -36,11 +49,11 @@ typedef struct stp_scene_data {
     int backface_removal;
     stp_view view;
     stp_lighting lighting;         /* world-space light positions */
-    const stp_material *materials; /* only the materials polygons use */
+    const stp_material *materials; /* only the materials polygons use (STP_SCENE_ROM) */
     uint32_t material_count;
-    const stp_vec3 *vertices;      /* world space */
+    const stp_vec3 *vertices;      /* world space (STP_SCENE_ROM) */
     uint32_t vertex_count;
-    const stp_scene_data_polygon *polygons;
+    const stp_scene_data_polygon *polygons; /* STP_SCENE_ROM */
     uint32_t polygon_count;
     stp_instr *display_file;       /* capacity: what the scene enters */
     uint32_t display_capacity;
@@ -54,6 +67,33 @@ typedef struct stp_scene_data {
 
 /* The generated source defines this one object. */
 extern const stp_scene_data stp_compiled_scene;
+
+/* A static scene (`stipple compile --static`): the display file entered on
+ * the host, as const data, played back by stp_playback_create's renderer. */
+typedef struct stp_scene_static {
+    uint32_t width, height;        /* the device size it was entered for */
+    int levels;                    /* INTENSITY levels */
+    int fill_style;                /* style in force before the first SHADE */
+    const stp_instr *display_file; /* used entries */
+    uint32_t display_used;
+    stp_sort_entry *sort;          /* painter only, else NULL */
+    uint32_t sort_count;
+    stp_hidden hidden;
+    const stp_cell *cell;
+    const uint8_t *gamma;
+    stp_fix background;
+} stp_scene_static;
+
+/* The generated source of a static scene defines this one object. */
+extern const stp_scene_static stp_compiled_static;
+
+/* The renderer over the scene's display file in mem (stp_renderer_size()
+ * bytes); *out receives it.  Returns STP_OK or STP_ERR_ARG. */
+int stp_scene_static_open(const stp_scene_static *scene, void *mem, size_t mem_size,
+                          stp_renderer **out);
+
+/* The output settings the static scene was compiled with. */
+void stp_scene_static_output(const stp_scene_static *scene, stp_output *out);
 
 /* Create the renderer in mem (stp_renderer_size() bytes) over the scene's
  * display file and enter the scene into segment 1, as stp_tool_render does

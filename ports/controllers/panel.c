@@ -1,20 +1,41 @@
 /* SPDX-License-Identifier: MIT */
-/* Packing and sequencing for the controllers of stp_panel.h. */
+/* Sequences, packing and addressing for the controllers of stp_panel.h:
+ * init/refresh/sleep sequences, row and page packing, SSD16xx RAM windows
+ * and memory-LCD line records.  Portable C99: no libc, no heap. */
 #include "stp_panel.h"
 
-int stp_panel_init(const stp_panel_controller *c, const stp_panel_bus *bus)
+/* The one walker over records and steps: init sequences, refresh and sleep
+ * sequences alike. */
+int stp_panel_run(const uint8_t *seq, uint16_t length, const stp_panel_bus *bus,
+                  stp_panel_step_fn step, void *step_ctx)
 {
     size_t at = 0;
-    while (at < c->init_length) {
-        size_t n = c->init[at];
+    while (at < length) {
+        size_t n = seq[at];
         int status;
-        if (n == 0 || n > c->init_length - at - 1u)
+        if (n == 0) {
+            /* a step: 0, op, arg low, arg high */
+            if (length - at < 4u || !step)
+                return -1;
+            status = step(step_ctx, seq[at + 1],
+                          (unsigned)seq[at + 2] | (unsigned)seq[at + 3] << 8);
+            if (status != 0)
+                return status;
+            at += 4u;
+            continue;
+        }
+        if (n > length - at - 1u)
             return -1;
-        if ((status = bus->command(bus->ctx, c->init + at + 1, n)) != 0)
+        if ((status = bus->command(bus->ctx, seq + at + 1, n)) != 0)
             return status;
         at += 1u + n;
     }
     return 0;
+}
+
+int stp_panel_init(const stp_panel_controller *c, const stp_panel_bus *bus)
+{
+    return stp_panel_run(c->init, c->init_length, bus, 0, 0);
 }
 
 size_t stp_panel_row_bytes(const stp_panel_controller *c, uint32_t width)
@@ -109,4 +130,69 @@ int stp_panel_send_mono_page(const stp_panel_controller *c, const stp_panel_bus 
         scratch[x] = (uint8_t)byte;
     }
     return bus->data(bus->ctx, scratch, width);
+}
+
+int stp_panel_window_counters_all(const stp_panel_controller *c, const stp_panel_bus *bus)
+{
+    uint8_t cmd[5];
+    int status;
+    uint32_t unit = c->column_unit ? c->column_unit : 1u;
+    uint32_t first = c->column_offset / unit;
+    uint32_t last = first + (c->width + unit - 1u) / unit - 1u;
+    uint32_t bottom = c->height - 1u;
+    cmd[0] = c->column_command;
+    cmd[1] = (uint8_t)first;
+    cmd[2] = (uint8_t)last;
+    if ((status = bus->command(bus->ctx, cmd, 3)) != 0)
+        return status;
+    cmd[0] = c->row_command;
+    cmd[1] = 0;
+    cmd[2] = 0;
+    cmd[3] = (uint8_t)(bottom & 0xFFu);
+    cmd[4] = (uint8_t)(bottom >> 8);
+    if ((status = bus->command(bus->ctx, cmd, 5)) != 0)
+        return status;
+    cmd[0] = c->x_counter_command;
+    cmd[1] = (uint8_t)first;
+    if ((status = bus->command(bus->ctx, cmd, 2)) != 0)
+        return status;
+    cmd[0] = c->y_counter_command;
+    cmd[1] = 0;
+    cmd[2] = 0;
+    if ((status = bus->command(bus->ctx, cmd, 3)) != 0)
+        return status;
+    cmd[0] = c->write_command;
+    return bus->command(bus->ctx, cmd, 1);
+}
+
+size_t stp_panel_line_record_bytes(const stp_panel_controller *c)
+{
+    return 1u + stp_panel_row_bytes(c, c->width) + c->line_trailer;
+}
+
+uint8_t stp_panel_line_mode(const stp_panel_controller *c, int hold, int vcom)
+{
+    uint8_t mode = hold ? c->line_hold_mode : c->line_write_mode;
+    return (uint8_t)(vcom ? mode | c->line_vcom_bit : mode);
+}
+
+static uint8_t reverse_bits(uint8_t v)
+{
+    uint8_t r = 0;
+    unsigned i;
+    for (i = 0; i < 8; i++)
+        r = (uint8_t)(r | (((v >> i) & 1u) << (7u - i)));
+    return r;
+}
+
+size_t stp_panel_line_record(const stp_panel_controller *c, uint32_t y, const uint8_t *mono,
+                             uint8_t *out)
+{
+    size_t n = stp_panel_row_bytes(c, c->width), i;
+    uint8_t address = (uint8_t)(c->line_first_address + y);
+    out[0] = c->line_address_reversed ? reverse_bits(address) : address;
+    stp_panel_pack_mono_row(c, mono, c->width, out + 1);
+    for (i = 0; i < c->line_trailer; i++)
+        out[1 + n + i] = 0;
+    return 1u + n + c->line_trailer;
 }

@@ -28,19 +28,26 @@
 
 /* records: a count, then the bytes of one SCS frame */
 static const uint8_t init_sequence[] = {
-    2, 0x20, 0x00 /* all clear (M2), VCOM low: the panel starts white */
+    STP_PANEL_CMD(0x20, 0x00) /* all clear (M2), VCOM low: the panel starts white */
 };
 
+/* No refresh sequence: the panel shows lines as they arrive. */
 const stp_panel_controller stp_panel_sharp_ls013b7dh03 = {
-    "LS013B7DH03", 128, 128, 0,
-    STP_PANEL_LINES, STP_PANEL_MONO_ROW_MSB_LEFT,
-    init_sequence, (uint16_t)sizeof init_sequence,
-    0, 0, 0,                  /* no column/row window */
-    0, 0, 0,                  /* no pages */
-    STP_PANEL_BUS_CS_HIGH | STP_PANEL_BUS_VCOM, 0, 1000000u, 0, /* SCS high, mode 0, 1 MHz */
-    0, 0, 0,                  /* no counters */
-    0x80, 0x40, 0x00,         /* write mode (M0), VCOM bit (M1), VCOM-only mode */
-    1, 1,                     /* address LSB first, row 0 = gate line 1 */
-    1, 1,                     /* 8 dummy bits after each line, 8 more at the end */
-    0, 0, 0, 0                /* the panel shows lines as they arrive */
+    .name = "LS013B7DH03",
+    .width = 128,
+    .height = 128,
+    .addressing = STP_PANEL_LINES,
+    .packing = STP_PANEL_MONO_ROW_MSB_LEFT,
+    .init = init_sequence,
+    .init_length = (uint16_t)sizeof init_sequence,
+    .bus_flags = STP_PANEL_BUS_CS_HIGH | STP_PANEL_BUS_VCOM, /* SCS active high */
+    .spi_mode = 0,
+    .spi_hz = 1000000u,
+    .line_write_mode = 0x80,      /* M0 */
+    .line_vcom_bit = 0x40,        /* M1 */
+    .line_hold_mode = 0x00,       /* VCOM only */
+    .line_address_reversed = 1,   /* the address goes out LSB first */
+    .line_first_address = 1,      /* row 0 = gate line 1 */
+    .line_trailer = 1,            /* 8 dummy bits after each line */
+    .write_trailer = 1            /* and 8 more at the end */
 };

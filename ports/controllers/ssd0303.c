@@ -12,32 +12,35 @@
 
 /* records: a count, then a command and its parameters (stp_panel.h) */
 static const uint8_t init_sequence[] = {
-    1, 0xAE,       /* display off while setting up */
-    2, 0x81, 0x2B, /* contrast */
-    1, 0xA1,       /* segment re-map, as the EVB wires the panel */
-    1, 0x40,       /* display start line 0 */
-    2, 0xD3, 0x00, /* display offset 0 */
-    2, 0xA8, 0x0F, /* multiplex ratio: 16 rows */
-    1, 0xA4,       /* show memory (not all on) */
-    1, 0xA6,       /* not inverted: a 1 bit lights the pixel */
-    1, 0xC8,       /* COM scan direction as the EVB wires the rows */
-    2, 0xD5, 0x72, /* display clock divider / oscillator */
-    2, 0xD8, 0x00, /* mono mode */
-    2, 0xD9, 0x22, /* pre-charge period */
-    2, 0xDA, 0x12, /* COM pin configuration */
-    2, 0xDB, 0x0F, /* VCOM deselect level */
-    2, 0xAD, 0x8B, /* DC-DC converter on */
-    1, 0xAF        /* display on */
+    STP_PANEL_CMD(0xAE),       /* display off while setting up */
+    STP_PANEL_CMD(0x81, 0x2B), /* contrast */
+    STP_PANEL_CMD(0xA1),       /* segment re-map, as the EVB wires the panel */
+    STP_PANEL_CMD(0x40),       /* display start line 0 */
+    STP_PANEL_CMD(0xD3, 0x00), /* display offset 0 */
+    STP_PANEL_CMD(0xA8, 0x0F), /* multiplex ratio: 16 rows */
+    STP_PANEL_CMD(0xA4),       /* show memory (not all on) */
+    STP_PANEL_CMD(0xA6),       /* not inverted: a 1 bit lights the pixel */
+    STP_PANEL_CMD(0xC8),       /* COM scan direction as the EVB wires the rows */
+    STP_PANEL_CMD(0xD5, 0x72), /* display clock divider / oscillator */
+    STP_PANEL_CMD(0xD8, 0x00), /* mono mode */
+    STP_PANEL_CMD(0xD9, 0x22), /* pre-charge period */
+    STP_PANEL_CMD(0xDA, 0x12), /* COM pin configuration */
+    STP_PANEL_CMD(0xDB, 0x0F), /* VCOM deselect level */
+    STP_PANEL_CMD(0xAD, 0x8B), /* DC-DC converter on */
+    STP_PANEL_CMD(0xAF)        /* display on */
 };
 
+/* The I2C firmware port reads no SPI facts, counters or line records. */
 const stp_panel_controller stp_panel_ssd0303 = {
-    "SSD0303", 96, 16, 36,
-    STP_PANEL_PAGES, STP_PANEL_MONO_COLUMN_LSB_TOP,
-    init_sequence, (uint16_t)sizeof init_sequence,
-    0, 0, 0,         /* no column/row window */
-    0xB0, 0x00, 0x10, /* page | p, column low | (c & 15), column high | (c >> 4) */
-    0, 0, 0, 0,      /* SPI facts: not used by the I2C firmware port */
-    0, 0, 0,         /* no counters */
-    0, 0, 0, 0, 0, 0, 0, /* no line records */
-    0, 0, 0, 0       /* no refresh or sleep sequence */
+    .name = "SSD0303",
+    .width = 96,
+    .height = 16,
+    .column_offset = 36,
+    .addressing = STP_PANEL_PAGES,
+    .packing = STP_PANEL_MONO_COLUMN_LSB_TOP,
+    .init = init_sequence,
+    .init_length = (uint16_t)sizeof init_sequence,
+    .page_command = 0xB0,       /* page | p */
+    .column_low_command = 0x00, /* column low | (c & 15) */
+    .column_high_command = 0x10 /* column high | (c >> 4) */
 };

@@ -23,70 +23,69 @@
  * A 122-pixel row fills 16 RAM bytes; the 6 pad bits are sent white. */
 #include "stp_panel.h"
 
-#define WAIT(ms) 0, STP_PANEL_STEP_WAIT_READY, (uint8_t)((ms) & 0xFF), (uint8_t)((ms) >> 8)
-
-/* records: a count, then a command and its parameters; count 0: a step */
 static const uint8_t init_122x250[] = {
-    0, STP_PANEL_STEP_RESET, 10, 0, /* RES# low 10 ms */
-    0, STP_PANEL_STEP_DELAY, 10, 0,
-    WAIT(2000),
-    1, 0x12,                  /* SWRESET */
-    WAIT(2000),
-    4, 0x01, 0xF9, 0x00, 0x00, /* driver output control: 250 gates, G0 first */
-    2, 0x11, 0x03,            /* data entry: X+, Y+, X first */
-    2, 0x3C, 0x05,            /* border waveform */
-    3, 0x21, 0x00, 0x80,      /* display update control 1 */
-    2, 0x18, 0x80,            /* internal temperature sensor */
-    WAIT(2000)
+    STP_PANEL_RESET(10),                 /* RES# low 10 ms */
+    STP_PANEL_DELAY(10),
+    STP_PANEL_WAIT_READY(2000),
+    STP_PANEL_CMD(0x12),                 /* SWRESET */
+    STP_PANEL_WAIT_READY(2000),
+    STP_PANEL_CMD(0x01, 0xF9, 0x00, 0x00), /* driver output control: 250 gates, G0 first */
+    STP_PANEL_CMD(0x11, 0x03),           /* data entry: X+, Y+, X first */
+    STP_PANEL_CMD(0x3C, 0x05),           /* border waveform */
+    STP_PANEL_CMD(0x21, 0x00, 0x80),     /* display update control 1 */
+    STP_PANEL_CMD(0x18, 0x80),           /* internal temperature sensor */
+    STP_PANEL_WAIT_READY(2000)
 };
 
 static const uint8_t init_128x296[] = {
-    0, STP_PANEL_STEP_RESET, 10, 0,
-    0, STP_PANEL_STEP_DELAY, 10, 0,
-    WAIT(2000),
-    1, 0x12,
-    WAIT(2000),
-    4, 0x01, 0x27, 0x01, 0x00, /* driver output control: 296 gates, G0 first */
-    2, 0x11, 0x03,
-    2, 0x3C, 0x05,
-    3, 0x21, 0x00, 0x80,
-    2, 0x18, 0x80,
-    WAIT(2000)
+    STP_PANEL_RESET(10),
+    STP_PANEL_DELAY(10),
+    STP_PANEL_WAIT_READY(2000),
+    STP_PANEL_CMD(0x12),
+    STP_PANEL_WAIT_READY(2000),
+    STP_PANEL_CMD(0x01, 0x27, 0x01, 0x00), /* driver output control: 296 gates, G0 first */
+    STP_PANEL_CMD(0x11, 0x03),
+    STP_PANEL_CMD(0x3C, 0x05),
+    STP_PANEL_CMD(0x21, 0x00, 0x80),
+    STP_PANEL_CMD(0x18, 0x80),
+    STP_PANEL_WAIT_READY(2000)
 };
 
 static const uint8_t refresh_sequence[] = {
-    2, 0x22, 0xF7,            /* display update control 2: full update */
-    1, 0x20,                  /* master activation */
-    WAIT(15000)               /* BUSY high while the waveform runs */
+    STP_PANEL_CMD(0x22, 0xF7),           /* display update control 2: full update */
+    STP_PANEL_CMD(0x20),                 /* master activation */
+    STP_PANEL_WAIT_READY(15000)          /* BUSY high while the waveform runs */
 };
 
 static const uint8_t sleep_sequence[] = {
-    WAIT(2000),               /* never a command while BUSY (after a failed refresh) */
-    2, 0x10, 0x01             /* deep sleep mode 1 (RAM kept) */
+    STP_PANEL_WAIT_READY(2000),          /* never a command while BUSY (after a failed refresh) */
+    STP_PANEL_CMD(0x10, 0x01)            /* deep sleep mode 1 (RAM kept) */
 };
 
+/* What the two glass sizes share: the bus, the RAM window and counter
+ * commands (X in bytes of 8 pixels), the refresh and the sleep. */
+#define SSD1680_COMMON                                                                          \
+    .name = "SSD1680", .addressing = STP_PANEL_WINDOW_COUNTERS,                                 \
+    .packing = STP_PANEL_MONO_ROW_MSB_LEFT,                                                     \
+    .column_command = 0x44, .row_command = 0x45, .column_unit = 8,                              \
+    .bus_flags = STP_PANEL_BUS_DC | STP_PANEL_BUS_PARAMS_AS_DATA | STP_PANEL_BUS_BUSY,          \
+    .spi_mode = 0, .spi_hz = 4000000u,                                                          \
+    .x_counter_command = 0x4E, .y_counter_command = 0x4F, .write_command = 0x24 /* B/W RAM */, \
+    .refresh = refresh_sequence, .refresh_length = (uint16_t)sizeof refresh_sequence,           \
+    .sleep = sleep_sequence, .sleep_length = (uint16_t)sizeof sleep_sequence
+
 const stp_panel_controller stp_panel_ssd1680 = {
-    "SSD1680", 122, 250, 0,
-    STP_PANEL_WINDOW_COUNTERS, STP_PANEL_MONO_ROW_MSB_LEFT,
-    init_122x250, (uint16_t)sizeof init_122x250,
-    0x44, 0x45, 8,            /* RAM X window in bytes, RAM Y window */
-    0, 0, 0,                  /* no pages */
-    STP_PANEL_BUS_DC | STP_PANEL_BUS_PARAMS_AS_DATA | STP_PANEL_BUS_BUSY, 0, 4000000u, 0,
-    0x4E, 0x4F, 0x24,         /* X and Y counters, write B/W RAM */
-    0, 0, 0, 0, 0, 0, 0,      /* no line records */
-    refresh_sequence, (uint16_t)sizeof refresh_sequence,
-    sleep_sequence, (uint16_t)sizeof sleep_sequence
+    SSD1680_COMMON,
+    .width = 122,
+    .height = 250,
+    .init = init_122x250,
+    .init_length = (uint16_t)sizeof init_122x250
 };
 
 const stp_panel_controller stp_panel_ssd1680_128x296 = {
-    "SSD1680", 128, 296, 0,
-    STP_PANEL_WINDOW_COUNTERS, STP_PANEL_MONO_ROW_MSB_LEFT,
-    init_128x296, (uint16_t)sizeof init_128x296,
-    0x44, 0x45, 8,
-    0, 0, 0,
-    STP_PANEL_BUS_DC | STP_PANEL_BUS_PARAMS_AS_DATA | STP_PANEL_BUS_BUSY, 0, 4000000u, 0,
-    0x4E, 0x4F, 0x24,
-    0, 0, 0, 0, 0, 0, 0,
-    refresh_sequence, (uint16_t)sizeof refresh_sequence,
-    sleep_sequence, (uint16_t)sizeof sleep_sequence
+    SSD1680_COMMON,
+    .width = 128,
+    .height = 296,
+    .init = init_128x296,
+    .init_length = (uint16_t)sizeof init_128x296
 };

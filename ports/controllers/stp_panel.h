@@ -70,6 +70,23 @@ typedef enum stp_panel_packing {
 #define STP_PANEL_STEP_WAIT_READY 2u /* wait until BUSY is released, at most arg ms */
 #define STP_PANEL_STEP_DELAY 3u      /* wait arg ms */
 
+/* Records for a sequence, counted by the preprocessor:
+ * STP_PANEL_CMD(0xD5, 0x80) is the record 2, 0xD5, 0x80 (a command and up
+ * to 15 parameters); STP_PANEL_RESET(ms), STP_PANEL_DELAY(ms) and
+ * STP_PANEL_WAIT_READY(ms) are the steps (ms 0..65535). */
+#define STP_PANEL_CMD(...) STP_PANEL_NARGS_(__VA_ARGS__), __VA_ARGS__
+#define STP_PANEL_NARGS_(...)                                                               \
+    STP_PANEL_16TH_(__VA_ARGS__, 16, 15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0)
+#define STP_PANEL_16TH_(a1, a2, a3, a4, a5, a6, a7, a8, a9, a10, a11, a12, a13, a14, a15,     \
+                        a16, n, ...)                                                          \
+    n
+#define STP_PANEL_STEP_(op, ms) 0, (op), (uint8_t)((ms) & 0xFFu), (uint8_t)(((ms) >> 8) & 0xFFu)
+#define STP_PANEL_RESET(ms) STP_PANEL_STEP_(STP_PANEL_STEP_RESET, ms)
+#define STP_PANEL_DELAY(ms) STP_PANEL_STEP_(STP_PANEL_STEP_DELAY, ms)
+#define STP_PANEL_WAIT_READY(ms) STP_PANEL_STEP_(STP_PANEL_STEP_WAIT_READY, ms)
+
+/* Written with designated initialisers: a field a controller does not use
+ * is left out, and is 0. */
 typedef struct stp_panel_controller {
     const char *name;
     uint16_t width, height;       /* visible pixels */
@@ -181,6 +198,25 @@ int stp_panel_send_mono_rows(const stp_panel_controller *c, const stp_panel_bus 
 int stp_panel_send_mono_page(const stp_panel_controller *c, const stp_panel_bus *bus,
                              uint32_t page, const uint8_t *pixels, size_t stride,
                              uint32_t width, uint8_t *scratch);
+
+/* PAGES controllers fed by bands of any height: a band row goes to the
+ * page it belongs to; a page the band holds whole is sent straight from the
+ * band, other rows are gathered in page_rows until the page's last row (or
+ * the panel's) has come.  width <= 8 * row_bytes; page_rows holds 8 rows of
+ * row_bytes, columns width bytes (the packed page). */
+typedef struct stp_panel_pages {
+    const stp_panel_controller *controller;
+    const stp_panel_bus *bus;
+    uint32_t width, height;
+    size_t row_bytes;
+    uint8_t *page_rows;
+    uint8_t *columns;
+} stp_panel_pages;
+
+/* Take rows [y0, y0 + rows) of a MONO1 picture (stride bytes apart), as a
+ * stp_port flush does.  Returns 0, or the bus error. */
+int stp_panel_pages_put(const stp_panel_pages *p, uint32_t y0, uint32_t rows,
+                        const uint8_t *pixels, size_t stride);
 
 /* WINDOW_COUNTERS controllers: set the RAM window to the visible area
  * (columns from column_offset), the counters to its first pixel, and send

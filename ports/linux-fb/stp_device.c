@@ -2,6 +2,7 @@
 /* Device specs onto the Linux ports (see stp_device.h).  STP_DEVICE_WITH_USB
  * and STP_DEVICE_WITH_GPIO say which optional pieces this build has. */
 #include "stp_device.h"
+#include "stp_error.h"
 
 #include <ctype.h>
 #include <stdarg.h>
@@ -48,28 +49,14 @@ typedef struct spec_parts {
     int keys;
 } spec_parts;
 
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (!err || errlen == 0)
-        return;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
-
 /* "device spec 'SPEC': " + the message */
 static void spec_err(char *err, size_t errlen, const char *spec, const char *fmt, ...)
 {
     va_list ap;
-    int n;
-    if (!err || errlen == 0)
-        return;
-    n = snprintf(err, errlen, "device spec '%.200s': ", spec);
-    if (n < 0 || (size_t)n >= errlen)
-        return;
+    char prefix[224];
+    snprintf(prefix, sizeof prefix, "device spec '%.200s': ", spec);
     va_start(ap, fmt);
-    vsnprintf(err + n, errlen - (size_t)n, fmt, ap);
+    stp_error_vset(err, errlen, prefix, fmt, ap);
     va_end(ap);
 }
 
@@ -487,7 +474,7 @@ stp_device *stp_device_open(const char *spec, const stp_device_options *opt_in, 
     else
         stp_device_options_default(&opt);
     if (!spec || !*spec) {
-        set_err(err, errlen, "device spec is empty (fb:/dev/fbN, usb:VID:PID, usb:class, "
+        stp_error_set(err, errlen, "device spec is empty (fb:/dev/fbN, usb:VID:PID, usb:class, "
                              "spi:/dev/spidevB.C,controller=NAME,...)");
         return NULL;
     }
@@ -499,7 +486,7 @@ stp_device *stp_device_open(const char *spec, const stp_device_options *opt_in, 
     s = malloc(sizeof *s);
     d = calloc(1, sizeof *d);
     if (!s || !d) {
-        set_err(err, errlen, "out of memory");
+        stp_error_set(err, errlen, "out of memory");
         free(s);
         free(d);
         return NULL;
@@ -556,7 +543,7 @@ const char *stp_device_error(const stp_device *d)
 int stp_device_finish(stp_device *d, char *err, size_t errlen)
 {
     if (!d) {
-        set_err(err, errlen, "no device");
+        stp_error_set(err, errlen, "no device");
         return -1;
     }
     if (d->finished)
@@ -572,7 +559,7 @@ int stp_device_finish(stp_device *d, char *err, size_t errlen)
 int stp_device_tick(stp_device *d, char *err, size_t errlen)
 {
     if (!d) {
-        set_err(err, errlen, "no device");
+        stp_error_set(err, errlen, "no device");
         return -1;
     }
     return d->spi ? stp_spipanel_vcom_tick(d->spi, err, errlen) : 0;

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Panel control lines through libgpiod v2 (see stp_gpio.h). */
 #include "stp_gpio.h"
+#include "stp_error.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -35,16 +36,6 @@ struct stp_gpio_panel {
     unsigned vcom_half_ms;
     struct gpiod_edge_event_buffer *events;
 };
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (!err || errlen == 0)
-        return;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 static int64_t now_ns(void)
 {
@@ -137,13 +128,13 @@ static int resolve(const char *spec, struct gpiod_chip **chip, unsigned *offset,
         int off;
         *chip = open_chip(s, (size_t)(colon - s));
         if (!*chip) {
-            set_err(err, errlen, "%s line '%s': no GPIO chip '%.*s' (%s)", role, spec,
+            stp_error_set(err, errlen, "%s line '%s': no GPIO chip '%.*s' (%s)", role, spec,
                     (int)(colon - s), s, strerror(errno ? errno : ENOENT));
             return -1;
         }
         off = find_offset(*chip, colon + 1);
         if (off < 0) {
-            set_err(err, errlen, "%s line '%s': no line '%s' on that chip", role, spec,
+            stp_error_set(err, errlen, "%s line '%s': no line '%s' on that chip", role, spec,
                     colon + 1);
             gpiod_chip_close(*chip);
             *chip = NULL;
@@ -175,7 +166,7 @@ static int resolve(const char *spec, struct gpiod_chip **chip, unsigned *offset,
         }
         if (d)
             closedir(d);
-        set_err(err, errlen, "%s line '%s' not found on any GPIO chip", role, spec);
+        stp_error_set(err, errlen, "%s line '%s' not found on any GPIO chip", role, spec);
         return -1;
     }
 }
@@ -197,7 +188,7 @@ static int request_line(line *l, int role, const char *spec, const char *consume
         lc = gpiod_line_config_new();
         rc = gpiod_request_config_new();
         if (!ls || !lc || !rc) {
-            set_err(err, errlen, "%s line: out of memory", line_role[role]);
+            stp_error_set(err, errlen, "%s line: out of memory", line_role[role]);
             break;
         }
         gpiod_line_settings_set_active_low(ls, active_low);
@@ -217,7 +208,7 @@ static int request_line(line *l, int role, const char *spec, const char *consume
                 rcode = 0;
         }
         if (rcode != 0 && (role != L_BUSY || tries == 1))
-            set_err(err, errlen, "%s line '%s' (offset %u): cannot request it: %s",
+            stp_error_set(err, errlen, "%s line '%s' (offset %u): cannot request it: %s",
                     line_role[role], spec, l->offset, strerror(errno));
         gpiod_line_settings_free(ls);
         gpiod_line_config_free(lc);
@@ -237,7 +228,7 @@ stp_gpio_panel *stp_gpio_panel_open(const stp_gpio_panel_config *cfg, char *err,
     const char *specs[L_COUNT];
     int i;
     if (!cfg) {
-        set_err(err, errlen, "no GPIO configuration");
+        stp_error_set(err, errlen, "no GPIO configuration");
         return NULL;
     }
     specs[L_RESET] = cfg->reset;
@@ -248,7 +239,7 @@ stp_gpio_panel *stp_gpio_panel_open(const stp_gpio_panel_config *cfg, char *err,
     specs[L_VCOM] = cfg->vcom;
     p = calloc(1, sizeof *p);
     if (!p) {
-        set_err(err, errlen, "out of memory");
+        stp_error_set(err, errlen, "out of memory");
         return NULL;
     }
     pthread_mutex_init(&p->lock, NULL);
@@ -261,7 +252,7 @@ stp_gpio_panel *stp_gpio_panel_open(const stp_gpio_panel_config *cfg, char *err,
         }
     p->events = gpiod_edge_event_buffer_new(16);
     if (!p->events) {
-        set_err(err, errlen, "out of memory");
+        stp_error_set(err, errlen, "out of memory");
         stp_gpio_panel_close(p);
         return NULL;
     }
@@ -272,13 +263,13 @@ static int set_line(stp_gpio_panel *p, int role, int active, char *err, size_t e
 {
     line *l = &p->lines[role];
     if (!l->req) {
-        set_err(err, errlen, "no %s line configured", line_role[role]);
+        stp_error_set(err, errlen, "no %s line configured", line_role[role]);
         return -1;
     }
     if (gpiod_line_request_set_value(l->req, l->offset,
                                      active ? GPIOD_LINE_VALUE_ACTIVE : GPIOD_LINE_VALUE_INACTIVE)
         != 0) {
-        set_err(err, errlen, "%s line: cannot set it: %s", line_role[role], strerror(errno));
+        stp_error_set(err, errlen, "%s line: cannot set it: %s", line_role[role], strerror(errno));
         return -1;
     }
     return 0;
@@ -319,7 +310,7 @@ int stp_gpio_panel_wait_ready(stp_gpio_panel *p, unsigned timeout_ms, char *err,
         return -1;
     l = &p->lines[L_BUSY];
     if (!l->req) {
-        set_err(err, errlen, "no busy line configured");
+        stp_error_set(err, errlen, "no busy line configured");
         return -1;
     }
     deadline = now_ns() + (int64_t)timeout_ms * 1000000;
@@ -327,24 +318,24 @@ int stp_gpio_panel_wait_ready(stp_gpio_panel *p, unsigned timeout_ms, char *err,
         enum gpiod_line_value v = gpiod_line_request_get_value(l->req, l->offset);
         int64_t left;
         if (v == GPIOD_LINE_VALUE_ERROR) {
-            set_err(err, errlen, "busy line: cannot read it: %s", strerror(errno));
+            stp_error_set(err, errlen, "busy line: cannot read it: %s", strerror(errno));
             return -1;
         }
         if (v == GPIOD_LINE_VALUE_INACTIVE)
             return 0;
         left = deadline - now_ns();
         if (left <= 0) {
-            set_err(err, errlen, "panel still busy after %u ms", timeout_ms);
+            stp_error_set(err, errlen, "panel still busy after %u ms", timeout_ms);
             return -1;
         }
         if (l->edges) {
             int r = gpiod_line_request_wait_edge_events(l->req, left);
             if (r < 0) {
-                set_err(err, errlen, "busy line: waiting for an edge: %s", strerror(errno));
+                stp_error_set(err, errlen, "busy line: waiting for an edge: %s", strerror(errno));
                 return -1;
             }
             if (r > 0 && gpiod_line_request_read_edge_events(l->req, p->events, 16) < 0) {
-                set_err(err, errlen, "busy line: reading edges: %s", strerror(errno));
+                stp_error_set(err, errlen, "busy line: reading edges: %s", strerror(errno));
                 return -1;
             }
         } else {
@@ -410,11 +401,11 @@ int stp_gpio_panel_vcom_start(stp_gpio_panel *p, unsigned hz, char *err, size_t 
     if (!p)
         return -1;
     if (!p->lines[L_VCOM].req) {
-        set_err(err, errlen, "no vcom line configured");
+        stp_error_set(err, errlen, "no vcom line configured");
         return -1;
     }
     if (hz == 0 || hz > 500) {
-        set_err(err, errlen, "vcom: %u Hz out of range (1..500)", hz);
+        stp_error_set(err, errlen, "vcom: %u Hz out of range (1..500)", hz);
         return -1;
     }
     stp_gpio_panel_vcom_stop(p);
@@ -428,7 +419,7 @@ int stp_gpio_panel_vcom_start(stp_gpio_panel *p, unsigned hz, char *err, size_t 
         p->vcom_half_ms = 1;
     p->vcom_stop = 0;
     if (pthread_create(&p->vcom_thread, NULL, vcom_main, p) != 0) {
-        set_err(err, errlen, "vcom: cannot start the toggling thread");
+        stp_error_set(err, errlen, "vcom: cannot start the toggling thread");
         return -1;
     }
     p->vcom_running = 1;

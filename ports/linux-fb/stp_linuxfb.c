@@ -3,6 +3,7 @@
  * Linux fbdev port (see stp_linuxfb.h for the rules it follows).
  */
 #include "stp_linuxfb.h"
+#include "stp_error.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -42,16 +43,6 @@ struct stp_linuxfb {
 };
 
 /* ------------------------------------------------------------ messages */
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (!err || errlen == 0)
-        return;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 /* ------------------------------------------------------------ console */
 
@@ -116,14 +107,14 @@ static int vt_take(const char *tty, char *err, size_t errlen)
     if (g_vt_fd >= 0) {
         if (!explicit_tty)
             return 0;
-        set_err(err, errlen, "%s: the console is already held by another framebuffer", path);
+        stp_error_set(err, errlen, "%s: the console is already held by another framebuffer", path);
         return -1;
     }
     fd = open(path, O_RDWR | O_NOCTTY | O_CLOEXEC);
     if (fd < 0) {
         if (!explicit_tty)
             return 0;
-        set_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+        stp_error_set(err, errlen, "%s: cannot open: %s", path, strerror(errno));
         return -1;
     }
     if (ioctl(fd, KDGETMODE, &mode) != 0) {
@@ -131,7 +122,7 @@ static int vt_take(const char *tty, char *err, size_t errlen)
         close(fd);
         if (!explicit_tty)
             return 0;
-        set_err(err, errlen, "%s: not a virtual terminal (KDGETMODE: %s)", path, strerror(e));
+        stp_error_set(err, errlen, "%s: not a virtual terminal (KDGETMODE: %s)", path, strerror(e));
         return -1;
     }
     g_vt_fd = fd;
@@ -149,7 +140,7 @@ static int vt_take(const char *tty, char *err, size_t errlen)
             vt_release();
             if (!explicit_tty)
                 return 0;
-            set_err(err, errlen, "%s: KDSETMODE KD_GRAPHICS: %s", path, strerror(e));
+            stp_error_set(err, errlen, "%s: KDSETMODE KD_GRAPHICS: %s", path, strerror(e));
             return -1;
         }
         g_vt_active = 1;
@@ -224,13 +215,13 @@ static int load_ramp(stp_linuxfb *fb, uint32_t len, const char *path, char *err,
     uint32_t i;
     int rc;
     if (len < 2 || len > 256) {
-        set_err(err, errlen, "%s: colour map of %u entries not supported", path, (unsigned)len);
+        stp_error_set(err, errlen, "%s: colour map of %u entries not supported", path, (unsigned)len);
         return -1;
     }
     (void)save_cmap(fb, len); /* not fatal: some drivers cannot read it */
     ramp = malloc(len * sizeof *ramp);
     if (!ramp) {
-        set_err(err, errlen, "%s: out of memory", path);
+        stp_error_set(err, errlen, "%s: out of memory", path);
         return -1;
     }
     for (i = 0; i < len; i++)
@@ -238,7 +229,7 @@ static int load_ramp(stp_linuxfb *fb, uint32_t len, const char *path, char *err,
     rc = put_cmap(fb, len, ramp, ramp, ramp);
     free(ramp);
     if (rc != 0) {
-        set_err(err, errlen, "%s: FBIOPUTCMAP (grey ramp of %u entries): %s", path,
+        stp_error_set(err, errlen, "%s: FBIOPUTCMAP (grey ramp of %u entries): %s", path,
                 (unsigned)len, strerror(errno));
         return -1;
     }
@@ -252,7 +243,7 @@ static int static_map(stp_linuxfb *fb, const char *path, char *err, size_t errle
     struct fb_cmap cm;
     uint16_t *mem = calloc((size_t)len * 3u, sizeof(uint16_t));
     if (!mem) {
-        set_err(err, errlen, "%s: out of memory", path);
+        stp_error_set(err, errlen, "%s: out of memory", path);
         return -1;
     }
     memset(&cm, 0, sizeof cm);
@@ -261,7 +252,7 @@ static int static_map(stp_linuxfb *fb, const char *path, char *err, size_t errle
     cm.green = mem + len;
     cm.blue = mem + 2u * len;
     if (ioctl(fb->fd, FBIOGETCMAP, &cm) != 0) {
-        set_err(err, errlen, "%s: STATIC_PSEUDOCOLOR but FBIOGETCMAP failed: %s", path,
+        stp_error_set(err, errlen, "%s: STATIC_PSEUDOCOLOR but FBIOGETCMAP failed: %s", path,
                 strerror(errno));
         free(mem);
         return -1;
@@ -293,7 +284,7 @@ static int setup_format(stp_linuxfb *fb, const stp_linuxfb_options *opt, const c
     unsigned g;
 
     if (fb->fix.type != FB_TYPE_PACKED_PIXELS) {
-        set_err(err, errlen, "%s: unsupported framebuffer type %u (only packed pixels)", path,
+        stp_error_set(err, errlen, "%s: unsupported framebuffer type %u (only packed pixels)", path,
                 (unsigned)fb->fix.type);
         return -1;
     }
@@ -319,13 +310,13 @@ static int setup_format(stp_linuxfb *fb, const stp_linuxfb_options *opt, const c
                 return -1;
             fb->on_is_one = 1;
         } else {
-            set_err(err, errlen, "%s: unsupported 1 bpp visual %s", path, visual_name(visual));
+            stp_error_set(err, errlen, "%s: unsupported 1 bpp visual %s", path, visual_name(visual));
             return -1;
         }
         return 0;
     }
     if (bpp != 8 && bpp != 16 && bpp != 24 && bpp != 32) {
-        set_err(err, errlen, "%s: unsupported depth %u bits per pixel (visual %s)", path,
+        stp_error_set(err, errlen, "%s: unsupported depth %u bits per pixel (visual %s)", path,
                 (unsigned)bpp, visual_name(visual));
         return -1;
     }
@@ -352,7 +343,7 @@ static int setup_format(stp_linuxfb *fb, const stp_linuxfb_options *opt, const c
         for (i = 0; i < 4; i++) {
             if (f[i]->length > 0 &&
                 (f[i]->msb_right != 0 || f[i]->length > 16 || f[i]->offset + f[i]->length > bpp)) {
-                set_err(err, errlen,
+                stp_error_set(err, errlen,
                         "%s: unsupported %u bpp bitfields (red %u:%u green %u:%u blue %u:%u%s)",
                         path, (unsigned)bpp, (unsigned)v->red.offset, (unsigned)v->red.length,
                         (unsigned)v->green.offset, (unsigned)v->green.length,
@@ -362,7 +353,7 @@ static int setup_format(stp_linuxfb *fb, const stp_linuxfb_options *opt, const c
             }
         }
         if (v->red.length == 0 || v->green.length == 0 || v->blue.length == 0) {
-            set_err(err, errlen, "%s: %u bpp %s without colour bitfields", path, (unsigned)bpp,
+            stp_error_set(err, errlen, "%s: %u bpp %s without colour bitfields", path, (unsigned)bpp,
                     visual_name(visual));
             return -1;
         }
@@ -374,7 +365,7 @@ static int setup_format(stp_linuxfb *fb, const stp_linuxfb_options *opt, const c
             if (v->blue.length > len)
                 len = v->blue.length;
             if (len > 8) {
-                set_err(err, errlen, "%s: DIRECTCOLOR fields over 8 bits not supported", path);
+                stp_error_set(err, errlen, "%s: DIRECTCOLOR fields over 8 bits not supported", path);
                 return -1;
             }
             if (load_ramp(fb, 1u << len, path, err, errlen) != 0)
@@ -389,7 +380,7 @@ static int setup_format(stp_linuxfb *fb, const stp_linuxfb_options *opt, const c
                          (scale_level(g, v->blue.length) << v->blue.offset) | fb->transp_bits;
         return 0;
     }
-    set_err(err, errlen, "%s: unsupported visual %s at %u bpp", path, visual_name(visual),
+    stp_error_set(err, errlen, "%s: unsupported visual %s at %u bpp", path, visual_name(visual),
             (unsigned)bpp);
     return -1;
 }
@@ -556,7 +547,7 @@ stp_linuxfb *stp_linuxfb_open(const char *path, const stp_linuxfb_options *opt_i
     if (err && errlen)
         err[0] = '\0';
     if (!path) {
-        set_err(err, errlen, "no framebuffer device given");
+        stp_error_set(err, errlen, "no framebuffer device given");
         return NULL;
     }
     if (!opt) {
@@ -567,23 +558,23 @@ stp_linuxfb *stp_linuxfb_open(const char *path, const stp_linuxfb_options *opt_i
         page = 4096;
     fb = calloc(1, sizeof *fb);
     if (!fb) {
-        set_err(err, errlen, "%s: out of memory", path);
+        stp_error_set(err, errlen, "%s: out of memory", path);
         return NULL;
     }
     fb->fd = open(path, O_RDWR | O_CLOEXEC);
     if (fb->fd < 0) {
-        set_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+        stp_error_set(err, errlen, "%s: cannot open: %s", path, strerror(errno));
         free(fb);
         return NULL;
     }
     if (ioctl(fb->fd, FBIOGET_VSCREENINFO, &fb->var) != 0 ||
         ioctl(fb->fd, FBIOGET_FSCREENINFO, &fb->fix) != 0) {
-        set_err(err, errlen, "%s: not a framebuffer (FBIOGET_*SCREENINFO: %s)", path,
+        stp_error_set(err, errlen, "%s: not a framebuffer (FBIOGET_*SCREENINFO: %s)", path,
                 strerror(errno));
         goto fail;
     }
     if (fb->var.xres == 0 || fb->var.yres == 0 || fb->fix.line_length == 0) {
-        set_err(err, errlen, "%s: device reports an empty screen (%ux%u, line %u bytes)", path,
+        stp_error_set(err, errlen, "%s: device reports an empty screen (%ux%u, line %u bytes)", path,
                 (unsigned)fb->var.xres, (unsigned)fb->var.yres, (unsigned)fb->fix.line_length);
         goto fail;
     }
@@ -594,7 +585,7 @@ stp_linuxfb *stp_linuxfb_open(const char *path, const stp_linuxfb_options *opt_i
     if (fmt == STP_LINUXFB_FORMAT_AUTO)
         fmt = fb->kind == PACK_MONO ? STP_PIXEL_MONO1 : STP_PIXEL_GREY8;
     if (fmt != STP_PIXEL_MONO1 && fmt != STP_PIXEL_GREY8 && fmt != STP_PIXEL_RGB888) {
-        set_err(err, errlen, "%s: render format %d not supported (MONO1, GREY8 or RGB888)",
+        stp_error_set(err, errlen, "%s: render format %d not supported (MONO1, GREY8 or RGB888)",
                 path, fmt);
         goto fail;
     }
@@ -603,7 +594,7 @@ stp_linuxfb *stp_linuxfb_open(const char *path, const stp_linuxfb_options *opt_i
     fb->port.height = opt->height ? opt->height : fb->var.yres;
     if (fb->port.width > fb->var.xres || fb->port.height > fb->var.yres ||
         fb->port.width > 32767u || fb->port.height > 32767u) {
-        set_err(err, errlen, "%s: %ux%u does not fit the %ux%u screen (or exceeds 32767)", path,
+        stp_error_set(err, errlen, "%s: %ux%u does not fit the %ux%u screen (or exceeds 32767)", path,
                 (unsigned)fb->port.width, (unsigned)fb->port.height, (unsigned)fb->var.xres,
                 (unsigned)fb->var.yres);
         goto fail;
@@ -619,7 +610,7 @@ stp_linuxfb *stp_linuxfb_open(const char *path, const stp_linuxfb_options *opt_i
         size_t last = fb->base_off + (size_t)(fb->var.yres - 1u) * fb->line_length +
                       (((size_t)fb->var.xoffset + fb->var.xres) * fb->var.bits_per_pixel + 7u) / 8u;
         if (fb->mem_len == 0 || last > fb->mem_len) {
-            set_err(err, errlen,
+            stp_error_set(err, errlen,
                     "%s: visible area (%ux%u at +%u+%u, line %u bytes) outside the %lu bytes "
                     "of video memory", path, (unsigned)fb->var.xres, (unsigned)fb->var.yres,
                     (unsigned)fb->var.xoffset, (unsigned)fb->var.yoffset,
@@ -633,7 +624,7 @@ stp_linuxfb *stp_linuxfb_open(const char *path, const stp_linuxfb_options *opt_i
     fb->map = mmap(NULL, fb->map_len, PROT_READ | PROT_WRITE, MAP_SHARED, fb->fd, 0);
     if (fb->map == MAP_FAILED) {
         fb->map = NULL;
-        set_err(err, errlen, "%s: mmap of %lu bytes: %s", path, (unsigned long)fb->map_len,
+        stp_error_set(err, errlen, "%s: mmap of %lu bytes: %s", path, (unsigned long)fb->map_len,
                 strerror(errno));
         goto fail;
     }

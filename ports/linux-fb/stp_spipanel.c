@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* SPI panels through spidev (see stp_spipanel.h). */
 #include "stp_spipanel.h"
+#include "stp_error.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -51,25 +52,14 @@ static const struct {
     {"ssd1680-128x296", &stp_panel_ssd1680_128x296},
 };
 
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (!err || errlen == 0)
-        return;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
-
 /* p->error = "NAME on PATH: " + the message */
 static void panel_err(stp_spipanel *p, const char *fmt, ...)
 {
     va_list ap;
-    int n = snprintf(p->error, sizeof p->error, "%s on %s: ", p->c->name, p->path);
-    if (n < 0 || (size_t)n >= sizeof p->error)
-        return;
+    char prefix[sizeof p->error];
+    snprintf(prefix, sizeof prefix, "%s on %s: ", p->c->name, p->path);
     va_start(ap, fmt);
-    vsnprintf(p->error + n, sizeof p->error - (size_t)n, fmt, ap);
+    stp_error_vset(p->error, sizeof p->error, prefix, fmt, ap);
     va_end(ap);
 }
 
@@ -399,43 +389,43 @@ stp_spipanel *stp_spipanel_open(const char *path, const stp_panel_controller *c,
     else
         stp_spipanel_options_default(&opt);
     if (!path || !*path || !c) {
-        set_err(err, errlen, "spi: no device path or no controller");
+        stp_error_set(err, errlen, "spi: no device path or no controller");
         return NULL;
     }
     if (c->width == 0 || c->height == 0 || c->width > 32767 || c->height > 32767) {
-        set_err(err, errlen, "spi %s: controller %s: bad description", path, c->name);
+        stp_error_set(err, errlen, "spi %s: controller %s: bad description", path, c->name);
         return NULL;
     }
     /* SSD0303/SSD0323 are described for their firmware buses only */
     if (c->spi_hz == 0 || (c->addressing != STP_PANEL_PAGES && c->addressing != STP_PANEL_LINES &&
                            c->addressing != STP_PANEL_WINDOW_COUNTERS)) {
-        set_err(err, errlen, "spi %s: controller %s has no SPI description here", path, c->name);
+        stp_error_set(err, errlen, "spi %s: controller %s has no SPI description here", path, c->name);
         return NULL;
     }
     if (c->addressing == STP_PANEL_PAGES && c->packing != STP_PANEL_MONO_COLUMN_LSB_TOP) {
-        set_err(err, errlen, "spi %s: controller %s: pages need column packing", path, c->name);
+        stp_error_set(err, errlen, "spi %s: controller %s: pages need column packing", path, c->name);
         return NULL;
     }
     if (c->addressing != STP_PANEL_PAGES && c->packing != STP_PANEL_MONO_ROW_MSB_LEFT) {
-        set_err(err, errlen, "spi %s: controller %s: rows need 1-bit row packing", path, c->name);
+        stp_error_set(err, errlen, "spi %s: controller %s: rows need 1-bit row packing", path, c->name);
         return NULL;
     }
     if ((c->bus_flags & STP_PANEL_BUS_DC) && (!lines || !lines->dc)) {
-        set_err(err, errlen, "spi %s: controller %s needs a D/C line (dc=LINE)", path, c->name);
+        stp_error_set(err, errlen, "spi %s: controller %s needs a D/C line (dc=LINE)", path, c->name);
         return NULL;
     }
     if ((c->bus_flags & STP_PANEL_BUS_BUSY) && (!lines || !lines->wait_ready)) {
-        set_err(err, errlen, "spi %s: controller %s needs a BUSY line (busy=LINE)", path, c->name);
+        stp_error_set(err, errlen, "spi %s: controller %s needs a BUSY line (busy=LINE)", path, c->name);
         return NULL;
     }
     if (opt.speed_hz > 100000000u) {
-        set_err(err, errlen, "spi %s: speed %lu Hz out of range (1..100000000)", path,
+        stp_error_set(err, errlen, "spi %s: speed %lu Hz out of range (1..100000000)", path,
                 (unsigned long)opt.speed_hz);
         return NULL;
     }
     p = calloc(1, sizeof *p);
     if (!p) {
-        set_err(err, errlen, "spi %s: out of memory", path);
+        stp_error_set(err, errlen, "spi %s: out of memory", path);
         return NULL;
     }
     p->fd = -1;
@@ -455,7 +445,7 @@ stp_spipanel *stp_spipanel_open(const char *path, const stp_panel_controller *c,
     p->fd = open(path, O_RDWR | O_CLOEXEC);
     if (p->fd < 0) {
         int e = errno;
-        set_err(err, errlen, "spi %s: cannot open: %s%s", path, strerror(e),
+        stp_error_set(err, errlen, "spi %s: cannot open: %s%s", path, strerror(e),
                 e == ENOENT   ? " (is SPI enabled? Raspberry Pi: dtparam=spi=on)"
                 : e == EACCES ? " (join the group owning it, see ports/linux-fb/README.md)"
                               : "");
@@ -466,18 +456,18 @@ stp_spipanel *stp_spipanel_open(const char *path, const stp_panel_controller *c,
     if (c->bus_flags & STP_PANEL_BUS_CS_HIGH)
         mode = (uint8_t)(mode | SPI_CS_HIGH);
     if (ioctl(p->fd, SPI_IOC_WR_MODE, &mode) < 0) {
-        set_err(err, errlen, "spi %s: cannot set SPI mode %u%s: %s", path, (unsigned)(mode & 3u),
+        stp_error_set(err, errlen, "spi %s: cannot set SPI mode %u%s: %s", path, (unsigned)(mode & 3u),
                 (mode & SPI_CS_HIGH) ? " with chip select active high" : "", strerror(errno));
         stp_spipanel_close(p);
         return NULL;
     }
     if (ioctl(p->fd, SPI_IOC_WR_BITS_PER_WORD, &bits) < 0) {
-        set_err(err, errlen, "spi %s: cannot set 8 bits per word: %s", path, strerror(errno));
+        stp_error_set(err, errlen, "spi %s: cannot set 8 bits per word: %s", path, strerror(errno));
         stp_spipanel_close(p);
         return NULL;
     }
     if (ioctl(p->fd, SPI_IOC_WR_MAX_SPEED_HZ, &p->speed_hz) < 0) {
-        set_err(err, errlen, "spi %s: cannot set %lu Hz: %s", path, (unsigned long)p->speed_hz,
+        stp_error_set(err, errlen, "spi %s: cannot set %lu Hz: %s", path, (unsigned long)p->speed_hz,
                 strerror(errno));
         stp_spipanel_close(p);
         return NULL;
@@ -495,7 +485,7 @@ stp_spipanel *stp_spipanel_open(const char *path, const stp_panel_controller *c,
             bufsize = c->width;
     }
     if (p->max_transfer < need) {
-        set_err(err, errlen,
+        stp_error_set(err, errlen,
                 "spi %s: messages of %zu bytes cannot hold one %s line write (%zu bytes)", path,
                 p->max_transfer, c->name, need);
         stp_spipanel_close(p);
@@ -508,7 +498,7 @@ stp_spipanel *stp_spipanel_open(const char *path, const stp_panel_controller *c,
         p->frame = calloc(c->height, stp_panel_row_bytes(c, c->width));
     if (!p->buf || (c->addressing == STP_PANEL_PAGES && !p->page) ||
         (c->addressing == STP_PANEL_WINDOW_COUNTERS && !p->frame)) {
-        set_err(err, errlen, "spi %s: out of memory", path);
+        stp_error_set(err, errlen, "spi %s: out of memory", path);
         stp_spipanel_close(p);
         return NULL;
     }
@@ -519,7 +509,7 @@ stp_spipanel *stp_spipanel_open(const char *path, const stp_panel_controller *c,
     p->port.user = p;
 
     if (run_sequence(p, c->init, c->init_length, "init") != 0) {
-        set_err(err, errlen, "%s", p->error);
+        stp_error_set(err, errlen, "%s", p->error);
         p->c = NULL; /* no sleep sequence for a panel that did not start */
         stp_spipanel_close(p);
         return NULL;
@@ -555,13 +545,13 @@ int stp_spipanel_vcom_tick(stp_spipanel *p, char *err, size_t errlen)
     msg[0] = '\0';
     if (p->lines.vcom_toggle) {
         if (p->lines.vcom_toggle(p->lines.ctx, msg, sizeof msg) < 0) {
-            set_err(err, errlen, "%s on %s: vcom line: %s", p->c->name, p->path, msg);
+            stp_error_set(err, errlen, "%s on %s: vcom line: %s", p->c->name, p->path, msg);
             return -1;
         }
         return 0;
     }
     if (p->max_transfer < 1u + p->c->write_trailer) {
-        set_err(err, errlen, "%s on %s: messages too small for a VCOM command", p->c->name,
+        stp_error_set(err, errlen, "%s on %s: messages too small for a VCOM command", p->c->name,
                 p->path);
         return -1;
     }
@@ -573,7 +563,7 @@ int stp_spipanel_vcom_tick(stp_spipanel *p, char *err, size_t errlen)
     snprintf(p->stage, sizeof p->stage, "vcom");
     fill_transfer(p, &x, p->buf, n);
     if (spi_message(p, &x, 1, n, "a VCOM command") != 0) {
-        set_err(err, errlen, "%s", p->error);
+        stp_error_set(err, errlen, "%s", p->error);
         return -1;
     }
     return 0;

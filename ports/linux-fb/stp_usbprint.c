@@ -3,6 +3,7 @@
  * USB ESC/POS printer port (see stp_usbprint.h).
  */
 #include "stp_usbprint.h"
+#include "stp_error.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -24,16 +25,6 @@ struct stp_usbprint {
     size_t buf_size;
     char error[256];
 };
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (!err || errlen == 0)
-        return;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 void stp_usbprint_options_default(stp_usbprint_options *opt)
 {
@@ -67,19 +58,19 @@ static int fail_job(stp_usbprint *p, char *err, size_t errlen, const char *fmt, 
     va_list ap;
     if (!p->released) {
         va_start(ap, fmt);
-        vsnprintf(p->error, sizeof p->error, fmt, ap);
+        stp_error_vset(p->error, sizeof p->error, NULL, fmt, ap);
         va_end(ap);
         p->released = 1;
         release_device(p);
     }
-    set_err(err, errlen, "%s", p->error);
+    stp_error_set(err, errlen, "%s", p->error);
     return -1;
 }
 
 static int usable(stp_usbprint *p, char *err, size_t errlen)
 {
     if (p->released || !p->handle) {
-        set_err(err, errlen, "printer released: %s", p->error[0] ? p->error : "closed");
+        stp_error_set(err, errlen, "printer released: %s", p->error[0] ? p->error : "closed");
         return 0;
     }
     return 1;
@@ -170,26 +161,26 @@ stp_usbprint *stp_usbprint_open(const stp_usbprint_options *opt_in, char *err, s
         stp_usbprint_options_default(&opt);
     if (opt.width == 0 || opt.height == 0 || opt.width > 32767 || opt.height > 32767 ||
         (opt.width + 7) / 8 > 65535u || opt.chunk_size == 0 || opt.chunk_size > (1u << 20)) {
-        set_err(err, errlen, "usb printer: bad options (size %ux%u, chunk %lu)",
+        stp_error_set(err, errlen, "usb printer: bad options (size %ux%u, chunk %lu)",
                 (unsigned)opt.width, (unsigned)opt.height, (unsigned long)opt.chunk_size);
         return NULL;
     }
     p = calloc(1, sizeof *p);
     if (!p) {
-        set_err(err, errlen, "usb printer: out of memory");
+        stp_error_set(err, errlen, "usb printer: out of memory");
         return NULL;
     }
     p->opt = opt;
     p->iface = -1;
     rc = libusb_init(&p->ctx);
     if (rc != 0) {
-        set_err(err, errlen, "usb printer: libusb_init: %s", libusb_strerror(rc));
+        stp_error_set(err, errlen, "usb printer: libusb_init: %s", libusb_strerror(rc));
         free(p);
         return NULL;
     }
     n = libusb_get_device_list(p->ctx, &list);
     if (n < 0) {
-        set_err(err, errlen, "usb printer: cannot list USB devices: %s", libusb_strerror((int)n));
+        stp_error_set(err, errlen, "usb printer: cannot list USB devices: %s", libusb_strerror((int)n));
         goto fail;
     }
     by_id = opt.vendor_id != 0 || opt.product_id != 0;
@@ -207,21 +198,21 @@ stp_usbprint *stp_usbprint_open(const stp_usbprint_options *opt_in, char *err, s
             found = list[i];
         libusb_free_config_descriptor(cfg);
         if (by_id && !found) {
-            set_err(err, errlen, "usb printer %04x:%04x has no bulk OUT endpoint",
+            stp_error_set(err, errlen, "usb printer %04x:%04x has no bulk OUT endpoint",
                     opt.vendor_id, opt.product_id);
             goto fail;
         }
     }
     if (!found) {
         if (by_id)
-            set_err(err, errlen, "usb printer %04x:%04x not found", opt.vendor_id, opt.product_id);
+            stp_error_set(err, errlen, "usb printer %04x:%04x not found", opt.vendor_id, opt.product_id);
         else
-            set_err(err, errlen, "no USB printer (class 7 with a bulk OUT endpoint) found");
+            stp_error_set(err, errlen, "no USB printer (class 7 with a bulk OUT endpoint) found");
         goto fail;
     }
     rc = libusb_open(found, &p->handle);
     if (rc != 0) {
-        set_err(err, errlen, "usb printer %03u/%03u: cannot open: %s%s",
+        stp_error_set(err, errlen, "usb printer %03u/%03u: cannot open: %s%s",
                 libusb_get_bus_number(found), libusb_get_device_address(found),
                 libusb_strerror(rc),
                 rc == LIBUSB_ERROR_ACCESS ? " (needs a udev rule giving you the device)" : "");
@@ -232,7 +223,7 @@ stp_usbprint *stp_usbprint_open(const stp_usbprint_options *opt_in, char *err, s
     if (rc == 1) {
         rc = libusb_detach_kernel_driver(p->handle, p->iface);
         if (rc != 0) {
-            set_err(err, errlen, "usb printer: cannot detach the kernel driver (usblp) from "
+            stp_error_set(err, errlen, "usb printer: cannot detach the kernel driver (usblp) from "
                     "interface %d: %s", p->iface, libusb_strerror(rc));
             goto fail;
         }
@@ -240,7 +231,7 @@ stp_usbprint *stp_usbprint_open(const stp_usbprint_options *opt_in, char *err, s
     }
     rc = libusb_claim_interface(p->handle, p->iface);
     if (rc != 0) {
-        set_err(err, errlen, "usb printer: cannot claim interface %d: %s%s", p->iface,
+        stp_error_set(err, errlen, "usb printer: cannot claim interface %d: %s%s", p->iface,
                 libusb_strerror(rc), rc == LIBUSB_ERROR_BUSY ? " (in use by another program?)" : "");
         goto fail;
     }
@@ -248,7 +239,7 @@ stp_usbprint *stp_usbprint_open(const stp_usbprint_options *opt_in, char *err, s
     p->buf_size = 8u + (size_t)((opt.width + 7u) / 8u) * 255u;
     p->buf = malloc(p->buf_size);
     if (!p->buf) {
-        set_err(err, errlen, "usb printer: out of memory");
+        stp_error_set(err, errlen, "usb printer: out of memory");
         stp_usbprint_close(p);
         return NULL;
     }
@@ -284,11 +275,11 @@ int stp_usbprint_status(stp_usbprint *p, uint8_t *status, char *err, size_t errl
     if (rc == LIBUSB_ERROR_NO_DEVICE)
         return fail_job(p, err, errlen, "printer unplugged (reading its port status)");
     if (rc == LIBUSB_ERROR_PIPE)
-        set_err(err, errlen, "printer refused GET_PORT_STATUS (stall)");
+        stp_error_set(err, errlen, "printer refused GET_PORT_STATUS (stall)");
     else if (rc >= 0)
-        set_err(err, errlen, "printer answered GET_PORT_STATUS with %d bytes", rc);
+        stp_error_set(err, errlen, "printer answered GET_PORT_STATUS with %d bytes", rc);
     else
-        set_err(err, errlen, "reading the printer's port status failed: %s", libusb_strerror(rc));
+        stp_error_set(err, errlen, "reading the printer's port status failed: %s", libusb_strerror(rc));
     return -1;
 }
 
@@ -302,11 +293,11 @@ int stp_usbprint_begin(stp_usbprint *p, char *err, size_t errlen)
         if (stp_usbprint_status(p, &st, err, errlen) != 0)
             return -1;
         if (st & STP_USBPRINT_PAPER_EMPTY) {
-            set_err(err, errlen, "printer reports paper out (port status 0x%02x); nothing sent", st);
+            stp_error_set(err, errlen, "printer reports paper out (port status 0x%02x); nothing sent", st);
             return -1;
         }
         if (!(st & STP_USBPRINT_NOT_ERROR)) {
-            set_err(err, errlen, "printer reports an error (port status 0x%02x%s); nothing sent", st,
+            stp_error_set(err, errlen, "printer reports an error (port status 0x%02x%s); nothing sent", st,
                     (st & STP_USBPRINT_SELECTED) ? "" : ", offline");
             return -1;
         }

@@ -5,10 +5,13 @@
 # compare it pixel for pixel with `stipple render` of the same scene through
 # the same core, at the panel's size.  Boards:
 #   lm3s6965evb  SSD0323 128x64 (SSI): the 1-bit halftoned picture, ON as grey
-#                15; the scene's minimal configuration and the full library
-#   lm3s811evb   SSD0303 96x16 mono (I2C): the 1-bit picture; the minimal
-#                configuration only (the full renderer exceeds its 8 KB RAM)
+#                15; the shipping image and the bench image (the scene's
+#                minimal configuration) and the full library's bench image
+#   lm3s811evb   SSD0303 96x16 mono (I2C): the 1-bit picture; the shipping
+#                and bench images of the minimal configuration only (the
+#                full renderer exceeds its 8 KB RAM)
 # Either dump shows a panel pixel as a 4x4 block, 255 for ON and 0 for OFF.
+# Every image's picture is compared; the bench images' counts are recorded.
 #
 # run_qemu_test.sh [--board BOARD] SOURCE_DIR WORK_DIR STIPPLE COMPILE_TOOL COMPARE SCENE [OPTION...]
 #   BOARD         lm3s6965evb (default) or lm3s811evb
@@ -27,7 +30,8 @@
 # reports no per-shade figure).
 # Environment: STP_FW_CPU (cortex-m3; cortex-m0plus also runs on QEMU's M3),
 # STP_QEMU_TIMEOUT (seconds per QEMU run, 60), STP_BUILD_TIMEOUT (600),
-# STP_FW_BAND_ROWS (4).
+# STP_FW_BAND_ROWS (4), STP_FW_STATIC (OFF; ON: the scene compiled with
+# --static and played back from flash).
 set -eu
 
 board=lm3s6965evb
@@ -45,11 +49,11 @@ fi
 case $board in
     lm3s6965evb)
         size=128x64
-        images="stipple_fw_lm3s6965evb stipple_fw_lm3s6965evb_full"
+        images="stipple_fw_lm3s6965evb stipple_fw_lm3s6965evb_bench stipple_fw_lm3s6965evb_full"
         uart=no ;;
     lm3s811evb)
         size=96x16
-        images="stipple_fw_lm3s811evb"
+        images="stipple_fw_lm3s811evb stipple_fw_lm3s811evb_bench"
         uart=yes ;;
     *)
         echo "$0: unknown board '$board' (lm3s6965evb or lm3s811evb)" >&2
@@ -83,7 +87,8 @@ timeout "$build_timeout" cmake -S "$src/firmware" -B "$fw" \
     -DCMAKE_TOOLCHAIN_FILE="$src/cmake/toolchain-arm-none-eabi.cmake" -DSTP_CPU="$cpu" \
     -DSTP_FW_BOARD="$board" \
     -DSTP_FW_COMPILE_TOOL="$compile_tool" -DSTP_FW_SCENE="$scene" \
-    -DSTP_FW_COMPILE_OPTIONS="$options" -DSTP_FW_BAND_ROWS="$band_rows" >"$work/configure.log" 2>&1 ||
+    -DSTP_FW_COMPILE_OPTIONS="$options" -DSTP_FW_BAND_ROWS="$band_rows" \
+    -DSTP_FW_STATIC="${STP_FW_STATIC:-OFF}" >"$work/configure.log" 2>&1 ||
     { cat "$work/configure.log" >&2; exit 1; }
 timeout "$build_timeout" cmake --build "$fw" >"$work/build.log" 2>&1 ||
     { cat "$work/build.log" >&2; exit 1; }
@@ -147,14 +152,28 @@ for image in $images; do
         status=1
         continue
     fi
-    grep -q "instructions per frame" "$log" ||
-        { echo "FAIL $image: no instruction count reported" >&2; status=1; continue; }
+    # the shipping image reports nothing but the frame; the others counts
+    case $image in
+        *_full) config=full ;;
+        *_bench) config=minimal ;;
+        *) config= ;;
+    esac
+    if [ -n "$config" ] && ! grep -q "instructions per frame" "$log"; then
+        echo "FAIL $image: no instruction count reported" >&2
+        status=1
+        continue
+    fi
+    # the firmware build measures STP_RENDERER_BYTES: it must be the object's size
+    object=$(figure "$log" "renderer bytes:")
+    storage=$(figure "$log" "renderer storage bytes:")
+    if [ -n "$config" ] && { [ -z "$object" ] || [ "$object" != "$storage" ]; }; then
+        echo "FAIL $image: STP_RENDERER_BYTES is not stp_renderer_size()" >&2
+        status=1
+        continue
+    fi
     if "$compare" "$dump" "$work/host.pbm" 4; then
         echo "PASS $image"
-        case $image in
-            *_full) config=full ;;
-            *) config=minimal ;;
-        esac
+        [ -n "$config" ] || continue
         per_shade=$(figure "$log" "instructions per shade:")
         enter=$(figure "$log" "instructions to enter the scene:")
         frame=$(figure "$log" "instructions per frame (core):")

@@ -1,0 +1,34 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * What the board-independent firmware main (main.c) asks of a board: its
+ * panel's size, how to start the panel, how a band reaches it, and how the
+ * picture is held for a test harness before the program ends.
+ */
+#ifndef STIPPLE_PORTS_BOARD_H
+#define STIPPLE_PORTS_BOARD_H
+
+#include <stdint.h>
+
+#include "stipple/port.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct stp_board {
+    const char *name;
+    uint32_t width, height;        /* the panel, in pixels (MONO1 bands) */
+    const char *size_hint;         /* how to compile a scene for it: "-s WxH" */
+    int (*panel_start)(void);      /* bus and controller set up: 0, or -1 */
+    stp_flush_fn flush;            /* bands top to bottom, after panel_start */
+    void (*hold)(void);            /* keep the picture until the harness lets go */
+} stp_board;
+
+/* The board the image is linked for (board_<name>.c). */
+extern const stp_board stp_board_this;
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

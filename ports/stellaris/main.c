@@ -1,0 +1,180 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * stipple firmware, board-independent: render the compiled scene in bands
+ * onto the board's panel (board.h, board_<name>.c), hold the picture, exit.
+ *
+ * RAM: the renderer object (STP_RENDERER_BYTES of the configuration), the
+ * scene's display file (in the generated source), STP_FW_BAND_ROWS rows of
+ * MONO1 pixels and their Z-buffer rows; the picture lives only in the panel.
+ *
+ * STP_FW_STATIC 1: the scene is static (`stipple compile --static`): its
+ * display file, entered on the host, is played back from flash
+ * (stp_scene_static_open); nothing is entered on the chip.
+ *
+ * STP_FW_BENCH 1 makes the bench image: it also renders the frame once
+ * without the panel and reports instruction counts over semihosting
+ * ("stipple: WHAT N", read by tests/firmware/run_qemu_test.sh), and with
+ * STP_FW_SHADE_BENCH 1 the instructions per shade (bench_shade.c).  The
+ * shipping image (STP_FW_BENCH 0) carries none of that.
+ */
+#include "board.h"
+#include "stellaris.h"
+#include "stp_scene_data.h"
+#include "stipple/stipple.h"
+#if STP_FW_SHADE_BENCH && !STP_FW_STATIC
+#include "bench_shade.h"
+#endif
+
+#ifndef STP_FW_BAND_ROWS
+#define STP_FW_BAND_ROWS 4
+#endif
+#ifndef STP_FW_PANEL_W
+#define STP_FW_PANEL_W 128u /* the buffers' width: the board's panel's */
+#endif
+#ifndef STP_FW_BENCH
+#define STP_FW_BENCH 0
+#endif
+#ifndef STP_FW_STATIC
+#define STP_FW_STATIC 0
+#endif
+
+#if STP_FW_STATIC
+#define SCENE stp_compiled_static
+#define SCENE_TYPE stp_scene_static
+#define scene_open stp_scene_static_open
+#define scene_output stp_scene_static_output
+#else
+#define SCENE stp_compiled_scene
+#define SCENE_TYPE stp_scene_data
+#define scene_open stp_scene_data_enter
+#define scene_output stp_scene_data_output
+#endif
+
+static stp_renderer_storage renderer;
+static uint8_t band[STP_FW_BAND_ROWS * (STP_FW_PANEL_W / 8u)];
+#if STP_WITH_ZBUFFER
+static uint16_t zbuf[STP_FW_BAND_ROWS * STP_FW_PANEL_W];
+#endif
+
+static int fail(const char *what, int status)
+{
+    stp_semihost_write("stipple: ");
+    stp_semihost_write(what);
+    stp_semihost_write(": ");
+    stp_semihost_write(stp_status_text(status));
+    stp_semihost_write("\n");
+    return 1;
+}
+
+#if STP_FW_BENCH
+static void report(const char *what, uint64_t count)
+{
+    char num[12];
+    stp_semihost_write("stipple: ");
+    stp_semihost_write(what);
+    stp_semihost_write(" ");
+    stp_semihost_write(stp_utoa(count > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)count, num));
+    stp_semihost_write("\n");
+}
+
+static int discard_flush(stp_port *port, uint32_t y0, uint32_t rows, const uint8_t *pixels,
+                         size_t stride)
+{
+    (void)port;
+    (void)y0;
+    (void)rows;
+    (void)pixels;
+    (void)stride;
+    return 0;
+}
+#endif
+
+int main(void)
+{
+    const struct SCENE_TYPE *scene = &SCENE;
+    const stp_board *board = &stp_board_this;
+    stp_renderer *r;
+    stp_port port;
+    stp_output out;
+    stp_frame_memory mem;
+    int status;
+#if STP_FW_BENCH
+    uint64_t t0, t1, t2, t3, t4;
+    uint32_t per_tick;
+    stp_count_start();
+    per_tick = stp_count_calibrate();
+#endif
+
+    if (board->width != STP_FW_PANEL_W || scene->width != board->width ||
+        scene->height != board->height) {
+        stp_semihost_write(board->size_hint);
+        return fail(" is the size to compile the scene for", STP_ERR_ARG);
+    }
+#if STP_FW_BENCH
+    t0 = stp_count_now();
+#endif
+    status = scene_open(scene, &renderer, sizeof renderer, &r);
+    if (status != STP_OK)
+        return fail("enter", status);
+#if STP_FW_BENCH
+    t1 = stp_count_now();
+#endif
+
+    scene_output(scene, &out);
+    mem.band = band;
+    mem.band_size = sizeof band;
+    mem.band_rows = STP_FW_BAND_ROWS;
+#if STP_WITH_ZBUFFER
+    mem.zbuf = zbuf;
+    mem.zbuf_count = sizeof zbuf / sizeof zbuf[0];
+#else
+    mem.zbuf = 0;
+    mem.zbuf_count = 0;
+#endif
+    mem.sort = scene->sort;
+    mem.sort_count = scene->sort_count;
+    port.width = board->width;
+    port.height = board->height;
+    port.format = STP_PIXEL_MONO1;
+    port.user = 0;
+
+#if STP_FW_BENCH
+    /* the frame through the core alone, the panel's transfer left out */
+    port.flush = discard_flush;
+    status = stp_render(r, &port, &out, &mem);
+    t2 = stp_count_now();
+    if (status != STP_OK)
+        return fail("render", status);
+#endif
+
+    if (board->panel_start() != 0)
+        return fail("panel", STP_ERR_PORT);
+#if STP_FW_BENCH
+    t3 = stp_count_now();
+#endif
+    port.flush = board->flush;
+    status = stp_render(r, &port, &out, &mem);
+    if (status != STP_OK)
+        return fail("render to panel", status);
+
+#if STP_FW_BENCH
+    t4 = stp_count_now();
+    report("instructions per SysTick tick:", per_tick);
+    report("instructions to enter the scene:", (t1 - t0) * per_tick);
+    report("instructions per frame (core):", (t2 - t1) * per_tick);
+    report("instructions per frame (core + panel):", (t4 - t3) * per_tick);
+#if STP_FW_SHADE_BENCH && !STP_FW_STATIC
+    {
+        uint32_t calls, per_shade = stp_bench_shade(scene, per_tick, &calls);
+        report("instructions per shade:", per_shade);
+        report("shade calls timed:", calls);
+    }
+#endif
+    report("band rows:", STP_FW_BAND_ROWS);
+    report("renderer bytes:", stp_renderer_size());
+    report("renderer storage bytes:", STP_RENDERER_BYTES); /* the test: the same */
+    report("display-file entries:", stp_display_file_used(r));
+#endif
+    board->hold();
+    return 0;
+}
