@@ -499,7 +499,7 @@ static int read_instance(stp_parser *ps, ply_state *st, ply_cursor *cur, const p
         const ply_property *p = &el->props[i];
         double v;
         if (p->count_type != PLY_NONE) {
-            size_t n;
+            size_t n = 0;
             if (read_list(ps, st, cur, el, index, p, p->is_indices, &n) != 0)
                 return -1;
             if (p->is_indices)
