@@ -40,6 +40,7 @@
 #include "render_ref.h"
 #include "rt_compare.h"
 #include "render_scene.h"
+#include "scene_prepare.h"
 #include "scene.h"
 #include "scene_util.h"
 #include "stiff_cases.h"
@@ -267,9 +268,19 @@ static int core_scene_prepare(core_scene *cs, const stp_scene *scene, const stp_
     size_t i, capacity = 16;
 
     memset(cs, 0, sizeof *cs);
-    /* the view and lights stp_tool_render uses */
-    if (stp_tool_setup(scene, opt, &view, &lighting, err, err_size) != 0)
-        return -1;
+    /* the view and lights stp_tool_render uses: of the prepared scene
+     * (merged lights; the bench's scenes need no rescaling or splitting,
+     * so their geometry is the file's) */
+    {
+        stp_tool_prepared prep;
+        int rc;
+        if (stp_tool_prepare(scene, opt, &prep, err, err_size) != 0)
+            return -1;
+        rc = stp_tool_setup_prepared(&prep, &view, &lighting, err, err_size);
+        stp_tool_prepared_free(&prep);
+        if (rc != 0)
+            return -1;
+    }
     for (i = 0; i < scene->polygon_count; i++)
         capacity += (size_t)scene->polygons[i].count + 6;
     cs->capacity = (uint32_t)capacity;
