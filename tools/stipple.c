@@ -104,6 +104,8 @@ static void usage_dither(FILE *to)
             "  -d, --dither CELL     as for render (default bayer4)\n"
             "      --spacing KIND    linear (default), exponential, cubic\n"
             "  -g, --gamma G         apply V = (I/k)^(1/G) to the grey first (default 1)\n"
+            "      --linear          turn sRGB grey into linear light first (a panel's\n"
+            "                        density of lit pixels is linear light)\n"
             "      --gamma-k K       (default 1)\n"
             "  -h, --help            this help\n");
 }
@@ -164,7 +166,8 @@ enum {
     OPT_DEVICE,
     OPT_BENCH_SCENES,
     OPT_BENCH_BUDGET,
-    OPT_SCENE_FORMAT
+    OPT_SCENE_FORMAT,
+    OPT_LINEAR
 };
 
 /* Turn an indexed frame buffer (STYLE8: style index 1..levels per pixel)
@@ -462,7 +465,7 @@ static int cmd_dither(int argc, char **argv)
         {"output", required_argument, 0, 'o'}, {"plain", no_argument, 0, OPT_PLAIN},
         {"dither", required_argument, 0, 'd'}, {"spacing", required_argument, 0, STP_TOOL_OPT_SPACING},
         {"gamma", required_argument, 0, 'g'}, {"gamma-k", required_argument, 0, STP_TOOL_OPT_GAMMA_K},
-        {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
+        {"linear", no_argument, 0, OPT_LINEAR}, {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     stp_tool_options opt;
     stp_posix_image img;
     stp_posix_frame frame;
@@ -471,7 +474,7 @@ static int cmd_dither(int argc, char **argv)
     uint8_t table[256];
     const char *out_path = 0;
     char err[512];
-    int c, plain = 0, use_gamma = 0, png;
+    int c, plain = 0, use_gamma = 0, png, linear = 0;
     uint32_t y, x;
 
     stp_tool_options_default(&opt);
@@ -481,6 +484,7 @@ static int cmd_dither(int argc, char **argv)
         switch (c) {
         case 'o': out_path = optarg; break;
         case OPT_PLAIN: plain = 1; break;
+        case OPT_LINEAR: linear = 1; break;
         case 'd':
         case STP_TOOL_OPT_SPACING:
         case 'g':
@@ -510,8 +514,20 @@ static int cmd_dither(int argc, char **argv)
         return stp_tool_usage_error("dither", "--plain is for PBM, not PNG");
     if (stp_tool_cell(&opt, &cell) != 0)
         return fail("bad halftone cell");
+    if (use_gamma && linear)
+        return fail("dither: --linear and --gamma both map the grey: give one");
     if (use_gamma && stp_gamma_table(table, 256, stp_tool_fix(opt.gamma), stp_tool_fix(opt.gamma_k)))
         return fail("bad gamma");
+    if (linear) {
+        /* sRGB to linear light (IEC 61966-2-1): a panel's share of lit
+         * pixels is linear light */
+        int v;
+        for (v = 0; v < 256; v++) {
+            double e = v / 255.0, l = e <= 0.04045 ? e / 12.92 : pow((e + 0.055) / 1.055, 2.4);
+            table[v] = (uint8_t)lround(255.0 * l);
+        }
+        use_gamma = 1;
+    }
     if (stp_posix_read_image_grey(argv[optind], &img, err, sizeof err) != 0)
         return fail("%s", err);
     if (stp_posix_frame_init(&frame, img.width, img.height, STP_PIXEL_MONO1) != 0) {

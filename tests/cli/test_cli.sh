@@ -192,6 +192,19 @@ for kernel in fs fs:raster sierra-lite jjn stucki burkes; do
         else bad "dither -d $kernel: $on lit pixels, the ramp holds $expected_on"; fi
     else bad "dither -d $kernel ran"; fi
 done
+# --linear: sRGB 128 is 21.6 % linear light, so about 884 of 4096 pixels lit
+{ printf 'P2\n64 64\n255\n'; for i in $(seq 1 4096); do printf '128 '; done; } >"$work/grey128.pgm"
+for mode in "" --linear; do
+    want=2048
+    [ -n "$mode" ] && want=884
+    if "$stipple" dither "$work/grey128.pgm" -d fs $mode -o "$work/d.pbm"; then
+        on=$(pnmtoplainpnm "$work/d.pbm" | tail -n +3 | tr -d ' \n' | tr -d 1 | wc -c)
+        if [ $((on - want)) -le 32 ] && [ $((want - on)) -le 32 ]; then ok
+        else bad "dither $mode: $on lit pixels, want about $want"; fi
+    else bad "dither $mode ran"; fi
+done
+if "$stipple" dither "$work/grey128.pgm" --linear -g 2 -o "$work/d.pbm" 2>/dev/null; then
+    bad "dither --linear with --gamma accepted"; else ok; fi
 if "$stipple" dither "$work/ramp.pgm" -d fs:serpentine -o "$work/d.pbm" 2>/dev/null; then
     bad "dither -d fs:serpentine accepted"; else ok; fi
 
