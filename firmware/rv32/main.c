@@ -16,7 +16,9 @@
 
 extern uint32_t __data_load, __data_start, __data_end, __bss_start, __bss_end;
 void _start(void) __attribute__((naked, noreturn, section(".text.start")));
-void stp_rv32_main(void) __attribute__((noreturn));
+/* used: only the start code's asm jumps here, which link-time optimisation
+ * does not see */
+void stp_rv32_main(void) __attribute__((noreturn, used));
 
 void _start(void)
 {
