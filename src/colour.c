@@ -101,7 +101,7 @@ stp_rgb stp_cmyk_to_rgb(stp_vec3 cmy, stp_fix k)
 }
 
 /* (10.38) row by row as the seed prints it (R, G, B rows; columns I, Q,
- * Y): a grey gives I and Q within 0.025 of zero (SPEC.md section 6). */
+ * Y): a grey gives I and Q within 0.025 of zero (docs/model.md section 6). */
 static const int32_t yiq_q30[3][3] = {
     {644245094, 225485783, 322122547},   /* R:  0.60  0.21 0.30 */
     {-300647710, -558345748, 633507676}, /* G: -0.28 -0.52 0.59 */

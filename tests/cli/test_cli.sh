@@ -180,7 +180,7 @@ fi
     "$stipple" render "$scenes/tetra-s1.nff" -d bayer4 -l 16 -o "$work/bayer.pbm" || bad "diffusion renders ran"
 if cmp -s "$work/still.pbm" "$work/fs.pbm" && ! cmp -s "$work/still.pbm" "$work/bayer.pbm"; then ok
 else bad "the default still PBM is not -d fs:raster -l 256"; fi
-"$stipple" render "$scenes/tetra-s1.nff" -o "$work/still.pgm" -d bayer4 -l 16 &&
+"$stipple" render "$scenes/tetra-s1.nff" -o "$work/still.pgm" -l 256 &&
     "$stipple" render "$scenes/tetra-s1.nff" -o "$work/still2.pgm" && cmp -s "$work/still.pgm" "$work/still2.pgm" &&
     ok || bad "grey pictures changed defaults"
 expected_on=$(pnmtoplainpnm "$work/ramp.pgm" | tail -n +4 | tr -s ' \n' '\n' | grep . |

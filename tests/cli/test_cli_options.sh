@@ -117,9 +117,11 @@ for ext in pgm ppm; do
 done
 greys=$(pnmtoplainpnm "$work/def.pgm" | tail -n +4 | tr -s ' \n' '\n' | grep . | sort -u | wc -l)
 if [ "$greys" -gt 16 ]; then ok; else bad ".pgm default has only $greys greys"; fi
-r -o "$work/def.pbm" && r -l 16 -o "$work/l16.pbm" && r -l 256 -o "$work/l256.pbm" || bad ".pbm renders"
-if cmp -s "$work/def.pbm" "$work/l16.pbm" && ! cmp -s "$work/def.pbm" "$work/l256.pbm"; then ok
-else bad ".pbm: default is not 16 levels"; fi
+# a still 1-bit picture file is diffused at 256 levels (README, Dithering)
+r -o "$work/def.pbm" && r -d fs:raster -l 256 -o "$work/fs256.pbm" && r -d bayer4 -l 16 -o "$work/b16.pbm" ||
+    bad ".pbm renders"
+if cmp -s "$work/def.pbm" "$work/fs256.pbm" && ! cmp -s "$work/def.pbm" "$work/b16.pbm"; then ok
+else bad ".pbm: default is not Floyd-Steinberg at 256 levels"; fi
 r -o "$work/def.txt" && r -l 16 -o "$work/l16.txt" || bad ".txt renders"
 if cmp -s "$work/def.txt" "$work/l16.txt"; then ok; else bad ".txt: default is not 16 levels"; fi
 # the ray tracer too

@@ -6,19 +6,20 @@
 # bash-completion package.  tests/cli/test_completion.sh checks that the
 # option lists equal what each subcommand's --help prints.
 
-_stipple_commands="render dither compile bench help"
+_stipple_commands="render dither scene compile bench help"
 
 # the options every scene-rendering subcommand shares (tools/options.c)
 _stipple_shared="--size --levels --dither --spacing --gamma --gamma-k --hidden --backface
  --no-shading --smooth --color --transparent --light --bright --ambient
  --attenuation --raw-power --parallel --fov --slices --stacks --shadows --raytrace --depth
- --min-weight --no-hierarchy"
+ --min-weight --no-hierarchy --background --exposure --grey"
 
 _stipple_options() {
     case $1 in
     render) echo "--output --scene-format --device --format --band --stats --palette --help $_stipple_shared" ;;
-    compile) echo "--output --header --scene-format --help $_stipple_shared" ;;
-    dither) echo "--output --plain --dither --spacing --gamma --gamma-k --help" ;;
+    compile) echo "--output --header --scene-format --static --help $_stipple_shared" ;;
+    dither) echo "--output --plain --dither --spacing --gamma --gamma-k --linear --help" ;;
+    scene) echo "--size --output --list --help" ;;
     bench) echo "--scenes --size --depth --min-weight --budget --help" ;;
     help) echo "--help" ;;
     esac
@@ -51,13 +52,15 @@ _stipple() {
     --format) COMPREPLY=($(compgen -W "pbm plain-pbm pgm ppm png png1 txt" -- "$cur")); return ;;
     --scene-format) COMPREPLY=($(compgen -W "nff obj off ply" -- "$cur")); return ;;
     --hidden) COMPREPLY=($(compgen -W "zbuffer painter none" -- "$cur")); return ;;
-    -d | --dither) COMPREPLY=($(compgen -W "bayer2 bayer4 bayer8 seed2x2 pattern2x2 user:" -- "$cur")); return ;;
+    -d | --dither) COMPREPLY=($(compgen -W "bayer2 bayer4 bayer8 bayer16 blue-noise clustered: clustered45: seed2x2 pattern2x2 user: fs atkinson sierra-lite jjn stucki burkes" -- "$cur")); return ;;
+    --exposure) COMPREPLY=($(compgen -W "auto off" -- "$cur")); return ;;
     --spacing) COMPREPLY=($(compgen -W "linear exponential cubic" -- "$cur")); return ;;
     --palette) COMPREPLY=($(compgen -W "grey pseudo" -- "$cur")); return ;;
     --device) COMPREPLY=($(compgen -W "fb:/dev/fb0 usb spi:/dev/spidev0.0,controller=" -- "$cur")); return ;;
     -o | --output)
         case $cmd in
         compile) _stipple_files '*.c' ;;
+        scene) _stipple_files '*.nff' ;;
         dither) _stipple_files '*.@(pbm|png)' ;;
         *) _stipple_files '*.@(pbm|pgm|ppm|png|txt)' ;;
         esac
@@ -77,6 +80,7 @@ _stipple() {
     render | compile) _stipple_files '*.@(nff|obj|off|ply|NFF|OBJ|OFF|PLY)' ;;
     dither) _stipple_files '*.@(png|pgm|ppm|pbm|PNG)' ;;
     bench) _stipple_files '*.nff' ;;
+    scene) COMPREPLY=($(compgen -W "$(stipple scene --list 2>/dev/null)" -- "$cur")) ;;
     esac
 }
 

@@ -4,6 +4,7 @@
  * checks pixels, so a broken package (headers, library, configuration) makes
  * it fail to build or exit non-zero. */
 #include <stdio.h>
+#include <string.h>
 
 #include "stipple/stipple.h"
 #include "stp_posix.h"
@@ -22,12 +23,20 @@ int main(void)
                                 {-STP_FIX_ONE / 2, STP_FIX_ONE / 2, 0}};
     const stp_vec3 light = {0, 0, -2 * STP_FIX_ONE};
     stp_posix_frame frame;
-    stp_output output = {STP_HIDDEN_ZBUFFER, NULL, NULL, NULL, 0, NULL};
-    stp_frame_memory memory = {band, sizeof band, SIZE, zbuf, SIZE * SIZE, NULL, 0};
+    stp_output output;
+    stp_frame_memory memory;
     stp_renderer *r;
     int status;
     uint8_t centre, corner;
 
+    /* fields by name: later versions may add members */
+    stp_output_default(&output);
+    memset(&memory, 0, sizeof memory);
+    memory.band = band;
+    memory.band_size = sizeof band;
+    memory.band_rows = SIZE;
+    memory.zbuf = zbuf;
+    memory.zbuf_count = SIZE * SIZE;
     if (stp_posix_frame_init(&frame, SIZE, SIZE, STP_PIXEL_GREY8) != 0)
         return 1;
     r = stp_renderer_create(&storage, sizeof storage, display_file, 64, SIZE, SIZE);

@@ -45,8 +45,15 @@ int main()
     out.port.format = STP_PIXEL_GREY8;
     out.port.flush = keep_rows;
     out.port.user = &out;
-    stp_output output = {STP_HIDDEN_ZBUFFER, nullptr, nullptr, nullptr, 0, nullptr};
-    stp_frame_memory memory = {band, sizeof band, 4, zbuf, size * 4, nullptr, 0};
+    // fields by name: later versions may add members
+    stp_output output;
+    stp_output_default(&output);
+    stp_frame_memory memory = stp_frame_memory();
+    memory.band = band;
+    memory.band_size = sizeof band;
+    memory.band_rows = 4;
+    memory.zbuf = zbuf;
+    memory.zbuf_count = size * 4;
 
     stp_renderer *r = stp_renderer_create(&storage, sizeof storage, display_file, 64, size, size);
     if (r == nullptr) {
