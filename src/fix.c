@@ -311,7 +311,7 @@ stp_fix stp_vec3_unity(stp_vec3 v, stp_vec3 *out)
 
 /* 1/sqrt(i/64 + 1 + 1/128) in Q16 for i = 0..191: the root at the middle
  * of each 64th of [1, 4) (relative error of a seed below 2^-8). */
-static const uint16_t rsqrt_seed[192] = {
+static const uint16_t rsqrt_seed[192] STP_TABLE = {
     65281, 64781, 64292, 63814, 63347, 62889, 62442, 62004, 61575, 61154, 60742, 60339,
     59943, 59555, 59175, 58801, 58435, 58075, 57722, 57376, 57035, 56700, 56372, 56049,
     55731, 55419, 55112, 54810, 54513, 54221, 53933, 53650, 53371, 53097, 52826, 52560,
@@ -332,7 +332,7 @@ static const uint16_t rsqrt_seed[192] = {
 /* 1/sqrt(m / 2^30) in Q30 for m in [2^30, 2^32). */
 static inline uint64_t rsqrt_q30(uint32_t m)
 {
-    uint64_t y = (uint64_t)rsqrt_seed[(m >> 24) - 64] << 14;
+    uint64_t y = (uint64_t)STP_TABLE_U16(&rsqrt_seed[(m >> 24) - 64]) << 14;
     int k;
     /* Newton for 1/sqrt: y <- y (3 - m y^2) / 2; each step squares the
      * relative error (2^-8 -> 2^-15 -> 2^-29 with the rounding).  m y^2 stays

@@ -7,6 +7,18 @@
 
 #include "stipple/fix.h"
 
+/* Constant tables of the core.  On AVR, const data is copied into RAM at
+ * start-up unless it is put in program memory and read with LPM; 384 bytes
+ * of square-root seeds are a twentieth of an ATmega2560's RAM. */
+#if defined(__AVR__)
+#include <avr/pgmspace.h>
+#define STP_TABLE PROGMEM
+#define STP_TABLE_U16(p) pgm_read_word(p)
+#else
+#define STP_TABLE
+#define STP_TABLE_U16(p) (*(p))
+#endif
+
 /* Arithmetic shift right rounding toward minus infinity, for negative values
  * too (C99 leaves >> of a negative value to the implementation). */
 static inline int64_t stp_asr64(int64_t v, int s)

@@ -49,14 +49,14 @@ size_t stp_frame_memory_bytes(const stp_port *port, stp_hidden hidden, uint32_t 
     if (port == 0 || (row = row_bytes(port, hidden)) == 0)
         return 0;
     if (hidden == STP_HIDDEN_PAINTER) {
-        size_t count = polygons; /* a 16-bit size_t may not hold it */
+        size_t count = (size_t)polygons; /* a 16-bit size_t may not hold it */
         if (count != polygons || count > SIZE_MAX / sizeof(stp_sort_entry))
             return 0;
         sort = count * sizeof(stp_sort_entry);
     }
     if (band_rows > 0 && row > SIZE_MAX / band_rows)
         return 0;
-    bytes = row * band_rows;
+    bytes = row * (size_t)band_rows;
     if (sort > SIZE_MAX - bytes - (SORT_ALIGN - 1u))
         return 0;
     return bytes + sort + (SORT_ALIGN - 1u);
@@ -79,7 +79,10 @@ int stp_frame_memory_split(stp_frame_memory *memory, const stp_renderer *r, cons
     if (output->hidden == STP_HIDDEN_PAINTER) {
         if (r == 0)
             return STP_ERR_ARG;
-        sort_count = stp_polygon_count(r);
+        uint32_t polygons = stp_polygon_count(r);
+        sort_count = (size_t)polygons;
+        if (sort_count != polygons) /* a 16-bit size_t */
+            return STP_ERR_MEMORY;
     }
     memory->band = 0;
     memory->band_size = 0;
@@ -100,7 +103,7 @@ int stp_frame_memory_split(stp_frame_memory *memory, const stp_renderer *r, cons
     if (rows < 1)
         return STP_ERR_MEMORY;
     if (rows > port->height)
-        rows = port->height;
+        rows = (size_t)port->height; /* smaller than rows, so it fits */
     if (sort_count > 0) {
         memory->sort = (stp_sort_entry *)(void *)p;
         memory->sort_count = sort_count;

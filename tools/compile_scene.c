@@ -222,6 +222,9 @@ static void write_config(writer *w, const plan *p, const stp_tool_options *opt)
            " * without shadow maps. */\n"
            "#define STP_WITH_GOURAUD 0\n#define STP_WITH_COLOUR 0\n"
            "#define STP_WITH_TRANSPARENCY 0\n#define STP_WITH_SHADOWS 0\n");
+    out(w, "/* The scene is entered once, at start-up: no vertex cache (it would cost\n"
+           " * RAM a small board does not have, to speed up one pass). */\n"
+           "#define STP_VERTEX_CACHE 0\n");
     out(w, "\n#endif\n");
 }
 

@@ -96,6 +96,6 @@ done
 avr-gcc -Os -g -flto -fuse-linker-plugin -Wl,--gc-sections -mmcu=atmega2560 \
     -o "$out/StippleScene.ino.elf" $objects "$out/core/core.a" "-L$out" -lm
 avr-size "$out/StippleScene.ino.elf"
-"$stipple" render "$scene" -s 128x64 -o "$work/host.pbm"
+"$stipple" render "$scene" -s 128x64 -d bayer4 -l 16 --exposure off -o "$work/host.pbm"
 "$sim" "$out/StippleScene.ino.elf" "$work/arduino.pbm" "$work/host.pbm"
 echo "PASS: the Arduino sketch draws $(basename "$scene" .nff) as the host renders it"

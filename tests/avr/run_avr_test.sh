@@ -40,6 +40,6 @@ timeout "${STP_BUILD_TIMEOUT:-600}" cmake -S "$src/firmware" -B "$build" \
 timeout "${STP_BUILD_TIMEOUT:-600}" cmake --build "$build" -j2 >"$work/build.log" 2>&1 ||
     { cat "$work/build.log"; echo "FAIL: avr-gcc build"; exit 1; }
 avr-size "$build/stipple_fw_atmega2560.elf"
-"$stipple" render "$scene" -s 128x64 -o "$work/host.pbm"
+"$stipple" render "$scene" -s 128x64 -d bayer4 -l 16 --exposure off -o "$work/host.pbm"
 "$sim" "$build/stipple_fw_atmega2560.elf" "$work/avr.pbm" "$work/host.pbm"
 echo "PASS: $name on the ATmega2560 equals the host render"

@@ -14,7 +14,8 @@
 #include "stp_scene_data.h"
 
 #ifndef STIPPLE_BAND_ROWS
-#define STIPPLE_BAND_ROWS 4 /* rows rendered at a time: RAM against passes */
+#define STIPPLE_BAND_ROWS 2 /* rows rendered at a time: RAM against passes (4 leaves the
+                              * teapot-s1 sketch too little stack on a Mega 2560) */
 #endif
 
 class StippleSSD1306 {
