@@ -159,10 +159,6 @@ static int make_plan(const stp_scene *scene, const stp_tool_options *opt, plan *
     }
     if (!opt->shading)
         p->specular = 0; /* no MAKE-SHADE at all */
-    if (opt->dither == STP_TOOL_DITHER_DIFFUSE) {
-        snprintf(err, errlen, "error diffusion is not available in compiled scenes; use a cell");
-        return -1;
-    }
     if (stp_tool_cell(opt, &p->cell) != 0) {
         snprintf(err, errlen, "bad halftone cell");
         return -1;
@@ -292,6 +288,13 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
 
     /* RAM: written by the core while the scene is entered and sorted */
     out(w, "static stp_instr display_file[%lu];\n", (unsigned long)capacity);
+    if (opt->dither == STP_TOOL_DITHER_DIFFUSE) {
+        /* error diffusion: its error rows (diffuse.h), the band is GREY8 */
+        size_t n = stp_diffusion_error_count(opt->diffuse_kernel, (uint32_t)opt->width);
+        out(w, "static int16_t diffusion_errors[%lu];\n", (unsigned long)n);
+        out(w, "static const stp_diffusion diffusion = {%d, %d, diffusion_errors, %lu};\n",
+            opt->diffuse_kernel, opt->diffuse_raster ? 0 : 1, (unsigned long)n);
+    }
     if (opt->hidden == STP_HIDDEN_PAINTER)
         out(w, "static stp_sort_entry sort[%lu];\n", (unsigned long)(sort_count ? sort_count : 1));
     out(w, "\n");
@@ -328,8 +331,9 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
         out(w, "    sort, %lu,\n", (unsigned long)(sort_count ? sort_count : 1));
     else
         out(w, "    0, 0,\n");
-    out(w, "    %s,\n    &cell,\n    %s,\n    %ld /* background */\n};\n",
-        hidden_name(opt->hidden), p->has_gamma ? "gamma" : "0", (long)p->background);
+    out(w, "    %s,\n    &cell,\n    %s,\n    %ld, /* background */\n    %s\n};\n",
+        hidden_name(opt->hidden), p->has_gamma ? "gamma" : "0", (long)p->background,
+        opt->dither == STP_TOOL_DITHER_DIFFUSE ? "&diffusion" : "0 /* no error diffusion */");
 }
 
 int stp_tool_compile(const stp_scene *scene, const stp_tool_options *opt, FILE *c_out,

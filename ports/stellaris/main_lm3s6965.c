@@ -4,8 +4,10 @@
  * onto the SSD0323 OLED, report instruction counts over semihosting, exit.
  *
  * RAM: the renderer object, the scene's display file (in the generated
- * source), and per band STP_FW_BAND_ROWS rows of MONO1 pixels plus their
- * Z-buffer rows; the picture itself lives only in the panel.
+ * source, with the error rows of a scene compiled with error diffusion),
+ * and per band STP_FW_BAND_ROWS rows of 8-bit pixels (what diffusion
+ * needs; a cell uses the first 1/8) plus their Z-buffer rows; the picture
+ * itself lives only in the panel.
  *
  * Besides the frame it times the shading function alone (shade_bench): the
  * instructions per stp_shade_point call over a fixed set of the scene's own
@@ -38,7 +40,10 @@
  * compile-time bound of stp_renderer_size()). */
 static stp_renderer_storage renderer;
 
-static uint8_t band[STP_FW_BAND_ROWS * ROW_BYTES];
+/* a compiled scene with error diffusion draws its band as GREY8 rows
+ * (render.h, stp_output.diffusion): PANEL_W bytes a row; ROW_BYTES would
+ * do for a cell */
+static uint8_t band[STP_FW_BAND_ROWS * PANEL_W];
 #if STP_WITH_ZBUFFER
 static uint16_t zbuf[STP_FW_BAND_ROWS * PANEL_W];
 #endif
