@@ -166,10 +166,6 @@ static int make_plan(const stp_tool_prepared *prep, plan *p, char *err, size_t e
     }
     if (!opt->shading)
         p->specular = 0; /* no MAKE-SHADE at all */
-    if (opt->dither == STP_TOOL_DITHER_DIFFUSE) {
-        snprintf(err, errlen, "error diffusion is not available in compiled scenes; use a cell");
-        return -1;
-    }
     if (stp_tool_cell(opt, &p->cell) != 0) {
         snprintf(err, errlen, "bad halftone cell");
         return -1;
@@ -225,6 +221,10 @@ static void write_config(writer *w, const plan *p, const stp_tool_options *opt)
     out(w, "/* The scene is entered once, at start-up: no vertex cache (it would cost\n"
            " * RAM a small board does not have, to speed up one pass). */\n"
            "#define STP_VERTEX_CACHE 0\n");
+    out(w, "/* 1: the picture is error-diffused, so a firmware's band holds 8-bit rows\n"
+           " * (stp_output.diffusion); 0: a halftone cell, 1-bit rows. */\n"
+           "#define STP_COMPILED_DIFFUSION %d\n",
+        opt->dither == STP_TOOL_DITHER_DIFFUSE ? 1 : 0);
     out(w, "\n#endif\n");
 }
 
@@ -310,6 +310,13 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
 
     /* RAM: written by the core while the scene is entered and sorted */
     out(w, "static stp_instr display_file[%lu];\n", (unsigned long)capacity);
+    if (opt->dither == STP_TOOL_DITHER_DIFFUSE) {
+        /* error diffusion: its error rows (diffuse.h), the band is GREY8 */
+        size_t n = stp_diffusion_error_count(opt->diffuse_kernel, (uint32_t)opt->width);
+        out(w, "static int16_t diffusion_errors[%lu];\n", (unsigned long)n);
+        out(w, "static const stp_diffusion diffusion = {%d, %d, diffusion_errors, %lu};\n",
+            opt->diffuse_kernel, opt->diffuse_raster ? 0 : 1, (unsigned long)n);
+    }
     if (opt->hidden == STP_HIDDEN_PAINTER)
         out(w, "static stp_sort_entry sort[%lu];\n", (unsigned long)(sort_count ? sort_count : 1));
     out(w, "\n");
@@ -346,8 +353,9 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
         out(w, "    sort, %lu,\n", (unsigned long)(sort_count ? sort_count : 1));
     else
         out(w, "    0, 0,\n");
-    out(w, "    %s,\n    &cell,\n    %s,\n    %ld /* background */\n};\n",
-        hidden_name(opt->hidden), p->has_gamma ? "gamma" : "0", (long)p->background);
+    out(w, "    %s,\n    &cell,\n    %s,\n    %ld, /* background */\n    %s\n};\n",
+        hidden_name(opt->hidden), p->has_gamma ? "gamma" : "0", (long)p->background,
+        opt->dither == STP_TOOL_DITHER_DIFFUSE ? "&diffusion" : "0 /* no error diffusion */");
 }
 
 /* ---- static scenes: the display file entered on the host ---- */

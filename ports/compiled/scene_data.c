@@ -72,5 +72,5 @@ void stp_scene_data_output(const stp_scene_data *s, stp_output *out)
     out->styles = 0;
     out->background = s->background;
     out->background_colour = 0;
-    out->diffusion = 0;
+    out->diffusion = s->diffusion;
 }

@@ -63,6 +63,9 @@ typedef struct stp_scene_data {
     const stp_cell *cell;          /* the halftone cell, as a value in ROM */
     const uint8_t *gamma;          /* levels entries, or NULL for linear */
     stp_fix background;            /* shade of the empty frame */
+    const stp_diffusion *diffusion; /* MONO1 error diffusion (its error rows
+                                       in RAM; the band then holds GREY8
+                                       rows), or NULL: the cell */
 } stp_scene_data;
 
 /* The generated source defines this one object. */

@@ -4,8 +4,10 @@
  * onto the board's panel (board.h, board_<name>.c), hold the picture, exit.
  *
  * RAM: the renderer object (STP_RENDERER_BYTES of the configuration), the
- * scene's display file (in the generated source), STP_FW_BAND_ROWS rows of
- * MONO1 pixels and their Z-buffer rows; the picture lives only in the panel.
+ * scene's display file (in the generated source, with the error rows of a
+ * scene compiled with error diffusion), STP_FW_BAND_ROWS rows of MONO1
+ * pixels (8-bit pixels with diffusion) and their Z-buffer rows; the picture
+ * lives only in the panel.
  *
  * STP_FW_STATIC 1: the scene is static (`stipple compile --static`): its
  * display file, entered on the host, is played back from flash
@@ -51,7 +53,12 @@
 #endif
 
 static stp_renderer_storage renderer;
+#if defined(STP_COMPILED_DIFFUSION) && STP_COMPILED_DIFFUSION
+/* error diffusion draws the band as GREY8 rows (render.h, stp_output.diffusion) */
+static uint8_t band[STP_FW_BAND_ROWS * STP_FW_PANEL_W];
+#else
 static uint8_t band[STP_FW_BAND_ROWS * (STP_FW_PANEL_W / 8u)];
+#endif
 #if STP_WITH_ZBUFFER
 static uint16_t zbuf[STP_FW_BAND_ROWS * STP_FW_PANEL_W];
 #endif
