@@ -145,7 +145,11 @@ static inline int stp_bit_length64(uint64_t v)
  * saturates to 2^62. */
 static inline int64_t stp_mul_shift_sat(int64_t a, int64_t b, int s)
 {
-    int la = stp_bit_length64((uint64_t)a), lb = stp_bit_length64((uint64_t)b), cut;
+    int la, lb, cut;
+    if (((uint64_t)a >> 31) == 0 && ((uint64_t)b >> 32) == 0)
+        return (a * b) >> s; /* the common case: a b < 2^63 */
+    la = stp_bit_length64((uint64_t)a);
+    lb = stp_bit_length64((uint64_t)b);
     if (la + lb <= 63)
         return (a * b) >> s;
     cut = la + lb - 63;
