@@ -400,7 +400,11 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
     out->z = (int32_t)floor_shift(z * inv + half, e);
     /* |v| scaled = s / sqrt(s): s >> 30 < 2^32 times inv < 2^31 */
     len = ((s >> 30) * (uint64_t)inv) >> (e - 0);
-    return up >= 0 ? (int64_t)(len >> up) : (int64_t)(len << -up);
+    /* to the input's units, rounded to nearest (len may sit 2^-29 below an
+     * exact integer length, which a floor would take a whole unit down) */
+    if (up > 0)
+        return (int64_t)((len + ((uint64_t)1 << (up - 1))) >> up);
+    return up == 0 ? (int64_t)len : (int64_t)(len << -up);
 }
 
 uint32_t stp_sqrt64_fast(uint64_t v)

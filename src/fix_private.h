@@ -86,7 +86,7 @@ typedef struct stp_unit3 {
 
 /* The direction of (x, y, z) (any values with |component| < 2^62) as an
  * STP_UNIT vector in *out, and its length in the input's units (rounded
- * down; relative error below 2^-28).  No division: the squared length of
+ * to nearest; error below 2^-28 relative plus half a unit).  No division: the squared length of
  * the vector scaled to 30 bits is seeded from a 192-entry table of
  * 1/sqrt and refined by two Newton steps (relative error below 2^-29).
  * A zero vector returns 0 and leaves *out = 0. */
