@@ -554,7 +554,8 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
         /* a multiplicative hash of the exact coordinates */
         uint32_t h = ((uint32_t)p.x * 0x9E3779B1u) ^ ((uint32_t)p.y * 0x85EBCA77u) ^
                      ((uint32_t)p.z * 0xC2B2AE3Du);
-        stp_vertex_entry *c = &r->cache[(h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1)];
+        uint32_t slot = (h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1);
+        stp_vertex_entry *c = &r->cache[slot];
         if (c->stamp != r->cache_stamp || c->point.x != p.x || c->point.y != p.y ||
             c->point.z != p.z) {
             c->stamp = r->cache_stamp;
@@ -564,7 +565,7 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
             c->dx = STP_CACHE_NOT_PROJECTED;
         }
         r->clip_a[i] = c->view;
-        r->cached[i] = c;
+        r->cached[i] = (uint16_t)slot;
     }
     return;
 #endif
@@ -587,7 +588,7 @@ static void enter_outcodes(stp_renderer *r, stp_entry *e)
         unsigned code;
 #if STP_VERTEX_CACHE
         /* the entry may have been taken by a later vertex of this polygon */
-        stp_vertex_entry *c = r->cached[i];
+        stp_vertex_entry *c = &r->cache[r->cached[i]];
         if (c->code >= 0 && c->view.x == r->clip_a[i].x && c->view.y == r->clip_a[i].y &&
             c->view.z == r->clip_a[i].z) {
             code = (unsigned)c->code;
@@ -894,7 +895,7 @@ static int enter_store(stp_renderer *r, stp_entry *e)
         stp_instr p;
 #if STP_VERTEX_CACHE
         /* an unclipped polygon's vertices are the cached ones */
-        stp_vertex_entry *c = e->outside_any == 0 ? r->cached[i] : 0;
+        stp_vertex_entry *c = e->outside_any == 0 ? &r->cache[r->cached[i]] : 0;
         if (c && c->dx != STP_CACHE_NOT_PROJECTED && c->view.x == clipped[i].x &&
             c->view.y == clipped[i].y && c->view.z == clipped[i].z) {
             p.x = c->dx;

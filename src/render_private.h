@@ -136,7 +136,7 @@ struct stp_renderer {
 #if STP_VERTEX_CACHE
     stp_vertex_entry cache[STP_VERTEX_CACHE];
     uint32_t cache_stamp; /* >= 1 */
-    stp_vertex_entry *cached[STP_MAX_POLYGON_VERTICES]; /* clip_a[i]'s entry */
+    uint16_t cached[STP_MAX_POLYGON_VERTICES]; /* clip_a[i]'s entry in cache[] */
 #endif
     stp_crossing crossings[STP_CLIP_VERTICES];
 

@@ -211,6 +211,8 @@ static void write_config(writer *w, const plan *p, const stp_tool_options *opt)
            " * without shadow maps. */\n"
            "#define STP_WITH_GOURAUD 0\n#define STP_WITH_COLOUR 0\n"
            "#define STP_WITH_TRANSPARENCY 0\n#define STP_WITH_SHADOWS 0\n");
+    out(w, "/* Entered once, as the program starts: no vertex cache to fill. */\n"
+           "#define STP_VERTEX_CACHE 0\n");
     out(w, "\n#endif\n");
 }
 

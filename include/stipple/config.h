@@ -45,7 +45,9 @@
  * about six): the cache keeps the view coordinates, outcode and device
  * position of recently entered points, keyed by their exact coordinates,
  * so a repeated vertex is not transformed and projected again.  Each entry
- * costs 44 bytes of the renderer object; 0 takes the cache out. */
+ * costs 44 bytes of the renderer object, plus 2 bytes per
+ * STP_MAX_POLYGON_VERTICES; 0 takes the cache out (`stipple compile`'s
+ * headers do: a compiled scene is entered once). */
 #ifndef STP_VERTEX_CACHE
 #define STP_VERTEX_CACHE 64
 #endif
