@@ -5,6 +5,7 @@
 #include "render_private.h"
 #include "view_private.h"
 #include "shade_private.h"
+#include "clip_private.h"
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -116,12 +117,12 @@ int stp_set_view(stp_renderer *r, const stp_view *v)
     r->up = vf.up;
     r->projection = vf.projection;
     r->hither = vf.hither;
-    r->from_right = (int64_t)r->from.x * r->right.x + (int64_t)r->from.y * r->right.y +
-                    (int64_t)r->from.z * r->right.z;
-    r->from_up = (int64_t)r->from.x * r->up.x + (int64_t)r->from.y * r->up.y +
-                 (int64_t)r->from.z * r->up.z;
-    r->from_forward = (int64_t)r->from.x * r->forward.x + (int64_t)r->from.y * r->forward.y +
-                      (int64_t)r->from.z * r->forward.z;
+    r->clip_volume.focal = vf.focal;
+    r->clip_volume.near = vf.hither;
+    r->clip_volume.width = r->width;
+    r->clip_volume.height = r->height;
+    r->clip_volume.parallel = vf.projection == STP_PARALLEL;
+    stp_view_transform_make(&vf, &r->to_view);
     r->pen_valid = 0;
     cache_forget(r);
 #if STP_WITH_SHADOWS
@@ -409,25 +410,9 @@ stp_fix stp_last_shade(const stp_renderer *r)
 
 /* ---- transform, clip, project ---- */
 
-/* floor(v / 2^F), saturated, for |v| < 2^62: the offset makes the shifted
- * value non-negative (a right shift of a negative value is the
- * implementation's), and 2^62 is a multiple of 2^F, so the floor is exact */
-static inline stp_fix floor_shift_sat(int64_t v)
-{
-    return stp_fix_sat64(((v + ((int64_t)1 << 62)) >> F) - ((int64_t)1 << (62 - F)));
-}
-
 static void world_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
 {
-    /* (p - from) . axis = p . axis - from . axis, exactly in 64 bits: each
-     * product < 2^47, so the sums stay below 2^50; p - from itself may
-     * exceed stp_fix's range */
-    out->x = floor_shift_sat((int64_t)p.x * r->right.x + (int64_t)p.y * r->right.y +
-                             (int64_t)p.z * r->right.z - r->from_right);
-    out->y = floor_shift_sat((int64_t)p.x * r->up.x + (int64_t)p.y * r->up.y +
-                             (int64_t)p.z * r->up.z - r->from_up);
-    out->z = floor_shift_sat((int64_t)p.x * r->forward.x + (int64_t)p.y * r->forward.y +
-                             (int64_t)p.z * r->forward.z - r->from_forward);
+    stp_view_transform_point(&r->to_view, p, out);
 }
 
 /* Forget every cached vertex (the view or the model transform changed). */
@@ -454,17 +439,6 @@ static void vertex_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
     world_to_view(r, p, out);
 }
 
-#if STP_WITH_SHADOWS
-void stp_view_point(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
-{
-    world_to_view(r, p, out);
-}
-
-void stp_view_vertex(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
-{
-    vertex_to_view(r, p, out);
-}
-#endif
 
 int stp_set_transform(stp_renderer *r, const stp_transform *t)
 {
@@ -486,35 +460,13 @@ int stp_set_transform(stp_renderer *r, const stp_transform *t)
     return STP_OK;
 }
 
-/* Signed distance of view point p from clip plane `plane` (0: hither,
- * 1..4: left, right, top, bottom of the window), >= 0 inside.  Scaled by a
- * positive per-plane factor (only signs and ratios matter). */
+#if STP_WITH_LINES
+/* Signed distance of view point p from clip plane `plane` (clip.c). */
 static int64_t plane_distance(const stp_renderer *r, int plane, stp_vec3 p)
 {
-    /* both terms have F fractional bits and stay below 2^47 */
-    int64_t fx = stp_asr64((int64_t)r->focal * p.x, F), fy = stp_asr64((int64_t)r->focal * p.y, F);
-    int64_t hw, hh;
-    if (plane == 0)
-        return (int64_t)p.z - r->hither;
-    if (r->projection == STP_PERSPECTIVE) {
-        /* x_screen = W/2 + focal x / z lies in [0, W] <=> |focal x| <= (W/2) z */
-        hw = ((int64_t)r->width * p.z) / 2;
-        hh = ((int64_t)r->height * p.z) / 2;
-    } else {
-        hw = ((int64_t)r->width * ONE) / 2;
-        hh = ((int64_t)r->height * ONE) / 2;
-    }
-    switch (plane) {
-    case 1: return fx + hw;
-    case 2: return hw - fx;
-    case 3: return hh - fy;
-    default: return fy + hh;
-    }
+    return stp_clip_distance(&r->clip_volume, plane, p);
 }
 
-
-
-#if STP_WITH_LINES
 static stp_vec3 clip_point(stp_vec3 a, stp_vec3 b, int64_t da, int64_t db)
 {
     int64_t t = stp_clip_fraction(da, db);
@@ -526,59 +478,24 @@ static stp_vec3 clip_point(stp_vec3 a, stp_vec3 b, int64_t da, int64_t db)
 }
 #endif
 
-/* Sutherland-Hodgman against the five planes; returns the vertex count of
- * the clipped polygon, its vertices in *result (and, when smooth, its
- * vertex shades in *shades, interpolated like the positions). */
+/* Sutherland-Hodgman against the five planes (clip.c) from clip_a; returns
+ * the vertex count of the clipped polygon, its vertices in *result (and,
+ * when smooth, its vertex shades in *shades, interpolated like the
+ * positions). */
 static int clip_polygon(stp_renderer *r, int n, int smooth, stp_vec3 **result, stp_fix **shades)
 {
-    stp_vec3 *in = r->clip_a, *out = r->clip_b, *tmp;
+    stp_vec3 *spare;
+    stp_fix *sa = 0, *sb = 0;
 #if STP_WITH_GOURAUD
-    stp_fix *s_in = r->shade_a, *s_out = r->shade_b, *s_tmp;
-#endif
-    int plane, i, m;
-    (void)smooth;
-    for (plane = 0; plane < 5 && n > 0; plane++) {
-        m = 0;
-        for (i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            stp_vec3 a = in[i], b = in[j];
-            int64_t da = plane_distance(r, plane, a), db = plane_distance(r, plane, b);
-            if (da >= 0) {
-#if STP_WITH_GOURAUD
-                if (smooth)
-                    s_out[m] = s_in[i];
-#endif
-                out[m++] = a;
-            }
-            if ((da >= 0) != (db >= 0)) {
-                int64_t t = stp_clip_fraction(da, db);
-#if STP_WITH_GOURAUD
-                if (smooth)
-                    s_out[m] = stp_lerp_fix(s_in[i], s_in[j], t);
-#endif
-                out[m].x = stp_lerp_fix(a.x, b.x, t);
-                out[m].y = stp_lerp_fix(a.y, b.y, t);
-                out[m].z = stp_lerp_fix(a.z, b.z, t);
-                m++;
-            }
-        }
-        n = m;
-        tmp = in;
-        in = out;
-        out = tmp;
-#if STP_WITH_GOURAUD
-        s_tmp = s_in;
-        s_in = s_out;
-        s_out = s_tmp;
-#endif
+    if (smooth) {
+        sa = r->shade_a;
+        sb = r->shade_b;
     }
-    *result = in;
-#if STP_WITH_GOURAUD
-    *shades = s_in;
 #else
-    *shades = 0;
+    (void)smooth;
 #endif
-    return n;
+    return stp_clip_polygon(&r->clip_volume, r->clip_a, r->clip_b, sa, sb, n, result, &spare,
+                            shades);
 }
 
 /* Device coordinates (Q27.4) and depth key of a clipped view point. */
@@ -705,31 +622,6 @@ typedef struct stp_entry {
     stp_fix transmission;
 } stp_entry;
 
-/* Outcode of a view point: bit p set when it is outside clip plane p
- * (plane_distance(r, p, v) < 0), all five planes at once. */
-static unsigned outcode(const stp_renderer *r, stp_vec3 p)
-{
-    int64_t fx = stp_asr64((int64_t)r->focal * p.x, F), fy = stp_asr64((int64_t)r->focal * p.y, F);
-    int64_t hw, hh;
-    unsigned code = (int64_t)p.z - r->hither < 0 ? 1u : 0u;
-    if (r->projection == STP_PERSPECTIVE) {
-        hw = ((int64_t)r->width * p.z) / 2;
-        hh = ((int64_t)r->height * p.z) / 2;
-    } else {
-        hw = ((int64_t)r->width * ONE) / 2;
-        hh = ((int64_t)r->height * ONE) / 2;
-    }
-    if (fx + hw < 0)
-        code |= 2u;
-    if (hw - fx < 0)
-        code |= 4u;
-    if (hh - fy < 0)
-        code |= 8u;
-    if (fy + hh < 0)
-        code |= 16u;
-    return code;
-}
-
 /* Step 1: the vertices to view coordinates (r->clip_a), through the
  * vertex cache when there is one. */
 static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e)
@@ -741,7 +633,8 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
         /* a multiplicative hash of the exact coordinates */
         uint32_t h = ((uint32_t)p.x * 0x9E3779B1u) ^ ((uint32_t)p.y * 0x85EBCA77u) ^
                      ((uint32_t)p.z * 0xC2B2AE3Du);
-        stp_vertex_entry *c = &r->cache[(h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1)];
+        uint32_t slot = (h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1);
+        stp_vertex_entry *c = &r->cache[slot];
         if (c->stamp != r->cache_stamp || c->point.x != p.x || c->point.y != p.y ||
             c->point.z != p.z) {
             c->stamp = r->cache_stamp;
@@ -751,7 +644,7 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
             c->dx = STP_CACHE_NOT_PROJECTED;
         }
         r->clip_a[i] = c->view;
-        r->cached[i] = c;
+        r->cached[i] = (uint16_t)slot;
     }
     return;
 #endif
@@ -774,18 +667,18 @@ static void enter_outcodes(stp_renderer *r, stp_entry *e)
         unsigned code;
 #if STP_VERTEX_CACHE
         /* the entry may have been taken by a later vertex of this polygon */
-        stp_vertex_entry *c = r->cached[i];
+        stp_vertex_entry *c = &r->cache[r->cached[i]];
         if (c->code >= 0 && c->view.x == r->clip_a[i].x && c->view.y == r->clip_a[i].y &&
             c->view.z == r->clip_a[i].z) {
             code = (unsigned)c->code;
         } else {
-            code = outcode(r, r->clip_a[i]);
+            code = stp_clip_outcode(&r->clip_volume, r->clip_a[i]);
             if (c->view.x == r->clip_a[i].x && c->view.y == r->clip_a[i].y &&
                 c->view.z == r->clip_a[i].z)
                 c->code = (int32_t)code;
         }
 #else
-        code = outcode(r, r->clip_a[i]);
+        code = stp_clip_outcode(&r->clip_volume, r->clip_a[i]);
 #endif
         e->outside_all &= code;
         e->outside_any |= code;
@@ -1081,7 +974,7 @@ static int enter_store(stp_renderer *r, stp_entry *e)
         stp_instr p;
 #if STP_VERTEX_CACHE
         /* an unclipped polygon's vertices are the cached ones */
-        stp_vertex_entry *c = e->outside_any == 0 ? r->cached[i] : 0;
+        stp_vertex_entry *c = e->outside_any == 0 ? &r->cache[r->cached[i]] : 0;
         if (c && c->dx != STP_CACHE_NOT_PROJECTED && c->view.x == clipped[i].x &&
             c->view.y == clipped[i].y && c->view.z == clipped[i].z) {
             p.x = c->dx;

@@ -5,6 +5,8 @@
 
 #include "stipple/render.h"
 #include "fix_private.h"
+#include "clip_private.h"
+#include "view_private.h"
 
 #define STP_CLIP_VERTICES (STP_MAX_POLYGON_VERTICES + 5)
 
@@ -51,6 +53,7 @@ typedef struct stp_shadow_map {
     stp_vec3 light_view; /* the light in view coordinates when the map was set */
     stp_fix focal;       /* texels per unit of x_l / z_l, F fractional bits */
     stp_fix near;        /* > 0 */
+    stp_clip_volume volume; /* the map's pyramid, for clip.c */
 } stp_shadow_map;
 
 /* What the raster needs to re-light the pixels of one polygon, gathered
@@ -96,11 +99,11 @@ struct stp_renderer {
 
     /* view: orthonormal basis (world units), centre of projection */
     stp_vec3 from, right, up, forward;
-    int64_t from_right, from_up, from_forward; /* from . right etc., 2F
-                                                  fractional bits (< 2^49) */
+    stp_view_transform to_view; /* world to view (view.c) */
     stp_projection projection;
     stp_fix hither;
     stp_fix focal; /* perspective: pixels per (x/z); parallel: pixels per unit */
+    stp_clip_volume clip_volume; /* the view's, for clip.c */
 
     stp_lighting user_lighting;    /* what SET-LIGHT last said (world) */
     stp_lighting segment_lighting; /* COPY-LIGHT of the open segment (view) */
@@ -133,7 +136,7 @@ struct stp_renderer {
 #if STP_VERTEX_CACHE
     stp_vertex_entry cache[STP_VERTEX_CACHE];
     uint32_t cache_stamp; /* >= 1 */
-    stp_vertex_entry *cached[STP_MAX_POLYGON_VERTICES]; /* clip_a[i]'s entry */
+    uint16_t cached[STP_MAX_POLYGON_VERTICES]; /* clip_a[i]'s entry in cache[] */
 #endif
     stp_crossing crossings[STP_CLIP_VERTICES];
 
@@ -149,10 +152,6 @@ struct stp_renderer {
 };
 
 #if STP_WITH_SHADOWS
-/* render.c: a world point in view coordinates (the display file's
- * transform), and an entered vertex (the model transform, then that). */
-void stp_view_point(const stp_renderer *r, stp_vec3 p, stp_vec3 *out);
-void stp_view_vertex(const stp_renderer *r, stp_vec3 p, stp_vec3 *out);
 
 /* shadow.c, at entry: the STP_OP_LIGHT_TERM records of a polygon shaded
  * with this normal at this centre (view coordinates; colour: a colour

@@ -35,7 +35,10 @@
 #define STP_FIX_FRAC_BITS 16
 #endif
 
-/* Square root used by normalisation and Fresnel's g:
+/* Square root of stp_fix_sqrt, stp_fix_sqrt_wide and stp_vec3_unity (the
+ * view's and shadow maps' set-up, smooth vertex normals, the ray tracer;
+ * polygon shading normalises through its own reciprocal square root,
+ * fix_private.h, whatever this says):
  * 0 (default) exact: bit-by-bit integer square root, floor of the true root.
  * 1 fast: 8-entry-table seed plus two Newton steps, relative error < 2^-15. */
 #ifndef STP_SQRT_FAST
@@ -54,7 +57,9 @@
  * about six): the cache keeps the view coordinates, outcode and device
  * position of recently entered points, keyed by their exact coordinates,
  * so a repeated vertex is not transformed and projected again.  Each entry
- * costs 44 bytes of the renderer object; 0 takes the cache out. */
+ * costs 44 bytes of the renderer object, plus 2 bytes per
+ * STP_MAX_POLYGON_VERTICES; 0 takes the cache out (`stipple compile`'s
+ * headers do: a compiled scene is entered once). */
 #ifndef STP_VERTEX_CACHE
 #define STP_VERTEX_CACHE 64
 #endif
