@@ -53,7 +53,7 @@
 #endif
 
 static stp_renderer_storage renderer;
-#if defined(STP_COMPILED_DIFFUSION) && STP_COMPILED_DIFFUSION
+#if STP_FW_DIFFUSION
 /* error diffusion draws the band as GREY8 rows (render.h, stp_output.diffusion) */
 static uint8_t band[STP_FW_BAND_ROWS * STP_FW_PANEL_W];
 #else
