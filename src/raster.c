@@ -7,6 +7,16 @@
 #define SUB STP_SUBPIXEL_BITS
 #define HALF_PIXEL (1 << (SUB - 1))
 
+/* Where a 64-bit division is one instruction (64-bit hosts) the raster
+ * divides; elsewhere (Cortex-M: a ~470-instruction libgcc call on ARMv6-M,
+ * over 100 on ARMv7-M) it multiplies by a reciprocal and corrects, with the
+ * same result. */
+#if defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
+#define WIDE_DIVIDE 1
+#else
+#define WIDE_DIVIDE 0
+#endif
+
 size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
 {
     switch (fmt) {
@@ -30,6 +40,17 @@ typedef struct frame {
     uint16_t *zbuf;
     uint32_t y0, rows; /* current band */
     int32_t key_min, key_max; /* depth-key range of the visible polygons */
+    uint64_t depth_scale;     /* floor(2^32 (65534 2^12) / (key_max - key_min)) */
+    /* pixels any visible polygon can cover (x_min > x_max: none) */
+    uint32_t x_min, x_max, y_min, y_max;
+    /* MONO1 spans from pattern bytes: a threshold cell whose width divides
+     * 8 (mono_fill); cell_mask its height - 1 when a power of two, else 0;
+     * patterns[] the byte of each cell row for style pattern_style (-1:
+     * none yet) */
+    int mono_fill;
+    uint32_t cell_mask;
+    int pattern_style;
+    uint8_t patterns[STP_CELL_MAX];
 #if STP_WITH_SHADOWS
     stp_shadow_poly *shadow; /* the polygon being drawn's shadow records;
                                 NULL when no light has a map */
@@ -49,6 +70,21 @@ static uint8_t style_code(const frame *fr, int index)
     return stp_output_style_code(fr->out, fr->r->levels, index);
 }
 
+/* Make style the one put_span fills MONO1 spans of from pattern bytes:
+ * one byte per cell row, built once for a run of polygons of that style
+ * rather than per span. */
+static void use_style(frame *fr, int style)
+{
+    uint32_t cy;
+    uint8_t level;
+    if (!fr->mono_fill || style == fr->pattern_style)
+        return;
+    level = level_of(fr, style);
+    for (cy = 0; cy < fr->cell->height; cy++)
+        fr->patterns[cy] = stp_halftone_pattern_byte(fr->cell, cy, level);
+    fr->pattern_style = style;
+}
+
 /* What a STP_OP_SHADE paints with: its colour on an RGB888 device when it
  * has one, else its style index. */
 static int paint_of(const frame *fr, const stp_instr *in)
@@ -65,7 +101,12 @@ static void put_span(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int 
     uint32_t x;
     switch (fr->port->format) {
     case STP_PIXEL_MONO1:
-        stp_halftone_fillin(row, x1, x2, y, fr->cell, level_of(fr, style));
+        if (style == fr->pattern_style) {
+            uint32_t cy = fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height;
+            stp_halftone_fill_bits(row, x1, x2, fr->patterns[cy]);
+        } else {
+            stp_halftone_fillin(row, x1, x2, y, fr->cell, level_of(fr, style));
+        }
         break;
     case STP_PIXEL_GREY8: {
         uint8_t v = level_of(fr, style);
@@ -290,45 +331,236 @@ static void paint_run(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int
 }
 
 #if STP_WITH_ZBUFFER
-/* Depth-tested span: runs of pixels that pass are painted with put_span, so
- * the halftone inner loop stays the same as without a Z buffer. */
+/* One pixel's depth from the span's Q12 depth: floor, clamped to 1..65535. */
+static uint16_t depth_of(int64_t d)
+{
+    int64_t dv = stp_asr64(d, 12);
+    return (uint16_t)(dv < 1 ? 1 : (dv > 65535 ? 65535 : dv));
+}
+
+/* Depth-tested span: runs of pixels that pass are painted with paint_run,
+ * so the halftone inner loop stays the same as without a Z buffer.  d: the
+ * depth at x1's centre, ddx its change per pixel, both Q12. */
 static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style,
                        int64_t d, int64_t ddx, int smooth, int64_t s0, int64_t sstep, stp_fix t)
 {
     uint16_t *z = fr->zbuf + (size_t)(y - fr->y0) * fr->r->width;
     uint32_t x, run = 0;
     int in_run = 0;
-    for (x = x1; x <= x2; x++, d += ddx) {
-        int64_t dv = stp_asr64(d, 12);
-        uint16_t depth = (uint16_t)(dv < 1 ? 1 : (dv > 65535 ? 65535 : dv));
-        if (depth > z[x]) {
-            if (t == 0)
-                z[x] = depth; /* transparent polygons do not hide what follows */
-            if (!in_run) {
-                run = x;
-                in_run = 1;
+    int64_t d_end = d + ddx * (int64_t)(x2 - x1);
+    const int64_t lo = (int64_t)1 << 12, hi = (int64_t)65536 << 12;
+    if (d >= lo && d < hi && d_end >= lo && d_end < hi) {
+        /* both ends within 1..65535 (so every pixel between): no clamping,
+         * and the depth and its step fit 32 bits (|step| <= |d_end - d|) */
+        int32_t di = (int32_t)d, dstep = x2 > x1 ? (int32_t)ddx : 0;
+        for (x = x1; x <= x2; x++, di += dstep) {
+            uint16_t depth = (uint16_t)((uint32_t)di >> 12);
+            if (depth > z[x]) {
+                if (t == 0)
+                    z[x] = depth; /* transparent polygons do not hide what follows */
+                if (!in_run) {
+                    run = x;
+                    in_run = 1;
+                }
+            } else if (in_run) {
+                paint_run(fr, y, run, x - 1, style, smooth, s0 + (int64_t)(run - x1) * sstep, sstep, t);
+                in_run = 0;
             }
-        } else if (in_run) {
-            paint_run(fr, y, run, x - 1, style, smooth, s0 + (int64_t)(run - x1) * sstep, sstep, t);
-            in_run = 0;
+        }
+    } else {
+        for (x = x1; x <= x2; x++, d += ddx) {
+            uint16_t depth = depth_of(d);
+            if (depth > z[x]) {
+                if (t == 0)
+                    z[x] = depth;
+                if (!in_run) {
+                    run = x;
+                    in_run = 1;
+                }
+            } else if (in_run) {
+                paint_run(fr, y, run, x - 1, style, smooth, s0 + (int64_t)(run - x1) * sstep, sstep, t);
+                in_run = 0;
+            }
         }
     }
     if (in_run)
         paint_run(fr, y, run, x2, style, smooth, s0 + (int64_t)(run - x1) * sstep, sstep, t);
 }
 
-/* Depth key mapped to the Z buffer's 1..65535 with 12 fractional bits. */
+/* Depth key mapped to the Z buffer's 1..65535 with 12 fractional bits:
+ * 2^12 + floor((key - key_min) 65534 2^12 / range).  The quotient comes
+ * from the frame's reciprocal depth_scale and one correction (it is at most
+ * one short: u <= range < 2^32), so no 64-bit division per vertex: on
+ * ARMv6-M that is a ~470-instruction library call. */
 static int64_t depth_q12(const frame *fr, int32_t key)
 {
-    int64_t range = (int64_t)fr->key_max - fr->key_min;
-    if (range <= 0)
+    const uint64_t k = (uint64_t)65534 << 12;
+    uint64_t range = (uint64_t)((int64_t)fr->key_max - fr->key_min), u, num, q;
+    if (fr->key_max <= fr->key_min)
         return (int64_t)65535 << 12;
-    return ((int64_t)1 << 12) + (((int64_t)key - fr->key_min) * ((int64_t)65534 << 12)) / range;
+    u = (uint64_t)((int64_t)key - fr->key_min); /* 0..range */
+    num = u * k;                                /* < 2^60 */
+    if (WIDE_DIVIDE)
+        return ((int64_t)1 << 12) + (int64_t)(num / range);
+    q = (u * fr->depth_scale) >> 32;            /* u depth_scale <= k 2^32 < 2^60 */
+    if ((q + 1) * range <= num)
+        q++;
+    return ((int64_t)1 << 12) + (int64_t)q;
+}
+
+/* The polygon's depth plane, by Newell's sums on (x, y, depth) over its
+ * projected vertices: exact for planar polygons, a best fit otherwise.
+ * Gradients per subpixel unit with 12 fractional bits (clamped to +-2^40:
+ * a polygon seen edge-on), through the vertex average (xc, yc, dc).
+ * Returns 0 when the polygon is edge-on (no area on screen). */
+typedef struct depth_plane {
+    int64_t ddx, ddy, dc;
+    int32_t xc, yc;
+} depth_plane;
+
+static int depth_setup(const frame *fr, const stp_instr *v, int n, depth_plane *pl)
+{
+    int64_t a = 0, b = 0, c = 0, sd = 0, d_prev = depth_q12(fr, v[n - 1].z);
+    uint32_t sx = 0, sy = 0; /* n <= 4101 coordinates in [0, 2^19]: < 2^32 */
+    int i;
+    for (i = 0; i < n; i++) {
+        const stp_instr *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
+        int64_t d_q = depth_q12(fr, q->z), dp = d_prev >> 12, dq = d_q >> 12;
+        a += ((int64_t)p->y - q->y) * (dp + dq);
+        b += (dp - dq) * ((int64_t)p->x + q->x);
+        c += ((int64_t)p->x - q->x) * ((int64_t)p->y + q->y);
+        sx += (uint32_t)q->x;
+        sy += (uint32_t)q->y;
+        sd += d_q;
+        d_prev = d_q;
+    }
+    if (c == 0)
+        return 0;
+    pl->ddx = (-a * 4096) / c;
+    pl->ddy = (-b * 4096) / c;
+    if (pl->ddx > ((int64_t)1 << 40)) pl->ddx = (int64_t)1 << 40;
+    if (pl->ddx < -((int64_t)1 << 40)) pl->ddx = -((int64_t)1 << 40);
+    if (pl->ddy > ((int64_t)1 << 40)) pl->ddy = (int64_t)1 << 40;
+    if (pl->ddy < -((int64_t)1 << 40)) pl->ddy = -((int64_t)1 << 40);
+    pl->xc = (int32_t)(sx / (uint32_t)n);
+    pl->yc = (int32_t)(sy / (uint32_t)n);
+    /* depths below 2^28: 32-bit division while the sum fits */
+    pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)((uint32_t)sd / (uint32_t)n) : sd / n;
+    return 1;
 }
 #endif
 
+/* ---- edges (shared with the shadow maps, shadow.c) ---- */
+
+/* trunc(2^16 num / den) for den > 0 and |num| < 2^21: a 32-bit division
+ * while 2^16 num fits 32 bits (ARMv6-M: a short library call instead of a
+ * ~470-instruction 64-bit one). */
+static int64_t slope_q16(int32_t num, int32_t den)
+{
+    if (num > -32768 && num < 32768)
+        return (int32_t)(num * 65536) / den;
+    return ((int64_t)num * 65536) / den;
+}
+
+int stp_edge_setup(stp_edge *e, int32_t xa, int32_t ya, int32_t xb, int32_t yb)
+{
+    int dir = 1;
+    if (ya == yb)
+        return 0;
+    if (ya > yb) {
+        int32_t t = xa;
+        xa = xb;
+        xb = t;
+        t = ya;
+        ya = yb;
+        yb = t;
+        dir = -1;
+    }
+    e->xa = xa;
+    e->ya = ya;
+    e->yb = yb;
+    e->step = slope_q16(xb - xa, yb - ya) * 16;
+    e->acc = 0;
+#if STP_WITH_GOURAUD
+    e->sa = 0;
+    e->shade_step = e->shade_acc = 0;
+#endif
+    return dir;
+}
+
+#if STP_WITH_GOURAUD
+void stp_edge_shades(stp_edge *e, int32_t s_top, int32_t s_bottom)
+{
+    e->sa = s_top;
+    e->shade_step = slope_q16(s_bottom - s_top, e->yb - e->ya) * 16;
+}
+#endif
+
+void stp_edges_start(stp_edge *edges, int n, int32_t yc, int smooth)
+{
+    int i;
+    (void)smooth;
+    for (i = 0; i < n; i++) {
+        stp_edge *e = &edges[i];
+        /* step is 16 slopes exactly */
+        e->acc = (int64_t)e->xa * 65536 + (int64_t)(yc - e->ya) * stp_asr64(e->step, 4);
+#if STP_WITH_GOURAUD
+        if (smooth)
+            e->shade_acc = (int64_t)e->sa * 65536 + (int64_t)(yc - e->ya) * stp_asr64(e->shade_step, 4);
+#endif
+    }
+}
+
+int stp_edges_row(stp_edge *edges, int n, int32_t yc, int smooth, stp_crossing *out)
+{
+    int nc = 0, i, k;
+    (void)smooth;
+    for (i = 0; i < n; i++) {
+        stp_edge *e = &edges[i];
+        if (e->ya <= yc && yc < e->yb) {
+            stp_crossing c;
+            c.x = (int32_t)stp_asr64(e->acc, 16);
+#if STP_WITH_GOURAUD
+            c.shade = smooth ? (int32_t)stp_asr64(e->shade_acc, 16) : 0;
+#endif
+            /* insertion sort: crossings are few */
+            for (k = nc; k > 0 && out[k - 1].x > c.x; k--)
+                out[k] = out[k - 1];
+            out[k] = c;
+            nc++;
+        }
+        e->acc += e->step;
+#if STP_WITH_GOURAUD
+        if (smooth)
+            e->shade_acc += e->shade_step;
+#endif
+    }
+    return nc;
+}
+
+/* floor(v / 16) */
+static int32_t floor16(int32_t v)
+{
+    return v >= 0 ? v / 16 : -((15 - v) / 16);
+}
+
+int stp_span_pixels(int32_t xl, int32_t xr, uint32_t width, uint32_t *p1, uint32_t *p2)
+{
+    /* pixel p's centre 16 p + 8: xl <= 16 p + 8 < xr */
+    int32_t a = floor16(xl - HALF_PIXEL + (1 << SUB) - 1), b = floor16(xr - HALF_PIXEL + (1 << SUB) - 1) - 1;
+    if (a < 0)
+        a = 0;
+    if (b > (int32_t)width - 1)
+        b = (int32_t)width - 1;
+    if (a > b)
+        return 0;
+    *p1 = (uint32_t)a;
+    *p2 = (uint32_t)b;
+    return 1;
+}
+
 /* Scan-convert the polygon whose header is df[at] into the current band. */
-static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z, stp_fix t)
+static void draw_polygon(frame *fr, uint32_t at, int style, int use_z, stp_fix t)
 {
     stp_renderer *r = fr->r;
     const stp_instr *v = &r->df[at];
@@ -342,7 +574,7 @@ static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z, stp
     int32_t band_top = (int32_t)(fr->y0 << SUB), band_bottom = (int32_t)((fr->y0 + fr->rows) << SUB);
     uint32_t y, y_first, y_last;
 #if STP_WITH_ZBUFFER
-    int64_t plane_c = 0, ddx = 0, ddy = 0, xc = 0, yc = 0, dc = 0;
+    depth_plane pl = {0, 0, 0, 0, 0};
 #endif
     for (i = 0; i < n; i++) {
         if (v[i].y < ymin)
@@ -352,124 +584,66 @@ static void draw_polygon(const frame *fr, uint32_t at, int style, int use_z, stp
     }
     if (ymax <= band_top || ymin >= band_bottom)
         return;
+#if STP_WITH_ZBUFFER
+    if (use_z && !depth_setup(fr, v, n, &pl))
+        return; /* edge-on: no area on screen */
+#else
+    (void)use_z;
+#endif
 #if STP_WITH_SHADOWS
     if (fr->shadow)
         stp_shadow_polygon(r, at, fr->shadow);
 #endif
+    if (fr->port->format == STP_PIXEL_MONO1 && !(style & STP_COLOUR_FLAG))
+        use_style(fr, style);
     /* edges oriented top to bottom, horizontal ones dropped */
     for (i = 0; i < n; i++) {
         const stp_instr *a = &v[i], *b = &v[(i + 1) % n];
-        stp_edge *e = &r->edges[ne];
-        if (a->y == b->y)
+        int dir = stp_edge_setup(&r->edges[ne], a->x, a->y, b->x, b->y);
+        if (dir == 0)
             continue;
-        if (a->y > b->y) {
-            const stp_instr *swap = a;
-            a = b;
-            b = swap;
-        }
-        e->xa = a->x;
-        e->ya = a->y;
-        e->yb = b->y;
-        e->slope = (((int64_t)b->x - a->x) * 65536) / ((int64_t)b->y - a->y);
 #if STP_WITH_GOURAUD
-        if (smooth) {
-            e->sa = a->shade;
-            e->shade_slope = (((int64_t)b->shade - a->shade) * 65536) / ((int64_t)b->y - a->y);
-        }
+        if (smooth)
+            stp_edge_shades(&r->edges[ne], dir > 0 ? a->shade : b->shade, dir > 0 ? b->shade : a->shade);
 #endif
         ne++;
     }
-#if STP_WITH_ZBUFFER
-    if (use_z) {
-        /* depth plane through the projected vertices, by Newell's sums on
-         * (x, y, depth): exact for planar polygons, a best fit otherwise */
-        int64_t a = 0, b = 0, c = 0, sx = 0, sy = 0, sd = 0;
-        for (i = 0; i < n; i++) {
-            const stp_instr *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
-            int64_t dp = depth_q12(fr, p->z) >> 12, dq = depth_q12(fr, q->z) >> 12;
-            a += ((int64_t)p->y - q->y) * (dp + dq);
-            b += (dp - dq) * ((int64_t)p->x + q->x);
-            c += ((int64_t)p->x - q->x) * ((int64_t)p->y + q->y);
-            sx += q->x;
-            sy += q->y;
-            sd += depth_q12(fr, q->z);
-        }
-        plane_c = c;
-        if (c != 0) {
-            /* gradients per subpixel unit with 12 fractional bits */
-            ddx = (-a * 4096) / c;
-            ddy = (-b * 4096) / c;
-            if (ddx > ((int64_t)1 << 40)) ddx = (int64_t)1 << 40;
-            if (ddx < -((int64_t)1 << 40)) ddx = -((int64_t)1 << 40);
-            if (ddy > ((int64_t)1 << 40)) ddy = (int64_t)1 << 40;
-            if (ddy < -((int64_t)1 << 40)) ddy = -((int64_t)1 << 40);
-        }
-        xc = sx / n;
-        yc = sy / n;
-        dc = sd / n;
-    }
-#else
-    (void)use_z;
-#endif
     /* rows whose centres lie in [ymin, ymax) and in the band */
     y_first = (uint32_t)((ymin < band_top ? band_top : ymin) >> SUB);
     y_last = (uint32_t)((ymax > band_bottom ? band_bottom : ymax) >> SUB);
     if (y_last >= fr->y0 + fr->rows)
         y_last = fr->y0 + fr->rows - 1;
+    stp_edges_start(r->edges, ne, (int32_t)(y_first << SUB) + HALF_PIXEL, smooth);
     for (y = y_first; y <= y_last; y++) {
         int32_t yc_row = (int32_t)(y << SUB) + HALF_PIXEL;
-        int nc = 0, k;
-        for (i = 0; i < ne; i++) {
-            const stp_edge *e = &r->edges[i];
-            if (e->ya <= yc_row && yc_row < e->yb) {
-                stp_crossing c;
-                c.x = (int32_t)(e->xa + stp_floordiv64((int64_t)(yc_row - e->ya) * e->slope, 65536));
-#if STP_WITH_GOURAUD
-                if (smooth)
-                    c.shade = (int32_t)(e->sa + stp_floordiv64((int64_t)(yc_row - e->ya) * e->shade_slope, 65536));
-#endif
-                /* insertion sort: crossings are few */
-                for (k = nc; k > 0 && r->crossings[k - 1].x > c.x; k--)
-                    r->crossings[k] = r->crossings[k - 1];
-                r->crossings[k] = c;
-                nc++;
-            }
-        }
+        int nc = stp_edges_row(r->edges, ne, yc_row, smooth, r->crossings), k;
         for (k = 0; k + 1 < nc; k += 2) {
             /* pixels whose centre c satisfies x_left <= c < x_right */
-            int64_t xl = r->crossings[k].x, xr = r->crossings[k + 1].x;
+            int32_t xl = r->crossings[k].x, xr = r->crossings[k + 1].x;
             int64_t s0 = 0, sstep = 0;
-            int64_t p1 = stp_floordiv64(xl - HALF_PIXEL + (1 << SUB) - 1, 1 << SUB);
-            int64_t p2 = stp_floordiv64(xr - HALF_PIXEL + (1 << SUB) - 1, 1 << SUB) - 1;
-            if (p1 < 0)
-                p1 = 0;
-            if (p2 > (int64_t)r->width - 1)
-                p2 = (int64_t)r->width - 1;
-            if (p1 > p2)
+            uint32_t p1, p2;
+            if (!stp_span_pixels(xl, xr, r->width, &p1, &p2))
                 continue;
 #if STP_WITH_GOURAUD
             if (smooth) {
                 /* shade along the span from its two crossings, at pixel
                  * centres, with 16 extra fractional bits */
                 int64_t sl = r->crossings[k].shade, sr = r->crossings[k + 1].shade;
-                int64_t width = xr - xl;
+                int64_t width = (int64_t)xr - xl;
                 sstep = width > 0 ? ((sr - sl) * 65536 * (1 << SUB)) / width : 0;
-                s0 = sl * 65536 + (width > 0 ? ((sr - sl) * 65536 * ((p1 << SUB) + HALF_PIXEL - xl)) / width : 0);
+                s0 = sl * 65536 +
+                     (width > 0 ? ((sr - sl) * 65536 * (((int64_t)p1 << SUB) + HALF_PIXEL - xl)) / width : 0);
             }
 #endif
 #if STP_WITH_ZBUFFER
             if (use_z) {
-                int64_t d;
-                if (plane_c == 0)
-                    continue; /* edge-on: no area on screen */
-                d = dc + ddx * (((int64_t)p1 << SUB) + HALF_PIXEL - xc) +
-                    ddy * ((int64_t)yc_row - yc);
-                put_span_z(fr, y, (uint32_t)p1, (uint32_t)p2, style, d, ddx * (1 << SUB), smooth, s0,
-                           sstep, t);
+                int64_t d = pl.dc + pl.ddx * (((int64_t)p1 << SUB) + HALF_PIXEL - pl.xc) +
+                            pl.ddy * ((int64_t)yc_row - pl.yc);
+                put_span_z(fr, y, p1, p2, style, d, pl.ddx * (1 << SUB), smooth, s0, sstep, t);
                 continue;
             }
 #endif
-            paint_run(fr, y, (uint32_t)p1, (uint32_t)p2, style, smooth, s0, sstep, t);
+            paint_run(fr, y, p1, p2, style, smooth, s0, sstep, t);
         }
     }
 }
@@ -506,7 +680,7 @@ static void draw_line(const frame *fr, const stp_instr *a, const stp_instr *b, i
 /* Walk the visible segments in display order: polygons (unless skip_polygons)
  * and lines, each with the style in force. */
 /* pass: which polygons to draw: 0 all, 1 opaque only, 2 transparent only. */
-static void replay(const frame *fr, int skip_polygons, int use_z, int pass)
+static void replay(frame *fr, int skip_polygons, int use_z, int pass)
 {
     stp_renderer *r = fr->r;
     int s;
@@ -589,6 +763,7 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
     stp_renderer *r = fr->r;
     uint32_t count = 0, k;
     int s, i;
+    int32_t x_lo = INT32_MAX, x_hi = INT32_MIN, y_lo = INT32_MAX, y_hi = INT32_MIN;
     fr->key_min = INT32_MAX;
     fr->key_max = INT32_MIN;
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
@@ -613,6 +788,14 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
                         fr->key_min = z;
                     if (z > fr->key_max)
                         fr->key_max = z;
+                    if (in[i].x < x_lo)
+                        x_lo = in[i].x;
+                    if (in[i].x > x_hi)
+                        x_hi = in[i].x;
+                    if (in[i].y < y_lo)
+                        y_lo = in[i].y;
+                    if (in[i].y > y_hi)
+                        y_hi = in[i].y;
                 }
                 if (sort) {
                     sort[count].index = k;
@@ -624,6 +807,20 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
                 k += (uint32_t)in->op - 1;
             }
         }
+    }
+    /* a pixel a polygon covers has its centre within the polygon's
+     * vertices' extent (coordinates are >= 0: project() clamps them) */
+    fr->x_min = fr->y_min = 1;
+    fr->x_max = fr->y_max = 0;
+    if (count > 0) {
+        fr->x_min = (uint32_t)x_lo >> SUB;
+        fr->x_max = (uint32_t)x_hi >> SUB;
+        fr->y_min = (uint32_t)y_lo >> SUB;
+        fr->y_max = (uint32_t)y_hi >> SUB;
+        if (fr->x_max > r->width - 1)
+            fr->x_max = r->width - 1;
+        if (fr->y_max > r->height - 1)
+            fr->y_max = r->height - 1;
     }
     return count;
 }
@@ -697,6 +894,14 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
         background_style = 0;
 
     polygons = scan_polygons(&fr, hidden == STP_HIDDEN_PAINTER ? mem->sort : 0);
+    fr.depth_scale = 0;
+    if (fr.key_max > fr.key_min)
+        fr.depth_scale = ((uint64_t)65534 << 44) / (uint64_t)((int64_t)fr.key_max - fr.key_min);
+    fr.mono_fill = port->format == STP_PIXEL_MONO1 && fr.cell->kind == STP_CELL_THRESHOLD &&
+                   fr.cell->width > 0 && 8u % fr.cell->width == 0 && fr.cell->height > 0;
+    fr.cell_mask = (fr.cell->height & (fr.cell->height - 1u)) == 0 ? fr.cell->height - 1u : 0;
+    fr.pattern_style = -1;
+    use_style(&fr, background_style);
     (void)polygons; /* read only by the painter's sort */
 #if STP_WITH_PAINTER
     if (hidden == STP_HIDDEN_PAINTER)
@@ -715,10 +920,15 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
             put_span(&fr, y, 0, r->width - 1, background_style);
         }
 #if STP_WITH_ZBUFFER
-        if (hidden == STP_HIDDEN_ZBUFFER) {
-            size_t i, n = (size_t)r->width * fr.rows;
-            for (i = 0; i < n; i++)
-                fr.zbuf[i] = 0; /* farther than any polygon (they map to >= 1) */
+        if (hidden == STP_HIDDEN_ZBUFFER && fr.x_min <= fr.x_max) {
+            /* farther than any polygon (they map to >= 1), where one can
+             * reach: a Z test reads no other entry */
+            uint32_t x, y_end = y0 + fr.rows - 1 < fr.y_max ? y0 + fr.rows - 1 : fr.y_max;
+            for (y = y0 > fr.y_min ? y0 : fr.y_min; y <= y_end; y++) {
+                uint16_t *z = fr.zbuf + (size_t)(y - y0) * r->width;
+                for (x = fr.x_min; x <= fr.x_max; x++)
+                    z[x] = 0;
+            }
         }
 #endif
 #if STP_WITH_PAINTER
