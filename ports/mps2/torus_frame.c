@@ -88,10 +88,8 @@ int torus_setup(stp_renderer *r)
     return stp_set_levels(r, 16);
 }
 
-int torus_frame(stp_renderer *r, const stp_vec3 *vertices, stp_port *port,
-                const stp_frame_memory *mem)
+int torus_enter(stp_renderer *r, const stp_vec3 *vertices)
 {
-    stp_output out;
     int status, k;
     (void)stp_segment_delete(r, 1); /* absent on the first frame */
     status = stp_segment_create(r, 1);
@@ -99,8 +97,12 @@ int torus_frame(stp_renderer *r, const stp_vec3 *vertices, stp_port *port,
         status = stp_polygon(r, &vertices[3 * k], 3);
     if (status == STP_OK)
         status = stp_segment_close(r);
-    if (status != STP_OK)
-        return status;
+    return status;
+}
+
+int torus_render(stp_renderer *r, stp_port *port, const stp_frame_memory *mem)
+{
+    stp_output out;
     out.hidden = STP_HIDDEN_ZBUFFER;
     out.cell = 0; /* Bayer 4x4 */
     out.gamma = 0;
@@ -108,4 +110,11 @@ int torus_frame(stp_renderer *r, const stp_vec3 *vertices, stp_port *port,
     out.background = 0;
     out.background_colour = 0;
     return stp_render(r, port, &out, mem);
+}
+
+int torus_frame(stp_renderer *r, const stp_vec3 *vertices, stp_port *port,
+                const stp_frame_memory *mem)
+{
+    int status = torus_enter(r, vertices);
+    return status == STP_OK ? torus_render(r, port, mem) : status;
 }

@@ -25,6 +25,11 @@ void torus_build(stp_vec3 *vertices);
  * created at the frame's size.  Returns STP_OK or the core's error. */
 int torus_setup(stp_renderer *r);
 
+/* The two halves of a frame: entering the torus into a fresh segment 1
+ * (the previous one deleted), and stp_render of the display file. */
+int torus_enter(stp_renderer *r, const stp_vec3 *vertices);
+int torus_render(stp_renderer *r, stp_port *port, const stp_frame_memory *mem);
+
 /* One frame: the torus entered into a fresh segment 1 (the previous one
  * deleted), then rendered to port (MONO1) through mem (one band or more,
  * Z buffer).  Returns STP_OK or the core's error. */
