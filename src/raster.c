@@ -7,15 +7,70 @@
 #define SUB STP_SUBPIXEL_BITS
 #define HALF_PIXEL (1 << (SUB - 1))
 
-/* Where a 64-bit division is one instruction (64-bit hosts) the raster
- * divides; elsewhere (Cortex-M: a ~470-instruction libgcc call on ARMv6-M,
- * over 100 on ARMv7-M) it multiplies by a reciprocal and corrects, with the
- * same result. */
+/* Where 64-bit multiplication and division are single instructions
+ * (64-bit hosts) the raster uses them; elsewhere (Cortex-M: a 64-bit
+ * division is a ~470-instruction libgcc call on ARMv6-M, a 64-bit product
+ * a ~50-instruction one) it takes 32 x 32 -> 64-bit products from 16-bit
+ * halves and divides through 32-bit quotients, with the same results. */
 #if defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
-#define WIDE_DIVIDE 1
+#define WIDE_ARITH 1
 #else
-#define WIDE_DIVIDE 0
+#define WIDE_ARITH 0
 #endif
+
+/* a b, exactly, for 32-bit a and b */
+static uint64_t umul32(uint32_t a, uint32_t b)
+{
+#if WIDE_ARITH
+    return (uint64_t)a * b;
+#else
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
+    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    return ((uint64_t)(hh + (lh >> 16) + (hl >> 16) + (mid >> 16)) << 32) | ((mid << 16) | (ll & 0xFFFFu));
+#endif
+}
+
+static int64_t smul32(int32_t a, int32_t b)
+{
+#if WIDE_ARITH
+    return (int64_t)a * b;
+#else
+    uint64_t p = umul32(a < 0 ? 0u - (uint32_t)a : (uint32_t)a, b < 0 ? 0u - (uint32_t)b : (uint32_t)b);
+    return (a < 0) != (b < 0) ? -(int64_t)p : (int64_t)p;
+#endif
+}
+
+/* num / den truncated toward zero (C's division), den != 0.  Without wide
+ * arithmetic: when |den| < 2^16 and |num| < 2^48, as three 32-bit
+ * divisions of 16-bit digits (long division); else the library's. */
+static int64_t div_trunc(int64_t num, int64_t den)
+{
+#if !WIDE_ARITH
+    uint64_t un = num < 0 ? 0u - (uint64_t)num : (uint64_t)num, ud = den < 0 ? 0u - (uint64_t)den : (uint64_t)den;
+    if (ud < 65536u && un < ((uint64_t)1 << 48)) {
+        uint32_t d = (uint32_t)ud, hi = (uint32_t)(un >> 32), q1, q2, q3, part;
+        q1 = hi / d;
+        part = ((hi - q1 * d) << 16) | (uint32_t)((un >> 16) & 0xFFFFu);
+        q2 = part / d;
+        part = ((part - q2 * d) << 16) | (uint32_t)(un & 0xFFFFu);
+        q3 = part / d;
+        un = ((uint64_t)q1 << 32) + ((uint64_t)q2 << 16) + q3;
+        return (num < 0) != (den < 0) ? -(int64_t)un : (int64_t)un;
+    }
+#endif
+    return num / den;
+}
+
+/* floor(s / n) for n >= 1: n = 3 and 4 without a division */
+static uint32_t div_count(uint32_t s, uint32_t n)
+{
+    if (n == 3)
+        return (uint32_t)(umul32(s, 0xAAAAAAABu) >> 33);
+    if (n == 4)
+        return s >> 2;
+    return s / n;
+}
 
 size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
 {
@@ -40,7 +95,8 @@ typedef struct frame {
     uint16_t *zbuf;
     uint32_t y0, rows; /* current band */
     int32_t key_min, key_max; /* depth-key range of the visible polygons */
-    uint64_t depth_scale;     /* floor(2^32 (65534 2^12) / (key_max - key_min)) */
+    uint32_t depth_scale;     /* depth_q12's reciprocal and its shift */
+    int depth_shift;
     /* pixels any visible polygon can cover (x_min > x_max: none) */
     uint32_t x_min, x_max, y_min, y_max;
     /* MONO1 spans from pattern bytes: a threshold cell whose width divides
@@ -363,7 +419,7 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, in
                     in_run = 1;
                 }
             } else if (in_run) {
-                paint_run(fr, y, run, x - 1, style, smooth, s0 + (int64_t)(run - x1) * sstep, sstep, t);
+                paint_run(fr, y, run, x - 1, style, smooth, smooth ? s0 + (int64_t)(run - x1) * sstep : 0, sstep, t);
                 in_run = 0;
             }
         }
@@ -378,33 +434,37 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, in
                     in_run = 1;
                 }
             } else if (in_run) {
-                paint_run(fr, y, run, x - 1, style, smooth, s0 + (int64_t)(run - x1) * sstep, sstep, t);
+                paint_run(fr, y, run, x - 1, style, smooth, smooth ? s0 + (int64_t)(run - x1) * sstep : 0, sstep, t);
                 in_run = 0;
             }
         }
     }
     if (in_run)
-        paint_run(fr, y, run, x2, style, smooth, s0 + (int64_t)(run - x1) * sstep, sstep, t);
+        paint_run(fr, y, run, x2, style, smooth, smooth ? s0 + (int64_t)(run - x1) * sstep : 0, sstep, t);
 }
 
 /* Depth key mapped to the Z buffer's 1..65535 with 12 fractional bits:
- * 2^12 + floor((key - key_min) 65534 2^12 / range).  The quotient comes
- * from the frame's reciprocal depth_scale and one correction (it is at most
- * one short: u <= range < 2^32), so no 64-bit division per vertex: on
- * ARMv6-M that is a ~470-instruction library call. */
+ * 2^12 + floor(u 65534 2^12 / range), u = key - key_min <= range < 2^32.
+ * Without wide arithmetic the quotient comes from the frame's reciprocal:
+ * depth_scale = floor(65534 2^12 2^s / range) < 2^29 with 2^s >= range
+ * (s = depth_shift), so u depth_scale / 2^s is less than one short of the
+ * quotient and one correction makes it exact. */
 static int64_t depth_q12(const frame *fr, int32_t key)
 {
-    const uint64_t k = (uint64_t)65534 << 12;
-    uint64_t range = (uint64_t)((int64_t)fr->key_max - fr->key_min), u, num, q;
+    const uint32_t k = (uint32_t)65534 << 12;
+    uint32_t range = (uint32_t)((int64_t)fr->key_max - fr->key_min), u;
+    uint64_t num, q;
     if (fr->key_max <= fr->key_min)
         return (int64_t)65535 << 12;
-    u = (uint64_t)((int64_t)key - fr->key_min); /* 0..range */
-    num = u * k;                                /* < 2^60 */
-    if (WIDE_DIVIDE)
-        return ((int64_t)1 << 12) + (int64_t)(num / range);
-    q = (u * fr->depth_scale) >> 32;            /* u depth_scale <= k 2^32 < 2^60 */
-    if ((q + 1) * range <= num)
+    u = (uint32_t)((int64_t)key - fr->key_min); /* 0..range */
+    num = umul32(u, k);
+#if WIDE_ARITH
+    q = num / range;
+#else
+    q = umul32(u, fr->depth_scale) >> fr->depth_shift;
+    if (umul32((uint32_t)q + 1u, range) <= num)
         q++;
+#endif
     return ((int64_t)1 << 12) + (int64_t)q;
 }
 
@@ -426,9 +486,10 @@ static int depth_setup(const frame *fr, const stp_instr *v, int n, depth_plane *
     for (i = 0; i < n; i++) {
         const stp_instr *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
         int64_t d_q = depth_q12(fr, q->z), dp = d_prev >> 12, dq = d_q >> 12;
-        a += ((int64_t)p->y - q->y) * (dp + dq);
-        b += (dp - dq) * ((int64_t)p->x + q->x);
-        c += ((int64_t)p->x - q->x) * ((int64_t)p->y + q->y);
+        /* coordinates in [0, 2^19], depths in [1, 65535]: 32-bit factors */
+        a += smul32(p->y - q->y, (int32_t)(dp + dq));
+        b += smul32((int32_t)(dp - dq), p->x + q->x);
+        c += smul32(p->x - q->x, p->y + q->y);
         sx += (uint32_t)q->x;
         sy += (uint32_t)q->y;
         sd += d_q;
@@ -436,21 +497,28 @@ static int depth_setup(const frame *fr, const stp_instr *v, int n, depth_plane *
     }
     if (c == 0)
         return 0;
-    pl->ddx = (-a * 4096) / c;
-    pl->ddy = (-b * 4096) / c;
+    pl->ddx = div_trunc(-a * 4096, c);
+    pl->ddy = div_trunc(-b * 4096, c);
     if (pl->ddx > ((int64_t)1 << 40)) pl->ddx = (int64_t)1 << 40;
     if (pl->ddx < -((int64_t)1 << 40)) pl->ddx = -((int64_t)1 << 40);
     if (pl->ddy > ((int64_t)1 << 40)) pl->ddy = (int64_t)1 << 40;
     if (pl->ddy < -((int64_t)1 << 40)) pl->ddy = -((int64_t)1 << 40);
-    pl->xc = (int32_t)(sx / (uint32_t)n);
-    pl->yc = (int32_t)(sy / (uint32_t)n);
+    pl->xc = (int32_t)div_count(sx, (uint32_t)n);
+    pl->yc = (int32_t)div_count(sy, (uint32_t)n);
     /* depths below 2^28: 32-bit division while the sum fits */
-    pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)((uint32_t)sd / (uint32_t)n) : sd / n;
+    pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : sd / n;
     return 1;
 }
 #endif
 
 /* ---- edges (shared with the shadow maps, shadow.c) ---- */
+
+/* floor(v / 16) */
+static int32_t floor16(int32_t v)
+{
+    return v >= 0 ? v / 16 : -((15 - v) / 16);
+}
+
 
 /* trunc(2^16 num / den) for den > 0 and |num| < 2^21: a 32-bit division
  * while 2^16 num fits 32 bits (ARMv6-M: a short library call instead of a
@@ -476,6 +544,9 @@ int stp_edge_setup(stp_edge *e, int32_t xa, int32_t ya, int32_t xb, int32_t yb)
         yb = t;
         dir = -1;
     }
+    /* no row centre 16 r + 8 in [ya, yb): the edge never crosses a row */
+    if (floor16(ya + HALF_PIXEL - 1) == floor16(yb + HALF_PIXEL - 1))
+        return 0;
     e->xa = xa;
     e->ya = ya;
     e->yb = yb;
@@ -536,12 +607,6 @@ int stp_edges_row(stp_edge *edges, int n, int32_t yc, int smooth, stp_crossing *
 #endif
     }
     return nc;
-}
-
-/* floor(v / 16) */
-static int32_t floor16(int32_t v)
-{
-    return v >= 0 ? v / 16 : -((15 - v) / 16);
 }
 
 int stp_span_pixels(int32_t xl, int32_t xr, uint32_t width, uint32_t *p1, uint32_t *p2)
@@ -895,8 +960,13 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
 
     polygons = scan_polygons(&fr, hidden == STP_HIDDEN_PAINTER ? mem->sort : 0);
     fr.depth_scale = 0;
-    if (fr.key_max > fr.key_min)
-        fr.depth_scale = ((uint64_t)65534 << 44) / (uint64_t)((int64_t)fr.key_max - fr.key_min);
+    fr.depth_shift = 0;
+    if (fr.key_max > fr.key_min) {
+        uint64_t range = (uint64_t)((int64_t)fr.key_max - fr.key_min);
+        while (((uint64_t)1 << fr.depth_shift) < range)
+            fr.depth_shift++;
+        fr.depth_scale = (uint32_t)((((uint64_t)65534 << 12) << fr.depth_shift) / range);
+    }
     fr.mono_fill = port->format == STP_PIXEL_MONO1 && fr.cell->kind == STP_CELL_THRESHOLD &&
                    fr.cell->width > 0 && 8u % fr.cell->width == 0 && fr.cell->height > 0;
     fr.cell_mask = (fr.cell->height & (fr.cell->height - 1u)) == 0 ? fr.cell->height - 1u : 0;
