@@ -95,6 +95,7 @@ typedef struct frame {
     uint16_t *zbuf;
     uint32_t y0, rows; /* current band */
     int32_t key_min, key_max; /* depth-key range of the visible polygons */
+    stp_polygon_setup *setup; /* the caller's per-polygon depth setups, or NULL */
     uint32_t depth_scale;     /* depth_q12's reciprocal and its shift */
     int depth_shift;
     /* pixels any visible polygon can cover (x_min > x_max: none) */
@@ -480,12 +481,14 @@ typedef struct depth_plane {
 
 static int depth_setup(const frame *fr, const stp_instr *v, int n, depth_plane *pl)
 {
-    int64_t a = 0, b = 0, c = 0, sd = 0, d_prev = depth_q12(fr, v[n - 1].z);
+    pl->ddx = pl->ddy = pl->dc = 0;
+    pl->xc = pl->yc = 0;
+    int64_t a = 0, b = 0, c = 0, sd = 0, d_last = depth_q12(fr, v[n - 1].z), d_prev = d_last;
     uint32_t sx = 0, sy = 0; /* n <= 4101 coordinates in [0, 2^19]: < 2^32 */
     int i;
     for (i = 0; i < n; i++) {
         const stp_instr *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
-        int64_t d_q = depth_q12(fr, q->z), dp = d_prev >> 12, dq = d_q >> 12;
+        int64_t d_q = i == n - 1 ? d_last : depth_q12(fr, q->z), dp = d_prev >> 12, dq = d_q >> 12;
         /* coordinates in [0, 2^19], depths in [1, 65535]: 32-bit factors */
         a += smul32(p->y - q->y, (int32_t)(dp + dq));
         b += smul32((int32_t)(dp - dq), p->x + q->x);
@@ -508,6 +511,37 @@ static int depth_setup(const frame *fr, const stp_instr *v, int n, depth_plane *
     /* depths below 2^28: 32-bit division while the sum fits */
     pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : sd / n;
     return 1;
+}
+
+/* The depth plane of the polygon at `ordinal` (display order) for this
+ * band: made in the polygon's first band (the one holding its top: ymin >=
+ * the band's top) and kept in the caller's setup array when there is one,
+ * taken from there in the bands after.  Returns 0 for an edge-on polygon
+ * (kept as centre x = -1: device coordinates are >= 0). */
+static int depth_plane_for(const frame *fr, const stp_instr *v, int n, uint32_t ordinal, int32_t ymin,
+                           depth_plane *pl)
+{
+    stp_polygon_setup *kept = fr->setup && ordinal != UINT32_MAX ? &fr->setup[ordinal] : 0;
+    int ok;
+    if (kept && ymin < (int32_t)(fr->y0 << SUB)) {
+        if (kept->centre[0] < 0)
+            return 0;
+        pl->ddx = kept->plane[0];
+        pl->ddy = kept->plane[1];
+        pl->dc = kept->plane[2];
+        pl->xc = kept->centre[0];
+        pl->yc = kept->centre[1];
+        return 1;
+    }
+    ok = depth_setup(fr, v, n, pl);
+    if (kept) {
+        kept->plane[0] = pl->ddx;
+        kept->plane[1] = pl->ddy;
+        kept->plane[2] = pl->dc;
+        kept->centre[0] = ok ? pl->xc : -1;
+        kept->centre[1] = pl->yc;
+    }
+    return ok;
 }
 #endif
 
@@ -574,7 +608,10 @@ void stp_edges_start(stp_edge *edges, int n, int32_t yc, int smooth)
     for (i = 0; i < n; i++) {
         stp_edge *e = &edges[i];
         /* step is 16 slopes exactly */
-        e->acc = (int64_t)e->xa * 65536 + (int64_t)(yc - e->ya) * stp_asr64(e->step, 4);
+        int64_t slope = stp_asr64(e->step, 4);
+        e->acc = (int64_t)e->xa * 65536 +
+                 (slope >= INT32_MIN && slope <= INT32_MAX ? smul32(yc - e->ya, (int32_t)slope)
+                                                            : (int64_t)(yc - e->ya) * slope);
 #if STP_WITH_GOURAUD
         if (smooth)
             e->shade_acc = (int64_t)e->sa * 65536 + (int64_t)(yc - e->ya) * stp_asr64(e->shade_step, 4);
@@ -624,8 +661,10 @@ int stp_span_pixels(int32_t xl, int32_t xr, uint32_t width, uint32_t *p1, uint32
     return 1;
 }
 
-/* Scan-convert the polygon whose header is df[at] into the current band. */
-static void draw_polygon(frame *fr, uint32_t at, int style, int use_z, stp_fix t)
+/* Scan-convert the polygon whose header is df[at] into the current band;
+ * ordinal: its place among the visible polygons in display order
+ * (UINT32_MAX: no kept setup). */
+static void draw_polygon(frame *fr, uint32_t at, int style, int use_z, stp_fix t, uint32_t ordinal)
 {
     stp_renderer *r = fr->r;
     const stp_instr *v = &r->df[at];
@@ -640,6 +679,7 @@ static void draw_polygon(frame *fr, uint32_t at, int style, int use_z, stp_fix t
     uint32_t y, y_first, y_last;
 #if STP_WITH_ZBUFFER
     depth_plane pl = {0, 0, 0, 0, 0};
+    int64_t d_row = 0;
 #endif
     for (i = 0; i < n; i++) {
         if (v[i].y < ymin)
@@ -650,10 +690,11 @@ static void draw_polygon(frame *fr, uint32_t at, int style, int use_z, stp_fix t
     if (ymax <= band_top || ymin >= band_bottom)
         return;
 #if STP_WITH_ZBUFFER
-    if (use_z && !depth_setup(fr, v, n, &pl))
+    if (use_z && !depth_plane_for(fr, v, n, ordinal, ymin, &pl))
         return; /* edge-on: no area on screen */
 #else
     (void)use_z;
+    (void)ordinal;
 #endif
 #if STP_WITH_SHADOWS
     if (fr->shadow)
@@ -679,6 +720,11 @@ static void draw_polygon(frame *fr, uint32_t at, int style, int use_z, stp_fix t
     if (y_last >= fr->y0 + fr->rows)
         y_last = fr->y0 + fr->rows - 1;
     stp_edges_start(r->edges, ne, (int32_t)(y_first << SUB) + HALF_PIXEL, smooth);
+#if STP_WITH_ZBUFFER
+    /* the depth at device x = 0 of the current row centre, stepped down */
+    if (use_z)
+        d_row = pl.dc - pl.ddx * pl.xc + pl.ddy * (((int64_t)y_first << SUB) + HALF_PIXEL - pl.yc);
+#endif
     for (y = y_first; y <= y_last; y++) {
         int32_t yc_row = (int32_t)(y << SUB) + HALF_PIXEL;
         int nc = stp_edges_row(r->edges, ne, yc_row, smooth, r->crossings), k;
@@ -702,14 +748,19 @@ static void draw_polygon(frame *fr, uint32_t at, int style, int use_z, stp_fix t
 #endif
 #if STP_WITH_ZBUFFER
             if (use_z) {
-                int64_t d = pl.dc + pl.ddx * (((int64_t)p1 << SUB) + HALF_PIXEL - pl.xc) +
-                            pl.ddy * ((int64_t)yc_row - pl.yc);
+                /* dc + ddx (x - xc) + ddy (y - yc) at p1's centre */
+                int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
+                int64_t d = d_row + (pl.ddx >= INT32_MIN && pl.ddx <= INT32_MAX ? smul32((int32_t)pl.ddx, xq)
+                                                                                : pl.ddx * xq);
                 put_span_z(fr, y, p1, p2, style, d, pl.ddx * (1 << SUB), smooth, s0, sstep, t);
                 continue;
             }
 #endif
             paint_run(fr, y, p1, p2, style, smooth, s0, sstep, t);
         }
+#if STP_WITH_ZBUFFER
+        d_row += pl.ddy * (1 << SUB);
+#endif
     }
 }
 
@@ -748,6 +799,7 @@ static void draw_line(const frame *fr, const stp_instr *a, const stp_instr *b, i
 static void replay(frame *fr, int skip_polygons, int use_z, int pass)
 {
     stp_renderer *r = fr->r;
+    uint32_t ordinal = 0;
     int s;
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
@@ -761,7 +813,8 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
             const stp_instr *in = &r->df[k];
             if (in->op >= 3) {
                 if (!skip_polygons && (pass == 0 || (pass == 1) == (t == 0)))
-                    draw_polygon(fr, k, style, use_z, t);
+                    draw_polygon(fr, k, style, use_z, t, ordinal);
+                ordinal++;
                 k += (uint32_t)in->op - 1;
             } else if (in->op == STP_OP_TRANSPARENCY) {
                 t = in->x;
@@ -959,6 +1012,14 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
         background_style = 0;
 
     polygons = scan_polygons(&fr, hidden == STP_HIDDEN_PAINTER ? mem->sort : 0);
+    fr.setup = 0;
+#if STP_WITH_ZBUFFER
+    if (hidden == STP_HIDDEN_ZBUFFER && mem->setup) {
+        if (mem->setup_count < polygons)
+            return STP_ERR_MEMORY;
+        fr.setup = mem->setup;
+    }
+#endif
     fr.depth_scale = 0;
     fr.depth_shift = 0;
     if (fr.key_max > fr.key_min) {
@@ -1005,7 +1066,8 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
         if (hidden == STP_HIDDEN_PAINTER) {
             uint32_t i;
             for (i = 0; i < polygons; i++)
-                draw_polygon(&fr, mem->sort[i].index, mem->sort[i].style, 0, mem->sort[i].transmission);
+                draw_polygon(&fr, mem->sort[i].index, mem->sort[i].style, 0, mem->sort[i].transmission,
+                             UINT32_MAX);
             replay(&fr, 1, 0, 0); /* lines on top, in display order */
         } else
 #endif

@@ -10,7 +10,9 @@
  * (stp_count_calibrate measures it: 40 on this board's 25 MHz clock), so
  * the figure is emulated instructions, the same on every run, to within
  * one tick.  The second frame is measured (the first one has no segment to
- * delete, every later one does, as in an animation). */
+ * delete, every later one does, as in an animation).  With bands of fewer
+ * rows than the frame (STP_FW_BAND_ROWS) the renderer is lent a setup
+ * array, so each polygon's depth setup is made once per frame. */
 #include "stellaris.h"
 #include "torus_frame.h"
 
@@ -27,6 +29,10 @@ static stp_vec3 vertices[3 * TORUS_TRIANGLES];
 static uint8_t band[STRIDE * STP_FW_BAND_ROWS];
 static uint16_t zbuf[WIDTH * STP_FW_BAND_ROWS];
 static uint8_t picture[STRIDE * HEIGHT];
+#if STP_FW_BAND_ROWS < HEIGHT
+/* several bands: each polygon's depth setup made once per frame */
+static stp_polygon_setup setup[TORUS_TRIANGLES];
+#endif
 
 static int keep_band(stp_port *port, uint32_t y0, uint32_t rows, const uint8_t *pixels, size_t stride)
 {
@@ -93,6 +99,13 @@ int main(void)
     mem.zbuf_count = sizeof zbuf / sizeof zbuf[0];
     mem.sort = 0;
     mem.sort_count = 0;
+#if STP_FW_BAND_ROWS < HEIGHT
+    mem.setup = setup;
+    mem.setup_count = TORUS_TRIANGLES;
+#else
+    mem.setup = 0;
+    mem.setup_count = 0;
+#endif
     status = torus_setup(r);
     if (status == STP_OK)
         status = torus_frame(r, vertices, &port, &mem);
