@@ -3,50 +3,17 @@
  * output.  See the fill rule in include/stipple/render.h. */
 #include "render_private.h"
 #include "output_private.h"
+#include "raster_private.h"
 
 #define SUB STP_SUBPIXEL_BITS
 #define HALF_PIXEL (1 << (SUB - 1))
-
-/* Where 64-bit multiplication and division are single instructions
- * (64-bit hosts) the raster uses them; elsewhere (Cortex-M: a 64-bit
- * division is a ~470-instruction libgcc call on ARMv6-M, a 64-bit product
- * a ~50-instruction one) it takes 32 x 32 -> 64-bit products from 16-bit
- * halves and divides through 32-bit quotients, with the same results. */
-#if defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
-#define WIDE_ARITH 1
-#else
-#define WIDE_ARITH 0
-#endif
-
-/* a b, exactly, for 32-bit a and b */
-static uint64_t umul32(uint32_t a, uint32_t b)
-{
-#if WIDE_ARITH
-    return (uint64_t)a * b;
-#else
-    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
-    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
-    return ((uint64_t)(hh + (lh >> 16) + (hl >> 16) + (mid >> 16)) << 32) | ((mid << 16) | (ll & 0xFFFFu));
-#endif
-}
-
-static int64_t smul32(int32_t a, int32_t b)
-{
-#if WIDE_ARITH
-    return (int64_t)a * b;
-#else
-    uint64_t p = umul32(a < 0 ? 0u - (uint32_t)a : (uint32_t)a, b < 0 ? 0u - (uint32_t)b : (uint32_t)b);
-    return (a < 0) != (b < 0) ? -(int64_t)p : (int64_t)p;
-#endif
-}
 
 /* num / den truncated toward zero (C's division), den != 0.  Without wide
  * arithmetic: when |den| < 2^16 and |num| < 2^48, as three 32-bit
  * divisions of 16-bit digits (long division); else the library's. */
 static int64_t div_trunc(int64_t num, int64_t den)
 {
-#if !WIDE_ARITH
+#if !STP_WIDE_ARITH
     uint64_t un = num < 0 ? 0u - (uint64_t)num : (uint64_t)num, ud = den < 0 ? 0u - (uint64_t)den : (uint64_t)den;
     if (ud < 65536u && un < ((uint64_t)1 << 48)) {
         uint32_t d = (uint32_t)ud, hi = (uint32_t)(un >> 32), q1, q2, q3, part;
@@ -66,7 +33,7 @@ static int64_t div_trunc(int64_t num, int64_t den)
 static uint32_t div_count(uint32_t s, uint32_t n)
 {
     if (n == 3)
-        return (uint32_t)(umul32(s, 0xAAAAAAABu) >> 33);
+        return (uint32_t)(stp_umul32(s, 0xAAAAAAABu) >> 33);
     if (n == 4)
         return s >> 2;
     return s / n;
@@ -458,12 +425,12 @@ static int64_t depth_q12(const frame *fr, int32_t key)
     if (fr->key_max <= fr->key_min)
         return (int64_t)65535 << 12;
     u = (uint32_t)((int64_t)key - fr->key_min); /* 0..range */
-    num = umul32(u, k);
-#if WIDE_ARITH
+    num = stp_umul32(u, k);
+#if STP_WIDE_ARITH
     q = num / range;
 #else
-    q = umul32(u, fr->depth_scale) >> fr->depth_shift;
-    if (umul32((uint32_t)q + 1u, range) <= num)
+    q = stp_umul32(u, fr->depth_scale) >> fr->depth_shift;
+    if (stp_umul32((uint32_t)q + 1u, range) <= num)
         q++;
 #endif
     return ((int64_t)1 << 12) + (int64_t)q;
@@ -490,9 +457,9 @@ static int depth_setup(const frame *fr, const stp_instr *v, int n, depth_plane *
         const stp_instr *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
         int64_t d_q = i == n - 1 ? d_last : depth_q12(fr, q->z), dp = d_prev >> 12, dq = d_q >> 12;
         /* coordinates in [0, 2^19], depths in [1, 65535]: 32-bit factors */
-        a += smul32(p->y - q->y, (int32_t)(dp + dq));
-        b += smul32((int32_t)(dp - dq), p->x + q->x);
-        c += smul32(p->x - q->x, p->y + q->y);
+        a += stp_smul32(p->y - q->y, (int32_t)(dp + dq));
+        b += stp_smul32((int32_t)(dp - dq), p->x + q->x);
+        c += stp_smul32(p->x - q->x, p->y + q->y);
         sx += (uint32_t)q->x;
         sy += (uint32_t)q->y;
         sd += d_q;
@@ -545,122 +512,6 @@ static int depth_plane_for(const frame *fr, const stp_instr *v, int n, uint32_t 
 }
 #endif
 
-/* ---- edges (shared with the shadow maps, shadow.c) ---- */
-
-/* floor(v / 16) */
-static int32_t floor16(int32_t v)
-{
-    return v >= 0 ? v / 16 : -((15 - v) / 16);
-}
-
-
-/* trunc(2^16 num / den) for den > 0 and |num| < 2^21: a 32-bit division
- * while 2^16 num fits 32 bits (ARMv6-M: a short library call instead of a
- * ~470-instruction 64-bit one). */
-static int64_t slope_q16(int32_t num, int32_t den)
-{
-    if (num > -32768 && num < 32768)
-        return (int32_t)(num * 65536) / den;
-    return ((int64_t)num * 65536) / den;
-}
-
-int stp_edge_setup(stp_edge *e, int32_t xa, int32_t ya, int32_t xb, int32_t yb)
-{
-    int dir = 1;
-    if (ya == yb)
-        return 0;
-    if (ya > yb) {
-        int32_t t = xa;
-        xa = xb;
-        xb = t;
-        t = ya;
-        ya = yb;
-        yb = t;
-        dir = -1;
-    }
-    /* no row centre 16 r + 8 in [ya, yb): the edge never crosses a row */
-    if (floor16(ya + HALF_PIXEL - 1) == floor16(yb + HALF_PIXEL - 1))
-        return 0;
-    e->xa = xa;
-    e->ya = ya;
-    e->yb = yb;
-    e->step = slope_q16(xb - xa, yb - ya) * 16;
-    e->acc = 0;
-#if STP_WITH_GOURAUD
-    e->sa = 0;
-    e->shade_step = e->shade_acc = 0;
-#endif
-    return dir;
-}
-
-#if STP_WITH_GOURAUD
-void stp_edge_shades(stp_edge *e, int32_t s_top, int32_t s_bottom)
-{
-    e->sa = s_top;
-    e->shade_step = slope_q16(s_bottom - s_top, e->yb - e->ya) * 16;
-}
-#endif
-
-void stp_edges_start(stp_edge *edges, int n, int32_t yc, int smooth)
-{
-    int i;
-    (void)smooth;
-    for (i = 0; i < n; i++) {
-        stp_edge *e = &edges[i];
-        /* step is 16 slopes exactly */
-        int64_t slope = stp_asr64(e->step, 4);
-        e->acc = (int64_t)e->xa * 65536 +
-                 (slope >= INT32_MIN && slope <= INT32_MAX ? smul32(yc - e->ya, (int32_t)slope)
-                                                            : (int64_t)(yc - e->ya) * slope);
-#if STP_WITH_GOURAUD
-        if (smooth)
-            e->shade_acc = (int64_t)e->sa * 65536 + (int64_t)(yc - e->ya) * stp_asr64(e->shade_step, 4);
-#endif
-    }
-}
-
-int stp_edges_row(stp_edge *edges, int n, int32_t yc, int smooth, stp_crossing *out)
-{
-    int nc = 0, i, k;
-    (void)smooth;
-    for (i = 0; i < n; i++) {
-        stp_edge *e = &edges[i];
-        if (e->ya <= yc && yc < e->yb) {
-            stp_crossing c;
-            c.x = (int32_t)stp_asr64(e->acc, 16);
-#if STP_WITH_GOURAUD
-            c.shade = smooth ? (int32_t)stp_asr64(e->shade_acc, 16) : 0;
-#endif
-            /* insertion sort: crossings are few */
-            for (k = nc; k > 0 && out[k - 1].x > c.x; k--)
-                out[k] = out[k - 1];
-            out[k] = c;
-            nc++;
-        }
-        e->acc += e->step;
-#if STP_WITH_GOURAUD
-        if (smooth)
-            e->shade_acc += e->shade_step;
-#endif
-    }
-    return nc;
-}
-
-int stp_span_pixels(int32_t xl, int32_t xr, uint32_t width, uint32_t *p1, uint32_t *p2)
-{
-    /* pixel p's centre 16 p + 8: xl <= 16 p + 8 < xr */
-    int32_t a = floor16(xl - HALF_PIXEL + (1 << SUB) - 1), b = floor16(xr - HALF_PIXEL + (1 << SUB) - 1) - 1;
-    if (a < 0)
-        a = 0;
-    if (b > (int32_t)width - 1)
-        b = (int32_t)width - 1;
-    if (a > b)
-        return 0;
-    *p1 = (uint32_t)a;
-    *p2 = (uint32_t)b;
-    return 1;
-}
-
 /* Scan-convert the polygon whose header is df[at] into the current band;
  * ordinal: its place among the visible polygons in display order
  * (UINT32_MAX: no kept setup). */
@@ -704,7 +555,7 @@ static void draw_polygon(frame *fr, uint32_t at, int style, int use_z, stp_fix t
         use_style(fr, style);
     /* edges oriented top to bottom, horizontal ones dropped */
     for (i = 0; i < n; i++) {
-        const stp_instr *a = &v[i], *b = &v[(i + 1) % n];
+        const stp_instr *a = &v[i], *b = &v[i + 1 == n ? 0 : i + 1];
         int dir = stp_edge_setup(&r->edges[ne], a->x, a->y, b->x, b->y);
         if (dir == 0)
             continue;
@@ -750,7 +601,7 @@ static void draw_polygon(frame *fr, uint32_t at, int style, int use_z, stp_fix t
             if (use_z) {
                 /* dc + ddx (x - xc) + ddy (y - yc) at p1's centre */
                 int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
-                int64_t d = d_row + (pl.ddx >= INT32_MIN && pl.ddx <= INT32_MAX ? smul32((int32_t)pl.ddx, xq)
+                int64_t d = d_row + (pl.ddx >= INT32_MIN && pl.ddx <= INT32_MAX ? stp_smul32((int32_t)pl.ddx, xq)
                                                                                 : pl.ddx * xq);
                 put_span_z(fr, y, p1, p2, style, d, pl.ddx * (1 << SUB), smooth, s0, sstep, t);
                 continue;

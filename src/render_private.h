@@ -41,24 +41,6 @@ typedef struct stp_crossing {
 #endif
 } stp_crossing;
 
-/* raster.c, the edge setup the polygon raster and the shadow maps share.
- * stp_edge_setup: edge (xa, ya) - (xb, yb) (Q27.4, |coordinates| < 2^20)
- * oriented top to bottom into *e; returns 0 for a horizontal edge (no row
- * centre crosses it), 1 when a was the top, -1 when b was.
- * stp_edge_shades: a smooth polygon's shades (stp_fix in [0, 1]) at the
- * edge's top and bottom.
- * stp_edges_start: puts the edges on row centre yc (Q4).
- * stp_edges_row: the crossings of the current row centre yc, sorted by x,
- * into out (returns how many), then steps every edge one row down.
- * stp_span_pixels: the pixels [*p1, *p2] of 0..width-1 whose centres c
- * satisfy xl <= c < xr; returns 0 when there is none. */
-int stp_edge_setup(stp_edge *e, int32_t xa, int32_t ya, int32_t xb, int32_t yb);
-#if STP_WITH_GOURAUD
-void stp_edge_shades(stp_edge *e, int32_t s_top, int32_t s_bottom);
-#endif
-void stp_edges_start(stp_edge *edges, int n, int32_t yc, int smooth);
-int stp_edges_row(stp_edge *edges, int n, int32_t yc, int smooth, stp_crossing *out);
-int stp_span_pixels(int32_t xl, int32_t xr, uint32_t width, uint32_t *p1, uint32_t *p2);
 
 #if STP_WITH_SHADOWS
 /* A light's shadow map (render.h, stp_set_shadow_map).  The light's frame:

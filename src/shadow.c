@@ -17,6 +17,7 @@
  *     +-2^40 (a polygon seen edge-on), so a key at a pixel stays below 2^62.
  * Every quotient that could overflow goes through shl_div, which saturates. */
 #include "render_private.h"
+#include "raster_private.h"
 #include "view_private.h"
 
 #define F STP_FIX_FRAC_BITS
@@ -351,7 +352,7 @@ static int32_t fill_map(stp_renderer *r, const stp_shadow_map *sm, const stp_vec
 
     /* the polygon raster's edge setup and row crossings (raster.c) */
     for (i = 0; i < n; i++) {
-        const stp_vec3 *pa = &v[i], *pb = &v[(i + 1) % n];
+        const stp_vec3 *pa = &v[i], *pb = &v[i + 1 == n ? 0 : i + 1];
         if (stp_edge_setup(&r->edges[ne], pa->x, pa->y, pb->x, pb->y) != 0)
             ne++;
     }
