@@ -362,9 +362,54 @@ static uint16_t depth_of(int64_t d)
     return (uint16_t)(dv < 1 ? 1 : (dv > 65535 ? 65535 : dv));
 }
 
-/* Depth-tested span: runs of pixels that pass are painted with paint_run,
- * so the halftone inner loop stays the same as without a Z buffer.  d: the
- * depth at x1's centre, ddx its change per pixel, both Q12. */
+/* What a depth-tested span paints its runs with: the MONO1 pattern byte
+ * of its row straight into the band (flat, opaque, not shadowed, style in
+ * the pattern cache) or paint_run. */
+typedef struct span_paint {
+    const frame *fr;
+    uint32_t y, x1;
+    int style, smooth;
+    int64_t s0, sstep;
+    stp_fix t;
+    uint8_t *row; /* NULL: through paint_run */
+    uint8_t pattern;
+} span_paint;
+
+static void span_paint_init(span_paint *sp, const frame *fr, uint32_t y, uint32_t x1, int style, int smooth,
+                            int64_t s0, int64_t sstep, stp_fix t)
+{
+    sp->fr = fr;
+    sp->y = y;
+    sp->x1 = x1;
+    sp->style = style;
+    sp->smooth = smooth;
+    sp->s0 = s0;
+    sp->sstep = sstep;
+    sp->t = t;
+    sp->row = 0;
+    sp->pattern = 0;
+    if (fr->port->format == STP_PIXEL_MONO1 && style == fr->pattern_style && !smooth && t == 0
+#if STP_WITH_SHADOWS
+        && !(fr->shadow && fr->shadow->count > 0)
+#endif
+    ) {
+        sp->row = fr->band + (size_t)(y - fr->y0) * fr->stride;
+        sp->pattern = fr->patterns[fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height];
+    }
+}
+
+static void span_paint_run(const span_paint *sp, uint32_t a, uint32_t b)
+{
+    if (sp->row)
+        stp_halftone_fill_bits(sp->row, a, b, sp->pattern);
+    else
+        paint_run(sp->fr, sp->y, a, b, sp->style, sp->smooth,
+                  sp->smooth ? sp->s0 + (int64_t)(a - sp->x1) * sp->sstep : 0, sp->sstep, sp->t);
+}
+
+/* Depth-tested span: runs of pixels that pass are painted whole, so the
+ * halftone inner loop stays the same as without a Z buffer.  d: the depth
+ * at x1's centre, ddx its change per pixel, both Q12. */
 static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style,
                        int64_t d, int64_t ddx, int smooth, int64_t s0, int64_t sstep, stp_fix t)
 {
@@ -373,6 +418,8 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, in
     int in_run = 0;
     int64_t d_end = d + ddx * (int64_t)(x2 - x1);
     const int64_t lo = (int64_t)1 << 12, hi = (int64_t)65536 << 12;
+    span_paint sp;
+    span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t);
     if (d >= lo && d < hi && d_end >= lo && d_end < hi) {
         /* both ends within 1..65535 (so every pixel between): no clamping,
          * and the depth and its step fit 32 bits (|step| <= |d_end - d|) */
@@ -387,7 +434,7 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, in
                     in_run = 1;
                 }
             } else if (in_run) {
-                paint_run(fr, y, run, x - 1, style, smooth, smooth ? s0 + (int64_t)(run - x1) * sstep : 0, sstep, t);
+                span_paint_run(&sp, run, x - 1);
                 in_run = 0;
             }
         }
@@ -402,13 +449,13 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, in
                     in_run = 1;
                 }
             } else if (in_run) {
-                paint_run(fr, y, run, x - 1, style, smooth, smooth ? s0 + (int64_t)(run - x1) * sstep : 0, sstep, t);
+                span_paint_run(&sp, run, x - 1);
                 in_run = 0;
             }
         }
     }
     if (in_run)
-        paint_run(fr, y, run, x2, style, smooth, smooth ? s0 + (int64_t)(run - x1) * sstep : 0, sstep, t);
+        span_paint_run(&sp, run, x2);
 }
 
 /* Depth key mapped to the Z buffer's 1..65535 with 12 fractional bits:
