@@ -424,12 +424,31 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, in
         /* both ends within 1..65535 (so every pixel between): no clamping,
          * and the depth and its step fit 32 bits (|step| <= |d_end - d|) */
         int32_t di = (int32_t)d, dstep = x2 > x1 ? (int32_t)ddx : 0;
+        if (t == 0) {
+            /* opaque: alternately skip the hidden pixels and take a run of
+             * the visible ones, writing their depth */
+            x = x1;
+            for (;;) {
+                while (x <= x2 && (uint16_t)((uint32_t)di >> 12) <= z[x]) {
+                    x++;
+                    di += dstep;
+                }
+                if (x > x2)
+                    break;
+                run = x;
+                do {
+                    z[x] = (uint16_t)((uint32_t)di >> 12);
+                    x++;
+                    di += dstep;
+                } while (x <= x2 && (uint16_t)((uint32_t)di >> 12) > z[x]);
+                span_paint_run(&sp, run, x - 1);
+            }
+            return;
+        }
         for (x = x1; x <= x2; x++, di += dstep) {
             uint16_t depth = (uint16_t)((uint32_t)di >> 12);
             if (depth > z[x]) {
-                if (t == 0)
-                    z[x] = depth; /* transparent polygons do not hide what follows */
-                if (!in_run) {
+                if (!in_run) { /* transparent polygons do not write depth */
                     run = x;
                     in_run = 1;
                 }
@@ -952,11 +971,12 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
         if (hidden == STP_HIDDEN_ZBUFFER && fr.x_min <= fr.x_max) {
             /* farther than any polygon (they map to >= 1), where one can
              * reach: a Z test reads no other entry */
-            uint32_t x, y_end = y0 + fr.rows - 1 < fr.y_max ? y0 + fr.rows - 1 : fr.y_max;
+            uint32_t y_end = y0 + fr.rows - 1 < fr.y_max ? y0 + fr.rows - 1 : fr.y_max;
+            size_t i, count = (size_t)(fr.x_max - fr.x_min) + 1u;
             for (y = y0 > fr.y_min ? y0 : fr.y_min; y <= y_end; y++) {
-                uint16_t *z = fr.zbuf + (size_t)(y - y0) * r->width;
-                for (x = fr.x_min; x <= fr.x_max; x++)
-                    z[x] = 0;
+                uint16_t *z = fr.zbuf + (size_t)(y - y0) * r->width + fr.x_min;
+                for (i = 0; i < count; i++) /* a counted loop: compilers make it memset */
+                    z[i] = 0;
             }
         }
 #endif
