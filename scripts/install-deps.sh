@@ -13,6 +13,7 @@ packages=(
     qemu-system-arm python3            # the firmware in an emulated Stellaris board (QMP client)
     dpkg-dev                           # dpkg-deb, to unpack the test photo's package
     gnuplot-nox                        # the error-against-run-time plot
+    valgrind                           # callgrind instruction counts of the torus bench
     clang libclang-rt-14-dev           # libFuzzer targets of the readers and the display file
     qemu-system-x86 busybox-static xz-utils gcc-12  # fbdev tests on Debian's kernel
     libusb-1.0-0-dev umockdev libumockdev-dev pkg-config  # the USB printer and its emulation

@@ -306,3 +306,114 @@ stp_fix stp_vec3_unity(stp_vec3 v, stp_vec3 *out)
         return (stp_fix)(len_scaled >> up);
     return stp_fix_sat64(len_scaled * 2);
 }
+
+/* ---- STP_UNIT vectors (fix_private.h) ---- */
+
+/* 1/sqrt(i/64 + 1 + 1/128) in Q16 for i = 0..191: the root at the middle
+ * of each 64th of [1, 4) (relative error of a seed below 2^-8). */
+static const uint16_t rsqrt_seed[192] = {
+    65281, 64781, 64292, 63814, 63347, 62889, 62442, 62004, 61575, 61154, 60742, 60339,
+    59943, 59555, 59175, 58801, 58435, 58075, 57722, 57376, 57035, 56700, 56372, 56049,
+    55731, 55419, 55112, 54810, 54513, 54221, 53933, 53650, 53371, 53097, 52826, 52560,
+    52298, 52040, 51785, 51535, 51288, 51044, 50804, 50567, 50333, 50103, 49876, 49652,
+    49430, 49212, 48997, 48784, 48574, 48367, 48163, 47961, 47761, 47564, 47370, 47178,
+    46988, 46800, 46615, 46432, 46251, 46072, 45895, 45720, 45547, 45376, 45207, 45040,
+    44875, 44711, 44550, 44390, 44232, 44075, 43920, 43767, 43615, 43465, 43316, 43169,
+    43024, 42879, 42737, 42595, 42456, 42317, 42180, 42044, 41910, 41776, 41644, 41514,
+    41384, 41256, 41129, 41003, 40878, 40754, 40631, 40510, 40390, 40270, 40152, 40035,
+    39919, 39803, 39689, 39576, 39464, 39352, 39242, 39133, 39024, 38916, 38810, 38704,
+    38599, 38494, 38391, 38289, 38187, 38086, 37986, 37887, 37788, 37690, 37593, 37497,
+    37401, 37307, 37213, 37119, 37027, 36935, 36843, 36753, 36663, 36573, 36485, 36397,
+    36309, 36222, 36136, 36051, 35966, 35882, 35798, 35715, 35632, 35550, 35469, 35388,
+    35307, 35228, 35148, 35070, 34991, 34914, 34837, 34760, 34684, 34608, 34533, 34458,
+    34384, 34310, 34237, 34164, 34092, 34020, 33949, 33878, 33807, 33737, 33668, 33599,
+    33530, 33461, 33393, 33326, 33259, 33192, 33126, 33060, 32994, 32929, 32864, 32800};
+
+/* 1/sqrt(m / 2^30) in Q30 for m in [2^30, 2^32). */
+static inline uint64_t rsqrt_q30(uint32_t m)
+{
+    uint64_t y = (uint64_t)rsqrt_seed[(m >> 24) - 64] << 14;
+    int k;
+    /* Newton for 1/sqrt: y <- y (3 - m y^2) / 2; each step squares the
+     * relative error (2^-8 -> 2^-15 -> 2^-29 with the rounding).  m y^2 stays
+     * within 2^30 (1 +- 2^-7), so 3 2^30 - m y^2 > 0 and y (...) < 2^62 */
+    for (k = 0; k < 2; k++) {
+        uint64_t y2 = (y * y) >> 30;
+        uint64_t my2 = ((uint64_t)m * y2) >> 30;
+        y = (y * (((uint64_t)3 << 30) - my2)) >> 31;
+    }
+    return y;
+}
+
+static inline uint32_t rsqrt64(uint64_t v, int *exponent)
+{
+    /* v = m 2^sh with m in [2^30, 2^32) and sh even, so 1/sqrt(v) =
+     * rsqrt_q30(m) 2^-(30 + 15 + sh/2) */
+    int sh = stp_bit_length64(v) - 31;
+    if (sh & 1)
+        sh--;
+    *exponent = 45 + sh / 2;
+    return (uint32_t)rsqrt_q30((uint32_t)(sh >= 0 ? v >> sh : v << -sh));
+}
+
+uint32_t stp_rsqrt64(uint64_t v, int *exponent)
+{
+    return rsqrt64(v, exponent);
+}
+
+/* floor(v / 2^s) for |v| < 2^62, 0 <= s < 62, without a branch on the sign
+ * (2^62 is a multiple of 2^s, so the offset changes nothing but the sign) */
+static inline int64_t floor_shift(int64_t v, int s)
+{
+    return ((v + ((int64_t)1 << 62)) >> s) - ((int64_t)1 << (62 - s));
+}
+
+int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
+{
+    uint64_t ax = (uint64_t)(x < 0 ? -x : x), ay = (uint64_t)(y < 0 ? -y : y),
+             az = (uint64_t)(z < 0 ? -z : z);
+    uint64_t s, len;
+    int up, e;
+    int64_t inv, half;
+    out->x = out->y = out->z = 0;
+    if ((ax | ay | az) == 0)
+        return 0;
+    /* scale so the largest component has 30 bits (its bit length is that
+     * of the three ORed): the squares' sum is in [2^58, 3 2^60) */
+    up = 30 - stp_bit_length64(ax | ay | az);
+    if (up >= 0) {
+        x *= (int64_t)1 << up;
+        y *= (int64_t)1 << up;
+        z *= (int64_t)1 << up;
+    } else {
+        x = stp_asr64(x, -up);
+        y = stp_asr64(y, -up);
+        z = stp_asr64(z, -up);
+    }
+    s = (uint64_t)(x * x) + (uint64_t)(y * y) + (uint64_t)(z * z);
+    inv = (int64_t)rsqrt64(s, &e); /* 1/sqrt(s) = inv 2^-e, e = 59 or 60 */
+    e -= 30;                       /* to STP_UNIT */
+    half = (int64_t)1 << (e - 1);
+    /* |x inv| < 2^60 */
+    out->x = (int32_t)floor_shift(x * inv + half, e);
+    out->y = (int32_t)floor_shift(y * inv + half, e);
+    out->z = (int32_t)floor_shift(z * inv + half, e);
+    /* |v| scaled = s / sqrt(s): s >> 30 < 2^32 times inv < 2^31 */
+    len = ((s >> 30) * (uint64_t)inv) >> (e - 0);
+    return up >= 0 ? (int64_t)(len >> up) : (int64_t)(len << -up);
+}
+
+uint32_t stp_sqrt64_fast(uint64_t v)
+{
+    int sh, e;
+    uint64_t m, r;
+    if (v == 0)
+        return 0;
+    sh = stp_bit_length64(v) - 31;
+    if (sh & 1)
+        sh--;
+    m = sh >= 0 ? v >> sh : v << -sh;
+    /* sqrt(v) = v / sqrt(v) = m 2^sh rsqrt 2^-e: m < 2^32, rsqrt <= 2^30 */
+    r = (m * rsqrt64(v, &e)) >> (e - sh);
+    return r > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)r;
+}

@@ -67,4 +67,106 @@ static inline int64_t stp_unity_diff(stp_vec3 a, stp_vec3 b, stp_vec3 *out)
     return (int64_t)stp_vec3_unity(d, out) * ((int64_t)1 << shift);
 }
 
+/* ---- unit vectors and cosines for shading ----
+ *
+ * Format STP_UNIT (Q30 in int32): a unit vector's components and the
+ * cosines between unit vectors, one = 2^30.  Range: [-1, 1] plus the
+ * normaliser's rounding (|component| <= 2^30 + 2), so it fits int32 with a
+ * factor 2 to spare.  Step 9.3e-10: far below stp_fix's 2^-16, so a cosine
+ * near 0 (a grazing eye or light) or near 1 (a sharp highlight) keeps its
+ * bits.  Products of two components are below 2^61 and a sum of three
+ * below 2^62.6 (Cauchy-Schwarz: |a.b| <= |a||b|), so a dot product formed in
+ * 64 bits cannot overflow. */
+#define STP_UNIT_BITS 30
+#define STP_UNIT_ONE ((int32_t)1 << STP_UNIT_BITS)
+
+typedef struct stp_unit3 {
+    int32_t x, y, z;
+} stp_unit3;
+
+/* The direction of (x, y, z) (any values with |component| < 2^62) as an
+ * STP_UNIT vector in *out, and its length in the input's units (rounded
+ * down; relative error below 2^-28).  No division: the squared length of
+ * the vector scaled to 30 bits is seeded from a 192-entry table of
+ * 1/sqrt and refined by two Newton steps (relative error below 2^-29).
+ * A zero vector returns 0 and leaves *out = 0. */
+int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out);
+
+/* 1/sqrt(v) for v > 0: returns y in (2^29, 2^30] and *exponent with
+ * 1/sqrt(v) = y 2^-exponent (relative error below 2^-29; table seed and
+ * two Newton steps, no division). */
+uint32_t stp_rsqrt64(uint64_t v, int *exponent);
+
+/* sqrt(v), rounded down within 2^-29 relative (not the exact floor
+ * stp_isqrt64 gives), from stp_rsqrt64: a few multiplications instead of a
+ * 32-step loop. */
+uint32_t stp_sqrt64_fast(uint64_t v);
+
+/* Cosine of two STP_UNIT vectors, STP_UNIT, rounded to nearest. */
+static inline int32_t stp_unit_dot(stp_unit3 a, stp_unit3 b)
+{
+    int64_t s = (int64_t)a.x * b.x + (int64_t)a.y * b.y + (int64_t)a.z * b.z;
+    return (int32_t)stp_asr64(s + ((int64_t)1 << (STP_UNIT_BITS - 1)), STP_UNIT_BITS);
+}
+
+/* An STP_UNIT vector as stp_fix components, rounded to nearest. */
+static inline stp_vec3 stp_unit_to_fix(stp_unit3 u)
+{
+    stp_vec3 v;
+    const int s = STP_UNIT_BITS - STP_FIX_FRAC_BITS;
+    v.x = (stp_fix)stp_asr64((int64_t)u.x + ((int64_t)1 << (s - 1)), s);
+    v.y = (stp_fix)stp_asr64((int64_t)u.y + ((int64_t)1 << (s - 1)), s);
+    v.z = (stp_fix)stp_asr64((int64_t)u.z + ((int64_t)1 << (s - 1)), s);
+    return v;
+}
+
+/* Number of significant bits of v (0 for 0). */
+static inline int stp_bit_length64(uint64_t v)
+{
+#if defined(__GNUC__)
+    return v == 0 ? 0 : 64 - __builtin_clzll(v);
+#else
+    int n = 0;
+    while (v >= ((uint64_t)1 << 16)) {
+        v >>= 16;
+        n += 16;
+    }
+    while (v != 0) {
+        v >>= 1;
+        n++;
+    }
+    return n;
+#endif
+}
+
+/* (a b) >> s for a, b >= 0 and 0 <= s <= 62, exact when a b < 2^63;
+ * otherwise both are cut to 63 significant bits together first (relative
+ * error below 2^-30 when each keeps 31 bits), and a result of 2^62 or more
+ * saturates to 2^62. */
+static inline int64_t stp_mul_shift_sat(int64_t a, int64_t b, int s)
+{
+    int la = stp_bit_length64((uint64_t)a), lb = stp_bit_length64((uint64_t)b), cut;
+    if (la + lb <= 63)
+        return (a * b) >> s;
+    cut = la + lb - 63;
+    if (cut > s)
+        return (int64_t)1 << 62;
+    /* take the bits from the longer operand first, keeping 31 in each */
+    while (cut > 0) {
+        if (la >= lb) {
+            a >>= 1;
+            la--;
+        } else {
+            b >>= 1;
+            lb--;
+        }
+        cut--;
+        s--;
+    }
+    {
+        int64_t p = (a * b) >> s;
+        return p >= ((int64_t)1 << 62) ? (int64_t)1 << 62 : p;
+    }
+}
+
 #endif

@@ -3,6 +3,8 @@
  * SHADE-CHECK, clip, project, store).  See include/stipple/render.h. */
 #include "render_private.h"
 #include "view_private.h"
+#include "shade_private.h"
+#include "clip_private.h"
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -17,6 +19,7 @@ size_t stp_renderer_size(void)
 }
 
 static void world_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out);
+static void cache_forget(stp_renderer *r);
 
 stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display_file,
                                   uint32_t capacity, uint32_t width, uint32_t height)
@@ -52,11 +55,19 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     r->current_transmission = 0;
     r->last_shade = -1;
     r->pen_valid = 0;
+    r->model_on = 0;
+    stp_transform_identity(&r->model);
+#if STP_VERTEX_CACHE
+    for (i = 0; i < STP_VERTEX_CACHE; i++)
+        r->cache[i].stamp = 0;
+    r->cache_stamp = 1;
+#endif
 #if STP_WITH_SHADOWS
     for (i = 0; i < STP_MAX_LIGHTS; i++) {
         r->shadow[i].depth = 0;
         r->shadow_record[i] = UINT32_MAX;
     }
+    r->shadow_set = 0;
     r->shadow_generation = 0;
 #endif
     view.from.x = view.from.y = 0;
@@ -88,7 +99,14 @@ int stp_set_view(stp_renderer *r, const stp_view *v)
     r->up = vf.up;
     r->projection = vf.projection;
     r->hither = vf.hither;
+    r->clip_volume.focal = vf.focal;
+    r->clip_volume.near = vf.hither;
+    r->clip_volume.width = r->width;
+    r->clip_volume.height = r->height;
+    r->clip_volume.parallel = vf.projection == STP_PARALLEL;
+    stp_view_transform_make(&vf, &r->to_view);
     r->pen_valid = 0;
+    cache_forget(r);
 #if STP_WITH_SHADOWS
     {
         /* the maps' transforms start from this view's coordinates */
@@ -96,6 +114,7 @@ int stp_set_view(stp_renderer *r, const stp_view *v)
         r->at = v->at;
         for (j = 0; j < STP_MAX_LIGHTS; j++)
             r->shadow[j].depth = 0;
+        r->shadow_set = 0;
     }
 #endif
     return STP_OK;
@@ -223,6 +242,9 @@ int stp_segment_create(stp_renderer *r, int id)
     r->current_line_style = -1;
     r->current_transmission = 0;
     r->pen_valid = 0;
+    if (r->model_on)
+        cache_forget(r);
+    r->model_on = 0;
     /* COPY-LIGHT: the lighting belongs to the view; fix it for this segment
      * with the lights in view coordinates */
     r->segment_lighting = r->user_lighting;
@@ -311,48 +333,59 @@ stp_fix stp_last_shade(const stp_renderer *r)
 
 static void world_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
 {
-    /* differences in 64 bits: p - from may exceed stp_fix's range */
-    int64_t dx = (int64_t)p.x - r->from.x, dy = (int64_t)p.y - r->from.y,
-            dz = (int64_t)p.z - r->from.z;
-    out->x = stp_fix_sat64(stp_asr64(dx * r->right.x + dy * r->right.y + dz * r->right.z, F));
-    out->y = stp_fix_sat64(stp_asr64(dx * r->up.x + dy * r->up.y + dz * r->up.z, F));
-    out->z = stp_fix_sat64(stp_asr64(dx * r->forward.x + dy * r->forward.y + dz * r->forward.z, F));
+    stp_view_transform_point(&r->to_view, p, out);
 }
 
-#if STP_WITH_SHADOWS
-void stp_view_point(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
+/* Forget every cached vertex (the view or the model transform changed). */
+static void cache_forget(stp_renderer *r)
 {
+#if STP_VERTEX_CACHE
+    int i;
+    if (++r->cache_stamp == 0) {
+        /* wrapped: clear the entries so an old stamp cannot match */
+        for (i = 0; i < STP_VERTEX_CACHE; i++)
+            r->cache[i].stamp = 0;
+        r->cache_stamp = 1;
+    }
+#else
+    (void)r;
+#endif
+}
+
+/* An entered point (model coordinates) to view coordinates. */
+static void vertex_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
+{
+    if (r->model_on)
+        p = stp_transform_point(&r->model, p);
     world_to_view(r, p, out);
 }
-#endif
 
-/* Signed distance of view point p from clip plane `plane` (0: hither,
- * 1..4: left, right, top, bottom of the window), >= 0 inside.  Scaled by a
- * positive per-plane factor (only signs and ratios matter). */
-static int64_t plane_distance(const stp_renderer *r, int plane, stp_vec3 p)
+
+int stp_set_transform(stp_renderer *r, const stp_transform *t)
 {
-    /* both terms have F fractional bits and stay below 2^47 */
-    int64_t fx = stp_asr64((int64_t)r->focal * p.x, F), fy = stp_asr64((int64_t)r->focal * p.y, F);
-    int64_t hw, hh;
-    if (plane == 0)
-        return (int64_t)p.z - r->hither;
-    if (r->projection == STP_PERSPECTIVE) {
-        /* x_screen = W/2 + focal x / z lies in [0, W] <=> |focal x| <= (W/2) z */
-        hw = ((int64_t)r->width * p.z) / 2;
-        hh = ((int64_t)r->height * p.z) / 2;
-    } else {
-        hw = ((int64_t)r->width * ONE) / 2;
-        hh = ((int64_t)r->height * ONE) / 2;
+    int i, j, identity = 1;
+    if (r == 0)
+        return STP_ERR_ARG;
+    if (r->open_segment < 0)
+        return STP_ERR_NO_SEGMENT;
+    cache_forget(r);
+    if (t == 0) {
+        r->model_on = 0;
+        return STP_OK;
     }
-    switch (plane) {
-    case 1: return fx + hw;
-    case 2: return hw - fx;
-    case 3: return hh - fy;
-    default: return fy + hh;
-    }
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            identity &= t->m[i][j] == (i == j ? ONE : 0);
+    r->model = *t;
+    r->model_on = !(identity && t->t.x == 0 && t->t.y == 0 && t->t.z == 0);
+    return STP_OK;
 }
 
-
+/* Signed distance of view point p from clip plane `plane` (clip.c). */
+static int64_t plane_distance(const stp_renderer *r, int plane, stp_vec3 p)
+{
+    return stp_clip_distance(&r->clip_volume, plane, p);
+}
 
 #if STP_WITH_LINES
 static stp_vec3 clip_point(stp_vec3 a, stp_vec3 b, int64_t da, int64_t db)
@@ -366,59 +399,24 @@ static stp_vec3 clip_point(stp_vec3 a, stp_vec3 b, int64_t da, int64_t db)
 }
 #endif
 
-/* Sutherland-Hodgman against the five planes; returns the vertex count of
- * the clipped polygon, its vertices in *result (and, when smooth, its
- * vertex shades in *shades, interpolated like the positions). */
+/* Sutherland-Hodgman against the five planes (clip.c) from clip_a; returns
+ * the vertex count of the clipped polygon, its vertices in *result (and,
+ * when smooth, its vertex shades in *shades, interpolated like the
+ * positions). */
 static int clip_polygon(stp_renderer *r, int n, int smooth, stp_vec3 **result, stp_fix **shades)
 {
-    stp_vec3 *in = r->clip_a, *out = r->clip_b, *tmp;
+    stp_vec3 *spare;
+    stp_fix *sa = 0, *sb = 0;
 #if STP_WITH_GOURAUD
-    stp_fix *s_in = r->shade_a, *s_out = r->shade_b, *s_tmp;
-#endif
-    int plane, i, m;
-    (void)smooth;
-    for (plane = 0; plane < 5 && n > 0; plane++) {
-        m = 0;
-        for (i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            stp_vec3 a = in[i], b = in[j];
-            int64_t da = plane_distance(r, plane, a), db = plane_distance(r, plane, b);
-            if (da >= 0) {
-#if STP_WITH_GOURAUD
-                if (smooth)
-                    s_out[m] = s_in[i];
-#endif
-                out[m++] = a;
-            }
-            if ((da >= 0) != (db >= 0)) {
-                int64_t t = stp_clip_fraction(da, db);
-#if STP_WITH_GOURAUD
-                if (smooth)
-                    s_out[m] = stp_lerp_fix(s_in[i], s_in[j], t);
-#endif
-                out[m].x = stp_lerp_fix(a.x, b.x, t);
-                out[m].y = stp_lerp_fix(a.y, b.y, t);
-                out[m].z = stp_lerp_fix(a.z, b.z, t);
-                m++;
-            }
-        }
-        n = m;
-        tmp = in;
-        in = out;
-        out = tmp;
-#if STP_WITH_GOURAUD
-        s_tmp = s_in;
-        s_in = s_out;
-        s_out = s_tmp;
-#endif
+    if (smooth) {
+        sa = r->shade_a;
+        sb = r->shade_b;
     }
-    *result = in;
-#if STP_WITH_GOURAUD
-    *shades = s_in;
 #else
-    *shades = 0;
+    (void)smooth;
 #endif
-    return n;
+    return stp_clip_polygon(&r->clip_volume, r->clip_a, r->clip_b, sa, sb, n, result, &spare,
+                            shades);
 }
 
 /* Device coordinates (Q27.4) and depth key of a clipped view point. */
@@ -471,7 +469,7 @@ int stp_move(stp_renderer *r, stp_vec3 p)
     int status = check_open(r);
     if (status != STP_OK)
         return status;
-    world_to_view(r, p, &r->pen);
+    vertex_to_view(r, p, &r->pen);
     r->pen_valid = 1;
     return STP_OK;
 }
@@ -484,7 +482,7 @@ int stp_line(stp_renderer *r, stp_vec3 p)
     int plane, status = check_open(r);
     if (status != STP_OK)
         return status;
-    world_to_view(r, p, &q);
+    vertex_to_view(r, p, &q);
     if (!r->pen_valid) {
         r->pen = q;
         r->pen_valid = 1;
@@ -520,68 +518,217 @@ int stp_line(stp_renderer *r, stp_vec3 p)
 #endif
 }
 
-/* SHADE-CHECK: Newell normal (Algorithm 10.4) and vertex average of the
- * view-space vertices in clip_a.  Returns 0 for a zero normal. */
-static int newell(stp_renderer *r, int n, stp_vec3 *normal, stp_vec3 *centre)
+/* How a polygon's shade is found (DISPLAY-FILE-ENTER's SHADE-CHECK). */
+typedef enum stp_enter_shading {
+    STP_ENTER_FLAT = 0,           /* one shade, at the vertex average */
+    STP_ENTER_SMOOTH_NORMALS = 1, /* a shade per vertex from its own normal */
+    STP_ENTER_SMOOTH_SHADES = 2   /* per-vertex shades given by the caller */
+} stp_enter_shading;
+
+/* What entering one polygon finds out about it, step by step. */
+typedef struct stp_entry {
+    int n;                      /* vertices, in r->clip_a (view coordinates) */
+    stp_enter_shading shading;
+    const stp_vec3 *normals;    /* STP_ENTER_SMOOTH_NORMALS: world normals */
+    const stp_fix *shades;      /* STP_ENTER_SMOOTH_SHADES: the caller's */
+    unsigned outside_all;       /* clip planes every vertex is outside of */
+    unsigned outside_any;       /* clip planes some vertex is outside of */
+    int64_t nx, ny, nz;         /* Newell normal, not normalised */
+    stp_vec3 centre;            /* vertex average */
+    int facing;                 /* sign of N.E: > 0 front, < 0 back, 0 edge-on */
+    stp_unit3 normal, eye_dir;  /* unit N (turned to the eye) and E */
+    int32_t n_dot_e;            /* STP_UNIT, >= 0 */
+    int style;
+    int32_t colour;
+    stp_fix transmission;
+} stp_entry;
+
+/* Step 1: the vertices to view coordinates (r->clip_a), through the
+ * vertex cache when there is one. */
+static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e)
+{
+    int i;
+#if STP_VERTEX_CACHE
+    for (i = 0; i < e->n; i++) {
+        stp_vec3 p = vertices[i];
+        /* a multiplicative hash of the exact coordinates */
+        uint32_t h = ((uint32_t)p.x * 0x9E3779B1u) ^ ((uint32_t)p.y * 0x85EBCA77u) ^
+                     ((uint32_t)p.z * 0xC2B2AE3Du);
+        stp_vertex_entry *c = &r->cache[(h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1)];
+        if (c->stamp != r->cache_stamp || c->point.x != p.x || c->point.y != p.y ||
+            c->point.z != p.z) {
+            c->stamp = r->cache_stamp;
+            c->point = p;
+            vertex_to_view(r, p, &c->view);
+            c->code = -1;
+            c->dx = STP_CACHE_NOT_PROJECTED;
+        }
+        r->clip_a[i] = c->view;
+        r->cached[i] = c;
+    }
+    return;
+#endif
+    if (r->model_on)
+        for (i = 0; i < e->n; i++)
+            vertex_to_view(r, vertices[i], &r->clip_a[i]);
+    else
+        for (i = 0; i < e->n; i++)
+            world_to_view(r, vertices[i], &r->clip_a[i]);
+}
+
+/* The outcodes of the vertices, so the clipper runs only on polygons that
+ * cross a plane (after the back-face test: a removed face needs none). */
+static void enter_outcodes(stp_renderer *r, stp_entry *e)
+{
+    int i;
+    e->outside_all = 31u;
+    e->outside_any = 0;
+    for (i = 0; i < e->n; i++) {
+        unsigned code;
+#if STP_VERTEX_CACHE
+        /* the entry may have been taken by a later vertex of this polygon */
+        stp_vertex_entry *c = r->cached[i];
+        if (c->code >= 0 && c->view.x == r->clip_a[i].x && c->view.y == r->clip_a[i].y &&
+            c->view.z == r->clip_a[i].z) {
+            code = (unsigned)c->code;
+        } else {
+            code = stp_clip_outcode(&r->clip_volume, r->clip_a[i]);
+            if (c->view.x == r->clip_a[i].x && c->view.y == r->clip_a[i].y &&
+                c->view.z == r->clip_a[i].z)
+                c->code = (int32_t)code;
+        }
+#else
+        code = stp_clip_outcode(&r->clip_volume, r->clip_a[i]);
+#endif
+        e->outside_all &= code;
+        e->outside_any |= code;
+    }
+}
+
+/* Newell normal (Algorithm 10.4) of the view-space vertices in clip_a,
+ * not normalised (components below 2^62), and their average.  Returns 0 for
+ * a zero normal.  For a triangle Newell's sum is the cross product
+ * (v1 - v0) x (v2 - v0) exactly, which is formed directly. */
+static int newell(const stp_renderer *r, stp_entry *e)
 {
     const stp_vec3 *v = r->clip_a;
-    int64_t a = 0, b = 0, c = 0, sx = 0, sy = 0, sz = 0;
-    uint32_t m = 0;
-    int i, shift = 0;
+    const int n = e->n;
+    int64_t a = 0, b = 0, c = 0, sx = 0, sy = 0, sz = 0, div;
+    uint64_t spread = 0; /* the relative coordinates' magnitudes ORed */
+    int i, bits, shift;
+    for (i = 1; i < n; i++) {
+        int64_t dx = (int64_t)v[i].x - v[0].x, dy = (int64_t)v[i].y - v[0].y,
+                dz = (int64_t)v[i].z - v[0].z;
+        spread |= (uint64_t)(dx < 0 ? -dx : dx) | (uint64_t)(dy < 0 ? -dy : dy) |
+                  (uint64_t)(dz < 0 ? -dz : dz);
+    }
     for (i = 0; i < n; i++) {
-        int64_t d[3];
-        int k;
-        d[0] = (int64_t)v[i].x - v[0].x;
-        d[1] = (int64_t)v[i].y - v[0].y;
-        d[2] = (int64_t)v[i].z - v[0].z;
-        for (k = 0; k < 3; k++) {
-            uint64_t ad = (uint64_t)(d[k] < 0 ? -d[k] : d[k]);
-            if (ad > m)
-                m = (uint32_t)(ad > 0xFFFFFFFFu ? 0xFFFFFFFFu : ad);
-        }
         sx += v[i].x;
         sy += v[i].y;
         sz += v[i].z;
     }
     /* relative coordinates below 2^24 keep every product < 2^50 and the sum
-     * of up to 4096 of them < 2^62; smaller polygons keep all their bits */
-    while ((m >> shift) >= ((uint32_t)1 << 24))
-        shift++;
-    for (i = 0; i < n; i++) {
-        int p = i == 0 ? n - 1 : i - 1;
-        int64_t xp = ((int64_t)v[p].x - v[0].x) / ((int64_t)1 << shift),
-                yp = ((int64_t)v[p].y - v[0].y) / ((int64_t)1 << shift),
-                zp = ((int64_t)v[p].z - v[0].z) / ((int64_t)1 << shift);
-        int64_t x = ((int64_t)v[i].x - v[0].x) / ((int64_t)1 << shift),
-                y = ((int64_t)v[i].y - v[0].y) / ((int64_t)1 << shift),
-                z = ((int64_t)v[i].z - v[0].z) / ((int64_t)1 << shift);
-        a += (yp - y) * (zp + z);
-        b += (zp - z) * (xp + x);
-        c += (xp - x) * (yp + y);
+     * of up to 4096 of them < 2^62; smaller polygons keep all their bits
+     * (the shift is that of the largest magnitude, counted up to 2^32) */
+    bits = stp_bit_length64(spread);
+    shift = (bits > 32 ? 32 : bits) - 24;
+    if (shift < 0)
+        shift = 0;
+    div = (int64_t)1 << shift;
+    if (n == 3) {
+        int64_t x1 = ((int64_t)v[1].x - v[0].x), y1 = ((int64_t)v[1].y - v[0].y),
+                z1 = ((int64_t)v[1].z - v[0].z);
+        int64_t x2 = ((int64_t)v[2].x - v[0].x), y2 = ((int64_t)v[2].y - v[0].y),
+                z2 = ((int64_t)v[2].z - v[0].z);
+        if (shift > 0) {
+            x1 /= div;
+            y1 /= div;
+            z1 /= div;
+            x2 /= div;
+            y2 /= div;
+            z2 /= div;
+        }
+        a = y1 * z2 - z1 * y2;
+        b = z1 * x2 - x1 * z2;
+        c = x1 * y2 - y1 * x2;
+    } else {
+        for (i = 0; i < n; i++) {
+            int p = i == 0 ? n - 1 : i - 1;
+            int64_t xp = ((int64_t)v[p].x - v[0].x) / div, yp = ((int64_t)v[p].y - v[0].y) / div,
+                    zp = ((int64_t)v[p].z - v[0].z) / div;
+            int64_t x = ((int64_t)v[i].x - v[0].x) / div, y = ((int64_t)v[i].y - v[0].y) / div,
+                    z = ((int64_t)v[i].z - v[0].z) / div;
+            a += (yp - y) * (zp + z);
+            b += (zp - z) * (xp + x);
+            c += (xp - x) * (yp + y);
+        }
     }
     /* the view system is left-handed: Newell's sum, written for right-handed
      * coordinates, points the other way there */
-    a = -a;
-    b = -b;
-    c = -c;
-    while (a > INT32_MAX || a < -INT32_MAX || b > INT32_MAX || b < -INT32_MAX || c > INT32_MAX ||
-           c < -INT32_MAX) {
-        a /= 2;
-        b /= 2;
-        c /= 2;
-    }
-    {
-        stp_vec3 nv;
-        nv.x = (stp_fix)a;
-        nv.y = (stp_fix)b;
-        nv.z = (stp_fix)c;
-        if (stp_vec3_unity(nv, normal) == 0)
-            return 0;
-    }
-    centre->x = (stp_fix)(sx / n);
-    centre->y = (stp_fix)(sy / n);
-    centre->z = (stp_fix)(sz / n);
+    e->nx = -a;
+    e->ny = -b;
+    e->nz = -c;
+    if (a == 0 && b == 0 && c == 0)
+        return 0;
+    e->centre.x = (stp_fix)(sx / n);
+    e->centre.y = (stp_fix)(sy / n);
+    e->centre.z = (stp_fix)(sz / n);
     return 1;
+}
+
+/* Step 2: the normal, and which side of the polygon the eye sees, by the
+ * sign of N.(eye - centre) in integers: nothing is normalised for a back
+ * face that back-face removal drops.  Returns STP_OK, STP_ERR_DEGENERATE (a
+ * zero normal) or 1 (a back face removed). */
+static int enter_facing(stp_renderer *r, stp_entry *e)
+{
+    int64_t nx, ny, nz, side;
+    int bits;
+    if (!newell(r, e))
+        return STP_ERR_DEGENERATE;
+    /* N cut to 30 bits, so each product with a coordinate is < 2^61 */
+    {
+        uint64_t ax = (uint64_t)(e->nx < 0 ? -e->nx : e->nx), ay = (uint64_t)(e->ny < 0 ? -e->ny : e->ny),
+                 az = (uint64_t)(e->nz < 0 ? -e->nz : e->nz);
+        uint64_t big = ax > ay ? ax : ay;
+        bits = stp_bit_length64(big > az ? big : az) - 30;
+    }
+    nx = bits > 0 ? stp_asr64(e->nx, bits) : e->nx;
+    ny = bits > 0 ? stp_asr64(e->ny, bits) : e->ny;
+    nz = bits > 0 ? stp_asr64(e->nz, bits) : e->nz;
+    if (r->projection == STP_PERSPECTIVE &&
+        (e->centre.x != 0 || e->centre.y != 0 || e->centre.z != 0))
+        side = -(nx * e->centre.x + ny * e->centre.y + nz * e->centre.z); /* E ~ -centre */
+    else
+        side = -nz; /* E = (0, 0, -1): parallel, or the centre at the eye */
+    e->facing = side > 0 ? 1 : (side < 0 ? -1 : 0);
+    if (e->facing <= 0 && r->backface_removal)
+        return 1;
+    (void)stp_unit_from64(e->nx, e->ny, e->nz, &e->normal);
+    if (r->projection == STP_PERSPECTIVE) {
+        if (stp_unit_from64(-(int64_t)e->centre.x, -(int64_t)e->centre.y, -(int64_t)e->centre.z,
+                            &e->eye_dir) == 0) {
+            e->eye_dir.x = e->eye_dir.y = 0; /* centre at the eye: clipped anyway */
+            e->eye_dir.z = -STP_UNIT_ONE;
+        }
+    } else {
+        e->eye_dir.x = e->eye_dir.y = 0;
+        e->eye_dir.z = -STP_UNIT_ONE;
+    }
+    if (e->facing < 0) {
+        /* an open surface seen from behind: shade the side the eye sees */
+        e->normal.x = -e->normal.x;
+        e->normal.y = -e->normal.y;
+        e->normal.z = -e->normal.z;
+    }
+    /* edge-on, or the centre at the eye: no light reaches the eye from it */
+    e->n_dot_e = e->facing == 0 || (r->projection == STP_PERSPECTIVE && e->centre.x == 0 &&
+                                    e->centre.y == 0 && e->centre.z == 0)
+                     ? 0
+                     : stp_unit_dot(e->normal, e->eye_dir);
+    if (e->n_dot_e < 0)
+        e->n_dot_e = 0;
+    return STP_OK;
 }
 
 #if STP_WITH_GOURAUD
@@ -594,152 +741,147 @@ static stp_vec3 direction_to_view(const stp_renderer *r, stp_vec3 d)
     out.z = stp_fix_sat64(stp_asr64((int64_t)d.x * r->forward.x + (int64_t)d.y * r->forward.y + (int64_t)d.z * r->forward.z, F));
     return out;
 }
+
+/* The shade of vertex i of a smooth polygon into r->shade_a[i]. */
+static void shade_vertex(stp_renderer *r, const stp_entry *e, int i)
+{
+    stp_fix s = r->last_shade;
+    if (e->shading == STP_ENTER_SMOOTH_SHADES) {
+        s = stp_fix_clamp(e->shades[i], 0, ONE);
+    } else if (r->shading) {
+        stp_vec3 face = stp_unit_to_fix(e->normal), vn = face, to_eye, origin = {0, 0, 0};
+        stp_vec3 eye = stp_unit_to_fix(e->eye_dir), ev = eye;
+        stp_vec3 nw = r->model_on ? stp_transform_direction(&r->model, e->normals[i]) : e->normals[i];
+        if (stp_vec3_unity(direction_to_view(r, nw), &vn) == 0) {
+            vn = face;
+        } else if (stp_vec3_dot(vn, face) < 0) {
+            /* turn the vertex normal to the side the face shows: files
+             * mix windings, and two-sided faces are seen from either */
+            vn.x = -vn.x;
+            vn.y = -vn.y;
+            vn.z = -vn.z;
+        }
+        if (r->projection == STP_PERSPECTIVE) {
+            to_eye.x = -r->clip_a[i].x;
+            to_eye.y = -r->clip_a[i].y;
+            to_eye.z = -r->clip_a[i].z;
+            if (stp_vec3_unity(to_eye, &ev) == 0)
+                ev = eye;
+        }
+        s = stp_shade_point(&r->segment_lighting, &r->material, vn, r->clip_a[i], origin,
+                            r->projection == STP_PARALLEL, ev);
+    }
+    r->shade_a[i] = s;
+}
 #endif
 
-/* DISPLAY-FILE-ENTER of a polygon.  smooth: 0 flat; 1 shade each vertex from
- * normals[]; 2 take shades[] from the caller. */
-static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n, int smooth,
-                            const stp_vec3 *normals, const stp_fix *shades)
+/* Step 3: SHADE-CHECK: the polygon's shade (r->last_shade), INTENSITY
+ * style and colour, and the vertex shades of a smooth polygon. */
+static int enter_shade(stp_renderer *r, stp_entry *e)
 {
-    stp_vec3 normal, centre, eye_dir, *clipped;
-    stp_fix n_dot_e, *clipped_shades;
-    int i, m, style, status = check_open(r);
-    int32_t colour;
-    stp_fix transmission;
+    e->colour = 0;
+    if (r->shading) {
+#if STP_WITH_COLOUR
+        if (r->colour) {
+            stp_vec3 origin = {0, 0, 0};
+            stp_fix rgb[3];
+            int c;
+            stp_shade_point_colour(&r->segment_lighting, &r->material, stp_unit_to_fix(e->normal),
+                                   e->centre, origin, r->projection == STP_PARALLEL,
+                                   stp_unit_to_fix(e->eye_dir), rgb);
+            r->last_shade = stp_shade_luminance(rgb);
+            e->colour = STP_COLOUR_FLAG;
+            for (c = 0; c < 3; c++)
+                e->colour |= (int32_t)(stp_intensity_index(rgb[c], r->levels) - 1) << (16 - 8 * c);
+        } else
+#endif
+            r->last_shade = stp_shade_unit(&r->segment_lighting, &r->material, e->normal,
+                                           e->centre, e->eye_dir, e->n_dot_e);
+        e->style = stp_intensity_index(r->last_shade, r->levels);
+    } else {
+        e->style = r->fill_style;
+        r->last_shade = stp_intensity_shade(e->style, r->levels);
+    }
+    if (e->shading != STP_ENTER_FLAT) {
+#if STP_WITH_GOURAUD
+        int i;
+        for (i = 0; i < e->n; i++)
+            shade_vertex(r, e, i);
+#else
+        return STP_ERR_UNSUPPORTED;
+#endif
+    }
+    return STP_OK;
+}
+
+/* Step 4: the transmission t of (10.21) and (10.18); 0 when opaque. */
+static void enter_transmission(const stp_renderer *r, stp_entry *e)
+{
+    e->transmission = 0;
+#if STP_WITH_TRANSPARENCY
+    if (r->t_max > 0 || r->t_min > 0) {
+        /* (10.21): t = (t_max - t_min)(N.E)^power + t_min, then (10.18) */
+        stp_fix ne = stp_fix_clamp(
+            (stp_fix)((e->n_dot_e + ((int32_t)1 << (STP_UNIT_BITS - F - 1))) >> (STP_UNIT_BITS - F)),
+            0, ONE);
+        stp_fix p = ONE;
+        int k;
+        for (k = 0; k < r->t_power; k++)
+            p = stp_fix_mul(p, ne);
+        e->transmission = stp_fix_clamp(
+            stp_fix_mul(stp_fix_add(stp_fix_mul(r->t_max - r->t_min, p), r->t_min), r->t_attenuation),
+            0, ONE);
+    }
+#else
+    (void)r;
+#endif
+}
+
+/* Step 5: clip (only a polygon that crosses a plane), project and store:
+ * the attribute instructions that changed, the shadow records, the
+ * vertices. */
+static int enter_store(stp_renderer *r, stp_entry *e)
+{
+    stp_vec3 *clipped = r->clip_a;
+    stp_fix *clipped_shades = 0;
+    int i, m = e->n, smooth = e->shading != STP_ENTER_FLAT;
     uint32_t attribute;
 #if STP_WITH_SHADOWS
     stp_instr record[STP_MAX_LIGHTS + 1];
     int records;
 #endif
-    if (status != STP_OK)
-        return status;
-    if (vertices == 0 || n < 3)
-        return n < 3 && n >= 0 ? STP_ERR_DEGENERATE : STP_ERR_ARG;
-    if (n > STP_MAX_POLYGON_VERTICES)
-        return STP_ERR_TOO_MANY_VERTICES;
-    for (i = 0; i < n; i++)
-        world_to_view(r, vertices[i], &r->clip_a[i]);
-    r->last_shade = -1;
-    if (!newell(r, n, &normal, &centre))
-        return STP_ERR_DEGENERATE;
-
-    /* direction towards the eye, for the back-face test and shading */
-    if (r->projection == STP_PERSPECTIVE) {
-        stp_vec3 to_eye;
-        to_eye.x = -centre.x;
-        to_eye.y = -centre.y;
-        to_eye.z = -centre.z;
-        if (stp_vec3_unity(to_eye, &eye_dir) == 0)
-            eye_dir.z = -ONE; /* centre at the eye: it will be clipped anyway */
-    } else {
-        eye_dir.x = eye_dir.y = 0;
-        eye_dir.z = -ONE;
-    }
-    n_dot_e = stp_vec3_dot(normal, eye_dir);
-    if (n_dot_e <= 0) {
-        if (r->backface_removal)
-            return STP_OK;
-        /* an open surface seen from behind: shade the side the eye sees */
-        normal.x = -normal.x;
-        normal.y = -normal.y;
-        normal.z = -normal.z;
-    }
-    colour = 0;
-    if (r->shading) {
-        stp_vec3 origin = {0, 0, 0};
-#if STP_WITH_COLOUR
-        if (r->colour) {
-            stp_fix rgb[3];
-            int c;
-            stp_shade_point_colour(&r->segment_lighting, &r->material, normal, centre, origin,
-                                   r->projection == STP_PARALLEL, eye_dir, rgb);
-            r->last_shade = stp_shade_luminance(rgb);
-            colour = STP_COLOUR_FLAG;
-            for (c = 0; c < 3; c++)
-                colour |= (int32_t)(stp_intensity_index(rgb[c], r->levels) - 1) << (16 - 8 * c);
-        } else
-#endif
-            r->last_shade = stp_shade_point(&r->segment_lighting, &r->material, normal, centre,
-                                            origin, r->projection == STP_PARALLEL, eye_dir);
-        style = stp_intensity_index(r->last_shade, r->levels);
-    } else {
-        style = r->fill_style;
-        r->last_shade = stp_intensity_shade(style, r->levels);
-    }
 #if STP_WITH_GOURAUD
-    if (smooth) {
-        for (i = 0; i < n; i++) {
-            stp_fix s = r->last_shade;
-            if (smooth == 2) {
-                s = stp_fix_clamp(shades[i], 0, ONE);
-            } else if (r->shading) {
-                stp_vec3 vn = normal, to_eye, e = eye_dir, origin = {0, 0, 0};
-                if (stp_vec3_unity(direction_to_view(r, normals[i]), &vn) == 0) {
-                    vn = normal;
-                } else if (stp_vec3_dot(vn, normal) < 0) {
-                    /* turn the vertex normal to the side the face shows: files
-                     * mix windings, and two-sided faces are seen from either */
-                    vn.x = -vn.x;
-                    vn.y = -vn.y;
-                    vn.z = -vn.z;
-                }
-                if (r->projection == STP_PERSPECTIVE) {
-                    to_eye.x = -r->clip_a[i].x;
-                    to_eye.y = -r->clip_a[i].y;
-                    to_eye.z = -r->clip_a[i].z;
-                    if (stp_vec3_unity(to_eye, &e) == 0)
-                        e = eye_dir;
-                }
-                s = stp_shade_point(&r->segment_lighting, &r->material, vn, r->clip_a[i], origin,
-                                    r->projection == STP_PARALLEL, e);
-            }
-            r->shade_a[i] = s;
-        }
-    }
-#else
-    (void)normals;
-    (void)shades;
-    if (smooth)
-        return STP_ERR_UNSUPPORTED;
+    clipped_shades = r->shade_a;
 #endif
-
-    m = clip_polygon(r, n, smooth, &clipped, &clipped_shades);
+    enter_outcodes(r, e);
+    if (e->outside_all != 0)
+        return STP_OK; /* wholly outside one plane: nothing of it is in view */
+    if (e->outside_any != 0)
+        m = clip_polygon(r, e->n, smooth, &clipped, &clipped_shades);
     if (m < 3)
-        return STP_OK; /* nothing of it is in view */
-    attribute = style != r->current_style || colour != r->current_colour ? 1u : 0u;
-    transmission = 0;
-#if STP_WITH_TRANSPARENCY
-    if (r->t_max > 0 || r->t_min > 0) {
-        /* (10.21): t = (t_max - t_min)(N.E)^power + t_min, then (10.18) */
-        stp_fix ne = stp_fix_clamp(n_dot_e < 0 ? -n_dot_e : n_dot_e, 0, ONE), p = ONE;
-        int k;
-        for (k = 0; k < r->t_power; k++)
-            p = stp_fix_mul(p, ne);
-        transmission = stp_fix_clamp(
-            stp_fix_mul(stp_fix_add(stp_fix_mul(r->t_max - r->t_min, p), r->t_min), r->t_attenuation),
-            0, ONE);
-    }
-#endif
-    if (transmission != r->current_transmission)
+        return STP_OK;
+    attribute = e->style != r->current_style || e->colour != r->current_colour ? 1u : 0u;
+    if (e->transmission != r->current_transmission)
         attribute++;
 #if STP_WITH_SHADOWS
     /* shadow records: what the raster needs to re-light a pixel hidden
      * from a light (render.h, STP_OP_LIGHT_TERM) */
     records = 0;
-    if (r->shading && smooth != 2)
-        records = stp_shadow_records(r, normal, centre, eye_dir, colour != 0, record);
+    if (r->shading && e->shading != STP_ENTER_SMOOTH_SHADES && stp_shadow_any(r))
+        records = stp_shadow_records(r, stp_unit_to_fix(e->normal), e->centre,
+                                     stp_unit_to_fix(e->eye_dir), e->colour != 0, record);
     attribute += (uint32_t)records;
 #endif
     if (r->capacity - r->used < (uint32_t)m + attribute)
         return STP_ERR_FULL;
-    if (transmission != r->current_transmission) {
-        append(r, STP_OP_TRANSPARENCY, transmission, 0, 0, -1);
-        r->current_transmission = transmission;
+    if (e->transmission != r->current_transmission) {
+        append(r, STP_OP_TRANSPARENCY, e->transmission, 0, 0, -1);
+        r->current_transmission = e->transmission;
     }
-    if (style != r->current_style || colour != r->current_colour) {
-        append(r, STP_OP_SHADE, style, r->last_shade, colour, -1);
-        r->current_style = style;
-        r->current_colour = colour;
+    if (e->style != r->current_style || e->colour != r->current_colour) {
+        append(r, STP_OP_SHADE, e->style, r->last_shade, e->colour, -1);
+        r->current_style = e->style;
+        r->current_colour = e->colour;
     }
 #if STP_WITH_SHADOWS
     for (i = 0; i < records; i++) {
@@ -750,20 +892,68 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n, in
 #endif
     for (i = 0; i < m; i++) {
         stp_instr p;
+#if STP_VERTEX_CACHE
+        /* an unclipped polygon's vertices are the cached ones */
+        stp_vertex_entry *c = e->outside_any == 0 ? r->cached[i] : 0;
+        if (c && c->dx != STP_CACHE_NOT_PROJECTED && c->view.x == clipped[i].x &&
+            c->view.y == clipped[i].y && c->view.z == clipped[i].z) {
+            p.x = c->dx;
+            p.y = c->dy;
+            p.z = c->dz;
+        } else {
+            project(r, clipped[i], &p);
+            if (c && c->view.x == clipped[i].x && c->view.y == clipped[i].y &&
+                c->view.z == clipped[i].z) {
+                c->dx = p.x;
+                c->dy = p.y;
+                c->dz = p.z;
+            }
+        }
+#else
         project(r, clipped[i], &p);
+#endif
         append(r, i == 0 ? m : STP_OP_LINE, p.x, p.y, p.z, smooth ? clipped_shades[i] : -1);
     }
     return STP_OK;
 }
 
-static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n, int smooth,
-                         const stp_vec3 *normals, const stp_fix *shades)
+/* DISPLAY-FILE-ENTER of a polygon: the steps above in order. */
+static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
+                            stp_enter_shading shading, const stp_vec3 *normals,
+                            const stp_fix *shades)
 {
-    int status = enter_polygon_df(r, vertices, n, smooth, normals, shades);
+    stp_entry e;
+    int status = check_open(r);
+    if (status != STP_OK)
+        return status;
+    if (vertices == 0 || n < 3)
+        return n < 3 && n >= 0 ? STP_ERR_DEGENERATE : STP_ERR_ARG;
+    if (n > STP_MAX_POLYGON_VERTICES)
+        return STP_ERR_TOO_MANY_VERTICES;
+    e.n = n;
+    e.shading = shading;
+    e.normals = normals;
+    e.shades = shades;
+    r->last_shade = -1;
+    enter_transform(r, vertices, &e);
+    status = enter_facing(r, &e);
+    if (status != STP_OK)
+        return status == 1 ? STP_OK : status;
+    status = enter_shade(r, &e);
+    if (status != STP_OK)
+        return status;
+    enter_transmission(r, &e);
+    return enter_store(r, &e);
+}
+
+static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,
+                         stp_enter_shading shading, const stp_vec3 *normals, const stp_fix *shades)
+{
+    int status = enter_polygon_df(r, vertices, n, shading, normals, shades);
 #if STP_WITH_SHADOWS
     /* every polygon entered casts into the maps, in view or not, back face
      * or not (render.h) */
-    if (status == STP_OK)
+    if (status == STP_OK && stp_shadow_any(r))
         stp_shadow_enter(r, vertices, n);
 #endif
     return status;
@@ -771,14 +961,14 @@ static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n, int s
 
 int stp_polygon(stp_renderer *r, const stp_vec3 *vertices, int n)
 {
-    return enter_polygon(r, vertices, n, 0, 0, 0);
+    return enter_polygon(r, vertices, n, STP_ENTER_FLAT, 0, 0);
 }
 
 int stp_polygon_smooth(stp_renderer *r, const stp_vec3 *vertices, const stp_vec3 *normals, int n)
 {
     if (normals == 0)
         return STP_ERR_ARG;
-    return enter_polygon(r, vertices, n, 1, normals, 0);
+    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_NORMALS, normals, 0);
 }
 
 int stp_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const stp_fix *shades,
@@ -786,5 +976,5 @@ int stp_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const s
 {
     if (shades == 0)
         return STP_ERR_ARG;
-    return enter_polygon(r, vertices, n, 2, 0, shades);
+    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_SHADES, 0, shades);
 }

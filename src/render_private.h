@@ -5,6 +5,8 @@
 
 #include "stipple/render.h"
 #include "fix_private.h"
+#include "clip_private.h"
+#include "view_private.h"
 
 #define STP_CLIP_VERTICES (STP_MAX_POLYGON_VERTICES + 5)
 
@@ -24,12 +26,12 @@ typedef struct stp_segment {
  * floor(acc / 2^16) is the crossing.  Smooth polygons: the shade sa at
  * the top, shade_step and shade_acc likewise with 16 more fractional bits. */
 typedef struct stp_edge {
-    int32_t xa, ya, yb;
-    int64_t step, acc;
+    int64_t step, acc; /* the 64-bit fields first: no padding */
 #if STP_WITH_GOURAUD
-    int32_t sa;
     int64_t shade_step, shade_acc;
+    int32_t sa;
 #endif
+    int32_t xa, ya, yb;
 } stp_edge;
 
 /* A crossing of a row by an edge: x (Q27.4) and, for smooth polygons, the
@@ -57,6 +59,7 @@ typedef struct stp_shadow_map {
     stp_vec3 light_view; /* the light in view coordinates when the map was set */
     stp_fix focal;       /* texels per unit of x_l / z_l, F fractional bits */
     stp_fix near;        /* > 0 */
+    stp_clip_volume volume; /* the map's pyramid, for clip.c */
 } stp_shadow_map;
 
 /* What the raster needs to re-light the pixels of one polygon, gathered
@@ -78,6 +81,20 @@ typedef struct stp_shadow_poly {
 } stp_shadow_poly;
 #endif
 
+#if STP_VERTEX_CACHE
+/* One vertex cache entry (config.h, STP_VERTEX_CACHE): an entered point
+ * (before the model transform), its view coordinates and, once known, its
+ * outcode and device position.  Valid while stamp equals the renderer's
+ * cache_stamp (set_view, set_transform and segment_create change that). */
+typedef struct stp_vertex_entry {
+    stp_vec3 point, view;
+    uint32_t stamp;
+    int32_t code;           /* outcode, -1 not yet known */
+    int32_t dx, dy, dz;     /* device position (project), when projected */
+} stp_vertex_entry;
+#define STP_CACHE_NOT_PROJECTED INT32_MIN /* dx of an entry not projected yet */
+#endif
+
 struct stp_renderer {
     stp_instr *df;
     uint32_t capacity, used;
@@ -88,9 +105,11 @@ struct stp_renderer {
 
     /* view: orthonormal basis (world units), centre of projection */
     stp_vec3 from, right, up, forward;
+    stp_view_transform to_view; /* world to view (view.c) */
     stp_projection projection;
     stp_fix hither;
     stp_fix focal; /* perspective: pixels per (x/z); parallel: pixels per unit */
+    stp_clip_volume clip_volume; /* the view's, for clip.c */
 
     stp_lighting user_lighting;    /* what SET-LIGHT last said (world) */
     stp_lighting segment_lighting; /* COPY-LIGHT of the open segment (view) */
@@ -108,6 +127,8 @@ struct stp_renderer {
 
     int pen_valid;
     stp_vec3 pen; /* view coordinates */
+    stp_transform model; /* of the open segment's points (stp_set_transform) */
+    int model_on;        /* 0: the identity, skipped */
 
     /* scratch: the clipper's two vertex lists and the scan converter's
      * edges; here rather than on the stack so a small MCU stack suffices */
@@ -118,11 +139,17 @@ struct stp_renderer {
     stp_fix shade_b[STP_CLIP_VERTICES];
 #endif
     stp_edge edges[STP_CLIP_VERTICES];
+#if STP_VERTEX_CACHE
+    stp_vertex_entry cache[STP_VERTEX_CACHE];
+    uint32_t cache_stamp; /* >= 1 */
+    stp_vertex_entry *cached[STP_MAX_POLYGON_VERTICES]; /* clip_a[i]'s entry */
+#endif
     stp_crossing crossings[STP_CLIP_VERTICES];
 
 #if STP_WITH_SHADOWS
     stp_shadow_map shadow[STP_MAX_LIGHTS];
     uint32_t shadow_generation; /* of the last map set */
+    uint32_t shadow_set;        /* bit j: shadow[j].depth != 0 */
     uint32_t shadow_record[STP_MAX_LIGHTS]; /* display-file entry of the
                                                polygon being entered's record
                                                for light j, or UINT32_MAX */
@@ -131,9 +158,6 @@ struct stp_renderer {
 };
 
 #if STP_WITH_SHADOWS
-/* render.c: a world point in view coordinates (the display file's
- * transform). */
-void stp_view_point(const stp_renderer *r, stp_vec3 p, stp_vec3 *out);
 
 /* shadow.c, at entry: the STP_OP_LIGHT_TERM records of a polygon shaded
  * with this normal at this centre (view coordinates; colour: a colour

@@ -2,6 +2,7 @@
 /* MAKE-SHADE, INTENSITY and gamma tables: see include/stipple/shade.h. */
 #include "stipple/shade.h"
 #include "fix_private.h"
+#include "shade_private.h"
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -43,7 +44,7 @@ static stp_fix fresnel(stp_fix c, stp_fix n)
     int64_t g, gmc, gpc, r, r2, num, den, t, t2, fr;
     if (g2 <= 0)
         return ONE; /* n < 1 and beyond the critical angle: total reflection */
-    g = stp_fix_sqrt_wide(g2);
+    g = (int64_t)stp_sqrt64_fast((uint64_t)g2); /* < 2^31: g2 < 2^62 */
     gmc = g - c;
     gpc = g + c; /* > 0: g >= 0 and c > 0 */
     r = (gmc * ONE) / gpc; /* |r| <= 1 */
@@ -99,103 +100,150 @@ stp_specular_terms stp_specular(stp_fix n_dot_h, stp_fix n_dot_e, stp_fix n_dot_
 }
 
 #if STP_WITH_SPECULAR
-/* D F G/(N.E), with G/(N.E) formed directly: G = min(1, 2 (N.H) min(N.E,
- * N.L)/(E.H)), so G/(N.E) = min(1/(N.E), 2 (N.H) (min(N.E, N.L)/(N.E))/(E.H)).
- * Forming the tiny G of a grazing eye first and dividing it by the tiny N.E
- * afterwards would keep only the few bits G has left.  N.E, N.L > 0 here;
- * the quotient is capped at STP_FIX_MAX (the shade saturates long before). */
-static stp_fix specular_share(stp_specular_terms s, stp_fix n_dot_h, stp_fix n_dot_e,
-                              stp_fix n_dot_l, stp_fix e_dot_h)
+/* Ks D F G/(N.E) of one light in STP_UNIT (Q30) from the cosines (each in
+ * (0, 2^30], STP_UNIT), saturated at 2^45 (32768, beyond any shade).
+ *   D = (k/(k + 1 - N.H))^2 = (1 - (1 - N.H)/(k + 1 - N.H))^2: the quotient
+ *     (1 - N.H) 2^30 / (k + 1 - N.H) has a numerator below 2^61 for any k;
+ *   G/(N.E) = min(1/(N.E), 2 (N.H) (min(N.E, N.L)/(N.E))/(E.H)), formed
+ *     directly so a grazing eye keeps its bits (the tiny G is never divided
+ *     by the tiny N.E): 2 (N.H) min/(N.E) <= 2^31, shifted by 30 < 2^61;
+ *   F from stp_fresnel's arithmetic at E.H rounded to stp_fix. */
+static int64_t specular_share_unit(const stp_material *material, int64_t n_dot_h,
+                                   int64_t n_dot_e, int64_t n_dot_l, int64_t e_dot_h)
 {
-    int64_t m = n_dot_l < n_dot_e ? n_dot_l : n_dot_e, q, g_ne, cap, df;
-    if (n_dot_h <= 0 || e_dot_h <= 0 || n_dot_e <= 0)
-        return 0;
-    if (n_dot_h > ONE)
-        n_dot_h = ONE;
-    q = (2 * m * n_dot_h) / n_dot_e;           /* 2 (N.H) min/(N.E) <= 2 ONE */
-    g_ne = (q * ONE) / e_dot_h;                /* < 2^(2F+2) */
-    cap = ((int64_t)ONE * ONE) / n_dot_e;      /* G capped at 1 */
+    const int64_t one = STP_UNIT_ONE;
+    int64_t k = (int64_t)(material->gloss < 1 ? 1 : material->gloss) << (STP_UNIT_BITS - F);
+    int64_t m = n_dot_l < n_dot_e ? n_dot_l : n_dot_e, q, d, g_ne, cap, df, ec;
+    stp_fix f;
+    if (n_dot_h > one)
+        n_dot_h = one;
+    q = one - ((one - n_dot_h) << STP_UNIT_BITS) / (k + one - n_dot_h);
+    d = (q * q) >> STP_UNIT_BITS;
+    g_ne = ((2 * m * n_dot_h) / n_dot_e << STP_UNIT_BITS) / e_dot_h;
+    cap = (one << STP_UNIT_BITS) / n_dot_e;
     if (cap < g_ne)
         g_ne = cap;
-    if (g_ne > STP_FIX_MAX)
-        g_ne = STP_FIX_MAX;
-    df = ((int64_t)s.d * s.f + STP_FIX_HALF) >> F; /* D, F in [0, 1] */
-    return stp_fix_sat64((df * g_ne + STP_FIX_HALF) >> F);
+    ec = (e_dot_h + ((int64_t)1 << (STP_UNIT_BITS - F - 1))) >> (STP_UNIT_BITS - F);
+    f = fresnel(ec < 1 ? 1 : (ec > ONE ? ONE : (stp_fix)ec),
+                material->refraction <= 0 ? 1 : material->refraction);
+    df = (d * f) >> F; /* D, F in [0, 1]: STP_UNIT */
+    df = stp_mul_shift_sat(df, g_ne, STP_UNIT_BITS);
+    df = stp_mul_shift_sat(df, material->specular < 0 ? 0 : material->specular, F);
+    return df > ((int64_t)1 << 45) ? (int64_t)1 << 45 : df;
 }
 #endif
 
-
-/* MAKE-SHADE with its parts: when terms is not NULL, *ambient_out gets B*R
- * and terms[j] each light's saturated term (0 for a light that does not
- * reach the face), for stp_shade_point_terms; stp_shade_point passes NULL. */
-static inline stp_fix shade_parts(const stp_lighting *lighting, const stp_material *material,
-                                  stp_vec3 normal, stp_vec3 point, stp_vec3 eye, int parallel,
-                                  stp_vec3 parallel_dir, stp_fix *ambient_out, stp_fix *terms)
+/* MAKE-SHADE on STP_UNIT directions: the shade of a point with unit normal
+ * n seen along unit e (towards the eye; n_dot_e = N.E, STP_UNIT).  The
+ * lights' terms are formed in STP_UNIT and 64 bits, summed with the ambient
+ * part B R, multiplied by BRIGHT and only then rounded to stp_fix, so the
+ * error does not grow with BRIGHT (each term keeps 2^-30, not 2^-16).
+ * Per light, when terms is not NULL, terms[j] gets its term rounded to
+ * stp_fix (saturated; 0 for a light that does not reach the face) and
+ * *ambient_out B R, for stp_shade_point_terms. */
+static stp_fix shade_unit(const stp_lighting *lighting, const stp_material *material,
+                          stp_unit3 normal, stp_vec3 point, stp_unit3 e, int32_t n_dot_e,
+                          stp_fix *ambient_out, stp_fix *terms)
 {
-    stp_vec3 e;
-    stp_fix n_dot_e, background, refl, c, ambient;
-    int64_t sum = 0; /* F fractional bits; each term is saturated to stp_fix
-                        and there are at most STP_MAX_LIGHTS of them */
+    const int up = STP_UNIT_BITS - F; /* stp_fix to STP_UNIT */
+    const int64_t term_cap = (int64_t)1 << 45;
+    stp_fix background = stp_fix_clamp(lighting->background, 0, ONE);
+    stp_fix refl = material->reflectivity;
+    int64_t c = lighting->attenuation_c > 0 ? lighting->attenuation_c : 1;
+    /* B R: both stp_fix, so the product has 2F fractional bits; |.| < 2^62 */
+    int64_t ambient = stp_asr64((int64_t)background * refl, 2 * F - STP_UNIT_BITS);
+    int64_t sum = 0; /* STP_UNIT; each term is capped at 2^45 */
     int j, count;
 
-    background = stp_fix_clamp(lighting->background, 0, ONE);
-    refl = material->reflectivity;
-    c = lighting->attenuation_c > 0 ? lighting->attenuation_c : 1;
-    ambient = stp_fix_mul(background, refl);
-
-    if (parallel)
-        e = parallel_dir;
-    else
-        (void)stp_unity_diff(eye, point, &e);
-    n_dot_e = stp_vec3_dot(normal, e);
-
+#if !STP_WITH_SPECULAR
+    (void)e;
+#endif
     count = lighting->count < 0 ? 0 : (lighting->count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : lighting->count);
     if (n_dot_e <= 0)
         count = 0; /* a back face (or the eye on the point): ambient share only */
     if (terms) {
-        *ambient_out = ambient;
+        *ambient_out = stp_fix_mul(background, refl);
         for (j = 0; j < STP_MAX_LIGHTS; j++)
             terms[j] = 0;
     }
     for (j = 0; j < count; j++) {
         const stp_light *light = &lighting->lights[j];
-        stp_vec3 l;
-        stp_fix n_dot_l, term;
-        int64_t u = stp_unity_diff(light->position, point, &l);
+        stp_unit3 l;
+        int64_t u, term, power;
+        int32_t n_dot_l;
+        u = stp_unit_from64((int64_t)light->position.x - point.x,
+                            (int64_t)light->position.y - point.y,
+                            (int64_t)light->position.z - point.z, &l);
         if (u == 0)
             l = normal; /* light on the surface: lit head-on, 1/(C + 0) */
-        n_dot_l = stp_vec3_dot(normal, l);
+        n_dot_l = stp_unit_dot(normal, l);
         if (n_dot_l <= 0)
             continue;
-        term = stp_fix_mul(refl, n_dot_l);
+        /* R (N.L): stp_fix times STP_UNIT, back to STP_UNIT; |.| < 2^61 */
+        term = stp_asr64((int64_t)refl * n_dot_l, F);
 #if STP_WITH_SPECULAR
-        if (material->specular != 0 && n_dot_e > 0) {
-            stp_vec3 h, le;
-            le.x = stp_fix_add(l.x, e.x);
-            le.y = stp_fix_add(l.y, e.y);
-            le.z = stp_fix_add(l.z, e.z);
-            if (stp_vec3_unity(le, &h) != 0) { /* L + E = 0: H undefined, no highlight */
-                stp_fix n_dot_h = stp_vec3_dot(normal, h), e_dot_h = stp_vec3_dot(e, h);
-                stp_specular_terms s = stp_specular(n_dot_h, n_dot_e, n_dot_l, e_dot_h,
-                                                    material->refraction, material->gloss);
+        if (material->specular != 0) {
+            /* H = (L + E)/|L + E| is never formed: N.H = (N.L + N.E)/|L + E|
+             * and E.H = (1 + E.L)/|L + E| with |L + E|^2 = 2 (1 + E.L), so
+             * one reciprocal square root of a scalar serves both */
+            int64_t one_el = (int64_t)STP_UNIT_ONE + stp_unit_dot(e, l); /* in [0, 2^31] */
+            if (one_el > 0) { /* L + E = 0: H undefined, no highlight */
+                int ex;
+                int64_t inv = (int64_t)stp_rsqrt64((uint64_t)one_el << 1, &ex);
+                /* 1/|L + E| = inv 2^-ex 2^15 (the argument is STP_UNIT) */
+                int64_t n_dot_h = ((int64_t)n_dot_l + n_dot_e) * inv, e_dot_h = one_el * inv;
+                n_dot_h = stp_asr64(n_dot_h + ((int64_t)1 << (ex - 16)), ex - 15);
+                e_dot_h = stp_asr64(e_dot_h + ((int64_t)1 << (ex - 16)), ex - 15);
                 /* the share DGF/(E.N) explodes as E.N -> 0: it saturates,
                  * and the min(1, ...) below caps the shade */
-                stp_fix share = stp_fix_mul(specular_share(s, n_dot_h, n_dot_e, n_dot_l, e_dot_h),
-                                            material->specular);
-                term = stp_fix_add(term, share);
+                if (n_dot_h > 0 && e_dot_h > 0)
+                    term += specular_share_unit(material, n_dot_h, n_dot_e, n_dot_l, e_dot_h);
             }
         }
 #endif
-        /* P_j * term / (C + U_j) in one 64-bit step */
-        term = stp_fix_sat64(((int64_t)term * light->power) / (c + u));
+        /* P_j term / (C + U_j): the product (STP_UNIT + F bits) saturates at
+         * 2^62, far above any shade; C + U < 2^34 */
+        power = light->power < 0 ? 0 : light->power;
+        if (term < 0)
+            term = 0;
+        term = stp_mul_shift_sat(term, power, 0) / (c + u);
+        if (term > term_cap)
+            term = term_cap;
         if (terms)
-            terms[j] = term;
+            terms[j] = stp_fix_sat64((term + ((int64_t)1 << (up - 1))) >> up);
         sum += term;
     }
     sum += ambient;
-    sum = stp_fix_sat64(sum);
-    sum = stp_fix_mul(lighting->brightness, (stp_fix)sum);
-    return stp_fix_clamp((stp_fix)sum, 0, ONE);
+    if (lighting->brightness <= 0 || sum <= 0)
+        return 0;
+    /* BRIGHT times the sum, still in STP_UNIT, then min(1, .) and one
+     * rounding to stp_fix */
+    sum = stp_mul_shift_sat(sum, lighting->brightness, F);
+    if (sum >= STP_UNIT_ONE)
+        return ONE;
+    return (stp_fix)((sum + ((int64_t)1 << (up - 1))) >> up);
+}
+
+/* stp_shade_point's inputs to STP_UNIT: the normal and E renormalised (the
+ * caller's stp_fix unit vectors carry their own rounding), N.E. */
+static stp_fix shade_parts(const stp_lighting *lighting, const stp_material *material,
+                           stp_vec3 normal, stp_vec3 point, stp_vec3 eye, int parallel,
+                           stp_vec3 parallel_dir, stp_fix *ambient_out, stp_fix *terms)
+{
+    stp_unit3 n, e;
+    (void)stp_unit_from64(normal.x, normal.y, normal.z, &n);
+    if (parallel)
+        (void)stp_unit_from64(parallel_dir.x, parallel_dir.y, parallel_dir.z, &e);
+    else
+        (void)stp_unit_from64((int64_t)eye.x - point.x, (int64_t)eye.y - point.y,
+                              (int64_t)eye.z - point.z, &e);
+    return shade_unit(lighting, material, n, point, e, stp_unit_dot(n, e), ambient_out, terms);
+}
+
+stp_fix stp_shade_unit(const stp_lighting *lighting, const stp_material *material,
+                       stp_unit3 normal, stp_vec3 point, stp_unit3 eye_dir, int32_t n_dot_e)
+{
+    return shade_unit(lighting, material, normal, point, eye_dir, n_dot_e, 0, 0);
 }
 
 stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *material,

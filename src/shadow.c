@@ -80,11 +80,7 @@ static void to_light(const stp_shadow_map *sm, const int64_t p[3], int64_t out[3
 
 int stp_shadow_any(const stp_renderer *r)
 {
-    int j;
-    for (j = 0; j < STP_MAX_LIGHTS; j++)
-        if (r->shadow[j].depth)
-            return 1;
-    return 0;
+    return r->shadow_set != 0;
 }
 
 #endif /* STP_WITH_SHADOWS */
@@ -149,7 +145,7 @@ int stp_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count
                                      (int64_t)basis[a].z * vbasis[b].z);
             sm->t[a] = stp_fix_sat64(stp_asr64(dx * basis[a].x + dy * basis[a].y + dz * basis[a].z, F));
         }
-        stp_view_point(r, lpos, &sm->light_view);
+        stp_view_transform_point(&r->to_view, lpos, &sm->light_view);
     }
     /* texels per unit of x_l / z_l: (short / 2) / tan(fov / 2), as the view */
     short_side = width < height ? width : height;
@@ -162,9 +158,15 @@ int stp_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count
     if (sm->focal <= 0)
         return STP_ERR_VIEW;
     sm->near = near;
+    sm->volume.focal = sm->focal;
+    sm->volume.near = near;
+    sm->volume.width = width;
+    sm->volume.height = height;
+    sm->volume.parallel = 0;
     for (i = 0; i < texels; i++)
         depth[i] = 0;
     sm->depth = depth;
+    r->shadow_set |= (uint32_t)1 << light;
     sm->width = width;
     sm->height = height;
     r->shadow_generation = r->shadow_generation % 0x7FFFFFu + 1u;
@@ -188,6 +190,7 @@ int stp_remove_shadow_map(stp_renderer *r, int light)
         return STP_ERR_ARG;
 #if STP_WITH_SHADOWS
     r->shadow[light].depth = 0;
+    r->shadow_set &= ~((uint32_t)1 << light);
 #endif
     return STP_OK;
 }
@@ -247,54 +250,6 @@ int stp_shadow_records(const stp_renderer *r, stp_vec3 normal, stp_vec3 centre, 
 }
 
 /* ---- at entry: depth into the maps ---- */
-
-/* Signed distance of a light-frame point from the map pyramid's plane
- * (0: near, 1..4: left, right, top, bottom), >= 0 inside; as render.c's
- * plane_distance for a perspective view. */
-static int64_t map_plane(const stp_shadow_map *sm, int plane, stp_vec3 p)
-{
-    int64_t fx = stp_asr64((int64_t)sm->focal * p.x, F), fy = stp_asr64((int64_t)sm->focal * p.y, F);
-    int64_t hw = ((int64_t)sm->width * p.z) / 2, hh = ((int64_t)sm->height * p.z) / 2;
-    switch (plane) {
-    case 0: return (int64_t)p.z - sm->near;
-    case 1: return fx + hw;
-    case 2: return hw - fx;
-    case 3: return hh - fy;
-    default: return fy + hh;
-    }
-}
-
-/* Sutherland-Hodgman against the map's pyramid, from r->clip_a (light
- * frame); the result in *result, the other buffer in *spare. */
-static int clip_to_map(stp_renderer *r, const stp_shadow_map *sm, int n, stp_vec3 **result,
-                       stp_vec3 **spare)
-{
-    stp_vec3 *in = r->clip_a, *out = r->clip_b, *tmp;
-    int plane, i, m;
-    for (plane = 0; plane < 5 && n > 0; plane++) {
-        m = 0;
-        for (i = 0; i < n; i++) {
-            stp_vec3 a = in[i], b = in[(i + 1) % n];
-            int64_t da = map_plane(sm, plane, a), db = map_plane(sm, plane, b);
-            if (da >= 0)
-                out[m++] = a;
-            if ((da >= 0) != (db >= 0)) {
-                int64_t t = stp_clip_fraction(da, db);
-                out[m].x = stp_lerp_fix(a.x, b.x, t);
-                out[m].y = stp_lerp_fix(a.y, b.y, t);
-                out[m].z = stp_lerp_fix(a.z, b.z, t);
-                m++;
-            }
-        }
-        n = m;
-        tmp = in;
-        in = out;
-        out = tmp;
-    }
-    *result = in;
-    *spare = out;
-    return n;
-}
 
 /* Map coordinates (Q27.4) and depth (12 fractional bits) of a clipped
  * light-frame point (z >= near > 0), as render.c's project(). */
@@ -397,7 +352,11 @@ void stp_shadow_enter(stp_renderer *r, const stp_vec3 *vertices, int n)
         for (i = 0; i < n; i++) {
             stp_vec3 pv;
             int64_t p[3], l[3];
-            stp_view_point(r, vertices[i], &pv);
+            /* the entered vertex through the model transform and the view,
+             * as the display file takes it */
+            stp_view_transform_point(
+                &r->to_view, r->model_on ? stp_transform_point(&r->model, vertices[i]) : vertices[i],
+                &pv);
             p[0] = pv.x;
             p[1] = pv.y;
             p[2] = pv.z;
@@ -406,7 +365,11 @@ void stp_shadow_enter(stp_renderer *r, const stp_vec3 *vertices, int n)
             r->clip_a[i].y = stp_fix_sat64(l[1]);
             r->clip_a[i].z = stp_fix_sat64(l[2]);
         }
-        m = clip_to_map(r, sm, n, &clipped, &spare);
+        {
+            stp_fix *no_values;
+            m = stp_clip_polygon(&sm->volume, r->clip_a, r->clip_b, 0, 0, n, &clipped, &spare,
+                                 &no_values);
+        }
         if (m < 3)
             continue;
         for (i = 0; i < m; i++)

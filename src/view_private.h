@@ -22,6 +22,19 @@ typedef struct stp_view_frame {
  * *out is written only on success. */
 int stp_view_frame_make(const stp_view *v, uint32_t width, uint32_t height, stp_view_frame *out);
 
+/* World to view coordinates: the view's axes and the eye's coordinate
+ * along each (from . axis, 2F fractional bits, below 2^49), so a point's
+ * view coordinates are p . axis - from . axis, exact in 64 bits. */
+typedef struct stp_view_transform {
+    stp_vec3 right, up, forward;
+    int64_t from_right, from_up, from_forward;
+} stp_view_transform;
+
+void stp_view_transform_make(const stp_view_frame *vf, stp_view_transform *out);
+
+/* p (world) in view coordinates, each floor((p - from) . axis), saturated. */
+void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out);
+
 /* a x b with F fractional bits, each component saturated. */
 stp_vec3 stp_vec3_cross(stp_vec3 a, stp_vec3 b);
 

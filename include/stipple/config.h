@@ -37,6 +37,16 @@
 #define STP_MAX_POLYGON_VERTICES 160
 #endif
 
+/* Entries of the renderer's vertex cache (0 or a power of two up to 4096).
+ * A mesh enters each shared vertex several times (a closed triangle mesh
+ * about six): the cache keeps the view coordinates, outcode and device
+ * position of recently entered points, keyed by their exact coordinates,
+ * so a repeated vertex is not transformed and projected again.  Each entry
+ * costs 44 bytes of the renderer object; 0 takes the cache out. */
+#ifndef STP_VERTEX_CACHE
+#define STP_VERTEX_CACHE 64
+#endif
+
 /* Number of point lights a segment can hold (seed: 1; (10.16): several). */
 #ifndef STP_MAX_LIGHTS
 #define STP_MAX_LIGHTS 4
@@ -118,6 +128,9 @@
 #endif
 #if STP_MAX_POLYGON_VERTICES < 3 || STP_MAX_POLYGON_VERTICES > 4096
 #error "STP_MAX_POLYGON_VERTICES must be within 3..4096"
+#endif
+#if STP_VERTEX_CACHE < 0 || STP_VERTEX_CACHE > 4096 || (STP_VERTEX_CACHE & (STP_VERTEX_CACHE - 1)) != 0
+#error "STP_VERTEX_CACHE must be 0 or a power of two up to 4096"
 #endif
 #if STP_MAX_LIGHTS < 1 || STP_MAX_SEGMENTS < 1
 #error "STP_MAX_LIGHTS and STP_MAX_SEGMENTS must be at least 1"

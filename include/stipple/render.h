@@ -31,6 +31,7 @@
 #include "stipple/fix.h"
 #include "stipple/port.h"
 #include "stipple/shade.h"
+#include "stipple/transform.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -145,7 +146,7 @@ size_t stp_renderer_size(void);
  *   static stp_renderer_storage storage;
  *   r = stp_renderer_create(&storage, sizeof storage, ...); */
 #define STP_RENDERER_BYTES                                                                      \
-    (1024u + 32u * STP_MAX_SEGMENTS + (48u + 112u * STP_WITH_SHADOWS) * STP_MAX_LIGHTS +          \
+    (1024u + 32u * STP_MAX_SEGMENTS + (48u + 112u * STP_WITH_SHADOWS) * STP_MAX_LIGHTS + 64u + 44u * STP_VERTEX_CACHE +          \
      96u * (STP_MAX_POLYGON_VERTICES + 5u))
 typedef union stp_renderer_storage {
     int64_t align_integer;
@@ -231,6 +232,17 @@ int stp_segment_close(stp_renderer *r);
 int stp_segment_delete(stp_renderer *r, int id);
 /* Make a segment visible (1) or invisible (0). */
 int stp_segment_visibility(stp_renderer *r, int id, int visible);
+
+/* The model transform (transform.h) of the points entered next in the open
+ * segment: every vertex, pen position and shadow caster given to stp_move,
+ * stp_line and the stp_polygon calls is taken through it (and smooth
+ * normals through its matrix) before the view, so a spinning model is
+ * re-entered each frame from the same vertex array with a new transform.
+ * Lights are not transformed (they belong to the view).  NULL sets the
+ * identity; stp_segment_create starts every segment with the identity.
+ * Cost: nine more multiplications per vertex while a transform other than
+ * the identity is set.  Errors: STP_ERR_ARG (r NULL), STP_ERR_NO_SEGMENT. */
+int stp_set_transform(stp_renderer *r, const stp_transform *t);
 
 /* --- drawing (DISPLAY-FILE-ENTER: transform, shade, project, clip, store) */
 

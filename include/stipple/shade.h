@@ -93,7 +93,11 @@ stp_fix stp_fresnel(stp_fix c, stp_fix n);
  *   s = min(1, BRIGHT * (B*R + sum_j P_j*(R*(N.L_j) + Ks*D*G*F/(N.E)) / (C + U_j)))
  * over the lights with N.L_j > 0 (none: s = min(1, BRIGHT*B*R)).  The
  * caller decides back faces (N.E <= 0) before calling: for them this returns
- * the ambient share only. */
+ * the ambient share only.
+ * Precision: directions and cosines are carried with 30 fractional bits and
+ * the terms are summed and multiplied by BRIGHT before the one rounding to
+ * stp_fix, so the error does not grow with BRIGHT (measured: 9.5e-5 worst at
+ * BRIGHT 1000..10000, tests/core/test_shade.c). */
 stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *material,
                         stp_vec3 normal, stp_vec3 point, stp_vec3 eye, int parallel,
                         stp_vec3 parallel_dir);
@@ -101,11 +105,12 @@ stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *materi
 #if STP_WITH_SHADOWS
 /* stp_shade_point with its parts kept apart, for shadows (render.h,
  * stp_set_shadow_map): *ambient = B*R and terms[j] (STP_MAX_LIGHTS entries)
- * = P_j*(R*(N.L_j) + Ks*D*G*F/(N.E))/(C + U_j), saturated to stp_fix, for
- * each light j that reaches the face, 0 for the others (N.L_j <= 0, j beyond
- * the count, every light of a back face).  Returns the same shade as
- * stp_shade_point, which is stp_shade_combine(BRIGHT, *ambient, terms,
- * STP_MAX_LIGHTS, all ones). */
+ * = P_j*(R*(N.L_j) + Ks*D*G*F/(N.E))/(C + U_j), rounded and saturated to
+ * stp_fix, for each light j that reaches the face, 0 for the others
+ * (N.L_j <= 0, j beyond the count, every light of a back face).  Returns the
+ * same shade as stp_shade_point; stp_shade_combine(BRIGHT, *ambient, terms,
+ * STP_MAX_LIGHTS, all ones) gives it up to the terms' rounding, BRIGHT
+ * (count + 1) 2^-(F+1). */
 stp_fix stp_shade_point_terms(const stp_lighting *lighting, const stp_material *material,
                               stp_vec3 normal, stp_vec3 point, stp_vec3 eye, int parallel,
                               stp_vec3 parallel_dir, stp_fix *ambient, stp_fix terms[STP_MAX_LIGHTS]);

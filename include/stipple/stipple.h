@@ -18,6 +18,7 @@
 #include "stipple/shade.h"
 #include "stipple/dither.h"
 #include "stipple/port.h"
+#include "stipple/transform.h"
 #include "stipple/render.h"
 #include "stipple/colour.h"
 #include "stipple/raytrace.h"

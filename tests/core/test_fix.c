@@ -13,10 +13,12 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <cmocka.h>
 
 #include "stipple/fix.h"
+#include "stipple/transform.h"
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -609,6 +611,110 @@ static void test_vec3_unity_tiny_and_huge(void **state)
     }
 }
 
+/* Model transforms (transform.h) against double: random rotations about
+ * the three axes, scales and moves, applied to random points; the error
+ * stays within |p| 2^-12 + 4 steps (the rotation entries carry sin/cos's
+ * 2^-14).  The identity leaves points exactly as they are. */
+static void test_transform_against_double(void **state)
+{
+    const double pi = 3.14159265358979323846, step = 1.0 / STP_FIX_ONE;
+    uint32_t seed = 99u;
+    double worst = 0;
+    int i, k;
+    (void)state;
+    for (i = 0; i < 2000; i++) {
+        stp_transform t;
+        double m[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, tr[3] = {0, 0, 0}, r[12];
+        stp_vec3 p, q;
+        double pd[3], qd[3], err, mag;
+        int a, b, c;
+        for (k = 0; k < 12; k++) {
+            seed = seed * 1664525u + 1013904223u;
+            r[k] = (double)(seed >> 8) / (double)(1u << 24);
+        }
+        stp_transform_identity(&t);
+        for (k = 0; k < 3; k++) {
+            /* rotate about axis k by an angle of 16 fractional bits */
+            stp_fix deg = (stp_fix)((r[k] * 720 - 360) * 65536) * (STP_FIX_ONE / 4096) / 16;
+            double th = (double)deg * step * pi / 180, cth = cos(th), sth = sin(th), n[3][3];
+            int u = (k + 1) % 3, v = (k + 2) % 3;
+            stp_transform_rotate(&t, k, deg);
+            for (a = 0; a < 3; a++) {
+                for (b = 0; b < 3; b++) {
+                    double rot_ab = a == b ? 1 : 0;
+                    if (a == u && b == u) rot_ab = cth;
+                    if (a == u && b == v) rot_ab = -sth;
+                    if (a == v && b == u) rot_ab = sth;
+                    if (a == v && b == v) rot_ab = cth;
+                    n[a][b] = rot_ab;
+                }
+            }
+            {
+                double mm[3][3], tt[3];
+                for (a = 0; a < 3; a++) {
+                    tt[a] = 0;
+                    for (b = 0; b < 3; b++) {
+                        mm[a][b] = 0;
+                        for (c = 0; c < 3; c++)
+                            mm[a][b] += n[a][c] * m[c][b];
+                        tt[a] += n[a][b] * tr[b];
+                    }
+                }
+                memcpy(m, mm, sizeof m);
+                memcpy(tr, tt, sizeof tr);
+            }
+        }
+        {
+            stp_fix s = (stp_fix)((0.5 + r[3] * 2) * STP_FIX_ONE);
+            stp_vec3 d;
+            stp_transform_scale(&t, s, s, s);
+            for (a = 0; a < 3; a++) {
+                for (b = 0; b < 3; b++)
+                    m[a][b] *= (double)s * step;
+                tr[a] *= (double)s * step;
+            }
+            d.x = (stp_fix)((r[4] * 20 - 10) * STP_FIX_ONE);
+            d.y = (stp_fix)((r[5] * 20 - 10) * STP_FIX_ONE);
+            d.z = (stp_fix)((r[6] * 20 - 10) * STP_FIX_ONE);
+            stp_transform_translate(&t, d);
+            tr[0] += d.x * step;
+            tr[1] += d.y * step;
+            tr[2] += d.z * step;
+        }
+        p.x = (stp_fix)((r[7] * 40 - 20) * STP_FIX_ONE);
+        p.y = (stp_fix)((r[8] * 40 - 20) * STP_FIX_ONE);
+        p.z = (stp_fix)((r[9] * 40 - 20) * STP_FIX_ONE);
+        pd[0] = p.x * step;
+        pd[1] = p.y * step;
+        pd[2] = p.z * step;
+        q = stp_transform_point(&t, p);
+        mag = sqrt(pd[0] * pd[0] + pd[1] * pd[1] + pd[2] * pd[2]) * (0.5 + r[3] * 2);
+        for (a = 0; a < 3; a++) {
+            qd[a] = tr[a];
+            for (b = 0; b < 3; b++)
+                qd[a] += m[a][b] * pd[b];
+        }
+        err = fabs(q.x * step - qd[0]);
+        if (fabs(q.y * step - qd[1]) > err)
+            err = fabs(q.y * step - qd[1]);
+        if (fabs(q.z * step - qd[2]) > err)
+            err = fabs(q.z * step - qd[2]);
+        assert_true(err <= mag / 4096 + 4 * step);
+        if (err > worst)
+            worst = err;
+    }
+    print_message("model transforms vs double, 2000 random: worst error %.2e units\n", worst);
+    {
+        stp_transform t;
+        stp_vec3 p = {123456, -98765, 4321}, q;
+        stp_transform_identity(&t);
+        q = stp_transform_point(&t, p);
+        assert_int_equal(q.x, p.x);
+        assert_int_equal(q.y, p.y);
+        assert_int_equal(q.z, p.z);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -631,6 +737,7 @@ int main(void)
         cmocka_unit_test(test_vec3_dot_rounds_and_saturates),
         cmocka_unit_test(test_vec3_unity_random),
         cmocka_unit_test(test_vec3_unity_tiny_and_huge),
+        cmocka_unit_test(test_transform_against_double),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -492,6 +492,73 @@ static void test_shade_no_lights_and_caps(void **state)
     }
 }
 
+
+/* Issue 13 item 11: at large BRIGHT (the seed's advice for distant lights)
+ * the shade keeps its precision.  Each light's term is tiny there (far
+ * lights, small powers) and BRIGHT multiplies it back to [0, 1]: a term
+ * rounded to 2^-16 before BRIGHT would carry an error of BRIGHT 2^-16 per
+ * light (0.15 at 10^4).  Random well-conditioned inputs (N.E >= 0.3), one
+ * to four lights 20..200 units away, powers chosen so the unclamped shade
+ * is about 0.1..0.9, at BRIGHT 1000, 3000 and 10000; the reference sees
+ * the same rounded inputs. */
+static void test_shade_large_brightness_against_reference(void **state)
+{
+    static const double brights[] = {1000, 3000, 10000};
+    double worst = 0;
+    int b, i, cases = 0;
+    uint32_t seed = 12345u;
+    (void)state;
+    for (b = 0; b < 3; b++) {
+        for (i = 0; i < 2000; i++) {
+            light_desc lights[4];
+            stp_lighting fl;
+            ref_lighting rl;
+            stp_material fm;
+            ref_material rm;
+            stp_vec3 n, point, eye = {0, 0, 0}, none = {0, 0, 0};
+            ref_vec3 rn;
+            double v[12], s1, target, ref, err;
+            int j, k, count;
+            for (k = 0; k < 12; k++) {
+                seed = seed * 1664525u + 1013904223u;
+                v[k] = (double)(seed >> 8) / (double)(1u << 24);
+            }
+            count = 1 + (int)(v[0] * 4) % 4;
+            point = fvec(v[1] * 4 - 2, v[2] * 4 - 2, 6 + v[3] * 4);
+            /* a normal facing the eye */
+            n = unit_fix(v[4] - 0.5, v[5] - 0.5, -1 - v[6]);
+            for (j = 0; j < count; j++) {
+                double dist = 20 + 180 * v[7 + j], ang = v[11] * 6.28 + j;
+                lights[j].x = dbl(point.x) + dist * 0.5 * cos(ang);
+                lights[j].y = dbl(point.y) + dist * 0.5 * sin(ang);
+                lights[j].z = dbl(point.z) - dist * 0.7;
+                lights[j].power = 1;
+            }
+            make_material(&fm, &rm, 0.3 + 0.6 * v[8], 10, 0.05 + v[9], 0.5);
+            /* the unclamped shade at BRIGHT 1 with unit powers */
+            make_lighting(&fl, &rl, 1, 0, 1, lights, count);
+            rn = rvec(n);
+            if (ref_dot(rn, ref_scale(rvec(point), -1)) < 0.3 * sqrt(ref_dot(rvec(point), rvec(point))))
+                continue;
+            s1 = ref_shade_point(&rl, &rm, rn, rvec(point), rvec(eye), 0, rvec(none));
+            if (s1 <= 0)
+                continue;
+            target = 0.1 + 0.8 * v[10];
+            for (j = 0; j < count; j++)
+                lights[j].power = target / (brights[b] * s1);
+            make_lighting(&fl, &rl, brights[b], 0, 1, lights, count);
+            ref = ref_shade_point(&rl, &rm, rn, rvec(point), rvec(eye), 0, rvec(none));
+            err = fabs(dbl(stp_shade_point(&fl, &fm, n, point, eye, 0, none)) - ref);
+            if (err > worst)
+                worst = err;
+            cases++;
+        }
+    }
+    print_message("shade at BRIGHT 1000..10000, %d cases: worst error %.2e\n", cases, worst);
+    assert_true(cases > 3000);
+    assert_true(worst < SHADE_TOL);
+}
+
 /* ---- INTENSITY ---- */
 
 static void check_index_boundaries(int levels)
@@ -675,6 +742,7 @@ int main(void)
         cmocka_unit_test(test_shade_light_at_point_is_head_on),
         cmocka_unit_test(test_shade_back_face_is_ambient_only),
         cmocka_unit_test(test_shade_no_lights_and_caps),
+        cmocka_unit_test(test_shade_large_brightness_against_reference),
         cmocka_unit_test(test_intensity_index_at_step_boundaries),
         cmocka_unit_test(test_intensity_index_random_shades),
         cmocka_unit_test(test_intensity_shade_is_inverse),

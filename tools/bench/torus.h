@@ -1,0 +1,81 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The torus workload of issue 11 (host): one frame of a real-time firmware
+ * user, re-entering every polygon of a lit model and producing a finished
+ * 1-bit frame.
+ *
+ * Scene: a torus of major radius 1 and minor radius 0.4 about the y axis,
+ * 25 x 20 quads split into 1000 triangles wound counter-clockwise seen from
+ * outside; eye at distance 6 along (0, 3, 5.2) looking at the centre, y up,
+ * 35 degrees across the shorter side; one point light at (-4, 6, 5); NFF
+ * material Kd 0.7, Ks 0.4, Shine 20, white.  The view, lights and material
+ * go through the stipple command's mapping (stp_tool_setup,
+ * stp_tool_material: background 0.2, C 1, the light's power cancelling its
+ * attenuation at the centre), so tools/bench/render_ref.c renders the same
+ * scene for the tests.
+ *
+ * Frame (torus_frame): delete and re-create the segment, set the model
+ * transform when the bench is posed (torus_bench_pose), stp_polygon for
+ * each of the 1000 triangles from the caller's stp_vec3 array (shading on:
+ * full seed shading D.G.F and attenuation; back-face removal on), then
+ * stp_render to MONO1 (MSB-first rows) with the Z buffer, 16 levels and the
+ * Bayer 4x4 cell in one band; the port's flush copies the band into
+ * frame[].
+ */
+#ifndef STIPPLE_TOOLS_BENCH_TORUS_H
+#define STIPPLE_TOOLS_BENCH_TORUS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "scene.h"
+#include "stipple/stipple.h"
+
+#define TORUS_AROUND 25
+#define TORUS_TUBE 20
+#define TORUS_TRIANGLES (2 * TORUS_AROUND * TORUS_TUBE)
+
+/* The torus as a host scene (three vertices per triangle, in order).
+ * Returns 0, or -1 out of memory; free with stp_scene_free. */
+int torus_scene_build(stp_scene *s);
+
+typedef struct torus_bench {
+    int width, height;
+    stp_scene scene;
+    stp_renderer *r;
+    void *renderer_mem;
+    stp_instr *df;
+    uint32_t capacity;
+    stp_vec3 *vertices; /* 3 per triangle, world units */
+    stp_material material;
+    stp_cell cell;
+    stp_output output;
+    stp_frame_memory memory;
+    stp_port port;
+    uint8_t *band;
+    uint16_t *zbuf;
+    uint8_t *frame;     /* the finished frame: height rows of stride bytes */
+    size_t stride;
+    stp_fix shade[TORUS_TRIANGLES]; /* stp_last_shade of each triangle's entry,
+                                       -1 when nothing was shaded (back face) */
+    int keep_shades;                /* 1: fill shade[] during torus_frame */
+    int posed;                      /* 1: enter through `pose` (stp_set_transform) */
+    stp_transform pose;
+} torus_bench;
+
+/* Pose the model for the next frames: tilt about x, then spin about y (the
+ * torus's axis), then move by (dx, dy, dz), through the core's model
+ * transform; the vertex array is not touched. */
+void torus_bench_pose(torus_bench *b, double tilt_degrees, double spin_degrees, double dx,
+                      double dy, double dz);
+
+/* Set up a width x height bench (the scene, renderer, memory).  Returns 0,
+ * or -1 with a message in err. */
+int torus_bench_init(torus_bench *b, int width, int height, char *err, size_t err_size);
+void torus_bench_free(torus_bench *b);
+
+/* One frame, as described above.  Returns 0, or -1 when the core refused
+ * something (a bug: the workload fits by construction). */
+int torus_frame(torus_bench *b);
+
+#endif
