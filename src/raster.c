@@ -8,6 +8,7 @@
 #define SUB STP_SUBPIXEL_BITS
 #define HALF_PIXEL (1 << (SUB - 1))
 
+#if STP_WITH_ZBUFFER
 /* num / den truncated toward zero (C's division), den != 0.  Without wide
  * arithmetic: when |den| < 2^16 and |num| < 2^48, as three 32-bit
  * divisions of 16-bit digits (long division); else the library's. */
@@ -38,6 +39,7 @@ static uint32_t div_count(uint32_t s, uint32_t n)
         return s >> 2;
     return s / n;
 }
+#endif
 
 size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
 {
@@ -62,6 +64,9 @@ typedef struct frame {
     uint16_t *zbuf;
     uint32_t y0, rows; /* current band */
     int32_t key_min, key_max; /* depth-key range of the visible polygons */
+    int second_pass;          /* the Z buffer's second pass draws something:
+                                 a transparent polygon or a line (lines are
+                                 drawn again over the opaque polygons) */
     stp_polygon_setup *setup; /* the caller's per-polygon depth setups, or NULL */
     uint32_t depth_scale;     /* depth_q12's reciprocal and its shift */
     int depth_shift;
@@ -376,7 +381,7 @@ typedef struct span_paint {
 } span_paint;
 
 static void span_paint_init(span_paint *sp, const frame *fr, uint32_t y, uint32_t x1, int style, int smooth,
-                            int64_t s0, int64_t sstep, stp_fix t)
+                            int64_t s0, int64_t sstep, stp_fix t, int direct)
 {
     sp->fr = fr;
     sp->y = y;
@@ -388,11 +393,7 @@ static void span_paint_init(span_paint *sp, const frame *fr, uint32_t y, uint32_
     sp->t = t;
     sp->row = 0;
     sp->pattern = 0;
-    if (fr->port->format == STP_PIXEL_MONO1 && style == fr->pattern_style && !smooth && t == 0
-#if STP_WITH_SHADOWS
-        && !(fr->shadow && fr->shadow->count > 0)
-#endif
-    ) {
+    if (direct) {
         sp->row = fr->band + (size_t)(y - fr->y0) * fr->stride;
         sp->pattern = fr->patterns[fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height];
     }
@@ -411,7 +412,7 @@ static void span_paint_run(const span_paint *sp, uint32_t a, uint32_t b)
  * halftone inner loop stays the same as without a Z buffer.  d: the depth
  * at x1's centre, ddx its change per pixel, both Q12. */
 static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int style,
-                       int64_t d, int64_t ddx, int smooth, int64_t s0, int64_t sstep, stp_fix t)
+                       int64_t d, int64_t ddx, int smooth, int64_t s0, int64_t sstep, stp_fix t, int direct)
 {
     uint16_t *z = fr->zbuf + (size_t)(y - fr->y0) * fr->r->width;
     uint32_t x, run = 0;
@@ -419,7 +420,7 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, in
     int64_t d_end = d + ddx * (int64_t)(x2 - x1);
     const int64_t lo = (int64_t)1 << 12, hi = (int64_t)65536 << 12;
     span_paint sp;
-    span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t);
+    span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t, direct);
     if (d >= lo && d < hi && d_end >= lo && d_end < hi) {
         /* both ends within 1..65535 (so every pixel between): no clamping,
          * and the depth and its step fit 32 bits (|step| <= |d_end - d|) */
@@ -592,6 +593,7 @@ static void draw_polygon(frame *fr, uint32_t at, int style, int use_z, stp_fix t
     const int smooth = 0;
 #endif
     int32_t ymin = INT32_MAX, ymax = INT32_MIN;
+    int direct;
     int32_t band_top = (int32_t)(fr->y0 << SUB), band_bottom = (int32_t)((fr->y0 + fr->rows) << SUB);
     uint32_t y, y_first, y_last;
 #if STP_WITH_ZBUFFER
@@ -619,6 +621,14 @@ static void draw_polygon(frame *fr, uint32_t at, int style, int use_z, stp_fix t
 #endif
     if (fr->port->format == STP_PIXEL_MONO1 && !(style & STP_COLOUR_FLAG))
         use_style(fr, style);
+    /* runs go straight to the band from the pattern bytes: flat, opaque,
+     * not shadowed, the style's patterns built */
+    direct = fr->port->format == STP_PIXEL_MONO1 && style == fr->pattern_style && !smooth && t == 0;
+#if STP_WITH_SHADOWS
+    if (fr->shadow && fr->shadow->count > 0)
+        direct = 0;
+#endif
+    (void)direct; /* read by the Z buffer's spans only */
     /* edges oriented top to bottom, horizontal ones dropped */
     for (i = 0; i < n; i++) {
         const stp_instr *a = &v[i], *b = &v[i + 1 == n ? 0 : i + 1];
@@ -669,7 +679,7 @@ static void draw_polygon(frame *fr, uint32_t at, int style, int use_z, stp_fix t
                 int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
                 int64_t d = d_row + (pl.ddx >= INT32_MIN && pl.ddx <= INT32_MAX ? stp_smul32((int32_t)pl.ddx, xq)
                                                                                 : pl.ddx * xq);
-                put_span_z(fr, y, p1, p2, style, d, pl.ddx * (1 << SUB), smooth, s0, sstep, t);
+                put_span_z(fr, y, p1, p2, style, d, pl.ddx * (1 << SUB), smooth, s0, sstep, t, direct);
                 continue;
             }
 #endif
@@ -801,6 +811,7 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
     int32_t x_lo = INT32_MAX, x_hi = INT32_MIN, y_lo = INT32_MAX, y_hi = INT32_MIN;
     fr->key_min = INT32_MAX;
     fr->key_max = INT32_MIN;
+    fr->second_pass = 0;
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
         int style = r->fill_style;
@@ -813,6 +824,8 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
                 style = paint_of(fr, in);
             if (in->op == STP_OP_TRANSPARENCY)
                 t = in->x;
+            if (in->op == STP_OP_LINE)
+                fr->second_pass = 1;
             if (in->op >= 3) {
                 int32_t far_key = INT32_MAX;
                 for (i = 0; i < in->op; i++) {
@@ -832,6 +845,8 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
                     if (in[i].y > y_hi)
                         y_hi = in[i].y;
                 }
+                if (t > 0)
+                    fr->second_pass = 1;
                 if (sort) {
                     sort[count].index = k;
                     sort[count].key = far_key;
@@ -993,7 +1008,8 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
             if (hidden == STP_HIDDEN_ZBUFFER) {
                 /* opaque first, then the transparent ones over them */
                 replay(&fr, 0, 1, 1);
-                replay(&fr, 0, 1, 2);
+                if (fr.second_pass)
+                    replay(&fr, 0, 1, 2);
             } else {
                 replay(&fr, 0, 0, 0);
             }
