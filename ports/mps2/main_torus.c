@@ -29,7 +29,10 @@ static stp_vec3 vertices[3 * TORUS_TRIANGLES];
 static uint8_t band[STRIDE * STP_FW_BAND_ROWS];
 static uint16_t zbuf[WIDTH * STP_FW_BAND_ROWS];
 static uint8_t picture[STRIDE * HEIGHT];
-#if STP_FW_BAND_ROWS < HEIGHT
+#ifndef STP_FW_KEEP_SETUP
+#define STP_FW_KEEP_SETUP (STP_FW_BAND_ROWS < HEIGHT)
+#endif
+#if STP_FW_KEEP_SETUP
 /* several bands: each polygon's depth setup made once per frame */
 static stp_polygon_setup setup[TORUS_TRIANGLES];
 #endif
@@ -99,7 +102,7 @@ int main(void)
     mem.zbuf_count = sizeof zbuf / sizeof zbuf[0];
     mem.sort = 0;
     mem.sort_count = 0;
-#if STP_FW_BAND_ROWS < HEIGHT
+#if STP_FW_KEEP_SETUP
     mem.setup = setup;
     mem.setup_count = TORUS_TRIANGLES;
 #else
@@ -124,6 +127,7 @@ int main(void)
     }
     report("instructions per tick", per_tick);
     report("band rows", STP_FW_BAND_ROWS);
+    report("setups kept across bands", STP_FW_KEEP_SETUP);
     report("instructions to enter the torus", (uint32_t)((t1 - t0) * per_tick));
     report("instructions to render it", (uint32_t)((t2 - t1) * per_tick));
     report("instructions per torus frame", (uint32_t)((t2 - t0) * per_tick));

@@ -3,7 +3,7 @@
  * rows of a W x 480 MONO1 buffer, W = 640 and 128, filled by
  * stp_halftone_fillin (Bayer 4x4, a new intensity every row, as a polygon
  * span would) and by memset of the same bytes.  The two are timed in turns
- * (CLOCK_MONOTONIC, ROUNDS rounds, the best batch of each), so machine load
+ * (CLOCK_MONOTONIC, 200 rounds by default, the best batch of each), so machine load
  * hits both alike; the table gives ns per row and the speed ratio
  * memset time / fill time (1: as fast as memset).
  *
@@ -60,7 +60,7 @@ static double memset_batch(uint32_t w, unsigned seed)
 int main(int argc, char **argv)
 {
     static const uint32_t widths[] = {640, 128};
-    int rounds = 40, i, r;
+    int rounds = 200, i, r;
     stp_cell cell;
     if (argc == 3 && strcmp(argv[1], "--rounds") == 0 && atoi(argv[2]) > 0) {
         rounds = atoi(argv[2]);

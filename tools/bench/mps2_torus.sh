@@ -9,7 +9,8 @@
 # usage: mps2_torus.sh SOURCE_DIR WORK_DIR TORUS_FRAME_HOST
 # Environment: STP_FW_CPU (cortex-m0plus: ARMv6-M code, which runs on the
 # board's Cortex-M3 model), STP_MPS2_OPT (-O2), STP_FW_BAND_ROWS (64: the
-# whole frame), STP_QEMU_TIMEOUT (seconds, 120), STP_BUILD_TIMEOUT (600).
+# whole frame), STP_FW_KEEP_SETUP (1/0: lend the per-polygon setup array;
+# default: with several bands), STP_QEMU_TIMEOUT (seconds, 120), STP_BUILD_TIMEOUT (600).
 # Exit status: 0 pass, 1 fail, 77 tools missing (skipped).
 set -eu
 if [ $# -ne 3 ]; then
@@ -26,12 +27,14 @@ host=$3
 cpu=${STP_FW_CPU:-cortex-m0plus}
 opt=${STP_MPS2_OPT:--O2}
 band_rows=${STP_FW_BAND_ROWS:-64}
-fw=$work/fw-$cpu$opt-$band_rows
+keep=${STP_FW_KEEP_SETUP:-}
+fw=$work/fw-$cpu$opt-$band_rows${keep:+-keep$keep}
 
 echo "== building the mps2-an385 torus firmware ($cpu, $opt, $band_rows-row bands) in $fw"
 timeout "${STP_BUILD_TIMEOUT:-600}" cmake -S "$src/ports/mps2" -B "$fw" \
     -DCMAKE_TOOLCHAIN_FILE="$src/cmake/toolchain-arm-none-eabi.cmake" -DSTP_CPU="$cpu" \
-    -DSTP_MPS2_OPT="$opt" -DSTP_FW_BAND_ROWS="$band_rows" >"$work/configure.log" 2>&1 ||
+    -DSTP_MPS2_OPT="$opt" -DSTP_FW_BAND_ROWS="$band_rows" -DSTP_FW_KEEP_SETUP="$keep" \
+    >"$work/configure.log" 2>&1 ||
     { cat "$work/configure.log" >&2; exit 1; }
 timeout "${STP_BUILD_TIMEOUT:-600}" cmake --build "$fw" >"$work/build.log" 2>&1 ||
     { cat "$work/build.log" >&2; exit 1; }
