@@ -400,20 +400,26 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
     out->z = (int32_t)floor_shift(z * inv + half, e);
     /* |v| scaled = s / sqrt(s): s >> 30 < 2^32 times inv < 2^31 */
     len = ((s >> 30) * (uint64_t)inv) >> (e - 0);
-    return up >= 0 ? (int64_t)(len >> up) : (int64_t)(len << -up);
+    /* to the input's units, rounded to nearest (len may sit 2^-29 below an
+     * exact integer length, which a floor would take a whole unit down) */
+    if (up > 0)
+        return (int64_t)((len + ((uint64_t)1 << (up - 1))) >> up);
+    return up == 0 ? (int64_t)len : (int64_t)(len << -up);
 }
 
 uint32_t stp_sqrt64_fast(uint64_t v)
 {
     int sh, e;
-    uint64_t m, r;
+    uint64_t m, r, inv;
     if (v == 0)
         return 0;
     sh = stp_bit_length64(v) - 31;
     if (sh & 1)
         sh--;
     m = sh >= 0 ? v >> sh : v << -sh;
-    /* sqrt(v) = v / sqrt(v) = m 2^sh rsqrt 2^-e: m < 2^32, rsqrt <= 2^30 */
-    r = (m * rsqrt64(v, &e)) >> (e - sh);
+    inv = rsqrt64(v, &e); /* sets e: a statement of its own */
+    /* sqrt(v) = v / sqrt(v) = m 2^sh inv 2^-e: m < 2^32, inv <= 2^30;
+     * e - sh = 45 - sh/2 > 0 */
+    r = (m * inv) >> (e - sh);
     return r > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)r;
 }

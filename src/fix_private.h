@@ -86,7 +86,7 @@ typedef struct stp_unit3 {
 
 /* The direction of (x, y, z) (any values with |component| < 2^62) as an
  * STP_UNIT vector in *out, and its length in the input's units (rounded
- * down; relative error below 2^-28).  No division: the squared length of
+ * to nearest; error below 2^-28 relative plus half a unit).  No division: the squared length of
  * the vector scaled to 30 bits is seeded from a 192-entry table of
  * 1/sqrt and refined by two Newton steps (relative error below 2^-29).
  * A zero vector returns 0 and leaves *out = 0. */
@@ -145,7 +145,11 @@ static inline int stp_bit_length64(uint64_t v)
  * saturates to 2^62. */
 static inline int64_t stp_mul_shift_sat(int64_t a, int64_t b, int s)
 {
-    int la = stp_bit_length64((uint64_t)a), lb = stp_bit_length64((uint64_t)b), cut;
+    int la, lb, cut;
+    if (((uint64_t)a >> 31) == 0 && ((uint64_t)b >> 32) == 0)
+        return (a * b) >> s; /* the common case: a b < 2^63 */
+    la = stp_bit_length64((uint64_t)a);
+    lb = stp_bit_length64((uint64_t)b);
     if (la + lb <= 63)
         return (a * b) >> s;
     cut = la + lb - 63;

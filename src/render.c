@@ -381,13 +381,13 @@ int stp_set_transform(stp_renderer *r, const stp_transform *t)
     return STP_OK;
 }
 
+#if STP_WITH_LINES
 /* Signed distance of view point p from clip plane `plane` (clip.c). */
 static int64_t plane_distance(const stp_renderer *r, int plane, stp_vec3 p)
 {
     return stp_clip_distance(&r->clip_volume, plane, p);
 }
 
-#if STP_WITH_LINES
 static stp_vec3 clip_point(stp_vec3 a, stp_vec3 b, int64_t da, int64_t db)
 {
     int64_t t = stp_clip_fraction(da, db);

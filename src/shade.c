@@ -150,8 +150,11 @@ static stp_fix shade_unit(const stp_lighting *lighting, const stp_material *mate
     stp_fix background = stp_fix_clamp(lighting->background, 0, ONE);
     stp_fix refl = material->reflectivity;
     int64_t c = lighting->attenuation_c > 0 ? lighting->attenuation_c : 1;
-    /* B R: both stp_fix, so the product has 2F fractional bits; |.| < 2^62 */
-    int64_t ambient = stp_asr64((int64_t)background * refl, 2 * F - STP_UNIT_BITS);
+    /* B R: both stp_fix, so the product has 2F fractional bits (24..40),
+     * brought to STP_UNIT's 30; |B R| <= |R| < 2^(31-F), so < 2^61 either way */
+    int64_t ambient = 2 * F >= STP_UNIT_BITS
+                          ? stp_asr64((int64_t)background * refl, 2 * F - STP_UNIT_BITS)
+                          : (int64_t)background * refl * ((int64_t)1 << (STP_UNIT_BITS - 2 * F));
     int64_t sum = 0; /* STP_UNIT; each term is capped at 2^45 */
     int j, count;
 

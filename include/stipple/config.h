@@ -23,7 +23,10 @@
 #define STP_FIX_FRAC_BITS 16
 #endif
 
-/* Square root used by normalisation and Fresnel's g:
+/* Square root of stp_fix_sqrt, stp_fix_sqrt_wide and stp_vec3_unity (the
+ * view's and shadow maps' set-up, smooth vertex normals, the ray tracer;
+ * polygon shading normalises through its own reciprocal square root,
+ * fix_private.h, whatever this says):
  * 0 (default) exact: bit-by-bit integer square root, floor of the true root.
  * 1 fast: 8-entry-table seed plus two Newton steps, relative error < 2^-15. */
 #ifndef STP_SQRT_FAST

@@ -19,6 +19,7 @@
 
 #include "stipple/fix.h"
 #include "stipple/transform.h"
+#include "fix_private.h" /* STP_UNIT (src/) */
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -715,6 +716,62 @@ static void test_transform_against_double(void **state)
     }
 }
 
+/* STP_UNIT normalisation (fix_private.h) against double: random vectors of
+ * every magnitude from 1 to 2^61, each component within 4 units of Q30
+ * (4e-9) of the exact direction and the length within 2^-27 relative plus
+ * half a unit (it is rounded to the input's units); the
+ * zero vector gives 0.  Also the scalar reciprocal root and fast root. */
+static void test_unit_from64_against_double(void **state)
+{
+    uint64_t seed = 0x1234567ull;
+    double worst_c = 0, worst_l = 0;
+    int i, k;
+    stp_unit3 u;
+    (void)state;
+    for (i = 0; i < 20000; i++) {
+        int64_t v[3];
+        double d[3], len, got;
+        int bits;
+        seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+        bits = 1 + (int)((seed >> 58) % 61);
+        for (k = 0; k < 3; k++) {
+            seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+            v[k] = (int64_t)(seed >> 3) >> (61 - bits);
+            d[k] = (double)v[k];
+        }
+        len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        got = (double)stp_unit_from64(v[0], v[1], v[2], &u);
+        if (len == 0) {
+            assert_true(got == 0);
+            continue;
+        }
+        /* rounded to nearest: half a unit on top of the relative error */
+        if ((fabs(got - len) - 0.5) / len > worst_l)
+            worst_l = (fabs(got - len) - 0.5) / len;
+        for (k = 0; k < 3; k++) {
+            double c = (k == 0 ? u.x : (k == 1 ? u.y : u.z)) / 1073741824.0, e = fabs(c - d[k] / len);
+            if (e > worst_c)
+                worst_c = e;
+        }
+    }
+    print_message("STP_UNIT normalisation, 20000 random vectors: worst component error %.2e, "
+                  "length %.2e relative\n", worst_c, worst_l);
+    assert_true(worst_c <= 4.0 / 1073741824.0);
+    assert_true(worst_l <= 1.0 / 134217728.0);
+    assert_true(stp_unit_from64(0, 0, 0, &u) == 0 && u.x == 0 && u.y == 0 && u.z == 0);
+    for (i = 0; i < 2000; i++) {
+        uint64_t x;
+        int e;
+        double r;
+        seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+        x = (seed >> (seed & 63)) | 1u;
+        r = (double)stp_rsqrt64(x, &e) * pow(2.0, -e);
+        assert_true(fabs(r * sqrt((double)x) - 1) < 1.0 / 268435456.0);
+        r = (double)stp_sqrt64_fast(x);
+        assert_true(fabs(r - sqrt((double)x)) <= sqrt((double)x) / 268435456.0 + 1);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -738,6 +795,7 @@ int main(void)
         cmocka_unit_test(test_vec3_unity_random),
         cmocka_unit_test(test_vec3_unity_tiny_and_huge),
         cmocka_unit_test(test_transform_against_double),
+        cmocka_unit_test(test_unit_from64_against_double),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
