@@ -648,7 +648,9 @@ static void draw_polygon(frame *fr, uint32_t at, int style, int use_z, stp_fix t
         y_last = fr->y0 + fr->rows - 1;
     stp_edges_start(r->edges, ne, (int32_t)(y_first << SUB) + HALF_PIXEL, smooth);
 #if STP_WITH_ZBUFFER
-    /* the depth at device x = 0 of the current row centre, stepped down */
+    /* the depth at device x = 0 of the current row centre, stepped down
+     * (Q12; |ddx|, |ddy| <= 2^40 and coordinates below 2^20, so every
+     * term and the sum stay below 2^62) */
     if (use_z)
         d_row = pl.dc - pl.ddx * pl.xc + pl.ddy * (((int64_t)y_first << SUB) + HALF_PIXEL - pl.yc);
 #endif
