@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Halftone cells and HALFTONE-FILLIN: see include/stipple/dither.h. */
 #include "stipple/dither.h"
+#include "output_private.h"
 
 #define F STP_FIX_FRAC_BITS
 
@@ -215,12 +216,48 @@ void stp_cell_pattern2x2(stp_cell *cell)
     cell->patterns[4] = 0xF;
 }
 
+uint8_t stp_halftone_pattern_byte(const stp_cell *cell, uint32_t y, uint8_t intensity)
+{
+    /* the cell's width divides 8: the row's w thresholds give the first w
+     * bits, which repeat across the byte */
+    uint32_t w = cell->width, b, s;
+    const uint8_t *cell_row = &stp_cell_table(cell)[(y % cell->height) * w];
+    uint32_t pattern = 0;
+    for (b = 0; b < w; b++)
+        if (intensity > cell_row[b])
+            pattern |= 0x80u >> b;
+    for (s = w; s < 8; s *= 2)
+        pattern |= pattern >> s;
+    return (uint8_t)pattern;
+}
+
+void stp_halftone_fill_bits(uint8_t *row, uint32_t x1, uint32_t x2, uint8_t pattern)
+{
+    uint32_t first = x1 >> 3, last = x2 >> 3, b;
+    uint8_t head = (uint8_t)(0xFFu >> (x1 & 7u)), tail = (uint8_t)(0xFFu << (7u - (x2 & 7u)));
+    if (first == last) {
+        uint8_t mask = (uint8_t)(head & tail);
+        row[first] = (uint8_t)((row[first] & ~mask) | (pattern & mask));
+        return;
+    }
+    row[first] = (uint8_t)((row[first] & ~head) | (pattern & head));
+    /* whole bytes: a plain store loop (compilers turn it into memset) */
+    for (b = first + 1; b < last; b++)
+        row[b] = pattern;
+    row[last] = (uint8_t)((row[last] & ~tail) | (pattern & tail));
+}
+
 void stp_halftone_fillin(uint8_t *row, uint32_t x1, uint32_t x2, uint32_t y,
                          const stp_cell *cell, uint8_t intensity)
 {
-    /* The cell row is resolved once per span; hx steps and wraps as in the
-     * seed's listing, so the inner loop is a compare and a bit write. */
-    uint32_t w = cell->width, hx = x1 % w, x;
+    uint32_t w = cell->width, hx, x;
+    const uint8_t *cell_row;
+    if (cell->kind != STP_CELL_PATTERN && 8u % w == 0) {
+        /* The cell's width divides 8, so every byte of the row sees the same
+         * cell columns at the same bits: one pattern byte fills the span. */
+        stp_halftone_fill_bits(row, x1, x2, stp_halftone_pattern_byte(cell, y, intensity));
+        return;
+    }
     if (cell->kind == STP_CELL_PATTERN) {
         for (x = x1; x <= x2; x++) {
             uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
@@ -231,39 +268,18 @@ void stp_halftone_fillin(uint8_t *row, uint32_t x1, uint32_t x2, uint32_t y,
         }
         return;
     }
-    if (8u % w == 0) {
-        /* The cell's width divides 8, so every byte of the row sees the same
-         * cell columns at the same bits: build that byte once and fill whole
-         * bytes, masking the span's partial first and last bytes. */
-        const uint8_t *cell_row = &stp_cell_table(cell)[(y % cell->height) * w];
-        uint32_t b, first = x1 >> 3, last = x2 >> 3;
-        uint8_t pattern = 0, head = (uint8_t)(0xFFu >> (x1 & 7u)),
-                tail = (uint8_t)(0xFFu << (7u - (x2 & 7u)));
-        for (b = 0; b < 8; b++)
-            if (intensity > cell_row[b % w])
-                pattern = (uint8_t)(pattern | (0x80u >> b));
-        if (first == last) {
-            uint8_t mask = (uint8_t)(head & tail);
-            row[first] = (uint8_t)((row[first] & ~mask) | (pattern & mask));
-            return;
-        }
-        row[first] = (uint8_t)((row[first] & ~head) | (pattern & head));
-        for (b = first + 1; b < last; b++)
-            row[b] = pattern;
-        row[last] = (uint8_t)((row[last] & ~tail) | (pattern & tail));
-        return;
-    }
-    {
-        const uint8_t *cell_row = &stp_cell_table(cell)[(y % cell->height) * w];
-        for (x = x1; x <= x2; x++) {
-            uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
-            if (intensity > cell_row[hx])
-                row[x >> 3] = (uint8_t)(row[x >> 3] | bit);
-            else
-                row[x >> 3] = (uint8_t)(row[x >> 3] & ~bit);
-            if (++hx == w)
-                hx = 0;
-        }
+    /* The cell row is resolved once per span; hx steps and wraps as in the
+     * seed's listing, so the inner loop is a compare and a bit write. */
+    hx = x1 % w;
+    cell_row = &stp_cell_table(cell)[(y % cell->height) * w];
+    for (x = x1; x <= x2; x++) {
+        uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
+        if (intensity > cell_row[hx])
+            row[x >> 3] = (uint8_t)(row[x >> 3] | bit);
+        else
+            row[x >> 3] = (uint8_t)(row[x >> 3] & ~bit);
+        if (++hx == w)
+            hx = 0;
     }
 }
 

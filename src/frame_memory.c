@@ -91,6 +91,8 @@ int stp_frame_memory_split(stp_frame_memory *memory, const stp_renderer *r, cons
     memory->zbuf_count = 0;
     memory->sort = 0;
     memory->sort_count = 0;
+    memory->setup = 0;
+    memory->setup_count = 0;
     /* the sort entries want 32-bit alignment, the Z buffer 16 */
     while (!stp_is_aligned(p, SORT_ALIGN) && size > 0) {
         p++;

@@ -3,9 +3,43 @@
  * output.  See the fill rule in include/stipple/render.h. */
 #include "render_private.h"
 #include "output_private.h"
+#include "raster_private.h"
 
 #define SUB STP_SUBPIXEL_BITS
 #define HALF_PIXEL (1 << (SUB - 1))
+
+#if STP_WITH_ZBUFFER
+/* num / den truncated toward zero (C's division), den != 0.  Without wide
+ * arithmetic: when |den| < 2^16 and |num| < 2^48, as three 32-bit
+ * divisions of 16-bit digits (long division); else the library's. */
+static int64_t div_trunc(int64_t num, int64_t den)
+{
+#if !STP_WIDE_ARITH
+    uint64_t un = num < 0 ? 0u - (uint64_t)num : (uint64_t)num, ud = den < 0 ? 0u - (uint64_t)den : (uint64_t)den;
+    if (ud < 65536u && un < ((uint64_t)1 << 48)) {
+        uint32_t d = (uint32_t)ud, hi = (uint32_t)(un >> 32), q1, q2, q3, part;
+        q1 = hi / d;
+        part = ((hi - q1 * d) << 16) | (uint32_t)((un >> 16) & 0xFFFFu);
+        q2 = part / d;
+        part = ((part - q2 * d) << 16) | (uint32_t)(un & 0xFFFFu);
+        q3 = part / d;
+        un = ((uint64_t)q1 << 32) + ((uint64_t)q2 << 16) + q3;
+        return (num < 0) != (den < 0) ? -(int64_t)un : (int64_t)un;
+    }
+#endif
+    return num / den;
+}
+
+/* floor(s / n) for n >= 1: n = 3 and 4 without a division */
+static uint32_t div_count(uint32_t s, uint32_t n)
+{
+    if (n == 3)
+        return (uint32_t)(stp_umul32(s, 0xAAAAAAABu) >> 33);
+    if (n == 4)
+        return s >> 2;
+    return s / n;
+}
+#endif
 
 size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
 {
@@ -19,6 +53,10 @@ size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
 }
 
 /* Everything one frame's interpretation needs, built once per stp_render. */
+/* A style as the interpreter carries it: an index (0..levels) or, with
+ * STP_COLOUR_FLAG, a colour; 32 bits wide because the flag is bit 24. */
+typedef int32_t paint;
+
 typedef struct frame {
     stp_renderer *r;
     const stp_port *port;
@@ -30,15 +68,28 @@ typedef struct frame {
     uint16_t *zbuf;
     uint32_t y0, rows; /* current band */
     int32_t key_min, key_max; /* depth-key range of the visible polygons */
+    int second_pass;          /* the Z buffer's second pass draws something:
+                                 a transparent polygon or a line (lines are
+                                 drawn again over the opaque polygons) */
+    stp_polygon_setup *setup; /* the caller's per-polygon depth setups, or NULL */
+    uint32_t depth_scale;     /* depth_q12's reciprocal and its shift */
+    int depth_shift;
+    /* pixels any visible polygon can cover (x_min > x_max: none) */
+    uint32_t x_min, x_max, y_min, y_max;
+    /* MONO1 spans from pattern bytes: a threshold cell whose width divides
+     * 8 (mono_fill); cell_mask its height - 1 when a power of two, else 0;
+     * patterns[] the byte of each cell row for style pattern_style (-1:
+     * none yet) */
+    int mono_fill;
+    uint32_t cell_mask;
+    paint pattern_style;
+    uint8_t patterns[STP_CELL_MAX];
 #if STP_WITH_SHADOWS
     stp_shadow_poly *shadow; /* the polygon being drawn's shadow records;
                                 NULL when no light has a map */
 #endif
 } frame;
 
-/* A style as the interpreter carries it: an index (0..levels) or, with
- * STP_COLOUR_FLAG, a colour; 32 bits wide because the flag is bit 24. */
-typedef int32_t paint;
 
 /* 8-bit drive value of a style index (gamma table or linear); index is a
  * plain style here (0..levels), so it fits an int. */
@@ -52,6 +103,21 @@ static uint8_t level_of(const frame *fr, paint index)
 static uint8_t style_code(const frame *fr, paint index)
 {
     return stp_output_style_code(fr->out, fr->r->levels, (int)index);
+}
+
+/* Make style the one put_span fills MONO1 spans of from pattern bytes:
+ * one byte per cell row, built once for a run of polygons of that style
+ * rather than per span. */
+static void use_style(frame *fr, paint style)
+{
+    uint32_t cy;
+    uint8_t level;
+    if (!fr->mono_fill || style == fr->pattern_style)
+        return;
+    level = level_of(fr, style);
+    for (cy = 0; cy < fr->cell->height; cy++)
+        fr->patterns[cy] = stp_halftone_pattern_byte(fr->cell, cy, level);
+    fr->pattern_style = style;
 }
 
 /* What a STP_OP_SHADE paints with: its colour on an RGB888 device when it
@@ -70,7 +136,12 @@ static void put_span(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pain
     uint32_t x;
     switch (fr->port->format) {
     case STP_PIXEL_MONO1:
-        stp_halftone_fillin(row, x1, x2, y, fr->cell, level_of(fr, style));
+        if (style == fr->pattern_style) {
+            uint32_t cy = fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height;
+            stp_halftone_fill_bits(row, x1, x2, fr->patterns[cy]);
+        } else {
+            stp_halftone_fillin(row, x1, x2, y, fr->cell, level_of(fr, style));
+        }
         break;
     case STP_PIXEL_GREY8: {
         uint8_t v = level_of(fr, style);
@@ -296,45 +367,230 @@ static void paint_run(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pai
 }
 
 #if STP_WITH_ZBUFFER
-/* Depth-tested span: runs of pixels that pass are painted with put_span, so
- * the halftone inner loop stays the same as without a Z buffer. */
+/* One pixel's depth from the span's Q12 depth: floor, clamped to 1..65535. */
+static uint16_t depth_of(int64_t d)
+{
+    int64_t dv = stp_asr64(d, 12);
+    return (uint16_t)(dv < 1 ? 1 : (dv > 65535 ? 65535 : dv));
+}
+
+/* What a depth-tested span paints its runs with: the MONO1 pattern byte
+ * of its row straight into the band (flat, opaque, not shadowed, style in
+ * the pattern cache) or paint_run. */
+typedef struct span_paint {
+    const frame *fr;
+    uint32_t y, x1;
+    paint style;
+    int smooth;
+    int64_t s0, sstep;
+    stp_fix t;
+    uint8_t *row; /* NULL: through paint_run */
+    uint8_t pattern;
+} span_paint;
+
+static void span_paint_init(span_paint *sp, const frame *fr, uint32_t y, uint32_t x1, paint style, int smooth,
+                            int64_t s0, int64_t sstep, stp_fix t, int direct)
+{
+    sp->fr = fr;
+    sp->y = y;
+    sp->x1 = x1;
+    sp->style = style;
+    sp->smooth = smooth;
+    sp->s0 = s0;
+    sp->sstep = sstep;
+    sp->t = t;
+    sp->row = 0;
+    sp->pattern = 0;
+    if (direct) {
+        sp->row = fr->band + (size_t)(y - fr->y0) * fr->stride;
+        sp->pattern = fr->patterns[fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height];
+    }
+}
+
+static void span_paint_run(const span_paint *sp, uint32_t a, uint32_t b)
+{
+    if (sp->row)
+        stp_halftone_fill_bits(sp->row, a, b, sp->pattern);
+    else
+        paint_run(sp->fr, sp->y, a, b, sp->style, sp->smooth,
+                  sp->smooth ? sp->s0 + (int64_t)(a - sp->x1) * sp->sstep : 0, sp->sstep, sp->t);
+}
+
+/* Depth-tested span: runs of pixels that pass are painted whole, so the
+ * halftone inner loop stays the same as without a Z buffer.  d: the depth
+ * at x1's centre, ddx its change per pixel, both Q12. */
 static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, paint style,
-                       int64_t d, int64_t ddx, int smooth, int64_t s0, int64_t sstep, stp_fix t)
+                       int64_t d, int64_t ddx, int smooth, int64_t s0, int64_t sstep, stp_fix t, int direct)
 {
     uint16_t *z = fr->zbuf + (size_t)(y - fr->y0) * fr->r->width;
     uint32_t x, run = 0;
     int in_run = 0;
-    for (x = x1; x <= x2; x++, d += ddx) {
-        int64_t dv = stp_asr64(d, 12);
-        uint16_t depth = (uint16_t)(dv < 1 ? 1 : (dv > 65535 ? 65535 : dv));
-        if (depth > z[x]) {
-            if (t == 0)
-                z[x] = depth; /* transparent polygons do not hide what follows */
-            if (!in_run) {
+    int64_t d_end = d + ddx * (int64_t)(x2 - x1);
+    const int64_t lo = (int64_t)1 << 12, hi = (int64_t)65536 << 12;
+    span_paint sp;
+    span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t, direct);
+    if (d >= lo && d < hi && d_end >= lo && d_end < hi) {
+        /* both ends within 1..65535 (so every pixel between): no clamping,
+         * and the depth and its step fit 32 bits (|step| <= |d_end - d|) */
+        int32_t di = (int32_t)d, dstep = x2 > x1 ? (int32_t)ddx : 0;
+        if (t == 0) {
+            /* opaque: alternately skip the hidden pixels and take a run of
+             * the visible ones, writing their depth */
+            x = x1;
+            for (;;) {
+                while (x <= x2 && (uint16_t)((uint32_t)di >> 12) <= z[x]) {
+                    x++;
+                    di += dstep;
+                }
+                if (x > x2)
+                    break;
                 run = x;
-                in_run = 1;
+                do {
+                    z[x] = (uint16_t)((uint32_t)di >> 12);
+                    x++;
+                    di += dstep;
+                } while (x <= x2 && (uint16_t)((uint32_t)di >> 12) > z[x]);
+                span_paint_run(&sp, run, x - 1);
             }
-        } else if (in_run) {
-            paint_run(fr, y, run, x - 1, style, smooth, s0 + (int64_t)(run - x1) * sstep, sstep, t);
-            in_run = 0;
+            return;
+        }
+        for (x = x1; x <= x2; x++, di += dstep) {
+            uint16_t depth = (uint16_t)((uint32_t)di >> 12);
+            if (depth > z[x]) {
+                if (!in_run) { /* transparent polygons do not write depth */
+                    run = x;
+                    in_run = 1;
+                }
+            } else if (in_run) {
+                span_paint_run(&sp, run, x - 1);
+                in_run = 0;
+            }
+        }
+    } else {
+        for (x = x1; x <= x2; x++, d += ddx) {
+            uint16_t depth = depth_of(d);
+            if (depth > z[x]) {
+                if (t == 0)
+                    z[x] = depth;
+                if (!in_run) {
+                    run = x;
+                    in_run = 1;
+                }
+            } else if (in_run) {
+                span_paint_run(&sp, run, x - 1);
+                in_run = 0;
+            }
         }
     }
     if (in_run)
-        paint_run(fr, y, run, x2, style, smooth, s0 + (int64_t)(run - x1) * sstep, sstep, t);
+        span_paint_run(&sp, run, x2);
 }
 
-/* Depth key mapped to the Z buffer's 1..65535 with 12 fractional bits. */
+/* Depth key mapped to the Z buffer's 1..65535 with 12 fractional bits:
+ * 2^12 + floor(u 65534 2^12 / range), u = key - key_min <= range < 2^32.
+ * Without wide arithmetic the quotient comes from the frame's reciprocal:
+ * depth_scale = floor(65534 2^12 2^s / range) < 2^29 with 2^s >= range
+ * (s = depth_shift), so u depth_scale / 2^s is less than one short of the
+ * quotient and one correction makes it exact. */
 static int64_t depth_q12(const frame *fr, int32_t key)
 {
-    int64_t range = (int64_t)fr->key_max - fr->key_min;
-    if (range <= 0)
+    const uint32_t k = (uint32_t)65534 << 12;
+    uint32_t range = (uint32_t)((int64_t)fr->key_max - fr->key_min), u;
+    uint64_t num, q;
+    if (fr->key_max <= fr->key_min)
         return (int64_t)65535 << 12;
-    return ((int64_t)1 << 12) + (((int64_t)key - fr->key_min) * ((int64_t)65534 << 12)) / range;
+    u = (uint32_t)((int64_t)key - fr->key_min); /* 0..range */
+    num = stp_umul32(u, k);
+#if STP_WIDE_ARITH
+    q = num / range;
+#else
+    q = stp_umul32(u, fr->depth_scale) >> fr->depth_shift;
+    if (stp_umul32((uint32_t)q + 1u, range) <= num)
+        q++;
+#endif
+    return ((int64_t)1 << 12) + (int64_t)q;
+}
+
+/* The polygon's depth plane, by Newell's sums on (x, y, depth) over its
+ * projected vertices: exact for planar polygons, a best fit otherwise.
+ * Gradients per subpixel unit with 12 fractional bits (clamped to +-2^40:
+ * a polygon seen edge-on), through the vertex average (xc, yc, dc).
+ * Returns 0 when the polygon is edge-on (no area on screen). */
+typedef struct depth_plane {
+    int64_t ddx, ddy, dc;
+    int32_t xc, yc;
+} depth_plane;
+
+static int depth_setup(const frame *fr, const stp_instr *v, int n, depth_plane *pl)
+{
+    pl->ddx = pl->ddy = pl->dc = 0;
+    pl->xc = pl->yc = 0;
+    int64_t a = 0, b = 0, c = 0, sd = 0, d_last = depth_q12(fr, v[n - 1].z), d_prev = d_last;
+    uint32_t sx = 0, sy = 0; /* n <= 4101 coordinates in [0, 2^19]: < 2^32 */
+    int i;
+    for (i = 0; i < n; i++) {
+        const stp_instr *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
+        int64_t d_q = i == n - 1 ? d_last : depth_q12(fr, q->z), dp = d_prev >> 12, dq = d_q >> 12;
+        /* coordinates in [0, 2^19], depths in [1, 65535]: 32-bit factors */
+        a += stp_smul32(p->y - q->y, (int32_t)(dp + dq));
+        b += stp_smul32((int32_t)(dp - dq), p->x + q->x);
+        c += stp_smul32(p->x - q->x, p->y + q->y);
+        sx += (uint32_t)q->x;
+        sy += (uint32_t)q->y;
+        sd += d_q;
+        d_prev = d_q;
+    }
+    if (c == 0)
+        return 0;
+    pl->ddx = div_trunc(-a * 4096, c);
+    pl->ddy = div_trunc(-b * 4096, c);
+    if (pl->ddx > ((int64_t)1 << 40)) pl->ddx = (int64_t)1 << 40;
+    if (pl->ddx < -((int64_t)1 << 40)) pl->ddx = -((int64_t)1 << 40);
+    if (pl->ddy > ((int64_t)1 << 40)) pl->ddy = (int64_t)1 << 40;
+    if (pl->ddy < -((int64_t)1 << 40)) pl->ddy = -((int64_t)1 << 40);
+    pl->xc = (int32_t)div_count(sx, (uint32_t)n);
+    pl->yc = (int32_t)div_count(sy, (uint32_t)n);
+    /* depths below 2^28: 32-bit division while the sum fits */
+    pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : sd / n;
+    return 1;
+}
+
+/* The depth plane of the polygon at `ordinal` (display order) for this
+ * band: made in the polygon's first band (the one holding its top: ymin >=
+ * the band's top) and kept in the caller's setup array when there is one,
+ * taken from there in the bands after.  Returns 0 for an edge-on polygon
+ * (kept as centre x = -1: device coordinates are >= 0). */
+static int depth_plane_for(const frame *fr, const stp_instr *v, int n, uint32_t ordinal, int32_t ymin,
+                           depth_plane *pl)
+{
+    stp_polygon_setup *kept = fr->setup && ordinal != UINT32_MAX ? &fr->setup[ordinal] : 0;
+    int ok;
+    if (kept && ymin < (int32_t)(fr->y0 << SUB)) {
+        if (kept->centre[0] < 0)
+            return 0;
+        pl->ddx = kept->plane[0];
+        pl->ddy = kept->plane[1];
+        pl->dc = kept->plane[2];
+        pl->xc = kept->centre[0];
+        pl->yc = kept->centre[1];
+        return 1;
+    }
+    ok = depth_setup(fr, v, n, pl);
+    if (kept) {
+        kept->plane[0] = pl->ddx;
+        kept->plane[1] = pl->ddy;
+        kept->plane[2] = pl->dc;
+        kept->centre[0] = ok ? pl->xc : -1;
+        kept->centre[1] = pl->yc;
+    }
+    return ok;
 }
 #endif
 
-/* Scan-convert the polygon whose header is df[at] into the current band. */
-static void draw_polygon(const frame *fr, uint32_t at, paint style, int use_z, stp_fix t)
+/* Scan-convert the polygon whose header is df[at] into the current band;
+ * ordinal: its place among the visible polygons in display order
+ * (UINT32_MAX: no kept setup). */
+static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix t, uint32_t ordinal)
 {
     stp_renderer *r = fr->r;
     const stp_instr *v = &r->df[at];
@@ -345,10 +601,12 @@ static void draw_polygon(const frame *fr, uint32_t at, paint style, int use_z, s
     const int smooth = 0;
 #endif
     int32_t ymin = INT32_MAX, ymax = INT32_MIN;
+    int direct;
     int32_t band_top = (int32_t)(fr->y0 << SUB), band_bottom = (int32_t)((fr->y0 + fr->rows) << SUB);
     uint32_t y, y_first, y_last;
 #if STP_WITH_ZBUFFER
-    int64_t plane_c = 0, ddx = 0, ddy = 0, xc = 0, yc = 0, dc = 0;
+    depth_plane pl = {0, 0, 0, 0, 0};
+    int64_t d_row = 0;
 #endif
     for (i = 0; i < n; i++) {
         if (v[i].y < ymin)
@@ -358,125 +616,88 @@ static void draw_polygon(const frame *fr, uint32_t at, paint style, int use_z, s
     }
     if (ymax <= band_top || ymin >= band_bottom)
         return;
+#if STP_WITH_ZBUFFER
+    if (use_z && !depth_plane_for(fr, v, n, ordinal, ymin, &pl))
+        return; /* edge-on: no area on screen */
+#else
+    (void)use_z;
+    (void)ordinal;
+#endif
 #if STP_WITH_SHADOWS
     if (fr->shadow)
         stp_shadow_polygon(r, at, fr->shadow);
 #endif
+    if (fr->port->format == STP_PIXEL_MONO1 && !(style & STP_COLOUR_FLAG))
+        use_style(fr, style);
+    /* runs go straight to the band from the pattern bytes: flat, opaque,
+     * not shadowed, the style's patterns built */
+    direct = fr->port->format == STP_PIXEL_MONO1 && style == fr->pattern_style && !smooth && t == 0;
+#if STP_WITH_SHADOWS
+    if (fr->shadow && fr->shadow->count > 0)
+        direct = 0;
+#endif
+    (void)direct; /* read by the Z buffer's spans only */
     /* edges oriented top to bottom, horizontal ones dropped */
     for (i = 0; i < n; i++) {
-        const stp_instr *a = &v[i], *b = &v[(i + 1) % n];
-        stp_edge *e = &r->edges[ne];
-        if (a->y == b->y)
+        const stp_instr *a = &v[i], *b = &v[i + 1 == n ? 0 : i + 1];
+        int dir = stp_edge_setup(&r->edges[ne], a->x, a->y, b->x, b->y);
+        if (dir == 0)
             continue;
-        if (a->y > b->y) {
-            const stp_instr *swap = a;
-            a = b;
-            b = swap;
-        }
-        e->xa = a->x;
-        e->ya = a->y;
-        e->yb = b->y;
-        e->slope = (((int64_t)b->x - a->x) * 65536) / ((int64_t)b->y - a->y);
 #if STP_WITH_GOURAUD
-        if (smooth) {
-            e->sa = a->shade;
-            e->shade_slope = (((int64_t)b->shade - a->shade) * 65536) / ((int64_t)b->y - a->y);
-        }
+        if (smooth)
+            stp_edge_shades(&r->edges[ne], dir > 0 ? a->shade : b->shade, dir > 0 ? b->shade : a->shade);
 #endif
         ne++;
     }
-#if STP_WITH_ZBUFFER
-    if (use_z) {
-        /* depth plane through the projected vertices, by Newell's sums on
-         * (x, y, depth): exact for planar polygons, a best fit otherwise */
-        int64_t a = 0, b = 0, c = 0, sx = 0, sy = 0, sd = 0;
-        for (i = 0; i < n; i++) {
-            const stp_instr *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
-            int64_t dp = depth_q12(fr, p->z) >> 12, dq = depth_q12(fr, q->z) >> 12;
-            a += ((int64_t)p->y - q->y) * (dp + dq);
-            b += (dp - dq) * ((int64_t)p->x + q->x);
-            c += ((int64_t)p->x - q->x) * ((int64_t)p->y + q->y);
-            sx += q->x;
-            sy += q->y;
-            sd += depth_q12(fr, q->z);
-        }
-        plane_c = c;
-        if (c != 0) {
-            /* gradients per subpixel unit with 12 fractional bits */
-            ddx = (-a * 4096) / c;
-            ddy = (-b * 4096) / c;
-            if (ddx > ((int64_t)1 << 40)) ddx = (int64_t)1 << 40;
-            if (ddx < -((int64_t)1 << 40)) ddx = -((int64_t)1 << 40);
-            if (ddy > ((int64_t)1 << 40)) ddy = (int64_t)1 << 40;
-            if (ddy < -((int64_t)1 << 40)) ddy = -((int64_t)1 << 40);
-        }
-        xc = sx / n;
-        yc = sy / n;
-        dc = sd / n;
-    }
-#else
-    (void)use_z;
-#endif
     /* rows whose centres lie in [ymin, ymax) and in the band */
     y_first = (uint32_t)((ymin < band_top ? band_top : ymin) >> SUB);
     y_last = (uint32_t)((ymax > band_bottom ? band_bottom : ymax) >> SUB);
     if (y_last >= fr->y0 + fr->rows)
         y_last = fr->y0 + fr->rows - 1;
+    stp_edges_start(r->edges, ne, (int32_t)(y_first << SUB) + HALF_PIXEL, smooth);
+#if STP_WITH_ZBUFFER
+    /* the depth at device x = 0 of the current row centre, stepped down
+     * (Q12; |ddx|, |ddy| <= 2^40 and coordinates below 2^20, so every
+     * term and the sum stay below 2^62) */
+    if (use_z)
+        d_row = pl.dc - pl.ddx * pl.xc + pl.ddy * (((int64_t)y_first << SUB) + HALF_PIXEL - pl.yc);
+#endif
     for (y = y_first; y <= y_last; y++) {
         int32_t yc_row = (int32_t)(y << SUB) + HALF_PIXEL;
-        int nc = 0, k;
-        for (i = 0; i < ne; i++) {
-            const stp_edge *e = &r->edges[i];
-            if (e->ya <= yc_row && yc_row < e->yb) {
-                stp_crossing c;
-                c.x = (int32_t)(e->xa + stp_floordiv64((int64_t)(yc_row - e->ya) * e->slope, 65536));
-#if STP_WITH_GOURAUD
-                if (smooth)
-                    c.shade = (int32_t)(e->sa + stp_floordiv64((int64_t)(yc_row - e->ya) * e->shade_slope, 65536));
-#endif
-                /* insertion sort: crossings are few */
-                for (k = nc; k > 0 && r->crossings[k - 1].x > c.x; k--)
-                    r->crossings[k] = r->crossings[k - 1];
-                r->crossings[k] = c;
-                nc++;
-            }
-        }
+        int nc = stp_edges_row(r->edges, ne, yc_row, smooth, r->crossings), k;
         for (k = 0; k + 1 < nc; k += 2) {
             /* pixels whose centre c satisfies x_left <= c < x_right */
-            int64_t xl = r->crossings[k].x, xr = r->crossings[k + 1].x;
+            int32_t xl = r->crossings[k].x, xr = r->crossings[k + 1].x;
             int64_t s0 = 0, sstep = 0;
-            int64_t p1 = stp_floordiv64(xl - HALF_PIXEL + (1 << SUB) - 1, 1 << SUB);
-            int64_t p2 = stp_floordiv64(xr - HALF_PIXEL + (1 << SUB) - 1, 1 << SUB) - 1;
-            if (p1 < 0)
-                p1 = 0;
-            if (p2 > (int64_t)r->width - 1)
-                p2 = (int64_t)r->width - 1;
-            if (p1 > p2)
+            uint32_t p1, p2;
+            if (!stp_span_pixels(xl, xr, r->width, &p1, &p2))
                 continue;
 #if STP_WITH_GOURAUD
             if (smooth) {
                 /* shade along the span from its two crossings, at pixel
                  * centres, with 16 extra fractional bits */
                 int64_t sl = r->crossings[k].shade, sr = r->crossings[k + 1].shade;
-                int64_t width = xr - xl;
+                int64_t width = (int64_t)xr - xl;
                 sstep = width > 0 ? ((sr - sl) * 65536 * (1 << SUB)) / width : 0;
-                s0 = sl * 65536 + (width > 0 ? ((sr - sl) * 65536 * ((p1 << SUB) + HALF_PIXEL - xl)) / width : 0);
+                s0 = sl * 65536 +
+                     (width > 0 ? ((sr - sl) * 65536 * (((int64_t)p1 << SUB) + HALF_PIXEL - xl)) / width : 0);
             }
 #endif
 #if STP_WITH_ZBUFFER
             if (use_z) {
-                int64_t d;
-                if (plane_c == 0)
-                    continue; /* edge-on: no area on screen */
-                d = dc + ddx * (((int64_t)p1 << SUB) + HALF_PIXEL - xc) +
-                    ddy * ((int64_t)yc_row - yc);
-                put_span_z(fr, y, (uint32_t)p1, (uint32_t)p2, style, d, ddx * (1 << SUB), smooth, s0,
-                           sstep, t);
+                /* dc + ddx (x - xc) + ddy (y - yc) at p1's centre */
+                int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
+                int64_t d = d_row + (pl.ddx >= INT32_MIN && pl.ddx <= INT32_MAX ? stp_smul32((int32_t)pl.ddx, xq)
+                                                                                : pl.ddx * xq);
+                put_span_z(fr, y, p1, p2, style, d, pl.ddx * (1 << SUB), smooth, s0, sstep, t, direct);
                 continue;
             }
 #endif
-            paint_run(fr, y, (uint32_t)p1, (uint32_t)p2, style, smooth, s0, sstep, t);
+            paint_run(fr, y, p1, p2, style, smooth, s0, sstep, t);
         }
+#if STP_WITH_ZBUFFER
+        d_row += pl.ddy * (1 << SUB);
+#endif
     }
 }
 
@@ -512,9 +733,10 @@ static void draw_line(const frame *fr, const stp_instr *a, const stp_instr *b, p
 /* Walk the visible segments in display order: polygons (unless skip_polygons)
  * and lines, each with the style in force. */
 /* pass: which polygons to draw: 0 all, 1 opaque only, 2 transparent only. */
-static void replay(const frame *fr, int skip_polygons, int use_z, int pass)
+static void replay(frame *fr, int skip_polygons, int use_z, int pass)
 {
     stp_renderer *r = fr->r;
+    uint32_t ordinal = 0;
     int s;
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
@@ -528,7 +750,8 @@ static void replay(const frame *fr, int skip_polygons, int use_z, int pass)
             const stp_instr *in = &r->df[k];
             if (in->op >= 3) {
                 if (!skip_polygons && (pass == 0 || (pass == 1) == (t == 0)))
-                    draw_polygon(fr, k, style, use_z, t);
+                    draw_polygon(fr, k, style, use_z, t, ordinal);
+                ordinal++;
                 k += (uint32_t)in->op - 1;
             } else if (in->op == STP_OP_TRANSPARENCY) {
                 t = in->x;
@@ -595,8 +818,10 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
     stp_renderer *r = fr->r;
     uint32_t count = 0, k;
     int s, i;
+    int32_t x_lo = INT32_MAX, x_hi = INT32_MIN, y_lo = INT32_MAX, y_hi = INT32_MIN;
     fr->key_min = INT32_MAX;
     fr->key_max = INT32_MIN;
+    fr->second_pass = 0;
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
         paint style = r->fill_style;
@@ -609,6 +834,8 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
                 style = paint_of(fr, in);
             if (in->op == STP_OP_TRANSPARENCY)
                 t = in->x;
+            if (in->op == STP_OP_LINE)
+                fr->second_pass = 1;
             if (in->op >= 3) {
                 int32_t far_key = INT32_MAX;
                 for (i = 0; i < in->op; i++) {
@@ -619,7 +846,17 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
                         fr->key_min = z;
                     if (z > fr->key_max)
                         fr->key_max = z;
+                    if (in[i].x < x_lo)
+                        x_lo = in[i].x;
+                    if (in[i].x > x_hi)
+                        x_hi = in[i].x;
+                    if (in[i].y < y_lo)
+                        y_lo = in[i].y;
+                    if (in[i].y > y_hi)
+                        y_hi = in[i].y;
                 }
+                if (t > 0)
+                    fr->second_pass = 1;
                 if (sort) {
                     sort[count].index = k;
                     sort[count].key = far_key;
@@ -630,6 +867,20 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
                 k += (uint32_t)in->op - 1;
             }
         }
+    }
+    /* a pixel a polygon covers has its centre within the polygon's
+     * vertices' extent (coordinates are >= 0: project() clamps them) */
+    fr->x_min = fr->y_min = 1;
+    fr->x_max = fr->y_max = 0;
+    if (count > 0) {
+        fr->x_min = (uint32_t)x_lo >> SUB;
+        fr->x_max = (uint32_t)x_hi >> SUB;
+        fr->y_min = (uint32_t)y_lo >> SUB;
+        fr->y_max = (uint32_t)y_hi >> SUB;
+        if (fr->x_max > r->width - 1)
+            fr->x_max = r->width - 1;
+        if (fr->y_max > r->height - 1)
+            fr->y_max = r->height - 1;
     }
     return count;
 }
@@ -718,6 +969,28 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
         background_style = 0;
 
     polygons = scan_polygons(&fr, hidden == STP_HIDDEN_PAINTER ? mem->sort : 0);
+    fr.setup = 0;
+#if STP_WITH_ZBUFFER
+    if (hidden == STP_HIDDEN_ZBUFFER && mem->setup) {
+        if (mem->setup_count < polygons)
+            return STP_ERR_MEMORY;
+        fr.setup = mem->setup;
+    }
+#endif
+    fr.depth_scale = 0;
+    fr.depth_shift = 0;
+    if (fr.key_max > fr.key_min) {
+        uint64_t range = (uint64_t)((int64_t)fr.key_max - fr.key_min);
+        while (((uint64_t)1 << fr.depth_shift) < range)
+            fr.depth_shift++;
+        fr.depth_scale = (uint32_t)((((uint64_t)65534 << 12) << fr.depth_shift) / range);
+    }
+    fr.mono_fill = port->format == STP_PIXEL_MONO1 && fr.cell->kind == STP_CELL_THRESHOLD &&
+                   fr.cell->width > 0 && 8u % fr.cell->width == 0 && fr.cell->height > 0 &&
+                   fr.cell->height <= STP_CELL_MAX; /* patterns[] holds a row each */
+    fr.cell_mask = (fr.cell->height & (fr.cell->height - 1u)) == 0 ? fr.cell->height - 1u : 0;
+    fr.pattern_style = -1;
+    use_style(&fr, background_style);
     (void)polygons; /* read only by the painter's sort */
 #if STP_WITH_PAINTER
     if (hidden == STP_HIDDEN_PAINTER)
@@ -736,17 +1009,24 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
             put_span(&fr, y, 0, r->width - 1, background_style);
         }
 #if STP_WITH_ZBUFFER
-        if (hidden == STP_HIDDEN_ZBUFFER) {
-            size_t i, n = (size_t)r->width * (size_t)fr.rows;
-            for (i = 0; i < n; i++)
-                fr.zbuf[i] = 0; /* farther than any polygon (they map to >= 1) */
+        if (hidden == STP_HIDDEN_ZBUFFER && fr.x_min <= fr.x_max) {
+            /* farther than any polygon (they map to >= 1), where one can
+             * reach: a Z test reads no other entry */
+            uint32_t y_end = y0 + fr.rows - 1 < fr.y_max ? y0 + fr.rows - 1 : fr.y_max;
+            size_t i, count = (size_t)(fr.x_max - fr.x_min) + 1u;
+            for (y = y0 > fr.y_min ? y0 : fr.y_min; y <= y_end; y++) {
+                uint16_t *z = fr.zbuf + (size_t)(y - y0) * r->width + fr.x_min;
+                for (i = 0; i < count; i++) /* a counted loop: compilers make it memset */
+                    z[i] = 0;
+            }
         }
 #endif
 #if STP_WITH_PAINTER
         if (hidden == STP_HIDDEN_PAINTER) {
             uint32_t i;
             for (i = 0; i < polygons; i++)
-                draw_polygon(&fr, mem->sort[i].index, mem->sort[i].style, 0, mem->sort[i].transmission);
+                draw_polygon(&fr, mem->sort[i].index, mem->sort[i].style, 0, mem->sort[i].transmission,
+                             UINT32_MAX);
             replay(&fr, 1, 0, 0); /* lines on top, in display order */
         } else
 #endif
@@ -754,7 +1034,8 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
             if (hidden == STP_HIDDEN_ZBUFFER) {
                 /* opaque first, then the transparent ones over them */
                 replay(&fr, 0, 1, 1);
-                replay(&fr, 0, 1, 2);
+                if (fr.second_pass)
+                    replay(&fr, 0, 1, 2);
             } else {
                 replay(&fr, 0, 0, 0);
             }

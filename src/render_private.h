@@ -16,17 +16,22 @@ typedef struct stp_segment {
     uint8_t used, open, visible;
 } stp_segment;
 
-/* One edge of a polygon being scan-converted, oriented top to bottom.
- * Coordinates Q27.4; slope in Q4 x units per Q4 y unit, Q16.  Smooth
- * polygons: sa the shade at the top, shade_slope its change per Q4 y unit
- * with 16 more fractional bits. */
+/* One edge of a polygon being scan-converted, oriented top to bottom
+ * (stp_edge_setup).  Coordinates Q27.4: the edge covers row centres
+ * ya <= yc < yb, starting at x = xa.  step: its change of x per row (16 Q4
+ * y units) in Q4 x units with 16 fractional bits, 16 times the slope
+ * trunc(2^16 (xb - xa) / (yb - ya)) (|step| < 2^40); acc: x at the row
+ * centre being scanned with 16 fractional bits, xa 2^16 + (yc - ya) slope
+ * (below 2^52 in magnitude: |yc - ya| < 2^20 and |slope| < 2^36), so
+ * floor(acc / 2^16) is the crossing.  Smooth polygons: the shade sa at
+ * the top, shade_step and shade_acc likewise with 16 more fractional bits. */
 typedef struct stp_edge {
-    int32_t xa, ya, yb;
-    int64_t slope;
+    int64_t step, acc; /* the 64-bit fields first: no padding */
 #if STP_WITH_GOURAUD
+    int64_t shade_step, shade_acc;
     int32_t sa;
-    int64_t shade_slope;
 #endif
+    int32_t xa, ya, yb;
 } stp_edge;
 
 /* A crossing of a row by an edge: x (Q27.4) and, for smooth polygons, the
@@ -37,6 +42,7 @@ typedef struct stp_crossing {
     int32_t shade;
 #endif
 } stp_crossing;
+
 
 #if STP_WITH_SHADOWS
 /* A light's shadow map (render.h, stp_set_shadow_map).  The light's frame:

@@ -17,6 +17,7 @@
  *     +-2^40 (a polygon seen edge-on), so a key at a pixel stays below 2^62.
  * Every quotient that could overflow goes through shl_div, which saturates. */
 #include "render_private.h"
+#include "raster_private.h"
 #include "view_private.h"
 
 #define F STP_FIX_FRAC_BITS
@@ -304,51 +305,28 @@ static int32_t fill_map(stp_renderer *r, const stp_shadow_map *sm, const stp_vec
     if (bias > 65535)
         bias = 65535;
 
+    /* the polygon raster's edge setup and row crossings (raster.c) */
     for (i = 0; i < n; i++) {
-        const stp_vec3 *pa = &v[i], *pb = &v[(i + 1) % n];
-        stp_edge *e = &r->edges[ne];
-        if (pa->y == pb->y)
-            continue;
-        if (pa->y > pb->y) {
-            const stp_vec3 *swap = pa;
-            pa = pb;
-            pb = swap;
-        }
-        e->xa = pa->x;
-        e->ya = pa->y;
-        e->yb = pb->y;
-        e->slope = (((int64_t)pb->x - pa->x) * 65536) / ((int64_t)pb->y - pa->y);
-        ne++;
+        const stp_vec3 *pa = &v[i], *pb = &v[i + 1 == n ? 0 : i + 1];
+        if (stp_edge_setup(&r->edges[ne], pa->x, pa->y, pb->x, pb->y) != 0)
+            ne++;
     }
     /* texel rows whose centres lie in [ymin, ymax) */
     y_last = (uint32_t)(ymax >> SUB);
     if (y_last >= sm->height)
         y_last = sm->height - 1;
-    for (y = (uint32_t)(ymin >> SUB); y <= y_last; y++) {
+    y = (uint32_t)(ymin >> SUB);
+    stp_edges_start(r->edges, ne, (int32_t)(y << SUB) + HALF_PIXEL, 0);
+    for (; y <= y_last; y++) {
         int32_t yc_row = (int32_t)(y << SUB) + HALF_PIXEL;
         uint16_t *row = sm->depth + (size_t)y * sm->width;
-        int nc = 0, k;
-        for (i = 0; i < ne; i++) {
-            const stp_edge *e = &r->edges[i];
-            if (e->ya <= yc_row && yc_row < e->yb) {
-                int32_t x = (int32_t)(e->xa + stp_floordiv64((int64_t)(yc_row - e->ya) * e->slope, 65536));
-                for (k = nc; k > 0 && r->crossings[k - 1].x > x; k--)
-                    r->crossings[k] = r->crossings[k - 1];
-                r->crossings[k].x = x;
-                nc++;
-            }
-        }
+        int nc = stp_edges_row(r->edges, ne, yc_row, 0, r->crossings), k;
         for (k = 0; k + 1 < nc; k += 2) {
-            int64_t xl = r->crossings[k].x, xr = r->crossings[k + 1].x, p, d;
-            int64_t p1 = stp_floordiv64(xl - HALF_PIXEL + (1 << SUB) - 1, 1 << SUB);
-            int64_t p2 = stp_floordiv64(xr - HALF_PIXEL + (1 << SUB) - 1, 1 << SUB) - 1;
-            if (p1 < 0)
-                p1 = 0;
-            if (p2 > (int64_t)sm->width - 1)
-                p2 = (int64_t)sm->width - 1;
-            if (p1 > p2)
+            uint32_t p1, p2, p;
+            int64_t d;
+            if (!stp_span_pixels(r->crossings[k].x, r->crossings[k + 1].x, sm->width, &p1, &p2))
                 continue;
-            d = dc + ddx * ((p1 << SUB) + HALF_PIXEL - xc) + ddy * ((int64_t)yc_row - yc);
+            d = dc + ddx * (((int64_t)p1 << SUB) + HALF_PIXEL - xc) + ddy * ((int64_t)yc_row - yc);
             for (p = p1; p <= p2; p++, d += ddx * (1 << SUB)) {
                 int64_t q = clamp64(stp_asr64(d, 12), 1, 65535);
                 if (q > row[p])

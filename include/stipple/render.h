@@ -435,13 +435,24 @@ typedef struct stp_output {
  *   band, band_size     pixel rows: band_rows * stp_row_bytes(format, width)
  *   band_rows           rows per band, 1..height
  *   zbuf, zbuf_count    STP_HIDDEN_ZBUFFER: width * band_rows entries
- *   sort, sort_count    STP_HIDDEN_PAINTER: stp_polygon_count() entries */
+ *   sort, sort_count    STP_HIDDEN_PAINTER: stp_polygon_count() entries
+ *   setup, setup_count  optional (NULL, 0: none), STP_HIDDEN_ZBUFFER:
+ *                       stp_polygon_count() entries; each polygon's depth
+ *                       setup is then made once per frame, in the first
+ *                       band it reaches, and later bands take it from
+ *                       there rather than redoing it (the same pixels) */
 typedef struct stp_sort_entry {
     uint32_t index;  /* display-file entry of the polygon */
     int32_t key;     /* depth key of its farthest vertex */
     int32_t style;   /* its fill style (or colour, for RGB888 output) */
     int32_t transmission; /* its t (0: opaque) */
 } stp_sort_entry;
+/* One polygon's depth setup kept across the bands of a frame (contents
+ * private to the raster). */
+typedef struct stp_polygon_setup {
+    int64_t plane[3];
+    int32_t centre[2];
+} stp_polygon_setup;
 typedef struct stp_frame_memory {
     uint8_t *band;
     size_t band_size;
@@ -450,6 +461,8 @@ typedef struct stp_frame_memory {
     size_t zbuf_count;
     stp_sort_entry *sort;
     size_t sort_count;
+    stp_polygon_setup *setup;
+    size_t setup_count;
 } stp_frame_memory;
 
 /* The default output: the Z buffer (without STP_WITH_ZBUFFER the painter's
@@ -480,7 +493,8 @@ int stp_frame_memory_split(stp_frame_memory *memory, const stp_renderer *r, cons
  * (the display file is re-read for each band; the result is the same pixel
  * for pixel whatever the band height).  The port's size must be the
  * renderer's.  output NULL: stp_output_default's.  Errors: STP_ERR_ARG,
- * STP_ERR_MEMORY (a buffer too small),
+ * STP_ERR_MEMORY (a buffer too small, a setup array given with fewer than
+ * stp_polygon_count() entries),
  * STP_ERR_UNSUPPORTED (a hidden-surface method compiled out), STP_ERR_PORT. */
 int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
                const stp_frame_memory *memory);

@@ -76,7 +76,7 @@ static void test_first_picture_in_five_calls(void **state)
     static grab quick, full;
     static uint8_t band[W * H];
     static uint16_t zbuf[W * H];
-    stp_frame_memory memory, whole = {band, sizeof band, H, zbuf, W * H, NULL, 0};
+    stp_frame_memory memory, whole = {band, sizeof band, H, zbuf, W * H, NULL, 0, NULL, 0};
     stp_output output;
     stp_renderer *r;
     (void)state;

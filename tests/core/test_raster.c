@@ -146,6 +146,7 @@ typedef struct render_opts {
     stp_pixel_format format;
     stp_hidden hidden;
     uint32_t band_rows; /* 0: the whole height */
+    int keep_setup;     /* lend the per-polygon setup array */
     const stp_cell *cell;
     const uint8_t *gamma;
     const stp_style_table *styles;
@@ -199,6 +200,12 @@ static uint8_t *render(const fixture *f, const render_opts *o, int *status)
     memset(mem.band, 0xA5, mem.band_size);
     memset(mem.zbuf, 0xA5, mem.zbuf_count * sizeof *mem.zbuf);
     memset(mem.sort, 0xA5, (polygons ? polygons : 1) * sizeof *mem.sort);
+    if (o->keep_setup) {
+        mem.setup_count = polygons;
+        mem.setup = malloc((polygons ? polygons : 1) * sizeof *mem.setup);
+        assert_non_null(mem.setup);
+        memset(mem.setup, 0xA5, (polygons ? polygons : 1) * sizeof *mem.setup);
+    }
     *status = stp_render(f->r, &c.port, &out, &mem);
     if (*status == STP_OK) {
         assert_false(c.out_of_order);
@@ -208,6 +215,7 @@ static uint8_t *render(const fixture *f, const render_opts *o, int *status)
     free(mem.band);
     free(mem.zbuf);
     free(mem.sort);
+    free(mem.setup);
     return c.frame;
 }
 
@@ -820,6 +828,15 @@ static void test_bands_give_the_same_frame(void **state)
                     fail_msg("format %d, hidden %d: band_rows %u differs from the full frame", formats[fm],
                              methods[m], bands[b]);
                 free(banded);
+                /* the depth setups kept from a polygon's first band */
+                o.keep_setup = 1;
+                banded = render(&f, &o, &status);
+                o.keep_setup = 0;
+                assert_int_equal(status, STP_OK);
+                if (!same_pixels(&f, formats[fm], full, banded))
+                    fail_msg("format %d, hidden %d: band_rows %u with kept setups differs from the full frame",
+                             formats[fm], methods[m], bands[b]);
+                free(banded);
             }
             /* the scene drew something beyond the background */
             {
@@ -831,6 +848,46 @@ static void test_bands_give_the_same_frame(void **state)
             }
             free(full);
         }
+    fixture_close(&f);
+}
+
+/* A setup array shorter than the polygon count is refused, not overrun. */
+static void test_short_setup_array_is_refused(void **state)
+{
+    fixture f;
+    capture c;
+    stp_output out;
+    stp_frame_memory mem;
+    stp_polygon_setup one;
+    uint8_t band[37 * 29];
+    uint16_t zbuf[37 * 29];
+    (void)state;
+    fixture_open(&f, 37, 29, 256);
+    enter_band_scene(&f);
+    assert_true(stp_polygon_count(f.r) > 1);
+    memset(&c, 0, sizeof c);
+    c.port.width = f.w;
+    c.port.height = f.h;
+    c.port.format = STP_PIXEL_GREY8;
+    c.port.flush = flush_copy;
+    c.port.user = &c;
+    c.stride = f.w;
+    c.fail_on_flush = -1;
+    c.frame = calloc(f.h, c.stride);
+    assert_non_null(c.frame);
+    memset(&out, 0, sizeof out);
+    out.hidden = STP_HIDDEN_ZBUFFER;
+    memset(&mem, 0, sizeof mem);
+    mem.band = band;
+    mem.band_rows = f.h;
+    mem.band_size = sizeof band;
+    mem.zbuf = zbuf;
+    mem.zbuf_count = sizeof zbuf / sizeof zbuf[0];
+    mem.setup = &one;
+    mem.setup_count = 1;
+    assert_int_equal(stp_render(f.r, &c.port, &out, &mem), STP_ERR_MEMORY);
+    assert_int_equal(c.flushes, 0);
+    free(c.frame);
     fixture_close(&f);
 }
 
@@ -1304,6 +1361,7 @@ int main(void)
         cmocka_unit_test(test_backface_removal_keeps_faces_towards_viewer),
         cmocka_unit_test(test_backface_removal_single_polygon),
         cmocka_unit_test(test_bands_give_the_same_frame),
+        cmocka_unit_test(test_short_setup_array_is_refused),
         cmocka_unit_test(test_mono1_row_padding_is_zero),
         cmocka_unit_test(test_display_file_full_leaves_it_unchanged),
         cmocka_unit_test(test_segment_table_full),

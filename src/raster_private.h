@@ -1,0 +1,174 @@
+/* SPDX-License-Identifier: MIT */
+/* Private: the edge setup and row crossings the polygon raster (raster.c)
+ * and the shadow maps (shadow.c) share, inline so neither pays a call per
+ * edge and row; and the 32 x 32 -> 64-bit products they use.  The formats
+ * are stp_edge's (render_private.h). */
+#ifndef STIPPLE_RASTER_PRIVATE_H
+#define STIPPLE_RASTER_PRIVATE_H
+
+#include "render_private.h"
+
+#define STP_HALF_PIXEL (1 << (STP_SUBPIXEL_BITS - 1))
+
+/* Where 64-bit multiplication and division are single instructions
+ * (64-bit hosts) the raster uses them; elsewhere (Cortex-M: a 64-bit
+ * division is a ~470-instruction libgcc call on ARMv6-M, a 64-bit product
+ * a ~50-instruction one) it takes 32 x 32 -> 64-bit products from 16-bit
+ * halves and divides through 32-bit quotients, with the same results. */
+#if defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
+#define STP_WIDE_ARITH 1
+#else
+#define STP_WIDE_ARITH 0
+#endif
+
+/* a b, exactly, for 32-bit a and b */
+static inline uint64_t stp_umul32(uint32_t a, uint32_t b)
+{
+#if STP_WIDE_ARITH
+    return (uint64_t)a * b;
+#else
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
+    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    return ((uint64_t)(hh + (lh >> 16) + (hl >> 16) + (mid >> 16)) << 32) | ((mid << 16) | (ll & 0xFFFFu));
+#endif
+}
+
+static inline int64_t stp_smul32(int32_t a, int32_t b)
+{
+#if STP_WIDE_ARITH
+    return (int64_t)a * b;
+#else
+    uint64_t p = stp_umul32(a < 0 ? 0u - (uint32_t)a : (uint32_t)a, b < 0 ? 0u - (uint32_t)b : (uint32_t)b);
+    return (a < 0) != (b < 0) ? -(int64_t)p : (int64_t)p;
+#endif
+}
+
+
+/* floor(v / 16) for -2^27 <= v < 2^31 - 2^27 (Q4 coordinates and their
+ * half-pixel offsets): a shift of the offset value, no division */
+static inline int32_t stp_floor16(int32_t v)
+{
+    return (int32_t)(((uint32_t)v + 0x8000000u) >> 4) - 0x800000;
+}
+
+
+/* trunc(2^16 num / den) for den > 0 and |num| < 2^21: a 32-bit division
+ * while 2^16 num fits 32 bits (ARMv6-M: a short library call instead of a
+ * ~470-instruction 64-bit one). */
+static inline int64_t stp_slope_q16(int32_t num, int32_t den)
+{
+    if (num > -32768 && num < 32768)
+        return (int32_t)(num * 65536) / den;
+    return ((int64_t)num * 65536) / den;
+}
+
+/* The edge setup the polygon raster and the shadow maps share.
+ * stp_edge_setup: edge (xa, ya) - (xb, yb) (Q27.4, |coordinates| < 2^20)
+ * oriented top to bottom into *e; returns 0 for a horizontal edge (no row
+ * centre crosses it), 1 when a was the top, -1 when b was.
+ * stp_edge_shades: a smooth polygon's shades (stp_fix in [0, 1]) at the
+ * edge's top and bottom.
+ * stp_edges_start: puts the edges on row centre yc (Q4).
+ * stp_edges_row: the crossings of the current row centre yc, sorted by x,
+ * into out (returns how many), then steps every edge one row down.
+ * stp_span_pixels: the pixels [*p1, *p2] of 0..width-1 whose centres c
+ * satisfy xl <= c < xr; returns 0 when there is none. */
+static inline int stp_edge_setup(stp_edge *e, int32_t xa, int32_t ya, int32_t xb, int32_t yb)
+{
+    int dir = 1;
+    if (ya == yb)
+        return 0;
+    if (ya > yb) {
+        int32_t t = xa;
+        xa = xb;
+        xb = t;
+        t = ya;
+        ya = yb;
+        yb = t;
+        dir = -1;
+    }
+    /* no row centre 16 r + 8 in [ya, yb): the edge never crosses a row */
+    if (stp_floor16(ya + STP_HALF_PIXEL - 1) == stp_floor16(yb + STP_HALF_PIXEL - 1))
+        return 0;
+    e->xa = xa;
+    e->ya = ya;
+    e->yb = yb;
+    e->step = stp_slope_q16(xb - xa, yb - ya) * 16;
+    e->acc = 0;
+#if STP_WITH_GOURAUD
+    e->sa = 0;
+    e->shade_step = e->shade_acc = 0;
+#endif
+    return dir;
+}
+
+#if STP_WITH_GOURAUD
+static inline void stp_edge_shades(stp_edge *e, int32_t s_top, int32_t s_bottom)
+{
+    e->sa = s_top;
+    e->shade_step = stp_slope_q16(s_bottom - s_top, e->yb - e->ya) * 16;
+}
+#endif
+
+static inline void stp_edges_start(stp_edge *edges, int n, int32_t yc, int smooth)
+{
+    int i;
+    (void)smooth;
+    for (i = 0; i < n; i++) {
+        stp_edge *e = &edges[i];
+        /* step is 16 slopes exactly */
+        int64_t slope = stp_asr64(e->step, 4);
+        e->acc = (int64_t)e->xa * 65536 +
+                 (slope >= INT32_MIN && slope <= INT32_MAX ? stp_smul32(yc - e->ya, (int32_t)slope)
+                                                            : (int64_t)(yc - e->ya) * slope);
+#if STP_WITH_GOURAUD
+        if (smooth)
+            e->shade_acc = (int64_t)e->sa * 65536 + (int64_t)(yc - e->ya) * stp_asr64(e->shade_step, 4);
+#endif
+    }
+}
+
+static inline int stp_edges_row(stp_edge *edges, int n, int32_t yc, int smooth, stp_crossing *out)
+{
+    int nc = 0, i, k;
+    (void)smooth;
+    for (i = 0; i < n; i++) {
+        stp_edge *e = &edges[i];
+        if (e->ya <= yc && yc < e->yb) {
+            stp_crossing c;
+            c.x = (int32_t)stp_asr64(e->acc, 16);
+#if STP_WITH_GOURAUD
+            c.shade = smooth ? (int32_t)stp_asr64(e->shade_acc, 16) : 0;
+#endif
+            /* insertion sort: crossings are few */
+            for (k = nc; k > 0 && out[k - 1].x > c.x; k--)
+                out[k] = out[k - 1];
+            out[k] = c;
+            nc++;
+        }
+        e->acc += e->step;
+#if STP_WITH_GOURAUD
+        if (smooth)
+            e->shade_acc += e->shade_step;
+#endif
+    }
+    return nc;
+}
+
+static inline int stp_span_pixels(int32_t xl, int32_t xr, uint32_t width, uint32_t *p1, uint32_t *p2)
+{
+    /* pixel p's centre 16 p + 8: xl <= 16 p + 8 < xr */
+    int32_t a = stp_floor16(xl - STP_HALF_PIXEL + (1 << STP_SUBPIXEL_BITS) - 1), b = stp_floor16(xr - STP_HALF_PIXEL + (1 << STP_SUBPIXEL_BITS) - 1) - 1;
+    if (a < 0)
+        a = 0;
+    if (b > (int32_t)width - 1)
+        b = (int32_t)width - 1;
+    if (a > b)
+        return 0;
+    *p1 = (uint32_t)a;
+    *p2 = (uint32_t)b;
+    return 1;
+}
+
+#endif
