@@ -64,6 +64,8 @@ void stp_rv32_main(void)
     if (status == STP_OK) {
         stp_scene_data_output(s, &out);
         mem.band = band;
+        mem.setup = 0; /* no per-polygon setups kept between bands */
+        mem.setup_count = 0;
         mem.band_size = sizeof band;
         mem.band_rows = STP_FW_BAND_ROWS < s->height ? STP_FW_BAND_ROWS : s->height;
         mem.zbuf = zbuf;

@@ -109,6 +109,7 @@ int torus_render(stp_renderer *r, stp_port *port, const stp_frame_memory *mem)
     out.styles = 0;
     out.background = 0;
     out.background_colour = 0;
+    out.diffusion = 0; /* a halftone cell, no error diffusion */
     return stp_render(r, port, &out, mem);
 }
 

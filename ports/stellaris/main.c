@@ -129,6 +129,8 @@ int main(void)
 
     scene_output(scene, &out);
     mem.band = band;
+    mem.setup = 0; /* no per-polygon setups kept between bands */
+    mem.setup_count = 0;
     mem.band_size = sizeof band;
     mem.band_rows = STP_FW_BAND_ROWS;
 #if STP_WITH_ZBUFFER

@@ -217,6 +217,8 @@ static int output(stp_renderer *r, const scene *s)
     out.hidden = s->hidden;
     memset(&fm, 0, sizeof fm);
     fm.band = band;
+    fm.setup = 0; /* no per-polygon setups kept between bands */
+    fm.setup_count = 0;
     fm.band_size = sizeof band;
     fm.band_rows = s->band_rows;
     fm.zbuf = zbuf;

@@ -90,6 +90,8 @@ static int render_scene(stp_hidden hidden, int transparent_first, double t, int 
     out.background = stp_intensity_shade(4, LEVELS); /* style 4 exactly */
     memset(&fm, 0, sizeof fm);
     fm.band = band;
+    fm.setup = 0; /* no per-polygon setups kept between bands */
+    fm.setup_count = 0;
     fm.band_size = sizeof band;
     fm.band_rows = 5;
     fm.zbuf = zbuf;

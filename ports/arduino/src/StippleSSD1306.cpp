@@ -96,6 +96,8 @@ int StippleSSD1306::draw(const stp_scene_data &scene)
         return status;
     stp_scene_data_output(&scene, &out);
     mem.band = band_;
+    mem.setup = 0; /* no per-polygon setups kept between bands */
+    mem.setup_count = 0;
     mem.band_size = sizeof band_;
     mem.band_rows = STIPPLE_BAND_ROWS;
 #if STP_WITH_ZBUFFER
