@@ -37,7 +37,7 @@ typedef struct stp_crossing {
 } stp_crossing;
 
 #if STP_WITH_SHADOWS
-/* A light's shadow map (render.h, stp_set_shadow_map).  The light's frame:
+/* A light's shadow map (render.h, stp_renderer_set_shadow_map).  The light's frame:
  * origin at the light, z along the map's axis, x right, y up (left-handed
  * like the view).  A view point p goes to the light's frame as
  * p_l = m p + t: m is the rotation (Q28: entries are cosines, |m| <= 1 + a

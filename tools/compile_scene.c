@@ -207,7 +207,7 @@ static void write_config(writer *w, const plan *p, const stp_tool_options *opt)
         opt->hidden == STP_HIDDEN_PAINTER);
     out(w, "/* Scenes hold polygons only. */\n"
            "#define STP_WITH_LINES 0\n");
-    out(w, "/* The scene is entered as flat grey polygons (stp_polygon), opaque and\n"
+    out(w, "/* The scene is entered as flat grey polygons (stp_renderer_polygon), opaque and\n"
            " * without shadow maps. */\n"
            "#define STP_WITH_GOURAUD 0\n#define STP_WITH_COLOUR 0\n"
            "#define STP_WITH_TRANSPARENCY 0\n#define STP_WITH_SHADOWS 0\n");

@@ -4,10 +4,13 @@
  * colour devices.  Include this for the whole public API.
  *
  * Naming rule: every public symbol starts with stp_ (types, functions) or
- * STP_ (macros, enumerators); stp_<module>_<verb> for functions of a module
- * (stp_fix_mul, stp_cell_bayer), stp_<verb> for the renderer's own calls
- * (stp_polygon, stp_render).  Private code lives in src/ and its headers are
- * not installed.
+ * STP_ (macros, enumerators); functions are module first,
+ * stp_<module>_<action>, the module being what they act on: stp_fix_mul,
+ * stp_cell_bayer, stp_renderer_polygon and stp_renderer_render (the polygon
+ * renderer, stp_renderer), stp_rt_polygon and stp_rt_render (the ray
+ * tracer), stp_segment_create, stp_frame_memory_split.  The renderer's
+ * names before 0.3 are macros in stipple/deprecated.h for one release.
+ * Private code lives in src/ and its headers are not installed.
  */
 #ifndef STIPPLE_STIPPLE_H
 #define STIPPLE_STIPPLE_H

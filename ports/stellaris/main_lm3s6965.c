@@ -292,7 +292,7 @@ int main(void)
 
     /* the frame through the core alone, the panel's transfer left out */
     port.flush = discard_flush;
-    status = stp_render(r, &port, &out, &mem);
+    status = stp_renderer_render(r, &port, &out, &mem);
     t2 = stp_count_now();
     if (status != STP_OK)
         return fail("render", status);
@@ -303,7 +303,7 @@ int main(void)
         return fail("panel", STP_ERR_PORT);
     t3 = stp_count_now();
     port.flush = panel_flush;
-    status = stp_render(r, &port, &out, &mem);
+    status = stp_renderer_render(r, &port, &out, &mem);
     if (status != STP_OK)
         return fail("render to panel", status);
 
@@ -317,7 +317,7 @@ int main(void)
     report("shade calls timed:", shade_calls);
     report("band rows:", STP_FW_BAND_ROWS);
     report("renderer bytes:", stp_renderer_size());
-    report("display-file entries:", stp_display_file_used(r));
+    report("display-file entries:", stp_renderer_display_file_used(r));
     wait_for_key();
     return 0;
 }

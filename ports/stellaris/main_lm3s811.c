@@ -178,7 +178,7 @@ int main(void)
 
     /* the frame through the core alone, the panel's transfer left out */
     port.flush = discard_flush;
-    status = stp_render(r, &port, &out, &mem);
+    status = stp_renderer_render(r, &port, &out, &mem);
     t2 = stp_count_now();
     if (status != STP_OK)
         return fail("render", status);
@@ -188,7 +188,7 @@ int main(void)
         return fail("panel", STP_ERR_PORT);
     t3 = stp_count_now();
     port.flush = panel_flush;
-    status = stp_render(r, &port, &out, &mem);
+    status = stp_renderer_render(r, &port, &out, &mem);
     if (status != STP_OK)
         return fail("render to panel", status);
 
@@ -199,7 +199,7 @@ int main(void)
     report("instructions per frame (core + panel):", (t4 - t3) * per_tick);
     report("band rows:", STP_FW_BAND_ROWS);
     report("renderer bytes:", stp_renderer_size());
-    report("display-file entries:", stp_display_file_used(r));
+    report("display-file entries:", stp_renderer_display_file_used(r));
     wait_for_byte();
     return 0;
 }
