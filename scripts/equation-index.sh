@@ -36,9 +36,9 @@ SHADE-CHECK | Newell's sums collected while a polygon is entered, its shade comp
 MAKE-SHADE (Algorithm 10.5) | the shade of a face: background only when the light is behind it, capped at 1 and scaled by the brightness | shade_parts | test_shade_no_lights_and_caps test_shade_back_face_is_ambient_only
 (10.45) | colour: the same equation per channel, the highlight colourless | stp_shade_point_colour | test_colour_shading_per_channel
 INITIALIZE-10 | defaults: light at (0,0,1), brightness 1, no background; reflectivity 1, refraction 10, gloss 10; shading off | stp_lighting_default stp_material_default | test_seed_defaults
-SET-LIGHT (Algorithms 10.7-10.11) | the light's position, brightness and background share, kept in [0,1] | stp_set_light stp_set_lighting | test_copy_light_per_segment tests/stiff/test_stiff.c:test_case
-SET-OBJECT-SHADE | reflectivity, index of refraction and gloss of the polygons entered next | stp_set_object_shade | tests/stiff/test_stiff.c:test_case
-SET-SHADING | shading on, or off with polygons in the current fill style | stp_set_shading stp_set_fill_style | test_set_shading
+SET-LIGHT (Algorithms 10.7-10.11) | the light's position, brightness and background share, kept in [0,1] | stp_renderer_set_light stp_renderer_set_lighting | test_copy_light_per_segment tests/stiff/test_stiff.c:test_case
+SET-OBJECT-SHADE | reflectivity, index of refraction and gloss of the polygons entered next | stp_renderer_set_object_shade | tests/stiff/test_stiff.c:test_case
+SET-SHADING | shading on, or off with polygons in the current fill style | stp_renderer_set_shading stp_renderer_set_fill_style | test_set_shading
 COPY-LIGHT | a segment keeps the lighting current when it was created, its lights turned into view coordinates | stp_segment_create | test_copy_light_per_segment
 ## 3. From shade to pixels
 INTENSITY (Algorithm 10.6) | a shade in [0,1] to one of N styles, INT(s(N-1)+1) | stp_intensity_index | test_intensity_index_at_step_boundaries test_intensity_index_random_shades test_property_intensity
@@ -48,7 +48,7 @@ halftone cells | ordered-dither threshold matrices: the seed's 2x2, Bayer cells,
 HALFTONE-FILLIN (Algorithm 10.12) | one span of a polygon: a pixel is on when the intensity exceeds the cell's threshold at (x mod w, y mod h) | stp_halftone_fillin | test_halftone_fillin_exact_bits test_halftone_fillin_single_pixel test_halftone_fillin_uses_x_mod_cell
 ordered dither of a picture | every pixel of a grey row against the tiled cell | stp_halftone_row | test_halftone_row test_bayer4_equals_imagemagick_o4x4
 ## 4. Smooth shading (Gouraud)
-Gouraud shading | a shade per vertex, stepped along edges and spans, each pixel through INTENSITY and its own threshold | stp_polygon_vertex_shades stp_polygon_smooth put_span_smooth | test_horizontal_ramp test_triangle_barycentric test_golden_smooth_teapot
+Gouraud shading | a shade per vertex, stepped along edges and spans, each pixel through INTENSITY and its own threshold | stp_renderer_polygon_vertex_shades stp_renderer_polygon_smooth put_span_smooth | test_horizontal_ramp test_triangle_barycentric test_golden_smooth_teapot
 ## 5. Transparency, reflections, shadows, ray tracing
 (10.18) | transmission through material t e^(-a d) | enter_polygon_df src/raytrace.c:absorb | test_blend_over_opaque_and_background tests/raytrace/test_raytrace.c:test_scenes_against_reference
 (10.19) | Snell's law for the refracted ray | shade_hit | tests/raytrace/test_raytrace.c:test_scenes_against_reference tests/raytrace/test_raytrace.c:test_stiff_cases
@@ -67,7 +67,7 @@ HSV (Algorithms 10.13, 10.14) | the hexcone | stp_rgb_to_hsv stp_hsv_to_rgb | te
 HLS | the double hexcone | stp_rgb_to_hls stp_hls_to_rgb | test_hsv_hls_hsi_known_values test_round_trips_over_the_cube
 colour tables | 256 entries of 24-bit colour indexed by the frame's values: grey, pseudocolour, gamma per primary | stp_colour_table_grey stp_colour_table_pseudocolour stp_colour_table_apply_gamma | test_colour_tables
 ## 7. The display file
-DISPLAY-FILE-ENTER (Algorithm 10.3) | each point to view coordinates, shaded, clipped, projected and stored as an instruction | enter_polygon_df stp_move stp_line | test_display_file_full_leaves_it_unchanged tests/golden/test_golden.c:test_golden_128x64
+DISPLAY-FILE-ENTER (Algorithm 10.3) | each point to view coordinates, shaded, clipped, projected and stored as an instruction | enter_polygon_df stp_renderer_move stp_line | test_display_file_full_leaves_it_unchanged tests/golden/test_golden.c:test_golden_128x64
 segments | created, closed, deleted, shown or hidden | stp_segment_create stp_segment_close stp_segment_delete stp_segment_visibility | test_segment_errors test_segment_delete_compacts_and_visibility test_segment_table_full
 clipping and projection | against the hither plane and the window, then perspective or parallel | clip_polygon project | test_hither_clipping test_polygon_behind_the_eye_enters_nothing test_pictures_of_clipped_polygons
 back-face removal | faces with N.E <= 0 dropped | enter_polygon_df | test_backface_removal_keeps_faces_towards_viewer test_backface_removal_single_polygon

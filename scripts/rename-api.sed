@@ -27,3 +27,4 @@ s/\bstp_display_file_used\b/stp_renderer_display_file_used/g
 s/\bstp_polygon_count\b/stp_renderer_polygon_count/g
 s/\bstp_last_shade\b/stp_renderer_last_shade/g
 s/\bstp_render\b/stp_renderer_render/g
+s/\bstp_set_transform\b/stp_renderer_set_transform/g

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Defaults for stp_render: the output and the frame memory carved from one
+/* Defaults for stp_renderer_render: the output and the frame memory carved from one
  * caller buffer (render.h, stp_output_default and stp_frame_memory_*). */
 #include "align_private.h"
 #include "stipple/render.h"
@@ -79,7 +79,7 @@ int stp_frame_memory_split(stp_frame_memory *memory, const stp_renderer *r, cons
     if (output->hidden == STP_HIDDEN_PAINTER) {
         if (r == 0)
             return STP_ERR_ARG;
-        uint32_t polygons = stp_polygon_count(r);
+        uint32_t polygons = stp_renderer_polygon_count(r);
         sort_count = (size_t)polygons;
         if (sort_count != polygons) /* a 16-bit size_t */
             return STP_ERR_MEMORY;

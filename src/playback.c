@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* A renderer over a ready display file, for playback only (playback.h):
- * only the fields stp_render reads are set. */
+ * only the fields stp_renderer_render reads are set. */
 #include "stipple/playback.h"
 #include "render_private.h"
 
@@ -14,7 +14,7 @@ stp_renderer *stp_playback_create(void *mem, size_t mem_size, const stp_instr *d
         width < 1 || height < 1 || width > 32767 || height > 32767 || levels < 2 ||
         levels > 256 || fill_style < 1 || fill_style > levels)
         return 0;
-    /* stp_render never writes through df: the const data stays unwritten */
+    /* stp_renderer_render never writes through df: the const data stays unwritten */
     r->df = (stp_instr *)(uintptr_t)display_file;
     r->capacity = r->used = used;
     r->width = width;

@@ -52,7 +52,7 @@ size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
     }
 }
 
-/* Everything one frame's interpretation needs, built once per stp_render. */
+/* Everything one frame's interpretation needs, built once per stp_renderer_render. */
 /* A style as the interpreter carries it: an index (0..levels) or, with
  * STP_COLOUR_FLAG, a colour; 32 bits wide because the flag is bit 24. */
 typedef int32_t paint;
@@ -302,7 +302,7 @@ static void paint_run_plain(const frame *fr, uint32_t y, uint32_t x1, uint32_t x
 
 #if STP_WITH_SHADOWS
 /* Pixels x1..x2 of a shadowed polygon hidden from the lights in `hidden`
- * (render.h, stp_set_shadow_map): a flat grey polygon takes the style of
+ * (render.h, stp_renderer_set_shadow_map): a flat grey polygon takes the style of
  * its shade re-lit without them; a colour polygon's channels and a smooth
  * polygon's interpolated shade are scaled by that shade over its full one. */
 static void paint_hidden(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, paint style,
@@ -885,7 +885,7 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
     return count;
 }
 
-int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
+int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *output,
                const stp_frame_memory *mem)
 {
     frame fr;
@@ -932,7 +932,7 @@ int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
 #endif
     } else if (hidden == STP_HIDDEN_PAINTER) {
 #if STP_WITH_PAINTER
-        if (mem->sort == 0 || mem->sort_count < stp_polygon_count(r))
+        if (mem->sort == 0 || mem->sort_count < stp_renderer_polygon_count(r))
             return STP_ERR_MEMORY;
 #else
         return STP_ERR_UNSUPPORTED;

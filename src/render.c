@@ -96,11 +96,11 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     view.window_half = ONE;
     view.hither = ONE >> 8;
     view.projection = STP_PERSPECTIVE;
-    (void)stp_set_view(r, &view);
+    (void)stp_renderer_set_view(r, &view);
     return r;
 }
 
-int stp_set_view(stp_renderer *r, const stp_view *v)
+int stp_renderer_set_view(stp_renderer *r, const stp_view *v)
 {
     stp_view_frame vf;
     int status;
@@ -138,7 +138,7 @@ int stp_set_view(stp_renderer *r, const stp_view *v)
     return STP_OK;
 }
 
-int stp_set_light(stp_renderer *r, stp_vec3 position, stp_fix brightness, stp_fix background)
+int stp_renderer_set_light(stp_renderer *r, stp_vec3 position, stp_fix brightness, stp_fix background)
 {
     stp_lighting *l;
     if (r == 0 || brightness < 0 || background < 0 || background > ONE)
@@ -154,7 +154,7 @@ int stp_set_light(stp_renderer *r, stp_vec3 position, stp_fix brightness, stp_fi
     return STP_OK;
 }
 
-int stp_set_lighting(stp_renderer *r, const stp_lighting *lighting)
+int stp_renderer_set_lighting(stp_renderer *r, const stp_lighting *lighting)
 {
     if (r == 0 || lighting == 0 || lighting->count < 0 || lighting->count > STP_MAX_LIGHTS)
         return STP_ERR_ARG;
@@ -167,7 +167,7 @@ int stp_set_lighting(stp_renderer *r, const stp_lighting *lighting)
     return STP_OK;
 }
 
-int stp_set_object_shade(stp_renderer *r, const stp_material *material)
+int stp_renderer_set_object_shade(stp_renderer *r, const stp_material *material)
 {
     int c;
     if (r == 0 || material == 0 || material->reflectivity < 0 || material->reflectivity > ONE ||
@@ -180,7 +180,7 @@ int stp_set_object_shade(stp_renderer *r, const stp_material *material)
     return STP_OK;
 }
 
-int stp_set_shading(stp_renderer *r, int on)
+int stp_renderer_set_shading(stp_renderer *r, int on)
 {
     if (r == 0)
         return STP_ERR_ARG;
@@ -188,7 +188,7 @@ int stp_set_shading(stp_renderer *r, int on)
     return STP_OK;
 }
 
-int stp_set_fill_style(stp_renderer *r, int index)
+int stp_renderer_set_fill_style(stp_renderer *r, int index)
 {
     if (r == 0 || index < 1 || index > r->levels)
         return STP_ERR_ARG;
@@ -196,7 +196,7 @@ int stp_set_fill_style(stp_renderer *r, int index)
     return STP_OK;
 }
 
-int stp_set_levels(stp_renderer *r, int levels)
+int stp_renderer_set_levels(stp_renderer *r, int levels)
 {
     if (r == 0 || levels < 2 || levels > 256)
         return STP_ERR_ARG;
@@ -207,7 +207,7 @@ int stp_set_levels(stp_renderer *r, int levels)
     return STP_OK;
 }
 
-int stp_set_colour(stp_renderer *r, int on)
+int stp_renderer_set_colour(stp_renderer *r, int on)
 {
     if (r == 0)
         return STP_ERR_ARG;
@@ -219,7 +219,7 @@ int stp_set_colour(stp_renderer *r, int on)
 #endif
 }
 
-int stp_set_transparency(stp_renderer *r, stp_fix t_min, stp_fix t_max, int power,
+int stp_renderer_set_transparency(stp_renderer *r, stp_fix t_min, stp_fix t_max, int power,
                          stp_fix absorption, stp_fix thickness)
 {
     if (r == 0 || t_min < 0 || t_max < 0 || t_min > ONE || t_max > ONE || power < 1 || power > 4 ||
@@ -245,7 +245,7 @@ int stp_set_transparency(stp_renderer *r, stp_fix t_min, stp_fix t_max, int powe
 #endif
 }
 
-int stp_set_backface_removal(stp_renderer *r, int on)
+int stp_renderer_set_backface_removal(stp_renderer *r, int on)
 {
     if (r == 0)
         return STP_ERR_ARG;
@@ -380,12 +380,12 @@ int stp_segment_visibility(stp_renderer *r, int id, int visible)
     return STP_OK;
 }
 
-uint32_t stp_display_file_used(const stp_renderer *r)
+uint32_t stp_renderer_display_file_used(const stp_renderer *r)
 {
     return r->used;
 }
 
-uint32_t stp_polygon_count(const stp_renderer *r)
+uint32_t stp_renderer_polygon_count(const stp_renderer *r)
 {
     uint32_t count = 0, k;
     int i;
@@ -403,7 +403,7 @@ uint32_t stp_polygon_count(const stp_renderer *r)
     return count;
 }
 
-stp_fix stp_last_shade(const stp_renderer *r)
+stp_fix stp_renderer_last_shade(const stp_renderer *r)
 {
     return r->last_shade;
 }
@@ -440,7 +440,7 @@ static void vertex_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
 }
 
 
-int stp_set_transform(stp_renderer *r, const stp_transform *t)
+int stp_renderer_set_transform(stp_renderer *r, const stp_transform *t)
 {
     int i, j, identity = 1;
     if (r == 0)
@@ -543,7 +543,7 @@ static void append(stp_renderer *r, int32_t op, int32_t x, int32_t y, int32_t z,
     r->segments[r->open_segment].end = r->used;
 }
 
-int stp_move(stp_renderer *r, stp_vec3 p)
+int stp_renderer_move(stp_renderer *r, stp_vec3 p)
 {
     int status = check_open(r);
     if (status != STP_OK)
@@ -553,7 +553,7 @@ int stp_move(stp_renderer *r, stp_vec3 p)
     return STP_OK;
 }
 
-int stp_line(stp_renderer *r, stp_vec3 p)
+int stp_renderer_line(stp_renderer *r, stp_vec3 p)
 {
 #if STP_WITH_LINES
     stp_vec3 a, b, q;
@@ -1040,19 +1040,19 @@ static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,
     return status;
 }
 
-int stp_polygon(stp_renderer *r, const stp_vec3 *vertices, int n)
+int stp_renderer_polygon(stp_renderer *r, const stp_vec3 *vertices, int n)
 {
     return enter_polygon(r, vertices, n, STP_ENTER_FLAT, 0, 0);
 }
 
-int stp_polygon_smooth(stp_renderer *r, const stp_vec3 *vertices, const stp_vec3 *normals, int n)
+int stp_renderer_polygon_smooth(stp_renderer *r, const stp_vec3 *vertices, const stp_vec3 *normals, int n)
 {
     if (normals == 0)
         return STP_ERR_ARG;
     return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_NORMALS, normals, 0);
 }
 
-int stp_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const stp_fix *shades,
+int stp_renderer_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const stp_fix *shades,
                               int n)
 {
     if (shades == 0)

@@ -45,7 +45,7 @@ typedef struct stp_crossing {
 
 
 #if STP_WITH_SHADOWS
-/* A light's shadow map (render.h, stp_set_shadow_map).  The light's frame:
+/* A light's shadow map (render.h, stp_renderer_set_shadow_map).  The light's frame:
  * origin at the light, z along the map's axis, x right, y up (left-handed
  * like the view).  A view point p goes to the light's frame as
  * p_l = m p + t: m is the rotation (Q28: entries are cosines, |m| <= 1 + a
@@ -127,7 +127,7 @@ struct stp_renderer {
 
     int pen_valid;
     stp_vec3 pen; /* view coordinates */
-    stp_transform model; /* of the open segment's points (stp_set_transform) */
+    stp_transform model; /* of the open segment's points (stp_renderer_set_transform) */
     int model_on;        /* 0: the identity, skipped */
 
     /* scratch: the clipper's two vertex lists and the scan converter's

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Shadows by a shadow Z buffer per light (docs/model.md section 5): the maps,
  * their depth drawn as polygons are entered, and the per-pixel test of the
- * output.  See stp_set_shadow_map in include/stipple/render.h.
+ * output.  See stp_renderer_set_shadow_map in include/stipple/render.h.
  *
  * Fixed-point formats here (F = STP_FIX_FRAC_BITS):
  *   light-frame points: stp_fix (F bits); the view -> light rotation m: Q28
@@ -85,7 +85,7 @@ int stp_shadow_any(const stp_renderer *r)
 
 #endif /* STP_WITH_SHADOWS */
 
-int stp_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count, uint32_t width,
+int stp_renderer_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count, uint32_t width,
                        uint32_t height, const stp_shadow_view *view)
 {
 #if STP_WITH_SHADOWS
@@ -120,7 +120,7 @@ int stp_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count
         if (near <= 0)
             near = 1;
         /* the map's roll: the view's up, or its forward when the axis runs
-         * along the view's up (as stp_set_view derives its own) */
+         * along the view's up (as stp_renderer_set_view derives its own) */
         right = stp_vec3_cross(fwd, r->up);
         if (stp_vec3_unity(right, &right) < (ONE >> 10)) {
             right = stp_vec3_cross(fwd, r->forward);
@@ -184,7 +184,7 @@ int stp_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count
 #endif
 }
 
-int stp_remove_shadow_map(stp_renderer *r, int light)
+int stp_renderer_remove_shadow_map(stp_renderer *r, int light)
 {
     if (r == 0 || light < 0 || light >= STP_MAX_LIGHTS)
         return STP_ERR_ARG;

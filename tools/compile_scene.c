@@ -214,7 +214,7 @@ static void write_config(writer *w, const plan *p, const stp_tool_options *opt)
         opt->hidden == STP_HIDDEN_PAINTER);
     out(w, "/* Scenes hold polygons only. */\n"
            "#define STP_WITH_LINES 0\n");
-    out(w, "/* The scene is entered as flat grey polygons (stp_polygon), opaque and\n"
+    out(w, "/* The scene is entered as flat grey polygons (stp_renderer_polygon), opaque and\n"
            " * without shadow maps. */\n"
            "#define STP_WITH_GOURAUD 0\n#define STP_WITH_COLOUR 0\n"
            "#define STP_WITH_TRANSPARENCY 0\n#define STP_WITH_SHADOWS 0\n");
@@ -411,7 +411,7 @@ static int enter_on_host(const stp_scene *scene, const plan *p, const stp_tool_o
         snprintf(err, errlen, "entering the scene: %s", stp_status_text(status));
         goto done;
     }
-    *used = stp_display_file_used(r);
+    *used = stp_renderer_display_file_used(r);
     result = 0;
 done:
     free(vertices);

@@ -447,17 +447,17 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
         snprintf(err, err_size, "bad size %dx%d", opt->width, opt->height);
         goto done;
     }
-    if ((status = stp_set_view(r, &view)) != STP_OK || (status = stp_set_levels(r, opt->levels)) != STP_OK ||
-        (status = stp_set_lighting(r, &lighting)) != STP_OK) {
+    if ((status = stp_renderer_set_view(r, &view)) != STP_OK || (status = stp_renderer_set_levels(r, opt->levels)) != STP_OK ||
+        (status = stp_renderer_set_lighting(r, &lighting)) != STP_OK) {
         snprintf(err, err_size, "view: %s", stp_status_text(status));
         goto done;
     }
-    if ((status = stp_set_shading(r, opt->shading)) != STP_OK ||
-        (status = stp_set_backface_removal(r, opt->backface_removal)) != STP_OK) {
+    if ((status = stp_renderer_set_shading(r, opt->shading)) != STP_OK ||
+        (status = stp_renderer_set_backface_removal(r, opt->backface_removal)) != STP_OK) {
         snprintf(err, err_size, "shading: %s", stp_status_text(status));
         goto done;
     }
-    if (opt->colour && (status = stp_set_colour(r, 1)) != STP_OK) {
+    if (opt->colour && (status = stp_renderer_set_colour(r, 1)) != STP_OK) {
         snprintf(err, err_size, "colour: %s", stp_status_text(status));
         goto done;
     }
@@ -492,7 +492,7 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
             stp_material_default(&m);
             if (p->material >= 0 && (size_t)p->material < scene->material_count)
                 stp_tool_material(&scene->materials[p->material], opt->colour, &m);
-            if ((status = stp_set_object_shade(r, &m)) != STP_OK) {
+            if ((status = stp_renderer_set_object_shade(r, &m)) != STP_OK) {
                 snprintf(err, err_size, "material of polygon %zu (line %d): %s", i + 1, p->source_line,
                          stp_status_text(status));
                 goto done;
@@ -504,14 +504,14 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
                                ? scene->materials[p->material].t
                                : 0.0;
                 t = t < 0 ? 0 : (t > 1 ? 1 : t);
-                status = stp_set_transparency(r, stp_tool_fix(t / 2), stp_tool_fix(t), 2, 0, 0);
+                status = stp_renderer_set_transparency(r, stp_tool_fix(t / 2), stp_tool_fix(t), 2, 0, 0);
                 if (status != STP_OK) {
                     snprintf(err, err_size, "transparency: %s", stp_status_text(status));
                     goto done;
                 }
             }
             /* with shading off the material's reflectivity picks the style */
-            (void)stp_set_fill_style(r, stp_intensity_index(m.reflectivity, opt->levels)); /* in range */
+            (void)stp_renderer_set_fill_style(r, stp_intensity_index(m.reflectivity, opt->levels)); /* in range */
             last_material = p->material;
         }
         if (p->count > STP_MAX_POLYGON_VERTICES) {
@@ -535,9 +535,9 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
                 }
                 vn[k] = stp_tool_vec3(nn);
             }
-            status = stp_polygon_smooth(r, v, vn, p->count);
+            status = stp_renderer_polygon_smooth(r, v, vn, p->count);
         } else {
-            status = stp_polygon(r, v, p->count);
+            status = stp_renderer_polygon(r, v, p->count);
         }
         if (status == STP_ERR_DEGENERATE) {
             stats->polygons_skipped++;
@@ -550,7 +550,7 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
         }
     }
     (void)stp_segment_close(r);
-    stats->display_entries = stp_display_file_used(r);
+    stats->display_entries = stp_renderer_display_file_used(r);
 
     band_rows = opt->band_rows > 0 && opt->band_rows < opt->height ? opt->band_rows : opt->height;
     memset(&mem, 0, sizeof mem);
@@ -567,7 +567,7 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
         zbuf = malloc(sizeof *zbuf * mem.zbuf_count);
         mem.zbuf = zbuf;
     } else if (opt->hidden == STP_HIDDEN_PAINTER) {
-        mem.sort_count = stp_polygon_count(r) + 1;
+        mem.sort_count = stp_renderer_polygon_count(r) + 1;
         sort = malloc(sizeof *sort * mem.sort_count);
         mem.sort = sort;
     }
@@ -587,7 +587,7 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
     stats->frame_bytes = stp_renderer_size() + sizeof *df * stats->display_entries + mem.band_size +
                          sizeof(uint16_t) * mem.zbuf_count + sizeof(stp_sort_entry) * mem.sort_count +
                          sizeof(int16_t) * diffusion.error_count;
-    status = stp_render(r, port, &out, &mem);
+    status = stp_renderer_render(r, port, &out, &mem);
     if (status != STP_OK) {
         snprintf(err, err_size, "render: %s", stp_status_text(status));
         goto done;

@@ -118,7 +118,7 @@ int stp_tool_shadows_setup(stp_renderer *r, const stp_scene *scene, const stp_vi
             snprintf(err, err_size, "light %d stands where its map must look: no direction", j + 1);
             return -1;
         }
-        status = stp_set_shadow_map(r, j, maps + (size_t)j * per_map, per_map, resolution, resolution, &sv);
+        status = stp_renderer_set_shadow_map(r, j, maps + (size_t)j * per_map, per_map, resolution, resolution, &sv);
         if (status != STP_OK) {
             snprintf(err, err_size, "shadow map of light %d: %s", j + 1, stp_status_text(status));
             return -1;

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Host side: shadow maps that cover a scene, for stp_tool_render and the
- * stipple command (render.h, stp_set_shadow_map).
+ * stipple command (render.h, stp_renderer_set_shadow_map).
  */
 #ifndef STIPPLE_TOOLS_SHADOWS_SETUP_H
 #define STIPPLE_TOOLS_SHADOWS_SETUP_H
@@ -22,7 +22,7 @@
 int stp_tool_shadow_view(stp_scene_vec3 centre, double radius, stp_scene_vec3 light,
                          stp_shadow_view *out);
 
-/* Give each light of `lighting` (what was passed to stp_set_lighting, light
+/* Give each light of `lighting` (what was passed to stp_renderer_set_lighting, light
  * positions in world units) a resolution x resolution map.  What a map
  * covers: the scene's bounding sphere, or when smaller the sphere the view
  * sees, centred where the line of sight passes the scene's centre (its
@@ -33,9 +33,9 @@ int stp_tool_shadow_view(stp_scene_vec3 centre, double radius, stp_scene_vec3 li
  * puts it right next to the eye, so the map's texels are not spent on a
  * floor that reaches far out of the picture.  maps holds map_count >=
  * lighting->count * resolution^2 entries, light j's map from
- * maps + j * resolution^2.  Call after stp_set_view and stp_set_lighting,
+ * maps + j * resolution^2.  Call after stp_renderer_set_view and stp_renderer_set_lighting,
  * before entering any polygon (the maps are drawn as polygons are
- * entered); keep maps until stp_render returns.  Returns 0, or -1 with a
+ * entered); keep maps until stp_renderer_render returns.  Returns 0, or -1 with a
  * message in err. */
 int stp_tool_shadows_setup(stp_renderer *r, const stp_scene *scene, const stp_view *view,
                            double aspect, const stp_lighting *lighting, uint32_t resolution,

@@ -85,7 +85,7 @@ static int render_styles(const stp_instr *df, uint32_t used, uint32_t width, uin
     port.format = STP_PIXEL_STYLE8;
     port.flush = keep_rows;
     port.user = &pic;
-    status = stp_render(r, &port, &out, &fm) == STP_OK ? 0 : -1;
+    status = stp_renderer_render(r, &port, &out, &fm) == STP_OK ? 0 : -1;
 done:
     free(mem);
     free(band);

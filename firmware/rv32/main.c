@@ -77,7 +77,7 @@ void stp_rv32_main(void)
         port.format = STP_PIXEL_MONO1;
         port.flush = discard;
         port.user = 0;
-        status = stp_render(r, &port, &out, &mem);
+        status = stp_renderer_render(r, &port, &out, &mem);
     }
     stp_rv32_status = status;
     for (;;)

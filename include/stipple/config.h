@@ -98,7 +98,7 @@
 #define STP_WITH_GOURAUD 1
 #endif
 
-/* 1: colour shading (10.45) is compiled in: stp_set_colour shades each
+/* 1: colour shading (10.45) is compiled in: stp_renderer_set_colour shades each
  * polygon per channel for RGB888 output. */
 #ifndef STP_WITH_COLOUR
 #define STP_WITH_COLOUR 1
@@ -111,7 +111,7 @@
 #endif
 
 /* 1: shadows (docs/model.md section 5) by a shadow Z buffer per light are
- * compiled in: stp_set_shadow_map, depth rasterised into the maps as
+ * compiled in: stp_renderer_set_shadow_map, depth rasterised into the maps as
  * polygons are entered, a per-pixel test at output.  The renderer object
  * grows by about 100 bytes per light; a render with no map set draws the
  * same pixels as a build without. */

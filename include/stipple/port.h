@@ -29,7 +29,7 @@ typedef enum stp_pixel_format {
     STP_PIXEL_RGB888 = 2,
     /* 8-bit style codes: each pixel holds the code the style table gives for
      * its INTENSITY index (a line printer's character, say); without a table,
-     * the index 1..levels itself (so at most 255 levels: stp_render refuses
+     * the index 1..levels itself (so at most 255 levels: stp_renderer_render refuses
      * 256 with STP_ERR_ARG) (0 where nothing is drawn and the
      * background is 0). */
     STP_PIXEL_STYLE8 = 3
@@ -43,7 +43,7 @@ struct stp_port;
 /* Receives rows [y0, y0 + rows) of the picture; pixels holds them, row
  * stride bytes apart.  The buffer is the renderer's until the call returns
  * (the core reuses it for the next band).  Return 0 to go on, or a negative
- * value to stop the frame: stp_render then returns STP_ERR_PORT. */
+ * value to stop the frame: stp_renderer_render then returns STP_ERR_PORT. */
 typedef int (*stp_flush_fn)(struct stp_port *port, uint32_t y0, uint32_t rows,
                             const uint8_t *pixels, size_t stride);
 

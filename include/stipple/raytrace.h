@@ -18,7 +18,7 @@
  *   primary ray   pixel (i, j): perspective: from the eye through the point
  *                 (i + 1/2 - W/2, H/2 - j - 1/2) pixels from the image
  *                 centre on a plane `focal` pixels ahead (focal = (short
- *                 side / 2) / tan(fov / 2), as stp_set_view); parallel: along
+ *                 side / 2) / tan(fov / 2), as stp_renderer_set_view); parallel: along
  *                 the line of sight from that point of the window.  Hits
  *                 nearer the eye than the hither plane are ignored.
  *   nearest hit   the object with the smallest t > t_min; N its unit
@@ -170,11 +170,11 @@ typedef union stp_raytracer_storage {
 stp_raytracer *stp_rt_create(void *mem, size_t mem_size, const stp_rt_memory *m, uint32_t width,
                              uint32_t height);
 
-/* The view, as for stp_set_view (same errors: STP_ERR_VIEW, STP_ERR_ARG;
+/* The view, as for stp_renderer_set_view (same errors: STP_ERR_VIEW, STP_ERR_ARG;
  * STP_ERR_ARG also for an eye beyond STP_RT_COORD_LIMIT). */
 int stp_rt_set_view(stp_raytracer *rt, const stp_view *view);
 
-/* Lighting in world units (stp_set_lighting's meaning).  STP_ERR_ARG for a
+/* Lighting in world units (stp_renderer_set_lighting's meaning).  STP_ERR_ARG for a
  * count outside 0..STP_MAX_LIGHTS or a light beyond STP_RT_COORD_LIMIT. */
 int stp_rt_set_lighting(stp_raytracer *rt, const stp_lighting *lighting);
 
@@ -238,7 +238,7 @@ int stp_rt_trace_pixel(stp_raytracer *rt, uint32_t x, uint32_t y, const stp_fix 
 
 /* Trace every pixel and send the picture to the port band by band through
  * INTENSITY, the gamma table and the halftone (MONO1: each pixel's level
- * against its own threshold, as smooth polygons), as stp_render does.
+ * against its own threshold, as smooth polygons), as stp_renderer_render does.
  * output: hidden is ignored; background and background_colour give the
  * misses.  band: band_rows * stp_row_bytes(format, width) bytes (GREY8 rows
  * when output->diffusion diffuses a MONO1 picture).  Errors:

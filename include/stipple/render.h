@@ -79,7 +79,7 @@ enum {
     STP_OP_LIGHT_TERM = -3  /* shadow record of the NEXT polygon only
                                (STP_WITH_SHADOWS; entered only for polygons
                                that a shadow map can darken, see
-                               stp_set_shadow_map).  The records stand just
+                               stp_renderer_set_shadow_map).  The records stand just
                                before the polygon's header, after its
                                STP_OP_SHADE / STP_OP_TRANSPARENCY.  First
                                one with x = STP_LIGHT_TERM_GREY or
@@ -97,7 +97,7 @@ enum {
 /* x of the first STP_OP_LIGHT_TERM record: how a shadowed pixel is re-lit.
  * GREY: the flat grey style came from these terms and is recomputed from
  * them; COLOUR: a colour polygon, whose channels are scaled (render.h,
- * stp_set_shadow_map). */
+ * stp_renderer_set_shadow_map). */
 #define STP_LIGHT_TERM_GREY (-1)
 #define STP_LIGHT_TERM_COLOUR (-2)
 
@@ -169,7 +169,7 @@ typedef union stp_renderer_storage {
  * projects it onto the device.  Everything else starts at the seed's
  * defaults (INITIALIZE-10): light at (0,0,1), brightness 1, background 0,
  * C = 1, R = 1, n = 10, k = 10, shading off (on from the first
- * stp_set_light / stp_set_lighting), 16 levels, Bayer 4x4 cell, identity
+ * stp_renderer_set_light / stp_renderer_set_lighting), 16 levels, Bayer 4x4 cell, identity
  * gamma, no hidden-surface removal, back faces kept, view from (0,0,-1) at
  * the origin, 90 degrees, hither 2^-8.
  * Returns the handle, or NULL for a NULL or too small argument, or mem or
@@ -183,41 +183,41 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
 
 /* Set the view.  Returns STP_OK or STP_ERR_VIEW / STP_ERR_ARG.  Ends an
  * implicit segment (see segments below). */
-int stp_set_view(stp_renderer *r, const stp_view *view);
+int stp_renderer_set_view(stp_renderer *r, const stp_view *view);
 
 /* SET-LIGHT (10.8): one light at (x, y, z) world units with the given
  * brightness (>= 0) and background in [0, 1]; its power is 1 - background.
- * Replaces all lights, turns shading on (stp_set_shading(r, 0) after it
+ * Replaces all lights, turns shading on (stp_renderer_set_shading(r, 0) after it
  * turns it off again) and ends an implicit segment.  STP_ERR_ARG for NULL or
  * a value out of range (nothing changed). */
-int stp_set_light(stp_renderer *r, stp_vec3 position, stp_fix brightness, stp_fix background);
+int stp_renderer_set_light(stp_renderer *r, stp_vec3 position, stp_fix brightness, stp_fix background);
 
 /* Set the whole lighting (several lights, positions in world units); turns
- * shading on and ends an implicit segment, as stp_set_light.
+ * shading on and ends an implicit segment, as stp_renderer_set_light.
  * Returns STP_ERR_ARG for count outside 0..STP_MAX_LIGHTS. */
-int stp_set_lighting(stp_renderer *r, const stp_lighting *lighting);
+int stp_renderer_set_lighting(stp_renderer *r, const stp_lighting *lighting);
 
 /* SET-OBJECT-SHADE (10.7) with the specular weight; see stp_material.
  * STP_ERR_ARG for NULL, reflectivity or a colour share outside [0, 1],
  * refraction, gloss or specular < 0 (nothing changed; 0 is read as shade.h
  * says). */
-int stp_set_object_shade(stp_renderer *r, const stp_material *material);
+int stp_renderer_set_object_shade(stp_renderer *r, const stp_material *material);
 
 /* SET-SHADING: on (non-zero) or off (0).  Off: polygons take the fill
- * style.  Off at creation; stp_set_light turns it on.  STP_ERR_ARG for a
+ * style.  Off at creation; stp_renderer_set_light turns it on.  STP_ERR_ARG for a
  * NULL r. */
-int stp_set_shading(stp_renderer *r, int on);
+int stp_renderer_set_shading(stp_renderer *r, int on);
 
 /* Fill style used while shading is off, as an INTENSITY index 1..levels
  * (default: levels, the lightest).  STP_ERR_ARG outside (nothing changed). */
-int stp_set_fill_style(stp_renderer *r, int index);
+int stp_renderer_set_fill_style(stp_renderer *r, int index);
 
 /* Colour shading (10.45) on (1) or off (0, default): polygons entered while
  * it is on are shaded per channel with the material's and the lights'
  * colours; RGB888 output shows the colour, the other formats its luminance
  * (stp_shade_luminance).  Smooth polygons stay grey.  Returns
  * STP_ERR_UNSUPPORTED without STP_WITH_COLOUR. */
-int stp_set_colour(stp_renderer *r, int on);
+int stp_renderer_set_colour(stp_renderer *r, int on);
 
 /* Transparency of the polygons entered next (docs/model.md section 5): each one's
  * transmission is t = (t_max - t_min) (N.E)^power + t_min (10.21), times
@@ -232,23 +232,23 @@ int stp_set_colour(stp_renderer *r, int on);
  * (the default) makes polygons opaque.  power: 1..4 (the seed: 2 or 3).
  * Returns STP_ERR_ARG for values out of range, STP_ERR_UNSUPPORTED without
  * STP_WITH_TRANSPARENCY. */
-int stp_set_transparency(stp_renderer *r, stp_fix t_min, stp_fix t_max, int power,
+int stp_renderer_set_transparency(stp_renderer *r, stp_fix t_min, stp_fix t_max, int power,
                          stp_fix absorption, stp_fix thickness);
 
 /* Number of INTENSITY levels, 2..256 (default 16). */
-int stp_set_levels(stp_renderer *r, int levels);
+int stp_renderer_set_levels(stp_renderer *r, int levels);
 
 /* Back-face removal on (non-zero) or off (0, default: back faces are shaded
  * as if seen from their front, which suits open meshes).  STP_ERR_ARG for a
  * NULL r. */
-int stp_set_backface_removal(stp_renderer *r, int on);
+int stp_renderer_set_backface_removal(stp_renderer *r, int on);
 
 /* --- segments (the display file's grouping)
  *
- * Drawing (stp_polygon, stp_move, ...) with no open segment opens an
+ * Drawing (stp_renderer_polygon, stp_renderer_move, ...) with no open segment opens an
  * implicit one, id -1 (or -2, -3, ... while those exist), which collects the
- * polygons until stp_segment_create, stp_segment_close, stp_set_view,
- * stp_set_light or stp_set_lighting ends it; the next drawing call opens
+ * polygons until stp_segment_create, stp_segment_close, stp_renderer_set_view,
+ * stp_renderer_set_light or stp_renderer_set_lighting ends it; the next drawing call opens
  * another (with the lighting of that moment: COPY-LIGHT).  So a program that
  * needs no segments never names one.  Implicit segments take slots of
  * STP_MAX_SEGMENTS and can be deleted or hidden by their ids like others. */
@@ -267,23 +267,23 @@ int stp_segment_delete(stp_renderer *r, int id);
 int stp_segment_visibility(stp_renderer *r, int id, int visible);
 
 /* The model transform (transform.h) of the points entered next in the open
- * segment: every vertex, pen position and shadow caster given to stp_move,
- * stp_line and the stp_polygon calls is taken through it (and smooth
+ * segment: every vertex, pen position and shadow caster given to stp_renderer_move,
+ * stp_line and the stp_renderer_polygon calls is taken through it (and smooth
  * normals through its matrix) before the view, so a spinning model is
  * re-entered each frame from the same vertex array with a new transform.
  * Lights are not transformed (they belong to the view).  NULL sets the
  * identity; stp_segment_create starts every segment with the identity.
  * Cost: nine more multiplications per vertex while a transform other than
  * the identity is set.  Errors: STP_ERR_ARG (r NULL), STP_ERR_NO_SEGMENT. */
-int stp_set_transform(stp_renderer *r, const stp_transform *t);
+int stp_renderer_set_transform(stp_renderer *r, const stp_transform *t);
 
 /* --- drawing (DISPLAY-FILE-ENTER: transform, shade, project, clip, store) */
 
 /* Move the pen / draw a line to a world point.  Lines are clipped to the
  * hither plane and the window.  Errors: STP_ERR_ARG, STP_ERR_FULL (the
  * display file, or no segment slot for an implicit segment). */
-int stp_move(stp_renderer *r, stp_vec3 p);
-int stp_line(stp_renderer *r, stp_vec3 p);
+int stp_renderer_move(stp_renderer *r, stp_vec3 p);
+int stp_renderer_line(stp_renderer *r, stp_vec3 p);
 
 /* An n-sided polygon (3 <= n <= STP_MAX_POLYGON_VERTICES) in world units.
  * With shading on, it is shaded at its vertex average with its Newell
@@ -294,19 +294,19 @@ int stp_line(stp_renderer *r, stp_vec3 p);
  * Newell normal: repeated/collinear vertices, no area), STP_ERR_FULL
  * (nothing of the polygon is left in the display file; or no segment slot
  * for an implicit segment). */
-int stp_polygon(stp_renderer *r, const stp_vec3 *vertices, int n);
+int stp_renderer_polygon(stp_renderer *r, const stp_vec3 *vertices, int n);
 
-/* Smooth (Gouraud) polygons (docs/model.md section 4): like stp_polygon, but each
+/* Smooth (Gouraud) polygons (docs/model.md section 4): like stp_renderer_polygon, but each
  * vertex gets its own shade and pixels interpolate it along edges and spans
  * before the halftone compares it with the cell (the combined scheme).
- * stp_polygon_smooth computes each vertex's shade with the full shading
+ * stp_renderer_polygon_smooth computes each vertex's shade with the full shading
  * equation from its own normal (world units, any length; a zero normal takes
  * the polygon's) at the vertex; with shading off the fill style's shade is
- * used everywhere.  stp_polygon_vertex_shades takes the shades (stp_fix,
- * clamped to [0, 1]) from the caller.  Errors as stp_polygon, and
+ * used everywhere.  stp_renderer_polygon_vertex_shades takes the shades (stp_fix,
+ * clamped to [0, 1]) from the caller.  Errors as stp_renderer_polygon, and
  * STP_ERR_UNSUPPORTED without STP_WITH_GOURAUD. */
-int stp_polygon_smooth(stp_renderer *r, const stp_vec3 *vertices, const stp_vec3 *normals, int n);
-int stp_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const stp_fix *shades,
+int stp_renderer_polygon_smooth(stp_renderer *r, const stp_vec3 *vertices, const stp_vec3 *normals, int n);
+int stp_renderer_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const stp_fix *shades,
                               int n);
 
 /* --- shadows (docs/model.md section 5: a shadow Z buffer per light)
@@ -325,22 +325,22 @@ int stp_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const s
  * Order of calls.  The display file holds device coordinates only, so the
  * maps are drawn as polygons are ENTERED: set the view and the lighting,
  * then the maps (the call clears its map), then create the segments and
- * enter every polygon, casters included, then stp_render.  Every polygon
- * entered while a map is set is drawn into it (stp_polygon,
- * stp_polygon_smooth, stp_polygon_vertex_shades; any segment, visible or
+ * enter every polygon, casters included, then stp_renderer_render.  Every polygon
+ * entered while a map is set is drawn into it (stp_renderer_polygon,
+ * stp_renderer_polygon_smooth, stp_renderer_polygon_vertex_shades; any segment, visible or
  * not; back faces, polygons outside the view and transparent ones too: a
  * map holds depth only, so transparent polygons cast full shadows).  A
  * polygon entered before its light's map was set (or set again) casts no
- * shadow into it and receives none from that light.  stp_set_view removes
+ * shadow into it and receives none from that light.  stp_renderer_set_view removes
  * every map: the maps' transform starts from view coordinates.  Deleting a
  * segment does not take its polygons out of the maps.  The maps must stay
- * valid until stp_render returns.
+ * valid until stp_renderer_render returns.
  *
- * Receivers: polygons entered with shading on by stp_polygon or
- * stp_polygon_smooth, in a segment whose copy of the light (COPY-LIGHT)
+ * Receivers: polygons entered with shading on by stp_renderer_polygon or
+ * stp_renderer_polygon_smooth, in a segment whose copy of the light (COPY-LIGHT)
  * stands where the light stood when its map was set, get STP_OP_LIGHT_TERM
  * records for the lights with a map whose term is > 0.  Caller-given shades
- * (stp_polygon_vertex_shades) and shading off receive no shadow.  Lines
+ * (stp_renderer_polygon_vertex_shades) and shading off receive no shadow.  Lines
  * neither cast nor receive.
  *
  * The test, per pixel of a receiver and per light with a record: the pixel
@@ -384,7 +384,7 @@ typedef struct stp_shadow_view {
 
 /* Set (and clear) light `light`'s shadow map: depth holds count >=
  * width * height entries; width, height 1..32767.  The light's position is
- * the current lighting's (stp_set_light / stp_set_lighting before this
+ * the current lighting's (stp_renderer_set_light / stp_renderer_set_lighting before this
  * call).  view NULL: target = the view's look-at point, fov 90 degrees,
  * near = |target - light| / 16.  To cover a scene of bounding sphere
  * (c, radius) from a light at distance d > radius of c: target c,
@@ -394,22 +394,22 @@ typedef struct stp_shadow_view {
  * STP_ERR_MEMORY (count < width * height), STP_ERR_VIEW (target at the
  * light, fov outside (0, 180), near <= 0), STP_ERR_UNSUPPORTED without
  * STP_WITH_SHADOWS. */
-int stp_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count, uint32_t width,
+int stp_renderer_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, size_t count, uint32_t width,
                        uint32_t height, const stp_shadow_view *view);
 
 /* Forget light `light`'s map (polygons entered next neither cast into it nor
  * receive its shadow; records already entered are ignored).  STP_ERR_ARG
  * for a light outside 0..STP_MAX_LIGHTS-1; STP_OK without STP_WITH_SHADOWS. */
-int stp_remove_shadow_map(stp_renderer *r, int light);
+int stp_renderer_remove_shadow_map(stp_renderer *r, int light);
 
 /* Instructions in use and capacity of the display file. */
-uint32_t stp_display_file_used(const stp_renderer *r);
+uint32_t stp_renderer_display_file_used(const stp_renderer *r);
 
 /* Polygons in visible segments (the size of the painter's sort array). */
-uint32_t stp_polygon_count(const stp_renderer *r);
+uint32_t stp_renderer_polygon_count(const stp_renderer *r);
 
-/* The shade the last stp_polygon call computed (for tests), or -1. */
-stp_fix stp_last_shade(const stp_renderer *r);
+/* The shade the last stp_renderer_polygon call computed (for tests), or -1. */
+stp_fix stp_renderer_last_shade(const stp_renderer *r);
 
 /* --- output */
 
@@ -431,13 +431,13 @@ typedef struct stp_output {
                                         equal the whole frame. */
 } stp_output;
 
-/* Memory the caller lends to one stp_render call.
+/* Memory the caller lends to one stp_renderer_render call.
  *   band, band_size     pixel rows: band_rows * stp_row_bytes(format, width)
  *   band_rows           rows per band, 1..height
  *   zbuf, zbuf_count    STP_HIDDEN_ZBUFFER: width * band_rows entries
- *   sort, sort_count    STP_HIDDEN_PAINTER: stp_polygon_count() entries
+ *   sort, sort_count    STP_HIDDEN_PAINTER: stp_renderer_polygon_count() entries
  *   setup, setup_count  optional (NULL, 0: none), STP_HIDDEN_ZBUFFER:
- *                       stp_polygon_count() entries; each polygon's depth
+ *                       stp_renderer_polygon_count() entries; each polygon's depth
  *                       setup is then made once per frame, in the first
  *                       band it reaches, and later bands take it from
  *                       there rather than redoing it (the same pixels) */
@@ -471,15 +471,15 @@ typedef struct stp_frame_memory {
 int stp_output_default(stp_output *output);
 
 /* Bytes of frame memory for band_rows rows of port (hidden: the method
- * stp_render will use; polygons: stp_polygon_count(), for the painter's
+ * stp_renderer_render will use; polygons: stp_renderer_polygon_count(), for the painter's
  * sort), plus up to 3 bytes for aligning the start of a buffer.  0 for a
  * NULL port or an unknown format. */
 size_t stp_frame_memory_bytes(const stp_port *port, stp_hidden hidden, uint32_t band_rows,
                               uint32_t polygons);
 
 /* Lay out one caller buffer (any alignment, size bytes) as the frame memory
- * of a stp_render call for port and output (NULL: stp_output_default): the
- * painter's sort array first (stp_polygon_count(r) entries, so call it after
+ * of a stp_renderer_render call for port and output (NULL: stp_output_default): the
+ * painter's sort array first (stp_renderer_polygon_count(r) entries, so call it after
  * the last polygon), then for the Z buffer one 16-bit entry per pixel of a
  * band, then the band, with as many rows as fit, at most port->height.
  * More rows: fewer passes over the display file (the picture is the same).
@@ -494,13 +494,16 @@ int stp_frame_memory_split(stp_frame_memory *memory, const stp_renderer *r, cons
  * for pixel whatever the band height).  The port's size must be the
  * renderer's.  output NULL: stp_output_default's.  Errors: STP_ERR_ARG,
  * STP_ERR_MEMORY (a buffer too small, a setup array given with fewer than
- * stp_polygon_count() entries),
+ * stp_renderer_polygon_count() entries),
  * STP_ERR_UNSUPPORTED (a hidden-surface method compiled out), STP_ERR_PORT. */
-int stp_render(stp_renderer *r, stp_port *port, const stp_output *output,
+int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *output,
                const stp_frame_memory *memory);
 
 #ifdef __cplusplus
 }
 #endif
+
+/* the names before 0.3, for one release */
+#include "stipple/deprecated.h"
 
 #endif

@@ -104,7 +104,7 @@ stp_fix stp_shade_point(const stp_lighting *lighting, const stp_material *materi
 
 #if STP_WITH_SHADOWS
 /* stp_shade_point with its parts kept apart, for shadows (render.h,
- * stp_set_shadow_map): *ambient = B*R and terms[j] (STP_MAX_LIGHTS entries)
+ * stp_renderer_set_shadow_map): *ambient = B*R and terms[j] (STP_MAX_LIGHTS entries)
  * = P_j*(R*(N.L_j) + Ks*D*G*F/(N.E))/(C + U_j), rounded and saturated to
  * stp_fix, for each light j that reaches the face, 0 for the others
  * (N.L_j <= 0, j beyond the count, every light of a back face).  Returns the

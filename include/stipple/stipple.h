@@ -6,7 +6,7 @@
  * Naming rule: every public symbol starts with stp_ (types, functions) or
  * STP_ (macros, enumerators); stp_<module>_<verb> for functions of a module
  * (stp_fix_mul, stp_cell_bayer), stp_<verb> for the renderer's own calls
- * (stp_polygon, stp_render).  Private code lives in src/ and its headers are
+ * (stp_renderer_polygon, stp_renderer_render).  Private code lives in src/ and its headers are
  * not installed.
  */
 #ifndef STIPPLE_STIPPLE_H

@@ -3,7 +3,7 @@
  * Model transforms (the seed's segment transformations): rotation, scale
  * and translation of the points a caller enters, so a spinning or moving
  * model is re-entered every frame from the caller's own, unchanging vertex
- * array (render.h, stp_set_transform).
+ * array (render.h, stp_renderer_set_transform).
  *
  * A transform maps a point p to m p + t: m is a 3x3 matrix of stp_fix
  * (rotations times scales, row-major), t a translation in world units.

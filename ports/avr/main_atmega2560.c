@@ -95,7 +95,7 @@ int main(void)
     port.format = STP_PIXEL_MONO1;
     port.user = 0;
     port.flush = flush;
-    if (stp_render(r, &port, &out, &mem) != STP_OK)
+    if (stp_renderer_render(r, &port, &out, &mem) != STP_OK)
         finish(4);
     finish(STP_RENDERER_BYTES == stp_renderer_size() ? 0 : 5);
     return 0;

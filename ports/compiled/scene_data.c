@@ -18,12 +18,12 @@ int stp_scene_data_enter(const stp_scene_data *s, void *mem, size_t mem_size,
                             s->height);
     if (!r)
         return STP_ERR_ARG;
-    if ((status = stp_set_view(r, &s->view)) != STP_OK ||
-        (status = stp_set_levels(r, s->levels)) != STP_OK ||
-        (status = stp_set_lighting(r, &s->lighting)) != STP_OK)
+    if ((status = stp_renderer_set_view(r, &s->view)) != STP_OK ||
+        (status = stp_renderer_set_levels(r, s->levels)) != STP_OK ||
+        (status = stp_renderer_set_lighting(r, &s->lighting)) != STP_OK)
         return status;
-    if ((status = stp_set_shading(r, s->shading)) != STP_OK ||
-        (status = stp_set_backface_removal(r, s->backface_removal)) != STP_OK ||
+    if ((status = stp_renderer_set_shading(r, s->shading)) != STP_OK ||
+        (status = stp_renderer_set_backface_removal(r, s->backface_removal)) != STP_OK ||
         (status = stp_segment_create(r, 1)) != STP_OK)
         return status;
     v = s->vertices;
@@ -49,12 +49,12 @@ int stp_scene_data_enter(const stp_scene_data *s, void *mem, size_t mem_size,
 #endif
         if (p->material != last_material) {
             /* with shading off the material's reflectivity picks the style */
-            if ((status = stp_set_object_shade(r, m)) != STP_OK ||
-                (status = stp_set_fill_style(r, stp_intensity_index(m->reflectivity, s->levels))) != STP_OK)
+            if ((status = stp_renderer_set_object_shade(r, m)) != STP_OK ||
+                (status = stp_renderer_set_fill_style(r, stp_intensity_index(m->reflectivity, s->levels))) != STP_OK)
                 return status;
             last_material = p->material;
         }
-        status = stp_polygon(r, corner, p->count);
+        status = stp_renderer_polygon(r, corner, p->count);
         v += p->count;
         if (status != STP_OK && status != STP_ERR_DEGENERATE)
             return status;

@@ -29,7 +29,7 @@
  * and how many bytes had gone out; the device is then released at once
  * (interface released, usblp attached again where possible, handle closed)
  * and every later call fails with "printer released: <first error>".  The
- * port's flush returns -1 in that case, so stp_render returns STP_ERR_PORT
+ * port's flush returns -1 in that case, so stp_renderer_render returns STP_ERR_PORT
  * and stp_usbprint_error() holds the reason.
  *
  * Host code (libc, libusb-1.0).  Functions that fail return NULL or -1 and

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Cortex-M bench firmware for QEMU's mps2-an385: renders the torus frame
  * (torus_frame.h) at 128x64 into a 1-bit frame, reports the instructions
- * one frame takes (entering the 1000 triangles plus stp_render, as the host
+ * one frame takes (entering the 1000 triangles plus stp_renderer_render, as the host
  * bench times) and prints the frame in hex over semihosting for the host to
  * compare with its own render, then exits through semihosting.
  *

@@ -59,7 +59,7 @@ int torus_setup(stp_renderer *r)
     view.window_half = ONE;
     view.hither = milli(10);
     view.projection = STP_PERSPECTIVE;
-    status = stp_set_view(r, &view);
+    status = stp_renderer_set_view(r, &view);
     if (status != STP_OK)
         return status;
     stp_lighting_default(&lighting);
@@ -74,7 +74,7 @@ int torus_setup(stp_renderer *r)
     lighting.lights[0].power = milli(7820);
     for (c = 0; c < 3; c++)
         lighting.lights[0].colour[c] = ONE;
-    status = stp_set_lighting(r, &lighting);
+    status = stp_renderer_set_lighting(r, &lighting);
     if (status != STP_OK)
         return status;
     stp_material_default(&material);
@@ -82,10 +82,10 @@ int torus_setup(stp_renderer *r)
     material.refraction = 10 * ONE;
     material.gloss = milli(100); /* 2 / shine 20 */
     material.specular = milli(400);
-    stp_set_object_shade(r, &material);
-    stp_set_shading(r, 1);
-    stp_set_backface_removal(r, 1);
-    return stp_set_levels(r, 16);
+    stp_renderer_set_object_shade(r, &material);
+    stp_renderer_set_shading(r, 1);
+    stp_renderer_set_backface_removal(r, 1);
+    return stp_renderer_set_levels(r, 16);
 }
 
 int torus_enter(stp_renderer *r, const stp_vec3 *vertices)
@@ -94,7 +94,7 @@ int torus_enter(stp_renderer *r, const stp_vec3 *vertices)
     (void)stp_segment_delete(r, 1); /* absent on the first frame */
     status = stp_segment_create(r, 1);
     for (k = 0; k < TORUS_TRIANGLES && status == STP_OK; k++)
-        status = stp_polygon(r, &vertices[3 * k], 3);
+        status = stp_renderer_polygon(r, &vertices[3 * k], 3);
     if (status == STP_OK)
         status = stp_segment_close(r);
     return status;
@@ -110,7 +110,7 @@ int torus_render(stp_renderer *r, stp_port *port, const stp_frame_memory *mem)
     out.background = 0;
     out.background_colour = 0;
     out.diffusion = 0; /* a halftone cell, no error diffusion */
-    return stp_render(r, port, &out, mem);
+    return stp_renderer_render(r, port, &out, mem);
 }
 
 int torus_frame(stp_renderer *r, const stp_vec3 *vertices, stp_port *port,

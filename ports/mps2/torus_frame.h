@@ -26,7 +26,7 @@ void torus_build(stp_vec3 *vertices);
 int torus_setup(stp_renderer *r);
 
 /* The two halves of a frame: entering the torus into a fresh segment 1
- * (the previous one deleted), and stp_render of the display file. */
+ * (the previous one deleted), and stp_renderer_render of the display file. */
 int torus_enter(stp_renderer *r, const stp_vec3 *vertices);
 int torus_render(stp_renderer *r, stp_port *port, const stp_frame_memory *mem);
 

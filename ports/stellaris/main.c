@@ -150,7 +150,7 @@ int main(void)
 #if STP_FW_BENCH
     /* the frame through the core alone, the panel's transfer left out */
     port.flush = discard_flush;
-    status = stp_render(r, &port, &out, &mem);
+    status = stp_renderer_render(r, &port, &out, &mem);
     t2 = stp_count_now();
     if (status != STP_OK)
         return fail("render", status);
@@ -162,7 +162,7 @@ int main(void)
     t3 = stp_count_now();
 #endif
     port.flush = board->flush;
-    status = stp_render(r, &port, &out, &mem);
+    status = stp_renderer_render(r, &port, &out, &mem);
     if (status != STP_OK)
         return fail("render to panel", status);
 
@@ -182,7 +182,7 @@ int main(void)
     report("band rows:", STP_FW_BAND_ROWS);
     report("renderer bytes:", stp_renderer_size());
     report("renderer storage bytes:", STP_RENDERER_BYTES); /* the test: the same */
-    report("display-file entries:", stp_display_file_used(r));
+    report("display-file entries:", stp_renderer_display_file_used(r));
 #endif
     board->hold();
     return 0;

@@ -83,14 +83,14 @@ static void test_first_picture_in_five_calls(void **state)
     grab_init(&quick);
     r = stp_renderer_create(&storage, sizeof storage, display_file, 32, W, H);
     assert_non_null(r);
-    assert_int_equal(stp_set_light(r, v3(0, ONE, -2 * ONE), ONE, ONE / 5), STP_OK);
-    assert_int_equal(stp_polygon(r, far_square, 4), STP_OK);
-    assert_int_equal(stp_polygon(r, near_square, 4), STP_OK);
+    assert_int_equal(stp_renderer_set_light(r, v3(0, ONE, -2 * ONE), ONE, ONE / 5), STP_OK);
+    assert_int_equal(stp_renderer_polygon(r, far_square, 4), STP_OK);
+    assert_int_equal(stp_renderer_polygon(r, near_square, 4), STP_OK);
     assert_int_equal(stp_frame_memory_split(&memory, r, &quick.port, NULL, frame_memory,
                                             sizeof frame_memory),
                      STP_OK);
     assert_int_equal(memory.band_rows, 6);
-    assert_int_equal(stp_render(r, &quick.port, NULL, &memory), STP_OK);
+    assert_int_equal(stp_renderer_render(r, &quick.port, NULL, &memory), STP_OK);
     assert_int_equal(quick.flushes, 4); /* 24 rows in bands of 6 */
 
     /* the same display file through the explicit path: one band, output
@@ -98,7 +98,7 @@ static void test_first_picture_in_five_calls(void **state)
     grab_init(&full);
     memset(&output, 0, sizeof output);
     output.hidden = STP_HIDDEN_ZBUFFER;
-    assert_int_equal(stp_render(r, &full.port, &output, &whole), STP_OK);
+    assert_int_equal(stp_renderer_render(r, &full.port, &output, &whole), STP_OK);
     assert_memory_equal(quick.pixels, full.pixels, sizeof quick.pixels);
 
     /* and the picture is a lit picture: background in the corner, the near
@@ -141,8 +141,8 @@ static void test_frame_memory_split(void **state)
     (void)state;
     r = stp_renderer_create(&storage, sizeof storage, display_file, 32, W, H);
     assert_non_null(r);
-    assert_int_equal(stp_polygon(r, far_square, 4), STP_OK);
-    assert_int_equal(stp_polygon(r, near_square, 4), STP_OK);
+    assert_int_equal(stp_renderer_polygon(r, far_square, 4), STP_OK);
+    assert_int_equal(stp_renderer_polygon(r, near_square, 4), STP_OK);
 
     /* Z buffer, MONO1: 4 + 64 bytes a row; a misaligned start is rounded up */
     assert_int_equal(stp_frame_memory_split(&m, r, &port, NULL, bytes + 1, 3 + 68 * 5 + 67), STP_OK);
@@ -162,7 +162,7 @@ static void test_frame_memory_split(void **state)
     /* the painter's sort array comes first, one entry per polygon */
     stp_output_default(&painter);
     painter.hidden = STP_HIDDEN_PAINTER;
-    need = stp_frame_memory_bytes(&port, STP_HIDDEN_PAINTER, 3, stp_polygon_count(r));
+    need = stp_frame_memory_bytes(&port, STP_HIDDEN_PAINTER, 3, stp_renderer_polygon_count(r));
     assert_int_equal(need, 2 * sizeof(stp_sort_entry) + 3 * 4 + 3);
     assert_int_equal(stp_frame_memory_split(&m, r, &port, &painter, bytes + 1, need), STP_OK);
     assert_int_equal(m.band_rows, 3);
@@ -210,7 +210,7 @@ static void test_alignment_checked(void **state)
 }
 
 /* Shading is off at creation (the fill style, the lightest) and on once a
- * light is set; stp_set_shading(r, 0) still turns it off. */
+ * light is set; stp_renderer_set_shading(r, 0) still turns it off. */
 static void test_shading_on_with_light(void **state)
 {
     static stp_renderer_storage storage;
@@ -220,18 +220,18 @@ static void test_shading_on_with_light(void **state)
     (void)state;
     r = stp_renderer_create(&storage, sizeof storage, display_file, 64, W, H);
     assert_non_null(r);
-    assert_int_equal(stp_polygon(r, far_square, 4), STP_OK);
-    assert_int_equal(stp_last_shade(r), ONE); /* style 16 of 16 */
-    assert_int_equal(stp_set_light(r, v3(ONE, ONE, -2 * ONE), ONE, ONE / 5), STP_OK);
-    assert_int_equal(stp_polygon(r, far_square, 4), STP_OK);
-    assert_true(stp_last_shade(r) > 0 && stp_last_shade(r) < ONE);
-    assert_int_equal(stp_set_shading(r, 0), STP_OK);
-    assert_int_equal(stp_polygon(r, far_square, 4), STP_OK);
-    assert_int_equal(stp_last_shade(r), ONE);
+    assert_int_equal(stp_renderer_polygon(r, far_square, 4), STP_OK);
+    assert_int_equal(stp_renderer_last_shade(r), ONE); /* style 16 of 16 */
+    assert_int_equal(stp_renderer_set_light(r, v3(ONE, ONE, -2 * ONE), ONE, ONE / 5), STP_OK);
+    assert_int_equal(stp_renderer_polygon(r, far_square, 4), STP_OK);
+    assert_true(stp_renderer_last_shade(r) > 0 && stp_renderer_last_shade(r) < ONE);
+    assert_int_equal(stp_renderer_set_shading(r, 0), STP_OK);
+    assert_int_equal(stp_renderer_polygon(r, far_square, 4), STP_OK);
+    assert_int_equal(stp_renderer_last_shade(r), ONE);
     stp_lighting_default(&l);
-    assert_int_equal(stp_set_lighting(r, &l), STP_OK);
-    assert_int_equal(stp_polygon(r, far_square, 4), STP_OK);
-    assert_true(stp_last_shade(r) < ONE);
+    assert_int_equal(stp_renderer_set_lighting(r, &l), STP_OK);
+    assert_int_equal(stp_renderer_polygon(r, far_square, 4), STP_OK);
+    assert_true(stp_renderer_last_shade(r) < ONE);
 }
 
 /* Implicit segments: -1 opened by the first polygon, ended by a change of
@@ -247,28 +247,28 @@ static void test_implicit_segments(void **state)
     (void)state;
     r = stp_renderer_create(&storage, sizeof storage, display_file, 64, W, H);
     assert_non_null(r);
-    assert_int_equal(stp_set_light(r, v3(ONE, 0, -2 * ONE), ONE, ONE / 5), STP_OK);
-    assert_int_equal(stp_polygon(r, far_square, 4), STP_OK);
-    first = stp_last_shade(r);
+    assert_int_equal(stp_renderer_set_light(r, v3(ONE, 0, -2 * ONE), ONE, ONE / 5), STP_OK);
+    assert_int_equal(stp_renderer_polygon(r, far_square, 4), STP_OK);
+    first = stp_renderer_last_shade(r);
     assert_int_equal(stp_segment_delete(r, -1), STP_ERR_SEGMENT); /* still open */
     /* a light behind the square: the next implicit segment copies it */
-    assert_int_equal(stp_set_light(r, v3(0, 0, 4 * ONE), ONE, ONE / 5), STP_OK);
-    assert_int_equal(stp_polygon(r, far_square, 4), STP_OK);
-    second = stp_last_shade(r);
+    assert_int_equal(stp_renderer_set_light(r, v3(0, 0, 4 * ONE), ONE, ONE / 5), STP_OK);
+    assert_int_equal(stp_renderer_polygon(r, far_square, 4), STP_OK);
+    second = stp_renderer_last_shade(r);
     assert_true(second < first);
-    assert_int_equal(stp_polygon_count(r), 2);
+    assert_int_equal(stp_renderer_polygon_count(r), 2);
     assert_int_equal(stp_segment_create(r, 7), STP_OK); /* ends -2 */
-    assert_int_equal(stp_polygon(r, near_square, 4), STP_OK);
+    assert_int_equal(stp_renderer_polygon(r, near_square, 4), STP_OK);
     assert_int_equal(stp_segment_close(r), STP_OK);
-    assert_int_equal(stp_polygon_count(r), 3);
-    used = stp_display_file_used(r);
+    assert_int_equal(stp_renderer_polygon_count(r), 3);
+    used = stp_renderer_display_file_used(r);
     assert_int_equal(stp_segment_visibility(r, -2, 0), STP_OK);
-    assert_int_equal(stp_polygon_count(r), 2);
+    assert_int_equal(stp_renderer_polygon_count(r), 2);
     assert_int_equal(stp_segment_delete(r, -1), STP_OK);
-    assert_true(stp_display_file_used(r) < used);
-    assert_int_equal(stp_polygon_count(r), 1);
+    assert_true(stp_renderer_display_file_used(r) < used);
+    assert_int_equal(stp_renderer_polygon_count(r), 1);
     /* a failed stp_segment_create does not end the implicit segment */
-    assert_int_equal(stp_polygon(r, near_square, 4), STP_OK); /* opens -1 again */
+    assert_int_equal(stp_renderer_polygon(r, near_square, 4), STP_OK); /* opens -1 again */
     assert_int_equal(stp_segment_create(r, 7), STP_ERR_SEGMENT);
     assert_int_equal(stp_segment_delete(r, -1), STP_ERR_SEGMENT); /* open */
 }
@@ -288,45 +288,45 @@ static void test_setters_check_arguments(void **state)
     stp_material_default(&m);
     before = storage;
 #define UNCHANGED() assert_memory_equal(&before, &storage, stp_renderer_size())
-    assert_int_equal(stp_set_light(NULL, p, ONE, 0), STP_ERR_ARG);
-    assert_int_equal(stp_set_light(r, p, -1, 0), STP_ERR_ARG);
-    assert_int_equal(stp_set_light(r, p, ONE, -1), STP_ERR_ARG);
-    assert_int_equal(stp_set_light(r, p, ONE, ONE + 1), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_light(NULL, p, ONE, 0), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_light(r, p, -1, 0), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_light(r, p, ONE, -1), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_light(r, p, ONE, ONE + 1), STP_ERR_ARG);
     UNCHANGED();
-    assert_int_equal(stp_set_object_shade(NULL, &m), STP_ERR_ARG);
-    assert_int_equal(stp_set_object_shade(r, NULL), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_object_shade(NULL, &m), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_object_shade(r, NULL), STP_ERR_ARG);
     m.reflectivity = ONE + 1;
-    assert_int_equal(stp_set_object_shade(r, &m), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_object_shade(r, &m), STP_ERR_ARG);
     stp_material_default(&m);
     m.refraction = -1;
-    assert_int_equal(stp_set_object_shade(r, &m), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_object_shade(r, &m), STP_ERR_ARG);
     stp_material_default(&m);
     m.gloss = -1;
-    assert_int_equal(stp_set_object_shade(r, &m), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_object_shade(r, &m), STP_ERR_ARG);
     stp_material_default(&m);
     m.specular = -1;
-    assert_int_equal(stp_set_object_shade(r, &m), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_object_shade(r, &m), STP_ERR_ARG);
     stp_material_default(&m);
     m.colour[2] = ONE + 1;
-    assert_int_equal(stp_set_object_shade(r, &m), STP_ERR_ARG);
-    assert_int_equal(stp_set_shading(NULL, 1), STP_ERR_ARG);
-    assert_int_equal(stp_set_fill_style(NULL, 1), STP_ERR_ARG);
-    assert_int_equal(stp_set_fill_style(r, 0), STP_ERR_ARG);
-    assert_int_equal(stp_set_fill_style(r, 17), STP_ERR_ARG); /* 16 levels */
-    assert_int_equal(stp_set_backface_removal(NULL, 1), STP_ERR_ARG);
-    assert_int_equal(stp_set_levels(NULL, 16), STP_ERR_ARG);
-    assert_int_equal(stp_set_colour(NULL, 1), STP_ERR_ARG);
-    assert_int_equal(stp_set_view(NULL, NULL), STP_ERR_ARG);
-    assert_int_equal(stp_set_lighting(r, NULL), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_object_shade(r, &m), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_shading(NULL, 1), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_fill_style(NULL, 1), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_fill_style(r, 0), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_fill_style(r, 17), STP_ERR_ARG); /* 16 levels */
+    assert_int_equal(stp_renderer_set_backface_removal(NULL, 1), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_levels(NULL, 16), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_colour(NULL, 1), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_view(NULL, NULL), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_lighting(r, NULL), STP_ERR_ARG);
     UNCHANGED();
     /* and in range they take */
     stp_material_default(&m);
-    assert_int_equal(stp_set_object_shade(r, &m), STP_OK);
-    assert_int_equal(stp_set_fill_style(r, 16), STP_OK);
-    assert_int_equal(stp_set_fill_style(r, 1), STP_OK);
-    assert_int_equal(stp_set_backface_removal(r, 1), STP_OK);
-    assert_int_equal(stp_set_shading(r, 1), STP_OK);
-    assert_int_equal(stp_set_light(r, p, 0, ONE), STP_OK);
+    assert_int_equal(stp_renderer_set_object_shade(r, &m), STP_OK);
+    assert_int_equal(stp_renderer_set_fill_style(r, 16), STP_OK);
+    assert_int_equal(stp_renderer_set_fill_style(r, 1), STP_OK);
+    assert_int_equal(stp_renderer_set_backface_removal(r, 1), STP_OK);
+    assert_int_equal(stp_renderer_set_shading(r, 1), STP_OK);
+    assert_int_equal(stp_renderer_set_light(r, p, 0, ONE), STP_OK);
 #undef UNCHANGED
 }
 

@@ -65,7 +65,7 @@ static void set_parallel_view(fixture *f)
     v.hither = fx(1);
     v.fov_degrees = fx(90);
     v.projection = STP_PARALLEL;
-    assert_int_equal(stp_set_view(f->r, &v), STP_OK);
+    assert_int_equal(stp_renderer_set_view(f->r, &v), STP_OK);
 }
 
 /* A renderer of w x h with a parallel view and segment 1 open. */
@@ -110,8 +110,8 @@ static int poly(fixture *f, const dpt *p, int n, double z, int style)
     assert_true(n <= 64);
     for (i = 0; i < n; i++)
         v[i] = dev(f, p[i].x, p[i].y, z);
-    stp_set_fill_style(f->r, style);
-    return stp_polygon(f->r, v, n);
+    stp_renderer_set_fill_style(f->r, style);
+    return stp_renderer_polygon(f->r, v, n);
 }
 
 /* ---- rendering into a frame ---- */
@@ -170,7 +170,7 @@ static uint8_t *render(const fixture *f, const render_opts *o, int *status)
     stp_output out;
     stp_frame_memory mem;
     uint32_t rows = o->band_rows ? o->band_rows : f->h;
-    size_t polygons = stp_polygon_count(f->r);
+    size_t polygons = stp_renderer_polygon_count(f->r);
     memset(&c, 0, sizeof c);
     c.port.width = f->w;
     c.port.height = f->h;
@@ -206,7 +206,7 @@ static uint8_t *render(const fixture *f, const render_opts *o, int *status)
         assert_non_null(mem.setup);
         memset(mem.setup, 0xA5, (polygons ? polygons : 1) * sizeof *mem.setup);
     }
-    *status = stp_render(f->r, &c.port, &out, &mem);
+    *status = stp_renderer_render(f->r, &c.port, &out, &mem);
     if (*status == STP_OK) {
         assert_false(c.out_of_order);
         assert_int_equal(c.next_y, f->h);
@@ -587,10 +587,10 @@ static void test_zbuffer_interpenetrating_polygons(void **state)
         b[1] = dev(&f, 26, 8, 0);
         b[2] = dev(&f, 26, 24, 0);
         b[3] = dev(&f, 6, 24, 0);
-        stp_set_fill_style(f.r, order == 0 ? 2 : 12);
-        assert_int_equal(stp_polygon(f.r, order == 0 ? a : b, 4), STP_OK);
-        stp_set_fill_style(f.r, order == 0 ? 12 : 2);
-        assert_int_equal(stp_polygon(f.r, order == 0 ? b : a, 4), STP_OK);
+        stp_renderer_set_fill_style(f.r, order == 0 ? 2 : 12);
+        assert_int_equal(stp_renderer_polygon(f.r, order == 0 ? a : b, 4), STP_OK);
+        stp_renderer_set_fill_style(f.r, order == 0 ? 12 : 2);
+        assert_int_equal(stp_renderer_polygon(f.r, order == 0 ? b : a, 4), STP_OK);
         frame = render_styles(&f, STP_HIDDEN_ZBUFFER);
         for (j = 8; j < 24; j++)
             for (i = 6; i < 26; i++) {
@@ -629,7 +629,7 @@ static void set_cube_view(fixture *f, const double *from)
     v.hither = fx(1);
     v.fov_degrees = fx(90);
     v.projection = STP_PARALLEL;
-    assert_int_equal(stp_set_view(f->r, &v), STP_OK);
+    assert_int_equal(stp_renderer_set_view(f->r, &v), STP_OK);
 }
 
 /* Outward normal of a cube face, by the right-hand rule. */
@@ -654,8 +654,8 @@ static void enter_cube(fixture *f, int only_front, const double *from)
             continue;
         for (i = 0; i < 4; i++)
             v[i] = vec(cube_faces[k][i][0], cube_faces[k][i][1], cube_faces[k][i][2]);
-        stp_set_fill_style(f->r, 2 + 2 * k);
-        assert_int_equal(stp_polygon(f->r, v, 4), STP_OK);
+        stp_renderer_set_fill_style(f->r, 2 + 2 * k);
+        assert_int_equal(stp_renderer_polygon(f->r, v, 4), STP_OK);
     }
 }
 
@@ -677,9 +677,9 @@ static void test_backface_removal_keeps_faces_towards_viewer(void **state)
         /* removal on, all six faces entered: three enter nothing */
         fixture_open(&with, 32, 32, 256);
         set_cube_view(&with, froms[s]);
-        stp_set_backface_removal(with.r, 1);
+        stp_renderer_set_backface_removal(with.r, 1);
         enter_cube(&with, 0, froms[s]);
-        assert_int_equal(stp_polygon_count(with.r), 3);
+        assert_int_equal(stp_renderer_polygon_count(with.r), 3);
         /* the three faces the viewer sees, entered by hand */
         fixture_open(&front_only, 32, 32, 256);
         set_cube_view(&front_only, froms[s]);
@@ -727,17 +727,17 @@ static void test_backface_removal_single_polygon(void **state)
     uint32_t used;
     (void)state;
     fixture_open(&f, 16, 16, 64);
-    stp_set_backface_removal(f.r, 1);
+    stp_renderer_set_backface_removal(f.r, 1);
     assert_int_equal(poly(&f, ccw, 3, 0, 5), STP_OK);
-    used = stp_display_file_used(f.r);
+    used = stp_renderer_display_file_used(f.r);
     assert_true(used >= 3);
     assert_int_equal(poly(&f, cw, 3, 0, 6), STP_OK); /* enters nothing */
-    assert_int_equal(stp_display_file_used(f.r), used);
-    assert_int_equal(stp_polygon_count(f.r), 1);
+    assert_int_equal(stp_renderer_display_file_used(f.r), used);
+    assert_int_equal(stp_renderer_polygon_count(f.r), 1);
     /* removal off: back faces are kept */
-    stp_set_backface_removal(f.r, 0);
+    stp_renderer_set_backface_removal(f.r, 0);
     assert_int_equal(poly(&f, cw, 3, 0, 6), STP_OK);
-    assert_int_equal(stp_polygon_count(f.r), 2);
+    assert_int_equal(stp_renderer_polygon_count(f.r), 2);
     fixture_close(&f);
 }
 
@@ -758,24 +758,24 @@ static void enter_band_scene(fixture *f)
     stp_lighting_default(&lighting);
     lighting.lights[0].position = vec(5, 10, -20);
     lighting.background = fx(0.2);
-    assert_int_equal(stp_set_lighting(f->r, &lighting), STP_OK);
+    assert_int_equal(stp_renderer_set_lighting(f->r, &lighting), STP_OK);
     stp_material_default(&mat);
     mat.gloss = fx(0.5);
-    stp_set_object_shade(f->r, &mat);
+    stp_renderer_set_object_shade(f->r, &mat);
     assert_int_equal(stp_segment_close(f->r), STP_OK);
     assert_int_equal(stp_segment_create(f->r, 2), STP_OK);
-    stp_set_shading(f->r, 1);
+    stp_renderer_set_shading(f->r, 1);
     tilt[0] = dev(f, 5, 12, -2);
     tilt[1] = dev(f, 33, 10, 5);
     tilt[2] = dev(f, 30, 27, 6);
     tilt[3] = dev(f, 6, 24, -1);
-    assert_int_equal(stp_polygon(f->r, tilt, 4), STP_OK);
-    stp_set_shading(f->r, 0);
+    assert_int_equal(stp_renderer_polygon(f->r, tilt, 4), STP_OK);
+    stp_renderer_set_shading(f->r, 0);
     /* and lines */
-    stp_set_fill_style(f->r, 16);
-    assert_int_equal(stp_move(f->r, dev(f, 0.5, 0.5, -3)), STP_OK);
-    assert_int_equal(stp_line(f->r, dev(f, 36.5, 28.5, -3)), STP_OK);
-    assert_int_equal(stp_line(f->r, dev(f, 2.5, 27.5, -3)), STP_OK);
+    stp_renderer_set_fill_style(f->r, 16);
+    assert_int_equal(stp_renderer_move(f->r, dev(f, 0.5, 0.5, -3)), STP_OK);
+    assert_int_equal(stp_renderer_line(f->r, dev(f, 36.5, 28.5, -3)), STP_OK);
+    assert_int_equal(stp_renderer_line(f->r, dev(f, 2.5, 27.5, -3)), STP_OK);
     assert_int_equal(stp_segment_close(f->r), STP_OK);
 }
 
@@ -864,7 +864,7 @@ static void test_short_setup_array_is_refused(void **state)
     (void)state;
     fixture_open(&f, 37, 29, 256);
     enter_band_scene(&f);
-    assert_true(stp_polygon_count(f.r) > 1);
+    assert_true(stp_renderer_polygon_count(f.r) > 1);
     memset(&c, 0, sizeof c);
     c.port.width = f.w;
     c.port.height = f.h;
@@ -885,7 +885,7 @@ static void test_short_setup_array_is_refused(void **state)
     mem.zbuf_count = sizeof zbuf / sizeof zbuf[0];
     mem.setup = &one;
     mem.setup_count = 1;
-    assert_int_equal(stp_render(f.r, &c.port, &out, &mem), STP_ERR_MEMORY);
+    assert_int_equal(stp_renderer_render(f.r, &c.port, &out, &mem), STP_ERR_MEMORY);
     assert_int_equal(c.flushes, 0);
     free(c.frame);
     fixture_close(&f);
@@ -937,20 +937,20 @@ static void test_display_file_full_leaves_it_unchanged(void **state)
     fixture_open(&f, 16, 16, 14);
     /* 5 entries (style + 4), then 4 (same style) */
     assert_int_equal(poly(&f, sq, 4, 0, 3), STP_OK);
-    assert_int_equal(stp_display_file_used(f.r), 5);
+    assert_int_equal(stp_renderer_display_file_used(f.r), 5);
     assert_int_equal(poly(&f, sq, 4, 0, 3), STP_OK);
-    assert_int_equal(stp_display_file_used(f.r), 9);
+    assert_int_equal(stp_renderer_display_file_used(f.r), 9);
     /* a triangle with a new style needs 4: fits (13) */
     assert_int_equal(poly(&f, tri, 3, 0, 7), STP_OK);
-    assert_int_equal(stp_display_file_used(f.r), 13);
-    used = stp_display_file_used(f.r);
+    assert_int_equal(stp_renderer_display_file_used(f.r), 13);
+    used = stp_renderer_display_file_used(f.r);
     memcpy(snapshot, f.df, sizeof snapshot);
     before = render_styles(&f, STP_HIDDEN_NONE);
     /* neither another square nor a triangle of a new style fits in 1 */
     for (k = 0; k < 3; k++) {
         status = k == 0 ? poly(&f, sq, 4, 0, 3) : poly(&f, tri, 3, 0, 7 + k);
         assert_int_equal(status, STP_ERR_FULL);
-        assert_int_equal(stp_display_file_used(f.r), used);
+        assert_int_equal(stp_renderer_display_file_used(f.r), used);
         assert_memory_equal(snapshot, f.df, sizeof snapshot);
     }
     after = render_styles(&f, STP_HIDDEN_NONE);
@@ -997,31 +997,31 @@ static void test_segment_errors(void **state)
     /* drawing with no open segment opens an implicit one, id -1, which
      * stp_segment_create ends */
     assert_int_equal(poly(&f, tri, 3, 0, 3), STP_OK);
-    assert_int_equal(stp_move(f.r, vec(0, 0, 0)), STP_OK);
-    assert_int_equal(stp_line(f.r, vec(1, 1, 0)), STP_OK);
-    assert_true(stp_display_file_used(f.r) > 0);
+    assert_int_equal(stp_renderer_move(f.r, vec(0, 0, 0)), STP_OK);
+    assert_int_equal(stp_renderer_line(f.r, vec(1, 1, 0)), STP_OK);
+    assert_true(stp_renderer_display_file_used(f.r) > 0);
     assert_int_equal(stp_segment_delete(f.r, -1), STP_ERR_SEGMENT); /* open */
     assert_int_equal(stp_segment_create(f.r, 2), STP_OK);
     assert_int_equal(stp_segment_delete(f.r, -1), STP_OK);
-    assert_int_equal(stp_display_file_used(f.r), 0);
+    assert_int_equal(stp_renderer_display_file_used(f.r), 0);
     /* degenerate and oversized polygons */
     {
         stp_vec3 v[STP_MAX_POLYGON_VERTICES + 1];
         int i;
         for (i = 0; i < 3; i++)
             v[i] = vec(1, 1, 0);
-        assert_int_equal(stp_polygon(f.r, v, 3), STP_ERR_DEGENERATE); /* repeated */
+        assert_int_equal(stp_renderer_polygon(f.r, v, 3), STP_ERR_DEGENERATE); /* repeated */
         v[0] = vec(0, 0, 0);
         v[1] = vec(1, 1, 0);
         v[2] = vec(2, 2, 0);
-        assert_int_equal(stp_polygon(f.r, v, 3), STP_ERR_DEGENERATE); /* collinear */
-        assert_int_equal(stp_polygon(f.r, v, 2), STP_ERR_DEGENERATE);
+        assert_int_equal(stp_renderer_polygon(f.r, v, 3), STP_ERR_DEGENERATE); /* collinear */
+        assert_int_equal(stp_renderer_polygon(f.r, v, 2), STP_ERR_DEGENERATE);
         for (i = 0; i <= STP_MAX_POLYGON_VERTICES; i++)
             v[i] = vec(cos(i * 0.01), sin(i * 0.01), 0);
-        assert_int_equal(stp_polygon(f.r, v, STP_MAX_POLYGON_VERTICES + 1), STP_ERR_TOO_MANY_VERTICES);
-        assert_int_equal(stp_polygon(f.r, NULL, 3), STP_ERR_ARG);
+        assert_int_equal(stp_renderer_polygon(f.r, v, STP_MAX_POLYGON_VERTICES + 1), STP_ERR_TOO_MANY_VERTICES);
+        assert_int_equal(stp_renderer_polygon(f.r, NULL, 3), STP_ERR_ARG);
     }
-    assert_int_equal(stp_display_file_used(f.r), 0);
+    assert_int_equal(stp_renderer_display_file_used(f.r), 0);
     fixture_close(&f);
 }
 
@@ -1039,23 +1039,23 @@ static void test_segment_delete_compacts_and_visibility(void **state)
     fixture_open(&f, 32, 32, 256); /* segment 1 open */
     assert_int_equal(poly(&f, a, 4, 0, 3), STP_OK);
     assert_int_equal(stp_segment_close(f.r), STP_OK);
-    used_b = stp_display_file_used(f.r);
+    used_b = stp_renderer_display_file_used(f.r);
     assert_int_equal(stp_segment_create(f.r, 2), STP_OK);
     assert_int_equal(poly(&f, b1, 3, 0, 5), STP_OK);
     assert_int_equal(poly(&f, b2, 3, 0, 6), STP_OK);
     assert_int_equal(stp_segment_close(f.r), STP_OK);
-    used_b = stp_display_file_used(f.r) - used_b;
+    used_b = stp_renderer_display_file_used(f.r) - used_b;
     assert_int_equal(stp_segment_create(f.r, 3), STP_OK);
     assert_int_equal(poly(&f, c, 4, 0, 8), STP_OK);
     assert_int_equal(stp_segment_close(f.r), STP_OK);
-    used_all = stp_display_file_used(f.r);
-    assert_int_equal(stp_polygon_count(f.r), 4);
+    used_all = stp_renderer_display_file_used(f.r);
+    assert_int_equal(stp_renderer_polygon_count(f.r), 4);
 
     /* delete the middle segment: the file shrinks by its length and the
      * picture is that of segments 1 and 3 alone */
     assert_int_equal(stp_segment_delete(f.r, 2), STP_OK);
-    assert_int_equal(stp_display_file_used(f.r), used_all - used_b);
-    assert_int_equal(stp_polygon_count(f.r), 2);
+    assert_int_equal(stp_renderer_display_file_used(f.r), used_all - used_b);
+    assert_int_equal(stp_renderer_polygon_count(f.r), 2);
     fixture_open(&ref, 32, 32, 256);
     assert_int_equal(poly(&ref, a, 4, 0, 3), STP_OK);
     assert_int_equal(stp_segment_close(ref.r), STP_OK);
@@ -1085,7 +1085,7 @@ static void test_segment_delete_compacts_and_visibility(void **state)
 
     /* an invisible segment is not drawn (nor counted for the painter) */
     assert_int_equal(stp_segment_visibility(f.r, 3, 0), STP_OK);
-    assert_int_equal(stp_polygon_count(f.r), 2);
+    assert_int_equal(stp_renderer_polygon_count(f.r), 2);
     got = render_styles(&f, STP_HIDDEN_PAINTER);
     assert_int_equal(count_style(&f, got, 8), 0);
     assert_true(count_style(&f, got, 3) > 0);
@@ -1111,7 +1111,7 @@ static void set_perspective_view(fixture *f)
     v.window_half = fx(1);
     v.hither = fx(1);
     v.projection = STP_PERSPECTIVE;
-    assert_int_equal(stp_set_view(f->r, &v), STP_OK);
+    assert_int_equal(stp_renderer_set_view(f->r, &v), STP_OK);
 }
 
 static void test_hither_clipping(void **state)
@@ -1142,10 +1142,10 @@ static void test_hither_clipping(void **state)
     b[1] = vec(xs[0], -1, -5);
     b[2] = vec(xs[1], -1, -5);
     b[3] = vec(xs[1], -1, -9);
-    stp_set_fill_style(crossing.r, 6);
-    stp_set_fill_style(clipped.r, 6);
-    assert_int_equal(stp_polygon(crossing.r, a, 4), STP_OK);
-    assert_int_equal(stp_polygon(clipped.r, b, 4), STP_OK);
+    stp_renderer_set_fill_style(crossing.r, 6);
+    stp_renderer_set_fill_style(clipped.r, 6);
+    assert_int_equal(stp_renderer_polygon(crossing.r, a, 4), STP_OK);
+    assert_int_equal(stp_renderer_polygon(clipped.r, b, 4), STP_OK);
     fa = render_styles(&crossing, STP_HIDDEN_ZBUFFER);
     fb = render_styles(&clipped, STP_HIDDEN_ZBUFFER);
     assert_memory_equal(fa, fb, 32 * 32);
@@ -1179,13 +1179,13 @@ static void test_polygon_behind_the_eye_enters_nothing(void **state)
     v[0] = vec(-1, -1, -12);
     v[1] = vec(1, -1, -12);
     v[2] = vec(0, 1, -15);
-    assert_int_equal(stp_polygon(f.r, v, 3), STP_OK);
-    assert_int_equal(stp_display_file_used(f.r), 0);
+    assert_int_equal(stp_renderer_polygon(f.r, v, 3), STP_OK);
+    assert_int_equal(stp_renderer_display_file_used(f.r), 0);
     /* a wall through the eye's own plane, steeply: clipped, drawn, no crash */
     v[0] = vec(-30, -30, -20);
     v[1] = vec(30, -30, 5);
     v[2] = vec(0, 30, -8);
-    assert_int_equal(stp_polygon(f.r, v, 3), STP_OK);
+    assert_int_equal(stp_renderer_polygon(f.r, v, 3), STP_OK);
     frame = render_styles(&f, STP_HIDDEN_ZBUFFER);
     assert_true(count_style(&f, frame, 16) > 0);
     free(frame);
@@ -1223,44 +1223,44 @@ static void test_render_rejects_small_buffers(void **state)
     mem.band_rows = 4;
     mem.band_size = 64 * 4 - 1; /* one byte short */
     out.hidden = STP_HIDDEN_NONE;
-    assert_int_equal(stp_render(f.r, &c.port, &out, &mem), STP_ERR_MEMORY);
+    assert_int_equal(stp_renderer_render(f.r, &c.port, &out, &mem), STP_ERR_MEMORY);
     assert_int_equal(c.flushes, 0);
     mem.band_size = 64 * 4;
-    assert_int_equal(stp_render(f.r, &c.port, &out, &mem), STP_OK);
+    assert_int_equal(stp_renderer_render(f.r, &c.port, &out, &mem), STP_OK);
     /* Z buffer: width * band_rows entries */
     out.hidden = STP_HIDDEN_ZBUFFER;
     mem.zbuf = zbuf;
     mem.zbuf_count = 64 * 4 - 1;
-    assert_int_equal(stp_render(f.r, &c.port, &out, &mem), STP_ERR_MEMORY);
+    assert_int_equal(stp_renderer_render(f.r, &c.port, &out, &mem), STP_ERR_MEMORY);
     mem.zbuf = NULL;
     mem.zbuf_count = 64 * 4;
-    assert_int_equal(stp_render(f.r, &c.port, &out, &mem), STP_ERR_MEMORY);
+    assert_int_equal(stp_renderer_render(f.r, &c.port, &out, &mem), STP_ERR_MEMORY);
     mem.zbuf = zbuf;
-    assert_int_equal(stp_render(f.r, &c.port, &out, &mem), STP_OK);
+    assert_int_equal(stp_renderer_render(f.r, &c.port, &out, &mem), STP_OK);
     /* painter: one entry per polygon */
     out.hidden = STP_HIDDEN_PAINTER;
     mem.sort = sort;
     mem.sort_count = 1;
-    assert_int_equal(stp_render(f.r, &c.port, &out, &mem), STP_ERR_MEMORY);
+    assert_int_equal(stp_renderer_render(f.r, &c.port, &out, &mem), STP_ERR_MEMORY);
     mem.sort_count = 2;
-    assert_int_equal(stp_render(f.r, &c.port, &out, &mem), STP_OK);
+    assert_int_equal(stp_renderer_render(f.r, &c.port, &out, &mem), STP_OK);
     /* band rows out of range, wrong port size, no flush */
     mem.band_rows = 0;
-    assert_int_equal(stp_render(f.r, &c.port, &out, &mem), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_render(f.r, &c.port, &out, &mem), STP_ERR_ARG);
     mem.band_rows = 9;
-    assert_int_equal(stp_render(f.r, &c.port, &out, &mem), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_render(f.r, &c.port, &out, &mem), STP_ERR_ARG);
     mem.band_rows = 4;
     c.port.width = 63;
-    assert_int_equal(stp_render(f.r, &c.port, &out, &mem), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_render(f.r, &c.port, &out, &mem), STP_ERR_ARG);
     c.port.width = 64;
     out.hidden = (stp_hidden)7;
-    assert_int_equal(stp_render(f.r, &c.port, &out, &mem), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_render(f.r, &c.port, &out, &mem), STP_ERR_ARG);
     out.hidden = STP_HIDDEN_NONE;
     /* the port stops the frame */
     c.flushes = 0;
     c.next_y = 0;
     c.fail_on_flush = 1;
-    assert_int_equal(stp_render(f.r, &c.port, &out, &mem), STP_ERR_PORT);
+    assert_int_equal(stp_renderer_render(f.r, &c.port, &out, &mem), STP_ERR_PORT);
     assert_int_equal(c.flushes, 2);
     free(c.frame);
     fixture_close(&f);

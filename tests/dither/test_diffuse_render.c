@@ -166,12 +166,12 @@ static void test_memory_checked(void **state)
     mem.band = band;
     mem.band_rows = 4;
     mem.band_size = 2 * 4; /* MONO1 rows */
-    assert_int_equal(stp_render(r, &f.port, &out, &mem), STP_ERR_MEMORY);
+    assert_int_equal(stp_renderer_render(r, &f.port, &out, &mem), STP_ERR_MEMORY);
     mem.band_size = sizeof band;
     d.error_count = 2 * 20 - 1;
-    assert_int_equal(stp_render(r, &f.port, &out, &mem), STP_ERR_MEMORY);
+    assert_int_equal(stp_renderer_render(r, &f.port, &out, &mem), STP_ERR_MEMORY);
     d.error_count = 2 * 20;
-    assert_int_equal(stp_render(r, &f.port, &out, &mem), STP_OK);
+    assert_int_equal(stp_renderer_render(r, &f.port, &out, &mem), STP_OK);
     /* a mid-grey frame: FS gives a checkerboard of 0x55 / 0xAA rows (by
      * hand: 127 is OFF, passing 7/16 of 127 right; 182.6 is ON ...) */
     assert_true(f.pixels[0] == 0x55 || f.pixels[0] == 0xAA);

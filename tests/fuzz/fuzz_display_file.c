@@ -23,9 +23,9 @@
  *  - segments follow a model of the API's rules: the status of create,
  *    close, delete and visibility; the display file's use (each segment's
  *    share is removed on delete, used <= capacity, failed calls enter
- *    nothing); stp_polygon_count equals the polygons entered in visible
- *    segments; stp_last_shade is -1 or in [0, 1];
- *  - stp_render returns the status the arguments call for (one fault at a
+ *    nothing); stp_renderer_polygon_count equals the polygons entered in visible
+ *    segments; stp_renderer_last_shade is -1 or in [0, 1];
+ *  - stp_renderer_render returns the status the arguments call for (one fault at a
  *    time: a bad format, band height or hidden method, a short buffer, a
  *    port that refuses a band), and the port sees bands top to bottom,
  *    whole rows, the packed stride, nothing after a refusal;
@@ -192,12 +192,12 @@ static void check_counts(const state *st)
         if (st->seg[i].visible)
             polygons += st->seg[i].polygons;
     }
-    FZ_CHECK(stp_display_file_used(st->r) == used, "display file holds %u, segments %u",
-             (unsigned)stp_display_file_used(st->r), (unsigned)used);
+    FZ_CHECK(stp_renderer_display_file_used(st->r) == used, "display file holds %u, segments %u",
+             (unsigned)stp_renderer_display_file_used(st->r), (unsigned)used);
     FZ_CHECK(used <= st->capacity, "used %u over capacity %u", (unsigned)used,
              (unsigned)st->capacity);
-    FZ_CHECK(stp_polygon_count(st->r) == polygons, "stp_polygon_count %u, model %u",
-             (unsigned)stp_polygon_count(st->r), (unsigned)polygons);
+    FZ_CHECK(stp_renderer_polygon_count(st->r) == polygons, "stp_renderer_polygon_count %u, model %u",
+             (unsigned)stp_renderer_polygon_count(st->r), (unsigned)polygons);
 }
 
 /* Implicit segments (render.h): a drawing call with no open segment opens
@@ -240,7 +240,7 @@ static int open_implicit(state *st)
 /* Book what a drawing call entered into the open segment. */
 static void account(state *st, uint32_t before, int status, int polygon)
 {
-    uint32_t after = stp_display_file_used(st->r);
+    uint32_t after = stp_renderer_display_file_used(st->r);
     if (status != STP_OK) {
         FZ_CHECK(after == before, "a failed call (%d) entered %u entries", status,
                  (unsigned)(after - before));
@@ -318,7 +318,7 @@ static void *xmalloc(size_t n)
     return p;
 }
 
-/* One stp_render into a fresh frame; returns the status, *frame_out gets the
+/* One stp_renderer_render into a fresh frame; returns the status, *frame_out gets the
  * frame (caller frees) when the status is STP_OK. */
 static int render_once(state *st, const render_args *a, fault f, uint32_t fail_at,
                        uint8_t **frame_out)
@@ -328,7 +328,7 @@ static int render_once(state *st, const render_args *a, fault f, uint32_t fail_a
     size_t stride = stp_row_bytes(a->format, st->width);
     size_t row_bytes = stride == 0 ? 1 : stride;
     uint32_t band_rows = a->band_rows;
-    uint32_t polygons = stp_polygon_count(st->r);
+    uint32_t polygons = stp_renderer_polygon_count(st->r);
     int expect = STP_OK, status;
 
     memset(&cap, 0, sizeof cap);
@@ -379,9 +379,9 @@ static int render_once(state *st, const render_args *a, fault f, uint32_t fail_a
             f != FAULT_BAND_SIZE &&
             cap.port.format == STP_PIXEL_STYLE8 && out.styles == NULL && st->levels > 255)
             expect = STP_ERR_ARG;
-        status = stp_render(st->r, &cap.port, &out, &mem);
+        status = stp_renderer_render(st->r, &cap.port, &out, &mem);
     }
-    FZ_CHECK(status == expect, "stp_render returned %d (%s), expected %d (fault %d)", status,
+    FZ_CHECK(status == expect, "stp_renderer_render returned %d (%s), expected %d (fault %d)", status,
              stp_status_text(status), expect, (int)f);
     if (status == STP_OK)
         FZ_CHECK(cap.next_y == st->height, "frame ended at row %u of %u", (unsigned)cap.next_y,
@@ -578,7 +578,7 @@ static void op_render(state *st, fz_reader *in, int final_hidden)
     if (final_hidden < 0 && fz_u8(in) % 4 == 0) {
         f = (fault)fz_range(in, 1, FAULT_COUNT - 1);
         fail_at = fz_u8(in);
-        if (f == FAULT_SORT && stp_polygon_count(st->r) == 0)
+        if (f == FAULT_SORT && stp_renderer_polygon_count(st->r) == 0)
             f = FAULT_NONE; /* no array can be short of zero entries */
     }
 
@@ -624,16 +624,16 @@ static void op_view(state *st, fz_reader *in)
     v.projection = (stp_projection)fz_range(in, 0, 2);
     bad_projection = v.projection != STP_PERSPECTIVE && v.projection != STP_PARALLEL;
     snap(st);
-    status = stp_set_view(st->r, &v);
-    same_if_failed(st, status, "stp_set_view");
+    status = stp_renderer_set_view(st->r, &v);
+    same_if_failed(st, status, "stp_renderer_set_view");
     FZ_CHECK(status == STP_OK || status == STP_ERR_VIEW || (bad_projection && status == STP_ERR_ARG),
-             "stp_set_view returned %d", status);
+             "stp_renderer_set_view returned %d", status);
     FZ_CHECK(!(bad_projection && status == STP_OK), "an unknown projection was accepted");
     if (status == STP_OK) {
         int j;
         end_implicit(st);
         st->target = v.at;
-        /* "stp_set_view removes every map" */
+        /* "stp_renderer_set_view removes every map" */
         for (j = 0; j < STP_MAX_LIGHTS; j++)
             drop_map(st, j);
     }
@@ -656,8 +656,8 @@ static void op_lighting(state *st, fz_reader *in)
             l.lights[i].colour[c] = fz_u8(in) & 1 ? fz_fix(in) : ONE;
     }
     snap(st);
-    status = stp_set_lighting(st->r, &l);
-    same_if_failed(st, status, "stp_set_lighting");
+    status = stp_renderer_set_lighting(st->r, &l);
+    same_if_failed(st, status, "stp_renderer_set_lighting");
     if (l.count < 0 || l.count > STP_MAX_LIGHTS)
         FZ_CHECK(status == STP_ERR_ARG, "light count %d gave %d", l.count, status);
     else
@@ -668,7 +668,7 @@ static void op_lighting(state *st, fz_reader *in)
     }
 }
 
-/* stp_set_shadow_map: one fault at most (light, size, short buffer); the
+/* stp_renderer_set_shadow_map: one fault at most (light, size, short buffer); the
  * view's own values may be refused (STP_ERR_VIEW).  The old buffer of a
  * light is freed once a new map replaces it, so ASan sees a stale use. */
 static void op_shadow_map(state *st, fz_reader *in)
@@ -698,14 +698,14 @@ static void op_shadow_map(state *st, fz_reader *in)
     view.fov_degrees = how & 4 ? fz_fix(in) : fz_range(in, 1, 179) * ONE;
     view.near = how & 16 ? fz_fix(in) : (stp_fix)fz_u8(in) * (ONE / 16);
     snap(st);
-    status = stp_set_shadow_map(st->r, light, depth, count, w, h, how & 1 ? &view : NULL);
-    same_if_failed(st, status, "stp_set_shadow_map");
+    status = stp_renderer_set_shadow_map(st->r, light, depth, count, w, h, how & 1 ? &view : NULL);
+    same_if_failed(st, status, "stp_renderer_set_shadow_map");
     if (expect == STP_OK)
         FZ_CHECK(status == STP_OK || status == STP_ERR_VIEW,
-                 "stp_set_shadow_map(light %d, %ux%u) returned %d", light, (unsigned)w,
+                 "stp_renderer_set_shadow_map(light %d, %ux%u) returned %d", light, (unsigned)w,
                  (unsigned)h, status);
     else
-        FZ_CHECK(status == expect, "stp_set_shadow_map(light %d, %ux%u, count %zu) returned %d, "
+        FZ_CHECK(status == expect, "stp_renderer_set_shadow_map(light %d, %ux%u, count %zu) returned %d, "
                  "expected %d", light, (unsigned)w, (unsigned)h, count, status, expect);
     if (status == STP_OK) {
         size_t i;
@@ -723,10 +723,10 @@ static void op_remove_shadow_map(state *st, fz_reader *in)
     int light = fz_range(in, -1, STP_MAX_LIGHTS);
     int status;
     snap(st);
-    status = stp_remove_shadow_map(st->r, light);
-    same_if_failed(st, status, "stp_remove_shadow_map");
+    status = stp_renderer_remove_shadow_map(st->r, light);
+    same_if_failed(st, status, "stp_renderer_remove_shadow_map");
     int valid = light >= 0 && light < STP_MAX_LIGHTS;
-    FZ_CHECK(status == (valid ? STP_OK : STP_ERR_ARG), "stp_remove_shadow_map(%d) returned %d",
+    FZ_CHECK(status == (valid ? STP_OK : STP_ERR_ARG), "stp_renderer_remove_shadow_map(%d) returned %d",
              light, status);
     if (valid)
         drop_map(st, light);
@@ -812,15 +812,15 @@ static void op_segment_visibility(state *st, fz_reader *in)
         st->seg[s].visible = visible != 0;
 }
 
-/* stp_polygon (flat), stp_polygon_smooth (vertex normals) or
- * stp_polygon_vertex_shades (shades given), by `smooth` 0, 1, 2. */
+/* stp_renderer_polygon (flat), stp_renderer_polygon_smooth (vertex normals) or
+ * stp_renderer_polygon_vertex_shades (shades given), by `smooth` 0, 1, 2. */
 static void op_polygon(state *st, fz_reader *in, int smooth)
 {
     uint8_t kind = fz_u8(in);
     int n, i, status, expect = STP_OK;
     stp_vec3 *v, *normals = NULL;
     stp_fix *shades = NULL;
-    uint32_t before = stp_display_file_used(st->r);
+    uint32_t before = stp_renderer_display_file_used(st->r);
     stp_fix shade;
 
     if (kind < 200)
@@ -874,33 +874,33 @@ static void op_polygon(state *st, fz_reader *in, int smooth)
     else
         expect = open_implicit(st);
     if (smooth == 1)
-        status = stp_polygon_smooth(st->r, v, normals, n);
+        status = stp_renderer_polygon_smooth(st->r, v, normals, n);
     else if (smooth == 2)
-        status = stp_polygon_vertex_shades(st->r, v, shades, n);
+        status = stp_renderer_polygon_vertex_shades(st->r, v, shades, n);
     else
-        status = stp_polygon(st->r, v, n);
+        status = stp_renderer_polygon(st->r, v, n);
     free(v);
     free(normals);
     free(shades);
     if (expect != STP_OK)
-        FZ_CHECK(status == expect, "stp_polygon(n = %d) returned %d, expected %d", n, status,
+        FZ_CHECK(status == expect, "stp_renderer_polygon(n = %d) returned %d, expected %d", n, status,
                  expect);
     else
         FZ_CHECK(status == STP_OK || status == STP_ERR_DEGENERATE || status == STP_ERR_FULL,
-                 "stp_polygon(n = %d) returned %d", n, status);
+                 "stp_renderer_polygon(n = %d) returned %d", n, status);
     account(st, before, status, 1);
-    if (status == STP_OK && stp_display_file_used(st->r) > before) {
-        shade = stp_last_shade(st->r);
-        FZ_CHECK(shade >= 0 && shade <= ONE, "stp_last_shade %d outside [0, 1]", (int)shade);
+    if (status == STP_OK && stp_renderer_display_file_used(st->r) > before) {
+        shade = stp_renderer_last_shade(st->r);
+        FZ_CHECK(shade >= 0 && shade <= ONE, "stp_renderer_last_shade %d outside [0, 1]", (int)shade);
     }
 }
 
 static void op_pen(state *st, fz_reader *in, int line)
 {
-    uint32_t before = stp_display_file_used(st->r);
+    uint32_t before = stp_renderer_display_file_used(st->r);
     stp_vec3 p = fz_u8(in) & 1 ? fz_vec(in) : fz_near(in, st->target);
     int expect = open_implicit(st);
-    int status = line ? stp_line(st->r, p) : stp_move(st->r, p);
+    int status = line ? stp_renderer_line(st->r, p) : stp_renderer_move(st->r, p);
     if (expect != STP_OK)
         FZ_CHECK(status == expect, "pen call with no free segment slot gave %d", status);
     else
@@ -929,12 +929,12 @@ static void op_transparency(state *st, fz_reader *in)
     in_range = t_min >= 0 && t_min <= ONE && t_max >= 0 && t_max <= ONE && power >= 1 &&
                power <= 4 && absorption >= 0 && thickness >= 0;
     snap(st);
-    status = stp_set_transparency(st->r, t_min, t_max, power, absorption, thickness);
-    same_if_failed(st, status, "stp_set_transparency");
+    status = stp_renderer_set_transparency(st->r, t_min, t_max, power, absorption, thickness);
+    same_if_failed(st, status, "stp_renderer_set_transparency");
     if (status == STP_OK && (t_min != 0 || t_max != 0))
         st->transparency_seen = 1;
     FZ_CHECK(status == (in_range ? STP_OK : STP_ERR_ARG),
-             "stp_set_transparency(%d, %d, %d, %d, %d) returned %d", (int)t_min, (int)t_max,
+             "stp_renderer_set_transparency(%d, %d, %d, %d, %d) returned %d", (int)t_min, (int)t_max,
              power, (int)absorption, (int)thickness, status);
 }
 
@@ -947,9 +947,9 @@ static void op_call(state *st, fz_reader *in)
         stp_fix bright = fz_fix(in), background = fz_fix(in);
         int status, ok = bright >= 0 && background >= 0 && background <= ONE;
         snap(st);
-        status = stp_set_light(st->r, p, bright, background);
-        same_if_failed(st, status, "stp_set_light");
-        FZ_CHECK(status == (ok ? STP_OK : STP_ERR_ARG), "stp_set_light returned %d", status);
+        status = stp_renderer_set_light(st->r, p, bright, background);
+        same_if_failed(st, status, "stp_renderer_set_light");
+        FZ_CHECK(status == (ok ? STP_OK : STP_ERR_ARG), "stp_renderer_set_light returned %d", status);
         if (status == STP_OK) {
             st->light_count = 1;
             end_implicit(st);
@@ -974,38 +974,38 @@ static void op_call(state *st, fz_reader *in)
         for (c = 0; c < 3; c++)
             ok = ok && m.colour[c] >= 0 && m.colour[c] <= ONE;
         snap(st);
-        status = stp_set_object_shade(st->r, &m);
-        same_if_failed(st, status, "stp_set_object_shade");
-        FZ_CHECK(status == (ok ? STP_OK : STP_ERR_ARG), "stp_set_object_shade returned %d", status);
+        status = stp_renderer_set_object_shade(st->r, &m);
+        same_if_failed(st, status, "stp_renderer_set_object_shade");
+        FZ_CHECK(status == (ok ? STP_OK : STP_ERR_ARG), "stp_renderer_set_object_shade returned %d", status);
         break;
     }
     case 4:
-        FZ_CHECK(stp_set_shading(st->r, (int8_t)fz_u8(in) % 3) == STP_OK, "stp_set_shading failed");
+        FZ_CHECK(stp_renderer_set_shading(st->r, (int8_t)fz_u8(in) % 3) == STP_OK, "stp_renderer_set_shading failed");
         break;
     case 5: {
         int index = fz_range(in, -2, 300), status;
         snap(st);
-        status = stp_set_fill_style(st->r, index);
-        same_if_failed(st, status, "stp_set_fill_style");
+        status = stp_renderer_set_fill_style(st->r, index);
+        same_if_failed(st, status, "stp_renderer_set_fill_style");
         FZ_CHECK(status == (index >= 1 && index <= st->levels ? STP_OK : STP_ERR_ARG),
-                 "stp_set_fill_style(%d) returned %d", index, status);
+                 "stp_renderer_set_fill_style(%d) returned %d", index, status);
         break;
     }
     case 6: {
         int levels = fz_u8(in) & 1 ? fz_range(in, 2, 256) : fz_range(in, -1, 300);
         int status;
         snap(st);
-        status = stp_set_levels(st->r, levels);
-        same_if_failed(st, status, "stp_set_levels");
+        status = stp_renderer_set_levels(st->r, levels);
+        same_if_failed(st, status, "stp_renderer_set_levels");
         FZ_CHECK(status == (levels >= 2 && levels <= 256 ? STP_OK : STP_ERR_ARG),
-                 "stp_set_levels(%d) returned %d", levels, status);
+                 "stp_renderer_set_levels(%d) returned %d", levels, status);
         if (status == STP_OK)
             st->levels = levels;
         break;
     }
     case 7:
-        FZ_CHECK(stp_set_backface_removal(st->r, (int8_t)fz_u8(in) % 3) == STP_OK,
-                 "stp_set_backface_removal failed");
+        FZ_CHECK(stp_renderer_set_backface_removal(st->r, (int8_t)fz_u8(in) % 3) == STP_OK,
+                 "stp_renderer_set_backface_removal failed");
         break;
     case 8:
     case 9: op_segment_create(st, in); break;
@@ -1018,7 +1018,7 @@ static void op_call(state *st, fz_reader *in)
     case 16: op_polygon(st, in, 2); break;
     case 17: {
         int on = (int8_t)fz_u8(in) % 3;
-        FZ_CHECK(stp_set_colour(st->r, on) == STP_OK, "stp_set_colour(%d) failed", on);
+        FZ_CHECK(stp_renderer_set_colour(st->r, on) == STP_OK, "stp_renderer_set_colour(%d) failed", on);
         st->colour_seen |= on != 0;
         break;
     }

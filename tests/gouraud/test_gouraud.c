@@ -49,8 +49,8 @@ static stp_renderer *make(void *mem, size_t size, stp_instr *df, uint32_t cap)
     v.hither = fx(1);
     v.projection = STP_PARALLEL;
     assert_non_null(r);
-    assert_int_equal(stp_set_view(r, &v), STP_OK);
-    assert_int_equal(stp_set_levels(r, 256), STP_OK);
+    assert_int_equal(stp_renderer_set_view(r, &v), STP_OK);
+    assert_int_equal(stp_renderer_set_levels(r, 256), STP_OK);
     assert_int_equal(stp_segment_create(r, 1), STP_OK);
     return r;
 }
@@ -67,7 +67,7 @@ static void render_grey(stp_renderer *r, uint32_t band_rows)
     mem.band_size = sizeof band;
     mem.band_rows = band_rows;
     memset(frame, 0xAA, sizeof frame);
-    assert_int_equal(stp_render(r, &port, &out, &mem), STP_OK);
+    assert_int_equal(stp_renderer_render(r, &port, &out, &mem), STP_OK);
 }
 
 /* A rectangle across the whole device, shade 0 on the left edge and 1 on the
@@ -86,7 +86,7 @@ static void test_horizontal_ramp(void **state)
     v[1].x = fx(W / 2.0);  v[1].y = fx(-H / 2.0); v[1].z = 0;
     v[2].x = fx(W / 2.0);  v[2].y = fx(H / 2.0);  v[2].z = 0;
     v[3].x = fx(-W / 2.0); v[3].y = fx(H / 2.0);  v[3].z = 0;
-    assert_int_equal(stp_polygon_vertex_shades(r, v, s, 4), STP_OK);
+    assert_int_equal(stp_renderer_polygon_vertex_shades(r, v, s, 4), STP_OK);
     render_grey(r, 5);
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {
@@ -118,7 +118,7 @@ static void test_triangle_barycentric(void **state)
         v[i].z = 0;
         s[i] = fx(ps[i]);
     }
-    assert_int_equal(stp_polygon_vertex_shades(r, v, s, 3), STP_OK);
+    assert_int_equal(stp_renderer_polygon_vertex_shades(r, v, s, 3), STP_OK);
     render_grey(r, H);
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {
@@ -159,7 +159,7 @@ static void test_one_pixel_span_and_clamping(void **state)
     v[0].x = fx(8.2); v[0].y = fx(-10); v[0].z = 0;
     v[1].x = fx(8.8); v[1].y = fx(-10); v[1].z = 0;
     v[2].x = fx(8.5); v[2].y = fx(10);  v[2].z = 0;
-    assert_int_equal(stp_polygon_vertex_shades(r, v, s, 3), STP_OK);
+    assert_int_equal(stp_renderer_polygon_vertex_shades(r, v, s, 3), STP_OK);
     render_grey(r, 3);
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {

@@ -3,7 +3,7 @@
  * The seed's user parameters (docs/model.md section 2) through the public
  * API.  COPY-LIGHT and SET-LIGHT: a segment keeps the lighting that was
  * current when it was created, so a light set while the segment is open
- * shades only the polygons of the next segment (seen through stp_last_shade,
+ * shades only the polygons of the next segment (seen through stp_renderer_last_shade,
  * the shade SHADE-CHECK gave the last polygon: one square lit head-on and at
  * a grazing angle).  SET-SHADING: with shading off a polygon is drawn in the
  * current fill style; on, in the INTENSITY style of its shade.
@@ -48,8 +48,8 @@ static stp_renderer *renderer(void)
     v.fov_degrees = fx(60);
     v.hither = fx(1);
     v.projection = STP_PERSPECTIVE;
-    assert_int_equal(stp_set_view(r, &v), STP_OK);
-    stp_set_shading(r, 1);
+    assert_int_equal(stp_renderer_set_view(r, &v), STP_OK);
+    stp_renderer_set_shading(r, 1);
     return r;
 }
 
@@ -57,12 +57,12 @@ static stp_renderer *renderer(void)
 static stp_fix square(stp_renderer *r)
 {
     const stp_vec3 v[4] = {vec(-1, -1, 0), vec(1, -1, 0), vec(1, 1, 0), vec(-1, 1, 0)};
-    assert_int_equal(stp_polygon(r, v, 4), STP_OK);
-    return stp_last_shade(r);
+    assert_int_equal(stp_renderer_polygon(r, v, 4), STP_OK);
+    return stp_renderer_last_shade(r);
 }
 
-static void light_a(stp_renderer *r) { stp_set_light(r, vec(0, 0, 1.5), fx(1), fx(0.2)); }
-static void light_b(stp_renderer *r) { stp_set_light(r, vec(30, 0, 2), fx(1), fx(0.2)); }
+static void light_a(stp_renderer *r) { stp_renderer_set_light(r, vec(0, 0, 1.5), fx(1), fx(0.2)); }
+static void light_b(stp_renderer *r) { stp_renderer_set_light(r, vec(30, 0, 2), fx(1), fx(0.2)); }
 
 static void test_copy_light_per_segment(void **state)
 {
@@ -123,14 +123,14 @@ static int pixels_of_square(int shading, int *expected_style)
     view.window_half = fx(SIDE / 2.0);
     view.hither = fx(1);
     view.projection = STP_PARALLEL;
-    assert_int_equal(stp_set_view(r, &view), STP_OK);
-    stp_set_light(r, vec(0, 0, 3), fx(1), fx(0.1));
-    stp_set_shading(r, shading);
-    stp_set_fill_style(r, 7);
+    assert_int_equal(stp_renderer_set_view(r, &view), STP_OK);
+    stp_renderer_set_light(r, vec(0, 0, 3), fx(1), fx(0.1));
+    stp_renderer_set_shading(r, shading);
+    stp_renderer_set_fill_style(r, 7);
     assert_int_equal(stp_segment_create(r, 1), STP_OK);
-    assert_int_equal(stp_polygon(r, v, 4), STP_OK);
+    assert_int_equal(stp_renderer_polygon(r, v, 4), STP_OK);
     assert_int_equal(stp_segment_close(r), STP_OK);
-    *expected_style = shading ? stp_intensity_index(stp_last_shade(r), 16) : 7;
+    *expected_style = shading ? stp_intensity_index(stp_renderer_last_shade(r), 16) : 7;
     memset(&out, 0, sizeof out);
     out.hidden = STP_HIDDEN_NONE;
     memset(&fm, 0, sizeof fm);
@@ -138,7 +138,7 @@ static int pixels_of_square(int shading, int *expected_style)
     fm.band_size = sizeof band;
     fm.band_rows = SIDE;
     memset(frame, 0, sizeof frame);
-    assert_int_equal(stp_render(r, &port, &out, &fm), STP_OK);
+    assert_int_equal(stp_renderer_render(r, &port, &out, &fm), STP_OK);
     for (i = 0; i < SIDE * SIDE; i++)
         count += frame[i] == *expected_style;
     return count;

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Shadows by a shadow Z buffer per light (docs/model.md section 5; render.h,
- * stp_set_shadow_map) through the public API.
+ * stp_renderer_set_shadow_map) through the public API.
  *
  * Every scene here is a few quads (a floor, casters) whose picture is also
  * traced in double precision: for each pixel centre, the nearest quad along
@@ -61,7 +61,7 @@ typedef struct scene {
     stp_hidden hidden;
     uint32_t band_rows;
     stp_pixel_format format;
-    int smooth;         /* floor (quad 0) entered with stp_polygon_smooth */
+    int smooth;         /* floor (quad 0) entered with stp_renderer_polygon_smooth */
     int colour;         /* colour shading, RGB888 */
     int nquads;
     quad quads[MAX_QUADS];
@@ -150,8 +150,8 @@ static stp_renderer *build(const scene *s, int with_maps)
     v.window_half = fx(H / 2.0);
     v.hither = fx(1);
     v.projection = s->perspective ? STP_PERSPECTIVE : STP_PARALLEL;
-    assert_int_equal(stp_set_view(r, &v), STP_OK);
-    assert_int_equal(stp_set_levels(r, LEVELS), STP_OK);
+    assert_int_equal(stp_renderer_set_view(r, &v), STP_OK);
+    assert_int_equal(stp_renderer_set_levels(r, LEVELS), STP_OK);
     stp_lighting_default(&l);
     l.brightness = STP_FIX_ONE;
     l.background = fx(s->background);
@@ -161,20 +161,20 @@ static stp_renderer *build(const scene *s, int with_maps)
         l.lights[j].position = fx3(s->light[j]);
         l.lights[j].power = fx(s->power[j]);
     }
-    assert_int_equal(stp_set_lighting(r, &l), STP_OK);
+    assert_int_equal(stp_renderer_set_lighting(r, &l), STP_OK);
     stp_material_default(&m);
     m.specular = 0;
-    stp_set_object_shade(r, &m);
-    stp_set_shading(r, 1);
+    stp_renderer_set_object_shade(r, &m);
+    stp_renderer_set_shading(r, 1);
     if (s->colour)
-        assert_int_equal(stp_set_colour(r, 1), STP_OK);
+        assert_int_equal(stp_renderer_set_colour(r, 1), STP_OK);
     if (with_maps && s->map_res > 0) {
         for (j = 0; j < s->nlights; j++) {
             stp_shadow_view sv;
             sv.target = fx3(s->target);
             sv.fov_degrees = fx(s->map_fov);
             sv.near = fx(s->map_near);
-            assert_int_equal(stp_set_shadow_map(r, j, maps[j], MAP_MAX * MAP_MAX, (uint32_t)s->map_res,
+            assert_int_equal(stp_renderer_set_shadow_map(r, j, maps[j], MAP_MAX * MAP_MAX, (uint32_t)s->map_res,
                                                 (uint32_t)s->map_res, &sv),
                              STP_OK);
         }
@@ -190,15 +190,15 @@ static stp_renderer *build(const scene *s, int with_maps)
             n[k].z = STP_FIX_ONE;
         }
         if (s->smooth && q == &s->quads[0])
-            assert_int_equal(stp_polygon_smooth(r, p, n, 4), STP_OK);
+            assert_int_equal(stp_renderer_polygon_smooth(r, p, n, 4), STP_OK);
         else
-            assert_int_equal(stp_polygon(r, p, 4), STP_OK);
+            assert_int_equal(stp_renderer_polygon(r, p, 4), STP_OK);
     }
     assert_int_equal(stp_segment_close(r), STP_OK);
     return r;
 }
 
-/* Render the display file into frame_px; returns stp_render's status. */
+/* Render the display file into frame_px; returns stp_renderer_render's status. */
 static int output(stp_renderer *r, const scene *s)
 {
     static uint8_t band[W * H * 3];
@@ -225,7 +225,7 @@ static int output(stp_renderer *r, const scene *s)
     fm.zbuf_count = W * H;
     fm.sort = sort;
     fm.sort_count = MAX_QUADS;
-    return stp_render(r, &port, &out, &fm);
+    return stp_renderer_render(r, &port, &out, &fm);
 }
 
 static void render(const scene *s, int with_maps, uint8_t *out)
@@ -286,7 +286,7 @@ static double hit(const quad *q, vec o, vec d)
     return t;
 }
 
-/* The camera's basis, as stp_set_view builds it. */
+/* The camera's basis, as stp_renderer_set_view builds it. */
 typedef struct camera {
     vec from, right, up, fwd;
     double focal; /* pixels per unit (parallel) or per x/z (perspective) */
@@ -316,7 +316,7 @@ static void eye_ray(const scene *s, const camera *c, double xs, double ys, vec *
     }
 }
 
-/* In light j's map pyramid (its frame as stp_set_shadow_map builds it)? */
+/* In light j's map pyramid (its frame as stp_renderer_set_shadow_map builds it)? */
 static int in_pyramid(const scene *s, const camera *c, int j, vec p)
 {
     vec l = mk(s->light[j][0], s->light[j][1], s->light[j][2]);
@@ -658,7 +658,7 @@ static void test_polygons_behind_and_through_the_light(void **state)
 }
 
 /* A scene lit everywhere renders byte for byte as without maps; so does one
- * whose maps the view took away (stp_set_view removes them). */
+ * whose maps the view took away (stp_renderer_set_view removes them). */
 static void test_lit_scene_unchanged(void **state)
 {
     scene s;
@@ -679,7 +679,7 @@ static void test_lit_scene_unchanged(void **state)
     v.window_half = fx(H / 2.0);
     v.hither = fx(1);
     v.projection = STP_PARALLEL;
-    assert_int_equal(stp_set_view(r, &v), STP_OK);
+    assert_int_equal(stp_renderer_set_view(r, &v), STP_OK);
     assert_int_equal(output(r, &s), STP_OK);
     assert_memory_equal(frame_px, plain, W * H);
 }
@@ -810,33 +810,33 @@ static void test_bad_arguments(void **state)
     memset(&sv, 0, sizeof sv);
     sv.fov_degrees = fx(90);
     sv.near = fx(1);
-    assert_int_equal(stp_set_shadow_map(NULL, 0, small, 16, 4, 4, &sv), STP_ERR_ARG);
-    assert_int_equal(stp_set_shadow_map(r, 0, NULL, 16, 4, 4, &sv), STP_ERR_ARG);
-    assert_int_equal(stp_set_shadow_map(r, 0, small, 15, 4, 4, &sv), STP_ERR_MEMORY);
-    assert_int_equal(stp_set_shadow_map(r, 0, small, 16, 8, 4, &sv), STP_ERR_MEMORY);
-    assert_int_equal(stp_set_shadow_map(r, 0, small, 16, 0, 4, &sv), STP_ERR_ARG);
-    assert_int_equal(stp_set_shadow_map(r, 0, small, 16, 4, 40000, &sv), STP_ERR_ARG);
-    assert_int_equal(stp_set_shadow_map(r, -1, small, 16, 4, 4, &sv), STP_ERR_ARG);
-    assert_int_equal(stp_set_shadow_map(r, 1, small, 16, 4, 4, &sv), STP_ERR_ARG); /* one light */
-    assert_int_equal(stp_set_shadow_map(r, STP_MAX_LIGHTS, small, 16, 4, 4, &sv), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_shadow_map(NULL, 0, small, 16, 4, 4, &sv), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_shadow_map(r, 0, NULL, 16, 4, 4, &sv), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_shadow_map(r, 0, small, 15, 4, 4, &sv), STP_ERR_MEMORY);
+    assert_int_equal(stp_renderer_set_shadow_map(r, 0, small, 16, 8, 4, &sv), STP_ERR_MEMORY);
+    assert_int_equal(stp_renderer_set_shadow_map(r, 0, small, 16, 0, 4, &sv), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_shadow_map(r, 0, small, 16, 4, 40000, &sv), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_shadow_map(r, -1, small, 16, 4, 4, &sv), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_shadow_map(r, 1, small, 16, 4, 4, &sv), STP_ERR_ARG); /* one light */
+    assert_int_equal(stp_renderer_set_shadow_map(r, STP_MAX_LIGHTS, small, 16, 4, 4, &sv), STP_ERR_ARG);
     sv.fov_degrees = 0;
-    assert_int_equal(stp_set_shadow_map(r, 0, small, 16, 4, 4, &sv), STP_ERR_VIEW);
+    assert_int_equal(stp_renderer_set_shadow_map(r, 0, small, 16, 4, 4, &sv), STP_ERR_VIEW);
     sv.fov_degrees = fx(180);
-    assert_int_equal(stp_set_shadow_map(r, 0, small, 16, 4, 4, &sv), STP_ERR_VIEW);
+    assert_int_equal(stp_renderer_set_shadow_map(r, 0, small, 16, 4, 4, &sv), STP_ERR_VIEW);
     sv.fov_degrees = fx(90);
     sv.near = 0;
-    assert_int_equal(stp_set_shadow_map(r, 0, small, 16, 4, 4, &sv), STP_ERR_VIEW);
+    assert_int_equal(stp_renderer_set_shadow_map(r, 0, small, 16, 4, 4, &sv), STP_ERR_VIEW);
     sv.near = fx(1);
     sv.target.z = fx(20); /* at the light */
-    assert_int_equal(stp_set_shadow_map(r, 0, small, 16, 4, 4, &sv), STP_ERR_VIEW);
+    assert_int_equal(stp_renderer_set_shadow_map(r, 0, small, 16, 4, 4, &sv), STP_ERR_VIEW);
     sv.target.z = 0;
     small[3] = 77;
-    assert_int_equal(stp_set_shadow_map(r, 0, small, 16, 4, 4, &sv), STP_OK);
+    assert_int_equal(stp_renderer_set_shadow_map(r, 0, small, 16, 4, 4, &sv), STP_OK);
     assert_int_equal(small[3], 0); /* cleared */
-    assert_int_equal(stp_set_shadow_map(r, 0, small, 16, 4, 4, NULL), STP_OK); /* defaults */
-    assert_int_equal(stp_remove_shadow_map(r, 0), STP_OK);
-    assert_int_equal(stp_remove_shadow_map(r, STP_MAX_LIGHTS), STP_ERR_ARG);
-    assert_int_equal(stp_remove_shadow_map(NULL, 0), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_shadow_map(r, 0, small, 16, 4, 4, NULL), STP_OK); /* defaults */
+    assert_int_equal(stp_renderer_remove_shadow_map(r, 0), STP_OK);
+    assert_int_equal(stp_renderer_remove_shadow_map(r, STP_MAX_LIGHTS), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_remove_shadow_map(NULL, 0), STP_ERR_ARG);
 }
 
 /* A map of one texel and a huge map ratio: no crash, nothing outside the
@@ -862,8 +862,8 @@ static void test_compiled_out(void **state)
     (void)state;
     base_scene(&s, 0, 0, 0, 20);
     r = build(&s, 0);
-    assert_int_equal(stp_set_shadow_map(r, 0, map, 16, 4, 4, NULL), STP_ERR_UNSUPPORTED);
-    assert_int_equal(stp_remove_shadow_map(r, 0), STP_OK);
+    assert_int_equal(stp_renderer_set_shadow_map(r, 0, map, 16, 4, 4, NULL), STP_ERR_UNSUPPORTED);
+    assert_int_equal(stp_renderer_remove_shadow_map(r, 0), STP_OK);
 }
 
 int main(void)

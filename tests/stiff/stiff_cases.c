@@ -609,22 +609,22 @@ static void run_polygon(const stiff_case *c, stiff_outcome *o)
     view.window_half = stiff_to_fix(c->view.window_half);
     view.hither = stiff_to_fix(c->view.hither);
     view.projection = c->view.perspective ? STP_PERSPECTIVE : STP_PARALLEL;
-    if (stp_set_view(r, &view) != STP_OK)
+    if (stp_renderer_set_view(r, &view) != STP_OK)
         return;
     core_lighting(&c->lighting, &l);
-    if (stp_set_lighting(r, &l) != STP_OK)
+    if (stp_renderer_set_lighting(r, &l) != STP_OK)
         return;
     stp_material_default(&m);
     core_material(&c->material, &m);
-    if (stp_set_object_shade(r, &m) != STP_OK)
+    if (stp_renderer_set_object_shade(r, &m) != STP_OK)
         return;
     if (stp_segment_create(r, 1) != STP_OK)
         return;
     for (i = 0; i < c->n; i++)
         v[i] = fix3(c->v[i]);
-    o->status = stp_polygon(r, v, c->n);
-    if (o->status == STP_OK && stp_last_shade(r) >= 0)
-        o->core = from_fix(stp_last_shade(r));
+    o->status = stp_renderer_polygon(r, v, c->n);
+    if (o->status == STP_OK && stp_renderer_last_shade(r) >= 0)
+        o->core = from_fix(stp_renderer_last_shade(r));
 
     if (ref_ctx_init(&ctx, STIFF_WIDTH, STIFF_HEIGHT) != 0)
         return;

@@ -5,7 +5,7 @@
  * benchmark (tools/bench/bench.c, one build per numeric configuration).
  *
  * Each case runs the fixed-point core (stp_shade_point, or one polygon
- * through stp_polygon) on its inputs rounded to stp_fix, and the
+ * through stp_renderer_polygon) on its inputs rounded to stp_fix, and the
  * double-precision reference (tests/reference/shade_ref.c, and
  * tools/bench/render_ref.c for polygons) on the exact inputs.  The case
  * states the behaviour decided for it (finite, clamped, reported), the

@@ -474,13 +474,13 @@ static int compare_coverage(const picture_case *pc, double *perimeter, int *cove
     view.window_half = stiff_to_fix(pc->view.window_half);
     view.hither = stiff_to_fix(pc->view.hither);
     view.projection = pc->view.perspective ? STP_PERSPECTIVE : STP_PARALLEL;
-    assert_int_equal(stp_set_view(r, &view), STP_OK);
-    stp_set_shading(r, 0);
-    stp_set_fill_style(r, 16);
+    assert_int_equal(stp_renderer_set_view(r, &view), STP_OK);
+    stp_renderer_set_shading(r, 0);
+    stp_renderer_set_fill_style(r, 16);
     assert_int_equal(stp_segment_create(r, 1), STP_OK);
     for (i = 0; i < pc->n; i++)
         v[i] = fix3(pc->v[i]);
-    status = stp_polygon(r, v, pc->n);
+    status = stp_renderer_polygon(r, v, pc->n);
     assert_int_equal(status, STP_OK);
     assert_int_equal(stp_segment_close(r), STP_OK);
     memset(&port, 0, sizeof port);
@@ -497,7 +497,7 @@ static int compare_coverage(const picture_case *pc, double *perimeter, int *cove
     mem.band_rows = PH;
     mem.zbuf = zbuf;
     mem.zbuf_count = PW * PH;
-    assert_int_equal(stp_render(r, &port, &out, &mem), STP_OK);
+    assert_int_equal(stp_renderer_render(r, &port, &out, &mem), STP_OK);
 
     assert_int_equal(ref_ctx_init(&ctx, PW, PH), 0);
     assert_int_equal(ref_set_view(&ctx, &pc->view), REF_OK);

@@ -45,7 +45,7 @@ static void square(stp_renderer *r, double x0, double y0, double x1, double y1, 
     v[1].x = fx(x1 - W / 2.0); v[1].y = fx(H / 2.0 - y0); v[1].z = fx(z);
     v[2].x = fx(x1 - W / 2.0); v[2].y = fx(H / 2.0 - y1); v[2].z = fx(z);
     v[3].x = fx(x0 - W / 2.0); v[3].y = fx(H / 2.0 - y1); v[3].z = fx(z);
-    assert_int_equal(stp_polygon(r, v, 4), STP_OK);
+    assert_int_equal(stp_renderer_polygon(r, v, 4), STP_OK);
 }
 
 /* Style index of the frame pixel for STYLE8 (no table: the index itself). */
@@ -70,18 +70,18 @@ static int render_scene(stp_hidden hidden, int transparent_first, double t, int 
     v.hither = fx(1);
     v.projection = STP_PARALLEL;
     assert_non_null(r);
-    assert_int_equal(stp_set_view(r, &v), STP_OK);
+    assert_int_equal(stp_renderer_set_view(r, &v), STP_OK);
     assert_int_equal(stp_segment_create(r, 1), STP_OK);
     for (k = 0; k < 2; k++) {
         if ((k == 0) == (transparent_first != 0)) {
             /* front (z = 10), transparent, style 6 */
-            assert_int_equal(stp_set_transparency(r, fx(t), fx(t), 2, 0, 0), STP_OK);
-            stp_set_fill_style(r, 6);
+            assert_int_equal(stp_renderer_set_transparency(r, fx(t), fx(t), 2, 0, 0), STP_OK);
+            stp_renderer_set_fill_style(r, 6);
             square(r, 8, 8, 24, 24, 10);
         } else {
             /* back (z = 0), opaque, style 9 */
-            assert_int_equal(stp_set_transparency(r, 0, 0, 2, 0, 0), STP_OK);
-            stp_set_fill_style(r, 9);
+            assert_int_equal(stp_renderer_set_transparency(r, 0, 0, 2, 0, 0), STP_OK);
+            stp_renderer_set_fill_style(r, 9);
             square(r, 0, 0, 16, 16, 0);
         }
     }
@@ -98,7 +98,7 @@ static int render_scene(stp_hidden hidden, int transparent_first, double t, int 
     fm.zbuf_count = W * 5;
     fm.sort = sort;
     fm.sort_count = 8;
-    assert_int_equal(stp_render(r, &port, &out, &fm), STP_OK);
+    assert_int_equal(stp_renderer_render(r, &port, &out, &fm), STP_OK);
     *overlap = frame[12 * W + 12];    /* both squares */
     *back_only = frame[4 * W + 4];    /* the opaque one */
     *front_only = frame[20 * W + 20]; /* the transparent one over the background */
@@ -153,11 +153,11 @@ static void test_bad_arguments(void **state)
     static stp_instr df[8];
     stp_renderer *r = stp_renderer_create(mem, sizeof mem, df, 8, W, H);
     (void)state;
-    assert_int_equal(stp_set_transparency(r, fx(-0.1), fx(0.5), 2, 0, 0), STP_ERR_ARG);
-    assert_int_equal(stp_set_transparency(r, 0, fx(1.5), 2, 0, 0), STP_ERR_ARG);
-    assert_int_equal(stp_set_transparency(r, 0, fx(0.5), 0, 0, 0), STP_ERR_ARG);
-    assert_int_equal(stp_set_transparency(r, 0, fx(0.5), 2, fx(-1), 0), STP_ERR_ARG);
-    assert_int_equal(stp_set_transparency(r, 0, fx(0.5), 2, fx(1), fx(2)), STP_OK);
+    assert_int_equal(stp_renderer_set_transparency(r, fx(-0.1), fx(0.5), 2, 0, 0), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_transparency(r, 0, fx(1.5), 2, 0, 0), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_transparency(r, 0, fx(0.5), 0, 0, 0), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_transparency(r, 0, fx(0.5), 2, fx(-1), 0), STP_ERR_ARG);
+    assert_int_equal(stp_renderer_set_transparency(r, 0, fx(0.5), 2, fx(1), fx(2)), STP_OK);
 }
 
 int main(void)

@@ -25,7 +25,7 @@
  *     1, minor 0.4, 25 x 20 segments = 1000 triangles wound counter-clockwise
  *     from outside, eye at distance 6 looking at the centre, 16 levels,
  *     Bayer 4x4, full shading, one light, Z buffer, back faces removed):
- *     entering the 1000 triangles into a fresh segment plus stp_render to
+ *     entering the 1000 triangles into a fresh segment plus stp_renderer_render to
  *     MONO1, at 128x64, 400x240 and 640x480;
  *   - HALFTONE-FILLIN fill rate (stp_halftone_fillin over whole rows of a
  *     640x480 1-bit buffer) beside memset of the same rows, and their ratio.
@@ -227,7 +227,7 @@ static stp_fix core_shade(const shade_input *in)
  *
  * stp_tool_render does not hand out per-polygon shades, so this mirrors its
  * set-up (view, lights, material mapping; flat shading only) and enters the
- * polygons itself, reading stp_last_shade after each.  check_mirror()
+ * polygons itself, reading stp_renderer_last_shade after each.  check_mirror()
  * renders the result and compares it with stp_tool_render's picture, so a
  * change there that this mirror misses is reported, not silently measured. */
 
@@ -306,11 +306,11 @@ static int core_scene_prepare(core_scene *cs, const stp_scene *scene, const stp_
     cs->levels = opt->levels;
     cs->r = stp_renderer_create(cs->rmem, stp_renderer_size(), cs->df, cs->capacity,
                                 (uint32_t)opt->width, (uint32_t)opt->height);
-    if (!cs->r || (status = stp_set_view(cs->r, &view)) != STP_OK ||
-        (status = stp_set_levels(cs->r, opt->levels)) != STP_OK ||
-        (status = stp_set_lighting(cs->r, &lighting)) != STP_OK ||
-        (status = stp_set_shading(cs->r, opt->shading)) != STP_OK ||
-        (status = stp_set_backface_removal(cs->r, opt->backface_removal)) != STP_OK) {
+    if (!cs->r || (status = stp_renderer_set_view(cs->r, &view)) != STP_OK ||
+        (status = stp_renderer_set_levels(cs->r, opt->levels)) != STP_OK ||
+        (status = stp_renderer_set_lighting(cs->r, &lighting)) != STP_OK ||
+        (status = stp_renderer_set_shading(cs->r, opt->shading)) != STP_OK ||
+        (status = stp_renderer_set_backface_removal(cs->r, opt->backface_removal)) != STP_OK) {
         snprintf(err, err_size, "view or lighting refused by the core");
         core_scene_free(cs);
         return -1;
@@ -336,16 +336,16 @@ static int core_scene_enter(core_scene *cs, const stp_scene *scene, double *shad
             size_t mi = p->material >= 0 && (size_t)p->material < scene->material_count
                             ? (size_t)p->material
                             : scene->material_count;
-            if (stp_set_object_shade(cs->r, &cs->materials[mi]) != STP_OK ||
-                stp_set_fill_style(cs->r, stp_intensity_index(cs->materials[mi].reflectivity, cs->levels)) != STP_OK)
+            if (stp_renderer_set_object_shade(cs->r, &cs->materials[mi]) != STP_OK ||
+                stp_renderer_set_fill_style(cs->r, stp_intensity_index(cs->materials[mi].reflectivity, cs->levels)) != STP_OK)
                 return -1;
             last_material = p->material;
         }
         if (p->count > STP_MAX_POLYGON_VERTICES)
             return -1;
-        status = stp_polygon(cs->r, cs->verts + p->first, p->count);
+        status = stp_renderer_polygon(cs->r, cs->verts + p->first, p->count);
         if (shade)
-            shade[i] = status == STP_OK && stp_last_shade(cs->r) >= 0 ? from_fix(stp_last_shade(cs->r)) : -1;
+            shade[i] = status == STP_OK && stp_renderer_last_shade(cs->r) >= 0 ? from_fix(stp_renderer_last_shade(cs->r)) : -1;
         if (status != STP_OK && status != STP_ERR_DEGENERATE)
             return -1;
     }
@@ -412,7 +412,7 @@ static int core_scene_render(core_scene *cs, const stp_scene *scene, const stp_t
     mem.band_size = stp_row_bytes(STP_PIXEL_MONO1, (uint32_t)opt->width) * (size_t)opt->height;
     mem.zbuf = zbuf;
     mem.zbuf_count = (size_t)opt->width * (size_t)opt->height;
-    return stp_render(cs->r, port, &out, &mem) == STP_OK ? 0 : -1;
+    return stp_renderer_render(cs->r, port, &out, &mem) == STP_OK ? 0 : -1;
 }
 
 /* ---- the torus workload ---- */

@@ -13,7 +13,7 @@
  * scene and that of the scene turned by one degree about the view's up axis
  * through its look-at point (lights stay put).
  * The cost: counted by tools/bench/quality_cost.sh (callgrind instructions
- * inside stp_render, one --once render per method, scene and size); with
+ * inside stp_renderer_render, one --once render per method, scene and size); with
  * --time, also wall time of one render with the method over that of the
  * first, in rounds that interleave them (the median ratio; a busy machine
  * blurs it).  "Applied to the ideal" methods have no cost figure.
@@ -380,7 +380,7 @@ int main(int argc, char **argv)
                     "       bench_quality --list | --once METHOD --scene NAME [--size WxH]\n"
                     "  --small  128x64 only; --time  wall-time ratios (interleaved rounds;\n"
                     "  --quick: one round); --list  the render methods; --once  one render\n"
-                    "  (for valgrind --tool=callgrind --toggle-collect=stp_render:\n"
+                    "  (for valgrind --tool=callgrind --toggle-collect=stp_renderer_render:\n"
                     "  tools/bench/quality_cost.sh)\n");
             return 2;
         }

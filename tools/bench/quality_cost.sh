@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # What each render method of the quality bench costs: instructions executed
-# inside stp_render (valgrind --tool=callgrind --toggle-collect=stp_render,
+# inside stp_renderer_render (valgrind --tool=callgrind --toggle-collect=stp_renderer_render,
 # unaffected by machine load; the scene's entry, the same for every method,
 # is left out), per frame, mean over the shared scenes, at 128x64 and
 # 400x240, and the ratio to the first method (Bayer 4x4, 16 levels).
@@ -14,8 +14,8 @@ bench=$build/tools/bench/bench_quality
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 names="tetra-s1 tetra-s2 mount-s2 teapot-s1 teapot-s2 gears-s1 balls-s1 balls-s2"
-count() { # method scene size -> instructions in stp_render
-    valgrind --tool=callgrind --toggle-collect=stp_render --callgrind-out-file="$work/cg" \
+count() { # method scene size -> instructions in stp_renderer_render
+    valgrind --tool=callgrind --toggle-collect=stp_renderer_render --callgrind-out-file="$work/cg" \
         "$bench" --scenes "$scenes" --once "$1" --scene "$2" --size "$3" >/dev/null 2>&1
     callgrind_annotate "$work/cg" 2>/dev/null | sed -n 's/^ *\([0-9,]*\) .*PROGRAM TOTALS.*/\1/p' | tr -d ,
 }

@@ -138,14 +138,14 @@ int torus_bench_init(torus_bench *b, int width, int height, char *err, size_t er
         b->vertices[i] = stp_tool_vec3(b->scene.vertices[i]);
     b->r = stp_renderer_create(b->renderer_mem, stp_renderer_size(), b->df, b->capacity,
                                (uint32_t)width, (uint32_t)height);
-    if (!b->r || stp_set_view(b->r, &view) != STP_OK || stp_set_levels(b->r, 16) != STP_OK ||
-        stp_set_lighting(b->r, &lighting) != STP_OK) {
+    if (!b->r || stp_renderer_set_view(b->r, &view) != STP_OK || stp_renderer_set_levels(b->r, 16) != STP_OK ||
+        stp_renderer_set_lighting(b->r, &lighting) != STP_OK) {
         snprintf(err, err_size, "view or lighting refused by the core");
         torus_bench_free(b);
         return -1;
     }
-    stp_set_shading(b->r, 1);
-    stp_set_backface_removal(b->r, 1);
+    stp_renderer_set_shading(b->r, 1);
+    stp_renderer_set_backface_removal(b->r, 1);
     b->output.hidden = STP_HIDDEN_ZBUFFER;
     b->output.cell = &b->cell;
     b->memory.band = b->band;
@@ -181,16 +181,16 @@ int torus_frame(torus_bench *b)
     (void)stp_segment_delete(b->r, 1);
     if (stp_segment_create(b->r, 1) != STP_OK)
         return -1;
-    if (b->posed && stp_set_transform(b->r, &b->pose) != STP_OK)
+    if (b->posed && stp_renderer_set_transform(b->r, &b->pose) != STP_OK)
         return -1;
-    stp_set_object_shade(b->r, &b->material);
+    stp_renderer_set_object_shade(b->r, &b->material);
     for (t = 0; t < TORUS_TRIANGLES; t++) {
-        if (stp_polygon(b->r, b->vertices + 3 * t, 3) != STP_OK)
+        if (stp_renderer_polygon(b->r, b->vertices + 3 * t, 3) != STP_OK)
             return -1;
         if (b->keep_shades)
-            b->shade[t] = stp_last_shade(b->r);
+            b->shade[t] = stp_renderer_last_shade(b->r);
     }
     if (stp_segment_close(b->r) != STP_OK)
         return -1;
-    return stp_render(b->r, &b->port, &b->output, &b->memory) == STP_OK ? 0 : -1;
+    return stp_renderer_render(b->r, &b->port, &b->output, &b->memory) == STP_OK ? 0 : -1;
 }

@@ -15,10 +15,10 @@
  * scene for the tests.
  *
  * Frame (torus_frame): delete and re-create the segment, set the model
- * transform when the bench is posed (torus_bench_pose), stp_polygon for
+ * transform when the bench is posed (torus_bench_pose), stp_renderer_polygon for
  * each of the 1000 triangles from the caller's stp_vec3 array (shading on:
  * full seed shading D.G.F and attenuation; back-face removal on), then
- * stp_render to MONO1 (MSB-first rows) with the Z buffer, 16 levels and the
+ * stp_renderer_render to MONO1 (MSB-first rows) with the Z buffer, 16 levels and the
  * Bayer 4x4 cell in one band; the port's flush copies the band into
  * frame[].
  */
@@ -56,10 +56,10 @@ typedef struct torus_bench {
     uint16_t *zbuf;
     uint8_t *frame;     /* the finished frame: height rows of stride bytes */
     size_t stride;
-    stp_fix shade[TORUS_TRIANGLES]; /* stp_last_shade of each triangle's entry,
+    stp_fix shade[TORUS_TRIANGLES]; /* stp_renderer_last_shade of each triangle's entry,
                                        -1 when nothing was shaded (back face) */
     int keep_shades;                /* 1: fill shade[] during torus_frame */
-    int posed;                      /* 1: enter through `pose` (stp_set_transform) */
+    int posed;                      /* 1: enter through `pose` (stp_renderer_set_transform) */
     stp_transform pose;
 } torus_bench;
 

@@ -114,5 +114,5 @@ int StippleSSD1306::draw(const stp_scene_data &scene)
     port.format = STP_PIXEL_MONO1;
     port.flush = flush;
     port.user = this;
-    return stp_render(r, &port, &out, &mem);
+    return stp_renderer_render(r, &port, &out, &mem);
 }

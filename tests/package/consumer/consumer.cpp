@@ -60,13 +60,13 @@ int main()
         std::fprintf(stderr, "stp_renderer_create failed\n");
         return 1;
     }
-    stp_set_light(r, light, STP_FIX_ONE, STP_FIX_ONE / 5);
-    stp_set_shading(r, 1);
+    stp_renderer_set_light(r, light, STP_FIX_ONE, STP_FIX_ONE / 5);
+    stp_renderer_set_shading(r, 1);
     stp_segment_create(r, 1);
-    int status = stp_polygon(r, square, 4);
+    int status = stp_renderer_polygon(r, square, 4);
     stp_segment_close(r);
     if (status == STP_OK)
-        status = stp_render(r, &out.port, &output, &memory);
+        status = stp_renderer_render(r, &out.port, &output, &memory);
     if (status != STP_OK) {
         std::fprintf(stderr, "stipple: %s\n", stp_status_text(status));
         return 1;
