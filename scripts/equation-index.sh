@@ -67,7 +67,7 @@ HSV (Algorithms 10.13, 10.14) | the hexcone | stp_rgb_to_hsv stp_hsv_to_rgb | te
 HLS | the double hexcone | stp_rgb_to_hls stp_hls_to_rgb | test_hsv_hls_hsi_known_values test_round_trips_over_the_cube
 colour tables | 256 entries of 24-bit colour indexed by the frame's values: grey, pseudocolour, gamma per primary | stp_colour_table_grey stp_colour_table_pseudocolour stp_colour_table_apply_gamma | test_colour_tables
 ## 7. The display file
-DISPLAY-FILE-ENTER (Algorithm 10.3) | each point to view coordinates, shaded, clipped, projected and stored as an instruction | enter_polygon_df stp_renderer_move stp_line | test_display_file_full_leaves_it_unchanged tests/golden/test_golden.c:test_golden_128x64
+DISPLAY-FILE-ENTER (Algorithm 10.3) | each point to view coordinates, shaded, clipped, projected and stored as an instruction | enter_polygon_df stp_renderer_move stp_renderer_line | test_display_file_full_leaves_it_unchanged tests/golden/test_golden.c:test_golden_128x64
 segments | created, closed, deleted, shown or hidden | stp_segment_create stp_segment_close stp_segment_delete stp_segment_visibility | test_segment_errors test_segment_delete_compacts_and_visibility test_segment_table_full
 clipping and projection | against the hither plane and the window, then perspective or parallel | clip_polygon project | test_hither_clipping test_polygon_behind_the_eye_enters_nothing test_pictures_of_clipped_polygons
 back-face removal | faces with N.E <= 0 dropped | enter_polygon_df | test_backface_removal_keeps_faces_towards_viewer test_backface_removal_single_polygon
