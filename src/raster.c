@@ -84,6 +84,13 @@ typedef struct frame {
     uint32_t cell_mask;
     paint pattern_style;
     uint8_t patterns[STP_CELL_MAX];
+#if STP_PATTERN_CACHE > 0
+    /* the pattern rows of recent styles (cells up to 4 rows high), slot
+     * style mod STP_PATTERN_CACHE: a depth-ordered frame alternates styles
+     * polygon by polygon; -1: empty */
+    paint cached_style[STP_PATTERN_CACHE];
+    uint32_t cached_rows[STP_PATTERN_CACHE]; /* row cy in bits 8cy..8cy+7 */
+#endif
 #if STP_WITH_SHADOWS
     stp_shadow_poly *shadow; /* the polygon being drawn's shadow records;
                                 NULL when no light has a map */
@@ -114,6 +121,23 @@ static void use_style(frame *fr, paint style)
     uint8_t level;
     if (!fr->mono_fill || style == fr->pattern_style)
         return;
+#if STP_PATTERN_CACHE > 0
+    if (fr->cell->height <= 4) {
+        uint32_t slot = (uint32_t)style & (STP_PATTERN_CACHE - 1), rows = 0;
+        if (fr->cached_style[slot] != style) {
+            level = level_of(fr, style);
+            for (cy = 0; cy < fr->cell->height; cy++)
+                rows |= (uint32_t)stp_halftone_pattern_byte(fr->cell, cy, level) << (8 * cy);
+            fr->cached_style[slot] = style;
+            fr->cached_rows[slot] = rows;
+        }
+        rows = fr->cached_rows[slot];
+        for (cy = 0; cy < fr->cell->height; cy++)
+            fr->patterns[cy] = (uint8_t)(rows >> (8 * cy));
+        fr->pattern_style = style;
+        return;
+    }
+#endif
     level = level_of(fr, style);
     for (cy = 0; cy < fr->cell->height; cy++)
         fr->patterns[cy] = stp_halftone_pattern_byte(fr->cell, cy, level);
@@ -990,6 +1014,10 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
                    fr.cell->height <= STP_CELL_MAX; /* patterns[] holds a row each */
     fr.cell_mask = (fr.cell->height & (fr.cell->height - 1u)) == 0 ? fr.cell->height - 1u : 0;
     fr.pattern_style = -1;
+#if STP_PATTERN_CACHE > 0
+    for (y0 = 0; y0 < STP_PATTERN_CACHE; y0++)
+        fr.cached_style[y0] = -1;
+#endif
     use_style(&fr, background_style);
     (void)polygons; /* read only by the painter's sort */
 #if STP_WITH_PAINTER

@@ -33,6 +33,7 @@ for s in $switches; do
         STP_MAX_LIGHTS | STP_MAX_SEGMENTS) flipped=1 ;;
         STP_RT_MAX_DEPTH) flipped=2 ;;
         STP_VERTEX_CACHE) flipped=0 ;;
+        STP_PATTERN_CACHE) flipped=0 ;;
         *) flipped=$((1 - default)) ;;
     esac
     if ! sum=$(build "$work/$s" "-D$s=$flipped"); then

@@ -86,6 +86,15 @@
 #define STP_WITH_ZBUFFER 1
 #endif
 
+/* Styles whose 1-bit pattern rows a frame keeps (a power of two; 8 bytes
+ * of the frame's stack each; 0: rebuilt at every change of style). */
+#ifndef STP_PATTERN_CACHE
+#define STP_PATTERN_CACHE 8
+#endif
+#if STP_PATTERN_CACHE & (STP_PATTERN_CACHE - 1)
+#error "STP_PATTERN_CACHE must be 0 or a power of two"
+#endif
+
 /* 1: the painter's depth sort is compiled in. */
 #ifndef STP_WITH_PAINTER
 #define STP_WITH_PAINTER 1
