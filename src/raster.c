@@ -892,7 +892,9 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
 #if STP_WITH_SHADOWS
     stp_shadow_poly shadow_poly;
 #endif
+#if STP_WITH_DIFFUSION
     stp_port grey_port; /* error diffusion: the band is drawn as GREY8 */
+#endif
     const stp_port *drawn = port;
     uint32_t y0, polygons = 0;
     paint background_style;
@@ -907,12 +909,16 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
     if (port->width != r->width || port->height != r->height)
         return STP_ERR_ARG;
     if (output->diffusion && port->format == STP_PIXEL_MONO1) {
+#if STP_WITH_DIFFUSION
         int status = stp_diffusion_check(output->diffusion, port->width);
         if (status != STP_OK)
             return status;
         grey_port = *port;
         grey_port.format = STP_PIXEL_GREY8;
         drawn = &grey_port;
+#else
+        return STP_ERR_UNSUPPORTED;
+#endif
     }
     fr.stride = stp_row_bytes(drawn->format, port->width);
     if (fr.stride == 0 || mem->band_rows < 1 || mem->band_rows > r->height)
@@ -952,8 +958,12 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
     if (output->cell) {
         fr.cell = output->cell;
     } else {
+#if STP_WITH_DEFAULT_CELL
         (void)stp_cell_bayer(&fr.default_cell, 4);
         fr.cell = &fr.default_cell;
+#else
+        return STP_ERR_UNSUPPORTED;
+#endif
     }
     background_style = stp_intensity_index(output->background, r->levels);
     if (port->format == STP_PIXEL_RGB888 && output->background_colour) {
@@ -1040,11 +1050,13 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
                 replay(&fr, 0, 0, 0);
             }
         }
+#if STP_WITH_DIFFUSION
         if (drawn == &grey_port) {
             /* error diffusion: each grey row becomes a MONO1 row in place */
             for (y = y0; y < y0 + fr.rows; y++)
                 stp_diffuse_row(output->diffusion, fr.band + (size_t)(y - y0) * fr.stride, r->width, y);
         }
+#endif
         if (port->flush(port, y0, fr.rows, fr.band, fr.stride) < 0)
             return STP_ERR_PORT;
     }

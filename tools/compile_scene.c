@@ -225,6 +225,9 @@ static void write_config(writer *w, const plan *p, const stp_tool_options *opt)
            " * (stp_output.diffusion); 0: a halftone cell, 1-bit rows. */\n"
            "#define STP_COMPILED_DIFFUSION %d\n",
         opt->dither == STP_TOOL_DITHER_DIFFUSE ? 1 : 0);
+    out(w, "#define STP_WITH_DIFFUSION STP_COMPILED_DIFFUSION\n"
+           "/* The cell is compiled in as a value: none is built on the chip. */\n"
+           "#define STP_WITH_DEFAULT_CELL 0\n");
     out(w, "\n#endif\n");
 }
 

@@ -124,6 +124,20 @@
 #define STP_WITH_LINES 1
 #endif
 
+/* 1: error diffusion (stp_output.diffusion) is compiled into the band
+ * renderer; 0: a render asked for diffusion returns STP_ERR_UNSUPPORTED, and
+ * the diffusion code is not linked. */
+#ifndef STP_WITH_DIFFUSION
+#define STP_WITH_DIFFUSION 1
+#endif
+
+/* 1: a render with no halftone cell (stp_output.cell NULL) builds the Bayer
+ * 4x4 cell on the stack; 0: it returns STP_ERR_UNSUPPORTED, and the cell
+ * construction code is not linked (compiled scenes carry their cell). */
+#ifndef STP_WITH_DEFAULT_CELL
+#define STP_WITH_DEFAULT_CELL 1
+#endif
+
 /* 1: the ray tracer (include/stipple/raytrace.h) is compiled in.  It lives
  * in its own object file, so a program that never calls it does not link
  * it even when it is on; 0 takes its code out of the library
