@@ -14,7 +14,7 @@
  * divisions of 16-bit digits (long division); else the library's. */
 static int64_t div_trunc(int64_t num, int64_t den)
 {
-#if !STP_WIDE_ARITH
+#if !STP_WIDE_ARITH && !STP_SMALL_DIVISION /* with it: its loop alone, smaller */
     uint64_t un = num < 0 ? 0u - (uint64_t)num : (uint64_t)num, ud = den < 0 ? 0u - (uint64_t)den : (uint64_t)den;
     if (ud < 65536u && un < ((uint64_t)1 << 48)) {
         uint32_t d = (uint32_t)ud, hi = (uint32_t)(un >> 32), q1, q2, q3, part;
@@ -27,7 +27,7 @@ static int64_t div_trunc(int64_t num, int64_t den)
         return (num < 0) != (den < 0) ? -(int64_t)un : (int64_t)un;
     }
 #endif
-    return num / den;
+    return STP_DIV64(num, den);
 }
 
 /* floor(s / n) for n >= 1: n = 3 and 4 without a division */
@@ -551,7 +551,7 @@ static int depth_setup(const frame *fr, const stp_instr *v, int n, depth_plane *
     pl->xc = (int32_t)div_count(sx, (uint32_t)n);
     pl->yc = (int32_t)div_count(sy, (uint32_t)n);
     /* depths below 2^28: 32-bit division while the sum fits */
-    pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : sd / n;
+    pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : STP_DIV64(sd, n);
     return 1;
 }
 
@@ -993,7 +993,7 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
         uint64_t range = (uint64_t)((int64_t)fr.key_max - fr.key_min);
         while (((uint64_t)1 << fr.depth_shift) < range)
             fr.depth_shift++;
-        fr.depth_scale = (uint32_t)((((uint64_t)65534 << 12) << fr.depth_shift) / range);
+        fr.depth_scale = (uint32_t)STP_DIV64(((uint64_t)65534 << 12) << fr.depth_shift, range);
     }
     fr.mono_fill = port->format == STP_PIXEL_MONO1 && fr.cell->kind == STP_CELL_THRESHOLD &&
                    fr.cell->width > 0 && 8u % fr.cell->width == 0 && fr.cell->height > 0 &&

@@ -138,6 +138,14 @@
 #define STP_WITH_DEFAULT_CELL 1
 #endif
 
+/* 1: the band renderer divides 64-bit numbers with a small bit-serial loop
+ * (src/div64.c, tens of bytes, up to 64 steps a quotient) instead of the C
+ * library's routines (about 1 KB on ARMv6-M): a size-first choice for
+ * playback-only firmware (stipple compile --static sets it).  Same results. */
+#ifndef STP_SMALL_DIVISION
+#define STP_SMALL_DIVISION 0
+#endif
+
 /* 1: the ray tracer (include/stipple/raytrace.h) is compiled in.  It lives
  * in its own object file, so a program that never calls it does not link
  * it even when it is on; 0 takes its code out of the library
