@@ -24,6 +24,7 @@ int64_t stp_div64_trunc(int64_t num, int64_t den)
         d >>= 1;
         bit >>= 1;
     }
-    return (num < 0) != (den < 0) ? -(int64_t)q : (int64_t)q;
+    /* negated as unsigned: INT64_MIN / 1 has no positive counterpart */
+    return (int64_t)((num < 0) != (den < 0) ? 0u - q : q);
 }
 #endif

@@ -232,6 +232,10 @@ static void write_config(writer *w, const plan *p, const stp_tool_options *opt, 
            " * small loop, not the C library's routines (size first). */\n"
            "#define STP_SMALL_DIVISION %d\n",
         is_static);
+    out(w, "/* --static: the chip only plays the display file back (a smaller renderer\n"
+           " * object; the core is built from the playback sources alone). */\n"
+           "#define STP_PLAYBACK_ONLY %d\n",
+        is_static);
     out(w, "\n#endif\n");
 }
 

@@ -146,6 +146,16 @@
 #define STP_SMALL_DIVISION 0
 #endif
 
+/* 1: a playback-only core (stipple compile --static): the renderer object
+ * keeps only what stp_playback_create and stp_renderer_render use, and the
+ * entry side (render.c, view.c, clip.c, transform.c, ...) must not be
+ * built; firmware/CMakeLists.txt builds src/playback.c, raster.c, dither.c,
+ * output.c, shade.c, status.c, frame_memory.c and div64.c.  Needs
+ * STP_WITH_SHADOWS 0. */
+#ifndef STP_PLAYBACK_ONLY
+#define STP_PLAYBACK_ONLY 0
+#endif
+
 /* 1: the ray tracer (include/stipple/raytrace.h) is compiled in.  It lives
  * in its own object file, so a program that never calls it does not link
  * it even when it is on; 0 takes its code out of the library
@@ -176,6 +186,9 @@
 #endif
 #if STP_WITH_SHADOWS && STP_MAX_LIGHTS > 32
 #error "STP_WITH_SHADOWS keeps one bit per light: STP_MAX_LIGHTS must be at most 32"
+#endif
+#if STP_PLAYBACK_ONLY && STP_WITH_SHADOWS
+#error "STP_PLAYBACK_ONLY needs STP_WITH_SHADOWS 0 (shadow maps are entered on the chip)"
 #endif
 #if !STP_WITH_ZBUFFER && !STP_WITH_PAINTER
 /* Neither method: polygons are drawn in display-file order (the caller's
