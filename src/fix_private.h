@@ -26,6 +26,16 @@ static inline int64_t stp_asr64(int64_t v, int s)
     return v >= 0 ? v >> s : -((-(v + 1)) >> s) - 1;
 }
 
+/* num / den truncated toward zero for den != 0 and a quotient that fits:
+ * C's operator, or with STP_SMALL_DIVISION (config.h) the bit-serial loop
+ * of div64.c, so the C library's 64-bit division is not linked. */
+#if STP_SMALL_DIVISION
+int64_t stp_div64_trunc(int64_t num, int64_t den);
+#define STP_DIV64(num, den) stp_div64_trunc((int64_t)(num), (int64_t)(den))
+#else
+#define STP_DIV64(num, den) ((int64_t)(num) / (int64_t)(den))
+#endif
+
 /* floor(a / b) for b > 0. */
 static inline int64_t stp_floordiv64(int64_t a, int64_t b)
 {

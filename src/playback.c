@@ -36,3 +36,19 @@ stp_renderer *stp_playback_create(void *mem, size_t mem_size, const stp_instr *d
 #endif
     return r;
 }
+
+#if STP_PLAYBACK_ONLY
+/* render.c is not built in a playback-only core: its two queries a
+ * playback program may still ask (render.h) */
+typedef char stp_playback_renderer_bound[sizeof(stp_renderer) <= STP_RENDERER_BYTES ? 1 : -1];
+
+size_t stp_renderer_size(void)
+{
+    return sizeof(stp_renderer);
+}
+
+uint32_t stp_renderer_display_file_used(const stp_renderer *r)
+{
+    return r->used;
+}
+#endif

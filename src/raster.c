@@ -14,7 +14,7 @@
  * divisions of 16-bit digits (long division); else the library's. */
 static int64_t div_trunc(int64_t num, int64_t den)
 {
-#if !STP_WIDE_ARITH
+#if !STP_WIDE_ARITH && !STP_SMALL_DIVISION /* with it: its loop alone, smaller */
     uint64_t un = num < 0 ? 0u - (uint64_t)num : (uint64_t)num, ud = den < 0 ? 0u - (uint64_t)den : (uint64_t)den;
     if (ud < 65536u && un < ((uint64_t)1 << 48)) {
         uint32_t d = (uint32_t)ud, hi = (uint32_t)(un >> 32), q1, q2, q3, part;
@@ -27,7 +27,7 @@ static int64_t div_trunc(int64_t num, int64_t den)
         return (num < 0) != (den < 0) ? -(int64_t)un : (int64_t)un;
     }
 #endif
-    return num / den;
+    return STP_DIV64(num, den);
 }
 
 /* floor(s / n) for n >= 1: n = 3 and 4 without a division */
@@ -575,7 +575,7 @@ static int depth_setup(const frame *fr, const stp_instr *v, int n, depth_plane *
     pl->xc = (int32_t)div_count(sx, (uint32_t)n);
     pl->yc = (int32_t)div_count(sy, (uint32_t)n);
     /* depths below 2^28: 32-bit division while the sum fits */
-    pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : sd / n;
+    pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : STP_DIV64(sd, n);
     return 1;
 }
 
@@ -916,7 +916,9 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
 #if STP_WITH_SHADOWS
     stp_shadow_poly shadow_poly;
 #endif
+#if STP_WITH_DIFFUSION
     stp_port grey_port; /* error diffusion: the band is drawn as GREY8 */
+#endif
     const stp_port *drawn = port;
     uint32_t y0, polygons = 0;
     paint background_style;
@@ -931,12 +933,16 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
     if (port->width != r->width || port->height != r->height)
         return STP_ERR_ARG;
     if (output->diffusion && port->format == STP_PIXEL_MONO1) {
+#if STP_WITH_DIFFUSION
         int status = stp_diffusion_check(output->diffusion, port->width);
         if (status != STP_OK)
             return status;
         grey_port = *port;
         grey_port.format = STP_PIXEL_GREY8;
         drawn = &grey_port;
+#else
+        return STP_ERR_UNSUPPORTED;
+#endif
     }
     fr.stride = stp_row_bytes(drawn->format, port->width);
     if (fr.stride == 0 || mem->band_rows < 1 || mem->band_rows > r->height)
@@ -976,8 +982,12 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
     if (output->cell) {
         fr.cell = output->cell;
     } else {
+#if STP_WITH_DEFAULT_CELL
         (void)stp_cell_bayer(&fr.default_cell, 4);
         fr.cell = &fr.default_cell;
+#else
+        return STP_ERR_UNSUPPORTED;
+#endif
     }
     background_style = stp_intensity_index(output->background, r->levels);
     if (port->format == STP_PIXEL_RGB888 && output->background_colour) {
@@ -1007,7 +1017,7 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
         uint64_t range = (uint64_t)((int64_t)fr.key_max - fr.key_min);
         while (((uint64_t)1 << fr.depth_shift) < range)
             fr.depth_shift++;
-        fr.depth_scale = (uint32_t)((((uint64_t)65534 << 12) << fr.depth_shift) / range);
+        fr.depth_scale = (uint32_t)STP_DIV64(((uint64_t)65534 << 12) << fr.depth_shift, range);
     }
     fr.mono_fill = port->format == STP_PIXEL_MONO1 && fr.cell->kind == STP_CELL_THRESHOLD &&
                    fr.cell->width > 0 && 8u % fr.cell->width == 0 && fr.cell->height > 0 &&
@@ -1068,11 +1078,13 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
                 replay(&fr, 0, 0, 0);
             }
         }
+#if STP_WITH_DIFFUSION
         if (drawn == &grey_port) {
             /* error diffusion: each grey row becomes a MONO1 row in place */
             for (y = y0; y < y0 + fr.rows; y++)
                 stp_diffuse_row(output->diffusion, fr.band + (size_t)(y - y0) * fr.stride, r->width, y);
         }
+#endif
         if (port->flush(port, y0, fr.rows, fr.band, fr.stride) < 0)
             return STP_ERR_PORT;
     }

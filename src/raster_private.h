@@ -60,7 +60,7 @@ static inline int64_t stp_slope_q16(int32_t num, int32_t den)
 {
     if (num > -32768 && num < 32768)
         return (int32_t)(num * 65536) / den;
-    return ((int64_t)num * 65536) / den;
+    return STP_DIV64((int64_t)num * 65536, den);
 }
 
 /* The edge setup the polygon raster and the shadow maps share.

@@ -102,7 +102,9 @@ struct stp_renderer {
 
     stp_segment segments[STP_MAX_SEGMENTS];
     int open_segment; /* index into segments, -1 when none */
+    int fill_style, levels;
 
+#if !STP_PLAYBACK_ONLY /* the entry side's state: playback.c sets none of it */
     /* view: orthonormal basis (world units), centre of projection */
     stp_vec3 from, right, up, forward;
     stp_view_transform to_view; /* world to view (view.c) */
@@ -114,7 +116,7 @@ struct stp_renderer {
     stp_lighting user_lighting;    /* what SET-LIGHT last said (world) */
     stp_lighting segment_lighting; /* COPY-LIGHT of the open segment (view) */
     stp_material material;
-    int shading, fill_style, levels, backface_removal;
+    int shading, backface_removal;
     int current_style;      /* polygon style last entered in the open segment, -1 none */
     int current_line_style; /* line style likewise */
     int colour;             /* colour shading on */
@@ -138,12 +140,13 @@ struct stp_renderer {
     stp_fix shade_a[STP_CLIP_VERTICES]; /* per-vertex shades beside clip_a/b */
     stp_fix shade_b[STP_CLIP_VERTICES];
 #endif
-    stp_edge edges[STP_CLIP_VERTICES];
 #if STP_VERTEX_CACHE
     stp_vertex_entry cache[STP_VERTEX_CACHE];
     uint32_t cache_stamp; /* >= 1 */
     uint16_t cached[STP_MAX_POLYGON_VERTICES]; /* clip_a[i]'s entry in cache[] */
 #endif
+#endif /* !STP_PLAYBACK_ONLY */
+    stp_edge edges[STP_CLIP_VERTICES];
     stp_crossing crossings[STP_CLIP_VERTICES];
 
 #if STP_WITH_SHADOWS

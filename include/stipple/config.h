@@ -133,6 +133,38 @@
 #define STP_WITH_LINES 1
 #endif
 
+/* 1: error diffusion (stp_output.diffusion) is compiled into the band
+ * renderer; 0: a render asked for diffusion returns STP_ERR_UNSUPPORTED, and
+ * the diffusion code is not linked. */
+#ifndef STP_WITH_DIFFUSION
+#define STP_WITH_DIFFUSION 1
+#endif
+
+/* 1: a render with no halftone cell (stp_output.cell NULL) builds the Bayer
+ * 4x4 cell on the stack; 0: it returns STP_ERR_UNSUPPORTED, and the cell
+ * construction code is not linked (compiled scenes carry their cell). */
+#ifndef STP_WITH_DEFAULT_CELL
+#define STP_WITH_DEFAULT_CELL 1
+#endif
+
+/* 1: the band renderer divides 64-bit numbers with a small bit-serial loop
+ * (src/div64.c, tens of bytes, up to 64 steps a quotient) instead of the C
+ * library's routines (about 1 KB on ARMv6-M): a size-first choice for
+ * playback-only firmware (stipple compile --static sets it).  Same results. */
+#ifndef STP_SMALL_DIVISION
+#define STP_SMALL_DIVISION 0
+#endif
+
+/* 1: a playback-only core (stipple compile --static): the renderer object
+ * keeps only what stp_playback_create and stp_renderer_render use, and the
+ * entry side (render.c, view.c, clip.c, transform.c, ...) must not be
+ * built; firmware/CMakeLists.txt builds src/playback.c, raster.c, dither.c,
+ * output.c, shade.c, status.c, frame_memory.c and div64.c.  Needs
+ * STP_WITH_SHADOWS 0. */
+#ifndef STP_PLAYBACK_ONLY
+#define STP_PLAYBACK_ONLY 0
+#endif
+
 /* 1: the ray tracer (include/stipple/raytrace.h) is compiled in.  It lives
  * in its own object file, so a program that never calls it does not link
  * it even when it is on; 0 takes its code out of the library
@@ -163,6 +195,9 @@
 #endif
 #if STP_WITH_SHADOWS && STP_MAX_LIGHTS > 32
 #error "STP_WITH_SHADOWS keeps one bit per light: STP_MAX_LIGHTS must be at most 32"
+#endif
+#if STP_PLAYBACK_ONLY && STP_WITH_SHADOWS
+#error "STP_PLAYBACK_ONLY needs STP_WITH_SHADOWS 0 (shadow maps are entered on the chip)"
 #endif
 #if !STP_WITH_ZBUFFER && !STP_WITH_PAINTER
 /* Neither method: polygons are drawn in display-file order (the caller's
