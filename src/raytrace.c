@@ -713,18 +713,19 @@ static void geometric_normal(const stp_rt_object *ob, const int32_t p[3], int32_
     }
 }
 
-/* A patch's shading normal at p: its vertex normals weighted by p's
- * barycentric coordinates in the fan triangle (v0, vk, vk+1) holding p
- * (the one whose smallest coordinate is largest, should rounding leave p
- * outside them all), renormalised. */
-static void patch_normal(const stp_raytracer *rt, const stp_rt_object *ob, const int32_t p[3],
-                         int32_t out[3])
+/* The fan triangle (v0, v_best, v_best+1) of a patch holding p (the one
+ * whose smallest barycentric coordinate is largest, should rounding leave
+ * p outside them all) and p's weights in it, Q30.  Returns 0 when every
+ * fan triangle is degenerate. */
+static int patch_weights(const stp_raytracer *rt, const stp_rt_object *ob, const int32_t p[3],
+                         int64_t w[3], int *best_out)
 {
     int du = ob->flags & FLAG_AXIS_MASK, u = du == 0 ? 1 : 0, v = du == 2 ? 1 : 2;
-    const stp_vec3 *pts = rt->mem.points + ob->first, *nrm = pts + ob->count;
+    const stp_vec3 *pts = rt->mem.points + ob->first;
     const int32_t *a = (const int32_t *)&pts[0];
     int k, best = 1;
-    int64_t best_min = INT64_MIN, w[3] = {0, 0, 0}, sum[3];
+    int64_t best_min = INT64_MIN;
+    w[0] = w[1] = w[2] = 0;
     for (k = 1; (uint32_t)k + 1u < ob->count; k++) {
         const int32_t *b = (const int32_t *)&pts[k], *c = (const int32_t *)&pts[k + 1];
         int64_t e[3], area, m;
@@ -770,13 +771,26 @@ static void patch_normal(const stp_raytracer *rt, const stp_rt_object *ob, const
         if (m >= 0)
             break;
     }
-    {
+    *best_out = best;
+    return best_min != INT64_MIN;
+}
+
+/* A patch's shading normal at p: its vertex normals weighted by p's
+ * barycentric coordinates (patch_weights), renormalised. */
+static void patch_normal(const stp_raytracer *rt, const stp_rt_object *ob, const int32_t p[3],
+                         int32_t out[3])
+{
+    const stp_vec3 *nrm = rt->mem.points + ob->first + ob->count;
+    int64_t w[3], sum[3];
+    int best;
+    int found = patch_weights(rt, ob, p, w, &best);
+    if (found) {
         const stp_vec3 *na = &nrm[0], *nb = &nrm[best], *nc = &nrm[best + 1];
         sum[0] = w[0] * na->x + w[1] * nb->x + w[2] * nc->x;
         sum[1] = w[0] * na->y + w[1] * nb->y + w[2] * nc->y;
         sum[2] = w[0] * na->z + w[1] * nb->z + w[2] * nc->z;
     }
-    if (best_min == INT64_MIN || !unit_q30(sum[0], sum[1], sum[2], out)) {
+    if (!found || !unit_q30(sum[0], sum[1], sum[2], out)) {
         out[0] = ob->a[0];
         out[1] = ob->a[1];
         out[2] = ob->a[2];
@@ -1076,7 +1090,32 @@ typedef struct rt_crossed {
     uint32_t index[RT_CROSSED_MAX];
     stp_fix t[RT_CROSSED_MAX];
     stp_fix extra;
+    uint32_t from; /* the patch the ray leaves, NO_SKIP for any other start */
 } rt_crossed;
+
+/* Whether polygon idx is a patch sharing a corner with patch `from` (the
+ * same coordinates): a neighbouring facet of the smooth surface the ray
+ * leaves, which does not shade that surface where its interpolated normal
+ * faces the light (the shadow terminator), so shadow rays pass it. */
+static int neighbour_facet(const stp_raytracer *rt, uint32_t from, uint32_t idx)
+{
+    const stp_rt_object *a, *b;
+    const stp_vec3 *pa, *pb;
+    uint32_t i, j;
+    if (from == NO_SKIP)
+        return 0;
+    a = &rt->mem.objects[from];
+    b = &rt->mem.objects[idx];
+    if (b->kind != KIND_POLYGON || !(b->flags & FLAG_NORMALS))
+        return 0;
+    pa = rt->mem.points + a->first;
+    pb = rt->mem.points + b->first;
+    for (i = 0; i < a->count; i++)
+        for (j = 0; j < b->count; j++)
+            if (pa[i].x == pb[j].x && pa[i].y == pb[j].y && pa[i].z == pb[j].z)
+                return 1;
+    return 0;
+}
 
 /* Test object idx against a shadow ray ending at dist: 0 when an opaque
  * object blocks it, else 1 (a transparent one crossed is recorded). */
@@ -1089,7 +1128,7 @@ static int shadow_test(stp_raytracer *rt, uint32_t idx, const rt_ray *ray, int64
     h.t = dist;
     h.object = NO_SKIP;
     test_object(rt, idx, ray, 0, &h);
-    if (h.object == NO_SKIP)
+    if (h.object == NO_SKIP || neighbour_facet(rt, cr->from, idx))
         return 1;
     t = rt->materials[rt->mem.objects[idx].material].transmission;
     if (t <= 0)
@@ -1110,8 +1149,10 @@ static int shadow_test(stp_raytracer *rt, uint32_t idx, const rt_ray *ray, int64
 
 /* The light a shadow ray lets through from its origin to distance dist:
  * the product of the transmissions of the objects it crosses (once per
- * object, in index order), 0 at the first opaque one. */
-static stp_fix visibility(stp_raytracer *rt, const rt_ray *ray, int64_t dist, uint32_t skip)
+ * object, in index order), 0 at the first opaque one.  from: the patch the
+ * ray leaves (its neighbouring facets are passed), else NO_SKIP. */
+static stp_fix visibility(stp_raytracer *rt, const rt_ray *ray, int64_t dist, uint32_t skip,
+                          uint32_t from)
 {
     stp_fix vis = ONE;
     rt_crossed cr;
@@ -1121,6 +1162,7 @@ static stp_fix visibility(stp_raytracer *rt, const rt_ray *ray, int64_t dist, ui
     rt->stats.shadow_rays++;
     cr.count = 0;
     cr.extra = ONE;
+    cr.from = from;
     if (!rt->has_hierarchy) {
         for (i = 0; i < rt->objects; i++)
             if (i != skip && !shadow_test(rt, i, ray, dist, &cr))
@@ -1238,11 +1280,12 @@ static void shade_hit(stp_raytracer *rt, const rt_ray *ray, const rt_hit *h, int
     int j, c, channels = rt->colour ? 3 : 1;
     int64_t cos_i;
     stp_fix w_r = 0, w_t = 0, fres;
+    int patch = ob->kind == KIND_POLYGON && (ob->flags & FLAG_NORMALS);
     geometric_normal(ob, h->p, n_out);
     n_geo[0] = n_out[0];
     n_geo[1] = n_out[1];
     n_geo[2] = n_out[2];
-    if (ob->kind == KIND_POLYGON && (ob->flags & FLAG_NORMALS))
+    if (patch)
         patch_normal(rt, ob, h->p, n_shade);
     else {
         n_shade[0] = n_out[0];
@@ -1271,13 +1314,17 @@ static void shade_hit(stp_raytracer *rt, const rt_ray *ray, const rt_hit *h, int
         lv[2] = (int64_t)L->position.z - point.z;
         if (dot_pd(lv, n_shade) <= 0 || !unit_q30(lv[0], lv[1], lv[2], ld))
             continue; /* no term from this light: nothing to test */
-        offset_ray(&sray, h->p, n_geo, dot_dd(ld, n_geo) >= 0 ? 1 : -1, ld);
+        /* a patch's ray leaves on the side its shading normal (which faces
+         * the light) says, not the facet's, and passes the neighbouring
+         * facets (neighbour_facet): the shadow terminator */
+        offset_ray(&sray, h->p, n_geo, patch || dot_dd(ld, n_geo) >= 0 ? 1 : -1, ld);
         lv[0] = (int64_t)L->position.x - sray.o[0];
         lv[1] = (int64_t)L->position.y - sray.o[1];
         lv[2] = (int64_t)L->position.z - sray.o[2];
         dist2 = lv[0] * lv[0] + lv[1] * lv[1] + lv[2] * lv[2];
         dist = (int64_t)stp_isqrt64((uint64_t)dist2);
-        L->power = stp_fix_mul(L->power, visibility(rt, &sray, dist, skip_for(rt, h->object, n_out, ld)));
+        L->power = stp_fix_mul(L->power, visibility(rt, &sray, dist, skip_for(rt, h->object, n_out, ld),
+                                             patch ? h->object : NO_SKIP));
     }
     if (parallel_primary) {
         eye = point;

@@ -431,12 +431,24 @@ static void cache_forget(stp_renderer *r)
 #endif
 }
 
-/* An entered point (model coordinates) to view coordinates. */
+/* Whether a view coordinate was saturated (stp_view_transform_point and
+ * stp_transform_point clamp to [STP_FIX_MIN, STP_FIX_MAX]): the point lies
+ * beyond what view coordinates hold, and drawing it would move it. */
+static int saturated(stp_vec3 p)
+{
+    return p.x >= STP_FIX_MAX || p.x <= STP_FIX_MIN || p.y >= STP_FIX_MAX || p.y <= STP_FIX_MIN ||
+           p.z >= STP_FIX_MAX || p.z <= STP_FIX_MIN;
+}
+
+/* An entered point (model coordinates) to view coordinates; a point the
+ * model transform saturated comes out saturated too (see saturated). */
 static void vertex_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
 {
     if (r->model_on)
         p = stp_transform_point(&r->model, p);
     world_to_view(r, p, out);
+    if (r->model_on && saturated(p))
+        out->x = STP_FIX_MAX;
 }
 
 
@@ -545,10 +557,14 @@ static void append(stp_renderer *r, int32_t op, int32_t x, int32_t y, int32_t z,
 
 int stp_renderer_move(stp_renderer *r, stp_vec3 p)
 {
+    stp_vec3 q;
     int status = check_open(r);
     if (status != STP_OK)
         return status;
-    vertex_to_view(r, p, &r->pen);
+    vertex_to_view(r, p, &q);
+    if (saturated(q))
+        return STP_ERR_RANGE;
+    r->pen = q;
     r->pen_valid = 1;
     return STP_OK;
 }
@@ -562,6 +578,8 @@ int stp_renderer_line(stp_renderer *r, stp_vec3 p)
     if (status != STP_OK)
         return status;
     vertex_to_view(r, p, &q);
+    if (saturated(q))
+        return STP_ERR_RANGE;
     if (!r->pen_valid) {
         r->pen = q;
         r->pen_valid = 1;
@@ -1003,7 +1021,7 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
                             const stp_fix *shades)
 {
     stp_entry e;
-    int status;
+    int status, i;
     if (r == 0 || vertices == 0 || n < 3)
         return n < 3 && n >= 0 && r != 0 ? STP_ERR_DEGENERATE : STP_ERR_ARG;
     if (n > STP_MAX_POLYGON_VERTICES)
@@ -1017,6 +1035,9 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     e.shades = shades;
     r->last_shade = -1;
     enter_transform(r, vertices, &e);
+    for (i = 0; i < n; i++)
+        if (saturated(r->clip_a[i]))
+            return STP_ERR_RANGE;
     status = enter_facing(r, &e);
     if (status != STP_OK)
         return status == 1 ? STP_OK : status;

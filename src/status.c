@@ -16,6 +16,7 @@ const char *stp_status_text(int status)
     case STP_ERR_PORT: return "the port reported an error";
     case STP_ERR_VIEW: return "invalid view";
     case STP_ERR_UNSUPPORTED: return "feature not compiled into this build";
+    case STP_ERR_RANGE: return "coordinate beyond the range of view coordinates";
     default: return "unknown status";
     }
 }

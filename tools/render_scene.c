@@ -543,6 +543,14 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
             stats->polygons_skipped++;
             continue;
         }
+        if (status == STP_ERR_RANGE) {
+            snprintf(err, err_size,
+                     "polygon %zu (line %d): coordinate (%g, %g, %g) beyond the core's range "
+                     "(+-32767 from the eye along each view axis)",
+                     i + 1, p->source_line, scene->vertices[p->first].x,
+                     scene->vertices[p->first].y, scene->vertices[p->first].z);
+            goto done;
+        }
         if (status != STP_OK) {
             snprintf(err, err_size, "polygon %zu (line %d): %s", i + 1, p->source_line,
                      stp_status_text(status));

@@ -69,6 +69,12 @@
  *                    sphere takes its far root only; every secondary ray
  *                    starts STP_RT_OFFSET (raw) off the surface on its own
  *                    side and ignores hits nearer than that (cones).
+ *   shadow terminator a shadow ray leaving a patch (a polygon with vertex
+ *                    normals) starts on the side its interpolated normal
+ *                    faces and passes the patches sharing a corner with it
+ *                    (same coordinates), so the flat facets do not shade the
+ *                    smooth surface they stand for (no seams where the
+ *                    normal faces a light the facet turns from).
  */
 #ifndef STIPPLE_RAYTRACE_H
 #define STIPPLE_RAYTRACE_H

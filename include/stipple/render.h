@@ -56,7 +56,12 @@ typedef enum stp_status {
     STP_ERR_PORT = -8,         /* the port's flush returned an error */
     STP_ERR_VIEW = -9,         /* from == at, up parallel to the line of sight,
                                   or a field of view outside (0, 180) */
-    STP_ERR_UNSUPPORTED = -10  /* a feature compiled out of this build */
+    STP_ERR_UNSUPPORTED = -10, /* a feature compiled out of this build */
+    STP_ERR_RANGE = -11        /* a point entered lies beyond the range of view
+                                  coordinates (stp_fix: within +-32767 of the
+                                  eye along each view axis, after the model
+                                  transform, which must not saturate either):
+                                  nothing entered */
 } stp_status;
 
 /* Short English text for a status, for messages. */
@@ -281,7 +286,8 @@ int stp_renderer_set_transform(stp_renderer *r, const stp_transform *t);
 
 /* Move the pen / draw a line to a world point.  Lines are clipped to the
  * hither plane and the window.  Errors: STP_ERR_ARG, STP_ERR_FULL (the
- * display file, or no segment slot for an implicit segment). */
+ * display file, or no segment slot for an implicit segment), STP_ERR_RANGE
+ * (the point beyond the range of view coordinates; the pen stays). */
 int stp_renderer_move(stp_renderer *r, stp_vec3 p);
 int stp_renderer_line(stp_renderer *r, stp_vec3 p);
 
@@ -293,7 +299,8 @@ int stp_renderer_line(stp_renderer *r, stp_vec3 p);
  * Errors: STP_ERR_ARG, STP_ERR_TOO_MANY_VERTICES, STP_ERR_DEGENERATE (zero
  * Newell normal: repeated/collinear vertices, no area), STP_ERR_FULL
  * (nothing of the polygon is left in the display file; or no segment slot
- * for an implicit segment). */
+ * for an implicit segment), STP_ERR_RANGE (a vertex beyond the range of
+ * view coordinates: within +-32767 of the eye along each view axis). */
 int stp_renderer_polygon(stp_renderer *r, const stp_vec3 *vertices, int n);
 
 /* Smooth (Gouraud) polygons (docs/model.md section 4): like stp_renderer_polygon, but each

@@ -979,6 +979,55 @@ static void test_segment_table_full(void **state)
     fixture_close(&f);
 }
 
+/* Points beyond the range of view coordinates (stp_fix, within +-32767 of
+ * the eye along each view axis; the eye here is at z = -10) are refused
+ * with STP_ERR_RANGE and enter nothing, instead of being drawn moved to
+ * the edge of the range: world z 32760 is 32770 from the eye.  Ranges in
+ * stp_fix end at 32767.99998. */
+static void test_range_refused(void **state)
+{
+    fixture f;
+    stp_vec3 v[3];
+    stp_transform t;
+    uint32_t used;
+    (void)state;
+    fixture_open(&f, 8, 8, 64);
+    v[0] = vec(0, 0, 0);
+    v[1] = vec(4, 0, 0);
+    v[2] = vec(0, 4, 32760);
+    used = stp_renderer_display_file_used(f.r);
+    assert_int_equal(stp_renderer_polygon(f.r, v, 3), STP_ERR_RANGE);
+    assert_int_equal(stp_renderer_display_file_used(f.r), used);
+    /* 32757 from the eye: within range, entered */
+    v[2] = vec(0, 4, 32747);
+    assert_int_equal(stp_renderer_polygon(f.r, v, 3), STP_OK);
+    assert_true(stp_renderer_display_file_used(f.r) > used);
+    /* the edge: 32767.5 from the eye is held, 32768 is not */
+    v[2] = vec(0, 4, 32757.5);
+    assert_int_equal(stp_renderer_polygon(f.r, v, 3), STP_OK);
+    v[2] = vec(0, 4, 32758);
+    assert_int_equal(stp_renderer_polygon(f.r, v, 3), STP_ERR_RANGE);
+    /* lines: the far point is refused and the pen stays where it was */
+    assert_int_equal(stp_renderer_move(f.r, vec(0, 0, 32760)), STP_ERR_RANGE);
+    assert_int_equal(stp_renderer_move(f.r, vec(0, 0, 0)), STP_OK);
+    used = stp_renderer_display_file_used(f.r);
+    assert_int_equal(stp_renderer_line(f.r, vec(1, 1, 40000.0 - 10000.0)), STP_OK);
+    assert_int_equal(stp_renderer_line(f.r, vec(1, 1, 32760)), STP_ERR_RANGE);
+    /* the model transform saturating (10000 x 4) is refused too */
+    stp_transform_identity(&t);
+    stp_transform_scale(&t, fx(4), fx(4), fx(4));
+    assert_int_equal(stp_renderer_set_transform(f.r, &t), STP_OK);
+    v[0] = vec(0, 0, 0);
+    v[1] = vec(1, 0, 0);
+    v[2] = vec(0, 1, 0);
+    assert_int_equal(stp_renderer_polygon(f.r, v, 3), STP_OK);
+    v[2] = vec(0, 10000, 0);
+    assert_int_equal(stp_renderer_polygon(f.r, v, 3), STP_ERR_RANGE);
+    assert_string_equal(stp_status_text(STP_ERR_RANGE),
+                        "coordinate beyond the range of view coordinates");
+    fixture_close(&f);
+}
+
 static void test_segment_errors(void **state)
 {
     static const dpt tri[3] = {{1, 1}, {6, 1}, {1, 6}};
@@ -1371,6 +1420,7 @@ int main(void)
         cmocka_unit_test(test_polygon_behind_the_eye_enters_nothing),
         cmocka_unit_test(test_render_rejects_small_buffers),
         cmocka_unit_test(test_renderer_create_rejects_bad_arguments),
+        cmocka_unit_test(test_range_refused),
         cmocka_unit_test(test_style8_background_and_style_table),
         cmocka_unit_test(test_grey8_levels_and_gamma),
     };

@@ -9,8 +9,12 @@
  *   - stiff cases (the stability suite of the ray tracer): distant and
  *     near-limit objects, grazing and tangent rays, secondary rays leaving
  *     a surface (reflection, refraction, shadows at a low sun), cones;
+ *   - the shadow-terminator seams: the teapot at size 3, whose patches
+ *     must not be shadowed by their own neighbouring facets where the
+ *     interpolated normal faces the light;
  *   - argument errors.
  */
+#define _POSIX_C_SOURCE 200809L
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -25,6 +29,7 @@
 #include "rt_compare.h"
 #include "test_scenes.h"
 #include "scene.h"
+#include "scenegen_private.h"
 #include "stipple/stipple.h"
 
 static const char *const scenes[] = {"tetra-s1", "tetra-s2", "mount-s2", "teapot-s1",
@@ -303,6 +308,56 @@ static void test_no_self_shadow(void **state)
     stp_scene_free(&scene);
 }
 
+/* The SPD teapot at size 3 (stipple scene teapot --size 3), parsed. */
+static void teapot_s3(stp_scene *scene)
+{
+    char *text = 0, err[512];
+    size_t len = 0;
+    stp_scene_options sopt;
+    FILE *f = open_memstream(&text, &len);
+    assert_non_null(f);
+    assert_int_equal(stp_sg_write_teapot(f, 3), 0);
+    assert_int_equal(fclose(f), 0);
+    stp_scene_options_default(&sopt);
+    if (stp_scene_parse(text, len, "nff", "teapot-s3", &sopt, scene, err, sizeof err) != 0)
+        fail_msg("cannot parse teapot-s3: %s", err);
+    free(text);
+}
+
+/* The seams: the ray-traced teapot (depth 0: local shade and shadows)
+ * against the double reference whose shadow rays leaving a patch ignore
+ * the facets sharing a corner with it (the smooth surface, which does not
+ * shade itself where its normal faces the light).  A pixel the core draws
+ * more than 1/30 darker is a seam.  Before the terminator fix 72 of 32 768
+ * pixels (the lid's rim, the base); after it 0.  The bound 8 leaves room
+ * for a shadow edge that falls a pixel apart (the core's shadow ray starts
+ * STP_RT_OFFSET off the facet, the reference's on it). */
+static void test_terminator_seams(void **state)
+{
+    stp_scene scene;
+    stp_tool_options opt;
+    stp_rt_error e;
+    char err[512];
+    double *shades;
+    long seams = 0, i, n = 256 * 128;
+    (void)state;
+    teapot_s3(&scene);
+    options(&opt, 256, 128);
+    opt.rt_depth = 0;
+    shades = malloc(sizeof *shades * 2 * (size_t)n);
+    assert_non_null(shades);
+    if (stp_rt_compare(&scene, &opt, &e, shades, err, sizeof err) != 0)
+        fail_msg("teapot-s3: %s", err);
+    for (i = 0; i < n; i++)
+        if (shades[n + i] - shades[i] > 1.0 / 30)
+            seams++;
+    print_message("teapot-s3, depth 0: %ld of %ld pixels darker than the reference (seams)\n",
+                  seams, n);
+    assert_true(seams <= 8);
+    free(shades);
+    stp_scene_free(&scene);
+}
+
 /* ---- arguments ---------------------------------------------------------- */
 
 static void test_arguments(void **state)
@@ -393,6 +448,7 @@ int main(void)
         cmocka_unit_test(test_bands_equal_full_frame),
         cmocka_unit_test(test_stiff_cases),
         cmocka_unit_test(test_no_self_shadow),
+        cmocka_unit_test(test_terminator_seams),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

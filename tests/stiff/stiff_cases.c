@@ -440,13 +440,16 @@ static void build_polygon_cases(void)
                      "finite: a triangle spanning -30000..30000, axis-aligned view");
     triangle(c, ref_v3(-30000, -30000, 100), ref_v3(30000, -30000, 100), ref_v3(0, 30000, 300));
     c = polygon_case("polygon_span_rotated_view",
-                     "clamped: seen obliquely its view coordinates exceed the range and "
-                     "saturate; the shade stays finite");
+                     "refused: seen obliquely its view coordinates exceed the range "
+                     "(STP_ERR_RANGE, nothing entered)");
     c->view.at = ref_v3(1, 0.5, -3);
     triangle(c, ref_v3(-30000, -30000, 100), ref_v3(30000, -30000, 100), ref_v3(0, 30000, 300));
+    c->expect_status = STP_ERR_RANGE;
     c = polygon_case("polygon_input_beyond_range",
-                     "clamped: world coordinates beyond the range saturate on input");
+                     "refused: world coordinates beyond the range saturate on input, so "
+                     "their view coordinates do (STP_ERR_RANGE, nothing entered)");
     triangle(c, ref_v3(-1e5, -1e5, 50), ref_v3(1e5, -1e5, 50), ref_v3(0, 1e5, 60));
+    c->expect_status = STP_ERR_RANGE;
 
     c = polygon_case("polygon_behind_eye",
                      "finite: shaded (centre behind the eye, E = unit(-centre)), wholly clipped: "

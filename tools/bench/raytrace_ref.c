@@ -43,6 +43,7 @@ struct ref_rt {
     size_t vert_count, vert_cap;
     double object_scale; /* largest absolute coordinate of the objects' boxes */
     double eps;          /* 1e-9 * scene scale */
+    int smooth_shadows;  /* ref_rt_set_smooth_shadows */
 };
 
 typedef struct rt_ray {
@@ -552,6 +553,39 @@ static ref_vec3 object_normal(const ref_rt *rt, const rt_object *o, ref_vec3 p)
 
 /* ---- shading */
 
+void ref_rt_set_smooth_shadows(ref_rt *rt, int on)
+{
+    rt->smooth_shadows = on;
+}
+
+/* Whether polygons a and b have a vertex in common (the same coordinates:
+ * a patch's facets share their corners exactly). */
+static int shares_vertex(const ref_rt *rt, const rt_object *a, const rt_object *b)
+{
+    int i, j;
+    for (i = 0; i < a->count; i++)
+        for (j = 0; j < b->count; j++) {
+            ref_vec3 u = rt->verts[a->first + (size_t)i], v = rt->verts[b->first + (size_t)j];
+            if (u.x == v.x && u.y == v.y && u.z == v.z)
+                return 1;
+        }
+    return 0;
+}
+
+/* Whether object i would not exist on the smooth surface a shadow ray
+ * leaving patch `start` belongs to: one of its neighbouring facets. */
+static int smooth_ignores(const ref_rt *rt, long start, size_t i)
+{
+    const rt_object *s, *o;
+    if (!rt->smooth_shadows || start < 0)
+        return 0;
+    s = &rt->objects[start];
+    o = &rt->objects[i];
+    if (s->kind != RT_POLYGON || !s->has_normals || o->kind != RT_POLYGON || !o->has_normals)
+        return 0;
+    return shares_vertex(rt, s, o);
+}
+
 /* Visibility of light position l from p (product of transmissions of the
  * objects the segment crosses, each once). */
 static double visibility(const ref_rt *rt, ref_vec3 p, long start, ref_vec3 l)
@@ -567,7 +601,10 @@ static double visibility(const ref_rt *rt, ref_vec3 p, long start, ref_vec3 l)
     s.inside = -1;
     s.primary = 0;
     for (i = 0; i < rt->object_count && vis > 0; i++) {
-        double t = hit_object(rt, i, &s, rt->eps);
+        double t;
+        if (smooth_ignores(rt, start, i))
+            continue;
+        t = hit_object(rt, i, &s, rt->eps);
         if (t < u - rt->eps)
             vis *= rt->materials[rt->objects[i].material].transmission;
     }

@@ -146,6 +146,13 @@ void ref_rt_set_materials(ref_rt *rt, const ref_rt_material *table, size_t count
  * min_weight in [0, 1].  REF_OK, or REF_ERR_ARG (nothing changed). */
 int ref_rt_set_recursion(ref_rt *rt, int max_depth, double min_weight);
 
+/* on: a shadow ray leaving a patch (a polygon with vertex normals) ignores
+ * the patches sharing a vertex with it, as if the facets were the smooth
+ * surface their normals describe (which does not shade itself where its
+ * normal faces the light); the reference for the shadow-terminator test.
+ * Off by default. */
+void ref_rt_set_smooth_shadows(ref_rt *rt, int on);
+
 /* Add objects.  Return the object's id (0, 1, 2, ... in order of adding),
  * or a negative error: REF_ERR_ARG (NULL, a negative radius, both cone
  * radii 0, a material < 0, a non-finite coordinate, out of memory),

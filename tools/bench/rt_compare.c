@@ -148,6 +148,8 @@ static int compare_prepared(const stp_scene *scene, const stp_tool_options *opt,
     if (stp_tool_rt_build(scene, opt, &t, &stats, err, err_size) != 0)
         return -1;
     ref = reference_of(scene, opt, &t, &table);
+    if (ref) /* the core's shadow rays pass a patch's neighbouring facets */
+        ref_rt_set_smooth_shadows(ref, 1);
     if (!ref) {
         stp_tool_rt_free(&t);
         snprintf(err, err_size, "out of memory for the reference");

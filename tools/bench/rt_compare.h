@@ -8,7 +8,8 @@
  * through stp_tool_rt_build) and by tools/bench/raytrace_ref.c given the
  * very inputs the core got (its stp_fix view, lighting, materials and
  * object coordinates converted to double), so what differs is the core's
- * arithmetic.  Grey only.
+ * arithmetic.  Grey only.  Shadow rays leaving a patch pass its
+ * neighbouring facets in both (ref_rt_set_smooth_shadows).
  */
 #ifndef STIPPLE_TOOLS_BENCH_RT_COMPARE_H
 #define STIPPLE_TOOLS_BENCH_RT_COMPARE_H
