@@ -21,6 +21,10 @@
 
 #include "stipple/config.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define STP_CONFIG_PASTE_(name, f, v, l, s, d, q, w1, w2, w3, w4, w5, w6, w7, w8, w9)              \
     name##_cfg_f##f##_v##v##_l##l##_s##s##_d##d##_q##q##_##w1##w2##w3##w4##w5##w6##w7##w8##w9
 #define STP_CONFIG_PASTE(name, f, v, l, s, d, q, w1, w2, w3, w4, w5, w6, w7, w8, w9)               \
@@ -34,5 +38,9 @@
 
 #define stp_renderer_create STP_CONFIG_SYMBOL(stp_renderer_create)
 #define stp_rt_create STP_CONFIG_SYMBOL(stp_rt_create)
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

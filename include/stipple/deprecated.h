@@ -7,6 +7,10 @@
 #ifndef STIPPLE_DEPRECATED_H
 #define STIPPLE_DEPRECATED_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #ifndef STP_NO_DEPRECATED
 #define stp_set_view(r, view) stp_renderer_set_view(r, view)
 #define stp_set_light(r, position, brightness, background)                                         \
@@ -33,6 +37,10 @@
 #define stp_polygon_count(r) stp_renderer_polygon_count(r)
 #define stp_last_shade(r) stp_renderer_last_shade(r)
 #define stp_render(r, port, output, memory) stp_renderer_render(r, port, output, memory)
+#endif
+
+#ifdef __cplusplus
+}
 #endif
 
 #endif

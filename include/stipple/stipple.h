@@ -12,6 +12,11 @@
 #ifndef STIPPLE_STIPPLE_H
 #define STIPPLE_STIPPLE_H
 
+/* C linkage for everything below (each header also guards itself) */
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "stipple/config.h"
 #include "stipple/config_guard.h"
 #include "stipple/version.h"
@@ -25,5 +30,9 @@
 #include "stipple/colour.h"
 #include "stipple/raytrace.h"
 #include "stipple/playback.h"
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

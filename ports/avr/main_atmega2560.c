@@ -76,20 +76,12 @@ int main(void)
         finish(3);
 
     stp_scene_data_output(scene, &out);
-    mem.band = band;
-    mem.setup = 0; /* no per-polygon setups kept between bands */
-    mem.setup_count = 0;
-    mem.band_size = sizeof band;
-    mem.band_rows = STP_FW_BAND_ROWS;
+    stp_scene_frame_memory(&mem, band, sizeof band, STP_FW_BAND_ROWS, scene->sort,
+                           scene->sort_count);
 #if STP_WITH_ZBUFFER
     mem.zbuf = zbuf;
     mem.zbuf_count = sizeof zbuf / sizeof zbuf[0];
-#else
-    mem.zbuf = 0;
-    mem.zbuf_count = 0;
 #endif
-    mem.sort = scene->sort;
-    mem.sort_count = scene->sort_count;
     port.width = PANEL_W;
     port.height = PANEL_H;
     port.format = STP_PIXEL_MONO1;

@@ -108,6 +108,25 @@ int stp_scene_data_enter(const stp_scene_data *scene, void *mem, size_t mem_size
 /* The output settings the scene was compiled with. */
 void stp_scene_data_output(const stp_scene_data *scene, stp_output *out);
 
+/* The frame memory a firmware lends stp_renderer_render for a compiled scene:
+ * band_rows rows in band (band_size bytes), the scene's sort array, no kept
+ * per-polygon setups and no Z buffer — a build with STP_WITH_ZBUFFER sets
+ * zbuf and zbuf_count afterwards. */
+static inline void stp_scene_frame_memory(stp_frame_memory *mem, uint8_t *band, size_t band_size,
+                                          uint32_t band_rows, stp_sort_entry *sort,
+                                          uint32_t sort_count)
+{
+    mem->band = band;
+    mem->band_size = band_size;
+    mem->band_rows = band_rows;
+    mem->zbuf = 0;
+    mem->zbuf_count = 0;
+    mem->sort = sort;
+    mem->sort_count = sort_count;
+    mem->setup = 0;
+    mem->setup_count = 0;
+}
+
 #ifdef __cplusplus
 }
 #endif

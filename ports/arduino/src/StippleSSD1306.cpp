@@ -95,20 +95,12 @@ int StippleSSD1306::draw(const stp_scene_data &scene)
     if (status != STP_OK)
         return status;
     stp_scene_data_output(&scene, &out);
-    mem.band = band_;
-    mem.setup = 0; /* no per-polygon setups kept between bands */
-    mem.setup_count = 0;
-    mem.band_size = sizeof band_;
-    mem.band_rows = STIPPLE_BAND_ROWS;
+    stp_scene_frame_memory(&mem, band_, sizeof band_, STIPPLE_BAND_ROWS, scene.sort,
+                           scene.sort_count);
 #if STP_WITH_ZBUFFER
     mem.zbuf = zbuf_;
     mem.zbuf_count = sizeof zbuf_ / sizeof zbuf_[0];
-#else
-    mem.zbuf = 0;
-    mem.zbuf_count = 0;
 #endif
-    mem.sort = scene.sort;
-    mem.sort_count = scene.sort_count;
     port.width = width;
     port.height = height;
     port.format = STP_PIXEL_MONO1;
