@@ -11,6 +11,8 @@
 
 #include "compile_scene.h"
 #include "options.h"
+#include "palette.h"
+#include "palette_output.h"
 #include "progress.h"
 #include "rt_compare.h"
 #if STP_HAVE_DEVICE
@@ -75,7 +77,11 @@ static void usage_render(FILE *to)
             "      --stats              print display-file and memory figures on stderr\n"
             "      --palette grey|pseudo  .ppm/.png through a 256-entry colour table: the frame is\n"
             "                           an indexed frame buffer of styles; pseudo maps dark to\n"
-            "                           blue and light to red; --gamma applies per primary\n"
+            "                           blue and light to red; --gamma applies per primary\n"            "      --palette bw|bwr|grey4|grey16|rgb8|FILE  the picture in 256 levels (colour\n"
+            "                           unless the palette is grey) dithered to the palette's\n"
+            "                           colours (-d: default fs), to .png, .ppm (.pgm for greys)\n"
+            "      --planes PREFIX      with --palette bwr: also PREFIX.bw and PREFIX.red, the\n"
+            "                           SSD1680's RAM planes (docs/palettes.md)\n"
             "  -h, --help               this help\n");
     stp_tool_options_help(to);
 }
@@ -92,6 +98,7 @@ static void usage_dither(FILE *to)
 {
     fprintf(to,
             "usage: stipple dither IMAGE -o OUT.pbm [options]\n"
+            "       stipple dither IMAGE -o OUT.png --palette PALETTE [--planes PREFIX]\n"
             "\n"
             "Halftones a PNG, PGM or PPM image ('-' reads standard input; colour through\n"
             "luminance, alpha ignored) with an ordered-dither cell or error diffusion\n"
@@ -107,6 +114,12 @@ static void usage_dither(FILE *to)
             "      --linear          turn sRGB grey into linear light first (a panel's\n"
             "                        density of lit pixels is linear light)\n"
             "      --gamma-k K       (default 1)\n"
+            "      --palette P       dither to a palette instead of black and white: bw, bwr\n"
+            "                        (black/white/red e-paper), grey4, grey16, rgb8 or a file\n"
+            "                        of 'R G B' lines; colour kept, nearest colour per pixel,\n"
+            "                        error per channel; writes .png, .ppm (.pgm for greys)\n"
+            "      --planes PREFIX   with --palette bwr: also PREFIX.bw and PREFIX.red, the\n"
+            "                        SSD1680's two RAM planes (docs/palettes.md)\n"
             "  -h, --help            this help\n");
 }
 
@@ -167,7 +180,8 @@ enum {
     OPT_BENCH_SCENES,
     OPT_BENCH_BUDGET,
     OPT_SCENE_FORMAT,
-    OPT_LINEAR
+    OPT_LINEAR,
+    OPT_PLANES
 };
 
 /* Turn an indexed frame buffer (STYLE8: style index 1..levels per pixel)
@@ -297,6 +311,57 @@ static int check_output_options(const stp_tool_given *given, stp_posix_file_kind
     return 0;
 }
 
+static int palette_picture(const stp_palette *pal, const stp_tool_options *opt, int linear,
+                           const uint8_t *pixels, int channels, uint32_t width, uint32_t height,
+                           const char *out_path, const char *planes);
+
+/* stipple render --palette bw|bwr|grey4|grey16|rgb8|FILE: the scene in 256
+ * levels (in colour unless the palette is grey), dithered to the palette
+ * (-d; default Floyd-Steinberg, rows left to right, as 1-bit stills). */
+static int render_palette(const char *scene_path, const char *scene_format, const char *spec,
+                          const char *planes, const char *out_path, stp_tool_options *opt,
+                          const stp_scene_options *sopt, const stp_tool_given *given, int format_given)
+{
+    stp_palette pal;
+    stp_scene scene;
+    stp_posix_frame frame;
+    char err[512];
+    int rc;
+    if (stp_palette_load(spec, &pal, err, sizeof err) != 0)
+        return stp_tool_usage_error("render", "bad --palette: %s (or grey, pseudo)", err);
+    if (planes && !pal.bwr)
+        return stp_tool_usage_error("render", "--planes writes the planes of --palette bwr");
+    if (format_given || !stp_palette_output_accepts(&pal, out_path))
+        return stp_tool_usage_error("render", "%s: a palette picture is written as .png, .ppm%s "
+                                              "(no --format)", out_path, pal.grey ? " or .pgm" : "");
+    if (!pal.grey)
+        opt->colour = 1;
+    if (!given->code['l'])
+        opt->levels = 256;
+    if (!opt->dither_given) {
+        opt->dither = STP_TOOL_DITHER_DIFFUSE;
+        opt->diffuse_kernel = STP_DIFFUSE_FLOYD_STEINBERG;
+        opt->diffuse_raster = 1;
+    }
+    if (stp_scene_load_as(scene_path, scene_format, sopt, &scene, err, sizeof err) != 0)
+        return fail("%s", err);
+    if (stp_posix_frame_init(&frame, (uint32_t)opt->width, (uint32_t)opt->height,
+                             opt->colour ? STP_PIXEL_RGB888 : STP_PIXEL_GREY8) != 0) {
+        stp_scene_free(&scene);
+        return fail("out of memory for the frame");
+    }
+    rc = stp_tool_render(&scene, opt, stp_posix_frame_port(&frame), 0, err, sizeof err);
+    stp_scene_free(&scene);
+    if (rc != 0) {
+        stp_posix_frame_free(&frame);
+        return fail("%s: %s", scene_path, err);
+    }
+    rc = palette_picture(&pal, opt, 0, frame.pixels, opt->colour ? 3 : 1, frame.width, frame.height,
+                         out_path, planes);
+    stp_posix_frame_free(&frame);
+    return rc;
+}
+
 static int cmd_render(int argc, char **argv)
 {
     static const struct option own[] = {
@@ -305,6 +370,7 @@ static int cmd_render(int argc, char **argv)
         {"palette", required_argument, 0, OPT_PALETTE},
         {"device", required_argument, 0, OPT_DEVICE},
         {"scene-format", required_argument, 0, OPT_SCENE_FORMAT},
+        {"planes", required_argument, 0, OPT_PLANES},
         {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     struct option longs[64];
     stp_tool_options opt;
@@ -316,6 +382,7 @@ static int cmd_render(int argc, char **argv)
     stp_posix_file_kind kind = STP_POSIX_FILE_UNKNOWN;
     stp_tool_given given;
     const char *out_path = 0, *scene_path, *device_spec = 0, *scene_format = 0;
+    const char *new_palette = 0, *planes = 0;
     char err[512];
     int c, show_stats = 0, palette = 0, png = 0, format_given = 0;
 
@@ -359,8 +426,9 @@ static int cmd_render(int argc, char **argv)
             else if (!strcmp(optarg, "pseudo"))
                 palette = 2;
             else
-                return stp_tool_usage_error("render", "bad --palette '%s' (grey, pseudo)", optarg);
+                new_palette = optarg; /* bw, bwr, ... or a file: loaded below */
             break;
+        case OPT_PLANES: planes = optarg; break;
         case 'h': usage_render(stdout); return 0;
         default: return stp_tool_getopt_error("render", c, argv);
         }
@@ -376,7 +444,7 @@ static int cmd_render(int argc, char **argv)
     if (stp_tool_check_renderer(&given, opt.raytrace, err, sizeof err) != 0)
         return stp_tool_usage_error("render", "%s", err);
     if (device_spec) {
-        if (out_path || palette || format_given)
+        if (out_path || palette || new_palette || format_given)
             return stp_tool_usage_error("render", "--device draws on the device: no -o, --format "
                                                   "or --palette");
         return render_to_device(scene_path, scene_format, device_spec, &opt, &sopt,
@@ -385,6 +453,11 @@ static int cmd_render(int argc, char **argv)
     if (!out_path)
         return stp_tool_usage_error("render", "no output given (-o FILE, -o - for stdout, or "
                                               "--device SPEC)");
+    if (planes && !new_palette)
+        return stp_tool_usage_error("render", "--planes needs --palette bwr");
+    if (new_palette)
+        return render_palette(scene_path, scene_format, new_palette, planes, out_path, &opt, &sopt,
+                              &given, format_given);
     if (!format_given && stp_posix_png_path(out_path))
         png = 1;
     if (png == 1)
@@ -459,14 +532,70 @@ static int cmd_render(int argc, char **argv)
     return 0;
 }
 
+/* Dither pixels (channels 1 or 3 bytes each) to the palette and write the
+ * picture, and with planes a bwr picture's two planes.  Returns the exit
+ * status. */
+static int palette_picture(const stp_palette *pal, const stp_tool_options *opt, int linear,
+                           const uint8_t *pixels, int channels, uint32_t width, uint32_t height,
+                           const char *out_path, const char *planes)
+{
+    stp_palette_method m;
+    stp_cell cell;
+    uint8_t *index = malloc((size_t)width * height);
+    char err[512];
+    int rc = 1;
+    memset(&m, 0, sizeof m);
+    m.diffuse = opt->dither == STP_TOOL_DITHER_DIFFUSE;
+    m.kernel = opt->diffuse_kernel;
+    m.serpentine = !opt->diffuse_raster;
+    m.linear = linear;
+    if (stp_tool_cell(opt, &cell) != 0) {
+        free(index);
+        return fail("bad halftone cell");
+    }
+    m.cell = &cell;
+    if (!index || stp_palette_dither(pal, &m, pixels, channels, width, height, index) != 0)
+        rc = fail("out of memory");
+    else if (stp_palette_write(pal, index, width, height, out_path, err, sizeof err) != 0 ||
+             (planes && stp_palette_write_planes(index, width, height, planes, err, sizeof err) != 0))
+        rc = fail("%s", err);
+    else
+        rc = 0;
+    free(index);
+    return rc;
+}
+
+/* Reads a PNG or PNM image keeping its colour (channels 1 or 3). */
+static int read_image_colour(const char *path, stp_posix_image *img, char *err, size_t err_size)
+{
+    int first = EOF;
+    if (!strcmp(path, "-")) {
+        first = getc(stdin);
+        if (first != EOF)
+            (void)ungetc(first, stdin);
+    } else {
+        FILE *fp = fopen(path, "rb");
+        if (fp) {
+            first = getc(fp);
+            fclose(fp);
+        }
+    }
+    if (first == 0x89)
+        return stp_posix_read_png(path, img, 0, err, err_size);
+    return stp_posix_read_pnm(path, img, err, err_size);
+}
+
 static int cmd_dither(int argc, char **argv)
 {
     static const struct option longs[] = {
         {"output", required_argument, 0, 'o'}, {"plain", no_argument, 0, OPT_PLAIN},
         {"dither", required_argument, 0, 'd'}, {"spacing", required_argument, 0, STP_TOOL_OPT_SPACING},
         {"gamma", required_argument, 0, 'g'}, {"gamma-k", required_argument, 0, STP_TOOL_OPT_GAMMA_K},
-        {"linear", no_argument, 0, OPT_LINEAR}, {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
+        {"linear", no_argument, 0, OPT_LINEAR}, {"palette", required_argument, 0, OPT_PALETTE},
+        {"planes", required_argument, 0, OPT_PLANES}, {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     stp_tool_options opt;
+    stp_palette pal;
+    const char *palette_spec = 0, *planes = 0;
     stp_posix_image img;
     stp_posix_frame frame;
     stp_cell cell;
@@ -485,6 +614,8 @@ static int cmd_dither(int argc, char **argv)
         case 'o': out_path = optarg; break;
         case OPT_PLAIN: plain = 1; break;
         case OPT_LINEAR: linear = 1; break;
+        case OPT_PALETTE: palette_spec = optarg; break;
+        case OPT_PLANES: planes = optarg; break;
         case 'd':
         case STP_TOOL_OPT_SPACING:
         case 'g':
@@ -505,6 +636,27 @@ static int cmd_dither(int argc, char **argv)
         return stp_tool_usage_error("dither", "one image only ('%s' is extra)", argv[optind + 1]);
     if (!out_path)
         return stp_tool_usage_error("dither", "no output given (-o FILE.pbm)");
+    if (planes && !palette_spec)
+        return stp_tool_usage_error("dither", "--planes needs --palette bwr");
+    if (palette_spec) {
+        stp_posix_image colour;
+        int rc;
+        if (stp_palette_load(palette_spec, &pal, err, sizeof err) != 0)
+            return stp_tool_usage_error("dither", "--palette: %s", err);
+        if (planes && !pal.bwr)
+            return stp_tool_usage_error("dither", "--planes writes the planes of --palette bwr");
+        if (!stp_palette_output_accepts(&pal, out_path))
+            return stp_tool_usage_error("dither", "%s: a palette picture is written as .png, .ppm%s",
+                                        out_path, pal.grey ? " or .pgm" : "");
+        if (plain || use_gamma)
+            return stp_tool_usage_error("dither", "--palette takes no --%s", plain ? "plain" : "gamma");
+        if (read_image_colour(argv[optind], &colour, err, sizeof err) != 0)
+            return fail("%s", err);
+        rc = palette_picture(&pal, &opt, linear, colour.samples, colour.channels, colour.width,
+                             colour.height, out_path, planes);
+        stp_posix_image_free(&colour);
+        return rc;
+    }
     png = stp_posix_png_path(out_path);
     if (strcmp(out_path, "-") != 0 && !png &&
         stp_posix_kind_from_path(out_path) != STP_POSIX_FILE_P4)

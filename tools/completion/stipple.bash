@@ -16,9 +16,9 @@ _stipple_shared="--size --levels --dither --spacing --gamma --gamma-k --hidden -
 
 _stipple_options() {
     case $1 in
-    render) echo "--output --scene-format --device --format --band --stats --palette --help $_stipple_shared" ;;
+    render) echo "--output --scene-format --device --format --band --stats --palette --planes --help $_stipple_shared" ;;
     compile) echo "--output --header --scene-format --static --help $_stipple_shared" ;;
-    dither) echo "--output --plain --dither --spacing --gamma --gamma-k --linear --help" ;;
+    dither) echo "--output --plain --dither --spacing --gamma --gamma-k --linear --palette --planes --help" ;;
     scene) echo "--size --output --list --help" ;;
     bench) echo "--scenes --size --depth --min-weight --budget --help" ;;
     help) echo "--help" ;;
@@ -55,13 +55,17 @@ _stipple() {
     -d | --dither) COMPREPLY=($(compgen -W "bayer2 bayer4 bayer8 bayer16 blue-noise clustered: clustered45: seed2x2 pattern2x2 user: fs atkinson sierra-lite jjn stucki burkes" -- "$cur")); return ;;
     --exposure) COMPREPLY=($(compgen -W "auto off" -- "$cur")); return ;;
     --spacing) COMPREPLY=($(compgen -W "linear exponential cubic" -- "$cur")); return ;;
-    --palette) COMPREPLY=($(compgen -W "grey pseudo" -- "$cur")); return ;;
+    --palette)
+        if [ "$cmd" = dither ]; then COMPREPLY=($(compgen -W "bw bwr grey4 grey16 rgb8" -- "$cur"))
+        else COMPREPLY=($(compgen -W "grey pseudo bw bwr grey4 grey16 rgb8" -- "$cur")); fi
+        COMPREPLY+=($(compgen -f -- "$cur")); return ;;
+    --planes) COMPREPLY=($(compgen -f -- "$cur")); return ;;
     --device) COMPREPLY=($(compgen -W "fb:/dev/fb0 usb spi:/dev/spidev0.0,controller=" -- "$cur")); return ;;
     -o | --output)
         case $cmd in
         compile) _stipple_files '*.c' ;;
         scene) _stipple_files '*.nff' ;;
-        dither) _stipple_files '*.@(pbm|png)' ;;
+        dither) _stipple_files '*.@(pbm|png|ppm|pgm)' ;;
         *) _stipple_files '*.@(pbm|pgm|ppm|png|txt)' ;;
         esac
         return ;;
