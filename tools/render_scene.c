@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Host side: a stp_scene through the core.  See render_scene.h. */
 #include "render_scene.h"
+#include "outlines.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -33,6 +34,7 @@ void stp_tool_options_default(stp_tool_options *opt)
     opt->rt_depth = 4;
     opt->rt_min_weight = 1.0 / 64;
     opt->rt_hierarchy = 1;
+    opt->crease_angle = 40.0;
 }
 
 stp_fix stp_tool_fix(double v)
@@ -394,6 +396,65 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
     return rc;
 }
 
+static double fix_to_double(stp_fix v)
+{
+    return (double)v / STP_FIX_ONE;
+}
+
+/* The outline pieces of the prepared scene for the core's view. */
+static int find_outlines(const stp_tool_prepared *prep, const stp_view *view, stp_outline_segment **seg,
+                         size_t *count)
+{
+    stp_outline_view ov;
+    ov.perspective = view->projection == STP_PERSPECTIVE;
+    ov.from.x = fix_to_double(view->from.x);
+    ov.from.y = fix_to_double(view->from.y);
+    ov.from.z = fix_to_double(view->from.z);
+    ov.at.x = fix_to_double(view->at.x);
+    ov.at.y = fix_to_double(view->at.y);
+    ov.at.z = fix_to_double(view->at.z);
+    ov.up.x = fix_to_double(view->up.x);
+    ov.up.y = fix_to_double(view->up.y);
+    ov.up.z = fix_to_double(view->up.z);
+    ov.fov_degrees = fix_to_double(view->fov_degrees);
+    ov.window_half = fix_to_double(view->window_half);
+    ov.width = prep->opt.width;
+    ov.height = prep->opt.height;
+    return stp_outlines_find(&prep->scene, &ov, prep->opt.outlines, prep->opt.crease_angle, seg, count);
+}
+
+/* The lines' shade: the option's, or for "auto" black unless the
+ * background is dark (luminance below one half), then white. */
+static double outline_level(const stp_scene *scene, const stp_tool_options *opt)
+{
+    const double *bg = opt->background_given ? opt->background_rgb
+                                             : (scene->has_background ? scene->background : 0);
+    if (opt->outline_level >= 0)
+        return opt->outline_level;
+    if (!bg)
+        return 0; /* the core's default background is black: stay black */
+    return 0.30 * bg[0] + 0.59 * bg[1] + 0.11 * bg[2] < 0.5 ? 1.0 : 0.0;
+}
+
+/* Enter the outline pieces as lines after the polygons. */
+static int enter_outlines(stp_renderer *r, const stp_scene *scene, const stp_tool_options *opt,
+                          const stp_outline_segment *seg, size_t count, char *err, size_t err_size)
+{
+    size_t i;
+    int status = stp_renderer_set_fill_style(r, stp_intensity_index(stp_tool_fix(outline_level(scene, opt)),
+                                                                     opt->levels));
+    for (i = 0; status == STP_OK && i < count; i++) {
+        status = stp_renderer_move(r, stp_tool_vec3(seg[i].a));
+        if (status == STP_OK)
+            status = stp_renderer_line(r, stp_tool_vec3(seg[i].b));
+    }
+    if (status != STP_OK) {
+        snprintf(err, err_size, "outline %zu: %s", i, stp_status_text(status));
+        return -1;
+    }
+    return 0;
+}
+
 int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
                              stp_tool_stats *stats, char *err, size_t err_size)
 {
@@ -418,6 +479,8 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
     uint16_t *shadow_maps = 0;
     stp_diffusion diffusion;
     int diffusing = 0;
+    stp_outline_segment *outline = 0;
+    size_t outline_count = 0;
 
     memset(&diffusion, 0, sizeof diffusion);
     if (!stats)
@@ -426,6 +489,11 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
     if (stp_tool_setup_prepared(prep, &view, &lighting, err, err_size) != 0)
         return -1;
 
+    if (opt->outlines && find_outlines(prep, &view, &outline, &outline_count) != 0) {
+        snprintf(err, err_size, "out of memory for the outlines");
+        return -1;
+    }
+    capacity += 3 * outline_count; /* a style, then move and line each */
     for (i = 0; i < scene->polygon_count; i++)
         /* the polygon, a style and a transparency attribute, and with
          * shadows its light records */
@@ -433,7 +501,7 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
                     (opt->shadow_resolution ? 1u + STP_MAX_LIGHTS : 0u);
     if (capacity > 0xFFFFFFFFu) {
         snprintf(err, err_size, "scene too large for one display file");
-        return -1;
+        goto done;
     }
     rmem = malloc(stp_renderer_size());
     df = malloc(sizeof *df * capacity);
@@ -557,6 +625,8 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
             goto done;
         }
     }
+    if (outline_count && enter_outlines(r, scene, opt, outline, outline_count, err, err_size) != 0)
+        goto done;
     (void)stp_segment_close(r);
     stats->display_entries = stp_renderer_display_file_used(r);
 
@@ -602,6 +672,7 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
     }
     result = 0;
 done:
+    free(outline);
     free(diffusion.errors);
     free(shadow_maps);
     free(normals);

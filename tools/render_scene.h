@@ -72,6 +72,11 @@ typedef struct stp_tool_options {
     double rt_min_weight;    /* ray tracer: weight below which a secondary
                                 ray is not cast (1/64) */
     int rt_hierarchy;        /* ray tracer: bounding-volume hierarchy (1) */
+    /* outlines (outlines.h, docs/outlines.md): lines over the polygons */
+    int outlines;            /* mask of STP_OUTLINE_SILHOUETTE, _CREASE (0) */
+    double crease_angle;     /* degrees between normals that make a crease (40) */
+    double outline_level;    /* the lines' shade 0..1 (0, black); < 0: black,
+                                or white on a dark background */
 } stp_tool_options;
 
 void stp_tool_options_default(stp_tool_options *opt);

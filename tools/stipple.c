@@ -11,6 +11,7 @@
 
 #include "compile_scene.h"
 #include "options.h"
+#include "outlines.h"
 #include "palette.h"
 #include "palette_output.h"
 #include "progress.h"
@@ -81,7 +82,11 @@ static void usage_render(FILE *to)
             "                           unless the palette is grey) dithered to the palette's\n"
             "                           colours (-d: default fs), to .png, .ppm (.pgm for greys)\n"
             "      --planes PREFIX      with --palette bwr: also PREFIX.bw and PREFIX.red, the\n"
-            "                           SSD1680's RAM planes (docs/palettes.md)\n"
+            "                           SSD1680's RAM planes (docs/palettes.md)\n"            "      --outlines KIND      draw silhouette, crease or both edges as lines over\n"
+            "                           the polygons, where visible (docs/outlines.md)\n"
+            "      --crease-angle DEG   normals further apart make a crease (default 40)\n"
+            "      --outline-level L    the lines' shade 0..1 (default 0, black), or auto:\n"
+            "                           white on a dark background\n"
             "  -h, --help               this help\n");
     stp_tool_options_help(to);
 }
@@ -181,7 +186,10 @@ enum {
     OPT_BENCH_BUDGET,
     OPT_SCENE_FORMAT,
     OPT_LINEAR,
-    OPT_PLANES
+    OPT_PLANES,
+    OPT_OUTLINES,
+    OPT_CREASE_ANGLE,
+    OPT_OUTLINE_LEVEL
 };
 
 /* Turn an indexed frame buffer (STYLE8: style index 1..levels per pixel)
@@ -371,6 +379,9 @@ static int cmd_render(int argc, char **argv)
         {"device", required_argument, 0, OPT_DEVICE},
         {"scene-format", required_argument, 0, OPT_SCENE_FORMAT},
         {"planes", required_argument, 0, OPT_PLANES},
+        {"outlines", required_argument, 0, OPT_OUTLINES},
+        {"crease-angle", required_argument, 0, OPT_CREASE_ANGLE},
+        {"outline-level", required_argument, 0, OPT_OUTLINE_LEVEL},
         {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     struct option longs[64];
     stp_tool_options opt;
@@ -384,7 +395,7 @@ static int cmd_render(int argc, char **argv)
     const char *out_path = 0, *scene_path, *device_spec = 0, *scene_format = 0;
     const char *new_palette = 0, *planes = 0;
     char err[512];
-    int c, show_stats = 0, palette = 0, png = 0, format_given = 0;
+    int c, show_stats = 0, palette = 0, png = 0, format_given = 0, crease_given = 0, level_given = 0;
 
     stp_tool_options_default(&opt);
     stp_scene_options_default(&sopt);
@@ -429,6 +440,35 @@ static int cmd_render(int argc, char **argv)
                 new_palette = optarg; /* bw, bwr, ... or a file: loaded below */
             break;
         case OPT_PLANES: planes = optarg; break;
+        case OPT_OUTLINES:
+            if (!strcmp(optarg, "silhouette"))
+                opt.outlines = STP_OUTLINE_SILHOUETTE;
+            else if (!strcmp(optarg, "crease"))
+                opt.outlines = STP_OUTLINE_CREASE;
+            else if (!strcmp(optarg, "both"))
+                opt.outlines = STP_OUTLINE_SILHOUETTE | STP_OUTLINE_CREASE;
+            else if (!strcmp(optarg, "none"))
+                opt.outlines = 0;
+            else
+                return stp_tool_usage_error("render", "bad --outlines '%s' (silhouette, crease, "
+                                                      "both, none)", optarg);
+            break;
+        case OPT_CREASE_ANGLE:
+            if (stp_tool_parse_double(optarg, &opt.crease_angle) || !(opt.crease_angle >= 0) ||
+                opt.crease_angle > 180)
+                return stp_tool_usage_error("render", "bad --crease-angle '%s' (degrees, 0..180)",
+                                            optarg);
+            crease_given = 1;
+            break;
+        case OPT_OUTLINE_LEVEL:
+            if (!strcmp(optarg, "auto"))
+                opt.outline_level = -1;
+            else if (stp_tool_parse_double(optarg, &opt.outline_level) || !(opt.outline_level >= 0) ||
+                     opt.outline_level > 1)
+                return stp_tool_usage_error("render", "bad --outline-level '%s' (0..1 or auto)",
+                                            optarg);
+            level_given = 1;
+            break;
         case 'h': usage_render(stdout); return 0;
         default: return stp_tool_getopt_error("render", c, argv);
         }
@@ -443,6 +483,12 @@ static int cmd_render(int argc, char **argv)
                                               "--scene-format nff|obj|off|ply");
     if (stp_tool_check_renderer(&given, opt.raytrace, err, sizeof err) != 0)
         return stp_tool_usage_error("render", "%s", err);
+    if (opt.outlines && opt.raytrace)
+        return stp_tool_usage_error("render", "--outlines: the polygon renderer draws lines, not "
+                                              "--raytrace");
+    if (!opt.outlines && (crease_given || level_given))
+        return stp_tool_usage_error("render", "--%s is for --outlines",
+                                    crease_given ? "crease-angle" : "outline-level");
     if (device_spec) {
         if (out_path || palette || new_palette || format_given)
             return stp_tool_usage_error("render", "--device draws on the device: no -o, --format "

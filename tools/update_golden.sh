@@ -33,3 +33,6 @@ done
 "$build/tools/stipple" render $lib_defaults "$scenes/mount-s2.nff" --color --transparent --hidden painter \
     -o "$here/tests/golden/mount-s2-transparent-colour-128x64.ppm"
 echo "wrote tests/golden/mount-s2-transparent-colour-128x64.ppm"
+"$build/tools/stipple" render $lib_defaults "$scenes/teapot-s1.nff" --outlines both \
+    -o "$here/tests/golden/teapot-s1-outlines-128x64.pbm"
+echo "wrote tests/golden/teapot-s1-outlines-128x64.pbm"

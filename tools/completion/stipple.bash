@@ -16,7 +16,7 @@ _stipple_shared="--size --levels --dither --spacing --gamma --gamma-k --hidden -
 
 _stipple_options() {
     case $1 in
-    render) echo "--output --scene-format --device --format --band --stats --palette --planes --help $_stipple_shared" ;;
+    render) echo "--output --scene-format --device --format --band --stats --palette --planes --outlines --crease-angle --outline-level --help $_stipple_shared" ;;
     compile) echo "--output --header --scene-format --static --help $_stipple_shared" ;;
     dither) echo "--output --plain --dither --spacing --gamma --gamma-k --linear --palette --planes --help" ;;
     scene) echo "--size --output --list --help" ;;
@@ -60,6 +60,8 @@ _stipple() {
         else COMPREPLY=($(compgen -W "grey pseudo bw bwr grey4 grey16 rgb8" -- "$cur")); fi
         COMPREPLY+=($(compgen -f -- "$cur")); return ;;
     --planes) COMPREPLY=($(compgen -f -- "$cur")); return ;;
+    --outlines) COMPREPLY=($(compgen -W "silhouette crease both none" -- "$cur")); return ;;
+    --outline-level) COMPREPLY=($(compgen -W "0 1 auto" -- "$cur")); return ;;
     --device) COMPREPLY=($(compgen -W "fb:/dev/fb0 usb spi:/dev/spidev0.0,controller=" -- "$cur")); return ;;
     -o | --output)
         case $cmd in
@@ -73,7 +75,7 @@ _stipple() {
     --scenes) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     -s | --size | -l | --levels | -g | --gamma | --gamma-k | --light | --bright | --ambient | \
         --attenuation | --fov | --slices | --stacks | --shadows | --depth | --min-weight | \
-        -b | --band | --budget)
+        -b | --band | --budget | --crease-angle)
         return ;; # a number: nothing to offer
     esac
     if [[ $cur == -* ]]; then
