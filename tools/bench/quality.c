@@ -108,6 +108,7 @@ static int render_ideal(const stp_scene *scene, const qm_method *m, int w, int h
     opt.width = 4 * w;
     opt.height = 4 * h;
     opt.levels = 256;
+    opt.outlines = 0; /* lines are drawn for the eye, not part of the scene (exposure kept) */
     if (frame_init(&f, opt.width, opt.height, STP_PIXEL_GREY8) != 0)
         return -1;
     if (stp_tool_render(scene, &opt, &f.port, 0, err, sizeof err) != 0) {

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The quality bench's methods: see quality_methods.h. */
 #include "quality_methods.h"
+#include "outlines.h"
 
 #include "diffuse_ref.h"
 
@@ -45,6 +46,17 @@ static void fs_raster(stp_tool_options *opt)
 static void still(stp_tool_options *opt)
 {
     stp_tool_still_defaults(opt);
+}
+/* the still default with outlines (outlines.h) */
+static void still_silhouette(stp_tool_options *opt)
+{
+    stp_tool_still_defaults(opt);
+    opt->outlines = STP_OUTLINE_SILHOUETTE;
+}
+static void still_outlines(stp_tool_options *opt)
+{
+    stp_tool_still_defaults(opt);
+    opt->outlines = STP_OUTLINE_SILHOUETTE | STP_OUTLINE_CREASE;
 }
 static void still_contrast(stp_tool_options *opt)
 {
@@ -117,6 +129,8 @@ static const qm_method methods[] = {
     {"fs:raster", fs_raster, 0},
     {QM_STILL_DEFAULT, still, 0},
     {"still, --grey contrast", still_contrast, 0},
+    {"still, --outlines silhouette", still_silhouette, 0},
+    {"still, --outlines both", still_outlines, 0},
     {"blue-noise, exposure", blue_noise_exposed, 0},
     {"bayer4, 16, --smooth", smooth16, 0},
     {"fs:raster, --smooth", smooth_fs, 0},
