@@ -144,6 +144,7 @@ static int probe_gain(const stp_scene *toned, const stp_tool_options *plain, dou
     p.levels = 256;
     p.dither = STP_TOOL_DITHER_BAYER4;
     p.band_rows = 0;
+    p.outlines = 0; /* the scene's light sets the exposure, not lines over it */
     memset(&pr, 0, sizeof pr);
     pr.port.width = (uint32_t)plain->width;
     pr.port.height = (uint32_t)plain->height;
