@@ -227,16 +227,22 @@ static int edge_kind(const eye_frame *e, const half_edge *g, size_t m, const pla
            (dot(n1, n2) < crease_cos ? STP_OUTLINE_CREASE : 0);
 }
 
-/* Polygons by the screen cells their projected extent covers (a polygon
- * reaching behind the eye is in every cell). */
-#define GRID 64
+/* Polygons by the screen cells (2x2 pixels over the picture; points and
+ * extents beyond it go to the border cells) their projected extent
+ * covers; a polygon reaching behind the eye is in every cell. */
 typedef struct grid {
     double x0, y0, cw, ch;
-    size_t *start; /* GRID*GRID + 1 offsets into items */
+    int nx, ny;
+    size_t *start; /* nx*ny + 1 offsets into items */
     size_t *items;
 } grid;
 
-static int polygon_cells(const stp_scene *s, const eye_frame *e, size_t i, const grid *g, int *c)
+static int clamp_cell(double v, int n)
+{
+    return v < 0 ? 0 : (v >= n ? n - 1 : (int)v);
+}
+
+static void polygon_cells(const stp_scene *s, const eye_frame *e, size_t i, const grid *g, int *c)
 {
     const stp_scene_polygon *p = &s->polygons[i];
     double xl = 0, xh = 0, yl = 0, yh = 0;
@@ -245,43 +251,36 @@ static int polygon_cells(const stp_scene *s, const eye_frame *e, size_t i, const
         double x, y;
         if (project(e, s->vertices[p->first + (size_t)k], &x, &y) != 0) {
             c[0] = c[1] = 0;
-            c[2] = c[3] = GRID - 1;
-            return 0;
+            c[2] = g->nx - 1;
+            c[3] = g->ny - 1;
+            return;
         }
         if (k == 0 || x < xl) xl = x;
         if (k == 0 || x > xh) xh = x;
         if (k == 0 || y < yl) yl = y;
         if (k == 0 || y > yh) yh = y;
     }
-    c[0] = (int)floor((xl - g->x0) / g->cw);
-    c[1] = (int)floor((yl - g->y0) / g->ch);
-    c[2] = (int)floor((xh - g->x0) / g->cw);
-    c[3] = (int)floor((yh - g->y0) / g->ch);
-    for (k = 0; k < 4; k++)
-        c[k] = c[k] < 0 ? 0 : (c[k] >= GRID ? GRID - 1 : c[k]);
-    return 0;
+    c[0] = clamp_cell(floor((xl - g->x0) / g->cw), g->nx);
+    c[1] = clamp_cell(floor((yl - g->y0) / g->ch), g->ny);
+    c[2] = clamp_cell(floor((xh - g->x0) / g->cw), g->nx);
+    c[3] = clamp_cell(floor((yh - g->y0) / g->ch), g->ny);
 }
 
 static int grid_build(const stp_scene *s, const eye_frame *e, grid *g)
 {
-    size_t i, total = 0;
-    int pass, first = 1;
-    double xl = 0, xh = 1, yl = 0, yh = 1;
-    for (i = 0; i < s->vertex_count; i++) {
-        double x, y;
-        if (project(e, s->vertices[i], &x, &y) != 0)
-            continue;
-        if (first || x < xl) xl = x;
-        if (first || x > xh) xh = x;
-        if (first || y < yl) yl = y;
-        if (first || y > yh) yh = y;
-        first = 0;
-    }
-    g->x0 = xl;
-    g->y0 = yl;
-    g->cw = (xh - xl) / GRID + 1e-9;
-    g->ch = (yh - yl) / GRID + 1e-9;
-    g->start = calloc(GRID * GRID + 1, sizeof *g->start);
+    size_t i, cells;
+    int pass;
+    g->nx = (int)(e->w / 2) + 2;
+    g->ny = (int)(e->h / 2) + 2;
+    g->nx = g->nx > 1024 ? 1024 : g->nx;
+    g->ny = g->ny > 1024 ? 1024 : g->ny;
+    /* one cell of margin each side of the picture */
+    g->cw = (e->w + 2) / (g->nx - 2 > 0 ? g->nx - 2 : 1);
+    g->ch = (e->h + 2) / (g->ny - 2 > 0 ? g->ny - 2 : 1);
+    g->x0 = -1 - g->cw;
+    g->y0 = -1 - g->ch;
+    cells = (size_t)g->nx * (size_t)g->ny;
+    g->start = calloc(cells + 1, sizeof *g->start);
     g->items = 0;
     if (!g->start)
         return -1;
@@ -291,22 +290,22 @@ static int grid_build(const stp_scene *s, const eye_frame *e, grid *g)
             polygon_cells(s, e, i, g, c);
             for (y = c[1]; y <= c[3]; y++)
                 for (x = c[0]; x <= c[2]; x++) {
+                    size_t cell = (size_t)y * (size_t)g->nx + (size_t)x;
                     if (pass == 0)
-                        g->start[y * GRID + x + 1]++;
+                        g->start[cell + 1]++;
                     else
-                        g->items[g->start[y * GRID + x]++] = i;
+                        g->items[g->start[cell]++] = i;
                 }
         }
         if (pass == 0) {
-            for (i = 1; i <= GRID * GRID; i++)
+            for (i = 1; i <= cells; i++)
                 g->start[i] += g->start[i - 1];
-            total = g->start[GRID * GRID];
-            g->items = malloc((total ? total : 1) * sizeof *g->items);
+            g->items = malloc((g->start[cells] ? g->start[cells] : 1) * sizeof *g->items);
             if (!g->items)
                 return -1;
         } else {
             /* the fill moved each start to the next cell's: shift back */
-            for (i = GRID * GRID; i > 0; i--)
+            for (i = cells; i > 0; i--)
                 g->start[i] = g->start[i - 1];
             g->start[0] = 0;
         }
@@ -367,11 +366,10 @@ static int point_visible(const stp_scene *s, const plane *pl, const grid *g, con
     size_t k;
     if (project(e, p, &x, &y) != 0)
         return 0;
-    cx = (int)floor((x - g->x0) / g->cw);
-    cy = (int)floor((y - g->y0) / g->ch);
-    cx = cx < 0 ? 0 : (cx >= GRID ? GRID - 1 : cx);
-    cy = cy < 0 ? 0 : (cy >= GRID ? GRID - 1 : cy);
-    for (k = g->start[cy * GRID + cx]; k < g->start[cy * GRID + cx + 1]; k++) {
+    cx = clamp_cell(floor((x - g->x0) / g->cw), g->nx);
+    cy = clamp_cell(floor((y - g->y0) / g->ch), g->ny);
+    for (k = g->start[(size_t)cy * (size_t)g->nx + (size_t)cx];
+         k < g->start[(size_t)cy * (size_t)g->nx + (size_t)cx + 1]; k++) {
         size_t i = g->items[k], j;
         int mine = 0;
         for (j = 0; j < own_count; j++)
@@ -423,7 +421,7 @@ int stp_outlines_find(const stp_scene *scene, const stp_outline_view *view, int 
     eye_frame e;
     plane *planes = 0;
     half_edge *h = 0;
-    grid g = {0, 0, 0, 0, 0, 0};
+    grid g = {0, 0, 0, 0, 0, 0, 0, 0};
     size_t n = 0, i, j, cap = 0;
     double crease_cos = cos(crease_degrees * 3.14159265358979323846 / 180.0);
     int rc = -1;
