@@ -167,7 +167,7 @@ static half_edge *half_edges(const stp_scene *s, size_t *count)
     }
     diag = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
                 (hi[2] - lo[2]) * (hi[2] - lo[2]));
-    q = diag > 0 ? diag * 1e-7 : 1e-7;
+    q = diag > 0 ? diag * 1e-5 : 1e-5; /* NFF files print about 6 digits */
     for (i = 0; i < s->polygon_count; i++)
         n += (size_t)(s->polygons[i].count > 0 ? s->polygons[i].count : 0);
     h = malloc((n ? n : 1) * sizeof *h);

@@ -11,7 +11,7 @@
  *   crease:     an edge whose two polygons' normals differ by more than
  *               the crease angle (a silhouette edge can be one too).
  * Polygons share an edge when its two end points are the same (positions
- * equal to 1e-7 of the scene's size).  Two polygons that run the shared
+ * equal to 1e-5 of the scene's size).  Two polygons that run the shared
  * edge the same way (inconsistent winding) have one normal turned round
  * first, so such files do not show false silhouettes.
  *
