@@ -574,6 +574,7 @@ static int compile(const stp_scene *scene, const stp_tool_options *opt, int is_s
         if (is_static == 2) {
             stp_tool_spans spans;
             stp_output output;
+            memset(&output, 0, sizeof output); /* fields the default leaves */
             stp_output_default(&output);
             output.hidden = painter.hidden;
             output.cell = &p.cell;
