@@ -523,8 +523,12 @@ static void write_spans_source(writer *w, const stp_tool_options *opt, const stp
         opt->width, opt->height, s->cell_rows, s->shade_count);
 }
 
-/* stp_tool_compile and stp_tool_compile_static: the C source of the scene's
- * data or (is_static) of its host-entered display file, and the header. */
+/* What `stipple compile` writes: the scene's data, its host-entered display
+ * file (--static), or its host picture as spans (--spans). */
+enum { COMPILE_DATA, COMPILE_STATIC, COMPILE_SPANS };
+
+/* stp_tool_compile, _static and _spans: the C source of the form asked
+ * (is_static: COMPILE_*), and the header. */
 static int compile(const stp_scene *scene, const stp_tool_options *opt, int is_static,
                    FILE *c_out, FILE *h_out, char *err, size_t errlen)
 {
@@ -549,7 +553,12 @@ static int compile(const stp_scene *scene, const stp_tool_options *opt, int is_s
     wc.failed = 0;
     wh.f = h_out;
     wh.failed = 0;
-    if (is_static) {
+    if (is_static == COMPILE_SPANS && opt->dither == STP_TOOL_DITHER_DIFFUSE) {
+        snprintf(err, errlen, "--spans does not take error diffusion (-d): the firmware "
+                              "plays spans through a halftone cell");
+        goto done;
+    }
+    if (is_static != COMPILE_DATA) {
         stp_tool_options painter = *opt;
         stp_instr *ordered = 0;
         uint32_t ordered_used = 0;
@@ -571,7 +580,7 @@ static int compile(const stp_scene *scene, const stp_tool_options *opt, int is_s
             used = ordered_used;
             painter.hidden = STP_HIDDEN_NONE;
         }
-        if (is_static == 2) {
+        if (is_static == COMPILE_SPANS) {
             stp_tool_spans spans;
             stp_output output;
             memset(&output, 0, sizeof output); /* fields the default leaves */
@@ -580,11 +589,6 @@ static int compile(const stp_scene *scene, const stp_tool_options *opt, int is_s
             output.cell = &p.cell;
             output.gamma = p.has_gamma ? p.gamma : 0;
             output.background = p.background;
-            if (opt->dither == STP_TOOL_DITHER_DIFFUSE) {
-                snprintf(err, errlen, "--spans does not take error diffusion (-d): the "
-                                      "firmware plays spans through a halftone cell");
-                goto done;
-            }
             if (stp_tool_static_spans(df, used, (uint32_t)opt->width, (uint32_t)opt->height,
                                       opt->levels, opt->levels < 16 ? opt->levels : 16, &output,
                                       &spans, err, errlen) != 0)
@@ -615,19 +619,19 @@ done:
 int stp_tool_compile(const stp_scene *scene, const stp_tool_options *opt, FILE *c_out,
                      FILE *h_out, char *err, size_t errlen)
 {
-    return compile(scene, opt, 0, c_out, h_out, err, errlen);
+    return compile(scene, opt, COMPILE_DATA, c_out, h_out, err, errlen);
 }
 
 int stp_tool_compile_static(const stp_scene *scene, const stp_tool_options *opt, FILE *c_out,
                             FILE *h_out, char *err, size_t errlen)
 {
-    return compile(scene, opt, 1, c_out, h_out, err, errlen);
+    return compile(scene, opt, COMPILE_STATIC, c_out, h_out, err, errlen);
 }
 
 int stp_tool_compile_spans(const stp_scene *scene, const stp_tool_options *opt, FILE *c_out,
                            FILE *h_out, char *err, size_t errlen)
 {
-    return compile(scene, opt, 2, c_out, h_out, err, errlen);
+    return compile(scene, opt, COMPILE_SPANS, c_out, h_out, err, errlen);
 }
 
 /* ---- the subcommand ---- */
@@ -695,7 +699,7 @@ int stp_tool_compile_main(int argc, char **argv)
     const char *c_path = 0, *h_path = 0, *scene_format = 0;
     char h_default[4096], c_tmp[4200], h_tmp[4200], err[512];
     FILE *cf = 0, *hf = 0;
-    int c, status = 1, is_static = 0;
+    int c, status = 1, is_static = COMPILE_DATA;
 
     stp_tool_options_default(&opt);
     stp_scene_options_default(&sopt);
@@ -720,8 +724,11 @@ int stp_tool_compile_main(int argc, char **argv)
                 return stp_tool_usage_error("compile", "bad --scene-format '%s' (nff, obj, off, "
                                                        "ply)", optarg);
             break;
-        case OPT_STATIC: is_static = is_static ? is_static : 1; break;
-        case OPT_SPANS: is_static = 2; break;
+        case OPT_STATIC: /* --spans is static too, and wins */
+            if (is_static == COMPILE_DATA)
+                is_static = COMPILE_STATIC;
+            break;
+        case OPT_SPANS: is_static = COMPILE_SPANS; break;
         case 'h': stp_tool_compile_usage(stdout); return 0;
         default: return stp_tool_getopt_error("compile", c, argv);
         }
@@ -763,9 +770,9 @@ int stp_tool_compile_main(int argc, char **argv)
         fail("%s: %s", !cf ? c_path : h_path, strerror(errno));
         goto done;
     }
-    if ((is_static == 2   ? stp_tool_compile_spans
-         : is_static == 1 ? stp_tool_compile_static
-                          : stp_tool_compile)(&scene, &opt, cf, hf, err, sizeof err) != 0) {
+    if ((is_static == COMPILE_SPANS    ? stp_tool_compile_spans
+         : is_static == COMPILE_STATIC ? stp_tool_compile_static
+                                       : stp_tool_compile)(&scene, &opt, cf, hf, err, sizeof err) != 0) {
         fail("%s: %s", argv[optind], err);
         goto done;
     }
