@@ -27,6 +27,7 @@ int stp_output_default(stp_output *output)
     output->styles = 0;
     output->background = 0;
     output->background_colour = 0;
+    output->diffusion = 0;
     return STP_OK;
 }
 

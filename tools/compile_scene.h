@@ -37,6 +37,12 @@ int stp_tool_compile(const stp_scene *scene, const stp_tool_options *opt, FILE *
 int stp_tool_compile_static(const stp_scene *scene, const stp_tool_options *opt, FILE *c_out,
                             FILE *h_out, char *err, size_t errlen);
 
+/* As stp_tool_compile_static, but c_out gets the host's picture as visible
+ * spans (stp_spans, stp_compiled_spans; tools/static_spans.h): no error
+ * diffusion, cells of 1, 2, 4 or 8 pixels each way, at most 256 wide. */
+int stp_tool_compile_spans(const stp_scene *scene, const stp_tool_options *opt, FILE *c_out,
+                           FILE *h_out, char *err, size_t errlen);
+
 int stp_tool_compile_main(int argc, char **argv);
 
 /* Its help text. */

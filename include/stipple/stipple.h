@@ -30,6 +30,7 @@ extern "C" {
 #include "stipple/colour.h"
 #include "stipple/raytrace.h"
 #include "stipple/playback.h"
+#include "stipple/playback_spans.h"
 
 #ifdef __cplusplus
 }

@@ -90,6 +90,10 @@ typedef struct stp_scene_static {
 /* The generated source of a static scene defines this one object. */
 extern const stp_scene_static stp_compiled_static;
 
+/* A static scene compiled with --spans: its picture as visible spans
+ * (stipple/playback_spans.h), drawn with stp_spans_draw. */
+extern const stp_spans stp_compiled_spans;
+
 /* The renderer over the scene's display file in mem (stp_renderer_size()
  * bytes); *out receives it.  Returns STP_OK or STP_ERR_ARG. */
 int stp_scene_static_open(const stp_scene_static *scene, void *mem, size_t mem_size,

@@ -13,6 +13,10 @@
  * display file, entered on the host, is played back from flash
  * (stp_scene_static_open); nothing is entered on the chip.
  *
+ * STP_FW_SPANS 1: the scene was compiled with --spans: its picture's rows
+ * as runs of one shade (stipple/playback_spans.h), drawn into the band by
+ * stp_spans_draw; no renderer, no display file, no Z buffer on the chip.
+ *
  * STP_FW_BENCH 1 makes the bench image: it also renders the frame once
  * without the panel and reports instruction counts over semihosting
  * ("stipple: WHAT N", read by tests/firmware/run_qemu_test.sh), and with
@@ -23,7 +27,7 @@
 #include "stellaris.h"
 #include "stp_scene_data.h"
 #include "stipple/stipple.h"
-#if STP_FW_SHADE_BENCH && !STP_FW_STATIC
+#if STP_FW_SHADE_BENCH && !STP_FW_STATIC && !STP_FW_SPANS
 #include "bench_shade.h"
 #endif
 
@@ -39,6 +43,91 @@
 #ifndef STP_FW_STATIC
 #define STP_FW_STATIC 0
 #endif
+#ifndef STP_FW_SPANS
+#define STP_FW_SPANS 0
+#endif
+
+#if STP_FW_SPANS
+static uint8_t band[STP_FW_BAND_ROWS * (STP_FW_PANEL_W / 8u)];
+
+static int fail(const char *what)
+{
+    stp_semihost_write("stipple: ");
+    stp_semihost_write(what);
+    stp_semihost_write(" failed\n");
+    return 1;
+}
+
+#if STP_FW_BENCH
+static void report(const char *what, uint32_t count)
+{
+    char num[12];
+    stp_semihost_write("stipple: ");
+    stp_semihost_write(what);
+    stp_semihost_write(" ");
+    stp_semihost_write(stp_utoa(count, num));
+    stp_semihost_write("\n");
+}
+#endif
+
+/* The frame, band by band, to flush (the panel's, or none). */
+static int draw_frame(const stp_board *board, stp_port *port, int to_panel)
+{
+    const stp_spans *spans = &stp_compiled_spans;
+    stp_spans_cursor cursor;
+    uint32_t y, rows;
+    stp_spans_start(spans, &cursor);
+    for (y = 0; y < spans->height; y += rows) {
+        rows = spans->height - y < STP_FW_BAND_ROWS ? spans->height - y : STP_FW_BAND_ROWS;
+        if (stp_spans_draw(spans, &cursor, band, STP_FW_PANEL_W / 8u, rows) != STP_OK ||
+            (to_panel && board->flush(port, y, rows, band, STP_FW_PANEL_W / 8u) != 0))
+            return -1;
+    }
+    return 0;
+}
+
+int main(void)
+{
+    const stp_board *board = &stp_board_this;
+    stp_port port;
+#if STP_FW_BENCH
+    uint64_t t0, t1, t2;
+    uint32_t per_tick;
+    stp_count_start();
+    per_tick = stp_count_calibrate();
+#endif
+    if (board->width != STP_FW_PANEL_W || stp_compiled_spans.width != board->width ||
+        stp_compiled_spans.height != board->height) {
+        stp_semihost_write(board->size_hint);
+        return fail(": compile the scene for that size");
+    }
+    port.width = board->width;
+    port.height = board->height;
+    port.format = STP_PIXEL_MONO1;
+    port.user = 0;
+    port.flush = board->flush;
+#if STP_FW_BENCH
+    t0 = stp_count_now();
+    if (draw_frame(board, &port, 0) != 0)
+        return fail("render");
+    t1 = stp_count_now();
+#endif
+    if (board->panel_start() != 0)
+        return fail("panel");
+    if (draw_frame(board, &port, 1) != 0)
+        return fail("render to panel");
+#if STP_FW_BENCH
+    t2 = stp_count_now();
+    report("instructions per SysTick tick:", per_tick);
+    report("instructions to enter the scene:", 0);
+    report("instructions per frame (core):", (uint32_t)((t1 - t0) * per_tick));
+    report("instructions per frame (core + panel):", (uint32_t)((t2 - t1) * per_tick));
+    report("band rows:", STP_FW_BAND_ROWS);
+#endif
+    board->hold();
+    return 0;
+}
+#else
 
 #if STP_FW_STATIC
 #define SCENE stp_compiled_static
@@ -179,3 +268,4 @@ int main(void)
     board->hold();
     return 0;
 }
+#endif /* STP_FW_SPANS */
