@@ -1015,6 +1015,54 @@ static int enter_store(stp_renderer *r, stp_entry *e)
     return STP_OK;
 }
 
+/* Back-face removal before any transform, for a triangle entered with no
+ * model transform: the sign of ((v1 - v0) x (v2 - v0)).(eye - v0) in world
+ * coordinates (exact integers; the view transform is a rotation and a
+ * reflection into the left-handed view system, so this is the sign the view
+ * coordinates give, without their rounding), or of -N.forward for a
+ * parallel view.  Returns 1 when the triangle is a back face or edge-on and
+ * none of its view coordinates can saturate (so the full path would drop
+ * it too, with STP_OK); 0 when the full path must decide.  Ranges: each
+ * difference below 2^ld (raw), the eye's below 2^le: the cross product's
+ * components are below 2^(2 ld + 1) and the triple product below
+ * 3 2^(2 ld + le + 1), so 2 ld + le <= 60 keeps it below 2^63.  With
+ * ld, le <= 29 each view coordinate is below sqrt(3) 2^30 < 2^31 - 1. */
+static int world_back_face(const stp_renderer *r, const stp_vec3 *v)
+{
+    int64_t x1 = (int64_t)v[1].x - v[0].x, y1 = (int64_t)v[1].y - v[0].y,
+            z1 = (int64_t)v[1].z - v[0].z;
+    int64_t x2 = (int64_t)v[2].x - v[0].x, y2 = (int64_t)v[2].y - v[0].y,
+            z2 = (int64_t)v[2].z - v[0].z;
+    int64_t ex = (int64_t)r->from.x - v[0].x, ey = (int64_t)r->from.y - v[0].y,
+            ez = (int64_t)r->from.z - v[0].z;
+    uint64_t spread = (uint64_t)(x1 < 0 ? -x1 : x1) | (uint64_t)(y1 < 0 ? -y1 : y1) |
+                      (uint64_t)(z1 < 0 ? -z1 : z1) | (uint64_t)(x2 < 0 ? -x2 : x2) |
+                      (uint64_t)(y2 < 0 ? -y2 : y2) | (uint64_t)(z2 < 0 ? -z2 : z2);
+    uint64_t reach = (uint64_t)(ex < 0 ? -ex : ex) | (uint64_t)(ey < 0 ? -ey : ey) |
+                     (uint64_t)(ez < 0 ? -ez : ez);
+    int ld, le;
+    int64_t cx, cy, cz, side;
+    if ((spread | reach) >= ((uint64_t)1 << 29))
+        return 0;
+    ld = stp_bit_length64(spread);
+    le = stp_bit_length64(reach);
+    if (r->projection != STP_PERSPECTIVE) {
+        ex = -(int64_t)r->forward.x; /* a unit stp_vec3: below 2^17 */
+        ey = -(int64_t)r->forward.y;
+        ez = -(int64_t)r->forward.z;
+        le = F + 1;
+    }
+    if (2 * ld + le > 60)
+        return 0;
+    cx = y1 * z2 - z1 * y2;
+    cy = z1 * x2 - x1 * z2;
+    cz = x1 * y2 - y1 * x2;
+    if (cx == 0 && cy == 0 && cz == 0)
+        return 0; /* degenerate: the full path reports it */
+    side = cx * ex + cy * ey + cz * ez;
+    return side <= 0;
+}
+
 /* DISPLAY-FILE-ENTER of a polygon: the steps above in order. */
 static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
                             stp_enter_shading shading, const stp_vec3 *normals,
@@ -1034,6 +1082,8 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     e.normals = normals;
     e.shades = shades;
     r->last_shade = -1;
+    if (n == 3 && r->backface_removal && !r->model_on && world_back_face(r, vertices))
+        return STP_OK;
     enter_transform(r, vertices, &e);
     for (i = 0; i < n; i++)
         if (saturated(r->clip_a[i]))
