@@ -75,9 +75,12 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     r->model_on = 0;
     stp_transform_identity(&r->model);
 #if STP_VERTEX_CACHE
-    for (i = 0; i < STP_VERTEX_CACHE; i++)
+    for (i = 0; i < STP_VERTEX_CACHE; i++) {
         r->cache[i].stamp = 0;
+        r->cache[i].used_by = 0;
+    }
     r->cache_stamp = 1;
+    r->cache_polygon = 0;
 #endif
 #if STP_WITH_SHADOWS
     for (i = 0; i < STP_MAX_LIGHTS; i++) {
@@ -628,6 +631,7 @@ typedef struct stp_entry {
     stp_enter_shading shading;
     const stp_vec3 *normals;    /* STP_ENTER_SMOOTH_NORMALS: world normals */
     const stp_fix *shades;      /* STP_ENTER_SMOOTH_SHADES: the caller's */
+    int range;                  /* a vertex's view coordinates saturated */
     unsigned outside_all;       /* clip planes every vertex is outside of */
     unsigned outside_any;       /* clip planes some vertex is outside of */
     int64_t nx, ny, nz;         /* Newell normal, not normalised */
@@ -641,11 +645,16 @@ typedef struct stp_entry {
 } stp_entry;
 
 /* Step 1: the vertices to view coordinates (r->clip_a), through the
- * vertex cache when there is one. */
+ * vertex cache when there is one, and whether one of them saturated.  A
+ * cache entry this polygon already holds is never taken by a later vertex
+ * of it (that vertex stays outside the cache), so r->cached[] stays valid
+ * until the polygon is stored. */
 static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e)
 {
     int i;
+    unsigned range = 0;
 #if STP_VERTEX_CACHE
+    uint16_t serial = ++r->cache_polygon; /* wraps: a stale match only skips the cache */
     for (i = 0; i < e->n; i++) {
         stp_vec3 p = vertices[i];
         /* a multiplicative hash of the exact coordinates */
@@ -655,23 +664,31 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
         stp_vertex_entry *c = &r->cache[slot];
         if (c->stamp != r->cache_stamp || c->point.x != p.x || c->point.y != p.y ||
             c->point.z != p.z) {
+            if (c->used_by == serial) {
+                /* the slot holds an earlier vertex of this polygon */
+                vertex_to_view(r, p, &r->clip_a[i]);
+                range |= (unsigned)saturated(r->clip_a[i]);
+                r->cached[i] = (uint16_t)STP_CACHE_NONE;
+                continue;
+            }
             c->stamp = r->cache_stamp;
             c->point = p;
             vertex_to_view(r, p, &c->view);
-            c->code = -1;
+            c->code = saturated(c->view) ? STP_CODE_RANGE : STP_CODE_UNKNOWN;
             c->dx = STP_CACHE_NOT_PROJECTED;
         }
+        c->used_by = serial;
+        range |= (unsigned)c->code & STP_CODE_RANGE;
         r->clip_a[i] = c->view;
         r->cached[i] = (uint16_t)slot;
     }
-    return;
+#else
+    for (i = 0; i < e->n; i++) {
+        vertex_to_view(r, vertices[i], &r->clip_a[i]);
+        range |= (unsigned)saturated(r->clip_a[i]);
+    }
 #endif
-    if (r->model_on)
-        for (i = 0; i < e->n; i++)
-            vertex_to_view(r, vertices[i], &r->clip_a[i]);
-    else
-        for (i = 0; i < e->n; i++)
-            world_to_view(r, vertices[i], &r->clip_a[i]);
+    e->range = range != 0;
 }
 
 /* The outcodes of the vertices, so the clipper runs only on polygons that
@@ -684,16 +701,13 @@ static void enter_outcodes(stp_renderer *r, stp_entry *e)
     for (i = 0; i < e->n; i++) {
         unsigned code;
 #if STP_VERTEX_CACHE
-        /* the entry may have been taken by a later vertex of this polygon */
-        stp_vertex_entry *c = &r->cache[r->cached[i]];
-        if (c->code >= 0 && c->view.x == r->clip_a[i].x && c->view.y == r->clip_a[i].y &&
-            c->view.z == r->clip_a[i].z) {
+        if (r->cached[i] != STP_CACHE_NONE) {
+            stp_vertex_entry *c = &r->cache[r->cached[i]];
+            if (c->code == STP_CODE_UNKNOWN)
+                c->code = (int16_t)stp_clip_outcode(&r->clip_volume, c->view);
             code = (unsigned)c->code;
         } else {
             code = stp_clip_outcode(&r->clip_volume, r->clip_a[i]);
-            if (c->view.x == r->clip_a[i].x && c->view.y == r->clip_a[i].y &&
-                c->view.z == r->clip_a[i].z)
-                c->code = (int32_t)code;
         }
 #else
         code = stp_clip_outcode(&r->clip_volume, r->clip_a[i]);
@@ -992,16 +1006,16 @@ static int enter_store(stp_renderer *r, stp_entry *e)
         stp_instr p;
 #if STP_VERTEX_CACHE
         /* an unclipped polygon's vertices are the cached ones */
-        stp_vertex_entry *c = e->outside_any == 0 ? &r->cache[r->cached[i]] : 0;
-        if (c && c->dx != STP_CACHE_NOT_PROJECTED && c->view.x == clipped[i].x &&
-            c->view.y == clipped[i].y && c->view.z == clipped[i].z) {
+        stp_vertex_entry *c = e->outside_any == 0 && r->cached[i] != STP_CACHE_NONE
+                                  ? &r->cache[r->cached[i]]
+                                  : 0;
+        if (c && c->dx != STP_CACHE_NOT_PROJECTED) {
             p.x = c->dx;
             p.y = c->dy;
             p.z = c->dz;
         } else {
             project(r, clipped[i], &p);
-            if (c && c->view.x == clipped[i].x && c->view.y == clipped[i].y &&
-                c->view.z == clipped[i].z) {
+            if (c) {
                 c->dx = p.x;
                 c->dy = p.y;
                 c->dz = p.z;
@@ -1069,7 +1083,7 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
                             const stp_fix *shades)
 {
     stp_entry e;
-    int status, i;
+    int status;
     if (r == 0 || vertices == 0 || n < 3)
         return n < 3 && n >= 0 && r != 0 ? STP_ERR_DEGENERATE : STP_ERR_ARG;
     if (n > STP_MAX_POLYGON_VERTICES)
@@ -1085,9 +1099,8 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     if (n == 3 && r->backface_removal && !r->model_on && world_back_face(r, vertices))
         return STP_OK;
     enter_transform(r, vertices, &e);
-    for (i = 0; i < n; i++)
-        if (saturated(r->clip_a[i]))
-            return STP_ERR_RANGE;
+    if (e.range)
+        return STP_ERR_RANGE;
     status = enter_facing(r, &e);
     if (status != STP_OK)
         return status == 1 ? STP_OK : status;

@@ -89,10 +89,14 @@ typedef struct stp_shadow_poly {
 typedef struct stp_vertex_entry {
     stp_vec3 point, view;
     uint32_t stamp;
-    int32_t code;           /* outcode, -1 not yet known */
+    int16_t code;           /* outcode (0..31), STP_CODE_RANGE or STP_CODE_UNKNOWN */
+    uint16_t used_by;       /* the last polygon that took it (cache_polygon) */
     int32_t dx, dy, dz;     /* device position (project), when projected */
 } stp_vertex_entry;
 #define STP_CACHE_NOT_PROJECTED INT32_MIN /* dx of an entry not projected yet */
+#define STP_CODE_RANGE 32    /* code of a saturated view point (STP_ERR_RANGE) */
+#define STP_CODE_UNKNOWN 64  /* code not computed yet */
+#define STP_CACHE_NONE 0xFFFFu /* cached[i] of a vertex kept outside the cache */
 #endif
 
 struct stp_renderer {
@@ -143,6 +147,7 @@ struct stp_renderer {
 #if STP_VERTEX_CACHE
     stp_vertex_entry cache[STP_VERTEX_CACHE];
     uint32_t cache_stamp; /* >= 1 */
+    uint16_t cache_polygon; /* serial of the polygon being entered (wraps) */
     uint16_t cached[STP_MAX_POLYGON_VERTICES]; /* clip_a[i]'s entry in cache[] */
 #endif
 #endif /* !STP_PLAYBACK_ONLY */
