@@ -725,34 +725,21 @@ static int newell(const stp_renderer *r, stp_entry *e)
 {
     const stp_vec3 *v = r->clip_a;
     const int n = e->n;
-    int64_t a = 0, b = 0, c = 0, sx = 0, sy = 0, sz = 0, div;
+    int64_t a = 0, b = 0, c = 0, sx, sy, sz, div;
     uint64_t spread = 0; /* the relative coordinates' magnitudes ORed */
     int i, bits, shift;
-    for (i = 1; i < n; i++) {
-        int64_t dx = (int64_t)v[i].x - v[0].x, dy = (int64_t)v[i].y - v[0].y,
-                dz = (int64_t)v[i].z - v[0].z;
-        spread |= (uint64_t)(dx < 0 ? -dx : dx) | (uint64_t)(dy < 0 ? -dy : dy) |
-                  (uint64_t)(dz < 0 ? -dz : dz);
-    }
-    for (i = 0; i < n; i++) {
-        sx += v[i].x;
-        sy += v[i].y;
-        sz += v[i].z;
-    }
-    /* relative coordinates below 2^24 keep every product < 2^50 and the sum
-     * of up to 4096 of them < 2^62; smaller polygons keep all their bits
-     * (the shift is that of the largest magnitude, counted up to 2^32) */
-    bits = stp_bit_length64(spread);
-    shift = (bits > 32 ? 32 : bits) - 24;
-    if (shift < 0)
-        shift = 0;
-    div = (int64_t)1 << shift;
     if (n == 3) {
-        int64_t x1 = ((int64_t)v[1].x - v[0].x), y1 = ((int64_t)v[1].y - v[0].y),
-                z1 = ((int64_t)v[1].z - v[0].z);
-        int64_t x2 = ((int64_t)v[2].x - v[0].x), y2 = ((int64_t)v[2].y - v[0].y),
-                z2 = ((int64_t)v[2].z - v[0].z);
-        if (shift > 0) {
+        int64_t x1 = (int64_t)v[1].x - v[0].x, y1 = (int64_t)v[1].y - v[0].y,
+                z1 = (int64_t)v[1].z - v[0].z;
+        int64_t x2 = (int64_t)v[2].x - v[0].x, y2 = (int64_t)v[2].y - v[0].y,
+                z2 = (int64_t)v[2].z - v[0].z;
+        spread = (uint64_t)(x1 < 0 ? -x1 : x1) | (uint64_t)(y1 < 0 ? -y1 : y1) |
+                 (uint64_t)(z1 < 0 ? -z1 : z1) | (uint64_t)(x2 < 0 ? -x2 : x2) |
+                 (uint64_t)(y2 < 0 ? -y2 : y2) | (uint64_t)(z2 < 0 ? -z2 : z2);
+        /* below 2^24 every product is < 2^49 (see below) */
+        if (spread >= ((uint64_t)1 << 24)) {
+            bits = stp_bit_length64(spread);
+            div = (int64_t)1 << ((bits > 32 ? 32 : bits) - 24);
             x1 /= div;
             y1 /= div;
             z1 /= div;
@@ -763,7 +750,31 @@ static int newell(const stp_renderer *r, stp_entry *e)
         a = y1 * z2 - z1 * y2;
         b = z1 * x2 - x1 * z2;
         c = x1 * y2 - y1 * x2;
+        sx = (int64_t)v[0].x + v[1].x + v[2].x;
+        sy = (int64_t)v[0].y + v[1].y + v[2].y;
+        sz = (int64_t)v[0].z + v[1].z + v[2].z;
     } else {
+        sx = sy = sz = 0;
+        for (i = 1; i < n; i++) {
+            int64_t dx = (int64_t)v[i].x - v[0].x, dy = (int64_t)v[i].y - v[0].y,
+                    dz = (int64_t)v[i].z - v[0].z;
+            spread |= (uint64_t)(dx < 0 ? -dx : dx) | (uint64_t)(dy < 0 ? -dy : dy) |
+                      (uint64_t)(dz < 0 ? -dz : dz);
+        }
+        for (i = 0; i < n; i++) {
+            sx += v[i].x;
+            sy += v[i].y;
+            sz += v[i].z;
+        }
+        /* relative coordinates below 2^24 keep every product < 2^50 and the
+         * sum of up to 4096 of them < 2^62; smaller polygons keep all their
+         * bits (the shift is that of the largest magnitude, counted up to
+         * 2^32) */
+        bits = stp_bit_length64(spread);
+        shift = (bits > 32 ? 32 : bits) - 24;
+        if (shift < 0)
+            shift = 0;
+        div = (int64_t)1 << shift;
         for (i = 0; i < n; i++) {
             int p = i == 0 ? n - 1 : i - 1;
             int64_t xp = ((int64_t)v[p].x - v[0].x) / div, yp = ((int64_t)v[p].y - v[0].y) / div,
