@@ -115,6 +115,11 @@ int stp_renderer_set_view(stp_renderer *r, const stp_view *v)
     close_implicit_segment(r);
     r->focal = vf.focal;
     r->from = vf.from;
+    r->near_ok = vf.from.x > -(1L << 30) && vf.from.x < (1L << 30) && vf.from.y > -(1L << 30) &&
+                 vf.from.y < (1L << 30) && vf.from.z > -(1L << 30) && vf.from.z < (1L << 30);
+    r->near_bias_x = (uint32_t)vf.from.x - ((uint32_t)1 << 20);
+    r->near_bias_y = (uint32_t)vf.from.y - ((uint32_t)1 << 20);
+    r->near_bias_z = (uint32_t)vf.from.z - ((uint32_t)1 << 20);
     r->forward = vf.forward;
     r->right = vf.right;
     r->up = vf.up;
@@ -413,6 +418,14 @@ stp_fix stp_renderer_last_shade(const stp_renderer *r)
 
 /* ---- transform, clip, project ---- */
 
+#if STP_WITH_SHADOWS
+/* Whether a shadow map is set (stp_shadow_any, without the call). */
+static int shadows_on(const stp_renderer *r)
+{
+    return r->shadow_set != 0;
+}
+#endif
+
 static void world_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
 {
     stp_view_transform_point(&r->to_view, p, out);
@@ -625,9 +638,17 @@ typedef enum stp_enter_shading {
     STP_ENTER_SMOOTH_SHADES = 2   /* per-vertex shades given by the caller */
 } stp_enter_shading;
 
+/* Which side of a polygon the eye sees, when known before the transform. */
+typedef enum stp_face {
+    STP_FACE_UNKNOWN = 0,
+    STP_FACE_FRONT = 1,
+    STP_FACE_BACK = 2
+} stp_face;
+
 /* What entering one polygon finds out about it, step by step. */
 typedef struct stp_entry {
     int n;                      /* vertices, in r->clip_a (view coordinates) */
+    stp_face face;              /* from world_facing, or STP_FACE_UNKNOWN */
     stp_enter_shading shading;
     const stp_vec3 *normals;    /* STP_ENTER_SMOOTH_NORMALS: world normals */
     const stp_fix *shades;      /* STP_ENTER_SMOOTH_SHADES: the caller's */
@@ -803,12 +824,17 @@ static int newell(const stp_renderer *r, stp_entry *e)
  * sign of N.(eye - centre) in integers: nothing is normalised for a back
  * face that back-face removal drops.  Returns STP_OK, STP_ERR_DEGENERATE (a
  * zero normal) or 1 (a back face removed). */
+static int enter_unit_vectors(stp_renderer *r, stp_entry *e);
 static int enter_facing(stp_renderer *r, stp_entry *e)
 {
     int64_t nx, ny, nz, side;
     int bits;
     if (!newell(r, e))
         return STP_ERR_DEGENERATE;
+    if (e->face == STP_FACE_FRONT) {
+        e->facing = 1; /* world_facing's exact sign */
+        return enter_unit_vectors(r, e);
+    }
     /* N cut to 30 bits, so each product with a coordinate is < 2^61 */
     {
         uint64_t ax = (uint64_t)(e->nx < 0 ? -e->nx : e->nx), ay = (uint64_t)(e->ny < 0 ? -e->ny : e->ny),
@@ -827,6 +853,13 @@ static int enter_facing(stp_renderer *r, stp_entry *e)
     e->facing = side > 0 ? 1 : (side < 0 ? -1 : 0);
     if (e->facing <= 0 && r->backface_removal)
         return 1;
+    return enter_unit_vectors(r, e);
+}
+
+/* The unit normal (turned to the eye) and eye direction of a polygon whose
+ * side is known, and their cosine.  Returns STP_OK. */
+static int enter_unit_vectors(stp_renderer *r, stp_entry *e)
+{
     (void)stp_unit_from64(e->nx, e->ny, e->nz, &e->normal);
     if (r->projection == STP_PERSPECTIVE) {
         if (stp_unit_from64(-(int64_t)e->centre.x, -(int64_t)e->centre.y, -(int64_t)e->centre.z,
@@ -990,7 +1023,7 @@ static int enter_store(stp_renderer *r, stp_entry *e)
     /* shadow records: what the raster needs to re-light a pixel hidden
      * from a light (render.h, STP_OP_LIGHT_TERM) */
     records = 0;
-    if (r->shading && e->shading != STP_ENTER_SMOOTH_SHADES && stp_shadow_any(r))
+    if (r->shading && e->shading != STP_ENTER_SMOOTH_SHADES && shadows_on(r))
         records = stp_shadow_records(r, stp_unit_to_fix(e->normal), e->centre,
                                      stp_unit_to_fix(e->eye_dir), e->colour != 0, record);
     attribute += (uint32_t)records;
@@ -1040,58 +1073,64 @@ static int enter_store(stp_renderer *r, stp_entry *e)
     return STP_OK;
 }
 
-/* Back-face removal before any transform, for a triangle entered with no
- * model transform: the sign of ((v1 - v0) x (v2 - v0)).(eye - v0) in world
- * coordinates (exact integers; the view transform is a rotation and a
- * reflection into the left-handed view system, so this is the sign the view
- * coordinates give, without their rounding), or of -N.forward for a
- * parallel view.  Returns 1 when the triangle is a back face or edge-on and
- * none of its view coordinates can saturate (so the full path would drop
- * it too, with STP_OK); 0 when the full path must decide.  Ranges: each
- * difference below 2^ld (raw), the eye's below 2^le: the cross product's
- * components are below 2^(2 ld + 1) and the triple product below
- * 3 2^(2 ld + le + 1), so 2 ld + le <= 60 keeps it below 2^63.  With
- * ld, le <= 29 each view coordinate is below sqrt(3) 2^30 < 2^31 - 1. */
-static int world_back_face(const stp_renderer *r, const stp_vec3 *v)
+/* world_facing for a perspective view and a triangle within 2^20 (16
+ * units) of the eye in each coordinate, the common case, in fewer steps:
+ * with w = v - eye, ((v1 - v0) x (v2 - v0)).(eye - v0) = -w0.(w1 x w2)
+ * (the terms with w0 twice vanish).  w + 2^20 is formed mod 2^32 (exact
+ * when below 2^21: see near_bias), so w fits int32; |w| <= 2^20: w1 x w2
+ * below 2^41, the triple product below 3 2^61, exact.  A zero triple
+ * product (edge-on, or a zero normal) is left to the full path.  Returns
+ * STP_FACE_UNKNOWN when a coordinate is out of that range. */
+static stp_face world_facing_near(const stp_renderer *r, const stp_vec3 *v)
 {
-    int64_t x1 = (int64_t)v[1].x - v[0].x, y1 = (int64_t)v[1].y - v[0].y,
-            z1 = (int64_t)v[1].z - v[0].z;
-    int64_t x2 = (int64_t)v[2].x - v[0].x, y2 = (int64_t)v[2].y - v[0].y,
-            z2 = (int64_t)v[2].z - v[0].z;
-    int64_t ex = (int64_t)r->from.x - v[0].x, ey = (int64_t)r->from.y - v[0].y,
-            ez = (int64_t)r->from.z - v[0].z;
-    uint64_t spread = (uint64_t)(x1 < 0 ? -x1 : x1) | (uint64_t)(y1 < 0 ? -y1 : y1) |
-                      (uint64_t)(z1 < 0 ? -z1 : z1) | (uint64_t)(x2 < 0 ? -x2 : x2) |
-                      (uint64_t)(y2 < 0 ? -y2 : y2) | (uint64_t)(z2 < 0 ? -z2 : z2);
-    uint64_t reach = (uint64_t)(ex < 0 ? -ex : ex) | (uint64_t)(ey < 0 ? -ey : ey) |
-                     (uint64_t)(ez < 0 ? -ez : ez);
-    int ld, le;
+    const uint32_t half = (uint32_t)1 << 20;
+    uint32_t x1 = (uint32_t)v[1].x - r->near_bias_x, y1 = (uint32_t)v[1].y - r->near_bias_y,
+             z1 = (uint32_t)v[1].z - r->near_bias_z;
+    uint32_t x2 = (uint32_t)v[2].x - r->near_bias_x, y2 = (uint32_t)v[2].y - r->near_bias_y,
+             z2 = (uint32_t)v[2].z - r->near_bias_z;
+    uint32_t x0, y0, z0;
     int64_t cx, cy, cz, side;
-    if ((spread | reach) >= ((uint64_t)1 << 29))
-        return 0;
-    ld = stp_bit_length64(spread);
-    le = stp_bit_length64(reach);
-    if (r->projection != STP_PERSPECTIVE) {
-        ex = -(int64_t)r->forward.x; /* a unit stp_vec3: below 2^17 */
-        ey = -(int64_t)r->forward.y;
-        ez = -(int64_t)r->forward.z;
-        le = F + 1;
-    }
-    if (2 * ld + le > 60)
-        return 0;
-    cx = y1 * z2 - z1 * y2;
-    cy = z1 * x2 - x1 * z2;
-    cz = x1 * y2 - y1 * x2;
-    if (cx == 0 && cy == 0 && cz == 0)
-        return 0; /* degenerate: the full path reports it */
-    side = cx * ex + cy * ey + cz * ez;
-    return side <= 0;
+    if ((x1 | y1 | z1 | x2 | y2 | z2) >= 2 * half || !r->near_ok)
+        return STP_FACE_UNKNOWN;
+    /* w = u - 2^20 in int32 */
+    cx = (int64_t)((int32_t)y1 - (int32_t)half) * ((int32_t)z2 - (int32_t)half) -
+         (int64_t)((int32_t)z1 - (int32_t)half) * ((int32_t)y2 - (int32_t)half);
+    cy = (int64_t)((int32_t)z1 - (int32_t)half) * ((int32_t)x2 - (int32_t)half) -
+         (int64_t)((int32_t)x1 - (int32_t)half) * ((int32_t)z2 - (int32_t)half);
+    cz = (int64_t)((int32_t)x1 - (int32_t)half) * ((int32_t)y2 - (int32_t)half) -
+         (int64_t)((int32_t)y1 - (int32_t)half) * ((int32_t)x2 - (int32_t)half);
+    x0 = (uint32_t)v[0].x - r->near_bias_x;
+    y0 = (uint32_t)v[0].y - r->near_bias_y;
+    z0 = (uint32_t)v[0].z - r->near_bias_z;
+    if ((x0 | y0 | z0) >= 2 * half)
+        return STP_FACE_UNKNOWN;
+    side = -(cx * ((int32_t)x0 - (int32_t)half) + cy * ((int32_t)y0 - (int32_t)half) +
+             cz * ((int32_t)z0 - (int32_t)half));
+    return side > 0 ? STP_FACE_FRONT : (side < 0 ? STP_FACE_BACK : STP_FACE_UNKNOWN);
+}
+
+/* Back-face removal before any transform, for a triangle entered with no
+ * model transform: which side of triangle v (world coordinates) the eye
+ * sees, from world_facing_near, else stp_view_triangle_side (view.c, out of
+ * line: its 64-bit values would crowd the common case's registers).  The
+ * sign is that of the view coordinates' test without their rounding (the
+ * view transform is a rotation and a reflection into the left-handed view
+ * system).  STP_FACE_BACK includes an edge-on face: the full path drops it
+ * too, with STP_OK; STP_FACE_UNKNOWN leaves the decision to the full path. */
+static stp_face world_facing(const stp_renderer *r, const stp_vec3 *v)
+{
+    int side;
+    stp_face f = r->projection == STP_PERSPECTIVE ? world_facing_near(r, v) : STP_FACE_UNKNOWN;
+    if (f != STP_FACE_UNKNOWN)
+        return f;
+    side = stp_view_triangle_side(r->from, r->forward, r->projection == STP_PARALLEL, v);
+    return side > 0 ? STP_FACE_FRONT : (side < 0 ? STP_FACE_BACK : STP_FACE_UNKNOWN);
 }
 
 /* DISPLAY-FILE-ENTER of a polygon: the steps above in order. */
 static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
                             stp_enter_shading shading, const stp_vec3 *normals,
-                            const stp_fix *shades)
+                            const stp_fix *shades, stp_face face)
 {
     stp_entry e;
     int status;
@@ -1106,9 +1145,8 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     e.shading = shading;
     e.normals = normals;
     e.shades = shades;
+    e.face = face;
     r->last_shade = -1;
-    if (n == 3 && r->backface_removal && !r->model_on && world_back_face(r, vertices))
-        return STP_OK;
     enter_transform(r, vertices, &e);
     if (e.range)
         return STP_ERR_RANGE;
@@ -1122,14 +1160,41 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     return enter_store(r, &e);
 }
 
-static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,
-                         stp_enter_shading shading, const stp_vec3 *normals, const stp_fix *shades)
+/* Which side of a polygon the eye sees when it is known before the
+ * transform (a triangle with back-face removal on, no model transform, a
+ * segment open: entering would otherwise open one). */
+static stp_face early_facing(const stp_renderer *r, const stp_vec3 *vertices, int n)
 {
-    int status = enter_polygon_df(r, vertices, n, shading, normals, shades);
+    if (r != 0 && vertices != 0 && n == 3 && r->backface_removal && !r->model_on &&
+        r->open_segment >= 0)
+        return world_facing(r, vertices);
+    return STP_FACE_UNKNOWN;
+}
+
+/* A back face removed before the costly steps (and their stack frame):
+ * what entering leaves of it. */
+static int removed_early(stp_renderer *r, const stp_vec3 *vertices, int n)
+{
+    r->last_shade = -1;
+#if STP_WITH_SHADOWS
+    if (shadows_on(r))
+        stp_shadow_enter(r, vertices, n); /* it still casts (render.h) */
+#else
+    (void)vertices;
+    (void)n;
+#endif
+    return STP_OK;
+}
+
+static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,
+                         stp_enter_shading shading, const stp_vec3 *normals, const stp_fix *shades,
+                         stp_face face)
+{
+    int status = enter_polygon_df(r, vertices, n, shading, normals, shades, face);
 #if STP_WITH_SHADOWS
     /* every polygon entered casts into the maps, in view or not, back face
      * or not (render.h) */
-    if (status == STP_OK && stp_shadow_any(r))
+    if (status == STP_OK && shadows_on(r))
         stp_shadow_enter(r, vertices, n);
 #endif
     return status;
@@ -1137,20 +1202,31 @@ static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,
 
 int stp_renderer_polygon(stp_renderer *r, const stp_vec3 *vertices, int n)
 {
-    return enter_polygon(r, vertices, n, STP_ENTER_FLAT, 0, 0);
+    stp_face face = early_facing(r, vertices, n);
+    if (face == STP_FACE_BACK)
+        return removed_early(r, vertices, n);
+    return enter_polygon(r, vertices, n, STP_ENTER_FLAT, 0, 0, face);
 }
 
 int stp_renderer_polygon_smooth(stp_renderer *r, const stp_vec3 *vertices, const stp_vec3 *normals, int n)
 {
+    stp_face face;
     if (normals == 0)
         return STP_ERR_ARG;
-    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_NORMALS, normals, 0);
+    face = early_facing(r, vertices, n);
+    if (face == STP_FACE_BACK)
+        return removed_early(r, vertices, n);
+    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_NORMALS, normals, 0, face);
 }
 
 int stp_renderer_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const stp_fix *shades,
                               int n)
 {
+    stp_face face;
     if (shades == 0)
         return STP_ERR_ARG;
-    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_SHADES, 0, shades);
+    face = early_facing(r, vertices, n);
+    if (face == STP_FACE_BACK)
+        return removed_early(r, vertices, n);
+    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_SHADES, 0, shades, face);
 }

@@ -111,6 +111,11 @@ struct stp_renderer {
 #if !STP_PLAYBACK_ONLY /* the entry side's state: playback.c sets none of it */
     /* view: orthonormal basis (world units), centre of projection */
     stp_vec3 from, right, up, forward;
+    /* world_facing_near: from - 2^20 per coordinate, mod 2^32, and whether
+     * |from| < 2^30 in each (then v - from is within (-2^31 - 2^30, 2^31 +
+     * 2^30), so its residue mod 2^32 within 2^20 of 0 is the difference) */
+    uint32_t near_bias_x, near_bias_y, near_bias_z;
+    int near_ok;
     stp_view_transform to_view; /* world to view (view.c) */
     stp_projection projection;
     stp_fix hither;
