@@ -1000,6 +1000,7 @@ static int enter_store(stp_renderer *r, stp_entry *e)
 {
     stp_vec3 *clipped = r->clip_a;
     stp_fix *clipped_shades = 0;
+    stp_instr *out;
     int i, m = e->n, smooth = e->shading != STP_ENTER_FLAT;
     uint32_t attribute;
 #if STP_WITH_SHADOWS
@@ -1046,30 +1047,36 @@ static int enter_store(stp_renderer *r, stp_entry *e)
         append(r, STP_OP_LIGHT_TERM, record[i].x, record[i].y, record[i].z, -1);
     }
 #endif
-    for (i = 0; i < m; i++) {
-        stp_instr p;
+    /* the vertices straight into the display file (capacity checked) */
+    out = &r->df[r->used];
+    for (i = 0; i < m; i++, out++) {
 #if STP_VERTEX_CACHE
         /* an unclipped polygon's vertices are the cached ones */
         stp_vertex_entry *c = e->outside_any == 0 && r->cached[i] != STP_CACHE_NONE
                                   ? &r->cache[r->cached[i]]
                                   : 0;
         if (c && c->dx != STP_CACHE_NOT_PROJECTED) {
-            p.x = c->dx;
-            p.y = c->dy;
-            p.z = c->dz;
+            out->x = c->dx;
+            out->y = c->dy;
+            out->z = c->dz;
         } else {
-            project(r, clipped[i], &p);
+            project(r, clipped[i], out);
             if (c) {
-                c->dx = p.x;
-                c->dy = p.y;
-                c->dz = p.z;
+                c->dx = out->x;
+                c->dy = out->y;
+                c->dz = out->z;
             }
         }
 #else
-        project(r, clipped[i], &p);
+        project(r, clipped[i], out);
 #endif
-        append(r, i == 0 ? m : STP_OP_LINE, p.x, p.y, p.z, smooth ? clipped_shades[i] : -1);
+        out->op = i == 0 ? m : STP_OP_LINE;
+#if STP_WITH_GOURAUD
+        out->shade = smooth ? clipped_shades[i] : -1;
+#endif
     }
+    r->used += (uint32_t)m;
+    r->segments[r->open_segment].end = r->used;
     return STP_OK;
 }
 
