@@ -669,13 +669,17 @@ typedef struct stp_entry {
  * vertex cache when there is one, and whether one of them saturated.  A
  * cache entry this polygon already holds is never taken by a later vertex
  * of it (that vertex stays outside the cache), so r->cached[] stays valid
- * until the polygon is stored. */
+ * until the polygon is stored.  With the cache each entry's outcode is
+ * found with its view coordinates (a later polygon sharing the vertex is
+ * likely to face the eye and need it), so the polygon's outcodes are
+ * known here. */
 static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e)
 {
     int i;
     unsigned range = 0;
 #if STP_VERTEX_CACHE
     uint16_t serial = ++r->cache_polygon; /* wraps: a stale match only skips the cache */
+    unsigned all = 31u, any = 0;
     for (i = 0; i < e->n; i++) {
         stp_vec3 p = vertices[i];
         /* a multiplicative hash of the exact coordinates */
@@ -685,24 +689,32 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
         stp_vertex_entry *c = &r->cache[slot];
         if (c->stamp != r->cache_stamp || c->point.x != p.x || c->point.y != p.y ||
             c->point.z != p.z) {
+            unsigned code;
+            stp_vec3 *view = &c->view;
+            if (c->used_by == serial) /* the slot holds an earlier vertex of this polygon */
+                view = &r->clip_a[i];
+            vertex_to_view(r, p, view);
+            code = saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode(&r->clip_volume, *view);
             if (c->used_by == serial) {
-                /* the slot holds an earlier vertex of this polygon */
-                vertex_to_view(r, p, &r->clip_a[i]);
-                range |= (unsigned)saturated(r->clip_a[i]);
+                all &= code;
+                any |= code;
                 r->cached[i] = (uint16_t)STP_CACHE_NONE;
                 continue;
             }
             c->stamp = r->cache_stamp;
             c->point = p;
-            vertex_to_view(r, p, &c->view);
-            c->code = saturated(c->view) ? STP_CODE_RANGE : STP_CODE_UNKNOWN;
+            c->code = (int16_t)code;
             c->dx = STP_CACHE_NOT_PROJECTED;
         }
         c->used_by = serial;
-        range |= (unsigned)c->code & STP_CODE_RANGE;
+        all &= (unsigned)c->code;
+        any |= (unsigned)c->code;
         r->clip_a[i] = c->view;
         r->cached[i] = (uint16_t)slot;
     }
+    range = any & STP_CODE_RANGE;
+    e->outside_all = all;
+    e->outside_any = any;
 #else
     for (i = 0; i < e->n; i++) {
         vertex_to_view(r, vertices[i], &r->clip_a[i]);
@@ -712,31 +724,22 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
     e->range = range != 0;
 }
 
+#if !STP_VERTEX_CACHE
 /* The outcodes of the vertices, so the clipper runs only on polygons that
- * cross a plane (after the back-face test: a removed face needs none). */
+ * cross a plane (after the back-face test: a removed face needs none; with
+ * the cache enter_transform finds them). */
 static void enter_outcodes(stp_renderer *r, stp_entry *e)
 {
     int i;
     e->outside_all = 31u;
     e->outside_any = 0;
     for (i = 0; i < e->n; i++) {
-        unsigned code;
-#if STP_VERTEX_CACHE
-        if (r->cached[i] != STP_CACHE_NONE) {
-            stp_vertex_entry *c = &r->cache[r->cached[i]];
-            if (c->code == STP_CODE_UNKNOWN)
-                c->code = (int16_t)stp_clip_outcode(&r->clip_volume, c->view);
-            code = (unsigned)c->code;
-        } else {
-            code = stp_clip_outcode(&r->clip_volume, r->clip_a[i]);
-        }
-#else
-        code = stp_clip_outcode(&r->clip_volume, r->clip_a[i]);
-#endif
+        unsigned code = stp_clip_outcode(&r->clip_volume, r->clip_a[i]);
         e->outside_all &= code;
         e->outside_any |= code;
     }
 }
+#endif
 
 /* Newell normal (Algorithm 10.4) of the view-space vertices in clip_a,
  * not normalised (components below 2^62), and their average.  Returns 0 for
@@ -1010,7 +1013,9 @@ static int enter_store(stp_renderer *r, stp_entry *e)
 #if STP_WITH_GOURAUD
     clipped_shades = r->shade_a;
 #endif
+#if !STP_VERTEX_CACHE
     enter_outcodes(r, e);
+#endif
     if (e->outside_all != 0)
         return STP_OK; /* wholly outside one plane: nothing of it is in view */
     if (e->outside_any != 0)

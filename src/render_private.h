@@ -83,19 +83,18 @@ typedef struct stp_shadow_poly {
 
 #if STP_VERTEX_CACHE
 /* One vertex cache entry (config.h, STP_VERTEX_CACHE): an entered point
- * (before the model transform), its view coordinates and, once known, its
- * outcode and device position.  Valid while stamp equals the renderer's
+ * (before the model transform), its view coordinates, its outcode and,
+ * once known, its device position.  Valid while stamp equals the renderer's
  * cache_stamp (set_view, set_transform and segment_create change that). */
 typedef struct stp_vertex_entry {
     stp_vec3 point, view;
     uint32_t stamp;
-    int16_t code;           /* outcode (0..31), STP_CODE_RANGE or STP_CODE_UNKNOWN */
+    int16_t code;           /* outcode (0..31) or STP_CODE_RANGE */
     uint16_t used_by;       /* the last polygon that took it (cache_polygon) */
     int32_t dx, dy, dz;     /* device position (project), when projected */
 } stp_vertex_entry;
 #define STP_CACHE_NOT_PROJECTED INT32_MIN /* dx of an entry not projected yet */
 #define STP_CODE_RANGE 32    /* code of a saturated view point (STP_ERR_RANGE) */
-#define STP_CODE_UNKNOWN 64  /* code not computed yet */
 #define STP_CACHE_NONE 0xFFFFu /* cached[i] of a vertex kept outside the cache */
 #endif
 
