@@ -10,6 +10,15 @@
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
 
+/* Whether a 64-bit division is one instruction (64-bit hosts); elsewhere
+ * (a ~470-instruction library call on ARMv6-M) a quotient that fits 32
+ * bits is taken in 32 bits, with the same result. */
+#if defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
+#define WIDE_DIVISION 1
+#else
+#define WIDE_DIVISION 0
+#endif
+
 /* STP_RENDERER_BYTES must bound the object: a negative array size here
  * stops the build when it does not. */
 typedef char stp_renderer_bytes_bound[sizeof(stp_renderer) <= STP_RENDERER_BYTES ? 1 : -1];
@@ -817,9 +826,18 @@ static int newell(const stp_renderer *r, stp_entry *e)
     e->nz = -c;
     if (a == 0 && b == 0 && c == 0)
         return 0;
-    e->centre.x = (stp_fix)(sx / n);
-    e->centre.y = (stp_fix)(sy / n);
-    e->centre.z = (stp_fix)(sz / n);
+    if (!WIDE_DIVISION && n == 3 && sx >= INT32_MIN && sx <= INT32_MAX && sy >= INT32_MIN && sy <= INT32_MAX &&
+        sz >= INT32_MIN && sz <= INT32_MAX) {
+        /* the same truncated quotients in 32 bits (a library call fewer
+         * per coordinate where a 64-bit division is one) */
+        e->centre.x = (stp_fix)((int32_t)sx / 3);
+        e->centre.y = (stp_fix)((int32_t)sy / 3);
+        e->centre.z = (stp_fix)((int32_t)sz / 3);
+    } else {
+        e->centre.x = (stp_fix)(sx / n);
+        e->centre.y = (stp_fix)(sy / n);
+        e->centre.z = (stp_fix)(sz / n);
+    }
     return 1;
 }
 
