@@ -373,7 +373,7 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
     uint64_t ax = (uint64_t)(x < 0 ? -x : x), ay = (uint64_t)(y < 0 ? -y : y),
              az = (uint64_t)(z < 0 ? -z : z);
     uint64_t s, len;
-    int up, e;
+    int up, e, sh;
     int64_t inv, half;
     out->x = out->y = out->z = 0;
     if ((ax | ay | az) == 0)
@@ -391,8 +391,11 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
         z = stp_asr64(z, -up);
     }
     s = (uint64_t)(x * x) + (uint64_t)(y * y) + (uint64_t)(z * z);
-    inv = (int64_t)rsqrt64(s, &e); /* 1/sqrt(s) = inv 2^-e, e = 59 or 60 */
-    e -= 30;                       /* to STP_UNIT */
+    /* rsqrt64 for s in [2^58, 3 2^60), a bit length of 59..62: its even
+     * shift is 28 or 30, and 1/sqrt(s) = inv 2^-e with e = 59 or 60 */
+    sh = s >= ((uint64_t)1 << 60) ? 30 : 28;
+    inv = (int64_t)rsqrt_q30((uint32_t)(s >> sh));
+    e = 45 + sh / 2 - 30; /* to STP_UNIT */
     half = (int64_t)1 << (e - 1);
     /* |x inv| < 2^60 */
     out->x = (int32_t)floor_shift(x * inv + half, e);

@@ -10,6 +10,15 @@
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
 
+/* Whether a 64-bit division is one instruction (64-bit hosts); elsewhere
+ * (a ~470-instruction library call on ARMv6-M) a quotient that fits 32
+ * bits is taken in 32 bits, with the same result. */
+#if defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
+#define WIDE_DIVISION 1
+#else
+#define WIDE_DIVISION 0
+#endif
+
 /* STP_RENDERER_BYTES must bound the object: a negative array size here
  * stops the build when it does not. */
 typedef char stp_renderer_bytes_bound[sizeof(stp_renderer) <= STP_RENDERER_BYTES ? 1 : -1];
@@ -75,9 +84,12 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     r->model_on = 0;
     stp_transform_identity(&r->model);
 #if STP_VERTEX_CACHE
-    for (i = 0; i < STP_VERTEX_CACHE; i++)
+    for (i = 0; i < STP_VERTEX_CACHE; i++) {
         r->cache[i].stamp = 0;
+        r->cache[i].used_by = 0;
+    }
     r->cache_stamp = 1;
+    r->cache_polygon = 0;
 #endif
 #if STP_WITH_SHADOWS
     for (i = 0; i < STP_MAX_LIGHTS; i++) {
@@ -112,6 +124,11 @@ int stp_renderer_set_view(stp_renderer *r, const stp_view *v)
     close_implicit_segment(r);
     r->focal = vf.focal;
     r->from = vf.from;
+    r->near_ok = vf.from.x > -(1L << 30) && vf.from.x < (1L << 30) && vf.from.y > -(1L << 30) &&
+                 vf.from.y < (1L << 30) && vf.from.z > -(1L << 30) && vf.from.z < (1L << 30);
+    r->near_bias_x = (uint32_t)vf.from.x - ((uint32_t)1 << 20);
+    r->near_bias_y = (uint32_t)vf.from.y - ((uint32_t)1 << 20);
+    r->near_bias_z = (uint32_t)vf.from.z - ((uint32_t)1 << 20);
     r->forward = vf.forward;
     r->right = vf.right;
     r->up = vf.up;
@@ -410,6 +427,14 @@ stp_fix stp_renderer_last_shade(const stp_renderer *r)
 
 /* ---- transform, clip, project ---- */
 
+#if STP_WITH_SHADOWS
+/* Whether a shadow map is set (stp_shadow_any, without the call). */
+static int shadows_on(const stp_renderer *r)
+{
+    return r->shadow_set != 0;
+}
+#endif
+
 static void world_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
 {
     stp_view_transform_point(&r->to_view, p, out);
@@ -622,12 +647,21 @@ typedef enum stp_enter_shading {
     STP_ENTER_SMOOTH_SHADES = 2   /* per-vertex shades given by the caller */
 } stp_enter_shading;
 
+/* Which side of a polygon the eye sees, when known before the transform. */
+typedef enum stp_face {
+    STP_FACE_UNKNOWN = 0,
+    STP_FACE_FRONT = 1,
+    STP_FACE_BACK = 2
+} stp_face;
+
 /* What entering one polygon finds out about it, step by step. */
 typedef struct stp_entry {
     int n;                      /* vertices, in r->clip_a (view coordinates) */
+    stp_face face;              /* from world_facing, or STP_FACE_UNKNOWN */
     stp_enter_shading shading;
     const stp_vec3 *normals;    /* STP_ENTER_SMOOTH_NORMALS: world normals */
     const stp_fix *shades;      /* STP_ENTER_SMOOTH_SHADES: the caller's */
+    int range;                  /* a vertex's view coordinates saturated */
     unsigned outside_all;       /* clip planes every vertex is outside of */
     unsigned outside_any;       /* clip planes some vertex is outside of */
     int64_t nx, ny, nz;         /* Newell normal, not normalised */
@@ -641,11 +675,20 @@ typedef struct stp_entry {
 } stp_entry;
 
 /* Step 1: the vertices to view coordinates (r->clip_a), through the
- * vertex cache when there is one. */
+ * vertex cache when there is one, and whether one of them saturated.  A
+ * cache entry this polygon already holds is never taken by a later vertex
+ * of it (that vertex stays outside the cache), so r->cached[] stays valid
+ * until the polygon is stored.  With the cache each entry's outcode is
+ * found with its view coordinates (a later polygon sharing the vertex is
+ * likely to face the eye and need it), so the polygon's outcodes are
+ * known here. */
 static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e)
 {
     int i;
+    unsigned range = 0;
 #if STP_VERTEX_CACHE
+    uint16_t serial = ++r->cache_polygon; /* wraps: a stale match only skips the cache */
+    unsigned all = 31u, any = 0;
     for (i = 0; i < e->n; i++) {
         stp_vec3 p = vertices[i];
         /* a multiplicative hash of the exact coordinates */
@@ -655,53 +698,57 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
         stp_vertex_entry *c = &r->cache[slot];
         if (c->stamp != r->cache_stamp || c->point.x != p.x || c->point.y != p.y ||
             c->point.z != p.z) {
+            unsigned code;
+            stp_vec3 *view = &c->view;
+            if (c->used_by == serial) /* the slot holds an earlier vertex of this polygon */
+                view = &r->clip_a[i];
+            vertex_to_view(r, p, view);
+            code = saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode(&r->clip_volume, *view);
+            if (c->used_by == serial) {
+                all &= code;
+                any |= code;
+                r->cached[i] = (uint16_t)STP_CACHE_NONE;
+                continue;
+            }
             c->stamp = r->cache_stamp;
             c->point = p;
-            vertex_to_view(r, p, &c->view);
-            c->code = -1;
+            c->code = (int16_t)code;
             c->dx = STP_CACHE_NOT_PROJECTED;
         }
+        c->used_by = serial;
+        all &= (unsigned)c->code;
+        any |= (unsigned)c->code;
         r->clip_a[i] = c->view;
         r->cached[i] = (uint16_t)slot;
     }
-    return;
+    range = any & STP_CODE_RANGE;
+    e->outside_all = all;
+    e->outside_any = any;
+#else
+    for (i = 0; i < e->n; i++) {
+        vertex_to_view(r, vertices[i], &r->clip_a[i]);
+        range |= (unsigned)saturated(r->clip_a[i]);
+    }
 #endif
-    if (r->model_on)
-        for (i = 0; i < e->n; i++)
-            vertex_to_view(r, vertices[i], &r->clip_a[i]);
-    else
-        for (i = 0; i < e->n; i++)
-            world_to_view(r, vertices[i], &r->clip_a[i]);
+    e->range = range != 0;
 }
 
+#if !STP_VERTEX_CACHE
 /* The outcodes of the vertices, so the clipper runs only on polygons that
- * cross a plane (after the back-face test: a removed face needs none). */
+ * cross a plane (after the back-face test: a removed face needs none; with
+ * the cache enter_transform finds them). */
 static void enter_outcodes(stp_renderer *r, stp_entry *e)
 {
     int i;
     e->outside_all = 31u;
     e->outside_any = 0;
     for (i = 0; i < e->n; i++) {
-        unsigned code;
-#if STP_VERTEX_CACHE
-        /* the entry may have been taken by a later vertex of this polygon */
-        stp_vertex_entry *c = &r->cache[r->cached[i]];
-        if (c->code >= 0 && c->view.x == r->clip_a[i].x && c->view.y == r->clip_a[i].y &&
-            c->view.z == r->clip_a[i].z) {
-            code = (unsigned)c->code;
-        } else {
-            code = stp_clip_outcode(&r->clip_volume, r->clip_a[i]);
-            if (c->view.x == r->clip_a[i].x && c->view.y == r->clip_a[i].y &&
-                c->view.z == r->clip_a[i].z)
-                c->code = (int32_t)code;
-        }
-#else
-        code = stp_clip_outcode(&r->clip_volume, r->clip_a[i]);
-#endif
+        unsigned code = stp_clip_outcode(&r->clip_volume, r->clip_a[i]);
         e->outside_all &= code;
         e->outside_any |= code;
     }
 }
+#endif
 
 /* Newell normal (Algorithm 10.4) of the view-space vertices in clip_a,
  * not normalised (components below 2^62), and their average.  Returns 0 for
@@ -711,34 +758,21 @@ static int newell(const stp_renderer *r, stp_entry *e)
 {
     const stp_vec3 *v = r->clip_a;
     const int n = e->n;
-    int64_t a = 0, b = 0, c = 0, sx = 0, sy = 0, sz = 0, div;
+    int64_t a = 0, b = 0, c = 0, sx, sy, sz, div;
     uint64_t spread = 0; /* the relative coordinates' magnitudes ORed */
     int i, bits, shift;
-    for (i = 1; i < n; i++) {
-        int64_t dx = (int64_t)v[i].x - v[0].x, dy = (int64_t)v[i].y - v[0].y,
-                dz = (int64_t)v[i].z - v[0].z;
-        spread |= (uint64_t)(dx < 0 ? -dx : dx) | (uint64_t)(dy < 0 ? -dy : dy) |
-                  (uint64_t)(dz < 0 ? -dz : dz);
-    }
-    for (i = 0; i < n; i++) {
-        sx += v[i].x;
-        sy += v[i].y;
-        sz += v[i].z;
-    }
-    /* relative coordinates below 2^24 keep every product < 2^50 and the sum
-     * of up to 4096 of them < 2^62; smaller polygons keep all their bits
-     * (the shift is that of the largest magnitude, counted up to 2^32) */
-    bits = stp_bit_length64(spread);
-    shift = (bits > 32 ? 32 : bits) - 24;
-    if (shift < 0)
-        shift = 0;
-    div = (int64_t)1 << shift;
     if (n == 3) {
-        int64_t x1 = ((int64_t)v[1].x - v[0].x), y1 = ((int64_t)v[1].y - v[0].y),
-                z1 = ((int64_t)v[1].z - v[0].z);
-        int64_t x2 = ((int64_t)v[2].x - v[0].x), y2 = ((int64_t)v[2].y - v[0].y),
-                z2 = ((int64_t)v[2].z - v[0].z);
-        if (shift > 0) {
+        int64_t x1 = (int64_t)v[1].x - v[0].x, y1 = (int64_t)v[1].y - v[0].y,
+                z1 = (int64_t)v[1].z - v[0].z;
+        int64_t x2 = (int64_t)v[2].x - v[0].x, y2 = (int64_t)v[2].y - v[0].y,
+                z2 = (int64_t)v[2].z - v[0].z;
+        spread = (uint64_t)(x1 < 0 ? -x1 : x1) | (uint64_t)(y1 < 0 ? -y1 : y1) |
+                 (uint64_t)(z1 < 0 ? -z1 : z1) | (uint64_t)(x2 < 0 ? -x2 : x2) |
+                 (uint64_t)(y2 < 0 ? -y2 : y2) | (uint64_t)(z2 < 0 ? -z2 : z2);
+        /* below 2^24 every product is < 2^49 (see below) */
+        if (spread >= ((uint64_t)1 << 24)) {
+            bits = stp_bit_length64(spread);
+            div = (int64_t)1 << ((bits > 32 ? 32 : bits) - 24);
             x1 /= div;
             y1 /= div;
             z1 /= div;
@@ -749,7 +783,31 @@ static int newell(const stp_renderer *r, stp_entry *e)
         a = y1 * z2 - z1 * y2;
         b = z1 * x2 - x1 * z2;
         c = x1 * y2 - y1 * x2;
+        sx = (int64_t)v[0].x + v[1].x + v[2].x;
+        sy = (int64_t)v[0].y + v[1].y + v[2].y;
+        sz = (int64_t)v[0].z + v[1].z + v[2].z;
     } else {
+        sx = sy = sz = 0;
+        for (i = 1; i < n; i++) {
+            int64_t dx = (int64_t)v[i].x - v[0].x, dy = (int64_t)v[i].y - v[0].y,
+                    dz = (int64_t)v[i].z - v[0].z;
+            spread |= (uint64_t)(dx < 0 ? -dx : dx) | (uint64_t)(dy < 0 ? -dy : dy) |
+                      (uint64_t)(dz < 0 ? -dz : dz);
+        }
+        for (i = 0; i < n; i++) {
+            sx += v[i].x;
+            sy += v[i].y;
+            sz += v[i].z;
+        }
+        /* relative coordinates below 2^24 keep every product < 2^50 and the
+         * sum of up to 4096 of them < 2^62; smaller polygons keep all their
+         * bits (the shift is that of the largest magnitude, counted up to
+         * 2^32) */
+        bits = stp_bit_length64(spread);
+        shift = (bits > 32 ? 32 : bits) - 24;
+        if (shift < 0)
+            shift = 0;
+        div = (int64_t)1 << shift;
         for (i = 0; i < n; i++) {
             int p = i == 0 ? n - 1 : i - 1;
             int64_t xp = ((int64_t)v[p].x - v[0].x) / div, yp = ((int64_t)v[p].y - v[0].y) / div,
@@ -768,9 +826,18 @@ static int newell(const stp_renderer *r, stp_entry *e)
     e->nz = -c;
     if (a == 0 && b == 0 && c == 0)
         return 0;
-    e->centre.x = (stp_fix)(sx / n);
-    e->centre.y = (stp_fix)(sy / n);
-    e->centre.z = (stp_fix)(sz / n);
+    if (!WIDE_DIVISION && n == 3 && sx >= INT32_MIN && sx <= INT32_MAX && sy >= INT32_MIN && sy <= INT32_MAX &&
+        sz >= INT32_MIN && sz <= INT32_MAX) {
+        /* the same truncated quotients in 32 bits (a library call fewer
+         * per coordinate where a 64-bit division is one) */
+        e->centre.x = (stp_fix)((int32_t)sx / 3);
+        e->centre.y = (stp_fix)((int32_t)sy / 3);
+        e->centre.z = (stp_fix)((int32_t)sz / 3);
+    } else {
+        e->centre.x = (stp_fix)(sx / n);
+        e->centre.y = (stp_fix)(sy / n);
+        e->centre.z = (stp_fix)(sz / n);
+    }
     return 1;
 }
 
@@ -778,12 +845,17 @@ static int newell(const stp_renderer *r, stp_entry *e)
  * sign of N.(eye - centre) in integers: nothing is normalised for a back
  * face that back-face removal drops.  Returns STP_OK, STP_ERR_DEGENERATE (a
  * zero normal) or 1 (a back face removed). */
+static int enter_unit_vectors(stp_renderer *r, stp_entry *e);
 static int enter_facing(stp_renderer *r, stp_entry *e)
 {
     int64_t nx, ny, nz, side;
     int bits;
     if (!newell(r, e))
         return STP_ERR_DEGENERATE;
+    if (e->face == STP_FACE_FRONT) {
+        e->facing = 1; /* world_facing's exact sign */
+        return enter_unit_vectors(r, e);
+    }
     /* N cut to 30 bits, so each product with a coordinate is < 2^61 */
     {
         uint64_t ax = (uint64_t)(e->nx < 0 ? -e->nx : e->nx), ay = (uint64_t)(e->ny < 0 ? -e->ny : e->ny),
@@ -802,6 +874,13 @@ static int enter_facing(stp_renderer *r, stp_entry *e)
     e->facing = side > 0 ? 1 : (side < 0 ? -1 : 0);
     if (e->facing <= 0 && r->backface_removal)
         return 1;
+    return enter_unit_vectors(r, e);
+}
+
+/* The unit normal (turned to the eye) and eye direction of a polygon whose
+ * side is known, and their cosine.  Returns STP_OK. */
+static int enter_unit_vectors(stp_renderer *r, stp_entry *e)
+{
     (void)stp_unit_from64(e->nx, e->ny, e->nz, &e->normal);
     if (r->projection == STP_PERSPECTIVE) {
         if (stp_unit_from64(-(int64_t)e->centre.x, -(int64_t)e->centre.y, -(int64_t)e->centre.z,
@@ -942,6 +1021,7 @@ static int enter_store(stp_renderer *r, stp_entry *e)
 {
     stp_vec3 *clipped = r->clip_a;
     stp_fix *clipped_shades = 0;
+    stp_instr *out;
     int i, m = e->n, smooth = e->shading != STP_ENTER_FLAT;
     uint32_t attribute;
 #if STP_WITH_SHADOWS
@@ -951,7 +1031,9 @@ static int enter_store(stp_renderer *r, stp_entry *e)
 #if STP_WITH_GOURAUD
     clipped_shades = r->shade_a;
 #endif
+#if !STP_VERTEX_CACHE
     enter_outcodes(r, e);
+#endif
     if (e->outside_all != 0)
         return STP_OK; /* wholly outside one plane: nothing of it is in view */
     if (e->outside_any != 0)
@@ -965,7 +1047,7 @@ static int enter_store(stp_renderer *r, stp_entry *e)
     /* shadow records: what the raster needs to re-light a pixel hidden
      * from a light (render.h, STP_OP_LIGHT_TERM) */
     records = 0;
-    if (r->shading && e->shading != STP_ENTER_SMOOTH_SHADES && stp_shadow_any(r))
+    if (r->shading && e->shading != STP_ENTER_SMOOTH_SHADES && shadows_on(r))
         records = stp_shadow_records(r, stp_unit_to_fix(e->normal), e->centre,
                                      stp_unit_to_fix(e->eye_dir), e->colour != 0, record);
     attribute += (uint32_t)records;
@@ -988,40 +1070,100 @@ static int enter_store(stp_renderer *r, stp_entry *e)
         append(r, STP_OP_LIGHT_TERM, record[i].x, record[i].y, record[i].z, -1);
     }
 #endif
-    for (i = 0; i < m; i++) {
-        stp_instr p;
+    /* the vertices straight into the display file (capacity checked) */
+    out = &r->df[r->used];
+    for (i = 0; i < m; i++, out++) {
 #if STP_VERTEX_CACHE
         /* an unclipped polygon's vertices are the cached ones */
-        stp_vertex_entry *c = e->outside_any == 0 ? &r->cache[r->cached[i]] : 0;
-        if (c && c->dx != STP_CACHE_NOT_PROJECTED && c->view.x == clipped[i].x &&
-            c->view.y == clipped[i].y && c->view.z == clipped[i].z) {
-            p.x = c->dx;
-            p.y = c->dy;
-            p.z = c->dz;
+        stp_vertex_entry *c = e->outside_any == 0 && r->cached[i] != STP_CACHE_NONE
+                                  ? &r->cache[r->cached[i]]
+                                  : 0;
+        if (c && c->dx != STP_CACHE_NOT_PROJECTED) {
+            out->x = c->dx;
+            out->y = c->dy;
+            out->z = c->dz;
         } else {
-            project(r, clipped[i], &p);
-            if (c && c->view.x == clipped[i].x && c->view.y == clipped[i].y &&
-                c->view.z == clipped[i].z) {
-                c->dx = p.x;
-                c->dy = p.y;
-                c->dz = p.z;
+            project(r, clipped[i], out);
+            if (c) {
+                c->dx = out->x;
+                c->dy = out->y;
+                c->dz = out->z;
             }
         }
 #else
-        project(r, clipped[i], &p);
+        project(r, clipped[i], out);
 #endif
-        append(r, i == 0 ? m : STP_OP_LINE, p.x, p.y, p.z, smooth ? clipped_shades[i] : -1);
+        out->op = i == 0 ? m : STP_OP_LINE;
+#if STP_WITH_GOURAUD
+        out->shade = smooth ? clipped_shades[i] : -1;
+#endif
     }
+    r->used += (uint32_t)m;
+    r->segments[r->open_segment].end = r->used;
     return STP_OK;
+}
+
+/* world_facing for a perspective view and a triangle within 2^20 (16
+ * units) of the eye in each coordinate, the common case, in fewer steps:
+ * with w = v - eye, ((v1 - v0) x (v2 - v0)).(eye - v0) = -w0.(w1 x w2)
+ * (the terms with w0 twice vanish).  w + 2^20 is formed mod 2^32 (exact
+ * when below 2^21: see near_bias), so w fits int32; |w| <= 2^20: w1 x w2
+ * below 2^41, the triple product below 3 2^61, exact.  A zero triple
+ * product (edge-on, or a zero normal) is left to the full path.  Returns
+ * STP_FACE_UNKNOWN when a coordinate is out of that range. */
+static stp_face world_facing_near(const stp_renderer *r, const stp_vec3 *v)
+{
+    const uint32_t half = (uint32_t)1 << 20;
+    uint32_t x1 = (uint32_t)v[1].x - r->near_bias_x, y1 = (uint32_t)v[1].y - r->near_bias_y,
+             z1 = (uint32_t)v[1].z - r->near_bias_z;
+    uint32_t x2 = (uint32_t)v[2].x - r->near_bias_x, y2 = (uint32_t)v[2].y - r->near_bias_y,
+             z2 = (uint32_t)v[2].z - r->near_bias_z;
+    uint32_t x0, y0, z0;
+    int64_t cx, cy, cz, side;
+    if ((x1 | y1 | z1 | x2 | y2 | z2) >= 2 * half || !r->near_ok)
+        return STP_FACE_UNKNOWN;
+    /* w = u - 2^20 in int32 */
+    cx = (int64_t)((int32_t)y1 - (int32_t)half) * ((int32_t)z2 - (int32_t)half) -
+         (int64_t)((int32_t)z1 - (int32_t)half) * ((int32_t)y2 - (int32_t)half);
+    cy = (int64_t)((int32_t)z1 - (int32_t)half) * ((int32_t)x2 - (int32_t)half) -
+         (int64_t)((int32_t)x1 - (int32_t)half) * ((int32_t)z2 - (int32_t)half);
+    cz = (int64_t)((int32_t)x1 - (int32_t)half) * ((int32_t)y2 - (int32_t)half) -
+         (int64_t)((int32_t)y1 - (int32_t)half) * ((int32_t)x2 - (int32_t)half);
+    x0 = (uint32_t)v[0].x - r->near_bias_x;
+    y0 = (uint32_t)v[0].y - r->near_bias_y;
+    z0 = (uint32_t)v[0].z - r->near_bias_z;
+    if ((x0 | y0 | z0) >= 2 * half)
+        return STP_FACE_UNKNOWN;
+    side = -(cx * ((int32_t)x0 - (int32_t)half) + cy * ((int32_t)y0 - (int32_t)half) +
+             cz * ((int32_t)z0 - (int32_t)half));
+    return side > 0 ? STP_FACE_FRONT : (side < 0 ? STP_FACE_BACK : STP_FACE_UNKNOWN);
+}
+
+/* Back-face removal before any transform, for a triangle entered with no
+ * model transform: which side of triangle v (world coordinates) the eye
+ * sees, from world_facing_near, else stp_view_triangle_side (view.c, out of
+ * line: its 64-bit values would crowd the common case's registers).  The
+ * sign is that of the view coordinates' test without their rounding (the
+ * view transform is a rotation and a reflection into the left-handed view
+ * system).  STP_FACE_BACK includes an edge-on face: the full path drops it
+ * too, with STP_OK; STP_FACE_UNKNOWN leaves the decision to the full path. */
+static stp_face world_facing(const stp_renderer *r, const stp_vec3 *v)
+{
+    int side;
+    stp_face f = r->projection == STP_PERSPECTIVE ? world_facing_near(r, v) : STP_FACE_UNKNOWN;
+    if (f != STP_FACE_UNKNOWN)
+        return f;
+    side = stp_view_triangle_side(r->from, r->forward, r->projection == STP_PARALLEL, v);
+    return side > 0 ? STP_FACE_FRONT : (side < 0 ? STP_FACE_BACK : STP_FACE_UNKNOWN);
 }
 
 /* DISPLAY-FILE-ENTER of a polygon: the steps above in order. */
 static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
                             stp_enter_shading shading, const stp_vec3 *normals,
-                            const stp_fix *shades)
+                            const stp_fix *shades, stp_face face)
 {
     stp_entry e;
-    int status, i;
+    int status;
     if (r == 0 || vertices == 0 || n < 3)
         return n < 3 && n >= 0 && r != 0 ? STP_ERR_DEGENERATE : STP_ERR_ARG;
     if (n > STP_MAX_POLYGON_VERTICES)
@@ -1033,11 +1175,11 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     e.shading = shading;
     e.normals = normals;
     e.shades = shades;
+    e.face = face;
     r->last_shade = -1;
     enter_transform(r, vertices, &e);
-    for (i = 0; i < n; i++)
-        if (saturated(r->clip_a[i]))
-            return STP_ERR_RANGE;
+    if (e.range)
+        return STP_ERR_RANGE;
     status = enter_facing(r, &e);
     if (status != STP_OK)
         return status == 1 ? STP_OK : status;
@@ -1048,14 +1190,41 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     return enter_store(r, &e);
 }
 
-static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,
-                         stp_enter_shading shading, const stp_vec3 *normals, const stp_fix *shades)
+/* Which side of a polygon the eye sees when it is known before the
+ * transform (a triangle with back-face removal on, no model transform, a
+ * segment open: entering would otherwise open one). */
+static stp_face early_facing(const stp_renderer *r, const stp_vec3 *vertices, int n)
 {
-    int status = enter_polygon_df(r, vertices, n, shading, normals, shades);
+    if (r != 0 && vertices != 0 && n == 3 && r->backface_removal && !r->model_on &&
+        r->open_segment >= 0)
+        return world_facing(r, vertices);
+    return STP_FACE_UNKNOWN;
+}
+
+/* A back face removed before the costly steps (and their stack frame):
+ * what entering leaves of it. */
+static int removed_early(stp_renderer *r, const stp_vec3 *vertices, int n)
+{
+    r->last_shade = -1;
+#if STP_WITH_SHADOWS
+    if (shadows_on(r))
+        stp_shadow_enter(r, vertices, n); /* it still casts (render.h) */
+#else
+    (void)vertices;
+    (void)n;
+#endif
+    return STP_OK;
+}
+
+static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,
+                         stp_enter_shading shading, const stp_vec3 *normals, const stp_fix *shades,
+                         stp_face face)
+{
+    int status = enter_polygon_df(r, vertices, n, shading, normals, shades, face);
 #if STP_WITH_SHADOWS
     /* every polygon entered casts into the maps, in view or not, back face
      * or not (render.h) */
-    if (status == STP_OK && stp_shadow_any(r))
+    if (status == STP_OK && shadows_on(r))
         stp_shadow_enter(r, vertices, n);
 #endif
     return status;
@@ -1063,20 +1232,31 @@ static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,
 
 int stp_renderer_polygon(stp_renderer *r, const stp_vec3 *vertices, int n)
 {
-    return enter_polygon(r, vertices, n, STP_ENTER_FLAT, 0, 0);
+    stp_face face = early_facing(r, vertices, n);
+    if (face == STP_FACE_BACK)
+        return removed_early(r, vertices, n);
+    return enter_polygon(r, vertices, n, STP_ENTER_FLAT, 0, 0, face);
 }
 
 int stp_renderer_polygon_smooth(stp_renderer *r, const stp_vec3 *vertices, const stp_vec3 *normals, int n)
 {
+    stp_face face;
     if (normals == 0)
         return STP_ERR_ARG;
-    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_NORMALS, normals, 0);
+    face = early_facing(r, vertices, n);
+    if (face == STP_FACE_BACK)
+        return removed_early(r, vertices, n);
+    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_NORMALS, normals, 0, face);
 }
 
 int stp_renderer_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const stp_fix *shades,
                               int n)
 {
+    stp_face face;
     if (shades == 0)
         return STP_ERR_ARG;
-    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_SHADES, 0, shades);
+    face = early_facing(r, vertices, n);
+    if (face == STP_FACE_BACK)
+        return removed_early(r, vertices, n);
+    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_SHADES, 0, shades, face);
 }

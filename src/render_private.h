@@ -83,16 +83,19 @@ typedef struct stp_shadow_poly {
 
 #if STP_VERTEX_CACHE
 /* One vertex cache entry (config.h, STP_VERTEX_CACHE): an entered point
- * (before the model transform), its view coordinates and, once known, its
- * outcode and device position.  Valid while stamp equals the renderer's
+ * (before the model transform), its view coordinates, its outcode and,
+ * once known, its device position.  Valid while stamp equals the renderer's
  * cache_stamp (set_view, set_transform and segment_create change that). */
 typedef struct stp_vertex_entry {
     stp_vec3 point, view;
     uint32_t stamp;
-    int32_t code;           /* outcode, -1 not yet known */
+    int16_t code;           /* outcode (0..31) or STP_CODE_RANGE */
+    uint16_t used_by;       /* the last polygon that took it (cache_polygon) */
     int32_t dx, dy, dz;     /* device position (project), when projected */
 } stp_vertex_entry;
 #define STP_CACHE_NOT_PROJECTED INT32_MIN /* dx of an entry not projected yet */
+#define STP_CODE_RANGE 32    /* code of a saturated view point (STP_ERR_RANGE) */
+#define STP_CACHE_NONE 0xFFFFu /* cached[i] of a vertex kept outside the cache */
 #endif
 
 struct stp_renderer {
@@ -107,6 +110,11 @@ struct stp_renderer {
 #if !STP_PLAYBACK_ONLY /* the entry side's state: playback.c sets none of it */
     /* view: orthonormal basis (world units), centre of projection */
     stp_vec3 from, right, up, forward;
+    /* world_facing_near: from - 2^20 per coordinate, mod 2^32, and whether
+     * |from| < 2^30 in each (then v - from is within (-2^31 - 2^30, 2^31 +
+     * 2^30), so its residue mod 2^32 within 2^20 of 0 is the difference) */
+    uint32_t near_bias_x, near_bias_y, near_bias_z;
+    int near_ok;
     stp_view_transform to_view; /* world to view (view.c) */
     stp_projection projection;
     stp_fix hither;
@@ -143,6 +151,7 @@ struct stp_renderer {
 #if STP_VERTEX_CACHE
     stp_vertex_entry cache[STP_VERTEX_CACHE];
     uint32_t cache_stamp; /* >= 1 */
+    uint16_t cache_polygon; /* serial of the polygon being entered (wraps) */
     uint16_t cached[STP_MAX_POLYGON_VERTICES]; /* clip_a[i]'s entry in cache[] */
 #endif
 #endif /* !STP_PLAYBACK_ONLY */

@@ -97,3 +97,44 @@ void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 
     out->z = floor_shift_sat((int64_t)p.x * t->forward.x + (int64_t)p.y * t->forward.y +
                              (int64_t)p.z * t->forward.z - t->from_forward);
 }
+
+/* Ranges: each difference of vertices below 2^ld (raw), the eye's below
+ * 2^le: the cross product's components are below 2^(2 ld + 1) and the
+ * triple product below 3 2^(2 ld + le + 1), so 2 ld + le <= 60 keeps it
+ * below 2^63.  With ld, le <= 29 each view coordinate is below
+ * sqrt(3) 2^30 < 2^31 - 1: none saturates. */
+int stp_view_triangle_side(stp_vec3 from, stp_vec3 forward, int parallel, const stp_vec3 *v)
+{
+    int64_t x1 = (int64_t)v[1].x - v[0].x, y1 = (int64_t)v[1].y - v[0].y,
+            z1 = (int64_t)v[1].z - v[0].z;
+    int64_t x2 = (int64_t)v[2].x - v[0].x, y2 = (int64_t)v[2].y - v[0].y,
+            z2 = (int64_t)v[2].z - v[0].z;
+    int64_t ex = (int64_t)from.x - v[0].x, ey = (int64_t)from.y - v[0].y,
+            ez = (int64_t)from.z - v[0].z;
+    uint64_t spread = (uint64_t)(x1 < 0 ? -x1 : x1) | (uint64_t)(y1 < 0 ? -y1 : y1) |
+                      (uint64_t)(z1 < 0 ? -z1 : z1) | (uint64_t)(x2 < 0 ? -x2 : x2) |
+                      (uint64_t)(y2 < 0 ? -y2 : y2) | (uint64_t)(z2 < 0 ? -z2 : z2);
+    uint64_t reach = (uint64_t)(ex < 0 ? -ex : ex) | (uint64_t)(ey < 0 ? -ey : ey) |
+                     (uint64_t)(ez < 0 ? -ez : ez);
+    int ld, le;
+    int64_t cx, cy, cz, side;
+    if ((spread | reach) >= ((uint64_t)1 << 29))
+        return 0;
+    ld = stp_bit_length64(spread);
+    le = stp_bit_length64(reach);
+    if (parallel) {
+        ex = -(int64_t)forward.x; /* a unit stp_vec3: below 2^17 */
+        ey = -(int64_t)forward.y;
+        ez = -(int64_t)forward.z;
+        le = F + 1;
+    }
+    if (2 * ld + le > 60)
+        return 0;
+    cx = y1 * z2 - z1 * y2;
+    cy = z1 * x2 - x1 * z2;
+    cz = x1 * y2 - y1 * x2;
+    if (cx == 0 && cy == 0 && cz == 0)
+        return 0; /* degenerate: the full path reports it */
+    side = cx * ex + cy * ey + cz * ez;
+    return side > 0 ? 1 : -1;
+}

@@ -35,6 +35,16 @@ void stp_view_transform_make(const stp_view_frame *vf, stp_view_transform *out);
 /* p (world) in view coordinates, each floor((p - from) . axis), saturated. */
 void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out);
 
+/* Which side of triangle v (world coordinates) an eye at from (perspective)
+ * or looking along forward (parallel: unit, F fractional bits) sees, by the
+ * exact sign of ((v1 - v0) x (v2 - v0)).(from - v0), or of -N.forward:
+ * 1 the front (counter-clockwise seen from the eye in the left-handed view
+ * system), -1 the back or edge-on, 0 not decided: a zero normal, or
+ * coordinates too far apart to decide in 64 bits or to be sure that none of
+ * the vertices' view coordinates saturates (differences from one another
+ * and from `from` of 2^29 raw units or more; see view.c). */
+int stp_view_triangle_side(stp_vec3 from, stp_vec3 forward, int parallel, const stp_vec3 *v);
+
 /* a x b with F fractional bits, each component saturated. */
 stp_vec3 stp_vec3_cross(stp_vec3 a, stp_vec3 b);
 

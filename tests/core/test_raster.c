@@ -741,6 +741,121 @@ static void test_backface_removal_single_polygon(void **state)
     fixture_close(&f);
 }
 
+/* Back faces of triangles are removed before the transform (in world
+ * coordinates, render.c world_facing): for random triangles in view, near
+ * the eye (the int32 case), far from it (the 64-bit case) and beyond what
+ * either decides (the view-space test), perspective and parallel, a
+ * triangle (a tenth of the scene across) enters exactly when the double-precision sign of
+ * ((v1 - v0) x (v2 - v0)).(eye - v0) (or -N.forward) says the eye sees its
+ * front; faces within 1e-6 of edge-on are skipped. */
+static void test_backface_removal_before_transform_matches_double(void **state)
+{
+    static const double scales[3] = {1, 20, 3000};
+    uint32_t seed = 12345u;
+    int s, proj, k, checked = 0, fronts = 0;
+    (void)state;
+    for (s = 0; s < 3; s++) {
+        for (proj = 0; proj < 2; proj++) {
+            fixture f;
+            stp_view v;
+            double from[3], forward[3], len;
+            fixture_open(&f, 64, 64, 4096);
+            from[0] = 0.7 * scales[s];
+            from[1] = 1.9 * scales[s];
+            from[2] = -5.6 * scales[s];
+            len = sqrt(from[0] * from[0] + from[1] * from[1] + from[2] * from[2]);
+            for (k = 0; k < 3; k++)
+                forward[k] = -from[k] / len;
+            memset(&v, 0, sizeof v);
+            v.from = vec(from[0], from[1], from[2]);
+            v.at = vec(0, 0, 0);
+            v.up = vec(0, 1, 0);
+            v.window_half = fx(2 * scales[s]);
+            v.hither = fx(0.01);
+            v.fov_degrees = fx(60);
+            v.projection = proj ? STP_PARALLEL : STP_PERSPECTIVE;
+            assert_int_equal(stp_renderer_set_view(f.r, &v), STP_OK);
+            stp_renderer_set_backface_removal(f.r, 1);
+            for (k = 0; k < 200; k++) {
+                stp_vec3 t[3];
+                double p[3][3], a[3], b[3], n[3], c[3], side, scale_n;
+                uint32_t before;
+                int i, j;
+                for (j = 0; j < 3; j++) {
+                    seed = seed * 1664525u + 1013904223u;
+                    c[j] = ((double)(seed >> 8) / 16777216.0 - 0.5) * 1.2 * scales[s];
+                }
+                for (i = 0; i < 3; i++) {
+                    for (j = 0; j < 3; j++) {
+                        seed = seed * 1664525u + 1013904223u;
+                        p[i][j] = c[j] + ((double)(seed >> 8) / 16777216.0 - 0.5) * 0.1 * scales[s];
+                    }
+                    t[i] = vec(p[i][0], p[i][1], p[i][2]);
+                    for (j = 0; j < 3; j++) /* the coordinates the renderer gets */
+                        p[i][j] = (double)(j == 0 ? t[i].x : j == 1 ? t[i].y : t[i].z) / ONE;
+                }
+                for (j = 0; j < 3; j++) {
+                    a[j] = p[1][j] - p[0][j];
+                    b[j] = p[2][j] - p[0][j];
+                }
+                n[0] = a[1] * b[2] - a[2] * b[1];
+                n[1] = a[2] * b[0] - a[0] * b[2];
+                n[2] = a[0] * b[1] - a[1] * b[0];
+                if (proj) {
+                    side = -(n[0] * forward[0] + n[1] * forward[1] + n[2] * forward[2]);
+                    scale_n = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+                } else {
+                    double e[3] = {from[0] - p[0][0], from[1] - p[0][1], from[2] - p[0][2]};
+                    side = n[0] * e[0] + n[1] * e[1] + n[2] * e[2];
+                    scale_n = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) *
+                              sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+                }
+                if (fabs(side) <= 1e-6 * scale_n)
+                    continue;
+                before = stp_renderer_polygon_count(f.r);
+                assert_int_equal(stp_renderer_polygon(f.r, t, 3), STP_OK);
+                assert_int_equal(stp_renderer_polygon_count(f.r) - before, side > 0 ? 1u : 0u);
+                checked++;
+                fronts += side > 0;
+            }
+            fixture_close(&f);
+        }
+    }
+    assert_true(checked > 1100);
+    assert_true(fronts > 400 && checked - fronts > 400);
+}
+
+/* A back face with a vertex beyond the view range is refused as a front
+ * face is (STP_ERR_RANGE), not removed unseen. */
+static void test_backface_removal_out_of_range_is_refused(void **state)
+{
+    fixture f;
+    stp_view v;
+    stp_vec3 front[3], back[3];
+    (void)state;
+    fixture_open(&f, 32, 32, 64);
+    memset(&v, 0, sizeof v);
+    v.from = vec(0, 0, -20000);
+    v.at = vec(0, 0, 0);
+    v.up = vec(0, 1, 0);
+    v.hither = fx(1);
+    v.fov_degrees = fx(60);
+    v.projection = STP_PERSPECTIVE;
+    assert_int_equal(stp_renderer_set_view(f.r, &v), STP_OK);
+    stp_renderer_set_backface_removal(f.r, 1);
+    /* 20000 + 20000 units from the eye: beyond view coordinates' range */
+    front[0] = vec(-1, -1, 20000);
+    front[1] = vec(1, -1, 20000);
+    front[2] = vec(-1, 1, 20000);
+    back[0] = front[0];
+    back[1] = front[2];
+    back[2] = front[1];
+    assert_int_equal(stp_renderer_polygon(f.r, front, 3), STP_ERR_RANGE);
+    assert_int_equal(stp_renderer_polygon(f.r, back, 3), STP_ERR_RANGE);
+    assert_int_equal(stp_renderer_polygon_count(f.r), 0);
+    fixture_close(&f);
+}
+
 /* ---- bands ---- */
 
 static void enter_band_scene(fixture *f)
@@ -1409,6 +1524,8 @@ int main(void)
         cmocka_unit_test(test_zbuffer_interpenetrating_polygons),
         cmocka_unit_test(test_backface_removal_keeps_faces_towards_viewer),
         cmocka_unit_test(test_backface_removal_single_polygon),
+        cmocka_unit_test(test_backface_removal_before_transform_matches_double),
+        cmocka_unit_test(test_backface_removal_out_of_range_is_refused),
         cmocka_unit_test(test_bands_give_the_same_frame),
         cmocka_unit_test(test_short_setup_array_is_refused),
         cmocka_unit_test(test_mono1_row_padding_is_zero),
