@@ -89,7 +89,7 @@ typedef struct frame {
      * style mod STP_PATTERN_CACHE: a depth-ordered frame alternates styles
      * polygon by polygon; -1: empty */
     paint cached_style[STP_PATTERN_CACHE];
-    uint32_t cached_rows[STP_PATTERN_CACHE]; /* row cy in bits 8cy..8cy+7 */
+    uint8_t cached_rows[STP_PATTERN_CACHE][4]; /* the byte of each cell row */
 #endif
 #if STP_WITH_SHADOWS
     stp_shadow_poly *shadow; /* the polygon being drawn's shadow records;
@@ -123,17 +123,18 @@ static void use_style(frame *fr, paint style)
         return;
 #if STP_PATTERN_CACHE > 0
     if (fr->cell->height <= 4) {
-        uint32_t slot = (uint32_t)style & (STP_PATTERN_CACHE - 1), rows = 0;
+        uint32_t slot = (uint32_t)style & (STP_PATTERN_CACHE - 1);
         if (fr->cached_style[slot] != style) {
             level = level_of(fr, style);
-            for (cy = 0; cy < fr->cell->height; cy++)
-                rows |= (uint32_t)stp_halftone_pattern_byte(fr->cell, cy, level) << (8 * cy);
+            for (cy = 0; cy < 4; cy++)
+                fr->cached_rows[slot][cy] = cy < fr->cell->height ? stp_halftone_pattern_byte(fr->cell, cy, level) : 0;
             fr->cached_style[slot] = style;
-            fr->cached_rows[slot] = rows;
         }
-        rows = fr->cached_rows[slot];
-        for (cy = 0; cy < fr->cell->height; cy++)
-            fr->patterns[cy] = (uint8_t)(rows >> (8 * cy));
+        /* four byte copies (compilers merge them) */
+        fr->patterns[0] = fr->cached_rows[slot][0];
+        fr->patterns[1] = fr->cached_rows[slot][1];
+        fr->patterns[2] = fr->cached_rows[slot][2];
+        fr->patterns[3] = fr->cached_rows[slot][3];
         fr->pattern_style = style;
         return;
     }
@@ -440,6 +441,55 @@ static void span_paint_run(const span_paint *sp, uint32_t a, uint32_t b)
                   sp->smooth ? sp->s0 + (int64_t)(a - sp->x1) * sp->sstep : 0, sp->sstep, sp->t);
 }
 
+/* Q12 depths whose pixel depth is 1..65535 lie in [MIN, END) */
+#define DEPTH_Q12_MIN ((int64_t)1 << 12)
+#define DEPTH_Q12_END ((int64_t)65536 << 12)
+
+/* Pixels x1..x2 of a MONO1 row from a pattern byte: a run within one byte
+ * (most runs of a small polygon) here, longer ones by the fill loop. */
+static inline void fill_run(uint8_t *row, uint32_t x1, uint32_t x2, uint8_t pattern)
+{
+    if ((x1 >> 3) == (x2 >> 3)) {
+        uint8_t mask = (uint8_t)((0xFFu >> (x1 & 7u)) & (0xFFu << (7u - (x2 & 7u))));
+        row[x1 >> 3] = (uint8_t)((row[x1 >> 3] & ~mask) | (pattern & mask));
+        return;
+    }
+    stp_halftone_fill_bits(row, x1, x2, pattern);
+}
+
+/* An opaque span of a direct style (paint_setup) whose depths are all in
+ * 1..65535: di the Q12 depth at x1's centre, dstep per pixel (both fit 32
+ * bits, put_span_z).  Alternately skip the hidden pixels and take a run of
+ * visible ones, writing their depth and the pattern byte of the row. */
+static void put_span_z_direct(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int32_t di, int32_t dstep)
+{
+    uint16_t *z = fr->zbuf + (size_t)(y - fr->y0) * fr->r->width;
+    uint8_t *row = fr->band + (size_t)(y - fr->y0) * fr->stride;
+    uint8_t pattern = fr->patterns[fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height];
+    uint32_t x = x1, run;
+    for (;;) {
+        while ((uint16_t)((uint32_t)di >> 12) <= z[x]) {
+            if (x == x2)
+                return;
+            x++;
+            di += dstep;
+        }
+        run = x;
+        for (;;) {
+            z[x] = (uint16_t)((uint32_t)di >> 12);
+            if (x == x2) {
+                fill_run(row, run, x2, pattern);
+                return;
+            }
+            x++;
+            di += dstep;
+            if ((uint16_t)((uint32_t)di >> 12) <= z[x])
+                break;
+        }
+        fill_run(row, run, x - 1, pattern);
+    }
+}
+
 /* Depth-tested span: runs of pixels that pass are painted whole, so the
  * halftone inner loop stays the same as without a Z buffer.  d: the depth
  * at x1's centre, ddx its change per pixel, both Q12. */
@@ -450,13 +500,17 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
     uint32_t x, run = 0;
     int in_run = 0;
     int64_t d_end = d + ddx * (int64_t)(x2 - x1);
-    const int64_t lo = (int64_t)1 << 12, hi = (int64_t)65536 << 12;
+    const int64_t lo = DEPTH_Q12_MIN, hi = DEPTH_Q12_END;
     span_paint sp;
-    span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t, direct);
     if (d >= lo && d < hi && d_end >= lo && d_end < hi) {
         /* both ends within 1..65535 (so every pixel between): no clamping,
          * and the depth and its step fit 32 bits (|step| <= |d_end - d|) */
         int32_t di = (int32_t)d, dstep = x2 > x1 ? (int32_t)ddx : 0;
+        if (direct) { /* opaque too */
+            put_span_z_direct(fr, y, x1, x2, di, dstep);
+            return;
+        }
+        span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t, direct);
         if (t == 0) {
             /* opaque: alternately skip the hidden pixels and take a run of
              * the visible ones, writing their depth */
@@ -491,6 +545,7 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
             }
         }
     } else {
+        span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t, direct);
         for (x = x1; x <= x2; x++, d += ddx) {
             uint16_t depth = depth_of(d);
             if (depth > z[x]) {
@@ -552,7 +607,20 @@ static int depth_setup(const frame *fr, const stp_instr *v, int n, depth_plane *
     int64_t a = 0, b = 0, c = 0, sd = 0, d_last = depth_q12(fr, v[n - 1].z), d_prev = d_last;
     uint32_t sx = 0, sy = 0; /* n <= 4101 coordinates in [0, 2^19]: < 2^32 */
     int i;
-    for (i = 0; i < n; i++) {
+    if (n == 3) {
+        /* a triangle's Newell sums are its cross product, exactly:
+         * relative coordinates below 2^20 and depths below 2^16 */
+        int64_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z);
+        int32_t x1 = v[1].x - v[0].x, y1 = v[1].y - v[0].y, x2 = v[2].x - v[0].x, y2 = v[2].y - v[0].y;
+        int32_t e1 = (int32_t)((d1 >> 12) - (d0 >> 12)), e2 = (int32_t)((d_last >> 12) - (d0 >> 12));
+        a = stp_smul32(y1, e2) - stp_smul32(e1, y2);
+        b = stp_smul32(e1, x2) - stp_smul32(x1, e2);
+        c = stp_smul32(x1, y2) - stp_smul32(y1, x2);
+        sx = (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x;
+        sy = (uint32_t)v[0].y + (uint32_t)v[1].y + (uint32_t)v[2].y;
+        sd = d0 + d1 + d_last;
+    }
+    for (i = n == 3 ? 3 : 0; i < n; i++) {
         const stp_instr *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
         int64_t d_q = i == n - 1 ? d_last : depth_q12(fr, q->z), dp = d_prev >> 12, dq = d_q >> 12;
         /* coordinates in [0, 2^19], depths in [1, 65535]: 32-bit factors */
@@ -583,13 +651,16 @@ static int depth_setup(const frame *fr, const stp_instr *v, int n, depth_plane *
  * band: made in the polygon's first band (the one holding its top: ymin >=
  * the band's top) and kept in the caller's setup array when there is one,
  * taken from there in the bands after.  Returns 0 for an edge-on polygon
- * (kept as centre x = -1: device coordinates are >= 0). */
+ * (kept as centre x = -1: device coordinates are >= 0).  A triangle makes
+ * its plane at its first span with pixels, so a band may end without it:
+ * kept as centre x = SETUP_NOT_MADE, made by the next band that needs it. */
+#define SETUP_NOT_MADE (-2)
 static int depth_plane_for(const frame *fr, const stp_instr *v, int n, uint32_t ordinal, int32_t ymin,
                            depth_plane *pl)
 {
     stp_polygon_setup *kept = fr->setup && ordinal != UINT32_MAX ? &fr->setup[ordinal] : 0;
     int ok;
-    if (kept && ymin < (int32_t)(fr->y0 << SUB)) {
+    if (kept && ymin < (int32_t)(fr->y0 << SUB) && kept->centre[0] != SETUP_NOT_MADE) {
         if (kept->centre[0] < 0)
             return 0;
         pl->ddx = kept->plane[0];
@@ -610,6 +681,170 @@ static int depth_plane_for(const frame *fr, const stp_instr *v, int n, uint32_t 
     return ok;
 }
 #endif
+
+/* What a polygon's spans need before the first is painted: its shadow
+ * records and its style's pattern bytes.  Returns whether runs go straight
+ * to the band from the pattern bytes (flat, opaque, not shadowed, MONO1
+ * with the style's patterns built). */
+static int paint_setup(frame *fr, uint32_t at, paint style, int smooth, stp_fix t)
+{
+    int direct = !smooth && t == 0;
+#if STP_WITH_SHADOWS
+    if (fr->shadow) {
+        stp_shadow_polygon(fr->r, at, fr->shadow);
+        if (fr->shadow->count > 0)
+            direct = 0;
+    }
+#else
+    (void)at;
+#endif
+    /* pattern bytes are made for MONO1 only (use_style) */
+    if (!fr->mono_fill || (style & STP_COLOUR_FLAG))
+        return 0;
+    if (style != fr->pattern_style)
+        use_style(fr, style);
+    return direct && style == fr->pattern_style;
+}
+
+
+/* A polygon (its header instruction) with a shade per vertex. */
+static int polygon_smooth(const stp_instr *header)
+{
+#if STP_WITH_GOURAUD
+    return header->shade >= 0;
+#else
+    (void)header;
+    return 0;
+#endif
+}
+
+/* A triangle's edge over the rows it crosses, as stp_edge_setup and
+ * stp_edges_row make it: the crossing of row centre yc is
+ * floor((xa 2^16 + (yc - ya) slope) / 2^16) with slope = trunc(2^16 (xb -
+ * xa) / (yb - ya)), stepped by 16 slopes a row; so the triangle path
+ * paints exactly the pixels the general one does. */
+typedef struct tri_edge {
+    int64_t acc, step;
+} tri_edge;
+
+static void tri_edge_start(tri_edge *e, const stp_instr *a, const stp_instr *b, int32_t yc)
+{
+    int64_t slope = stp_slope_q16(b->x - a->x, b->y - a->y);
+    e->acc = (int64_t)a->x * 65536 + (slope >= INT32_MIN && slope <= INT32_MAX
+                                          ? stp_smul32(yc - a->y, (int32_t)slope)
+                                          : (int64_t)(yc - a->y) * slope);
+    e->step = slope * 16;
+}
+
+/* A flat triangle (df[at], vertices v) in the current band: the general
+ * path's fill rule and depths, set up for what the triangle needs.  Its
+ * vertices sorted by y (top, mid, bottom), each row centre is crossed by
+ * the long edge top-bottom and by top-mid above mid, mid-bottom from mid
+ * down; the two crossings bound the row's span.  Nothing is set up before
+ * the first span with pixels: a small triangle often covers no pixel
+ * centre. */
+static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint style, int use_z, stp_fix t,
+                          uint32_t ordinal)
+{
+    const stp_instr *top = &v[0], *mid = &v[1], *bot = &v[2], *swap;
+    int32_t r_first, r_last, r_mid, row, yc;
+    int ready = 0, direct = 0;
+    tri_edge lng, sht;
+#if STP_WITH_ZBUFFER
+    depth_plane pl = {0, 0, 0, 0, 0};
+    int64_t d_row = 0;
+#endif
+    if (mid->y < top->y) {
+        swap = top;
+        top = mid;
+        mid = swap;
+    }
+    if (bot->y < mid->y) {
+        swap = mid;
+        mid = bot;
+        bot = swap;
+        if (mid->y < top->y) {
+            swap = top;
+            top = mid;
+            mid = swap;
+        }
+    }
+    if (bot->y <= (int32_t)(fr->y0 << SUB) || top->y >= (int32_t)((fr->y0 + fr->rows) << SUB))
+        return; /* not in the band */
+#if STP_WITH_ZBUFFER
+    if (use_z && fr->setup && ordinal != UINT32_MAX && top->y >= (int32_t)(fr->y0 << SUB))
+        fr->setup[ordinal].centre[0] = SETUP_NOT_MADE; /* its first band: made at the first span */
+#else
+    (void)use_z;
+    (void)ordinal;
+#endif
+    /* rows whose centre 16 r + 8 lies in [top, bottom), in the band */
+    r_first = stp_floor16(top->y + HALF_PIXEL - 1);
+    r_last = stp_floor16(bot->y + HALF_PIXEL - 1) - 1;
+    r_mid = stp_floor16(mid->y + HALF_PIXEL - 1); /* the first row below mid's y */
+    if (r_first < (int32_t)fr->y0)
+        r_first = (int32_t)fr->y0;
+    if (r_last > (int32_t)(fr->y0 + fr->rows) - 1)
+        r_last = (int32_t)(fr->y0 + fr->rows) - 1;
+    if (r_first > r_last)
+        return;
+    yc = r_first * (1 << SUB) + HALF_PIXEL;
+    tri_edge_start(&lng, top, bot, yc);
+    if (r_first < r_mid)
+        tri_edge_start(&sht, top, mid, yc);
+    else
+        tri_edge_start(&sht, mid, bot, yc);
+    for (row = r_first;; row++) {
+        int32_t xl = (int32_t)stp_asr64(lng.acc, 16), xr = (int32_t)stp_asr64(sht.acc, 16);
+        uint32_t p1, p2;
+        if (xl > xr) {
+            int32_t x = xl;
+            xl = xr;
+            xr = x;
+        }
+        if (stp_span_pixels(xl, xr, fr->r->width, &p1, &p2)) {
+            if (!ready) {
+#if STP_WITH_ZBUFFER
+                if (use_z) {
+                    if (!depth_plane_for(fr, v, 3, ordinal, top->y, &pl))
+                        return; /* edge-on: no area on screen */
+                    /* the depth at device x = 0 of this row's centre */
+                    d_row = pl.dc - pl.ddx * pl.xc + pl.ddy * ((int64_t)yc - pl.yc);
+                }
+#endif
+                direct = paint_setup(fr, at, style, 0, t);
+                ready = 1;
+            }
+#if STP_WITH_ZBUFFER
+            if (use_z) {
+                int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
+                int64_t d = d_row + (pl.ddx >= INT32_MIN && pl.ddx <= INT32_MAX ? stp_smul32((int32_t)pl.ddx, xq)
+                                                                                : pl.ddx * xq);
+                int64_t ddx = pl.ddx * (1 << SUB), d_end = d + ddx * (int64_t)(p2 - p1);
+                if (direct && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
+                    d_end < DEPTH_Q12_END) /* as put_span_z would, without its call */
+                    put_span_z_direct(fr, (uint32_t)row, p1, p2, (int32_t)d, p2 > p1 ? (int32_t)ddx : 0);
+                else
+                    put_span_z(fr, (uint32_t)row, p1, p2, style, d, ddx, 0, 0, 0, t, direct);
+            } else
+#endif
+            {
+                paint_run(fr, (uint32_t)row, p1, p2, style, 0, 0, 0, t);
+            }
+        }
+        if (row == r_last)
+            return;
+        yc += 1 << SUB;
+        lng.acc += lng.step;
+        if (row + 1 == r_mid)
+            tri_edge_start(&sht, mid, bot, yc);
+        else
+            sht.acc += sht.step;
+#if STP_WITH_ZBUFFER
+        d_row += pl.ddy * (1 << SUB);
+#endif
+    }
+}
 
 /* Scan-convert the polygon whose header is df[at] into the current band;
  * ordinal: its place among the visible polygons in display order
@@ -632,6 +867,10 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
     depth_plane pl = {0, 0, 0, 0, 0};
     int64_t d_row = 0;
 #endif
+    if (n == 3 && !smooth) {
+        draw_triangle(fr, at, v, style, use_z, t, ordinal); /* the painter's order comes here */
+        return;
+    }
     for (i = 0; i < n; i++) {
         if (v[i].y < ymin)
             ymin = v[i].y;
@@ -647,19 +886,7 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
     (void)use_z;
     (void)ordinal;
 #endif
-#if STP_WITH_SHADOWS
-    if (fr->shadow)
-        stp_shadow_polygon(r, at, fr->shadow);
-#endif
-    if (fr->port->format == STP_PIXEL_MONO1 && !(style & STP_COLOUR_FLAG))
-        use_style(fr, style);
-    /* runs go straight to the band from the pattern bytes: flat, opaque,
-     * not shadowed, the style's patterns built */
-    direct = fr->port->format == STP_PIXEL_MONO1 && style == fr->pattern_style && !smooth && t == 0;
-#if STP_WITH_SHADOWS
-    if (fr->shadow && fr->shadow->count > 0)
-        direct = 0;
-#endif
+    direct = paint_setup(fr, at, style, smooth, t);
     (void)direct; /* read by the Z buffer's spans only */
     /* edges oriented top to bottom, horizontal ones dropped */
     for (i = 0; i < n; i++) {
@@ -773,7 +1000,11 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
         for (k = seg->start; k < seg->end; k++) {
             const stp_instr *in = &r->df[k];
             if (in->op >= 3) {
-                if (!skip_polygons && (pass == 0 || (pass == 1) == (t == 0)))
+                if (skip_polygons || !(pass == 0 || (pass == 1) == (t == 0)))
+                    ;
+                else if (in->op == 3 && !polygon_smooth(in))
+                    draw_triangle(fr, k, in, style, use_z, t, ordinal);
+                else
                     draw_polygon(fr, k, style, use_z, t, ordinal);
                 ordinal++;
                 k += (uint32_t)in->op - 1;
