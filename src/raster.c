@@ -461,11 +461,9 @@ static inline void fill_run(uint8_t *row, uint32_t x1, uint32_t x2, uint8_t patt
  * 1..65535: di the Q12 depth at x1's centre, dstep per pixel (both fit 32
  * bits, put_span_z).  Alternately skip the hidden pixels and take a run of
  * visible ones, writing their depth and the pattern byte of the row. */
-static void put_span_z_direct(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int32_t di, int32_t dstep)
+static inline void span_z_direct(uint16_t *z, uint8_t *row, uint8_t pattern, uint32_t x1, uint32_t x2, int32_t di,
+                                 int32_t dstep)
 {
-    uint16_t *z = fr->zbuf + (size_t)(y - fr->y0) * fr->r->width;
-    uint8_t *row = fr->band + (size_t)(y - fr->y0) * fr->stride;
-    uint8_t pattern = fr->patterns[fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height];
     uint32_t x = x1, run;
     for (;;) {
         while ((uint16_t)((uint32_t)di >> 12) <= z[x]) {
@@ -488,6 +486,27 @@ static void put_span_z_direct(const frame *fr, uint32_t y, uint32_t x1, uint32_t
         }
         fill_run(row, run, x - 1, pattern);
     }
+}
+
+/* The band row y's Z entries, pixels and pattern byte. */
+static uint16_t *z_row(const frame *fr, uint32_t y)
+{
+    return fr->zbuf + (size_t)(y - fr->y0) * fr->r->width;
+}
+
+static uint8_t *band_row(const frame *fr, uint32_t y)
+{
+    return fr->band + (size_t)(y - fr->y0) * fr->stride;
+}
+
+static uint8_t pattern_of_row(const frame *fr, uint32_t y)
+{
+    return fr->patterns[fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height];
+}
+
+static void put_span_z_direct(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int32_t di, int32_t dstep)
+{
+    span_z_direct(z_row(fr, y), band_row(fr, y), pattern_of_row(fr, y), x1, x2, di, dstep);
 }
 
 /* Depth-tested span: runs of pixels that pass are painted whole, so the
@@ -823,7 +842,8 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
                 int64_t ddx = pl.ddx * (1 << SUB), d_end = d + ddx * (int64_t)(p2 - p1);
                 if (direct && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
                     d_end < DEPTH_Q12_END) /* as put_span_z would, without its call */
-                    put_span_z_direct(fr, (uint32_t)row, p1, p2, (int32_t)d, p2 > p1 ? (int32_t)ddx : 0);
+                    span_z_direct(z_row(fr, (uint32_t)row), band_row(fr, (uint32_t)row), pattern_of_row(fr, (uint32_t)row),
+                                  p1, p2, (int32_t)d, p2 > p1 ? (int32_t)ddx : 0);
                 else
                     put_span_z(fr, (uint32_t)row, p1, p2, style, d, ddx, 0, 0, 0, t, direct);
             } else
@@ -1073,9 +1093,9 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
     stp_renderer *r = fr->r;
     uint32_t count = 0, k;
     int s, i;
+    /* locals, not fr's fields: a store through fr may alias the display file */
     int32_t x_lo = INT32_MAX, x_hi = INT32_MIN, y_lo = INT32_MAX, y_hi = INT32_MIN;
-    fr->key_min = INT32_MAX;
-    fr->key_max = INT32_MIN;
+    int32_t key_min = INT32_MAX, key_max = INT32_MIN;
     fr->second_pass = 0;
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
@@ -1094,21 +1114,14 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
             if (in->op >= 3) {
                 int32_t far_key = INT32_MAX;
                 for (i = 0; i < in->op; i++) {
-                    int32_t z = in[i].z;
-                    if (z < far_key)
-                        far_key = z;
-                    if (z < fr->key_min)
-                        fr->key_min = z;
-                    if (z > fr->key_max)
-                        fr->key_max = z;
-                    if (in[i].x < x_lo)
-                        x_lo = in[i].x;
-                    if (in[i].x > x_hi)
-                        x_hi = in[i].x;
-                    if (in[i].y < y_lo)
-                        y_lo = in[i].y;
-                    if (in[i].y > y_hi)
-                        y_hi = in[i].y;
+                    int32_t z = in[i].z, x = in[i].x, y = in[i].y;
+                    far_key = z < far_key ? z : far_key;
+                    key_min = z < key_min ? z : key_min;
+                    key_max = z > key_max ? z : key_max;
+                    x_lo = x < x_lo ? x : x_lo;
+                    x_hi = x > x_hi ? x : x_hi;
+                    y_lo = y < y_lo ? y : y_lo;
+                    y_hi = y > y_hi ? y : y_hi;
                 }
                 if (t > 0)
                     fr->second_pass = 1;
@@ -1123,6 +1136,8 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
             }
         }
     }
+    fr->key_min = key_min;
+    fr->key_max = key_max;
     /* a pixel a polygon covers has its centre within the polygon's
      * vertices' extent (coordinates are >= 0: project() clamps them) */
     fr->x_min = fr->y_min = 1;
