@@ -8,6 +8,35 @@
 #define SUB STP_SUBPIXEL_BITS
 #define HALF_PIXEL (1 << (SUB - 1))
 
+#if STP_SLOPE_RECIP > 0
+/* floor(2^32 / d) + 1 for d = 2..127 (raster_private.h, stp_slope_q16);
+ * entries 0 and 1 unused */
+const uint32_t stp_slope_recip[STP_SLOPE_RECIP] = {
+    0x00000000u, 0x00000000u, 0x80000001u, 0x55555556u, 0x40000001u, 0x33333334u,
+    0x2AAAAAABu, 0x24924925u, 0x20000001u, 0x1C71C71Du, 0x1999999Au, 0x1745D175u,
+    0x15555556u, 0x13B13B14u, 0x12492493u, 0x11111112u, 0x10000001u, 0x0F0F0F10u,
+    0x0E38E38Fu, 0x0D79435Fu, 0x0CCCCCCDu, 0x0C30C30Du, 0x0BA2E8BBu, 0x0B21642Du,
+    0x0AAAAAABu, 0x0A3D70A4u, 0x09D89D8Au, 0x097B425Fu, 0x0924924Au, 0x08D3DCB1u,
+    0x08888889u, 0x08421085u, 0x08000001u, 0x07C1F07Du, 0x07878788u, 0x07507508u,
+    0x071C71C8u, 0x06EB3E46u, 0x06BCA1B0u, 0x06906907u, 0x06666667u, 0x063E7064u,
+    0x06186187u, 0x05F417D1u, 0x05D1745Eu, 0x05B05B06u, 0x0590B217u, 0x0572620Bu,
+    0x05555556u, 0x0539782Au, 0x051EB852u, 0x05050506u, 0x04EC4EC5u, 0x04D4873Fu,
+    0x04BDA130u, 0x04A7904Bu, 0x04924925u, 0x047DC120u, 0x0469EE59u, 0x0456C798u,
+    0x04444445u, 0x04325C54u, 0x04210843u, 0x04104105u, 0x04000001u, 0x03F03F04u,
+    0x03E0F83Fu, 0x03D22636u, 0x03C3C3C4u, 0x03B5CC0Fu, 0x03A83A84u, 0x039B0AD2u,
+    0x038E38E4u, 0x0381C0E1u, 0x03759F23u, 0x0369D037u, 0x035E50D8u, 0x03531DEDu,
+    0x03483484u, 0x033D91D3u, 0x03333334u, 0x03291620u, 0x031F3832u, 0x03159722u,
+    0x030C30C4u, 0x03030304u, 0x02FA0BE9u, 0x02F14991u, 0x02E8BA2Fu, 0x02E05C0Cu,
+    0x02D82D83u, 0x02D02D03u, 0x02C8590Cu, 0x02C0B02Du, 0x02B93106u, 0x02B1DA47u,
+    0x02AAAAABu, 0x02A3A0FEu, 0x029CBC15u, 0x0295FAD5u, 0x028F5C29u, 0x0288DF0Du,
+    0x02828283u, 0x027C4598u, 0x02762763u, 0x02702703u, 0x026A43A0u, 0x02647C6Au,
+    0x025ED098u, 0x02593F6Au, 0x0253C826u, 0x024E6A18u, 0x02492493u, 0x0243F6F1u,
+    0x023EE090u, 0x0239E0D6u, 0x0234F72Du, 0x02302303u, 0x022B63CCu, 0x0226B903u,
+    0x02222223u, 0x021D9EAEu, 0x02192E2Au, 0x0214D022u, 0x02108422u, 0x020C49BBu,
+    0x02082083u, 0x02040811u
+};
+#endif
+
 #if STP_WITH_ZBUFFER
 /* num / den truncated toward zero (C's division), den != 0.  Without wide
  * arithmetic: when |den| < 2^16 and |num| < 2^48, as three 32-bit
@@ -28,6 +57,15 @@ static int64_t div_trunc(int64_t num, int64_t den)
     }
 #endif
     return STP_DIV64(num, den);
+}
+
+/* a b for |a b| < 2^63: a 32 x 32-bit product while a fits (ARMv6-M: no
+ * 64 x 64-bit library call) */
+static int64_t mul_wide(int64_t a, int32_t b)
+{
+    if (!STP_WIDE_ARITH && a >= INT32_MIN && a <= INT32_MAX)
+        return stp_smul32((int32_t)a, b);
+    return a * b;
 }
 
 /* floor(s / n) for n >= 1: n = 3 and 4 without a division */
@@ -52,6 +90,14 @@ size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
     }
 }
 
+/* Where depth_q12 is three 32 x 32-bit products from 16-bit halves
+ * (32-bit targets without wide arithmetic) it keeps its last results. */
+#if STP_SLOPE_RECIP > 0
+#define KEY_CACHE 16
+#else
+#define KEY_CACHE 0
+#endif
+
 /* Everything one frame's interpretation needs, built once per stp_renderer_render. */
 /* A style as the interpreter carries it: an index (0..levels) or, with
  * STP_COLOUR_FLAG, a colour; 32 bits wide because the flag is bit 24. */
@@ -74,6 +120,11 @@ typedef struct frame {
     stp_polygon_setup *setup; /* the caller's per-polygon depth setups, or NULL */
     uint32_t depth_scale;     /* depth_q12's reciprocal and its shift */
     int depth_shift;
+#if KEY_CACHE > 0
+    /* depth_q12's recent results, slot by the key's low bits: a mesh's
+     * vertex comes again in the next triangles; q12 0: empty */
+    int32_t cached_key[KEY_CACHE], cached_q12[KEY_CACHE];
+#endif
     /* pixels any visible polygon can cover (x_min > x_max: none) */
     uint32_t x_min, x_max, y_min, y_max;
     /* MONO1 spans from pattern bytes: a threshold cell whose width divides
@@ -590,13 +641,28 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
  * depth_scale = floor(65534 2^12 2^s / range) < 2^29 with 2^s >= range
  * (s = depth_shift), so u depth_scale / 2^s is less than one short of the
  * quotient and one correction makes it exact. */
-static int64_t depth_q12(const frame *fr, int32_t key)
+static int64_t depth_q12(frame *fr, int32_t key)
 {
     const uint32_t k = (uint32_t)65534 << 12;
     uint32_t range = (uint32_t)((int64_t)fr->key_max - fr->key_min), u;
     uint64_t num, q;
     if (fr->key_max <= fr->key_min)
         return (int64_t)65535 << 12;
+#if KEY_CACHE > 0
+    {
+        uint32_t slot = ((uint32_t)key ^ ((uint32_t)key >> 8)) & (KEY_CACHE - 1);
+        if (fr->cached_q12[slot] != 0 && fr->cached_key[slot] == key)
+            return fr->cached_q12[slot];
+        u = (uint32_t)((int64_t)key - fr->key_min); /* 0..range */
+        num = stp_umul32(u, k);
+        q = stp_umul32(u, fr->depth_scale) >> fr->depth_shift;
+        if (stp_umul32((uint32_t)q + 1u, range) <= num)
+            q++;
+        fr->cached_key[slot] = key;
+        fr->cached_q12[slot] = (int32_t)q + (1 << 12); /* < 2^28 + 2^12 */
+        return fr->cached_q12[slot];
+    }
+#else
     u = (uint32_t)((int64_t)key - fr->key_min); /* 0..range */
     num = stp_umul32(u, k);
 #if STP_WIDE_ARITH
@@ -607,6 +673,7 @@ static int64_t depth_q12(const frame *fr, int32_t key)
         q++;
 #endif
     return ((int64_t)1 << 12) + (int64_t)q;
+#endif
 }
 
 /* The polygon's depth plane, by Newell's sums on (x, y, depth) over its
@@ -619,7 +686,7 @@ typedef struct depth_plane {
     int32_t xc, yc;
 } depth_plane;
 
-static int depth_setup(const frame *fr, const stp_instr *v, int n, depth_plane *pl)
+static int depth_setup(frame *fr, const stp_instr *v, int n, depth_plane *pl)
 {
     pl->ddx = pl->ddy = pl->dc = 0;
     pl->xc = pl->yc = 0;
@@ -674,7 +741,7 @@ static int depth_setup(const frame *fr, const stp_instr *v, int n, depth_plane *
  * its plane at its first span with pixels, so a band may end without it:
  * kept as centre x = SETUP_NOT_MADE, made by the next band that needs it. */
 #define SETUP_NOT_MADE (-2)
-static int depth_plane_for(const frame *fr, const stp_instr *v, int n, uint32_t ordinal, int32_t ymin,
+static int depth_plane_for(frame *fr, const stp_instr *v, int n, uint32_t ordinal, int32_t ymin,
                            depth_plane *pl)
 {
     stp_polygon_setup *kept = fr->setup && ordinal != UINT32_MAX ? &fr->setup[ordinal] : 0;
@@ -828,7 +895,7 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
                     if (!depth_plane_for(fr, v, 3, ordinal, top->y, &pl))
                         return; /* edge-on: no area on screen */
                     /* the depth at device x = 0 of this row's centre */
-                    d_row = pl.dc - pl.ddx * pl.xc + pl.ddy * ((int64_t)yc - pl.yc);
+                    d_row = pl.dc - mul_wide(pl.ddx, pl.xc) + mul_wide(pl.ddy, yc - pl.yc);
                 }
 #endif
                 direct = paint_setup(fr, at, style, 0, t);
@@ -837,9 +904,8 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
 #if STP_WITH_ZBUFFER
             if (use_z) {
                 int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
-                int64_t d = d_row + (pl.ddx >= INT32_MIN && pl.ddx <= INT32_MAX ? stp_smul32((int32_t)pl.ddx, xq)
-                                                                                : pl.ddx * xq);
-                int64_t ddx = pl.ddx * (1 << SUB), d_end = d + ddx * (int64_t)(p2 - p1);
+                int64_t d = d_row + mul_wide(pl.ddx, xq);
+                int64_t ddx = pl.ddx * (1 << SUB), d_end = d + mul_wide(ddx, (int32_t)(p2 - p1));
                 if (direct && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
                     d_end < DEPTH_Q12_END) /* as put_span_z would, without its call */
                     span_z_direct(z_row(fr, (uint32_t)row), band_row(fr, (uint32_t)row), pattern_of_row(fr, (uint32_t)row),
@@ -1265,6 +1331,10 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
             fr.depth_shift++;
         fr.depth_scale = (uint32_t)STP_DIV64(((uint64_t)65534 << 12) << fr.depth_shift, range);
     }
+#if KEY_CACHE > 0
+    for (y0 = 0; y0 < KEY_CACHE; y0++)
+        fr.cached_q12[y0] = 0;
+#endif
     fr.mono_fill = port->format == STP_PIXEL_MONO1 && fr.cell->kind == STP_CELL_THRESHOLD &&
                    fr.cell->width > 0 && 8u % fr.cell->width == 0 && fr.cell->height > 0 &&
                    fr.cell->height <= STP_CELL_MAX; /* patterns[] holds a row each */

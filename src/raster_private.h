@@ -45,6 +45,17 @@ static inline int64_t stp_smul32(int32_t a, int32_t b)
 }
 
 
+/* Reciprocals for slopes of short edges where a 32-bit division is a
+ * library call (32-bit targets without wide arithmetic; AVR keeps the
+ * division): stp_slope_recip[d] = floor(2^32 / d) + 1 for 2 <= d < 128
+ * (raster.c). */
+#if !STP_WIDE_ARITH && UINTPTR_MAX == 0xFFFFFFFFu
+#define STP_SLOPE_RECIP 128
+extern const uint32_t stp_slope_recip[STP_SLOPE_RECIP];
+#else
+#define STP_SLOPE_RECIP 0
+#endif
+
 /* floor(v / 16) for -2^27 <= v < 2^31 - 2^27 (Q4 coordinates and their
  * half-pixel offsets): a shift of the offset value, no division */
 static inline int32_t stp_floor16(int32_t v)
@@ -58,6 +69,16 @@ static inline int32_t stp_floor16(int32_t v)
  * ~470-instruction 64-bit one). */
 static inline int64_t stp_slope_q16(int32_t num, int32_t den)
 {
+#if STP_SLOPE_RECIP > 0
+    /* n = |num| 2^16 and m = stp_slope_recip[den]: n m / 2^32 exceeds
+     * n / den by less than n / 2^32, below 1 / den while |num| den < 2^16,
+     * so its floor is the quotient */
+    uint32_t un = num < 0 ? 0u - (uint32_t)num : (uint32_t)num;
+    if (den >= 2 && den < STP_SLOPE_RECIP && un * (uint32_t)den < 65536u) {
+        uint32_t q = (uint32_t)(stp_umul32(un << 16, stp_slope_recip[den]) >> 32);
+        return num < 0 ? -(int64_t)q : (int64_t)q;
+    }
+#endif
     if (num > -32768 && num < 32768)
         return (int32_t)(num * 65536) / den;
     return STP_DIV64((int64_t)num * 65536, den);
