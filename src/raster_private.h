@@ -28,8 +28,20 @@ static inline uint64_t stp_umul32(uint32_t a, uint32_t b)
     return (uint64_t)a * b;
 #else
     uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
-    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    uint32_t ll, lh, hl, hh, mid;
+    if ((ah | bh) == 0)
+        return a * b; /* below 2^32 */
+    if (ah == 0 || bh == 0) {
+        /* one factor below 2^16: two partial products, s 2^16 + l */
+        uint32_t small = ah == 0 ? a : b, big = ah == 0 ? b : a, l = (big & 0xFFFFu) * small,
+                 s = (big >> 16) * small, low = l + (s << 16);
+        return ((uint64_t)((s >> 16) + (low < l ? 1u : 0u)) << 32) | low;
+    }
+    ll = al * bl;
+    lh = al * bh;
+    hl = ah * bl;
+    hh = ah * bh;
+    mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
     return ((uint64_t)(hh + (lh >> 16) + (hl >> 16) + (mid >> 16)) << 32) | ((mid << 16) | (ll & 0xFFFFu));
 #endif
 }
@@ -70,12 +82,13 @@ static inline int32_t stp_floor16(int32_t v)
 static inline int64_t stp_slope_q16(int32_t num, int32_t den)
 {
 #if STP_SLOPE_RECIP > 0
-    /* n = |num| 2^16 and m = stp_slope_recip[den]: n m / 2^32 exceeds
+    /* n = |num| 2^16 and m = stp_slope_recip[den]: n m / 2^32 (= |num| m
+     * / 2^16) exceeds
      * n / den by less than n / 2^32, below 1 / den while |num| den < 2^16,
      * so its floor is the quotient */
     uint32_t un = num < 0 ? 0u - (uint32_t)num : (uint32_t)num;
     if (den >= 2 && den < STP_SLOPE_RECIP && un * (uint32_t)den < 65536u) {
-        uint32_t q = (uint32_t)(stp_umul32(un << 16, stp_slope_recip[den]) >> 32);
+        uint32_t q = (uint32_t)(stp_umul32(un, stp_slope_recip[den]) >> 16); /* un < 2^15 */
         return num < 0 ? -(int64_t)q : (int64_t)q;
     }
 #endif
