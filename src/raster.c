@@ -837,8 +837,10 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
     int ready = 0, direct = 0;
     tri_edge lng, sht;
 #if STP_WITH_ZBUFFER
-    depth_plane pl = {0, 0, 0, 0, 0};
+    depth_plane pl; /* field by field: ARMv6-M's GCC clears a whole struct by memset */
     int64_t d_row = 0;
+    pl.ddx = pl.ddy = pl.dc = 0;
+    pl.xc = pl.yc = 0;
 #endif
     if (mid->y < top->y) {
         swap = top;
