@@ -8,10 +8,10 @@
 #define SUB STP_SUBPIXEL_BITS
 #define HALF_PIXEL (1 << (SUB - 1))
 
-#if STP_SLOPE_RECIP > 0
+#if UINTPTR_MAX > 0xFFFFu
 /* floor(2^32 / d) + 1 for d = 2..127 (raster_private.h, stp_slope_q16);
  * entries 0 and 1 unused */
-const uint32_t stp_slope_recip[STP_SLOPE_RECIP] = {
+const uint32_t stp_slope_recip[STP_SLOPE_RECIP_SIZE] = {
     0x00000000u, 0x00000000u, 0x80000001u, 0x55555556u, 0x40000001u, 0x33333334u,
     0x2AAAAAABu, 0x24924925u, 0x20000001u, 0x1C71C71Du, 0x1999999Au, 0x1745D175u,
     0x15555556u, 0x13B13B14u, 0x12492493u, 0x11111112u, 0x10000001u, 0x0F0F0F10u,
@@ -92,7 +92,7 @@ size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
 
 /* Where depth_q12 is three 32 x 32-bit products from 16-bit halves
  * (32-bit targets without wide arithmetic) it keeps its last results. */
-#if STP_SLOPE_RECIP > 0
+#if !STP_WIDE_ARITH && UINTPTR_MAX > 0xFFFFu
 #define KEY_CACHE 16
 #else
 #define KEY_CACHE 0

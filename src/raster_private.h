@@ -15,10 +15,12 @@
  * division is a ~470-instruction libgcc call on ARMv6-M, a 64-bit product
  * a ~50-instruction one) it takes 32 x 32 -> 64-bit products from 16-bit
  * halves and divides through 32-bit quotients, with the same results. */
+#ifndef STP_WIDE_ARITH /* a test defines it 0 to check the narrow arithmetic on the host */
 #if defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
 #define STP_WIDE_ARITH 1
 #else
 #define STP_WIDE_ARITH 0
+#endif
 #endif
 
 /* a b, exactly, for 32-bit a and b */
@@ -58,12 +60,15 @@ static inline int64_t stp_smul32(int32_t a, int32_t b)
 
 
 /* Reciprocals for slopes of short edges where a 32-bit division is a
- * library call (32-bit targets without wide arithmetic; AVR keeps the
- * division): stp_slope_recip[d] = floor(2^32 / d) + 1 for 2 <= d < 128
- * (raster.c). */
-#if !STP_WIDE_ARITH && UINTPTR_MAX == 0xFFFFFFFFu
-#define STP_SLOPE_RECIP 128
-extern const uint32_t stp_slope_recip[STP_SLOPE_RECIP];
+ * library call (without wide arithmetic; AVR, with 16-bit pointers, keeps
+ * the division and its flash): stp_slope_recip[d] = floor(2^32 / d) + 1
+ * for 2 <= d < 128 (raster.c; made wherever pointers exceed 16 bits). */
+#define STP_SLOPE_RECIP_SIZE 128
+#if UINTPTR_MAX > 0xFFFFu
+extern const uint32_t stp_slope_recip[STP_SLOPE_RECIP_SIZE];
+#endif
+#if !STP_WIDE_ARITH && UINTPTR_MAX > 0xFFFFu
+#define STP_SLOPE_RECIP STP_SLOPE_RECIP_SIZE
 #else
 #define STP_SLOPE_RECIP 0
 #endif
