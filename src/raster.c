@@ -507,7 +507,6 @@ static inline void fill_run(uint8_t *row, uint32_t x1, uint32_t x2, uint8_t patt
     }
     stp_halftone_fill_bits(row, x1, x2, pattern);
 }
-
 /* An opaque span of a direct style (paint_setup) whose depths are all in
  * 1..65535: di the Q12 depth at x1's centre, dstep per pixel (both fit 32
  * bits, put_span_z).  Alternately skip the hidden pixels and take a run of
@@ -515,27 +514,30 @@ static inline void fill_run(uint8_t *row, uint32_t x1, uint32_t x2, uint8_t patt
 static inline void span_z_direct(uint16_t *z, uint8_t *row, uint8_t pattern, uint32_t x1, uint32_t x2, int32_t di,
                                  int32_t dstep)
 {
-    uint32_t x = x1, run;
+    /* every pixel's depth (uint32_t)di >> 12 is 1..65535 here: no clamp,
+     * and compared with the entry as it is */
+    uint16_t *zp = z + x1, *const zlast = z + x2;
     for (;;) {
-        while ((uint16_t)((uint32_t)di >> 12) <= z[x]) {
-            if (x == x2)
+        uint32_t run;
+        while ((uint32_t)di >> 12 <= *zp) {
+            if (zp == zlast)
                 return;
-            x++;
+            zp++;
             di += dstep;
         }
-        run = x;
+        run = (uint32_t)(zp - z);
         for (;;) {
-            z[x] = (uint16_t)((uint32_t)di >> 12);
-            if (x == x2) {
+            *zp = (uint16_t)((uint32_t)di >> 12);
+            if (zp == zlast) {
                 fill_run(row, run, x2, pattern);
                 return;
             }
-            x++;
+            zp++;
             di += dstep;
-            if ((uint16_t)((uint32_t)di >> 12) <= z[x])
+            if ((uint32_t)di >> 12 <= *zp)
                 break;
         }
-        fill_run(row, run, x - 1, pattern);
+        fill_run(row, run, (uint32_t)(zp - z) - 1u, pattern);
     }
 }
 
