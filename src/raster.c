@@ -786,8 +786,9 @@ static int paint_setup(frame *fr, uint32_t at, paint style, int smooth, stp_fix 
 #else
     (void)at;
 #endif
-    /* pattern bytes are made for MONO1 only (use_style) */
-    if (!fr->mono_fill || (style & STP_COLOUR_FLAG))
+    /* pattern bytes are made for MONO1 only (use_style); a MONO1 port
+     * under error diffusion is drawn as GREY8 */
+    if (fr->port->format != STP_PIXEL_MONO1 || !fr->mono_fill || (style & STP_COLOUR_FLAG))
         return 0;
     if (style != fr->pattern_style)
         use_style(fr, style);
@@ -903,6 +904,7 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
                 }
 #endif
                 direct = paint_setup(fr, at, style, 0, t);
+                (void)direct; /* read by the Z buffer's spans only */
                 ready = 1;
             }
 #if STP_WITH_ZBUFFER
