@@ -220,9 +220,15 @@ uint8_t stp_halftone_pattern_byte(const stp_cell *cell, uint32_t y, uint8_t inte
 {
     /* the cell's width divides 8: the row's w thresholds give the first w
      * bits, which repeat across the byte */
-    uint32_t w = cell->width, b, s;
-    const uint8_t *cell_row = &stp_cell_table(cell)[(y % cell->height) * w];
+    uint32_t w = cell->width, h = cell->height, b, s;
+    /* a mask rather than a division for the usual power-of-two heights */
+    const uint8_t *cell_row = &stp_cell_table(cell)[((h & (h - 1u)) == 0 ? y & (h - 1u) : y % h) * w];
     uint32_t pattern = 0;
+    if (w == 4) { /* Bayer 4x4 and the other 4-wide cells: no loop, no branch */
+        pattern = (uint32_t)(intensity > cell_row[0]) << 7 | (uint32_t)(intensity > cell_row[1]) << 6 |
+                  (uint32_t)(intensity > cell_row[2]) << 5 | (uint32_t)(intensity > cell_row[3]) << 4;
+        return (uint8_t)(pattern | pattern >> 4);
+    }
     for (b = 0; b < w; b++)
         if (intensity > cell_row[b])
             pattern |= 0x80u >> b;
@@ -252,7 +258,7 @@ void stp_halftone_fillin(uint8_t *row, uint32_t x1, uint32_t x2, uint32_t y,
 {
     uint32_t w = cell->width, hx, x;
     const uint8_t *cell_row;
-    if (cell->kind != STP_CELL_PATTERN && 8u % w == 0) {
+    if (cell->kind != STP_CELL_PATTERN && (w & (w - 1u)) == 0 && w <= 8u) { /* w divides 8, no division */
         /* The cell's width divides 8, so every byte of the row sees the same
          * cell columns at the same bits: one pattern byte fills the span. */
         stp_halftone_fill_bits(row, x1, x2, stp_halftone_pattern_byte(cell, y, intensity));

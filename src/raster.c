@@ -8,6 +8,35 @@
 #define SUB STP_SUBPIXEL_BITS
 #define HALF_PIXEL (1 << (SUB - 1))
 
+#if UINTPTR_MAX > 0xFFFFu
+/* floor(2^32 / d) + 1 for d = 2..127 (raster_private.h, stp_slope_q16);
+ * entries 0 and 1 unused */
+const uint32_t stp_slope_recip[STP_SLOPE_RECIP_SIZE] = {
+    0x00000000u, 0x00000000u, 0x80000001u, 0x55555556u, 0x40000001u, 0x33333334u,
+    0x2AAAAAABu, 0x24924925u, 0x20000001u, 0x1C71C71Du, 0x1999999Au, 0x1745D175u,
+    0x15555556u, 0x13B13B14u, 0x12492493u, 0x11111112u, 0x10000001u, 0x0F0F0F10u,
+    0x0E38E38Fu, 0x0D79435Fu, 0x0CCCCCCDu, 0x0C30C30Du, 0x0BA2E8BBu, 0x0B21642Du,
+    0x0AAAAAABu, 0x0A3D70A4u, 0x09D89D8Au, 0x097B425Fu, 0x0924924Au, 0x08D3DCB1u,
+    0x08888889u, 0x08421085u, 0x08000001u, 0x07C1F07Du, 0x07878788u, 0x07507508u,
+    0x071C71C8u, 0x06EB3E46u, 0x06BCA1B0u, 0x06906907u, 0x06666667u, 0x063E7064u,
+    0x06186187u, 0x05F417D1u, 0x05D1745Eu, 0x05B05B06u, 0x0590B217u, 0x0572620Bu,
+    0x05555556u, 0x0539782Au, 0x051EB852u, 0x05050506u, 0x04EC4EC5u, 0x04D4873Fu,
+    0x04BDA130u, 0x04A7904Bu, 0x04924925u, 0x047DC120u, 0x0469EE59u, 0x0456C798u,
+    0x04444445u, 0x04325C54u, 0x04210843u, 0x04104105u, 0x04000001u, 0x03F03F04u,
+    0x03E0F83Fu, 0x03D22636u, 0x03C3C3C4u, 0x03B5CC0Fu, 0x03A83A84u, 0x039B0AD2u,
+    0x038E38E4u, 0x0381C0E1u, 0x03759F23u, 0x0369D037u, 0x035E50D8u, 0x03531DEDu,
+    0x03483484u, 0x033D91D3u, 0x03333334u, 0x03291620u, 0x031F3832u, 0x03159722u,
+    0x030C30C4u, 0x03030304u, 0x02FA0BE9u, 0x02F14991u, 0x02E8BA2Fu, 0x02E05C0Cu,
+    0x02D82D83u, 0x02D02D03u, 0x02C8590Cu, 0x02C0B02Du, 0x02B93106u, 0x02B1DA47u,
+    0x02AAAAABu, 0x02A3A0FEu, 0x029CBC15u, 0x0295FAD5u, 0x028F5C29u, 0x0288DF0Du,
+    0x02828283u, 0x027C4598u, 0x02762763u, 0x02702703u, 0x026A43A0u, 0x02647C6Au,
+    0x025ED098u, 0x02593F6Au, 0x0253C826u, 0x024E6A18u, 0x02492493u, 0x0243F6F1u,
+    0x023EE090u, 0x0239E0D6u, 0x0234F72Du, 0x02302303u, 0x022B63CCu, 0x0226B903u,
+    0x02222223u, 0x021D9EAEu, 0x02192E2Au, 0x0214D022u, 0x02108422u, 0x020C49BBu,
+    0x02082083u, 0x02040811u
+};
+#endif
+
 #if STP_WITH_ZBUFFER
 /* num / den truncated toward zero (C's division), den != 0.  Without wide
  * arithmetic: when |den| < 2^16 and |num| < 2^48, as three 32-bit
@@ -28,6 +57,15 @@ static int64_t div_trunc(int64_t num, int64_t den)
     }
 #endif
     return STP_DIV64(num, den);
+}
+
+/* a b for |a b| < 2^63: a 32 x 32-bit product while a fits (ARMv6-M: no
+ * 64 x 64-bit library call) */
+static int64_t mul_wide(int64_t a, int32_t b)
+{
+    if (!STP_WIDE_ARITH && a >= INT32_MIN && a <= INT32_MAX)
+        return stp_smul32((int32_t)a, b);
+    return a * b;
 }
 
 /* floor(s / n) for n >= 1: n = 3 and 4 without a division */
@@ -52,6 +90,14 @@ size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
     }
 }
 
+/* Where depth_q12 is three 32 x 32-bit products from 16-bit halves
+ * (32-bit targets without wide arithmetic) it keeps its last results. */
+#if !STP_WIDE_ARITH && UINTPTR_MAX > 0xFFFFu
+#define KEY_CACHE 16
+#else
+#define KEY_CACHE 0
+#endif
+
 /* Everything one frame's interpretation needs, built once per stp_renderer_render. */
 /* A style as the interpreter carries it: an index (0..levels) or, with
  * STP_COLOUR_FLAG, a colour; 32 bits wide because the flag is bit 24. */
@@ -74,6 +120,11 @@ typedef struct frame {
     stp_polygon_setup *setup; /* the caller's per-polygon depth setups, or NULL */
     uint32_t depth_scale;     /* depth_q12's reciprocal and its shift */
     int depth_shift;
+#if KEY_CACHE > 0
+    /* depth_q12's recent results, slot by the key's low bits: a mesh's
+     * vertex comes again in the next triangles; q12 0: empty */
+    int32_t cached_key[KEY_CACHE], cached_q12[KEY_CACHE];
+#endif
     /* pixels any visible polygon can cover (x_min > x_max: none) */
     uint32_t x_min, x_max, y_min, y_max;
     /* MONO1 spans from pattern bytes: a threshold cell whose width divides
@@ -89,7 +140,7 @@ typedef struct frame {
      * style mod STP_PATTERN_CACHE: a depth-ordered frame alternates styles
      * polygon by polygon; -1: empty */
     paint cached_style[STP_PATTERN_CACHE];
-    uint32_t cached_rows[STP_PATTERN_CACHE]; /* row cy in bits 8cy..8cy+7 */
+    uint8_t cached_rows[STP_PATTERN_CACHE][4]; /* the byte of each cell row */
 #endif
 #if STP_WITH_SHADOWS
     stp_shadow_poly *shadow; /* the polygon being drawn's shadow records;
@@ -123,17 +174,18 @@ static void use_style(frame *fr, paint style)
         return;
 #if STP_PATTERN_CACHE > 0
     if (fr->cell->height <= 4) {
-        uint32_t slot = (uint32_t)style & (STP_PATTERN_CACHE - 1), rows = 0;
+        uint32_t slot = (uint32_t)style & (STP_PATTERN_CACHE - 1);
         if (fr->cached_style[slot] != style) {
             level = level_of(fr, style);
-            for (cy = 0; cy < fr->cell->height; cy++)
-                rows |= (uint32_t)stp_halftone_pattern_byte(fr->cell, cy, level) << (8 * cy);
+            for (cy = 0; cy < 4; cy++)
+                fr->cached_rows[slot][cy] = cy < fr->cell->height ? stp_halftone_pattern_byte(fr->cell, cy, level) : 0;
             fr->cached_style[slot] = style;
-            fr->cached_rows[slot] = rows;
         }
-        rows = fr->cached_rows[slot];
-        for (cy = 0; cy < fr->cell->height; cy++)
-            fr->patterns[cy] = (uint8_t)(rows >> (8 * cy));
+        /* four byte copies (compilers merge them) */
+        fr->patterns[0] = fr->cached_rows[slot][0];
+        fr->patterns[1] = fr->cached_rows[slot][1];
+        fr->patterns[2] = fr->cached_rows[slot][2];
+        fr->patterns[3] = fr->cached_rows[slot][3];
         fr->pattern_style = style;
         return;
     }
@@ -440,6 +492,76 @@ static void span_paint_run(const span_paint *sp, uint32_t a, uint32_t b)
                   sp->smooth ? sp->s0 + (int64_t)(a - sp->x1) * sp->sstep : 0, sp->sstep, sp->t);
 }
 
+/* Q12 depths whose pixel depth is 1..65535 lie in [MIN, END) */
+#define DEPTH_Q12_MIN ((int64_t)1 << 12)
+#define DEPTH_Q12_END ((int64_t)65536 << 12)
+
+/* Pixels x1..x2 of a MONO1 row from a pattern byte: a run within one byte
+ * (most runs of a small polygon) here, longer ones by the fill loop. */
+static inline void fill_run(uint8_t *row, uint32_t x1, uint32_t x2, uint8_t pattern)
+{
+    if ((x1 >> 3) == (x2 >> 3)) {
+        uint8_t mask = (uint8_t)((0xFFu >> (x1 & 7u)) & (0xFFu << (7u - (x2 & 7u))));
+        row[x1 >> 3] = (uint8_t)((row[x1 >> 3] & ~mask) | (pattern & mask));
+        return;
+    }
+    stp_halftone_fill_bits(row, x1, x2, pattern);
+}
+/* An opaque span of a direct style (paint_setup) whose depths are all in
+ * 1..65535: di the Q12 depth at x1's centre, dstep per pixel (both fit 32
+ * bits, put_span_z).  Alternately skip the hidden pixels and take a run of
+ * visible ones, writing their depth and the pattern byte of the row. */
+static inline void span_z_direct(uint16_t *z, uint8_t *row, uint8_t pattern, uint32_t x1, uint32_t x2, int32_t di,
+                                 int32_t dstep)
+{
+    /* every pixel's depth (uint32_t)di >> 12 is 1..65535 here: no clamp,
+     * and compared with the entry as it is */
+    uint16_t *zp = z + x1, *const zlast = z + x2;
+    for (;;) {
+        uint32_t run;
+        while ((uint32_t)di >> 12 <= *zp) {
+            if (zp == zlast)
+                return;
+            zp++;
+            di += dstep;
+        }
+        run = (uint32_t)(zp - z);
+        for (;;) {
+            *zp = (uint16_t)((uint32_t)di >> 12);
+            if (zp == zlast) {
+                fill_run(row, run, x2, pattern);
+                return;
+            }
+            zp++;
+            di += dstep;
+            if ((uint32_t)di >> 12 <= *zp)
+                break;
+        }
+        fill_run(row, run, (uint32_t)(zp - z) - 1u, pattern);
+    }
+}
+
+/* The band row y's Z entries, pixels and pattern byte. */
+static uint16_t *z_row(const frame *fr, uint32_t y)
+{
+    return fr->zbuf + (size_t)(y - fr->y0) * fr->r->width;
+}
+
+static uint8_t *band_row(const frame *fr, uint32_t y)
+{
+    return fr->band + (size_t)(y - fr->y0) * fr->stride;
+}
+
+static uint8_t pattern_of_row(const frame *fr, uint32_t y)
+{
+    return fr->patterns[fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height];
+}
+
+static void put_span_z_direct(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int32_t di, int32_t dstep)
+{
+    span_z_direct(z_row(fr, y), band_row(fr, y), pattern_of_row(fr, y), x1, x2, di, dstep);
+}
+
 /* Depth-tested span: runs of pixels that pass are painted whole, so the
  * halftone inner loop stays the same as without a Z buffer.  d: the depth
  * at x1's centre, ddx its change per pixel, both Q12. */
@@ -450,13 +572,17 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
     uint32_t x, run = 0;
     int in_run = 0;
     int64_t d_end = d + ddx * (int64_t)(x2 - x1);
-    const int64_t lo = (int64_t)1 << 12, hi = (int64_t)65536 << 12;
+    const int64_t lo = DEPTH_Q12_MIN, hi = DEPTH_Q12_END;
     span_paint sp;
-    span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t, direct);
     if (d >= lo && d < hi && d_end >= lo && d_end < hi) {
         /* both ends within 1..65535 (so every pixel between): no clamping,
          * and the depth and its step fit 32 bits (|step| <= |d_end - d|) */
         int32_t di = (int32_t)d, dstep = x2 > x1 ? (int32_t)ddx : 0;
+        if (direct) { /* opaque too */
+            put_span_z_direct(fr, y, x1, x2, di, dstep);
+            return;
+        }
+        span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t, direct);
         if (t == 0) {
             /* opaque: alternately skip the hidden pixels and take a run of
              * the visible ones, writing their depth */
@@ -491,6 +617,7 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
             }
         }
     } else {
+        span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t, direct);
         for (x = x1; x <= x2; x++, d += ddx) {
             uint16_t depth = depth_of(d);
             if (depth > z[x]) {
@@ -516,13 +643,28 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
  * depth_scale = floor(65534 2^12 2^s / range) < 2^29 with 2^s >= range
  * (s = depth_shift), so u depth_scale / 2^s is less than one short of the
  * quotient and one correction makes it exact. */
-static int64_t depth_q12(const frame *fr, int32_t key)
+static int64_t depth_q12(frame *fr, int32_t key)
 {
     const uint32_t k = (uint32_t)65534 << 12;
     uint32_t range = (uint32_t)((int64_t)fr->key_max - fr->key_min), u;
     uint64_t num, q;
     if (fr->key_max <= fr->key_min)
         return (int64_t)65535 << 12;
+#if KEY_CACHE > 0
+    {
+        uint32_t slot = ((uint32_t)key ^ ((uint32_t)key >> 8)) & (KEY_CACHE - 1);
+        if (fr->cached_q12[slot] != 0 && fr->cached_key[slot] == key)
+            return fr->cached_q12[slot];
+        u = (uint32_t)((int64_t)key - fr->key_min); /* 0..range */
+        num = stp_umul32(u, k);
+        q = stp_umul32(u, fr->depth_scale) >> fr->depth_shift;
+        if (stp_umul32((uint32_t)q + 1u, range) <= num)
+            q++;
+        fr->cached_key[slot] = key;
+        fr->cached_q12[slot] = (int32_t)q + (1 << 12); /* < 2^28 + 2^12 */
+        return fr->cached_q12[slot];
+    }
+#else
     u = (uint32_t)((int64_t)key - fr->key_min); /* 0..range */
     num = stp_umul32(u, k);
 #if STP_WIDE_ARITH
@@ -533,6 +675,7 @@ static int64_t depth_q12(const frame *fr, int32_t key)
         q++;
 #endif
     return ((int64_t)1 << 12) + (int64_t)q;
+#endif
 }
 
 /* The polygon's depth plane, by Newell's sums on (x, y, depth) over its
@@ -545,14 +688,27 @@ typedef struct depth_plane {
     int32_t xc, yc;
 } depth_plane;
 
-static int depth_setup(const frame *fr, const stp_instr *v, int n, depth_plane *pl)
+static int depth_setup(frame *fr, const stp_instr *v, int n, depth_plane *pl)
 {
     pl->ddx = pl->ddy = pl->dc = 0;
     pl->xc = pl->yc = 0;
     int64_t a = 0, b = 0, c = 0, sd = 0, d_last = depth_q12(fr, v[n - 1].z), d_prev = d_last;
     uint32_t sx = 0, sy = 0; /* n <= 4101 coordinates in [0, 2^19]: < 2^32 */
     int i;
-    for (i = 0; i < n; i++) {
+    if (n == 3) {
+        /* a triangle's Newell sums are its cross product, exactly:
+         * relative coordinates below 2^20 and depths below 2^16 */
+        int64_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z);
+        int32_t x1 = v[1].x - v[0].x, y1 = v[1].y - v[0].y, x2 = v[2].x - v[0].x, y2 = v[2].y - v[0].y;
+        int32_t e1 = (int32_t)((d1 >> 12) - (d0 >> 12)), e2 = (int32_t)((d_last >> 12) - (d0 >> 12));
+        a = stp_smul32(y1, e2) - stp_smul32(e1, y2);
+        b = stp_smul32(e1, x2) - stp_smul32(x1, e2);
+        c = stp_smul32(x1, y2) - stp_smul32(y1, x2);
+        sx = (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x;
+        sy = (uint32_t)v[0].y + (uint32_t)v[1].y + (uint32_t)v[2].y;
+        sd = d0 + d1 + d_last;
+    }
+    for (i = n == 3 ? 3 : 0; i < n; i++) {
         const stp_instr *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
         int64_t d_q = i == n - 1 ? d_last : depth_q12(fr, q->z), dp = d_prev >> 12, dq = d_q >> 12;
         /* coordinates in [0, 2^19], depths in [1, 65535]: 32-bit factors */
@@ -583,13 +739,16 @@ static int depth_setup(const frame *fr, const stp_instr *v, int n, depth_plane *
  * band: made in the polygon's first band (the one holding its top: ymin >=
  * the band's top) and kept in the caller's setup array when there is one,
  * taken from there in the bands after.  Returns 0 for an edge-on polygon
- * (kept as centre x = -1: device coordinates are >= 0). */
-static int depth_plane_for(const frame *fr, const stp_instr *v, int n, uint32_t ordinal, int32_t ymin,
+ * (kept as centre x = -1: device coordinates are >= 0).  A triangle makes
+ * its plane at its first span with pixels, so a band may end without it:
+ * kept as centre x = SETUP_NOT_MADE, made by the next band that needs it. */
+#define SETUP_NOT_MADE (-2)
+static int depth_plane_for(frame *fr, const stp_instr *v, int n, uint32_t ordinal, int32_t ymin,
                            depth_plane *pl)
 {
     stp_polygon_setup *kept = fr->setup && ordinal != UINT32_MAX ? &fr->setup[ordinal] : 0;
     int ok;
-    if (kept && ymin < (int32_t)(fr->y0 << SUB)) {
+    if (kept && ymin < (int32_t)(fr->y0 << SUB) && kept->centre[0] != SETUP_NOT_MADE) {
         if (kept->centre[0] < 0)
             return 0;
         pl->ddx = kept->plane[0];
@@ -610,6 +769,174 @@ static int depth_plane_for(const frame *fr, const stp_instr *v, int n, uint32_t 
     return ok;
 }
 #endif
+
+/* What a polygon's spans need before the first is painted: its shadow
+ * records and its style's pattern bytes.  Returns whether runs go straight
+ * to the band from the pattern bytes (flat, opaque, not shadowed, MONO1
+ * with the style's patterns built). */
+static int paint_setup(frame *fr, uint32_t at, paint style, int smooth, stp_fix t)
+{
+    int direct = !smooth && t == 0;
+#if STP_WITH_SHADOWS
+    if (fr->shadow) {
+        stp_shadow_polygon(fr->r, at, fr->shadow);
+        if (fr->shadow->count > 0)
+            direct = 0;
+    }
+#else
+    (void)at;
+#endif
+    /* pattern bytes are made for MONO1 only (use_style); a MONO1 port
+     * under error diffusion is drawn as GREY8 */
+    if (fr->port->format != STP_PIXEL_MONO1 || !fr->mono_fill || (style & STP_COLOUR_FLAG))
+        return 0;
+    if (style != fr->pattern_style)
+        use_style(fr, style);
+    return direct && style == fr->pattern_style;
+}
+
+
+/* A polygon (its header instruction) with a shade per vertex. */
+static int polygon_smooth(const stp_instr *header)
+{
+#if STP_WITH_GOURAUD
+    return header->shade >= 0;
+#else
+    (void)header;
+    return 0;
+#endif
+}
+
+/* A triangle's edge over the rows it crosses, as stp_edge_setup and
+ * stp_edges_row make it: the crossing of row centre yc is
+ * floor((xa 2^16 + (yc - ya) slope) / 2^16) with slope = trunc(2^16 (xb -
+ * xa) / (yb - ya)), stepped by 16 slopes a row; so the triangle path
+ * paints exactly the pixels the general one does. */
+typedef struct tri_edge {
+    int64_t acc, step;
+} tri_edge;
+
+static void tri_edge_start(tri_edge *e, const stp_instr *a, const stp_instr *b, int32_t yc)
+{
+    int64_t slope = stp_slope_q16(b->x - a->x, b->y - a->y);
+    e->acc = (int64_t)a->x * 65536 + (slope >= INT32_MIN && slope <= INT32_MAX
+                                          ? stp_smul32(yc - a->y, (int32_t)slope)
+                                          : (int64_t)(yc - a->y) * slope);
+    e->step = slope * 16;
+}
+
+/* A flat triangle (df[at], vertices v) in the current band: the general
+ * path's fill rule and depths, set up for what the triangle needs.  Its
+ * vertices sorted by y (top, mid, bottom), each row centre is crossed by
+ * the long edge top-bottom and by top-mid above mid, mid-bottom from mid
+ * down; the two crossings bound the row's span.  Nothing is set up before
+ * the first span with pixels: a small triangle often covers no pixel
+ * centre. */
+static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint style, int use_z, stp_fix t,
+                          uint32_t ordinal)
+{
+    const stp_instr *top = &v[0], *mid = &v[1], *bot = &v[2], *swap;
+    int32_t r_first, r_last, r_mid, row, yc;
+    int ready = 0, direct = 0;
+    tri_edge lng, sht;
+#if STP_WITH_ZBUFFER
+    depth_plane pl; /* field by field: ARMv6-M's GCC clears a whole struct by memset */
+    int64_t d_row = 0;
+    pl.ddx = pl.ddy = pl.dc = 0;
+    pl.xc = pl.yc = 0;
+#endif
+    if (mid->y < top->y) {
+        swap = top;
+        top = mid;
+        mid = swap;
+    }
+    if (bot->y < mid->y) {
+        swap = mid;
+        mid = bot;
+        bot = swap;
+        if (mid->y < top->y) {
+            swap = top;
+            top = mid;
+            mid = swap;
+        }
+    }
+    if (bot->y <= (int32_t)(fr->y0 << SUB) || top->y >= (int32_t)((fr->y0 + fr->rows) << SUB))
+        return; /* not in the band */
+#if STP_WITH_ZBUFFER
+    if (use_z && fr->setup && ordinal != UINT32_MAX && top->y >= (int32_t)(fr->y0 << SUB))
+        fr->setup[ordinal].centre[0] = SETUP_NOT_MADE; /* its first band: made at the first span */
+#else
+    (void)use_z;
+    (void)ordinal;
+#endif
+    /* rows whose centre 16 r + 8 lies in [top, bottom), in the band */
+    r_first = stp_floor16(top->y + HALF_PIXEL - 1);
+    r_last = stp_floor16(bot->y + HALF_PIXEL - 1) - 1;
+    r_mid = stp_floor16(mid->y + HALF_PIXEL - 1); /* the first row below mid's y */
+    if (r_first < (int32_t)fr->y0)
+        r_first = (int32_t)fr->y0;
+    if (r_last > (int32_t)(fr->y0 + fr->rows) - 1)
+        r_last = (int32_t)(fr->y0 + fr->rows) - 1;
+    if (r_first > r_last)
+        return;
+    yc = r_first * (1 << SUB) + HALF_PIXEL;
+    tri_edge_start(&lng, top, bot, yc);
+    if (r_first < r_mid)
+        tri_edge_start(&sht, top, mid, yc);
+    else
+        tri_edge_start(&sht, mid, bot, yc);
+    for (row = r_first;; row++) {
+        int32_t xl = (int32_t)stp_asr64(lng.acc, 16), xr = (int32_t)stp_asr64(sht.acc, 16);
+        uint32_t p1, p2;
+        if (xl > xr) {
+            int32_t x = xl;
+            xl = xr;
+            xr = x;
+        }
+        if (stp_span_pixels(xl, xr, fr->r->width, &p1, &p2)) {
+            if (!ready) {
+#if STP_WITH_ZBUFFER
+                if (use_z) {
+                    if (!depth_plane_for(fr, v, 3, ordinal, top->y, &pl))
+                        return; /* edge-on: no area on screen */
+                    /* the depth at device x = 0 of this row's centre */
+                    d_row = pl.dc - mul_wide(pl.ddx, pl.xc) + mul_wide(pl.ddy, yc - pl.yc);
+                }
+#endif
+                direct = paint_setup(fr, at, style, 0, t);
+                (void)direct; /* read by the Z buffer's spans only */
+                ready = 1;
+            }
+#if STP_WITH_ZBUFFER
+            if (use_z) {
+                int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
+                int64_t d = d_row + mul_wide(pl.ddx, xq);
+                int64_t ddx = pl.ddx * (1 << SUB), d_end = d + mul_wide(ddx, (int32_t)(p2 - p1));
+                if (direct && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
+                    d_end < DEPTH_Q12_END) /* as put_span_z would, without its call */
+                    span_z_direct(z_row(fr, (uint32_t)row), band_row(fr, (uint32_t)row), pattern_of_row(fr, (uint32_t)row),
+                                  p1, p2, (int32_t)d, p2 > p1 ? (int32_t)ddx : 0);
+                else
+                    put_span_z(fr, (uint32_t)row, p1, p2, style, d, ddx, 0, 0, 0, t, direct);
+            } else
+#endif
+            {
+                paint_run(fr, (uint32_t)row, p1, p2, style, 0, 0, 0, t);
+            }
+        }
+        if (row == r_last)
+            return;
+        yc += 1 << SUB;
+        lng.acc += lng.step;
+        if (row + 1 == r_mid)
+            tri_edge_start(&sht, mid, bot, yc);
+        else
+            sht.acc += sht.step;
+#if STP_WITH_ZBUFFER
+        d_row += pl.ddy * (1 << SUB);
+#endif
+    }
+}
 
 /* Scan-convert the polygon whose header is df[at] into the current band;
  * ordinal: its place among the visible polygons in display order
@@ -632,6 +959,10 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
     depth_plane pl = {0, 0, 0, 0, 0};
     int64_t d_row = 0;
 #endif
+    if (n == 3 && !smooth) {
+        draw_triangle(fr, at, v, style, use_z, t, ordinal); /* the painter's order comes here */
+        return;
+    }
     for (i = 0; i < n; i++) {
         if (v[i].y < ymin)
             ymin = v[i].y;
@@ -647,19 +978,7 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
     (void)use_z;
     (void)ordinal;
 #endif
-#if STP_WITH_SHADOWS
-    if (fr->shadow)
-        stp_shadow_polygon(r, at, fr->shadow);
-#endif
-    if (fr->port->format == STP_PIXEL_MONO1 && !(style & STP_COLOUR_FLAG))
-        use_style(fr, style);
-    /* runs go straight to the band from the pattern bytes: flat, opaque,
-     * not shadowed, the style's patterns built */
-    direct = fr->port->format == STP_PIXEL_MONO1 && style == fr->pattern_style && !smooth && t == 0;
-#if STP_WITH_SHADOWS
-    if (fr->shadow && fr->shadow->count > 0)
-        direct = 0;
-#endif
+    direct = paint_setup(fr, at, style, smooth, t);
     (void)direct; /* read by the Z buffer's spans only */
     /* edges oriented top to bottom, horizontal ones dropped */
     for (i = 0; i < n; i++) {
@@ -773,7 +1092,11 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
         for (k = seg->start; k < seg->end; k++) {
             const stp_instr *in = &r->df[k];
             if (in->op >= 3) {
-                if (!skip_polygons && (pass == 0 || (pass == 1) == (t == 0)))
+                if (skip_polygons || !(pass == 0 || (pass == 1) == (t == 0)))
+                    ;
+                else if (in->op == 3 && !polygon_smooth(in))
+                    draw_triangle(fr, k, in, style, use_z, t, ordinal);
+                else
                     draw_polygon(fr, k, style, use_z, t, ordinal);
                 ordinal++;
                 k += (uint32_t)in->op - 1;
@@ -842,9 +1165,9 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
     stp_renderer *r = fr->r;
     uint32_t count = 0, k;
     int s, i;
+    /* locals, not fr's fields: a store through fr may alias the display file */
     int32_t x_lo = INT32_MAX, x_hi = INT32_MIN, y_lo = INT32_MAX, y_hi = INT32_MIN;
-    fr->key_min = INT32_MAX;
-    fr->key_max = INT32_MIN;
+    int32_t key_min = INT32_MAX, key_max = INT32_MIN;
     fr->second_pass = 0;
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
@@ -863,21 +1186,14 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
             if (in->op >= 3) {
                 int32_t far_key = INT32_MAX;
                 for (i = 0; i < in->op; i++) {
-                    int32_t z = in[i].z;
-                    if (z < far_key)
-                        far_key = z;
-                    if (z < fr->key_min)
-                        fr->key_min = z;
-                    if (z > fr->key_max)
-                        fr->key_max = z;
-                    if (in[i].x < x_lo)
-                        x_lo = in[i].x;
-                    if (in[i].x > x_hi)
-                        x_hi = in[i].x;
-                    if (in[i].y < y_lo)
-                        y_lo = in[i].y;
-                    if (in[i].y > y_hi)
-                        y_hi = in[i].y;
+                    int32_t z = in[i].z, x = in[i].x, y = in[i].y;
+                    far_key = z < far_key ? z : far_key;
+                    key_min = z < key_min ? z : key_min;
+                    key_max = z > key_max ? z : key_max;
+                    x_lo = x < x_lo ? x : x_lo;
+                    x_hi = x > x_hi ? x : x_hi;
+                    y_lo = y < y_lo ? y : y_lo;
+                    y_hi = y > y_hi ? y : y_hi;
                 }
                 if (t > 0)
                     fr->second_pass = 1;
@@ -892,6 +1208,8 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
             }
         }
     }
+    fr->key_min = key_min;
+    fr->key_max = key_max;
     /* a pixel a polygon covers has its centre within the polygon's
      * vertices' extent (coordinates are >= 0: project() clamps them) */
     fr->x_min = fr->y_min = 1;
@@ -1019,6 +1337,10 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
             fr.depth_shift++;
         fr.depth_scale = (uint32_t)STP_DIV64(((uint64_t)65534 << 12) << fr.depth_shift, range);
     }
+#if KEY_CACHE > 0
+    for (y0 = 0; y0 < KEY_CACHE; y0++)
+        fr.cached_q12[y0] = 0;
+#endif
     fr.mono_fill = port->format == STP_PIXEL_MONO1 && fr.cell->kind == STP_CELL_THRESHOLD &&
                    fr.cell->width > 0 && 8u % fr.cell->width == 0 && fr.cell->height > 0 &&
                    fr.cell->height <= STP_CELL_MAX; /* patterns[] holds a row each */

@@ -15,10 +15,12 @@
  * division is a ~470-instruction libgcc call on ARMv6-M, a 64-bit product
  * a ~50-instruction one) it takes 32 x 32 -> 64-bit products from 16-bit
  * halves and divides through 32-bit quotients, with the same results. */
+#ifndef STP_WIDE_ARITH /* a test defines it 0 to check the narrow arithmetic on the host */
 #if defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
 #define STP_WIDE_ARITH 1
 #else
 #define STP_WIDE_ARITH 0
+#endif
 #endif
 
 /* a b, exactly, for 32-bit a and b */
@@ -28,8 +30,20 @@ static inline uint64_t stp_umul32(uint32_t a, uint32_t b)
     return (uint64_t)a * b;
 #else
     uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
-    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    uint32_t ll, lh, hl, hh, mid;
+    if ((ah | bh) == 0)
+        return a * b; /* below 2^32 */
+    if (ah == 0 || bh == 0) {
+        /* one factor below 2^16: two partial products, s 2^16 + l */
+        uint32_t small = ah == 0 ? a : b, big = ah == 0 ? b : a, l = (big & 0xFFFFu) * small,
+                 s = (big >> 16) * small, low = l + (s << 16);
+        return ((uint64_t)((s >> 16) + (low < l ? 1u : 0u)) << 32) | low;
+    }
+    ll = al * bl;
+    lh = al * bh;
+    hl = ah * bl;
+    hh = ah * bh;
+    mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
     return ((uint64_t)(hh + (lh >> 16) + (hl >> 16) + (mid >> 16)) << 32) | ((mid << 16) | (ll & 0xFFFFu));
 #endif
 }
@@ -45,6 +59,20 @@ static inline int64_t stp_smul32(int32_t a, int32_t b)
 }
 
 
+/* Reciprocals for slopes of short edges where a 32-bit division is a
+ * library call (without wide arithmetic; AVR, with 16-bit pointers, keeps
+ * the division and its flash): stp_slope_recip[d] = floor(2^32 / d) + 1
+ * for 2 <= d < 128 (raster.c; made wherever pointers exceed 16 bits). */
+#define STP_SLOPE_RECIP_SIZE 128
+#if UINTPTR_MAX > 0xFFFFu
+extern const uint32_t stp_slope_recip[STP_SLOPE_RECIP_SIZE];
+#endif
+#if !STP_WIDE_ARITH && UINTPTR_MAX > 0xFFFFu
+#define STP_SLOPE_RECIP STP_SLOPE_RECIP_SIZE
+#else
+#define STP_SLOPE_RECIP 0
+#endif
+
 /* floor(v / 16) for -2^27 <= v < 2^31 - 2^27 (Q4 coordinates and their
  * half-pixel offsets): a shift of the offset value, no division */
 static inline int32_t stp_floor16(int32_t v)
@@ -58,6 +86,17 @@ static inline int32_t stp_floor16(int32_t v)
  * ~470-instruction 64-bit one). */
 static inline int64_t stp_slope_q16(int32_t num, int32_t den)
 {
+#if STP_SLOPE_RECIP > 0
+    /* n = |num| 2^16 and m = stp_slope_recip[den]: n m / 2^32 (= |num| m
+     * / 2^16) exceeds
+     * n / den by less than n / 2^32, below 1 / den while |num| den < 2^16,
+     * so its floor is the quotient */
+    uint32_t un = num < 0 ? 0u - (uint32_t)num : (uint32_t)num;
+    if (den >= 2 && den < STP_SLOPE_RECIP && un * (uint32_t)den < 65536u) {
+        uint32_t q = (uint32_t)(stp_umul32(un, stp_slope_recip[den]) >> 16); /* un < 2^15 */
+        return num < 0 ? -(int64_t)q : (int64_t)q;
+    }
+#endif
     if (num > -32768 && num < 32768)
         return (int32_t)(num * 65536) / den;
     return STP_DIV64((int64_t)num * 65536, den);

@@ -966,6 +966,92 @@ static void test_bands_give_the_same_frame(void **state)
     fixture_close(&f);
 }
 
+/* Flat triangles take their own path through the raster (src/raster.c,
+ * draw_triangle); the same triangle entered with a repeated vertex is a
+ * quadrilateral, which takes the general path.  Both must paint the same
+ * pixels: random triangles in 1/16-pixel steps (some on pixel centres and
+ * edges, some beyond the frame, some needle-thin), with and without the Z
+ * buffer, whole frame and 3-row bands. */
+static int entered_vertices(const fixture *f)
+{
+    uint32_t k;
+    for (k = 0; k < 16; k++)
+        if (f->df[k].op >= 3)
+            return f->df[k].op;
+    return 0;
+}
+
+/* *entered: the vertices entered (the clipper may add some) */
+static uint8_t *render_one(const dpt *p, int n, stp_hidden hidden, uint32_t band_rows, int *entered)
+{
+    fixture f;
+    render_opts o = opts(STP_PIXEL_STYLE8, hidden);
+    uint8_t *frame;
+    int status;
+    fixture_open(&f, 40, 30, 64);
+    assert_int_equal(poly(&f, p, n, 0, 7), STP_OK);
+    *entered = entered_vertices(&f);
+    o.band_rows = band_rows;
+    frame = render(&f, &o, &status);
+    assert_int_equal(status, STP_OK);
+    fixture_close(&f);
+    return frame;
+}
+
+static void test_triangle_path_matches_general_path(void **state)
+{
+    uint32_t seed = 12345u;
+    int k, drawn = 0, compared = 0;
+    (void)state;
+    for (k = 0; k < 400; k++) {
+        dpt tri[3], quad[4];
+        int i, h;
+        for (i = 0; i < 3; i++) {
+            seed = seed * 1103515245u + 12345u;
+            /* k % 4: anywhere in 1/16 steps, on half pixels (centres and
+             * edges; every other one with a horizontal edge), a needle (x
+             * nearly equal), partly outside */
+            if (k % 4 == 1) {
+                tri[i].x = (double)((seed >> 8) % 80) / 2.0;
+                tri[i].y = (double)((seed >> 20) % 60) / 2.0;
+            } else {
+                tri[i].x = (double)((seed >> 4) % 640) / 16.0;
+                tri[i].y = (double)((seed >> 16) % 480) / 16.0;
+            }
+            if (k % 4 == 2)
+                tri[i].x = 20.0 + (double)((seed >> 4) % 9) / 16.0;
+            if (k % 4 == 3) {
+                tri[i].x = tri[i].x * 1.5 - 10.0;
+                tri[i].y = tri[i].y * 1.5 - 7.0;
+            }
+        }
+        if (k % 8 == 1)
+            tri[1].y = tri[0].y; /* a horizontal edge, top or bottom, often on row centres */
+        for (i = 0; i < 3; i++)
+            quad[i] = tri[i];
+        quad[3] = tri[2];
+        for (h = 0; h < 2; h++) {
+            stp_hidden hidden = h ? STP_HIDDEN_ZBUFFER : STP_HIDDEN_NONE;
+            int na, nb, nc;
+            uint8_t *a = render_one(tri, 3, hidden, 30, &na), *b = render_one(quad, 4, hidden, 30, &nb),
+                    *c = render_one(tri, 3, hidden, 3, &nc);
+            size_t px;
+            /* unclipped: the triangle path against the general one */
+            compared += na == 3 && nb == 4;
+            if (memcmp(a, b, 40 * 30) != 0 || memcmp(a, c, 40 * 30) != 0)
+                fail_msg("triangle %d (%g,%g) (%g,%g) (%g,%g), hidden %d: the triangle path differs", k,
+                         tri[0].x, tri[0].y, tri[1].x, tri[1].y, tri[2].x, tri[2].y, (int)hidden);
+            for (px = 0; px < 40 * 30; px++)
+                drawn += a[px] == 7;
+            free(a);
+            free(b);
+            free(c);
+        }
+    }
+    assert_true(compared >= 400); /* most triangles lie inside the view */
+    assert_true(drawn > 10000);   /* and painted pixels */
+}
+
 /* A setup array shorter than the polygon count is refused, not overrun. */
 static void test_short_setup_array_is_refused(void **state)
 {
@@ -1527,6 +1613,7 @@ int main(void)
         cmocka_unit_test(test_backface_removal_before_transform_matches_double),
         cmocka_unit_test(test_backface_removal_out_of_range_is_refused),
         cmocka_unit_test(test_bands_give_the_same_frame),
+        cmocka_unit_test(test_triangle_path_matches_general_path),
         cmocka_unit_test(test_short_setup_array_is_refused),
         cmocka_unit_test(test_mono1_row_padding_is_zero),
         cmocka_unit_test(test_display_file_full_leaves_it_unchanged),
