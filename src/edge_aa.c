@@ -1,0 +1,271 @@
+/* SPDX-License-Identifier: MIT */
+/* Coverage-weighted shade on polygon edge pixels: see edge_aa_private.h.
+ *
+ * Fixed-point formats here:
+ *   coverage  Q0.8 in 0..256 (256: the whole pixel)
+ *   x         crossings and pixel centres in Q27.4 device units (< 2^20)
+ *   w         1 + |slope| in pixels, Q8: 256..2^23 + 256
+ *   shade     stp_fix in [0, 1]; a blend's difference times a coverage is
+ *             below 2^(FRAC_BITS + 1 + 8) <= 2^29: 32 bits. */
+#include "edge_aa_private.h"
+#include "output_private.h"
+#include "raster_private.h"
+
+#if STP_WITH_EDGE_AA
+
+#define COVER_ONE 256
+#define COVER_HALF 128
+
+/* Coverage of a pixel whose centre lies h >= 0 Q4 units outside an edge
+ * of L1 normal length w (Q8): 1/2 - h / (16 w / 256), rounded, clamped at
+ * 0.  The product h 2^12 is formed only for h < w / 32 + 1 < 2^18 + 9 (so
+ * below 2^31); farther pixels are uncovered. */
+static int32_t outside(int32_t h, int32_t w)
+{
+    int32_t q;
+    if (h >= (w >> 5) + 1)
+        return 0;
+    q = (int32_t)((h * 4096 + (w >> 1)) / w);
+    return q >= COVER_HALF ? 0 : COVER_HALF - q;
+}
+
+/* Coverage by the half-plane of an edge whose centre distance inside is
+ * h >= 0: 1/2 + h / w, capped at the whole pixel. */
+static int32_t inside(int32_t h, int32_t w)
+{
+    int32_t q;
+    if (h >= (w >> 5) + 1)
+        return COVER_ONE;
+    q = (int32_t)((h * 4096 + (w >> 1)) / w);
+    return q >= COVER_HALF ? COVER_ONE : COVER_HALF + q;
+}
+
+/* The first pixel whose centre 16 p + 8 is at or right of x (Q4). */
+static int32_t first_centre_at(int32_t x)
+{
+    return stp_floor16(x - STP_HALF_PIXEL + 15);
+}
+
+/* Shade a style index stands for; the shade under a band pixel, read back
+ * through the inverse of INTENSITY (the nearest level: gamma table or
+ * linear ramp), channel ch of an RGB888 pixel. */
+static stp_fix level_shade(const stp_edge_aa *aa, uint8_t level)
+{
+    int levels = aa->levels, best = 1, i, dbest = 256;
+    if (!aa->out->gamma)
+        return stp_intensity_shade((int)(((int32_t)level * (levels - 1) + 127) / 255) + 1, levels);
+    for (i = 1; i <= levels; i++) {
+        int d = aa->out->gamma[i - 1] - level;
+        if (d < 0)
+            d = -d;
+        if (d < dbest) {
+            dbest = d;
+            best = i;
+        }
+    }
+    return stp_intensity_shade(best, levels);
+}
+
+/* s_under + c (s_poly - s_under) / 256, rounded to nearest */
+static stp_fix mix(stp_fix under, stp_fix poly, int32_t c)
+{
+    int32_t d = (int32_t)(poly - under) * c;
+    return under + (stp_fix)(d >= 0 ? (d + 128) >> 8 : -((-d + 128) >> 8));
+}
+
+/* One pixel x of the row blended towards the polygon by coverage c: its
+ * grey shade `shade`, or for a colour style its three channels. */
+static void blend_pixel(const stp_edge_aa *aa, uint8_t *row, uint32_t x, int32_t style,
+                        stp_fix shade, int32_t c)
+{
+    int levels = aa->levels;
+    switch (aa->format) {
+    case STP_PIXEL_GREY8:
+        row[x] = stp_output_level(aa->out, levels,
+                                  stp_intensity_index(mix(level_shade(aa, row[x]), shade, c), levels));
+        break;
+    case STP_PIXEL_RGB888: {
+        int ch;
+        for (ch = 0; ch < 3; ch++) {
+            uint8_t *p = &row[3 * x + (uint32_t)ch];
+            stp_fix s = shade;
+            if (style & STP_COLOUR_FLAG)
+                s = stp_intensity_shade((int)((style >> (16 - 8 * ch)) & 0xFF) + 1, levels);
+            *p = stp_output_level(aa->out, levels, stp_intensity_index(mix(level_shade(aa, *p), s, c), levels));
+        }
+        break;
+    }
+    default: { /* STYLE8 (MONO1 is drawn as GREY8) */
+        int under = aa->out->styles ? stp_style_inverse(aa->out->styles, row[x]) : row[x];
+        stp_fix s_under = under > 0 ? stp_intensity_shade(under, levels) : 0;
+        row[x] = stp_output_style_code(aa->out, levels, stp_intensity_index(mix(s_under, shade, c), levels));
+        break;
+    }
+    }
+}
+
+/* Whether the polygon's plane is nearer than the Z entry at pixel x
+ * (depths as raster.c: floor of the Q12 plane, clamped to 1..65535). */
+static int nearer(const uint16_t *zrow, uint32_t x, int64_t d_row, int64_t ddx)
+{
+    int64_t d = stp_asr64(d_row + ddx * ((int64_t)x * 16 + STP_HALF_PIXEL), 12);
+    uint16_t depth = (uint16_t)(d < 1 ? 1 : (d > 65535 ? 65535 : d));
+    return depth > zrow[x];
+}
+
+/* What one row's gaps need to know of the polygon. */
+typedef struct row_ctx {
+    const stp_edge_aa *aa;
+    uint8_t *row;
+    uint16_t *zrow;
+    int64_t d_row, ddx;
+    int32_t style;
+    int smooth;
+} row_ctx;
+
+static int32_t width_of(const stp_crossing *c)
+{
+    return (int32_t)256 + c->slope;
+}
+
+/* The edge ends at a vertex: a pixel whose centre lies h Q4 units short of
+ * it (h < 0: past it) is covered by at most the part of it on the near
+ * side, clamp(1/2 + h / 16, 0, 1) (the edge's line goes on past its end;
+ * the polygon does not). */
+static int32_t beyond_end(int32_t h)
+{
+    if (h <= -STP_HALF_PIXEL)
+        return 0;
+    if (h >= STP_HALF_PIXEL)
+        return COVER_ONE;
+    return COVER_HALF + h * 16;
+}
+
+/* Coverage of pixel p of a gap by the span on its left (crossings l[0], l[1]:
+ * outside l[1], inside l[0]) or NULL. */
+static int32_t from_left(const stp_crossing *l, int32_t p)
+{
+    int32_t cx = p * 16 + STP_HALF_PIXEL, c, other;
+    if (!l)
+        return 0;
+    c = outside(cx - l[1].x, width_of(&l[1]));
+    if (c > 0) {
+        other = inside(cx - l[0].x, width_of(&l[0]));
+        if (other < c)
+            c = other;
+        other = beyond_end(l[1].x_hi - cx);
+        if (other < c)
+            c = other;
+    }
+    return c;
+}
+
+/* ... by the span on its right (crossings r[0], r[1]: outside r[0]). */
+static int32_t from_right(const stp_crossing *r, int32_t p)
+{
+    int32_t cx = p * 16 + STP_HALF_PIXEL, c, other;
+    if (!r)
+        return 0;
+    c = outside(r[0].x - cx, width_of(&r[0]));
+    if (c > 0) {
+        other = inside(r[1].x - cx, width_of(&r[1]));
+        if (other < c)
+            c = other;
+        other = beyond_end(cx - r[0].x_lo);
+        if (other < c)
+            c = other;
+    }
+    return c;
+}
+
+/* a crossing's shade (smooth polygons) */
+static stp_fix crossing_shade(const stp_crossing *c)
+{
+#if STP_WITH_GOURAUD
+    return c->shade;
+#else
+    (void)c;
+    return 0;
+#endif
+}
+
+static void cover(const row_ctx *rc, int32_t p, int32_t c, stp_fix shade)
+{
+    uint32_t x = (uint32_t)p;
+    if (c <= 0)
+        return;
+    if (c > COVER_ONE)
+        c = COVER_ONE;
+    if (rc->zrow && !nearer(rc->zrow, x, rc->d_row, rc->ddx))
+        return;
+    blend_pixel(rc->aa, rc->row, x, rc->style, shade, c);
+}
+
+/* The gap of pixels lo..hi between span l (NULL: the row's start) and span
+ * r (NULL: its end): from each side, the pixels the neighbouring span's
+ * edge partly covers, each pixel once (a pixel both spans reach takes the
+ * sum: they cover disjoint parts of it). */
+static void fill_gap(const row_ctx *rc, const stp_crossing *l, const stp_crossing *r, int32_t lo,
+                     int32_t hi)
+{
+    stp_fix shade_l = 0, shade_r = 0, level_shade_flat = 0;
+    int32_t p, last = lo - 1;
+    if (lo > hi)
+        return;
+    if (!rc->smooth && !(rc->style & STP_COLOUR_FLAG))
+        level_shade_flat = stp_intensity_shade((int)rc->style, rc->aa->levels);
+    shade_l = l && rc->smooth ? crossing_shade(&l[1]) : level_shade_flat;
+    shade_r = r && rc->smooth ? crossing_shade(&r[0]) : level_shade_flat;
+    for (p = lo; l && p <= hi; p++) {
+        int32_t cl = from_left(l, p), cr = from_right(r, p);
+        if (cl <= 0)
+            break;
+        /* a pixel both sides cover takes the nearer crossing's shade */
+        cover(rc, p, cl + cr, cl >= cr ? shade_l : shade_r);
+        last = p;
+    }
+    for (p = hi; r && p > last; p--) {
+        int32_t cr = from_right(r, p);
+        if (cr <= 0)
+            break;
+        cover(rc, p, cr + from_left(l, p), shade_r);
+    }
+}
+
+void stp_edge_aa_row(const stp_edge_aa *aa, uint8_t *row, uint16_t *zrow, const stp_crossing *c,
+                     int nc, int32_t style, int smooth, int64_t d_row, int64_t ddx)
+{
+    row_ctx rc;
+    int k;
+    int32_t lo = 0, last_pixel = (int32_t)aa->width - 1;
+    if (nc < 2)
+        return;
+    rc.aa = aa;
+    rc.row = row;
+    rc.zrow = zrow;
+    rc.d_row = d_row;
+    rc.ddx = ddx;
+    rc.style = style;
+    rc.smooth = smooth;
+    /* span k: crossings c[2k], c[2k+1], pixels with centres in [x_l, x_r);
+     * the gap before it ends at the last centre left of x_l */
+    for (k = 0; k + 1 < nc; k += 2) {
+        int32_t hi = first_centre_at(c[k].x) - 1;
+        fill_gap(&rc, k > 0 ? &c[k - 2] : 0, &c[k], lo, hi > last_pixel ? last_pixel : hi);
+        lo = first_centre_at(c[k + 1].x);
+        if (lo < 0)
+            lo = 0;
+    }
+    fill_gap(&rc, &c[k - 2], 0, lo, last_pixel);
+}
+
+void stp_edge_aa_threshold_row(uint8_t *row, uint32_t width, uint32_t y, const stp_cell *cell)
+{
+    uint32_t bytes = (width + 7u) / 8u;
+    /* in place: byte b is written from pixels 8b..8b+7, after grey[b] is read */
+    stp_halftone_row(row, row, width, y, cell);
+    if (width % 8u)
+        row[bytes - 1] = (uint8_t)(row[bytes - 1] & (0xFF00u >> (width % 8u)));
+}
+
+#endif
