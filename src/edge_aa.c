@@ -4,7 +4,8 @@
  * Fixed-point formats here:
  *   coverage  Q0.8 in 0..256 (256: the whole pixel)
  *   x         crossings and pixel centres in Q27.4 device units (< 2^20)
- *   w         1 + |slope| in pixels, Q8: 256..2^23 + 256
+ *   s, w      |slope| and 1 + |slope| in pixels of x per row, Q8:
+ *             s in 0..2^23, w in 256..2^23 + 256
  *   shade     stp_fix in [0, 1]; a blend's difference times a coverage is
  *             below 2^(FRAC_BITS + 1 + 8) <= 2^29: 32 bits. */
 #include "edge_aa_private.h"
@@ -16,28 +17,58 @@
 #define COVER_ONE 256
 #define COVER_HALF 128
 
-/* Coverage of a pixel whose centre lies h >= 0 Q4 units outside an edge
- * of L1 normal length w (Q8): 1/2 - h / (16 w / 256), rounded, clamped at
- * 0.  The product h 2^12 is formed only for h < w / 32 + 1 < 2^18 + 9 (so
- * below 2^31); farther pixels are uncovered. */
-static int32_t outside(int32_t h, int32_t w)
+/* The edge function at a pixel centre h >= 0 Q4 units from the crossing
+ * (horizontally), over the L1 length w (Q8) of the edge normal (1, -s):
+ * round(h 2^12 / w), the centre's distance from the edge in units of the
+ * pixel's extent along the normal, Q8; 128 (half the extent) or more: the
+ * pixel is clear of the edge.  The product h 2^12 is formed only for
+ * h < w / 32 + 1 < 2^18 + 9, so below 2^31. */
+static int32_t distance(int32_t h, int32_t w)
 {
     int32_t q;
     if (h >= (w >> 5) + 1)
-        return 0;
+        return COVER_HALF;
     q = (int32_t)((h * 4096 + (w >> 1)) / w);
-    return q >= COVER_HALF ? 0 : COVER_HALF - q;
+    return q > COVER_HALF ? COVER_HALF : q;
 }
 
-/* Coverage by the half-plane of an edge whose centre distance inside is
- * h >= 0: 1/2 + h / w, capped at the whole pixel. */
-static int32_t inside(int32_t h, int32_t w)
+/* The area of the pixel on the near side of a line crossing it, t (Q8,
+ * 0..128) of its extent along the normal from its corner: the pixel's
+ * width across the normal rises over a (the shorter side's share of the
+ * extent, Q8 0..128), stays 1/(1 - a) and falls again, so the area is
+ * t^2 / (2 a (1 - a)) for t < a, (t - a/2) / (1 - a) after.  Numerators
+ * below 2^22, denominators at most 2^16. */
+static int32_t area_to(int32_t t, int32_t a)
 {
-    int32_t q;
-    if (h >= (w >> 5) + 1)
-        return COVER_ONE;
-    q = (int32_t)((h * 4096 + (w >> 1)) / w);
-    return q >= COVER_HALF ? COVER_ONE : COVER_HALF + q;
+    if (t < a) {
+        int32_t den = 2 * a * (COVER_ONE - a);
+        return (t * t * COVER_ONE + den / 2) / den;
+    }
+    return ((2 * t - a) * COVER_HALF + (COVER_ONE - a) / 2) / (COVER_ONE - a);
+}
+
+/* a of an edge of slope s (pixels of x per row, Q8) and w = 256 + s:
+ * min(1, s) / (1 + s), Q8 */
+static int32_t corner_share(int32_t s, int32_t w)
+{
+    return ((s < COVER_ONE ? s : COVER_ONE) * COVER_ONE + w / 2) / w;
+}
+
+/* Coverage (Q8) of a pixel whose centre lies h >= 0 Q4 units outside an
+ * edge of slope s (Q8) crossing the row at the edge: the area of the
+ * pixel on the edge's inner side, exact for a straight edge through the
+ * whole pixel. */
+static int32_t outside(int32_t h, int32_t s)
+{
+    int32_t w = COVER_ONE + s;
+    return area_to(COVER_HALF - distance(h, w), corner_share(s, w));
+}
+
+/* ... of a pixel whose centre lies h >= 0 inside it */
+static int32_t inside(int32_t h, int32_t s)
+{
+    int32_t w = COVER_ONE + s;
+    return COVER_ONE - area_to(COVER_HALF - distance(h, w), corner_share(s, w));
 }
 
 /* The first pixel whose centre 16 p + 8 is at or right of x (Q4). */
@@ -123,11 +154,6 @@ typedef struct row_ctx {
     int smooth;
 } row_ctx;
 
-static int32_t width_of(const stp_crossing *c)
-{
-    return (int32_t)256 + c->slope;
-}
-
 /* The edge ends at a vertex: a pixel whose centre lies h Q4 units short of
  * it (h < 0: past it) is covered by at most the part of it on the near
  * side, clamp(1/2 + h / 16, 0, 1) (the edge's line goes on past its end;
@@ -142,17 +168,17 @@ static int32_t beyond_end(int32_t h)
 }
 
 /* Coverage of pixel p of a gap by the span on its left (crossings l[0], l[1]:
- * outside l[1], inside l[0]) or NULL. */
+ * outside l[1], inside l[0]) or NULL: the area inside l[1]'s edge less the
+ * area outside l[0]'s (a polygon thinner than the pixel: a strip), capped
+ * where l[1]'s edge ends; 0 or less: none. */
 static int32_t from_left(const stp_crossing *l, int32_t p)
 {
     int32_t cx = p * 16 + STP_HALF_PIXEL, c, other;
     if (!l)
         return 0;
-    c = outside(cx - l[1].x, width_of(&l[1]));
+    c = outside(cx - l[1].x, l[1].slope);
     if (c > 0) {
-        other = inside(cx - l[0].x, width_of(&l[0]));
-        if (other < c)
-            c = other;
+        c -= COVER_ONE - inside(cx - l[0].x, l[0].slope);
         other = beyond_end(l[1].x_hi - cx);
         if (other < c)
             c = other;
@@ -160,17 +186,15 @@ static int32_t from_left(const stp_crossing *l, int32_t p)
     return c;
 }
 
-/* ... by the span on its right (crossings r[0], r[1]: outside r[0]). */
+/* ... by the span on its right (crossings r[0], r[1]: outside r[0]) */
 static int32_t from_right(const stp_crossing *r, int32_t p)
 {
     int32_t cx = p * 16 + STP_HALF_PIXEL, c, other;
     if (!r)
         return 0;
-    c = outside(r[0].x - cx, width_of(&r[0]));
+    c = outside(r[0].x - cx, r[0].slope);
     if (c > 0) {
-        other = inside(r[1].x - cx, width_of(&r[1]));
-        if (other < c)
-            c = other;
+        c -= COVER_ONE - inside(r[1].x - cx, r[1].slope);
         other = beyond_end(cx - r[0].x_lo);
         if (other < c)
             c = other;
