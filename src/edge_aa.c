@@ -54,21 +54,36 @@ static int32_t corner_share(int32_t s, int32_t w)
     return ((s < COVER_ONE ? s : COVER_ONE) * COVER_ONE + w / 2) / w;
 }
 
-/* Coverage (Q8) of a pixel whose centre lies h >= 0 Q4 units outside an
- * edge of slope s (Q8) crossing the row at the edge: the area of the
- * pixel on the edge's inner side, exact for a straight edge through the
- * whole pixel. */
-static int32_t outside(int32_t h, int32_t s)
+/* One crossing as the coverage needs it: x (Q4), w = 1 + |slope| and
+ * the corner share a (Q8), and where its edge ends on the side the
+ * coverage reaches towards (its vertices' largest x for the right crossing
+ * of a span, smallest for the left one). */
+typedef struct side {
+    int32_t x, w, a, end;
+} side;
+
+static void side_of(side *e, const stp_crossing *c, int32_t end)
 {
-    int32_t w = COVER_ONE + s;
-    return area_to(COVER_HALF - distance(h, w), corner_share(s, w));
+    e->x = c->x;
+    e->w = COVER_ONE + c->slope;
+    e->a = corner_share(c->slope, e->w);
+    e->end = end;
+}
+
+/* Coverage (Q8) of a pixel whose centre lies h >= 0 Q4 units outside the
+ * edge: the area of the pixel on its inner side, exact for a straight edge
+ * through the whole pixel. */
+static int32_t outside(int32_t h, const side *e)
+{
+    int32_t d = distance(h, e->w);
+    return d >= COVER_HALF ? 0 : area_to(COVER_HALF - d, e->a);
 }
 
 /* ... of a pixel whose centre lies h >= 0 inside it */
-static int32_t inside(int32_t h, int32_t s)
+static int32_t inside(int32_t h, const side *e)
 {
-    int32_t w = COVER_ONE + s;
-    return COVER_ONE - area_to(COVER_HALF - distance(h, w), corner_share(s, w));
+    int32_t d = distance(h, e->w);
+    return d >= COVER_HALF ? COVER_ONE : COVER_ONE - area_to(COVER_HALF - d, e->a);
 }
 
 /* The first pixel whose centre 16 p + 8 is at or right of x (Q4). */
@@ -152,7 +167,14 @@ typedef struct row_ctx {
     int64_t d_row, ddx;
     int32_t style;
     int smooth;
+    stp_fix flat; /* a flat grey style's shade */
 } row_ctx;
+
+/* A span beside a gap: near, the crossing facing the gap; far, its other
+ * crossing. */
+typedef struct span_side {
+    side near, far;
+} span_side;
 
 /* The edge ends at a vertex: a pixel whose centre lies h Q4 units short of
  * it (h < 0: past it) is covered by at most the part of it on the near
@@ -167,37 +189,37 @@ static int32_t beyond_end(int32_t h)
     return COVER_HALF + h * 16;
 }
 
-/* Coverage of pixel p of a gap by the span on its left (crossings l[0], l[1]:
- * outside l[1], inside l[0]) or NULL: the area inside l[1]'s edge less the
- * area outside l[0]'s (a polygon thinner than the pixel: a strip), capped
- * where l[1]'s edge ends; 0 or less: none. */
-static int32_t from_left(const stp_crossing *l, int32_t p)
+/* Coverage of pixel p of a gap by the span on its left (NULL: none): the
+ * area inside its near edge less the area outside its far one (a polygon
+ * thinner than the pixel: a strip), capped where the near edge ends; 0 or
+ * less: none. */
+static int32_t from_left(const span_side *l, int32_t p)
 {
-    int32_t cx = p * 16 + STP_HALF_PIXEL, c, other;
+    int32_t cx = p * 16 + STP_HALF_PIXEL, c, cap;
     if (!l)
         return 0;
-    c = outside(cx - l[1].x, l[1].slope);
+    c = outside(cx - l->near.x, &l->near);
     if (c > 0) {
-        c -= COVER_ONE - inside(cx - l[0].x, l[0].slope);
-        other = beyond_end(l[1].x_hi - cx);
-        if (other < c)
-            c = other;
+        c -= COVER_ONE - inside(cx - l->far.x, &l->far);
+        cap = beyond_end(l->near.end - cx);
+        if (cap < c)
+            c = cap;
     }
     return c;
 }
 
-/* ... by the span on its right (crossings r[0], r[1]: outside r[0]) */
-static int32_t from_right(const stp_crossing *r, int32_t p)
+/* ... by the span on its right */
+static int32_t from_right(const span_side *r, int32_t p)
 {
-    int32_t cx = p * 16 + STP_HALF_PIXEL, c, other;
+    int32_t cx = p * 16 + STP_HALF_PIXEL, c, cap;
     if (!r)
         return 0;
-    c = outside(r[0].x - cx, r[0].slope);
+    c = outside(r->near.x - cx, &r->near);
     if (c > 0) {
-        c -= COVER_ONE - inside(r[1].x - cx, r[1].slope);
-        other = beyond_end(cx - r[0].x_lo);
-        if (other < c)
-            c = other;
+        c -= COVER_ONE - inside(r->far.x - cx, &r->far);
+        cap = beyond_end(cx - r->near.end);
+        if (cap < c)
+            c = cap;
     }
     return c;
 }
@@ -225,34 +247,46 @@ static void cover(const row_ctx *rc, int32_t p, int32_t c, stp_fix shade)
     blend_pixel(rc->aa, rc->row, x, rc->style, shade, c);
 }
 
-/* The gap of pixels lo..hi between span l (NULL: the row's start) and span
- * r (NULL: its end): from each side, the pixels the neighbouring span's
- * edge partly covers, each pixel once (a pixel both spans reach takes the
- * sum: they cover disjoint parts of it). */
-static void fill_gap(const row_ctx *rc, const stp_crossing *l, const stp_crossing *r, int32_t lo,
+/* The gap of pixels lo..hi between the span of crossings lc[0], lc[1]
+ * (NULL: the row's start) and that of rc[0], rc[1] (NULL: its end): from
+ * each side, the pixels the neighbouring span's edge partly covers, each
+ * pixel once (a pixel both spans reach takes the sum: they cover disjoint
+ * parts of it, and the shade of the side covering more). */
+static void fill_gap(const row_ctx *rc, const stp_crossing *lc, const stp_crossing *rc2, int32_t lo,
                      int32_t hi)
 {
-    stp_fix shade_l = 0, shade_r = 0, level_shade_flat = 0;
+    span_side left, right;
+    const span_side *l = 0, *r = 0;
+    stp_fix shade_l, shade_r, flat = rc->flat;
     int32_t p, last = lo - 1;
     if (lo > hi)
         return;
-    if (!rc->smooth && !(rc->style & STP_COLOUR_FLAG))
-        level_shade_flat = stp_intensity_shade((int)rc->style, rc->aa->levels);
-    shade_l = l && rc->smooth ? crossing_shade(&l[1]) : level_shade_flat;
-    shade_r = r && rc->smooth ? crossing_shade(&r[0]) : level_shade_flat;
+    if (lc) {
+        side_of(&left.near, &lc[1], lc[1].x_hi);
+        side_of(&left.far, &lc[0], lc[0].x_lo);
+        l = &left;
+    }
+    if (rc2) {
+        side_of(&right.near, &rc2[0], rc2[0].x_lo);
+        side_of(&right.far, &rc2[1], rc2[1].x_hi);
+        r = &right;
+    }
+    shade_l = lc && rc->smooth ? crossing_shade(&lc[1]) : flat;
+    shade_r = rc2 && rc->smooth ? crossing_shade(&rc2[0]) : flat;
     for (p = lo; l && p <= hi; p++) {
-        int32_t cl = from_left(l, p), cr = from_right(r, p);
+        int32_t cl = from_left(l, p), cr;
         if (cl <= 0)
             break;
-        /* a pixel both sides cover takes the nearer crossing's shade */
-        cover(rc, p, cl + cr, cl >= cr ? shade_l : shade_r);
+        cr = from_right(r, p);
+        cover(rc, p, cl + (cr > 0 ? cr : 0), cl >= cr ? shade_l : shade_r);
         last = p;
     }
     for (p = hi; r && p > last; p--) {
-        int32_t cr = from_right(r, p);
+        int32_t cr = from_right(r, p), cl;
         if (cr <= 0)
             break;
-        cover(rc, p, cr + from_left(l, p), shade_r);
+        cl = from_left(l, p);
+        cover(rc, p, cr + (cl > 0 ? cl : 0), shade_r);
     }
 }
 
@@ -271,6 +305,7 @@ void stp_edge_aa_row(const stp_edge_aa *aa, uint8_t *row, uint16_t *zrow, const 
     rc.ddx = ddx;
     rc.style = style;
     rc.smooth = smooth;
+    rc.flat = smooth || (style & STP_COLOUR_FLAG) ? 0 : stp_intensity_shade((int)style, aa->levels);
     /* span k: crossings c[2k], c[2k+1], pixels with centres in [x_l, x_r);
      * the gap before it ends at the last centre left of x_l */
     for (k = 0; k + 1 < nc; k += 2) {
@@ -285,11 +320,48 @@ void stp_edge_aa_row(const stp_edge_aa *aa, uint8_t *row, uint16_t *zrow, const 
 
 void stp_edge_aa_threshold_row(uint8_t *row, uint32_t width, uint32_t y, const stp_cell *cell)
 {
-    uint32_t bytes = (width + 7u) / 8u;
-    /* in place: byte b is written from pixels 8b..8b+7, after grey[b] is read */
-    stp_halftone_row(row, row, width, y, cell);
+    const uint8_t *t;
+    uint32_t x, hx = 0, w = cell->width, bits = 0;
+    if (cell->kind == STP_CELL_PATTERN) {
+        /* in place: byte b is written from pixels 8b..8b+7, after grey[b]
+         * is read */
+        stp_halftone_row(row, row, width, y, cell);
+        if (width % 8u)
+            row[width / 8u] = (uint8_t)(row[width / 8u] & (0xFF00u >> (width % 8u)));
+        return;
+    }
+    /* a threshold cell: its row resolved once, as stp_halftone_fillin does
+     * (ON where the level exceeds the threshold: stp_cell_on's test); byte
+     * b is stored after pixels 8b..8b+7, so after grey[b] was read */
+    t = &stp_cell_table(cell)[(y % cell->height) * w];
+    if (8u % w == 0) {
+        /* every byte sees the same 8 thresholds: whole bytes unrolled */
+        uint8_t t8[8];
+        uint32_t b;
+        for (x = 0; x < 8u; x++)
+            t8[x] = t[x % w];
+        for (b = 0; b < width / 8u; b++) {
+            const uint8_t *g = row + 8u * b;
+            row[b] = (uint8_t)((g[0] > t8[0]) << 7 | (g[1] > t8[1]) << 6 | (g[2] > t8[2]) << 5 |
+                               (g[3] > t8[3]) << 4 | (g[4] > t8[4]) << 3 | (g[5] > t8[5]) << 2 |
+                               (g[6] > t8[6]) << 1 | (g[7] > t8[7]));
+        }
+        x = 8u * b; /* the partial byte's pixels below */
+        hx = x % w;
+    } else {
+        x = 0;
+    }
+    for (; x < width; x++) {
+        bits = (bits << 1) | (row[x] > t[hx] ? 1u : 0u);
+        if (++hx == w)
+            hx = 0;
+        if ((x & 7u) == 7u) {
+            row[x >> 3] = (uint8_t)bits;
+            bits = 0;
+        }
+    }
     if (width % 8u)
-        row[bytes - 1] = (uint8_t)(row[bytes - 1] & (0xFF00u >> (width % 8u)));
+        row[width / 8u] = (uint8_t)(bits << (8u - width % 8u)); /* padding bits 0 */
 }
 
 #endif
