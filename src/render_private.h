@@ -38,7 +38,8 @@ typedef struct stp_edge {
 } stp_edge;
 
 /* A crossing of a row by an edge: x (Q27.4), for smooth polygons the shade
- * there, with edge anti-aliasing compiled in the edge's slope. */
+ * there, and with edge anti-aliasing compiled in its edge's slope and x
+ * extent. */
 typedef struct stp_crossing {
     int32_t x;
 #if STP_WITH_GOURAUD
