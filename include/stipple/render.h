@@ -445,7 +445,8 @@ typedef struct stp_output {
                                         diffusion, and thresholded by the
                                         cell as it is flushed); 0: off.
                                         Needs STP_WITH_EDGE_AA, else
-                                        STP_ERR_UNSUPPORTED. */
+                                        STP_ERR_UNSUPPORTED; the ray tracer
+                                        ignores it. */
 } stp_output;
 
 /* Memory the caller lends to one stp_renderer_render call.
