@@ -28,14 +28,15 @@ int stp_output_default(stp_output *output)
     output->background = 0;
     output->background_colour = 0;
     output->diffusion = 0;
+    output->edge_aa = 0;
     return STP_OK;
 }
 
 /* Bytes of one band row: the pixels and, for the Z buffer, its entries;
  * 0 for an unknown format or a size that does not fit size_t. */
-static size_t row_bytes(const stp_port *port, stp_hidden hidden)
+static size_t row_bytes(const stp_port *port, stp_pixel_format drawn, stp_hidden hidden)
 {
-    size_t pixels = stp_row_bytes(port->format, port->width), depth = 0;
+    size_t pixels = stp_row_bytes(drawn, port->width), depth = 0;
     if (hidden == STP_HIDDEN_ZBUFFER)
         depth = (size_t)port->width * sizeof(uint16_t);
     if (pixels == 0 || depth > SIZE_MAX - pixels)
@@ -47,7 +48,7 @@ size_t stp_frame_memory_bytes(const stp_port *port, stp_hidden hidden, uint32_t 
                               uint32_t polygons)
 {
     size_t row, sort = 0, bytes;
-    if (port == 0 || (row = row_bytes(port, hidden)) == 0)
+    if (port == 0 || (row = row_bytes(port, port->format, hidden)) == 0)
         return 0;
     if (hidden == STP_HIDDEN_PAINTER) {
         size_t count = (size_t)polygons; /* a 16-bit size_t may not hold it */
@@ -69,13 +70,17 @@ int stp_frame_memory_split(stp_frame_memory *memory, const stp_renderer *r, cons
     stp_output defaults;
     uint8_t *p = (uint8_t *)buffer;
     size_t row, sort_count = 0, sort_bytes, rows;
+    stp_pixel_format drawn;
     if (memory == 0 || port == 0 || buffer == 0)
         return STP_ERR_ARG;
     if (output == 0) {
         (void)stp_output_default(&defaults);
         output = &defaults;
     }
-    if ((row = row_bytes(port, output->hidden)) == 0)
+    /* a 1-bit port's band is drawn grey for diffusion and edge anti-aliasing */
+    drawn = port->format == STP_PIXEL_MONO1 && (output->diffusion || output->edge_aa) ? STP_PIXEL_GREY8
+                                                                                    : port->format;
+    if ((row = row_bytes(port, drawn, output->hidden)) == 0)
         return STP_ERR_ARG;
     if (output->hidden == STP_HIDDEN_PAINTER) {
         if (r == 0)

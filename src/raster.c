@@ -146,6 +146,9 @@ typedef struct frame {
     stp_shadow_poly *shadow; /* the polygon being drawn's shadow records;
                                 NULL when no light has a map */
 #endif
+#if STP_WITH_EDGE_AA
+    stp_edge_aa aa; /* edge anti-aliasing (edge_aa.c); aa.out NULL: off */
+#endif
 } frame;
 
 
@@ -937,6 +940,18 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
 #endif
     }
 }
+#if STP_WITH_EDGE_AA
+#if STP_WITH_ZBUFFER
+#define EDGE_AA_DEPTH(v) (v)
+#else
+#define EDGE_AA_DEPTH(v) 0
+#endif
+#if STP_WITH_SHADOWS
+#define EDGE_AA_UNSHADOWED(fr) (!(fr)->shadow || (fr)->shadow->count == 0)
+#else
+#define EDGE_AA_UNSHADOWED(fr) 1
+#endif
+#endif
 
 /* Scan-convert the polygon whose header is df[at] into the current band;
  * ordinal: its place among the visible polygons in display order
@@ -959,7 +974,12 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
     depth_plane pl = {0, 0, 0, 0, 0};
     int64_t d_row = 0;
 #endif
+#if STP_WITH_EDGE_AA
+    /* the edge pass reads the general path's crossings */
+    if (n == 3 && !smooth && fr->aa.out == 0) {
+#else
     if (n == 3 && !smooth) {
+#endif
         draw_triangle(fr, at, v, style, use_z, t, ordinal); /* the painter's order comes here */
         return;
     }
@@ -1038,6 +1058,13 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
 #endif
             paint_run(fr, y, p1, p2, style, smooth, s0, sstep, t);
         }
+#if STP_WITH_EDGE_AA
+        /* the pixels just outside this row's spans (opaque, unshadowed) */
+        if (fr->aa.out && t == 0 && EDGE_AA_UNSHADOWED(fr))
+            stp_edge_aa_row(&fr->aa, fr->band + (size_t)(y - fr->y0) * fr->stride,
+                            use_z ? fr->zbuf + (size_t)(y - fr->y0) * r->width : 0, r->crossings, nc,
+                            style, smooth, EDGE_AA_DEPTH(d_row), EDGE_AA_DEPTH(pl.ddx));
+#endif
 #if STP_WITH_ZBUFFER
         d_row += pl.ddy * (1 << SUB);
 #endif
@@ -1234,8 +1261,8 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
 #if STP_WITH_SHADOWS
     stp_shadow_poly shadow_poly;
 #endif
-#if STP_WITH_DIFFUSION
-    stp_port grey_port; /* error diffusion: the band is drawn as GREY8 */
+#if STP_WITH_DIFFUSION || STP_WITH_EDGE_AA
+    stp_port grey_port; /* error diffusion, edge anti-aliasing: the band is drawn as GREY8 */
 #endif
     const stp_port *drawn = port;
     uint32_t y0, polygons = 0;
@@ -1250,6 +1277,17 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
         return STP_ERR_ARG;
     if (port->width != r->width || port->height != r->height)
         return STP_ERR_ARG;
+#if STP_WITH_EDGE_AA
+    fr.aa.out = 0;
+    if (output->edge_aa && port->format == STP_PIXEL_MONO1) {
+        grey_port = *port; /* drawn grey, thresholded by the cell at flush */
+        grey_port.format = STP_PIXEL_GREY8;
+        drawn = &grey_port;
+    }
+#else
+    if (output->edge_aa)
+        return STP_ERR_UNSUPPORTED;
+#endif
     if (output->diffusion && port->format == STP_PIXEL_MONO1) {
 #if STP_WITH_DIFFUSION
         int status = stp_diffusion_check(output->diffusion, port->width);
@@ -1351,6 +1389,14 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
         fr.cached_style[y0] = -1;
 #endif
     use_style(&fr, background_style);
+#if STP_WITH_EDGE_AA
+    if (output->edge_aa) {
+        fr.aa.out = output;
+        fr.aa.format = drawn->format;
+        fr.aa.levels = r->levels;
+        fr.aa.width = r->width;
+    }
+#endif
     (void)polygons; /* read only by the painter's sort */
 #if STP_WITH_PAINTER
     if (hidden == STP_HIDDEN_PAINTER)
@@ -1400,11 +1446,20 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
                 replay(&fr, 0, 0, 0);
             }
         }
+#if STP_WITH_DIFFUSION || STP_WITH_EDGE_AA
+        /* a grey band for a MONO1 port: each row becomes a MONO1 row in
+         * place, by error diffusion or the cell */
+        for (y = y0; drawn == &grey_port && y < y0 + fr.rows; y++) {
+            uint8_t *row = fr.band + (size_t)(y - y0) * fr.stride;
 #if STP_WITH_DIFFUSION
-        if (drawn == &grey_port) {
-            /* error diffusion: each grey row becomes a MONO1 row in place */
-            for (y = y0; y < y0 + fr.rows; y++)
-                stp_diffuse_row(output->diffusion, fr.band + (size_t)(y - y0) * fr.stride, r->width, y);
+            if (output->diffusion) {
+                stp_diffuse_row(output->diffusion, row, r->width, y);
+                continue;
+            }
+#endif
+#if STP_WITH_EDGE_AA
+            stp_edge_aa_threshold_row(row, r->width, y, fr.cell);
+#endif
         }
 #endif
         if (port->flush(port, y0, fr.rows, fr.band, fr.stride) < 0)

@@ -7,6 +7,7 @@
 #define STIPPLE_RASTER_PRIVATE_H
 
 #include "render_private.h"
+#include "edge_aa_private.h"
 
 #define STP_HALF_PIXEL (1 << (STP_SUBPIXEL_BITS - 1))
 
@@ -135,6 +136,11 @@ static inline int stp_edge_setup(stp_edge *e, int32_t xa, int32_t ya, int32_t xb
     e->yb = yb;
     e->step = stp_slope_q16(xb - xa, yb - ya) * 16;
     e->acc = 0;
+#if STP_WITH_EDGE_AA
+    e->aa_slope = stp_edge_aa_slope(e->step);
+    e->aa_lo = xa < xb ? xa : xb;
+    e->aa_hi = xa < xb ? xb : xa;
+#endif
 #if STP_WITH_GOURAUD
     e->sa = 0;
     e->shade_step = e->shade_acc = 0;
@@ -179,6 +185,11 @@ static inline int stp_edges_row(stp_edge *edges, int n, int32_t yc, int smooth, 
             c.x = (int32_t)stp_asr64(e->acc, 16);
 #if STP_WITH_GOURAUD
             c.shade = smooth ? (int32_t)stp_asr64(e->shade_acc, 16) : 0;
+#endif
+#if STP_WITH_EDGE_AA
+            c.slope = e->aa_slope;
+            c.x_lo = e->aa_lo;
+            c.x_hi = e->aa_hi;
 #endif
             /* insertion sort: crossings are few */
             for (k = nc; k > 0 && out[k - 1].x > c.x; k--)

@@ -32,14 +32,22 @@ typedef struct stp_edge {
     int32_t sa;
 #endif
     int32_t xa, ya, yb;
+#if STP_WITH_EDGE_AA
+    int32_t aa_slope, aa_lo, aa_hi; /* for the crossings (stp_crossing) */
+#endif
 } stp_edge;
 
-/* A crossing of a row by an edge: x (Q27.4) and, for smooth polygons, the
- * shade there. */
+/* A crossing of a row by an edge: x (Q27.4), for smooth polygons the shade
+ * there, and with edge anti-aliasing compiled in its edge's slope and x
+ * extent. */
 typedef struct stp_crossing {
     int32_t x;
 #if STP_WITH_GOURAUD
     int32_t shade;
+#endif
+#if STP_WITH_EDGE_AA
+    /* the edge's slope (stp_edge_aa_slope) and x extent (Q4), for edge_aa.c */
+    int32_t slope, x_lo, x_hi;
 #endif
 } stp_crossing;
 

@@ -227,6 +227,8 @@ static void write_config(writer *w, const plan *p, const stp_tool_options *opt, 
            "#define STP_COMPILED_DIFFUSION %d\n",
         opt->dither == STP_TOOL_DITHER_DIFFUSE ? 1 : 0);
     out(w, "#define STP_WITH_DIFFUSION STP_COMPILED_DIFFUSION\n"
+           "/* No edge anti-aliasing on the chip (a host option): no slope per crossing. */\n"
+           "#define STP_WITH_EDGE_AA 0\n"
            "/* The cell is compiled in as a value: none is built on the chip. */\n"
            "#define STP_WITH_DEFAULT_CELL 0\n");
     out(w, "/* A display file played back from flash (--static): 64-bit division by a\n"
@@ -747,6 +749,9 @@ int stp_tool_compile_main(int argc, char **argv)
     if (opt.smooth || opt.colour || opt.transparency || opt.shadow_resolution)
         return stp_tool_usage_error("compile", "--smooth, --color, --transparent and --shadows "
                                                "are not supported for compiled scenes yet");
+    if (opt.edge_aa)
+        return stp_tool_usage_error("compile", "--edge-aa is not supported for compiled scenes "
+                                               "(their core is built with STP_WITH_EDGE_AA 0)");
     if (!c_path)
         return stp_tool_usage_error("compile", "no output given (-o FILE.c)");
     if (!h_path) {

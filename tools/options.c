@@ -41,6 +41,7 @@ static const struct option shared[] = {
     {"grey", required_argument, 0, STP_TOOL_OPT_GREY},
     {"gray", required_argument, 0, STP_TOOL_OPT_GREY},
     {"background", required_argument, 0, STP_TOOL_OPT_BACKGROUND},
+    {"edge-aa", no_argument, 0, STP_TOOL_OPT_EDGE_AA},
 };
 
 int stp_tool_long_options(struct option *out, size_t cap, const struct option *extra)
@@ -229,6 +230,7 @@ int stp_tool_apply_option(int code, const char *arg, stp_tool_options *opt,
     case STP_TOOL_OPT_BACKFACE: opt->backface_removal = 1; break;
     case STP_TOOL_OPT_NO_SHADING: opt->shading = 0; break;
     case STP_TOOL_OPT_SMOOTH: opt->smooth = 1; break;
+    case STP_TOOL_OPT_EDGE_AA: opt->edge_aa = 1; break;
     case STP_TOOL_OPT_COLOUR: opt->colour = 1; break;
     case STP_TOOL_OPT_TRANSPARENT: opt->transparency = 1; break;
     case STP_TOOL_OPT_LIGHT: {
@@ -394,7 +396,10 @@ void stp_tool_options_help(FILE *to)
             "      --grey MODE          grey from colour: luminance (default) or contrast (the\n"
             "                           scene's colours spread along their main axis)\n"
             "      --background V|R,G,B the empty frame's shade or colour (0..1), instead of\n"
-            "                           the scene's\n",
+            "                           the scene's\n"
+            "      --edge-aa            anti-aliased polygon edges: pixels just outside an edge\n"
+            "                           take the polygon's shade by the part it covers, before\n"
+            "                           the dither (docs/edge-aa.md)\n",
             STP_MAX_LIGHTS, STP_RT_MAX_DEPTH);
 }
 
@@ -411,7 +416,8 @@ const char *stp_tool_option_name(int code)
 static const int polygon_only[] = {STP_TOOL_OPT_HIDDEN,      STP_TOOL_OPT_BACKFACE,
                                    STP_TOOL_OPT_NO_SHADING,  STP_TOOL_OPT_SMOOTH,
                                    STP_TOOL_OPT_TRANSPARENT, STP_TOOL_OPT_SHADOWS,
-                                   STP_TOOL_OPT_SLICES,      STP_TOOL_OPT_STACKS};
+                                   STP_TOOL_OPT_SLICES,      STP_TOOL_OPT_STACKS,
+                                   STP_TOOL_OPT_EDGE_AA};
 static const int raytrace_only[] = {STP_TOOL_OPT_DEPTH, STP_TOOL_OPT_MIN_WEIGHT,
                                     STP_TOOL_OPT_NO_HIERARCHY};
 

@@ -635,8 +635,11 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
     mem.band_rows = (uint32_t)band_rows;
     diffusing = port->format == STP_PIXEL_MONO1 &&
                 stp_tool_diffusion(opt, (uint32_t)opt->width, &diffusion) != 0;
-    /* error diffusion draws the band as GREY8 (render.h, stp_output) */
-    mem.band_size = stp_row_bytes(diffusing ? STP_PIXEL_GREY8 : port->format, (uint32_t)opt->width) *
+    /* error diffusion and edge anti-aliasing draw a 1-bit band as GREY8 (render.h, stp_output) */
+    mem.band_size = stp_row_bytes(diffusing || (opt->edge_aa && port->format == STP_PIXEL_MONO1)
+                                      ? STP_PIXEL_GREY8
+                                      : port->format,
+                                  (uint32_t)opt->width) *
                     (size_t)band_rows;
     band = malloc(mem.band_size);
     mem.band = band;
@@ -662,6 +665,7 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
         goto done;
     if (diffusing)
         out.diffusion = &diffusion;
+    out.edge_aa = opt->edge_aa;
     stats->frame_bytes = stp_renderer_size() + sizeof *df * stats->display_entries + mem.band_size +
                          sizeof(uint16_t) * mem.zbuf_count + sizeof(stp_sort_entry) * mem.sort_count +
                          sizeof(int16_t) * diffusion.error_count;

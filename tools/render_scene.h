@@ -54,6 +54,7 @@ typedef struct stp_tool_options {
                                 (NFF pp, OBJ vn), else averaged face normals (0);
                                 large polygons are split first (subdivide.h) */
     int subdivided;          /* 1: smooth polygons already split (internal) */
+    int edge_aa;             /* 1: anti-aliased polygon edges (stp_output.edge_aa) (0) */
     int band_rows;           /* 0: whole frame */
     double background;       /* BKGRND, the indirect share (0.2) */
     double brightness;       /* BRIGHT (1) */

@@ -22,6 +22,8 @@ for nff in "$scenes"/*.nff; do
 done
 "$build/tools/stipple" render $lib_defaults "$scenes/teapot-s2.nff" --smooth -o "$here/tests/golden/teapot-s2-smooth-128x64.pbm"
 echo "wrote tests/golden/teapot-s2-smooth-128x64.pbm"
+"$build/tools/stipple" render $lib_defaults "$scenes/teapot-s1.nff" --edge-aa -o "$here/tests/golden/teapot-s1-edge-aa-128x64.pbm"
+echo "wrote tests/golden/teapot-s1-edge-aa-128x64.pbm"
 for name in balls-s1 mount-s2 tetra-s1; do
     "$build/tools/stipple" render $lib_defaults "$scenes/$name.nff" --color -o "$here/tests/golden/$name-colour-128x64.ppm"
     echo "wrote tests/golden/$name-colour-128x64.ppm"

@@ -140,6 +140,16 @@
 #define STP_WITH_DIFFUSION 1
 #endif
 
+/* 1: edge anti-aliasing (stp_output.edge_aa) is compiled in: the pixels
+ * just outside a polygon's edges take its shade blended with what is under
+ * them in proportion to the part of them it covers (docs/edge-aa.md).  Each
+ * edge and row crossing carries the edge's slope and x extent: about 28
+ * bytes of the renderer object per STP_MAX_POLYGON_VERTICES.  0: a render
+ * asked for it returns STP_ERR_UNSUPPORTED, and its code is not linked. */
+#ifndef STP_WITH_EDGE_AA
+#define STP_WITH_EDGE_AA 1
+#endif
+
 /* 1: a render with no halftone cell (stp_output.cell NULL) builds the Bayer
  * 4x4 cell on the stack; 0: it returns STP_ERR_UNSUPPORTED, and the cell
  * construction code is not linked (compiled scenes carry their cell). */
@@ -159,7 +169,7 @@
  * keeps only what stp_playback_create and stp_renderer_render use, and the
  * entry side (render.c, view.c, clip.c, transform.c, ...) must not be
  * built; firmware/CMakeLists.txt builds src/playback.c, raster.c, dither.c,
- * output.c, shade.c, status.c, frame_memory.c and div64.c.  Needs
+ * output.c, shade.c, status.c, frame_memory.c, div64.c and edge_aa.c.  Needs
  * STP_WITH_SHADOWS 0. */
 #ifndef STP_PLAYBACK_ONLY
 #define STP_PLAYBACK_ONLY 0

@@ -159,7 +159,7 @@ size_t stp_renderer_size(void);
 #ifndef STP_RENDERER_BYTES
 #define STP_RENDERER_BYTES                                                                      \
     (1024u + 32u * STP_MAX_SEGMENTS + (48u + 112u * STP_WITH_SHADOWS) * STP_MAX_LIGHTS + 64u + 44u * STP_VERTEX_CACHE +          \
-     96u * (STP_MAX_POLYGON_VERTICES + 5u))
+     (96u + 32u * STP_WITH_EDGE_AA) * (STP_MAX_POLYGON_VERTICES + 5u))
 #endif
 typedef union stp_renderer_storage {
     int64_t align_integer;
@@ -436,6 +436,17 @@ typedef struct stp_output {
                                         band_rows * width bytes; the error
                                         rows carry across bands, so bands
                                         equal the whole frame. */
+    int edge_aa;                     /* 1: anti-aliased polygon edges: the
+                                        pixels just outside an opaque,
+                                        unshadowed polygon's edges blend its
+                                        shade with what is under them by the
+                                        part of them it covers (a 1-bit port's
+                                        band is then drawn as GREY8, as for
+                                        diffusion, and thresholded by the
+                                        cell as it is flushed); 0: off.
+                                        Needs STP_WITH_EDGE_AA, else
+                                        STP_ERR_UNSUPPORTED; the ray tracer
+                                        ignores it. */
 } stp_output;
 
 /* Memory the caller lends to one stp_renderer_render call.
@@ -474,7 +485,8 @@ typedef struct stp_frame_memory {
 
 /* The default output: the Z buffer (without STP_WITH_ZBUFFER the painter's
  * sort, without that display-file order), the Bayer 4x4 cell, the linear
- * gamma, no style table, background 0 (black, OFF).  STP_ERR_ARG for NULL. */
+ * gamma, no style table, background 0 (black, OFF), no error diffusion, no edge
+ * anti-aliasing.  STP_ERR_ARG for NULL. */
 int stp_output_default(stp_output *output);
 
 /* Bytes of frame memory for band_rows rows of port (hidden: the method
@@ -488,7 +500,8 @@ size_t stp_frame_memory_bytes(const stp_port *port, stp_hidden hidden, uint32_t 
  * of a stp_renderer_render call for port and output (NULL: stp_output_default): the
  * painter's sort array first (stp_renderer_polygon_count(r) entries, so call it after
  * the last polygon), then for the Z buffer one 16-bit entry per pixel of a
- * band, then the band, with as many rows as fit, at most port->height.
+ * band, then the band (of GREY8 rows for a MONO1 port the output diffuses or
+ * anti-aliases), with as many rows as fit, at most port->height.
  * More rows: fewer passes over the display file (the picture is the same).
  * Errors: STP_ERR_ARG (a NULL argument; r may be NULL unless the method is
  * the painter's; an unknown pixel format), STP_ERR_MEMORY (not even one row

@@ -73,4 +73,5 @@ void stp_scene_data_output(const stp_scene_data *s, stp_output *out)
     out->background = s->background;
     out->background_colour = 0;
     out->diffusion = s->diffusion;
+    out->edge_aa = 0; /* compiled scenes: STP_WITH_EDGE_AA 0 */
 }

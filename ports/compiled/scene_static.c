@@ -17,4 +17,7 @@ void stp_scene_static_output(const stp_scene_static *s, stp_output *out)
     out->gamma = s->gamma;
     out->styles = 0;
     out->background = s->background;
+    out->background_colour = 0;
+    out->diffusion = 0; /* a static scene is not diffused */
+    out->edge_aa = 0;   /* compiled scenes: STP_WITH_EDGE_AA 0 */
 }

@@ -110,6 +110,7 @@ int torus_render(stp_renderer *r, stp_port *port, const stp_frame_memory *mem)
     out.background = 0;
     out.background_colour = 0;
     out.diffusion = 0; /* a halftone cell, no error diffusion */
+    out.edge_aa = 0;
     return stp_renderer_render(r, port, &out, mem);
 }
 

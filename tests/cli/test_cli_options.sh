@@ -44,7 +44,7 @@ usage_error() {
 
 # --- 1. options the renderer or the output does not use
 for o in "--shadows 64" "--hidden painter" "--smooth" "--backface" "--no-shading" \
-         "--transparent" "--slices 8" "--stacks 4"; do
+         "--transparent" "--slices 8" "--stacks 4" "--edge-aa"; do
     # shellcheck disable=SC2086
     usage_error render "${o%% *} is an option of the polygon renderer" \
         render "$scene" --raytrace $o -o "$work/out.pbm"
@@ -57,6 +57,13 @@ for o in "--depth 2" "--min-weight 0.5" "--no-hierarchy"; do
     # shellcheck disable=SC2086
     usage_error compile "${o%% *} is an option of the ray tracer" compile "$scene" $o -o "$work/out.c"
 done
+usage_error compile "--edge-aa is not supported for compiled scenes" compile "$scene" --edge-aa -o "$work/out.c"
+# --edge-aa changes the grey picture and keeps its size and format
+if "$stipple" render "$scene" --edge-aa -s 64x32 -o "$work/aa.pgm" &&
+        "$stipple" render "$scene" -s 64x32 -o "$work/plain.pgm" &&
+        [ "$(head -c 15 "$work/aa.pgm")" = "$(head -c 15 "$work/plain.pgm")" ] &&
+        ! cmp -s "$work/aa.pgm" "$work/plain.pgm"; then ok
+else bad "render --edge-aa: no picture, or the same as without"; fi
 usage_error render "--dither halftones 1-bit pictures" render "$scene" -d bayer8 -o "$work/out.pgm"
 usage_error render "--spacing halftones 1-bit pictures" render "$scene" --spacing cubic -o "$work/out.ppm"
 usage_error render "--levels: text has 16 levels" render "$scene" -l 8 -o "$work/out.txt"

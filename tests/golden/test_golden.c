@@ -92,6 +92,52 @@ static void test_golden_smooth_teapot(void **state)
 
 #endif
 
+#if STP_WITH_EDGE_AA
+/* Edge anti-aliasing (--edge-aa) on teapot-s1 against its golden, and bands
+ * of 1, 3 and 7 rows equal to the whole frame, ordered dither and
+ * Floyd-Steinberg, flat and (teapot-s2) Gouraud. */
+static void test_golden_edge_aa(void **state)
+{
+    static const char *const names[] = {"teapot-s1", "teapot-s2"};
+    static const int bands[] = {1, 3, 7};
+    size_t n, b;
+    int smooth, diffuse;
+    (void)state;
+    for (n = 0; n < 2; n++) {
+        stp_scene scene;
+        stp_test_load_scene(names[n], &scene);
+        for (smooth = 0; smooth < 1 + STP_WITH_GOURAUD; smooth++)
+            for (diffuse = 0; diffuse < 2; diffuse++) {
+                stp_tool_options opt;
+                stp_posix_frame whole, plain, banded;
+                stp_tool_options_default(&opt);
+                opt.edge_aa = 1;
+                opt.smooth = smooth;
+                if (diffuse)
+                    opt.dither = STP_TOOL_DITHER_DIFFUSE; /* Floyd-Steinberg, serpentine */
+                render(&scene, &opt, &whole, STP_PIXEL_MONO1);
+                if (n == 0 && !smooth && !diffuse)
+                    assert_int_equal(compare_golden(&whole, "teapot-s1-edge-aa-128x64"), 0);
+                opt.edge_aa = 0;
+                render(&scene, &opt, &plain, STP_PIXEL_MONO1);
+                opt.edge_aa = 1;
+                assert_memory_not_equal(plain.pixels, whole.pixels, whole.stride * whole.height);
+                stp_posix_frame_free(&plain);
+                for (b = 0; b < sizeof bands / sizeof bands[0]; b++) {
+                    opt.band_rows = bands[b];
+                    render(&scene, &opt, &banded, STP_PIXEL_MONO1);
+                    if (memcmp(banded.pixels, whole.pixels, whole.stride * whole.height) != 0)
+                        fail_msg("%s smooth %d diffusion %d: bands of %d rows differ from the frame",
+                                 names[n], smooth, diffuse, bands[b]);
+                    stp_posix_frame_free(&banded);
+                }
+                stp_posix_frame_free(&whole);
+            }
+        stp_scene_free(&scene);
+    }
+}
+#endif
+
 #if STP_WITH_SHADOWS || STP_WITH_RAYTRACE
 /* Render each named scene at 128 x 64 with the default options changed by
  * `adjust` and compare it with tests/golden/<name><suffix>.pbm.  Returns
@@ -289,6 +335,9 @@ int main(void)
         cmocka_unit_test(test_golden_128x64),
 #if STP_WITH_GOURAUD
         cmocka_unit_test(test_golden_smooth_teapot),
+#endif
+#if STP_WITH_EDGE_AA
+        cmocka_unit_test(test_golden_edge_aa),
 #endif
 #if STP_WITH_COLOUR
         cmocka_unit_test(test_golden_colour),

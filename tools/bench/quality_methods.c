@@ -95,6 +95,24 @@ static void blue_noise(stp_tool_options *opt)
     opt->dither = STP_TOOL_DITHER_BLUE_NOISE;
     opt->levels = 256;
 }
+/* edge anti-aliasing (--edge-aa) beside the same method without it */
+static void edge_aa16(stp_tool_options *opt)
+{
+    opt->edge_aa = 1;
+}
+
+static void still_edge_aa(stp_tool_options *opt)
+{
+    stp_tool_still_defaults(opt);
+    opt->edge_aa = 1;
+}
+
+static void blue_noise_exposed_edge_aa(stp_tool_options *opt)
+{
+    blue_noise_exposed(opt);
+    opt->edge_aa = 1;
+}
+
 static void bayer16(stp_tool_options *opt)
 {
     opt->dither = STP_TOOL_DITHER_BAYER16;
@@ -139,6 +157,9 @@ static const qm_method methods[] = {
     {"jjn", jjn, 0},
     {"stucki", stucki, 0},
     {"burkes", burkes, 0},
+    {"bayer4, 16, --edge-aa", edge_aa16, 0},
+    {"still, --edge-aa", still_edge_aa, 0},
+    {"blue-noise, exposure, --edge-aa", blue_noise_exposed_edge_aa, 0},
     {"ideal + bayer4", 0, bayer4_on_ideal},
     {"ideal + floyd-steinberg", 0, fs_on_ideal},
     {QM_IDEAL_FS, still, fs_on_ideal},

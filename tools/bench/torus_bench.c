@@ -4,6 +4,7 @@
  * at 128x64, 400x240 and 640x480.
  *
  * usage: torus_bench [--frames N] [--rounds N] [--size WxH]... [--pbm PREFIX]
+ *                    [--spin] [--edge-aa]
  *   --frames N   frames per timed batch (default 200)
  *   --rounds N   batches per size, the sizes interleaved; each size's figure
  *                is its fastest batch, so a busy machine inflates it least
@@ -14,6 +15,8 @@
  *   --pbm PREFIX write each size's last frame to PREFIX-WxH.pbm
  *   --spin       spin the model: each frame is entered through a new model
  *                transform (tilt 20 degrees, spin 3 degrees more each frame)
+ *   --edge-aa    anti-aliased polygon edges (stp_output.edge_aa; the band
+ *                is then drawn grey and thresholded by the cell)
  * Prints one line per size: "WxH us_per_frame". Instructions per frame are
  * counted by tools/bench/torus_bench.sh, which runs this under callgrind
  * with --toggle-collect=torus_frame (only the frames are counted).
@@ -64,7 +67,7 @@ int main(int argc, char **argv)
 {
     int sizes[MAX_SIZES][2], nsizes = 0, frames = 200, rounds = 5, i, k, round;
     const char *pbm = 0;
-    int spin = 0;
+    int spin = 0, edge_aa = 0;
     long frame_no = 0;
     static torus_bench bench[MAX_SIZES];
     double best[MAX_SIZES];
@@ -84,11 +87,13 @@ int main(int argc, char **argv)
             nsizes++;
         } else if (!strcmp(argv[i], "--spin")) {
             spin = 1;
+        } else if (!strcmp(argv[i], "--edge-aa")) {
+            edge_aa = 1;
         } else if (!strcmp(argv[i], "--pbm") && i + 1 < argc) {
             pbm = argv[++i];
         } else {
             fprintf(stderr, "usage: torus_bench [--frames N] [--rounds N] [--size WxH]... "
-                            "[--pbm PREFIX] [--spin]\n");
+                            "[--pbm PREFIX] [--spin] [--edge-aa]\n");
             return 2;
         }
     }
@@ -107,6 +112,20 @@ int main(int argc, char **argv)
         if (torus_bench_init(&bench[k], sizes[k][0], sizes[k][1], err, sizeof err) != 0) {
             fprintf(stderr, "torus_bench: %dx%d: %s\n", sizes[k][0], sizes[k][1], err);
             return 1;
+        }
+        if (edge_aa) {
+            /* anti-aliased edges: the 1-bit band is drawn grey (render.h) */
+            size_t bytes = (size_t)sizes[k][0] * (size_t)sizes[k][1];
+            uint8_t *grey = malloc(bytes);
+            if (!grey) {
+                fprintf(stderr, "torus_bench: out of memory\n");
+                return 1;
+            }
+            free(bench[k].band);
+            bench[k].band = grey;
+            bench[k].memory.band = grey;
+            bench[k].memory.band_size = bytes;
+            bench[k].output.edge_aa = 1;
         }
         best[k] = 1e30;
     }

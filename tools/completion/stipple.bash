@@ -12,7 +12,7 @@ _stipple_commands="render dither scene compile bench help"
 _stipple_shared="--size --levels --dither --spacing --gamma --gamma-k --hidden --backface
  --no-shading --smooth --color --transparent --light --bright --ambient
  --attenuation --raw-power --parallel --fov --slices --stacks --shadows --raytrace --depth
- --min-weight --no-hierarchy --background --exposure --grey"
+ --min-weight --no-hierarchy --background --exposure --grey --edge-aa"
 
 _stipple_options() {
     case $1 in
