@@ -940,6 +940,14 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
 #endif
     }
 }
+/* Flat triangles take their own path unless the edge pass is on: it reads
+ * the general path's crossings. */
+#if STP_WITH_EDGE_AA
+#define TRIANGLE_PATH(fr) ((fr)->aa.out == 0)
+#else
+#define TRIANGLE_PATH(fr) 1
+#endif
+
 #if STP_WITH_EDGE_AA
 #if STP_WITH_ZBUFFER
 #define EDGE_AA_DEPTH(v) (v)
@@ -974,12 +982,7 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
     depth_plane pl = {0, 0, 0, 0, 0};
     int64_t d_row = 0;
 #endif
-#if STP_WITH_EDGE_AA
-    /* the edge pass reads the general path's crossings */
-    if (n == 3 && !smooth && fr->aa.out == 0) {
-#else
-    if (n == 3 && !smooth) {
-#endif
+    if (n == 3 && !smooth && TRIANGLE_PATH(fr)) {
         draw_triangle(fr, at, v, style, use_z, t, ordinal); /* the painter's order comes here */
         return;
     }
@@ -1121,7 +1124,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
             if (in->op >= 3) {
                 if (skip_polygons || !(pass == 0 || (pass == 1) == (t == 0)))
                     ;
-                else if (in->op == 3 && !polygon_smooth(in))
+                else if (in->op == 3 && !polygon_smooth(in) && TRIANGLE_PATH(fr))
                     draw_triangle(fr, k, in, style, use_z, t, ordinal);
                 else
                     draw_polygon(fr, k, style, use_z, t, ordinal);
