@@ -2,6 +2,7 @@
 /* MAKE-SHADE, INTENSITY and gamma tables: see include/stipple/shade.h. */
 #include "stipple/shade.h"
 #include "fix_private.h"
+#include "recip_private.h"
 #include "shade_private.h"
 
 #define F STP_FIX_FRAC_BITS
@@ -47,13 +48,13 @@ static stp_fix fresnel(stp_fix c, stp_fix n)
     g = (int64_t)stp_sqrt64_fast((uint64_t)g2); /* < 2^31: g2 < 2^62 */
     gmc = g - c;
     gpc = g + c; /* > 0: g >= 0 and c > 0 */
-    r = (gmc * ONE) / gpc; /* |r| <= 1 */
+    r = stp_div64_fast(gmc * ONE, gpc); /* |r| <= 1 */
     r2 = (r * r) >> F;
     num = ((c * gpc) >> F) - ONE;
     den = stp_asr64(c * gmc, F) + ONE;
     if (den <= 0)
         return ONE; /* t -> infinity: the bracket, and F, saturate */
-    t = stp_fix_sat64((num * ONE) / den);
+    t = stp_fix_sat64(stp_div64_fast(num * ONE, den));
     t2 = (t * t) >> F; /* < 2^62 >> F */
     /* r2 <= 2^F and ONE + t2 < 2^47: the product fits */
     fr = (r2 * (ONE + t2)) >> (F + 1);
@@ -117,10 +118,10 @@ static int64_t specular_share_unit(const stp_material *material, int64_t n_dot_h
     stp_fix f;
     if (n_dot_h > one)
         n_dot_h = one;
-    q = one - ((one - n_dot_h) << STP_UNIT_BITS) / (k + one - n_dot_h);
+    q = one - stp_div64_fast((one - n_dot_h) << STP_UNIT_BITS, k + one - n_dot_h);
     d = (q * q) >> STP_UNIT_BITS;
-    g_ne = ((2 * m * n_dot_h) / n_dot_e << STP_UNIT_BITS) / e_dot_h;
-    cap = (one << STP_UNIT_BITS) / n_dot_e;
+    g_ne = stp_div64_fast(stp_div64_fast(2 * m * n_dot_h, n_dot_e) << STP_UNIT_BITS, e_dot_h);
+    cap = stp_div64_fast(one << STP_UNIT_BITS, n_dot_e);
     if (cap < g_ne)
         g_ne = cap;
     ec = (e_dot_h + ((int64_t)1 << (STP_UNIT_BITS - F - 1))) >> (STP_UNIT_BITS - F);
@@ -209,7 +210,7 @@ static stp_fix shade_unit(const stp_lighting *lighting, const stp_material *mate
         power = light->power < 0 ? 0 : light->power;
         if (term < 0)
             term = 0;
-        term = stp_mul_shift_sat(term, power, 0) / (c + u);
+        term = stp_div64_fast(stp_mul_shift_sat(term, power, 0), c + u);
         if (term > term_cap)
             term = term_cap;
         if (terms)
