@@ -29,22 +29,6 @@ static const uint16_t RECIP_SEED[128] STP_TABLE = {
     33757u, 33622u, 33487u, 33354u, 33222u, 33091u, 32961u, 32832u,
 };
 
-/* a b exactly for 32-bit a and b: one instruction on 64-bit hosts, four
- * 32-bit products of 16-bit halves elsewhere (ARMv6-M has no 32 x 32 -> 64
- * multiply; the library's 64-bit one costs ~40 instructions a call) */
-static inline uint64_t mul32x32(uint32_t a, uint32_t b)
-{
-#if STP_WIDE_ARITH
-    return (uint64_t)a * b;
-#else
-    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
-    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
-    return ((uint64_t)(hh + (lh >> 16) + (hl >> 16) + (mid >> 16)) << 32) |
-           (uint64_t)((mid << 16) | (ll & 0xFFFFu));
-#endif
-}
-
 static int bit_length32(uint32_t v)
 {
 #if defined(__GNUC__) && UINT_MAX >= 0xFFFFFFFFu
@@ -84,21 +68,22 @@ uint32_t stp_recip32(uint32_t d)
     /* y1 ~ 2^63 / d within 2^-17.  Step 2 straight into v's scale:
      * v ~ 2 y1 - 2^32 + y1 e / 2^62 with the exact error e = 2^63 - d y1
      * (|e| < 2^47, so e / 2^15 fits 32 bits).  Newton's step lands below
-     * 2^64 / d (by the square of y1's error, under a unit here) and the
-     * products are rounded down, so v is at most the floor and short of it
-     * by at most 3 (checked for every d) */
-    p = mul32x32(d, y1);
+     * 2^64 / d by the square of y1's error (under a unit here), the
+     * products are rounded down and y1's own rounding adds a unit either
+     * way: v is within a few units of the floor (over every d: one above
+     * it for 378 values of d, up to 2 below), corrected below */
+    p = stp_umul32x32(d, y1);
     if (d == 0x80000000u)
         return 0xFFFFFFFFu; /* 2^64 / d - 2^32 = 2^32 exactly: the floor is one less */
     vv = 2 * (int64_t)y1 - ((int64_t)1 << 32);
     if (p <= ((uint64_t)1 << 63))
-        vv += (int64_t)(mul32x32(y1, (uint32_t)((((uint64_t)1 << 63) - p) >> 15)) >> 47);
+        vv += (int64_t)(stp_umul32x32(y1, (uint32_t)((((uint64_t)1 << 63) - p) >> 15)) >> 47);
     else
-        vv -= (int64_t)(mul32x32(y1, (uint32_t)((p - ((uint64_t)1 << 63)) >> 15)) >> 47) + 1;
+        vv -= (int64_t)(stp_umul32x32(y1, (uint32_t)((p - ((uint64_t)1 << 63)) >> 15)) >> 47) + 1;
     v = vv < 0 ? 0u : (vv > 0xFFFFFFFF ? 0xFFFFFFFFu : (uint32_t)vv);
-    /* r = 2^64 - 1 - (2^32 + v) d, brought below d; the product cannot
-     * reach 2^64 (v at most the floor), guarded all the same */
-    p = mul32x32(d, v) + ((uint64_t)d << 32);
+    /* (2^32 + v) d brought to at most 2^64 - 1 (a wrapped sum is below
+     * d 2^32), then r = 2^64 - 1 - (2^32 + v) d below d */
+    p = stp_umul32x32(d, v) + ((uint64_t)d << 32);
     while (p < ((uint64_t)d << 32)) { /* wrapped: v above the floor */
         v--;
         p -= d;
@@ -118,7 +103,7 @@ uint32_t stp_recip32(uint32_t d)
  * Granlund, 2011). */
 static inline uint32_t div_2by1(uint32_t u1, uint32_t u0, uint32_t d, uint32_t v, uint32_t *rem)
 {
-    uint64_t qq = mul32x32(v, u1) + ((((uint64_t)u1 + 1u) << 32) | u0); /* mod 2^64 */
+    uint64_t qq = stp_umul32x32(v, u1) + ((((uint64_t)u1 + 1u) << 32) | u0); /* mod 2^64 */
     uint32_t q1 = (uint32_t)(qq >> 32), q0 = (uint32_t)qq, r = u0 - q1 * d;
     if (r > q0) {
         q1--;
@@ -165,7 +150,7 @@ uint64_t stp_udiv64_recip(uint64_t n, uint64_t d)
         uint32_t d1 = (uint32_t)(dd >> 32), d0 = (uint32_t)dd, q;
         v = stp_recip32(d1);
         q = div_2by1(w2, w1, d1, v, &r);
-        while (mul32x32(q, d0) > (((uint64_t)r << 32) | w0)) {
+        while (stp_umul32x32(q, d0) > (((uint64_t)r << 32) | w0)) {
             q--;
             if (r > 0xFFFFFFFFu - d1)
                 break; /* r + d1 >= 2^32: the test can no longer fail */

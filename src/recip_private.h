@@ -20,6 +20,34 @@
 #endif
 #endif
 
+/* a b exactly for 32-bit a and b: one instruction on 64-bit hosts, four
+ * 32-bit products of 16-bit halves elsewhere (ARMv6-M has no 32 x 32 -> 64
+ * multiply; the library's 64-bit one costs ~40 instructions a call). */
+static inline uint64_t stp_umul32x32(uint32_t a, uint32_t b)
+{
+#if STP_WIDE_ARITH
+    return (uint64_t)a * b;
+#else
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
+    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    return ((uint64_t)(hh + (lh >> 16) + (hl >> 16) + (mid >> 16)) << 32) |
+           (uint64_t)((mid << 16) | (ll & 0xFFFFu));
+#endif
+}
+
+/* a b exactly for signed 32-bit a and b */
+static inline int64_t stp_smul32x32(int32_t a, int32_t b)
+{
+#if STP_WIDE_ARITH
+    return (int64_t)a * b;
+#else
+    uint64_t p = stp_umul32x32(a < 0 ? 0u - (uint32_t)a : (uint32_t)a,
+                               b < 0 ? 0u - (uint32_t)b : (uint32_t)b);
+    return (a < 0) != (b < 0) ? -(int64_t)p : (int64_t)p;
+#endif
+}
+
 /* The reciprocal of d in [2^31, 2^32): floor((2^64 - 1) / d) - 2^32, in
  * [0, 2^32), so 2^32 + result approximates 2^64 / d to within one unit.
  * Exact (the floor, not an estimate): a 128-entry table of 16-bit seeds
