@@ -29,6 +29,19 @@ static const uint16_t RECIP_SEED[128] STP_TABLE = {
     33757u, 33622u, 33487u, 33354u, 33222u, 33091u, 32961u, 32832u,
 };
 
+/* The high word of a b for 32-bit a and b, short of floor(a b / 2^32) by
+ * at most 2 (the carries out of the low partial products are dropped):
+ * three 32-bit products on 32-bit targets */
+static inline uint32_t mulhi_low(uint32_t a, uint32_t b)
+{
+#if STP_WIDE_ARITH
+    return (uint32_t)(((uint64_t)a * b) >> 32);
+#else
+    uint32_t ah = a >> 16, bh = b >> 16;
+    return ah * bh + ((ah * (b & 0xFFFFu)) >> 16) + (((a & 0xFFFFu) * bh) >> 16);
+#endif
+}
+
 static int bit_length32(uint32_t v)
 {
 #if defined(__GNUC__) && UINT_MAX >= 0xFFFFFFFFu
@@ -49,7 +62,6 @@ uint32_t stp_recip32(uint32_t d)
 {
     uint32_t y0, y1, u, dh = d >> 16, dl = d & 0xFFFFu, at, corr, v;
     uint64_t p, r;
-    int64_t vv;
     if (d < 0x80000000u)
         return 0;
     y0 = STP_TABLE_U16(&RECIP_SEED[(d >> 24) & 127u]); /* ~ 2^47 / d */
@@ -72,15 +84,19 @@ uint32_t stp_recip32(uint32_t d)
      * products are rounded down and y1's own rounding adds a unit either
      * way: v is within a few units of the floor (over every d: one above
      * it for 378 values of d, up to 2 below), corrected below */
-    p = stp_umul32x32(d, y1);
     if (d == 0x80000000u)
         return 0xFFFFFFFFu; /* 2^64 / d - 2^32 = 2^32 exactly: the floor is one less */
-    vv = 2 * (int64_t)y1 - ((int64_t)1 << 32);
-    if (p <= ((uint64_t)1 << 63))
-        vv += (int64_t)(stp_umul32x32(y1, (uint32_t)((((uint64_t)1 << 63) - p) >> 15)) >> 47);
-    else
-        vv -= (int64_t)(stp_umul32x32(y1, (uint32_t)((p - ((uint64_t)1 << 63)) >> 15)) >> 47) + 1;
-    v = vv < 0 ? 0u : (vv > 0xFFFFFFFF ? 0xFFFFFFFFu : (uint32_t)vv);
+    if (y1 < 0x80000000u)
+        y1 = 0x80000000u; /* 2^63 / d > 2^31: clamping moves towards it */
+    p = stp_umul32x32(d, y1);
+    v = y1 << 1; /* 2 y1 - 2^32 */
+    if (p <= ((uint64_t)1 << 63)) {
+        uint32_t c = mulhi_low(y1, (uint32_t)((((uint64_t)1 << 63) - p) >> 15)) >> 15;
+        v = c > 0xFFFFFFFFu - v ? 0xFFFFFFFFu : v + c;
+    } else {
+        uint32_t c = (mulhi_low(y1, (uint32_t)((p - ((uint64_t)1 << 63)) >> 15)) >> 15) + 2u;
+        v = c > v ? 0u : v - c;
+    }
     /* (2^32 + v) d brought to at most 2^64 - 1 (a wrapped sum is below
      * d 2^32), then r = 2^64 - 1 - (2^32 + v) d below d */
     p = stp_umul32x32(d, v) + ((uint64_t)d << 32);

@@ -46,6 +46,17 @@ void stp_material_default(stp_material *material)
     material->colour[0] = material->colour[1] = material->colour[2] = ONE;
 }
 
+/* stp_mul_shift_sat (fix_private.h) with its common case, a < 2^31 and
+ * b < 2^32, through MUL_U32: the same value */
+static inline int64_t mul_shift_sat(int64_t a, int64_t b, int s)
+{
+#if !STP_WIDE_ARITH
+    if (((uint64_t)a >> 31) == 0 && ((uint64_t)b >> 32) == 0)
+        return MUL_U32(a, b) >> s;
+#endif
+    return stp_mul_shift_sat(a, b, s);
+}
+
 #if STP_WITH_SPECULAR || STP_WITH_RAYTRACE
 /* Fresnel factor (10.6)-(10.8) in the listing's order of operations.
  * c = E.H in (0, 1], n > 0.  Result clamped to [0, 1]. */
@@ -158,8 +169,8 @@ static int64_t specular_share_unit(const stp_material *material, int64_t n_dot_h
     f = fresnel(ec < 1 ? 1 : (ec > ONE ? ONE : (stp_fix)ec),
                 material->refraction <= 0 ? 1 : material->refraction);
     df = MUL_U32(d, f) >> F; /* D, F in [0, 1]: STP_UNIT */
-    df = stp_mul_shift_sat(df, g_ne, STP_UNIT_BITS);
-    df = stp_mul_shift_sat(df, material->specular < 0 ? 0 : material->specular, F);
+    df = mul_shift_sat(df, g_ne, STP_UNIT_BITS);
+    df = mul_shift_sat(df, material->specular < 0 ? 0 : material->specular, F);
     return df > ((int64_t)1 << 45) ? (int64_t)1 << 45 : df;
 }
 #endif
@@ -250,7 +261,7 @@ static stp_fix shade_unit(const stp_lighting *lighting, const stp_material *mate
         power = light->power < 0 ? 0 : light->power;
         if (term < 0)
             term = 0;
-        term = stp_div64_fast(stp_mul_shift_sat(term, power, 0), c + u);
+        term = stp_div64_fast(mul_shift_sat(term, power, 0), c + u);
         if (term > term_cap)
             term = term_cap;
         if (terms)
@@ -262,7 +273,7 @@ static stp_fix shade_unit(const stp_lighting *lighting, const stp_material *mate
         return 0;
     /* BRIGHT times the sum, still in STP_UNIT, then min(1, .) and one
      * rounding to stp_fix */
-    sum = stp_mul_shift_sat(sum, lighting->brightness, F);
+    sum = mul_shift_sat(sum, lighting->brightness, F);
     if (sum >= STP_UNIT_ONE)
         return ONE;
     return (stp_fix)((sum + ((int64_t)1 << (up - 1))) >> up);
