@@ -79,11 +79,11 @@ uint32_t stp_recip32(uint32_t d)
         y1 = corr > 0xFFFFFFFFu - y1 ? 0xFFFFFFFFu : y1 + corr;
     /* y1 ~ 2^63 / d within 2^-17.  Step 2 straight into v's scale:
      * v ~ 2 y1 - 2^32 + y1 e / 2^62 with the exact error e = 2^63 - d y1
-     * (|e| < 2^47, so e / 2^15 fits 32 bits).  Newton's step lands below
-     * 2^64 / d by the square of y1's error (under a unit here), the
-     * products are rounded down and y1's own rounding adds a unit either
-     * way: v is within a few units of the floor (over every d: one above
-     * it for 378 values of d, up to 2 below), corrected below */
+     * (|e| < 2^47, so e / 2^15 fits 32 bits), the product's high word from
+     * three partial products (mulhi_low).  Newton's step lands below
+     * 2^64 / d by the square of y1's error (under a unit here) and every
+     * rounding is downwards: over all 2^31 values of d, v is the floor or
+     * up to 2 below it (0.14 corrections on average), corrected below */
     if (d == 0x80000000u)
         return 0xFFFFFFFFu; /* 2^64 / d - 2^32 = 2^32 exactly: the floor is one less */
     if (y1 < 0x80000000u)
