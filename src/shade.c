@@ -2,10 +2,23 @@
 /* MAKE-SHADE, INTENSITY and gamma tables: see include/stipple/shade.h. */
 #include "stipple/shade.h"
 #include "fix_private.h"
+#include "recip_private.h"
 #include "shade_private.h"
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
+
+/* Products of operands known to fit 32 bits (MUL_U32: unsigned, MUL_S32:
+ * signed), as int64_t: C's 64-bit product on 64-bit hosts, from 16-bit
+ * halves on 32-bit targets (recip_private.h), where C's is a library call
+ * for any 64-bit operands. */
+#if STP_WIDE_ARITH
+#define MUL_U32(a, b) ((int64_t)(a) * (int64_t)(b))
+#define MUL_S32(a, b) ((int64_t)(a) * (int64_t)(b))
+#else
+#define MUL_U32(a, b) ((int64_t)stp_umul32x32((uint32_t)(a), (uint32_t)(b)))
+#define MUL_S32(a, b) stp_smul32x32((int32_t)(a), (int32_t)(b))
+#endif
 
 void stp_lighting_default(stp_lighting *lighting)
 {
@@ -33,6 +46,17 @@ void stp_material_default(stp_material *material)
     material->colour[0] = material->colour[1] = material->colour[2] = ONE;
 }
 
+/* stp_mul_shift_sat (fix_private.h) with its common case, a < 2^31 and
+ * b < 2^32, through MUL_U32: the same value */
+static inline int64_t mul_shift_sat(int64_t a, int64_t b, int s)
+{
+#if !STP_WIDE_ARITH
+    if (((uint64_t)a >> 31) == 0 && ((uint64_t)b >> 32) == 0)
+        return MUL_U32(a, b) >> s;
+#endif
+    return stp_mul_shift_sat(a, b, s);
+}
+
 #if STP_WITH_SPECULAR || STP_WITH_RAYTRACE
 /* Fresnel factor (10.6)-(10.8) in the listing's order of operations.
  * c = E.H in (0, 1], n > 0.  Result clamped to [0, 1]. */
@@ -40,21 +64,22 @@ static stp_fix fresnel(stp_fix c, stp_fix n)
 {
     /* g^2 = n^2 + c^2 - 1 with 2F fractional bits: n < 2^(31-F) so
      * n^2 < 2^62 and the sum fits */
-    int64_t g2 = (int64_t)n * n + (int64_t)c * c - ((int64_t)1 << (2 * F));
+    int64_t g2 = MUL_S32(n, n) + MUL_S32(c, c) - ((int64_t)1 << (2 * F));
     int64_t g, gmc, gpc, r, r2, num, den, t, t2, fr;
     if (g2 <= 0)
         return ONE; /* n < 1 and beyond the critical angle: total reflection */
     g = (int64_t)stp_sqrt64_fast((uint64_t)g2); /* < 2^31: g2 < 2^62 */
     gmc = g - c;
     gpc = g + c; /* > 0: g >= 0 and c > 0 */
-    r = (gmc * ONE) / gpc; /* |r| <= 1 */
-    r2 = (r * r) >> F;
-    num = ((c * gpc) >> F) - ONE;
-    den = stp_asr64(c * gmc, F) + ONE;
+    r = stp_div64_fast(gmc * ONE, gpc); /* |r| <= 1 */
+    r2 = MUL_S32(r, r) >> F; /* |r| <= 2^F */
+    /* c in (0, 2^F], 0 < gpc < 2^31 + 2^F, |gmc| < 2^31 */
+    num = (MUL_U32(c, gpc) >> F) - ONE;
+    den = stp_asr64(MUL_S32(c, gmc), F) + ONE;
     if (den <= 0)
         return ONE; /* t -> infinity: the bracket, and F, saturate */
-    t = stp_fix_sat64((num * ONE) / den);
-    t2 = (t * t) >> F; /* < 2^62 >> F */
+    t = stp_fix_sat64(stp_div64_fast(num * ONE, den));
+    t2 = MUL_S32(t, t) >> F; /* t is stp_fix: < 2^62 >> F */
     /* r2 <= 2^F and ONE + t2 < 2^47: the product fits */
     fr = (r2 * (ONE + t2)) >> (F + 1);
     return fr > ONE ? ONE : (stp_fix)fr;
@@ -117,21 +142,46 @@ static int64_t specular_share_unit(const stp_material *material, int64_t n_dot_h
     stp_fix f;
     if (n_dot_h > one)
         n_dot_h = one;
-    q = one - ((one - n_dot_h) << STP_UNIT_BITS) / (k + one - n_dot_h);
-    d = (q * q) >> STP_UNIT_BITS;
-    g_ne = ((2 * m * n_dot_h) / n_dot_e << STP_UNIT_BITS) / e_dot_h;
-    cap = (one << STP_UNIT_BITS) / n_dot_e;
+    q = one - stp_div64_fast((one - n_dot_h) << STP_UNIT_BITS, k + one - n_dot_h);
+    d = MUL_U32(q, q) >> STP_UNIT_BITS; /* q in [0, 2^30] */
+#if STP_WIDE_ARITH
+    /* one instruction a quotient: dividing is cheaper than the tests below */
+    g_ne = stp_div64_fast(stp_div64_fast(2 * m * n_dot_h, n_dot_e) << STP_UNIT_BITS, e_dot_h);
+    cap = stp_div64_fast(one << STP_UNIT_BITS, n_dot_e);
     if (cap < g_ne)
         g_ne = cap;
+#else
+    /* the same values with fewer quotients: (2 m N.H)/(N.E) is 2 N.H
+     * exactly when m = N.E (the eye no higher than the light), and the cap
+     * floor(2^60/(N.E)) is below g_ne exactly when g_ne N.E > 2^60 (g_ne
+     * an integer; below 2^32 the product fits) */
+    g_ne = m == n_dot_e ? 2 * n_dot_h
+                        : stp_div64_fast(MUL_U32(2 * m, n_dot_h), n_dot_e);
+    g_ne = stp_div64_fast(g_ne << STP_UNIT_BITS, e_dot_h);
+    if (g_ne >= ((int64_t)1 << 32) ||
+        MUL_U32(g_ne, n_dot_e) > (one << STP_UNIT_BITS)) {
+        cap = stp_div64_fast(one << STP_UNIT_BITS, n_dot_e);
+        if (cap < g_ne)
+            g_ne = cap;
+    }
+#endif
     ec = (e_dot_h + ((int64_t)1 << (STP_UNIT_BITS - F - 1))) >> (STP_UNIT_BITS - F);
     f = fresnel(ec < 1 ? 1 : (ec > ONE ? ONE : (stp_fix)ec),
                 material->refraction <= 0 ? 1 : material->refraction);
-    df = (d * f) >> F; /* D, F in [0, 1]: STP_UNIT */
-    df = stp_mul_shift_sat(df, g_ne, STP_UNIT_BITS);
-    df = stp_mul_shift_sat(df, material->specular < 0 ? 0 : material->specular, F);
+    df = MUL_U32(d, f) >> F; /* D, F in [0, 1]: STP_UNIT */
+    df = mul_shift_sat(df, g_ne, STP_UNIT_BITS);
+    df = mul_shift_sat(df, material->specular < 0 ? 0 : material->specular, F);
     return df > ((int64_t)1 << 45) ? (int64_t)1 << 45 : df;
 }
 #endif
+
+/* stp_unit_dot (fix_private.h) with MUL_S32's products: the same value,
+ * without the 64-bit multiply library call on 32-bit targets */
+static inline int32_t unit_dot(stp_unit3 a, stp_unit3 b)
+{
+    int64_t s = MUL_S32(a.x, b.x) + MUL_S32(a.y, b.y) + MUL_S32(a.z, b.z);
+    return (int32_t)stp_asr64(s + ((int64_t)1 << (STP_UNIT_BITS - 1)), STP_UNIT_BITS);
+}
 
 /* MAKE-SHADE on STP_UNIT directions: the shade of a point with unit normal
  * n seen along unit e (towards the eye; n_dot_e = N.E, STP_UNIT).  The
@@ -179,22 +229,24 @@ static stp_fix shade_unit(const stp_lighting *lighting, const stp_material *mate
                             (int64_t)light->position.z - point.z, &l);
         if (u == 0)
             l = normal; /* light on the surface: lit head-on, 1/(C + 0) */
-        n_dot_l = stp_unit_dot(normal, l);
+        n_dot_l = unit_dot(normal, l);
         if (n_dot_l <= 0)
             continue;
         /* R (N.L): stp_fix times STP_UNIT, back to STP_UNIT; |.| < 2^61 */
-        term = stp_asr64((int64_t)refl * n_dot_l, F);
+        term = stp_asr64(MUL_S32(refl, n_dot_l), F);
 #if STP_WITH_SPECULAR
         if (material->specular != 0) {
             /* H = (L + E)/|L + E| is never formed: N.H = (N.L + N.E)/|L + E|
              * and E.H = (1 + E.L)/|L + E| with |L + E|^2 = 2 (1 + E.L), so
              * one reciprocal square root of a scalar serves both */
-            int64_t one_el = (int64_t)STP_UNIT_ONE + stp_unit_dot(e, l); /* in [0, 2^31] */
+            int64_t one_el = (int64_t)STP_UNIT_ONE + unit_dot(e, l); /* in [0, 2^31] */
             if (one_el > 0) { /* L + E = 0: H undefined, no highlight */
                 int ex;
                 int64_t inv = (int64_t)stp_rsqrt64((uint64_t)one_el << 1, &ex);
                 /* 1/|L + E| = inv 2^-ex 2^15 (the argument is STP_UNIT) */
-                int64_t n_dot_h = ((int64_t)n_dot_l + n_dot_e) * inv, e_dot_h = one_el * inv;
+                /* N.L, N.E > 0 here: the sums are in (0, 2^31 + 4], inv <= 2^30 */
+                int64_t n_dot_h = MUL_U32((int64_t)n_dot_l + n_dot_e, inv),
+                        e_dot_h = MUL_U32(one_el, inv);
                 n_dot_h = stp_asr64(n_dot_h + ((int64_t)1 << (ex - 16)), ex - 15);
                 e_dot_h = stp_asr64(e_dot_h + ((int64_t)1 << (ex - 16)), ex - 15);
                 /* the share DGF/(E.N) explodes as E.N -> 0: it saturates,
@@ -209,7 +261,7 @@ static stp_fix shade_unit(const stp_lighting *lighting, const stp_material *mate
         power = light->power < 0 ? 0 : light->power;
         if (term < 0)
             term = 0;
-        term = stp_mul_shift_sat(term, power, 0) / (c + u);
+        term = stp_div64_fast(mul_shift_sat(term, power, 0), c + u);
         if (term > term_cap)
             term = term_cap;
         if (terms)
@@ -221,7 +273,7 @@ static stp_fix shade_unit(const stp_lighting *lighting, const stp_material *mate
         return 0;
     /* BRIGHT times the sum, still in STP_UNIT, then min(1, .) and one
      * rounding to stp_fix */
-    sum = stp_mul_shift_sat(sum, lighting->brightness, F);
+    sum = mul_shift_sat(sum, lighting->brightness, F);
     if (sum >= STP_UNIT_ONE)
         return ONE;
     return (stp_fix)((sum + ((int64_t)1 << (up - 1))) >> up);

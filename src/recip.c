@@ -1,0 +1,185 @@
+/* SPDX-License-Identifier: MIT */
+/* Reciprocals and exact 64-bit division without a divide instruction: see
+ * recip_private.h. */
+#include "recip_private.h"
+#include "fix_private.h" /* STP_TABLE */
+
+#include <limits.h>
+
+/* RECIP_SEED[i] = round(2^24 / (257 + 2 i)): 2^47 / m at the middle of the
+ * i-th of 128 equal intervals of m in [2^31, 2^32) (m's bits 30..24 are i).
+ * Relative error against 2^47 / m anywhere in the interval: below
+ * 1/514 (2^-9.0) plus the rounding's 2^-16.  Values in [32832, 65281]. */
+static const uint16_t RECIP_SEED[128] STP_TABLE = {
+    65281u, 64777u, 64281u, 63792u, 63310u, 62836u, 62369u, 61909u,
+    61455u, 61008u, 60568u, 60133u, 59705u, 59283u, 58867u, 58457u,
+    58053u, 57654u, 57260u, 56872u, 56489u, 56111u, 55738u, 55370u,
+    55007u, 54649u, 54295u, 53946u, 53601u, 53261u, 52925u, 52593u,
+    52265u, 51942u, 51622u, 51306u, 50995u, 50686u, 50382u, 50081u,
+    49784u, 49490u, 49200u, 48913u, 48630u, 48349u, 48072u, 47798u,
+    47528u, 47260u, 46995u, 46733u, 46474u, 46218u, 45965u, 45714u,
+    45467u, 45222u, 44979u, 44739u, 44502u, 44267u, 44035u, 43805u,
+    43577u, 43352u, 43129u, 42908u, 42690u, 42474u, 42260u, 42048u,
+    41838u, 41631u, 41425u, 41222u, 41020u, 40820u, 40623u, 40427u,
+    40233u, 40041u, 39851u, 39662u, 39476u, 39291u, 39108u, 38926u,
+    38746u, 38568u, 38392u, 38217u, 38044u, 37872u, 37702u, 37533u,
+    37366u, 37200u, 37036u, 36873u, 36712u, 36552u, 36393u, 36236u,
+    36080u, 35926u, 35772u, 35620u, 35470u, 35320u, 35172u, 35026u,
+    34880u, 34735u, 34592u, 34450u, 34309u, 34169u, 34031u, 33893u,
+    33757u, 33622u, 33487u, 33354u, 33222u, 33091u, 32961u, 32832u,
+};
+
+/* The high word of a b for 32-bit a and b, short of floor(a b / 2^32) by
+ * at most 2 (the carries out of the low partial products are dropped):
+ * three 32-bit products on 32-bit targets */
+static inline uint32_t mulhi_low(uint32_t a, uint32_t b)
+{
+#if STP_WIDE_ARITH
+    return (uint32_t)(((uint64_t)a * b) >> 32);
+#else
+    uint32_t ah = a >> 16, bh = b >> 16;
+    return ah * bh + ((ah * (b & 0xFFFFu)) >> 16) + (((a & 0xFFFFu) * bh) >> 16);
+#endif
+}
+
+static int bit_length32(uint32_t v)
+{
+#if defined(__GNUC__) && UINT_MAX >= 0xFFFFFFFFu
+    return v == 0 ? 0 : 32 - __builtin_clz(v);
+#elif defined(__GNUC__)
+    return v == 0 ? 0 : 32 - __builtin_clzl(v);
+#else
+    int n = 0;
+    while (v != 0) {
+        v >>= 1;
+        n++;
+    }
+    return n;
+#endif
+}
+
+uint32_t stp_recip32(uint32_t d)
+{
+    uint32_t y0, y1, u, dh = d >> 16, dl = d & 0xFFFFu, at, corr, v;
+    uint64_t p, r;
+    if (d < 0x80000000u)
+        return 0;
+    y0 = STP_TABLE_U16(&RECIP_SEED[(d >> 24) & 127u]); /* ~ 2^47 / d */
+    /* Newton step 1 in 32 bits: y1 = y0 2^16 + y0 (2^47 - d y0) / 2^31.
+     * u = (2^47 - d y0) / 2^16 (mod 2^32; |u| < 2^23 as a signed value:
+     * the seed's error is below 2^-8.9); at / 2^8 keeps 15 bits of it, so
+     * y0 (at >> 8) < 2^31 */
+    u = 0x80000000u - dh * y0 - ((dl * y0) >> 16);
+    at = u >= 0x80000000u ? 0u - u : u;
+    corr = (y0 * (at >> 8)) >> 7;
+    y1 = y0 << 16;
+    if (u >= 0x80000000u)
+        y1 -= corr;
+    else
+        y1 = corr > 0xFFFFFFFFu - y1 ? 0xFFFFFFFFu : y1 + corr;
+    /* y1 ~ 2^63 / d within 2^-17.  Step 2 straight into v's scale:
+     * v ~ 2 y1 - 2^32 + y1 e / 2^62 with the exact error e = 2^63 - d y1
+     * (|e| < 2^47, so e / 2^15 fits 32 bits), the product's high word from
+     * three partial products (mulhi_low).  Newton's step lands below
+     * 2^64 / d by the square of y1's error (under a unit here) and every
+     * rounding is downwards: over all 2^31 values of d, v is the floor or
+     * up to 2 below it (0.14 corrections on average), corrected below */
+    if (d == 0x80000000u)
+        return 0xFFFFFFFFu; /* 2^64 / d - 2^32 = 2^32 exactly: the floor is one less */
+    if (y1 < 0x80000000u)
+        y1 = 0x80000000u; /* 2^63 / d > 2^31: clamping moves towards it */
+    p = stp_umul32x32(d, y1);
+    v = y1 << 1; /* 2 y1 - 2^32 */
+    if (p <= ((uint64_t)1 << 63)) {
+        uint32_t c = mulhi_low(y1, (uint32_t)((((uint64_t)1 << 63) - p) >> 15)) >> 15;
+        v = c > 0xFFFFFFFFu - v ? 0xFFFFFFFFu : v + c;
+    } else {
+        uint32_t c = (mulhi_low(y1, (uint32_t)((p - ((uint64_t)1 << 63)) >> 15)) >> 15) + 2u;
+        v = c > v ? 0u : v - c;
+    }
+    /* (2^32 + v) d brought to at most 2^64 - 1 (a wrapped sum is below
+     * d 2^32), then r = 2^64 - 1 - (2^32 + v) d below d */
+    p = stp_umul32x32(d, v) + ((uint64_t)d << 32);
+    while (p < ((uint64_t)d << 32)) { /* wrapped: v above the floor */
+        v--;
+        p -= d;
+    }
+    r = ~p;
+    while (r >= d) {
+        v++;
+        r -= d;
+    }
+    return v;
+}
+
+/* (u1 2^32 + u0) / d for a normalised d (top bit set), its reciprocal v
+ * (stp_recip32) and u1 < d: the quotient (below 2^32), *rem the
+ * remainder.  One 32 x 32 -> 64 product, one 32-bit product and two
+ * corrections (the division by an invariant integer of Moller and
+ * Granlund, 2011). */
+static inline uint32_t div_2by1(uint32_t u1, uint32_t u0, uint32_t d, uint32_t v, uint32_t *rem)
+{
+    uint64_t qq = stp_umul32x32(v, u1) + ((((uint64_t)u1 + 1u) << 32) | u0); /* mod 2^64 */
+    uint32_t q1 = (uint32_t)(qq >> 32), q0 = (uint32_t)qq, r = u0 - q1 * d;
+    if (r > q0) {
+        q1--;
+        r += d;
+    }
+    if (r >= d) {
+        q1++;
+        r -= d;
+    }
+    *rem = r;
+    return q1;
+}
+
+uint64_t stp_udiv64_recip(uint64_t n, uint64_t d)
+{
+    uint32_t dh = (uint32_t)(d >> 32), nh = (uint32_t)(n >> 32), nl = (uint32_t)n;
+    uint32_t w2, w1, w0, dn, v, r;
+    int s;
+    if (d == 0)
+        return UINT64_MAX;
+    if (n < d)
+        return 0;
+    /* n 2^s as three 32-bit words w2 w1 w0, s normalising d's top word */
+    s = 32 - bit_length32(dh != 0 ? dh : (uint32_t)d);
+    w2 = s != 0 ? nh >> (32 - s) : 0u;
+    w1 = s != 0 ? (nh << s) | (nl >> (32 - s)) : nh;
+    w0 = nl << s;
+    if (dh == 0) {
+        /* a one-word divisor: two steps of the 2-by-1 division (w2 < 2^s
+         * <= dn), the first skipped when its quotient word is 0 */
+        uint32_t qh = 0, ql;
+        dn = (uint32_t)d << s;
+        v = stp_recip32(dn);
+        if (w2 != 0 || w1 >= dn)
+            qh = div_2by1(w2, w1, dn, v, &w1);
+        ql = div_2by1(w1, w0, dn, v, &r);
+        return ((uint64_t)qh << 32) | ql;
+    } else {
+        /* a two-word divisor d1 d0 (normalised): the quotient is below
+         * 2^32; the estimate from w2 w1 / d1 (w2 < 2^s <= d1) is at most 2
+         * too large, and comparing q d0 with the remainder's next word
+         * makes it exact (Knuth's algorithm D, step D3) */
+        uint64_t dd = d << s;
+        uint32_t d1 = (uint32_t)(dd >> 32), d0 = (uint32_t)dd, q;
+        v = stp_recip32(d1);
+        q = div_2by1(w2, w1, d1, v, &r);
+        while (stp_umul32x32(q, d0) > (((uint64_t)r << 32) | w0)) {
+            q--;
+            if (r > 0xFFFFFFFFu - d1)
+                break; /* r + d1 >= 2^32: the test can no longer fail */
+            r += d1;
+        }
+        return q;
+    }
+}
+
+int64_t stp_div64_recip(int64_t n, int64_t d)
+{
+    uint64_t un = n < 0 ? 0u - (uint64_t)n : (uint64_t)n;
+    uint64_t ud = d < 0 ? 0u - (uint64_t)d : (uint64_t)d;
+    uint64_t q = stp_udiv64_recip(un, ud);
+    return (int64_t)((n < 0) != (d < 0) ? 0u - q : q);
+}

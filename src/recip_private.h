@@ -1,0 +1,78 @@
+/* SPDX-License-Identifier: MIT */
+/* Private: reciprocals and exact 64-bit division without a divide
+ * instruction, for targets where C's 64-bit division is a library call
+ * (ARMv6-M: libgcc's __aeabi_ldivmod, about 470-550 instructions).  The
+ * shading (shade.c) divides through stp_div64_fast; on 64-bit hosts that is
+ * C's operator (one instruction), elsewhere stp_div64_recip, which gives the
+ * same quotient, so a picture is the same on both. */
+#ifndef STIPPLE_RECIP_PRIVATE_H
+#define STIPPLE_RECIP_PRIVATE_H
+
+#include <stdint.h>
+
+/* Whether 64-bit products and quotients are single instructions (the same
+ * test as raster_private.h's, which a file may include as well). */
+#ifndef STP_WIDE_ARITH
+#if defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
+#define STP_WIDE_ARITH 1
+#else
+#define STP_WIDE_ARITH 0
+#endif
+#endif
+
+/* a b exactly for 32-bit a and b: one instruction on 64-bit hosts, four
+ * 32-bit products of 16-bit halves elsewhere (ARMv6-M has no 32 x 32 -> 64
+ * multiply; the library's 64-bit one costs ~40 instructions a call). */
+static inline uint64_t stp_umul32x32(uint32_t a, uint32_t b)
+{
+#if STP_WIDE_ARITH
+    return (uint64_t)a * b;
+#else
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
+    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    return ((uint64_t)(hh + (lh >> 16) + (hl >> 16) + (mid >> 16)) << 32) |
+           (uint64_t)((mid << 16) | (ll & 0xFFFFu));
+#endif
+}
+
+/* a b exactly for signed 32-bit a and b */
+static inline int64_t stp_smul32x32(int32_t a, int32_t b)
+{
+#if STP_WIDE_ARITH
+    return (int64_t)a * b;
+#else
+    uint64_t p = stp_umul32x32(a < 0 ? 0u - (uint32_t)a : (uint32_t)a,
+                               b < 0 ? 0u - (uint32_t)b : (uint32_t)b);
+    return (a < 0) != (b < 0) ? -(int64_t)p : (int64_t)p;
+#endif
+}
+
+/* The reciprocal of d in [2^31, 2^32): floor((2^64 - 1) / d) - 2^32, in
+ * [0, 2^32), so 2^32 + result approximates 2^64 / d to within one unit.
+ * Exact (the floor, not an estimate): a 128-entry table of 16-bit seeds
+ * (relative error below 2^-8.9), two Newton steps in 32-bit arithmetic
+ * (products from 16-bit halves on 32-bit targets) and a remainder
+ * correction.  d outside the range returns 0. */
+uint32_t stp_recip32(uint32_t d);
+
+/* floor(n / d) for d > 0, any n: exact, without a divide instruction:
+ * word-by-word division by the normalised divisor's top word, one
+ * stp_recip32 and a 2-by-1 step per quotient word (one or two), corrected
+ * with the second word for divisors of 2^32 or more.  d = 0 returns
+ * UINT64_MAX. */
+uint64_t stp_udiv64_recip(uint64_t n, uint64_t d);
+
+/* n / d truncated toward zero, as C's operator, for d != 0 and a quotient
+ * that fits int64_t (not INT64_MIN / -1), through stp_udiv64_recip. */
+int64_t stp_div64_recip(int64_t n, int64_t d);
+
+/* The shading's 64-bit division: C's operator where it is one instruction,
+ * stp_div64_recip elsewhere (the same quotient). */
+#if STP_WIDE_ARITH
+#define stp_div64_fast(n, d) ((int64_t)(n) / (int64_t)(d))
+#else
+#define stp_div64_fast(n, d) stp_div64_recip((int64_t)(n), (int64_t)(d))
+#endif
+
+#endif
