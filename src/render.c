@@ -6,6 +6,7 @@
 #include "view_private.h"
 #include "shade_private.h"
 #include "clip_private.h"
+#include "recip_private.h"
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -543,9 +544,11 @@ static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
     if (r->projection == STP_PERSPECTIVE) {
         int64_t z = p.z < r->hither ? r->hither : p.z; /* > 0 */
         /* focal * x / z has F fractional bits; keep SUBPIXEL of them */
-        x = stp_asr64(((int64_t)r->focal * p.x) / z, F - STP_SUBPIXEL_BITS);
-        y = stp_asr64(((int64_t)r->focal * p.y) / z, F - STP_SUBPIXEL_BITS);
-        out->z = (int32_t)((((int64_t)r->hither) << 30) / z);
+        /* stp_div64_fast: the same quotients as C's operator, without a
+         * library call where 64-bit division is one (recip.c) */
+        x = stp_asr64(stp_div64_fast((int64_t)r->focal * p.x, z), F - STP_SUBPIXEL_BITS);
+        y = stp_asr64(stp_div64_fast((int64_t)r->focal * p.y, z), F - STP_SUBPIXEL_BITS);
+        out->z = (int32_t)stp_div64_fast(((int64_t)r->hither) << 30, z);
     } else {
         x = stp_asr64((int64_t)r->focal * p.x, 2 * F - STP_SUBPIXEL_BITS);
         y = stp_asr64((int64_t)r->focal * p.y, 2 * F - STP_SUBPIXEL_BITS);
