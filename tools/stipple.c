@@ -76,6 +76,9 @@ static void usage_render(FILE *to)
             "      --palette grey|pseudo  .ppm/.png through a 256-entry colour table: the frame is\n"
             "                           an indexed frame buffer of styles; pseudo maps dark to\n"
             "                           blue and light to red; --gamma applies per primary\n"
+            "      --no-rescale         give the core the scene's coordinates as they are (as\n"
+            "                           a firmware would), not scaled into its range: a point\n"
+            "                           beyond +-32767 units from the eye is refused\n"
             "  -h, --help               this help\n");
     stp_tool_options_help(to);
 }
@@ -167,7 +170,8 @@ enum {
     OPT_BENCH_SCENES,
     OPT_BENCH_BUDGET,
     OPT_SCENE_FORMAT,
-    OPT_LINEAR
+    OPT_LINEAR,
+    OPT_NO_RESCALE
 };
 
 /* Turn an indexed frame buffer (STYLE8: style index 1..levels per pixel)
@@ -244,7 +248,9 @@ static int render_to_device(const char *scene_path, const char *scene_format, co
     stp_scene_free(&scene);
     if (rc != 0) {
         const char *why = stp_device_error(dev);
-        fprintf(stderr, "%s: %s: %s%s%s\n", program, scene_path, err, *why ? ": " : "", why);
+        char message[1024];
+        stp_tool_scene_message(message, sizeof message, scene_path, err);
+        fprintf(stderr, "%s: %s%s%s\n", program, message, *why ? ": " : "", why);
         stp_device_close(dev);
         return 1;
     }
@@ -305,6 +311,7 @@ static int cmd_render(int argc, char **argv)
         {"palette", required_argument, 0, OPT_PALETTE},
         {"device", required_argument, 0, OPT_DEVICE},
         {"scene-format", required_argument, 0, OPT_SCENE_FORMAT},
+        {"no-rescale", no_argument, 0, OPT_NO_RESCALE},
         {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     struct option longs[64];
     stp_tool_options opt;
@@ -361,6 +368,7 @@ static int cmd_render(int argc, char **argv)
             else
                 return stp_tool_usage_error("render", "bad --palette '%s' (grey, pseudo)", optarg);
             break;
+        case OPT_NO_RESCALE: opt.keep_units = 1; break;
         case 'h': usage_render(stdout); return 0;
         default: return stp_tool_getopt_error("render", c, argv);
         }
@@ -375,6 +383,9 @@ static int cmd_render(int argc, char **argv)
                                               "--scene-format nff|obj|off|ply");
     if (stp_tool_check_renderer(&given, opt.raytrace, err, sizeof err) != 0)
         return stp_tool_usage_error("render", "%s", err);
+    if (opt.keep_units && opt.raytrace)
+        return stp_tool_usage_error("render", "--no-rescale is for the polygon renderer (the "
+                                              "ray tracer takes the scene scaled into its range)");
     if (device_spec) {
         if (out_path || palette || format_given)
             return stp_tool_usage_error("render", "--device draws on the device: no -o, --format "
@@ -426,9 +437,11 @@ static int cmd_render(int argc, char **argv)
         int rc = stp_tool_render(&scene, &opt, port, &stats, err, sizeof err);
         stp_progress_finish(&progress);
         if (rc != 0) {
+            char message[1024];
             stp_posix_frame_free(&frame);
             stp_scene_free(&scene);
-            return fail("%s: %s", scene_path, err);
+            stp_tool_scene_message(message, sizeof message, scene_path, err);
+            return fail("%s", message);
         }
     }
     stp_scene_free(&scene);

@@ -16,7 +16,7 @@ _stipple_shared="--size --levels --dither --spacing --gamma --gamma-k --hidden -
 
 _stipple_options() {
     case $1 in
-    render) echo "--output --scene-format --device --format --band --stats --palette --help $_stipple_shared" ;;
+    render) echo "--output --scene-format --device --format --band --stats --palette --no-rescale --help $_stipple_shared" ;;
     compile) echo "--output --header --scene-format --static --help $_stipple_shared" ;;
     dither) echo "--output --plain --dither --spacing --gamma --gamma-k --linear --help" ;;
     scene) echo "--size --output --list --help" ;;
