@@ -153,8 +153,8 @@ static int build_prepared(const stp_tool_prepared *prep, stp_tool_rt *t, stp_too
         if (p->prim >= 0)
             continue;
         if (p->count > STP_MAX_POLYGON_VERTICES) {
-            snprintf(err, err_size, "polygon %zu (line %d) has %d vertices; this build takes %d",
-                     i + 1, p->source_line, p->count, STP_MAX_POLYGON_VERTICES);
+            snprintf(err, err_size, "%d: polygon %zu has %d vertices; this build takes %d",
+                     p->source_line, i + 1, p->count, STP_MAX_POLYGON_VERTICES);
             goto fail;
         }
         for (k = 0; k < p->count; k++) {
@@ -169,7 +169,7 @@ static int build_prepared(const stp_tool_prepared *prep, stp_tool_rt *t, stp_too
             continue;
         }
         if (status != STP_OK) {
-            snprintf(err, err_size, "polygon %zu (line %d): %s", i + 1, p->source_line,
+            snprintf(err, err_size, "%d: polygon %zu: %s", p->source_line, i + 1,
                      stp_status_text(status));
             goto fail;
         }

@@ -455,6 +455,43 @@ static int enter_outlines(stp_renderer *r, const stp_scene *scene, const stp_too
     return 0;
 }
 
+/* "L: coordinate (x, y, z) of polygon N beyond ...": the core refused
+ * polygon i (STP_ERR_RANGE); the vertex farthest from the eye is named in
+ * the file's units. */
+static void range_message(const stp_tool_prepared *prep, const stp_view *view, size_t i, char *err,
+                          size_t err_size)
+{
+    const stp_scene *scene = &prep->scene;
+    const stp_scene_polygon *p = &scene->polygons[i];
+    const double one = STP_FIX_ONE;
+    double ex = view->from.x / one, ey = view->from.y / one, ez = view->from.z / one, far = -1;
+    stp_scene_vec3 v = scene->vertices[p->first];
+    int k;
+    for (k = 0; k < p->count; k++) {
+        stp_scene_vec3 q = scene->vertices[p->first + (size_t)k];
+        double d = hypot(hypot(q.x - ex, q.y - ey), q.z - ez);
+        if (d > far) {
+            far = d;
+            v = q;
+        }
+    }
+    snprintf(err, err_size,
+             "%d: coordinate (%g, %g, %g) of polygon %zu beyond the core's range "
+             "(+-32767 units from the eye along each view axis)%s",
+             p->source_line, v.x / prep->scale + prep->offset.x, v.y / prep->scale + prep->offset.y,
+             v.z / prep->scale + prep->offset.z, i + 1,
+             prep->opt.keep_units ? "; without --no-rescale the scene is scaled into it" : "");
+}
+
+void stp_tool_scene_message(char *out, size_t size, const char *name, const char *err)
+{
+    size_t digits = strspn(err, "0123456789");
+    if (digits > 0 && err[digits] == ':')
+        snprintf(out, size, "%s:%s", name, err);
+    else
+        snprintf(out, size, "%s: %s", name, err);
+}
+
 int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
                              stp_tool_stats *stats, char *err, size_t err_size)
 {
@@ -561,7 +598,7 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
             if (p->material >= 0 && (size_t)p->material < scene->material_count)
                 stp_tool_material(&scene->materials[p->material], opt->colour, &m);
             if ((status = stp_renderer_set_object_shade(r, &m)) != STP_OK) {
-                snprintf(err, err_size, "material of polygon %zu (line %d): %s", i + 1, p->source_line,
+                snprintf(err, err_size, "%d: material of polygon %zu: %s", p->source_line, i + 1,
                          stp_status_text(status));
                 goto done;
             }
@@ -583,8 +620,8 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
             last_material = p->material;
         }
         if (p->count > STP_MAX_POLYGON_VERTICES) {
-            snprintf(err, err_size, "polygon %zu (line %d) has %d vertices; this build takes %d",
-                     i + 1, p->source_line, p->count, STP_MAX_POLYGON_VERTICES);
+            snprintf(err, err_size, "%d: polygon %zu has %d vertices; this build takes %d",
+                     p->source_line, i + 1, p->count, STP_MAX_POLYGON_VERTICES);
             goto done;
         }
         for (k = 0; k < p->count; k++)
@@ -612,15 +649,11 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
             continue;
         }
         if (status == STP_ERR_RANGE) {
-            snprintf(err, err_size,
-                     "polygon %zu (line %d): coordinate (%g, %g, %g) beyond the core's range "
-                     "(+-32767 from the eye along each view axis)",
-                     i + 1, p->source_line, scene->vertices[p->first].x,
-                     scene->vertices[p->first].y, scene->vertices[p->first].z);
+            range_message(prep, &view, i, err, err_size);
             goto done;
         }
         if (status != STP_OK) {
-            snprintf(err, err_size, "polygon %zu (line %d): %s", i + 1, p->source_line,
+            snprintf(err, err_size, "%d: polygon %zu: %s", p->source_line, i + 1,
                      stp_status_text(status));
             goto done;
         }

@@ -78,6 +78,10 @@ typedef struct stp_tool_options {
     double crease_angle;     /* degrees between normals that make a crease (40) */
     double outline_level;    /* the lines' shade 0..1 (0, black); < 0: black,
                                 or white on a dark background */
+    int keep_units;          /* 1: the scene's coordinates go to the core as
+                                they are, not moved and scaled into its range
+                                (--no-rescale; polygon renderer only): what a
+                                firmware given them draws, or refuses (0) */
 } stp_tool_options;
 
 void stp_tool_options_default(stp_tool_options *opt);
@@ -143,9 +147,17 @@ int stp_tool_raytrace(const stp_scene *scene, const stp_tool_options *opt, stp_p
 /* Render scene onto port (its width/height/format must match opt).  The
  * scene is first prepared for the core (scene_prepare.h: rescaled when out
  * of range, lights beyond STP_MAX_LIGHTS merged, long polygons split).
- * Returns 0, or -1 with a message in err. */
+ * Returns 0, or -1 with a message in err; a message about one line of the
+ * scene's file starts with that line's number and a colon ("12: coordinate
+ * (0, 0, 40000) of polygon 3 beyond the core's range ..."), for
+ * stp_tool_scene_message to put the file's name before. */
 int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_port *port,
                     stp_tool_stats *stats, char *err, size_t err_size);
+
+/* A message of stp_tool_render (err) about the scene file name as the
+ * tools print it: "name:12: what" when err starts with a line number
+ * ("12: what"), else "name: what".  Truncated to size bytes. */
+void stp_tool_scene_message(char *out, size_t size, const char *name, const char *err);
 
 /* The view and lighting stp_tool_render uses for a scene: the scene's view
  * (else one that frames its bounds at 45 degrees), the options' lights, else

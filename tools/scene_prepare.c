@@ -209,6 +209,71 @@ static stp_scene_vec3 to_units(stp_scene_vec3 v, stp_scene_vec3 off, double k)
     return v3((v.x - off.x) * k, (v.y - off.y) * k, (v.z - off.z) * k);
 }
 
+/* "L: ", the start of a message about line L (render_scene.h), or "" when
+ * the line is not known (0). */
+static const char *line_prefix(char buf[16], int line)
+{
+    buf[0] = 0;
+    if (line > 0)
+        snprintf(buf, 16, "%d: ", line);
+    return buf;
+}
+
+/* The line of prim i: that of a polygon tessellating it (the reader gives
+ * them its line), 0 when none is kept. */
+static int prim_line(const stp_scene *s, size_t prim)
+{
+    size_t i;
+    for (i = 0; i < s->polygon_count; i++)
+        if (s->polygons[i].prim == (int)prim)
+            return s->polygons[i].source_line;
+    return 0;
+}
+
+/* --no-rescale: the coordinates go to the core as they are, so each must
+ * be an stp_fix (the core then refuses, with STP_ERR_RANGE, a point too far
+ * from the eye).  Beyond +-32767 stp_tool_fix would saturate it into a
+ * point elsewhere. */
+static int outside_fix(stp_scene_vec3 v)
+{
+    return !(max_abs(v) < 32767.0);
+}
+
+static int check_units_kept(const stp_scene *s, char *err, size_t err_size)
+{
+    static const char range[] = "beyond the core's range (+-32767 units); without --no-rescale "
+                                "the scene is scaled into it";
+    size_t i;
+    int k;
+    for (i = 0; i < s->polygon_count; i++) {
+        const stp_scene_polygon *p = &s->polygons[i];
+        for (k = 0; k < p->count; k++) {
+            stp_scene_vec3 v = s->vertices[p->first + (size_t)k];
+            if (outside_fix(v)) {
+                snprintf(err, err_size, "%d: coordinate (%g, %g, %g) of polygon %zu %s",
+                         p->source_line, v.x, v.y, v.z, i + 1, range);
+                return -1;
+            }
+        }
+    }
+    for (i = 0; i < s->prim_count; i++) {
+        const stp_scene_prim *p = &s->prims[i];
+        if (outside_fix(p->base) || outside_fix(p->apex) || !(fabs(p->base_radius) < 32767.0) ||
+            !(fabs(p->apex_radius) < 32767.0)) {
+            char at[16];
+            snprintf(err, err_size, "%s%s %zu %s", line_prefix(at, prim_line(s, i)),
+                     p->kind == STP_SCENE_SPHERE ? "sphere" : "cone", i + 1, range);
+            return -1;
+        }
+    }
+    if (s->has_view && (outside_fix(s->from) || outside_fix(s->at))) {
+        snprintf(err, err_size, "the view's from (%g, %g, %g) or at (%g, %g, %g) %s", s->from.x,
+                 s->from.y, s->from.z, s->at.x, s->at.y, s->at.z, range);
+        return -1;
+    }
+    return 0;
+}
+
 /* The smallest object's size against the core's step: an object that the
  * rescaling leaves under a few steps would vanish or turn to a point. */
 static int check_resolution(const stp_tool_prepared *out, const stp_scene *in, char *err,
@@ -228,10 +293,10 @@ static int check_resolution(const stp_tool_prepared *out, const stp_scene *in, c
             size = fmax(size, max_abs(to_units(s->vertices[p->first + (size_t)k], a, 1.0)));
         if (size > 0 && size < extent_limit) {
             snprintf(err, err_size,
-                     "polygon %zu (line %d): %g units across in a scene %g units across: "
+                     "%d: polygon %zu: %g units across in a scene %g units across: "
                      "beyond the core's range of coordinates (2^15 units in steps of 2^-16, "
                      "after rescaling); remove the far-off or the tiny objects",
-                     i + 1, p->source_line, size / out->scale,
+                     p->source_line, i + 1, size / out->scale,
                      STP_TOOL_EXTENT_TARGET / out->scale);
             return -1;
         }
@@ -242,10 +307,11 @@ static int check_resolution(const stp_tool_prepared *out, const stp_scene *in, c
         if (p->kind == STP_SCENE_CONE)
             size = fmax(size, dist(p->base, p->apex));
         if (size < extent_limit) {
+            char at[16];
             snprintf(err, err_size,
-                     "%s %zu: %g units across in a scene %g units across: beyond the core's "
+                     "%s%s %zu: %g units across in a scene %g units across: beyond the core's "
                      "range of coordinates (2^15 units in steps of 2^-16, after rescaling)",
-                     p->kind == STP_SCENE_SPHERE ? "sphere" : "cone", i + 1,
+                     line_prefix(at, prim_line(s, i)), p->kind == STP_SCENE_SPHERE ? "sphere" : "cone", i + 1,
                      size / out->scale, STP_TOOL_EXTENT_TARGET / out->scale);
             return -1;
         }
@@ -337,7 +403,12 @@ int stp_tool_prepare(const stp_scene *scene, const stp_tool_options *opt, stp_to
     extent = scene_extent(scene, lo, hi, centre);
     if (!(extent > 0))
         extent = 1;
-    if (needs_rescale(scene, lo, hi, extent)) {
+    if (opt->keep_units) {
+        if (check_units_kept(scene, err, err_size) != 0) {
+            stp_tool_prepared_free(out);
+            return -1;
+        }
+    } else if (needs_rescale(scene, lo, hi, extent)) {
         /* to one extent whatever the units: files that differ only in
          * their units give the same scene to the core */
         double k = STP_TOOL_EXTENT_TARGET / extent;

@@ -30,7 +30,8 @@
  * eye, look-at point, lights and hither move with it; the attenuation
  * constant C is then taken in the rescaled units, so every rescaled file
  * gives the core the same scene whatever its units.  A scene already in
- * range is left as it is (its C is in its own units).  Lights still beyond
+ * range, or any with opt->keep_units, is left as it is (its C is in its
+ * own units).  Lights still beyond
  * the limit are brought in along their direction from the centre to half
  * the limit (auto power keeps their light at the centre; raw power is
  * scaled to do the same). */
@@ -53,9 +54,11 @@ typedef struct stp_tool_prepared {
 } stp_tool_prepared;
 
 /* Prepare scene for opt into *out.  Returns 0, or -1 with a message:
- * out of memory, or an object that the scene's range leaves below the
- * core's resolution ("polygon N (line L): ... beyond ...").  On success
- * free with stp_tool_prepared_free. */
+ * out of memory, an object that the scene's range leaves below the core's
+ * resolution ("L: polygon N: ... beyond ..."), or with opt->keep_units (no
+ * rescaling) a coordinate beyond stp_fix's +-32767 ("L: coordinate (x, y,
+ * z) of polygon N beyond ...").  A message about line L starts with "L: "
+ * (render_scene.h).  On success free with stp_tool_prepared_free. */
 int stp_tool_prepare(const stp_scene *scene, const stp_tool_options *opt, stp_tool_prepared *out,
                      char *err, size_t err_size);
 void stp_tool_prepared_free(stp_tool_prepared *p);

@@ -87,6 +87,9 @@ static void usage_render(FILE *to)
             "      --crease-angle DEG   normals further apart make a crease (default 40)\n"
             "      --outline-level L    the lines' shade 0..1 (default 0, black), or auto:\n"
             "                           white on a dark background\n"
+            "      --no-rescale         give the core the scene's coordinates as they are (as\n"
+            "                           a firmware would), not scaled into its range: a point\n"
+            "                           beyond +-32767 units from the eye is refused\n"
             "  -h, --help               this help\n");
     stp_tool_options_help(to);
 }
@@ -189,7 +192,8 @@ enum {
     OPT_PLANES,
     OPT_OUTLINES,
     OPT_CREASE_ANGLE,
-    OPT_OUTLINE_LEVEL
+    OPT_OUTLINE_LEVEL,
+    OPT_NO_RESCALE
 };
 
 /* Turn an indexed frame buffer (STYLE8: style index 1..levels per pixel)
@@ -266,7 +270,9 @@ static int render_to_device(const char *scene_path, const char *scene_format, co
     stp_scene_free(&scene);
     if (rc != 0) {
         const char *why = stp_device_error(dev);
-        fprintf(stderr, "%s: %s: %s%s%s\n", program, scene_path, err, *why ? ": " : "", why);
+        char message[1024];
+        stp_tool_scene_message(message, sizeof message, scene_path, err);
+        fprintf(stderr, "%s: %s%s%s\n", program, message, *why ? ": " : "", why);
         stp_device_close(dev);
         return 1;
     }
@@ -382,6 +388,7 @@ static int cmd_render(int argc, char **argv)
         {"outlines", required_argument, 0, OPT_OUTLINES},
         {"crease-angle", required_argument, 0, OPT_CREASE_ANGLE},
         {"outline-level", required_argument, 0, OPT_OUTLINE_LEVEL},
+        {"no-rescale", no_argument, 0, OPT_NO_RESCALE},
         {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     struct option longs[64];
     stp_tool_options opt;
@@ -469,6 +476,7 @@ static int cmd_render(int argc, char **argv)
                                             optarg);
             level_given = 1;
             break;
+        case OPT_NO_RESCALE: opt.keep_units = 1; break;
         case 'h': usage_render(stdout); return 0;
         default: return stp_tool_getopt_error("render", c, argv);
         }
@@ -489,6 +497,9 @@ static int cmd_render(int argc, char **argv)
     if (!opt.outlines && (crease_given || level_given))
         return stp_tool_usage_error("render", "--%s is for --outlines",
                                     crease_given ? "crease-angle" : "outline-level");
+    if (opt.keep_units && opt.raytrace)
+        return stp_tool_usage_error("render", "--no-rescale is for the polygon renderer (the "
+                                              "ray tracer takes the scene scaled into its range)");
     if (device_spec) {
         if (out_path || palette || new_palette || format_given)
             return stp_tool_usage_error("render", "--device draws on the device: no -o, --format "
@@ -545,9 +556,11 @@ static int cmd_render(int argc, char **argv)
         int rc = stp_tool_render(&scene, &opt, port, &stats, err, sizeof err);
         stp_progress_finish(&progress);
         if (rc != 0) {
+            char message[1024];
             stp_posix_frame_free(&frame);
             stp_scene_free(&scene);
-            return fail("%s: %s", scene_path, err);
+            stp_tool_scene_message(message, sizeof message, scene_path, err);
+            return fail("%s", message);
         }
     }
     stp_scene_free(&scene);

@@ -8,7 +8,9 @@
  *   - shadows when NFF's 'at' lies next to the eye (SPD rings);
  *   - lights beyond STP_MAX_LIGHTS merged, not dropped;
  *   - polygons beyond STP_MAX_POLYGON_VERTICES split, checked pixel by pixel
- *     against an even-odd coverage computed in double precision.
+ *     against an even-odd coverage computed in double precision;
+ *   - with the units kept (--no-rescale), the core's STP_ERR_RANGE reported
+ *     as "file:line: coordinate ... beyond ...".
  */
 #include <math.h>
 #include <setjmp.h>
@@ -188,7 +190,7 @@ static void test_unrepresentable_refused(void **state)
                                  "resolution 8 8\ns 0 0 0 1e30\np 3\n0 0 0\n1 0 0\n0 1 0\n",
                                  &opt, &f, err, sizeof err),
                      -1);
-    if (!strstr(err, "(line 9)") || !strstr(err, "beyond"))
+    if (strncmp(err, "9: polygon ", 11) != 0 || !strstr(err, "beyond"))
         fail_msg("message: %s", err);
     /* tiny scenes render (they used to fail with "view: invalid view") */
     render_ok("nff",
@@ -196,6 +198,53 @@ static void test_unrepresentable_refused(void **state)
               "s 0 0 0 1e-6\n",
               &opt, &f);
     stp_posix_frame_free(&f);
+}
+
+/* With the units kept the core gets the file's coordinates: a polygon
+ * 40 000 units from the eye is refused by the core (STP_ERR_RANGE), one
+ * beyond stp_fix by the host, each with its line; the same polygons nearer
+ * the eye render. */
+static void test_units_kept_range_refused(void **state)
+{
+    static const char view[] = "v\nfrom 0 0 -20000\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n"
+                               "resolution 8 8\nl 0 5 -10\n";
+    char text[512], err[512] = "", message[1024];
+    stp_tool_options opt;
+    stp_posix_frame f;
+    (void)state;
+    stp_tool_options_default(&opt);
+    opt.keep_units = 1;
+    snprintf(text, sizeof text, "%sp 3\n-10000 -10000 20000\n10000 -10000 20000\n0 10000 20000\n",
+             view);
+    assert_int_equal(render_text("nff", text, &opt, &f, err, sizeof err), -1);
+    /* the vertex farthest from the eye: the first of the two at equal distance */
+    assert_string_equal(err, "9: coordinate (-10000, -10000, 20000) of polygon 1 beyond the core's "
+                             "range (+-32767 units from the eye along each view axis); without "
+                             "--no-rescale the scene is scaled into it");
+    stp_tool_scene_message(message, sizeof message, "far.nff", err);
+    assert_string_equal(message, "far.nff:9: coordinate (-10000, -10000, 20000) of polygon 1 beyond "
+                                 "the core's range (+-32767 units from the eye along each view "
+                                 "axis); without --no-rescale the scene is scaled into it");
+    /* rescaled (the default), the same file renders */
+    opt.keep_units = 0;
+    render_ok("nff", text, &opt, &f);
+    stp_posix_frame_free(&f);
+    /* within range the units kept give a picture */
+    opt.keep_units = 1;
+    snprintf(text, sizeof text, "%sp 3\n-10000 -10000 10000\n10000 -10000 10000\n0 10000 10000\n",
+             view);
+    render_ok("nff", text, &opt, &f);
+    stp_posix_frame_free(&f);
+    /* beyond stp_fix itself: refused before the core, which would get it
+     * saturated (moved) */
+    assert_int_equal(render_text("obj", "v 0 0 0\nv 1 0 0\nv 0 40000 0\nf 1 2 3\n", &opt, &f, err,
+                                 sizeof err),
+                     -1);
+    assert_string_equal(err, "4: coordinate (0, 40000, 0) of polygon 1 beyond the core's range "
+                             "(+-32767 units); without --no-rescale the scene is scaled into it");
+    /* a message without a line keeps "name: " */
+    stp_tool_scene_message(message, sizeof message, "s.nff", "out of memory");
+    assert_string_equal(message, "s.nff: out of memory");
 }
 
 /* ---- shadows with 'at' next to the eye ---------------------------------- */
@@ -413,6 +462,7 @@ int main(void)
         cmocka_unit_test(test_units_do_not_change_the_picture),
         cmocka_unit_test(test_huge_and_far_geometry),
         cmocka_unit_test(test_unrepresentable_refused),
+        cmocka_unit_test(test_units_kept_range_refused),
         cmocka_unit_test(test_shadows_with_at_near_the_eye),
         cmocka_unit_test(test_lights_merged),
         cmocka_unit_test(test_big_polygons_split),

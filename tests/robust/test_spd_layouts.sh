@@ -1,41 +1,60 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Every SPD-like database (spd_like.py: the SPD programs' layouts, one-line
-# cones) at size factors 1-3 renders in every mode with exit 0 and a valid
-# file; CRLF and byte-order-mark variants too; a 66 430-sphere sphereflake
+# cones) at size factors 1-3, the SPD files of tests/data/spd and the scenes
+# of 'stipple scene' at size factors 1-3 render in every mode with exit 0
+# and a valid file; CRLF and byte-order-mark variants too; a 66 430-sphere sphereflake
 # ray-traces; -o through a symbolic link to /dev/null, to /proc/self/fd/1
 # (redirected to a file), a FIFO.
 # usage: test_spd_layouts.sh STIPPLE SPD_LIKE_PY WORK_DIR
 set -u
 stipple=$1 gen=$2 work=$3
 rm -rf "$work" && mkdir -p "$work" || exit 1
-failures=0
+failures=0 runs=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 validate() { # file
     if command -v pamvalidate >/dev/null; then
         pamvalidate < "$1" >/dev/null 2>&1 || fail "$1 is not a valid Netpbm file"
     fi
 }
+# render NFF in every mode with exit 0 and a valid file
+every_mode() { # nff
+    local nff=$1 mode args ext out
+    for mode in flat smooth colour shadows transparent raytrace; do
+        runs=$((runs + 1))
+        case $mode in
+        flat) args=() ext=pbm ;;
+        smooth) args=(--smooth) ext=pbm ;;
+        colour) args=(--color) ext=ppm ;;
+        shadows) args=(--shadows 128) ext=pbm ;;
+        transparent) args=(--color --transparent) ext=ppm ;;
+        raytrace) args=(--raytrace) ext=pgm ;;
+        esac
+        out=${nff%.nff}-$mode.$ext
+        if ! "$stipple" render "$nff" "${args[@]}" --size 64x48 -o "$out" 2> "$work/err"; then
+            fail "$(basename "$nff") $mode: $(cat "$work/err")"
+            continue
+        fi
+        validate "$out"
+    done
+}
 for db in rings tree jacks lattice shells sombrero balls; do
     for size in 1 2 3; do
         nff=$work/$db-s$size.nff
         python3 "$gen" "$db" "$size" > "$nff" || { fail "generate $db $size"; continue; }
-        for mode in flat smooth colour shadows transparent raytrace; do
-            case $mode in
-            flat) args=() ext=pbm ;;
-            smooth) args=(--smooth) ext=pbm ;;
-            colour) args=(--color) ext=ppm ;;
-            shadows) args=(--shadows 128) ext=pbm ;;
-            transparent) args=(--color --transparent) ext=ppm ;;
-            raytrace) args=(--raytrace) ext=pgm ;;
-            esac
-            out=$work/$db-s$size-$mode.$ext
-            if ! "$stipple" render "$nff" "${args[@]}" --size 64x48 -o "$out" 2> "$work/err"; then
-                fail "$db-s$size $mode: $(cat "$work/err")"
-                continue
-            fi
-            validate "$out"
-        done
+        every_mode "$nff"
+    done
+done
+# the SPD's own files in the repository (balls, gears, mount, teapot,
+# tetra) and the SPD-like scenes stipple writes, at size factors 1-3
+for nff in "$(dirname "$0")"/../data/spd/*.nff; do
+    cp "$nff" "$work/spd-$(basename "$nff")" && every_mode "$work/spd-$(basename "$nff")"
+done
+for name in teapot tetra sphereflake torus rings mountain; do
+    for size in 1 2 3; do
+        nff=$work/scene-$name-s$size.nff
+        "$stipple" scene "$name" --size "$size" -o "$nff" || { fail "stipple scene $name $size"; continue; }
+        every_mode "$nff"
     done
 done
 # the same layouts with CRLF line ends and a byte-order mark
@@ -67,5 +86,5 @@ ln -s /proc/self/fd/1 "$work/stdout.pbm"
 [ -L "$work/stdout.pbm" ] || fail "the link to /proc/self/fd/1 was replaced"
 cmp -s "$work/captured.pbm" "$work/lf.pbm" || fail "what went to the redirected stdout differs"
 if [ "$(find "$work" -name '.*' -type f | wc -l)" -ne 0 ]; then fail "temporary files left"; fi
-[ "$failures" -eq 0 ] && echo "all SPD layouts rendered in every mode"
+[ "$failures" -eq 0 ] && echo "all SPD layouts rendered in every mode ($runs renders)"
 exit $((failures > 0))

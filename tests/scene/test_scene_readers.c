@@ -1233,6 +1233,9 @@ static void test_byte_limit(void **state)
     stp_scene_byte_limit = saved;
     assert_int_equal(rc, -1);
     expect_prefix(err, "t:5: scene too large", "sphere over budget");
+    /* the message says what would make the scene fit (issue 13) */
+    if (!strstr(err, "fewer --slices/--stacks, or --raytrace"))
+        fail_msg("no hint in: %s", err);
     assert_scene_empty(&s);
     /* within the default budget the same works */
     parse_ok("nff", "p 3\n" TRI "s 0 0 0 1\n", &o, &s);
