@@ -39,12 +39,17 @@ const uint32_t stp_slope_recip[STP_SLOPE_RECIP_SIZE] = {
 
 #if STP_WITH_ZBUFFER
 /* num / den truncated toward zero (C's division), den != 0.  Without wide
- * arithmetic: when |den| < 2^16 and |num| < 2^48, as three 32-bit
- * divisions of 16-bit digits (long division); else the library's. */
+ * arithmetic: one 32-bit division when both fit 32 bits; when |den| <
+ * 2^16 and |num| < 2^48, three of 16-bit digits (long division); else
+ * the library's. */
 static int64_t div_trunc(int64_t num, int64_t den)
 {
 #if !STP_WIDE_ARITH && !STP_SMALL_DIVISION /* with it: its loop alone, smaller */
     uint64_t un = num < 0 ? 0u - (uint64_t)num : (uint64_t)num, ud = den < 0 ? 0u - (uint64_t)den : (uint64_t)den;
+    if ((un | ud) < ((uint64_t)1 << 32)) { /* one 32-bit division: a small triangle's gradients */
+        uint32_t q = (uint32_t)un / (uint32_t)ud;
+        return (num < 0) != (den < 0) ? -(int64_t)q : (int64_t)q;
+    }
     if (ud < 65536u && un < ((uint64_t)1 << 48)) {
         uint32_t d = (uint32_t)ud, hi = (uint32_t)(un >> 32), q1, q2, q3, part;
         q1 = hi / d;
@@ -113,6 +118,7 @@ typedef struct frame {
     uint8_t *band;
     uint16_t *zbuf;
     uint32_t y0, rows; /* current band */
+    int32_t band_top, band_end; /* its rows' extent in subpixels: y0 2^SUB, (y0 + rows) 2^SUB */
     int32_t key_min, key_max; /* depth-key range of the visible polygons */
     int second_pass;          /* the Z buffer's second pass draws something:
                                  a transparent polygon or a line (lines are
@@ -132,6 +138,7 @@ typedef struct frame {
      * patterns[] the byte of each cell row for style pattern_style (-1:
      * none yet) */
     int mono_fill;
+    int pattern_port; /* mono_fill on a MONO1 port (not drawn grey): spans may come from patterns[] */
     uint32_t cell_mask;
     paint pattern_style;
     uint8_t patterns[STP_CELL_MAX];
@@ -791,7 +798,7 @@ static int paint_setup(frame *fr, uint32_t at, paint style, int smooth, stp_fix 
 #endif
     /* pattern bytes are made for MONO1 only (use_style); a MONO1 port
      * under error diffusion is drawn as GREY8 */
-    if (fr->port->format != STP_PIXEL_MONO1 || !fr->mono_fill || (style & STP_COLOUR_FLAG))
+    if (!fr->pattern_port || (style & STP_COLOUR_FLAG))
         return 0;
     if (style != fr->pattern_style)
         use_style(fr, style);
@@ -863,10 +870,10 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
             mid = swap;
         }
     }
-    if (bot->y <= (int32_t)(fr->y0 << SUB) || top->y >= (int32_t)((fr->y0 + fr->rows) << SUB))
+    if (bot->y <= fr->band_top || top->y >= fr->band_end)
         return; /* not in the band */
 #if STP_WITH_ZBUFFER
-    if (use_z && fr->setup && ordinal != UINT32_MAX && top->y >= (int32_t)(fr->y0 << SUB))
+    if (use_z && fr->setup && ordinal != UINT32_MAX && top->y >= fr->band_top)
         fr->setup[ordinal].centre[0] = SETUP_NOT_MADE; /* its first band: made at the first span */
 #else
     (void)use_z;
@@ -1385,6 +1392,7 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
     fr.mono_fill = port->format == STP_PIXEL_MONO1 && fr.cell->kind == STP_CELL_THRESHOLD &&
                    fr.cell->width > 0 && 8u % fr.cell->width == 0 && fr.cell->height > 0 &&
                    fr.cell->height <= STP_CELL_MAX; /* patterns[] holds a row each */
+    fr.pattern_port = drawn->format == STP_PIXEL_MONO1 && fr.mono_fill;
     fr.cell_mask = (fr.cell->height & (fr.cell->height - 1u)) == 0 ? fr.cell->height - 1u : 0;
     fr.pattern_style = -1;
 #if STP_PATTERN_CACHE > 0
@@ -1410,6 +1418,8 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
         uint32_t y;
         fr.y0 = y0;
         fr.rows = r->height - y0 < mem->band_rows ? r->height - y0 : mem->band_rows;
+        fr.band_top = (int32_t)(y0 << SUB); /* heights below 2^15: no overflow */
+        fr.band_end = (int32_t)((y0 + fr.rows) << SUB);
         for (y = y0; y < y0 + fr.rows; y++) {
             /* MONO1 padding bits past the width reach the port too: make
              * them 0 rather than whatever the caller's buffer held */
