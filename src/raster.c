@@ -653,13 +653,13 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
  * depth_scale = floor(65534 2^12 2^s / range) < 2^29 with 2^s >= range
  * (s = depth_shift), so u depth_scale / 2^s is less than one short of the
  * quotient and one correction makes it exact. */
-static int64_t depth_q12(frame *fr, int32_t key)
+static int32_t depth_q12(frame *fr, int32_t key)
 {
     const uint32_t k = (uint32_t)65534 << 12;
     uint32_t range = (uint32_t)((int64_t)fr->key_max - fr->key_min), u;
     uint64_t num, q;
     if (fr->key_max <= fr->key_min)
-        return (int64_t)65535 << 12;
+        return (int32_t)65535 << 12;
 #if KEY_CACHE > 0
     {
         uint32_t slot = ((uint32_t)key ^ ((uint32_t)key >> 8)) & (KEY_CACHE - 1);
@@ -684,7 +684,7 @@ static int64_t depth_q12(frame *fr, int32_t key)
     if (stp_umul32((uint32_t)q + 1u, range) <= num)
         q++;
 #endif
-    return ((int64_t)1 << 12) + (int64_t)q;
+    return (int32_t)(1 << 12) + (int32_t)q; /* q <= 65534 2^12: below 2^28 */
 #endif
 }
 
@@ -698,27 +698,57 @@ typedef struct depth_plane {
     int32_t xc, yc;
 } depth_plane;
 
+/* The plane through Newell's sums a, b, c (c != 0) of n vertices whose
+ * coordinates and Q12 depths sum to sx, sy, sd: gradients -a 4096 / c and
+ * -b 4096 / c clamped to +-2^40, the centre their averages. */
+static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, int64_t c, uint32_t sx, uint32_t sy,
+                                         int64_t sd, int n)
+{
+    pl->ddx = div_trunc(-a * 4096, c);
+    pl->ddy = div_trunc(-b * 4096, c);
+    if (!(a > -((int64_t)1 << 28) && a < ((int64_t)1 << 28) && b > -((int64_t)1 << 28) &&
+          b < ((int64_t)1 << 28))) { /* else |4096 a|, |4096 b| < 2^40: nothing to clamp */
+        if (pl->ddx > ((int64_t)1 << 40)) pl->ddx = (int64_t)1 << 40;
+        if (pl->ddx < -((int64_t)1 << 40)) pl->ddx = -((int64_t)1 << 40);
+        if (pl->ddy > ((int64_t)1 << 40)) pl->ddy = (int64_t)1 << 40;
+        if (pl->ddy < -((int64_t)1 << 40)) pl->ddy = -((int64_t)1 << 40);
+    }
+    pl->xc = (int32_t)div_count(sx, (uint32_t)n);
+    pl->yc = (int32_t)div_count(sy, (uint32_t)n);
+    /* depths below 2^28: 32-bit division while the sum fits */
+    pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : STP_DIV64(sd, n);
+}
+
+/* A triangle's plane: its Newell sums are its cross product, exactly
+ * (relative coordinates below 2^20, depths below 2^16); its three Q12
+ * depths (below 2^28) sum below 2^30. */
+static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
+{
+    int32_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z), d2 = depth_q12(fr, v[2].z);
+    int32_t x1 = v[1].x - v[0].x, y1 = v[1].y - v[0].y, x2 = v[2].x - v[0].x, y2 = v[2].y - v[0].y;
+    int32_t e1 = (d1 >> 12) - (d0 >> 12), e2 = (d2 >> 12) - (d0 >> 12);
+    int64_t c = stp_smul32(x1, y2) - stp_smul32(y1, x2);
+    if (c == 0) {
+        pl->ddx = pl->ddy = pl->dc = 0;
+        pl->xc = pl->yc = 0;
+        return 0;
+    }
+    depth_plane_from_sums(pl, stp_smul32(y1, e2) - stp_smul32(e1, y2), stp_smul32(e1, x2) - stp_smul32(x1, e2), c,
+                          (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x,
+                          (uint32_t)v[0].y + (uint32_t)v[1].y + (uint32_t)v[2].y,
+                          (int64_t)((uint32_t)d0 + (uint32_t)d1 + (uint32_t)d2), 3);
+    return 1;
+}
+
+/* Any polygon's plane by Newell's loop (triangles: depth_setup_triangle). */
 static int depth_setup(frame *fr, const stp_instr *v, int n, depth_plane *pl)
 {
-    pl->ddx = pl->ddy = pl->dc = 0;
-    pl->xc = pl->yc = 0;
     int64_t a = 0, b = 0, c = 0, sd = 0, d_last = depth_q12(fr, v[n - 1].z), d_prev = d_last;
     uint32_t sx = 0, sy = 0; /* n <= 4101 coordinates in [0, 2^19]: < 2^32 */
     int i;
-    if (n == 3) {
-        /* a triangle's Newell sums are its cross product, exactly:
-         * relative coordinates below 2^20 and depths below 2^16 */
-        int64_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z);
-        int32_t x1 = v[1].x - v[0].x, y1 = v[1].y - v[0].y, x2 = v[2].x - v[0].x, y2 = v[2].y - v[0].y;
-        int32_t e1 = (int32_t)((d1 >> 12) - (d0 >> 12)), e2 = (int32_t)((d_last >> 12) - (d0 >> 12));
-        a = stp_smul32(y1, e2) - stp_smul32(e1, y2);
-        b = stp_smul32(e1, x2) - stp_smul32(x1, e2);
-        c = stp_smul32(x1, y2) - stp_smul32(y1, x2);
-        sx = (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x;
-        sy = (uint32_t)v[0].y + (uint32_t)v[1].y + (uint32_t)v[2].y;
-        sd = d0 + d1 + d_last;
-    }
-    for (i = n == 3 ? 3 : 0; i < n; i++) {
+    pl->ddx = pl->ddy = pl->dc = 0;
+    pl->xc = pl->yc = 0;
+    for (i = 0; i < n; i++) {
         const stp_instr *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
         int64_t d_q = i == n - 1 ? d_last : depth_q12(fr, q->z), dp = d_prev >> 12, dq = d_q >> 12;
         /* coordinates in [0, 2^19], depths in [1, 65535]: 32-bit factors */
@@ -732,16 +762,7 @@ static int depth_setup(frame *fr, const stp_instr *v, int n, depth_plane *pl)
     }
     if (c == 0)
         return 0;
-    pl->ddx = div_trunc(-a * 4096, c);
-    pl->ddy = div_trunc(-b * 4096, c);
-    if (pl->ddx > ((int64_t)1 << 40)) pl->ddx = (int64_t)1 << 40;
-    if (pl->ddx < -((int64_t)1 << 40)) pl->ddx = -((int64_t)1 << 40);
-    if (pl->ddy > ((int64_t)1 << 40)) pl->ddy = (int64_t)1 << 40;
-    if (pl->ddy < -((int64_t)1 << 40)) pl->ddy = -((int64_t)1 << 40);
-    pl->xc = (int32_t)div_count(sx, (uint32_t)n);
-    pl->yc = (int32_t)div_count(sy, (uint32_t)n);
-    /* depths below 2^28: 32-bit division while the sum fits */
-    pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : STP_DIV64(sd, n);
+    depth_plane_from_sums(pl, a, b, c, sx, sy, sd, n);
     return 1;
 }
 
@@ -768,7 +789,7 @@ static int depth_plane_for(frame *fr, const stp_instr *v, int n, uint32_t ordina
         pl->yc = kept->centre[1];
         return 1;
     }
-    ok = depth_setup(fr, v, n, pl);
+    ok = n == 3 ? depth_setup_triangle(fr, v, pl) : depth_setup(fr, v, n, pl);
     if (kept) {
         kept->plane[0] = pl->ddx;
         kept->plane[1] = pl->ddy;
