@@ -842,18 +842,50 @@ static int polygon_smooth(const stp_instr *header)
  * stp_edges_row make it: the crossing of row centre yc is
  * floor((xa 2^16 + (yc - ya) slope) / 2^16) with slope = trunc(2^16 (xb -
  * xa) / (yb - ya)), stepped by 16 slopes a row; so the triangle path
- * paints exactly the pixels the general one does. */
+ * paints exactly the pixels the general one does.  Without wide
+ * arithmetic in 32 bits (ARMv6-M: no 64-bit adds and shifts a row): the
+ * triangle path takes triangles whose x are below 2^14 (TRIANGLE_NARROW),
+ * and at a row centre ya <= yc < yb the accumulator is 2^16 times a point
+ * of [xa, xb] less (yc - ya) times the slope's truncation (below one), so
+ * within (-2^20, 2^30 + 2^20); a step taken (the next row is the edge's
+ * too) is the difference of two such values, below 2^31.  A slope of 2^27
+ * or more is never stepped by: its step is stored as 0. */
+#if STP_WIDE_ARITH /* 64-bit registers: no limit, no narrowing */
+typedef int64_t tri_acc;
+#define TRIANGLE_NARROW(v) 1
+#else
+typedef int32_t tri_acc;
+#define TRIANGLE_NARROW(v) ((((uint32_t)(v)[0].x | (uint32_t)(v)[1].x | (uint32_t)(v)[2].x) >> 14) == 0)
+#endif
 typedef struct tri_edge {
-    int64_t acc, step;
+    tri_acc acc, step;
 } tri_edge;
 
 static void tri_edge_start(tri_edge *e, const stp_instr *a, const stp_instr *b, int32_t yc)
 {
     int64_t slope = stp_slope_q16(b->x - a->x, b->y - a->y);
-    e->acc = (int64_t)a->x * 65536 + (slope >= INT32_MIN && slope <= INT32_MAX
-                                          ? stp_smul32(yc - a->y, (int32_t)slope)
-                                          : (int64_t)(yc - a->y) * slope);
+    int64_t acc = (int64_t)a->x * 65536 + (slope >= INT32_MIN && slope <= INT32_MAX
+                                               ? stp_smul32(yc - a->y, (int32_t)slope)
+                                               : (int64_t)(yc - a->y) * slope);
+#if STP_WIDE_ARITH
+    e->acc = acc;
     e->step = slope * 16;
+#else
+    const int64_t big = (int64_t)1 << 27;
+    e->acc = (int32_t)acc;
+    e->step = slope > -big && slope < big ? (int32_t)slope * 16 : 0;
+#endif
+}
+
+/* floor(acc / 2^16) of an edge accumulator (narrow: without shifting a
+ * negative value, implementation-defined in C99) */
+static int32_t tri_edge_x(tri_acc acc)
+{
+#if STP_WIDE_ARITH
+    return (int32_t)stp_asr64(acc, 16);
+#else
+    return (int32_t)(((uint32_t)acc + 0x80000000u) >> 16) - (int32_t)0x8000;
+#endif
 }
 
 /* A flat triangle (df[at], vertices v) in the current band: the general
@@ -917,7 +949,7 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
     else
         tri_edge_start(&sht, mid, bot, yc);
     for (row = r_first;; row++) {
-        int32_t xl = (int32_t)stp_asr64(lng.acc, 16), xr = (int32_t)stp_asr64(sht.acc, 16);
+        int32_t xl = tri_edge_x(lng.acc), xr = tri_edge_x(sht.acc);
         uint32_t p1, p2;
         if (xl > xr) {
             int32_t x = xl;
@@ -968,8 +1000,9 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
 #endif
     }
 }
-/* Flat triangles take their own path unless the edge pass is on: it reads
- * the general path's crossings. */
+/* Flat triangles take their own path unless the edge pass is on (it reads
+ * the general path's crossings) or they reach x = 2^14 (1024 pixels:
+ * tri_edge's 32 bits). */
 #if STP_WITH_EDGE_AA
 #define TRIANGLE_PATH(fr) ((fr)->aa.out == 0)
 #else
@@ -1010,7 +1043,7 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
     depth_plane pl = {0, 0, 0, 0, 0};
     int64_t d_row = 0;
 #endif
-    if (n == 3 && !smooth && TRIANGLE_PATH(fr)) {
+    if (n == 3 && !smooth && TRIANGLE_PATH(fr) && TRIANGLE_NARROW(v)) {
         draw_triangle(fr, at, v, style, use_z, t, ordinal); /* the painter's order comes here */
         return;
     }
@@ -1152,7 +1185,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
             if (in->op >= 3) {
                 if (skip_polygons || !(pass == 0 || (pass == 1) == (t == 0)))
                     ;
-                else if (in->op == 3 && !polygon_smooth(in) && TRIANGLE_PATH(fr))
+                else if (in->op == 3 && !polygon_smooth(in) && TRIANGLE_PATH(fr) && TRIANGLE_NARROW(in))
                     draw_triangle(fr, k, in, style, use_z, t, ordinal);
                 else
                     draw_polygon(fr, k, style, use_z, t, ordinal);
