@@ -39,12 +39,17 @@ const uint32_t stp_slope_recip[STP_SLOPE_RECIP_SIZE] = {
 
 #if STP_WITH_ZBUFFER
 /* num / den truncated toward zero (C's division), den != 0.  Without wide
- * arithmetic: when |den| < 2^16 and |num| < 2^48, as three 32-bit
- * divisions of 16-bit digits (long division); else the library's. */
+ * arithmetic: one 32-bit division when both fit 32 bits; when |den| <
+ * 2^16 and |num| < 2^48, three of 16-bit digits (long division); else
+ * the library's. */
 static int64_t div_trunc(int64_t num, int64_t den)
 {
 #if !STP_WIDE_ARITH && !STP_SMALL_DIVISION /* with it: its loop alone, smaller */
     uint64_t un = num < 0 ? 0u - (uint64_t)num : (uint64_t)num, ud = den < 0 ? 0u - (uint64_t)den : (uint64_t)den;
+    if ((un | ud) < ((uint64_t)1 << 32)) { /* one 32-bit division: a small triangle's gradients */
+        uint32_t q = (uint32_t)un / (uint32_t)ud;
+        return (num < 0) != (den < 0) ? -(int64_t)q : (int64_t)q;
+    }
     if (ud < 65536u && un < ((uint64_t)1 << 48)) {
         uint32_t d = (uint32_t)ud, hi = (uint32_t)(un >> 32), q1, q2, q3, part;
         q1 = hi / d;
@@ -91,9 +96,12 @@ size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
 }
 
 /* Where depth_q12 is three 32 x 32-bit products from 16-bit halves
- * (32-bit targets without wide arithmetic) it keeps its last results. */
+ * (32-bit targets without wide arithmetic) it keeps its last results: 64
+ * (512 bytes of the frame on the stack) hold a mesh's vertex until the
+ * next ring of triangles comes back to it (16: 30 K more instructions a
+ * Cortex-M0+ torus frame). */
 #if !STP_WIDE_ARITH && UINTPTR_MAX > 0xFFFFu
-#define KEY_CACHE 16
+#define KEY_CACHE 64
 #else
 #define KEY_CACHE 0
 #endif
@@ -113,6 +121,7 @@ typedef struct frame {
     uint8_t *band;
     uint16_t *zbuf;
     uint32_t y0, rows; /* current band */
+    int32_t band_top, band_end; /* its rows' extent in subpixels: y0 2^SUB, (y0 + rows) 2^SUB */
     int32_t key_min, key_max; /* depth-key range of the visible polygons */
     int second_pass;          /* the Z buffer's second pass draws something:
                                  a transparent polygon or a line (lines are
@@ -132,6 +141,7 @@ typedef struct frame {
      * patterns[] the byte of each cell row for style pattern_style (-1:
      * none yet) */
     int mono_fill;
+    int pattern_port; /* mono_fill on a MONO1 port (not drawn grey): spans may come from patterns[] */
     uint32_t cell_mask;
     paint pattern_style;
     uint8_t patterns[STP_CELL_MAX];
@@ -646,13 +656,13 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
  * depth_scale = floor(65534 2^12 2^s / range) < 2^29 with 2^s >= range
  * (s = depth_shift), so u depth_scale / 2^s is less than one short of the
  * quotient and one correction makes it exact. */
-static int64_t depth_q12(frame *fr, int32_t key)
+static int32_t depth_q12(frame *fr, int32_t key)
 {
     const uint32_t k = (uint32_t)65534 << 12;
     uint32_t range = (uint32_t)((int64_t)fr->key_max - fr->key_min), u;
     uint64_t num, q;
     if (fr->key_max <= fr->key_min)
-        return (int64_t)65535 << 12;
+        return (int32_t)65535 << 12;
 #if KEY_CACHE > 0
     {
         uint32_t slot = ((uint32_t)key ^ ((uint32_t)key >> 8)) & (KEY_CACHE - 1);
@@ -677,7 +687,7 @@ static int64_t depth_q12(frame *fr, int32_t key)
     if (stp_umul32((uint32_t)q + 1u, range) <= num)
         q++;
 #endif
-    return ((int64_t)1 << 12) + (int64_t)q;
+    return (int32_t)(1 << 12) + (int32_t)q; /* q <= 65534 2^12: below 2^28 */
 #endif
 }
 
@@ -691,27 +701,57 @@ typedef struct depth_plane {
     int32_t xc, yc;
 } depth_plane;
 
+/* The plane through Newell's sums a, b, c (c != 0) of n vertices whose
+ * coordinates and Q12 depths sum to sx, sy, sd: gradients -a 4096 / c and
+ * -b 4096 / c clamped to +-2^40, the centre their averages. */
+static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, int64_t c, uint32_t sx, uint32_t sy,
+                                         int64_t sd, int n)
+{
+    pl->ddx = div_trunc(-a * 4096, c);
+    pl->ddy = div_trunc(-b * 4096, c);
+    if (!(a > -((int64_t)1 << 28) && a < ((int64_t)1 << 28) && b > -((int64_t)1 << 28) &&
+          b < ((int64_t)1 << 28))) { /* else |4096 a|, |4096 b| < 2^40: nothing to clamp */
+        if (pl->ddx > ((int64_t)1 << 40)) pl->ddx = (int64_t)1 << 40;
+        if (pl->ddx < -((int64_t)1 << 40)) pl->ddx = -((int64_t)1 << 40);
+        if (pl->ddy > ((int64_t)1 << 40)) pl->ddy = (int64_t)1 << 40;
+        if (pl->ddy < -((int64_t)1 << 40)) pl->ddy = -((int64_t)1 << 40);
+    }
+    pl->xc = (int32_t)div_count(sx, (uint32_t)n);
+    pl->yc = (int32_t)div_count(sy, (uint32_t)n);
+    /* depths below 2^28: 32-bit division while the sum fits */
+    pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : STP_DIV64(sd, n);
+}
+
+/* A triangle's plane: its Newell sums are its cross product, exactly
+ * (relative coordinates below 2^20, depths below 2^16); its three Q12
+ * depths (below 2^28) sum below 2^30. */
+static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
+{
+    int32_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z), d2 = depth_q12(fr, v[2].z);
+    int32_t x1 = v[1].x - v[0].x, y1 = v[1].y - v[0].y, x2 = v[2].x - v[0].x, y2 = v[2].y - v[0].y;
+    int32_t e1 = (d1 >> 12) - (d0 >> 12), e2 = (d2 >> 12) - (d0 >> 12);
+    int64_t c = stp_smul32(x1, y2) - stp_smul32(y1, x2);
+    if (c == 0) {
+        pl->ddx = pl->ddy = pl->dc = 0;
+        pl->xc = pl->yc = 0;
+        return 0;
+    }
+    depth_plane_from_sums(pl, stp_smul32(y1, e2) - stp_smul32(e1, y2), stp_smul32(e1, x2) - stp_smul32(x1, e2), c,
+                          (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x,
+                          (uint32_t)v[0].y + (uint32_t)v[1].y + (uint32_t)v[2].y,
+                          (int64_t)((uint32_t)d0 + (uint32_t)d1 + (uint32_t)d2), 3);
+    return 1;
+}
+
+/* Any polygon's plane by Newell's loop (triangles: depth_setup_triangle). */
 static int depth_setup(frame *fr, const stp_instr *v, int n, depth_plane *pl)
 {
-    pl->ddx = pl->ddy = pl->dc = 0;
-    pl->xc = pl->yc = 0;
     int64_t a = 0, b = 0, c = 0, sd = 0, d_last = depth_q12(fr, v[n - 1].z), d_prev = d_last;
     uint32_t sx = 0, sy = 0; /* n <= 4101 coordinates in [0, 2^19]: < 2^32 */
     int i;
-    if (n == 3) {
-        /* a triangle's Newell sums are its cross product, exactly:
-         * relative coordinates below 2^20 and depths below 2^16 */
-        int64_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z);
-        int32_t x1 = v[1].x - v[0].x, y1 = v[1].y - v[0].y, x2 = v[2].x - v[0].x, y2 = v[2].y - v[0].y;
-        int32_t e1 = (int32_t)((d1 >> 12) - (d0 >> 12)), e2 = (int32_t)((d_last >> 12) - (d0 >> 12));
-        a = stp_smul32(y1, e2) - stp_smul32(e1, y2);
-        b = stp_smul32(e1, x2) - stp_smul32(x1, e2);
-        c = stp_smul32(x1, y2) - stp_smul32(y1, x2);
-        sx = (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x;
-        sy = (uint32_t)v[0].y + (uint32_t)v[1].y + (uint32_t)v[2].y;
-        sd = d0 + d1 + d_last;
-    }
-    for (i = n == 3 ? 3 : 0; i < n; i++) {
+    pl->ddx = pl->ddy = pl->dc = 0;
+    pl->xc = pl->yc = 0;
+    for (i = 0; i < n; i++) {
         const stp_instr *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
         int64_t d_q = i == n - 1 ? d_last : depth_q12(fr, q->z), dp = d_prev >> 12, dq = d_q >> 12;
         /* coordinates in [0, 2^19], depths in [1, 65535]: 32-bit factors */
@@ -725,16 +765,7 @@ static int depth_setup(frame *fr, const stp_instr *v, int n, depth_plane *pl)
     }
     if (c == 0)
         return 0;
-    pl->ddx = div_trunc(-a * 4096, c);
-    pl->ddy = div_trunc(-b * 4096, c);
-    if (pl->ddx > ((int64_t)1 << 40)) pl->ddx = (int64_t)1 << 40;
-    if (pl->ddx < -((int64_t)1 << 40)) pl->ddx = -((int64_t)1 << 40);
-    if (pl->ddy > ((int64_t)1 << 40)) pl->ddy = (int64_t)1 << 40;
-    if (pl->ddy < -((int64_t)1 << 40)) pl->ddy = -((int64_t)1 << 40);
-    pl->xc = (int32_t)div_count(sx, (uint32_t)n);
-    pl->yc = (int32_t)div_count(sy, (uint32_t)n);
-    /* depths below 2^28: 32-bit division while the sum fits */
-    pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : STP_DIV64(sd, n);
+    depth_plane_from_sums(pl, a, b, c, sx, sy, sd, n);
     return 1;
 }
 
@@ -761,7 +792,7 @@ static int depth_plane_for(frame *fr, const stp_instr *v, int n, uint32_t ordina
         pl->yc = kept->centre[1];
         return 1;
     }
-    ok = depth_setup(fr, v, n, pl);
+    ok = n == 3 ? depth_setup_triangle(fr, v, pl) : depth_setup(fr, v, n, pl);
     if (kept) {
         kept->plane[0] = pl->ddx;
         kept->plane[1] = pl->ddy;
@@ -791,7 +822,7 @@ static int paint_setup(frame *fr, uint32_t at, paint style, int smooth, stp_fix 
 #endif
     /* pattern bytes are made for MONO1 only (use_style); a MONO1 port
      * under error diffusion is drawn as GREY8 */
-    if (fr->port->format != STP_PIXEL_MONO1 || !fr->mono_fill || (style & STP_COLOUR_FLAG))
+    if (!fr->pattern_port || (style & STP_COLOUR_FLAG))
         return 0;
     if (style != fr->pattern_style)
         use_style(fr, style);
@@ -814,18 +845,50 @@ static int polygon_smooth(const stp_instr *header)
  * stp_edges_row make it: the crossing of row centre yc is
  * floor((xa 2^16 + (yc - ya) slope) / 2^16) with slope = trunc(2^16 (xb -
  * xa) / (yb - ya)), stepped by 16 slopes a row; so the triangle path
- * paints exactly the pixels the general one does. */
+ * paints exactly the pixels the general one does.  Without wide
+ * arithmetic in 32 bits (ARMv6-M: no 64-bit adds and shifts a row): the
+ * triangle path takes triangles whose x are below 2^14 (TRIANGLE_NARROW),
+ * and at a row centre ya <= yc < yb the accumulator is 2^16 times a point
+ * of [xa, xb] less (yc - ya) times the slope's truncation (below one), so
+ * within (-2^20, 2^30 + 2^20); a step taken (the next row is the edge's
+ * too) is the difference of two such values, below 2^31.  A slope of 2^27
+ * or more is never stepped by: its step is stored as 0. */
+#if STP_WIDE_ARITH /* 64-bit registers: no limit, no narrowing */
+typedef int64_t tri_acc;
+#define TRIANGLE_NARROW(v) 1
+#else
+typedef int32_t tri_acc;
+#define TRIANGLE_NARROW(v) ((((uint32_t)(v)[0].x | (uint32_t)(v)[1].x | (uint32_t)(v)[2].x) >> 14) == 0)
+#endif
 typedef struct tri_edge {
-    int64_t acc, step;
+    tri_acc acc, step;
 } tri_edge;
 
 static void tri_edge_start(tri_edge *e, const stp_instr *a, const stp_instr *b, int32_t yc)
 {
     int64_t slope = stp_slope_q16(b->x - a->x, b->y - a->y);
-    e->acc = (int64_t)a->x * 65536 + (slope >= INT32_MIN && slope <= INT32_MAX
-                                          ? stp_smul32(yc - a->y, (int32_t)slope)
-                                          : (int64_t)(yc - a->y) * slope);
+    int64_t acc = (int64_t)a->x * 65536 + (slope >= INT32_MIN && slope <= INT32_MAX
+                                               ? stp_smul32(yc - a->y, (int32_t)slope)
+                                               : (int64_t)(yc - a->y) * slope);
+#if STP_WIDE_ARITH
+    e->acc = acc;
     e->step = slope * 16;
+#else
+    const int64_t big = (int64_t)1 << 27;
+    e->acc = (int32_t)acc;
+    e->step = slope > -big && slope < big ? (int32_t)slope * 16 : 0;
+#endif
+}
+
+/* floor(acc / 2^16) of an edge accumulator (narrow: without shifting a
+ * negative value, implementation-defined in C99) */
+static int32_t tri_edge_x(tri_acc acc)
+{
+#if STP_WIDE_ARITH
+    return (int32_t)stp_asr64(acc, 16);
+#else
+    return (int32_t)(((uint32_t)acc + 0x80000000u) >> 16) - (int32_t)0x8000;
+#endif
 }
 
 /* A flat triangle (df[at], vertices v) in the current band: the general
@@ -863,10 +926,10 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
             mid = swap;
         }
     }
-    if (bot->y <= (int32_t)(fr->y0 << SUB) || top->y >= (int32_t)((fr->y0 + fr->rows) << SUB))
+    if (bot->y <= fr->band_top || top->y >= fr->band_end)
         return; /* not in the band */
 #if STP_WITH_ZBUFFER
-    if (use_z && fr->setup && ordinal != UINT32_MAX && top->y >= (int32_t)(fr->y0 << SUB))
+    if (use_z && fr->setup && ordinal != UINT32_MAX && top->y >= fr->band_top)
         fr->setup[ordinal].centre[0] = SETUP_NOT_MADE; /* its first band: made at the first span */
 #else
     (void)use_z;
@@ -889,7 +952,7 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
     else
         tri_edge_start(&sht, mid, bot, yc);
     for (row = r_first;; row++) {
-        int32_t xl = (int32_t)stp_asr64(lng.acc, 16), xr = (int32_t)stp_asr64(sht.acc, 16);
+        int32_t xl = tri_edge_x(lng.acc), xr = tri_edge_x(sht.acc);
         uint32_t p1, p2;
         if (xl > xr) {
             int32_t x = xl;
@@ -940,8 +1003,9 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
 #endif
     }
 }
-/* Flat triangles take their own path unless the edge pass is on: it reads
- * the general path's crossings. */
+/* Flat triangles take their own path unless the edge pass is on (it reads
+ * the general path's crossings) or they reach x = 2^14 (1024 pixels:
+ * tri_edge's 32 bits). */
 #if STP_WITH_EDGE_AA
 #define TRIANGLE_PATH(fr) ((fr)->aa.out == 0)
 #else
@@ -982,7 +1046,7 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
     depth_plane pl = {0, 0, 0, 0, 0};
     int64_t d_row = 0;
 #endif
-    if (n == 3 && !smooth && TRIANGLE_PATH(fr)) {
+    if (n == 3 && !smooth && TRIANGLE_PATH(fr) && TRIANGLE_NARROW(v)) {
         draw_triangle(fr, at, v, style, use_z, t, ordinal); /* the painter's order comes here */
         return;
     }
@@ -1124,7 +1188,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
             if (in->op >= 3) {
                 if (skip_polygons || !(pass == 0 || (pass == 1) == (t == 0)))
                     ;
-                else if (in->op == 3 && !polygon_smooth(in) && TRIANGLE_PATH(fr))
+                else if (in->op == 3 && !polygon_smooth(in) && TRIANGLE_PATH(fr) && TRIANGLE_NARROW(in))
                     draw_triangle(fr, k, in, style, use_z, t, ordinal);
                 else
                     draw_polygon(fr, k, style, use_z, t, ordinal);
@@ -1385,6 +1449,7 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
     fr.mono_fill = port->format == STP_PIXEL_MONO1 && fr.cell->kind == STP_CELL_THRESHOLD &&
                    fr.cell->width > 0 && 8u % fr.cell->width == 0 && fr.cell->height > 0 &&
                    fr.cell->height <= STP_CELL_MAX; /* patterns[] holds a row each */
+    fr.pattern_port = drawn->format == STP_PIXEL_MONO1 && fr.mono_fill;
     fr.cell_mask = (fr.cell->height & (fr.cell->height - 1u)) == 0 ? fr.cell->height - 1u : 0;
     fr.pattern_style = -1;
 #if STP_PATTERN_CACHE > 0
@@ -1410,6 +1475,8 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
         uint32_t y;
         fr.y0 = y0;
         fr.rows = r->height - y0 < mem->band_rows ? r->height - y0 : mem->band_rows;
+        fr.band_top = (int32_t)(y0 << SUB); /* heights below 2^15: no overflow */
+        fr.band_end = (int32_t)((y0 + fr.rows) << SUB);
         for (y = y0; y < y0 + fr.rows; y++) {
             /* MONO1 padding bits past the width reach the port too: make
              * them 0 rather than whatever the caller's buffer held */
