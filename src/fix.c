@@ -2,6 +2,7 @@
 /* Fixed-point arithmetic: see include/stipple/fix.h for formats and errors. */
 #include "stipple/fix.h"
 #include "fix_private.h"
+#include "recip_private.h"
 
 #define F STP_FIX_FRAC_BITS
 
@@ -337,10 +338,13 @@ static inline uint64_t rsqrt_q30(uint32_t m)
     /* Newton for 1/sqrt: y <- y (3 - m y^2) / 2; each step squares the
      * relative error (2^-8 -> 2^-15 -> 2^-29 with the rounding).  m y^2 stays
      * within 2^30 (1 +- 2^-7), so 3 2^30 - m y^2 > 0 and y (...) < 2^62 */
+    /* Newton approaches 1/sqrt from below, so y <= 2^30, y2 <= 2^30,
+     * my2 < 2^31 and every factor fits 32 bits: exact 32 x 32 products
+     * (stp_umul32x32: no library call where 64-bit products are one) */
     for (k = 0; k < 2; k++) {
-        uint64_t y2 = (y * y) >> 30;
-        uint64_t my2 = ((uint64_t)m * y2) >> 30;
-        y = (y * (((uint64_t)3 << 30) - my2)) >> 31;
+        uint64_t y2 = stp_umul32x32((uint32_t)y, (uint32_t)y) >> 30;
+        uint64_t my2 = stp_umul32x32(m, (uint32_t)y2) >> 30;
+        y = stp_umul32x32((uint32_t)y, (uint32_t)(((uint64_t)3 << 30) - my2)) >> 31;
     }
     return y;
 }
@@ -390,7 +394,10 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
         y = stp_asr64(y, -up);
         z = stp_asr64(z, -up);
     }
-    s = (uint64_t)(x * x) + (uint64_t)(y * y) + (uint64_t)(z * z);
+    /* |x|, |y|, |z| < 2^30 now: exact 32 x 32 products */
+    s = stp_umul32x32(abs32((int32_t)x), abs32((int32_t)x)) +
+        stp_umul32x32(abs32((int32_t)y), abs32((int32_t)y)) +
+        stp_umul32x32(abs32((int32_t)z), abs32((int32_t)z));
     /* rsqrt64 for s in [2^58, 3 2^60), a bit length of 59..62: its even
      * shift is 28 or 30, and 1/sqrt(s) = inv 2^-e with e = 59 or 60 */
     sh = s >= ((uint64_t)1 << 60) ? 30 : 28;
@@ -398,11 +405,11 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
     e = 45 + sh / 2 - 30; /* to STP_UNIT */
     half = (int64_t)1 << (e - 1);
     /* |x inv| < 2^60 */
-    out->x = (int32_t)floor_shift(x * inv + half, e);
-    out->y = (int32_t)floor_shift(y * inv + half, e);
-    out->z = (int32_t)floor_shift(z * inv + half, e);
+    out->x = (int32_t)floor_shift(stp_smul32x32((int32_t)x, (int32_t)inv) + half, e);
+    out->y = (int32_t)floor_shift(stp_smul32x32((int32_t)y, (int32_t)inv) + half, e);
+    out->z = (int32_t)floor_shift(stp_smul32x32((int32_t)z, (int32_t)inv) + half, e);
     /* |v| scaled = s / sqrt(s): s >> 30 < 2^32 times inv < 2^31 */
-    len = ((s >> 30) * (uint64_t)inv) >> (e - 0);
+    len = stp_umul32x32((uint32_t)(s >> 30), (uint32_t)inv) >> e;
     /* to the input's units, rounded to nearest (len may sit 2^-29 below an
      * exact integer length, which a floor would take a whole unit down) */
     if (up > 0)
@@ -423,6 +430,6 @@ uint32_t stp_sqrt64_fast(uint64_t v)
     inv = rsqrt64(v, &e); /* sets e: a statement of its own */
     /* sqrt(v) = v / sqrt(v) = m 2^sh inv 2^-e: m < 2^32, inv <= 2^30;
      * e - sh = 45 - sh/2 > 0 */
-    r = (m * inv) >> (e - sh);
+    r = stp_umul32x32((uint32_t)m, (uint32_t)inv) >> (e - sh);
     return r > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)r;
 }

@@ -753,6 +753,17 @@ static void enter_outcodes(stp_renderer *r, stp_entry *e)
 }
 #endif
 
+/* v / 3 truncated toward zero, as C's operator, for any int32 v: |v| < 2^32
+ * times ceil(2^33 / 3) = 0xAAAAAAAB, shifted down 33, is floor(|v| / 3)
+ * exactly (the multiplier's excess 1/3 2^-33 times |v| < 2^32 stays below
+ * the 1/3 gap to the next integer), then the sign. */
+static stp_fix third_toward_zero(int32_t v)
+{
+    uint32_t u = v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+    uint32_t q = (uint32_t)(stp_umul32x32(u, 0xAAAAAAABu) >> 33);
+    return v < 0 ? (stp_fix)(0 - (int32_t)q) : (stp_fix)q;
+}
+
 /* Newell normal (Algorithm 10.4) of the view-space vertices in clip_a,
  * not normalised (components below 2^62), and their average.  Returns 0 for
  * a zero normal.  For a triangle Newell's sum is the cross product
@@ -831,11 +842,11 @@ static int newell(const stp_renderer *r, stp_entry *e)
         return 0;
     if (!WIDE_DIVISION && n == 3 && sx >= INT32_MIN && sx <= INT32_MAX && sy >= INT32_MIN && sy <= INT32_MAX &&
         sz >= INT32_MIN && sz <= INT32_MAX) {
-        /* the same truncated quotients in 32 bits (a library call fewer
-         * per coordinate where a 64-bit division is one) */
-        e->centre.x = (stp_fix)((int32_t)sx / 3);
-        e->centre.y = (stp_fix)((int32_t)sy / 3);
-        e->centre.z = (stp_fix)((int32_t)sz / 3);
+        /* the same truncated quotients without a division (a library
+         * call per coordinate where 32-bit division is one) */
+        e->centre.x = third_toward_zero((int32_t)sx);
+        e->centre.y = third_toward_zero((int32_t)sy);
+        e->centre.z = third_toward_zero((int32_t)sz);
     } else {
         e->centre.x = (stp_fix)(sx / n);
         e->centre.y = (stp_fix)(sy / n);
