@@ -330,6 +330,24 @@ static const uint16_t rsqrt_seed[192] STP_TABLE = {
     34384, 34310, 34237, 34164, 34092, 34020, 33949, 33878, 33807, 33737, 33668, 33599,
     33530, 33461, 33393, 33326, 33259, 33192, 33126, 33060, 32994, 32929, 32864, 32800};
 
+/* floor(a b / 2^s) for 16 <= s < 32 and a result below 2^32 (the caller's
+ * bound): exact.  Where 64-bit products are a library call, four 32-bit
+ * products of 16-bit halves put together in 32-bit words (no 64-bit
+ * shifts or adds). */
+static inline uint32_t mul_shr32(uint32_t a, uint32_t b, int s)
+{
+#if STP_WIDE_ARITH
+    return (uint32_t)(((uint64_t)a * b) >> s);
+#else
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl;
+    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    uint32_t high = ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16); /* a b / 2^32 */
+    uint32_t low = (mid << 16) | (ll & 0xFFFFu);
+    return (uint32_t)(high << (32 - s)) | (low >> s);
+#endif
+}
+
 /* 1/sqrt(m / 2^30) in Q30 for m in [2^30, 2^32). */
 static inline uint64_t rsqrt_q30(uint32_t m)
 {
@@ -338,13 +356,19 @@ static inline uint64_t rsqrt_q30(uint32_t m)
     /* Newton for 1/sqrt: y <- y (3 - m y^2) / 2; each step squares the
      * relative error (2^-8 -> 2^-15 -> 2^-29 with the rounding).  m y^2 stays
      * within 2^30 (1 +- 2^-7), so 3 2^30 - m y^2 > 0 and y (...) < 2^62 */
-    /* Newton approaches 1/sqrt from below, so y <= 2^30, y2 <= 2^30,
-     * my2 < 2^31 and every factor fits 32 bits: exact 32 x 32 products
-     * (stp_umul32x32: no library call where 64-bit products are one) */
+    /* Newton approaches 1/sqrt from below (the floors add a few units at
+     * most), so y, y2 and my2 stay within a few units of 2^30 and each
+     * floor(product / 2^s) fits 32 bits: mul_shr32, exact */
     for (k = 0; k < 2; k++) {
-        uint64_t y2 = stp_umul32x32((uint32_t)y, (uint32_t)y) >> 30;
-        uint64_t my2 = stp_umul32x32(m, (uint32_t)y2) >> 30;
-        y = stp_umul32x32((uint32_t)y, (uint32_t)(((uint64_t)3 << 30) - my2)) >> 31;
+#if STP_WIDE_ARITH
+        uint64_t y2 = (y * y) >> 30;
+        uint64_t my2 = ((uint64_t)m * y2) >> 30;
+        y = (y * (((uint64_t)3 << 30) - my2)) >> 31;
+#else
+        uint32_t y2 = mul_shr32((uint32_t)y, (uint32_t)y, 30);
+        uint32_t my2 = mul_shr32(m, y2, 30);
+        y = mul_shr32((uint32_t)y, ((uint32_t)3 << 30) - my2, 31);
+#endif
     }
     return y;
 }
@@ -394,10 +418,14 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
         y = stp_asr64(y, -up);
         z = stp_asr64(z, -up);
     }
-    /* |x|, |y|, |z| < 2^30 now: exact 32 x 32 products */
+    /* |x|, |y|, |z| <= 2^30 now: exact 32 x 32 products */
+#if STP_WIDE_ARITH
+    s = (uint64_t)(x * x) + (uint64_t)(y * y) + (uint64_t)(z * z);
+#else
     s = stp_umul32x32(abs32((int32_t)x), abs32((int32_t)x)) +
         stp_umul32x32(abs32((int32_t)y), abs32((int32_t)y)) +
         stp_umul32x32(abs32((int32_t)z), abs32((int32_t)z));
+#endif
     /* rsqrt64 for s in [2^58, 3 2^60), a bit length of 59..62: its even
      * shift is 28 or 30, and 1/sqrt(s) = inv 2^-e with e = 59 or 60 */
     sh = s >= ((uint64_t)1 << 60) ? 30 : 28;
@@ -405,11 +433,18 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
     e = 45 + sh / 2 - 30; /* to STP_UNIT */
     half = (int64_t)1 << (e - 1);
     /* |x inv| < 2^60 */
+#if STP_WIDE_ARITH
+    out->x = (int32_t)floor_shift(x * inv + half, e);
+    out->y = (int32_t)floor_shift(y * inv + half, e);
+    out->z = (int32_t)floor_shift(z * inv + half, e);
+    /* |v| scaled = s / sqrt(s): s >> 30 < 2^32 times inv < 2^31 */
+    len = ((s >> 30) * (uint64_t)inv) >> e;
+#else
     out->x = (int32_t)floor_shift(stp_smul32x32((int32_t)x, (int32_t)inv) + half, e);
     out->y = (int32_t)floor_shift(stp_smul32x32((int32_t)y, (int32_t)inv) + half, e);
     out->z = (int32_t)floor_shift(stp_smul32x32((int32_t)z, (int32_t)inv) + half, e);
-    /* |v| scaled = s / sqrt(s): s >> 30 < 2^32 times inv < 2^31 */
-    len = stp_umul32x32((uint32_t)(s >> 30), (uint32_t)inv) >> e;
+    len = mul_shr32((uint32_t)(s >> 30), (uint32_t)inv, e); /* < 2^32: |v| scaled < 2^30 sqrt 3 */
+#endif
     /* to the input's units, rounded to nearest (len may sit 2^-29 below an
      * exact integer length, which a floor would take a whole unit down) */
     if (up > 0)
@@ -430,6 +465,10 @@ uint32_t stp_sqrt64_fast(uint64_t v)
     inv = rsqrt64(v, &e); /* sets e: a statement of its own */
     /* sqrt(v) = v / sqrt(v) = m 2^sh inv 2^-e: m < 2^32, inv <= 2^30;
      * e - sh = 45 - sh/2 > 0 */
+#if STP_WIDE_ARITH
+    r = (m * inv) >> (e - sh);
+#else
     r = stp_umul32x32((uint32_t)m, (uint32_t)inv) >> (e - sh);
+#endif
     return r > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)r;
 }

@@ -14,11 +14,7 @@
 /* Whether a 64-bit division is one instruction (64-bit hosts); elsewhere
  * (a ~470-instruction library call on ARMv6-M) a quotient that fits 32
  * bits is taken in 32 bits, with the same result. */
-#if defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
-#define WIDE_DIVISION 1
-#else
-#define WIDE_DIVISION 0
-#endif
+#define WIDE_DIVISION STP_WIDE_ARITH /* recip_private.h: the same test */
 
 /* STP_RENDERER_BYTES must bound the object: a negative array size here
  * stops the build when it does not. */
@@ -753,17 +749,6 @@ static void enter_outcodes(stp_renderer *r, stp_entry *e)
 }
 #endif
 
-/* v / 3 truncated toward zero, as C's operator, for any int32 v: |v| < 2^32
- * times ceil(2^33 / 3) = 0xAAAAAAAB, shifted down 33, is floor(|v| / 3)
- * exactly (the multiplier's excess 1/3 2^-33 times |v| < 2^32 stays below
- * the 1/3 gap to the next integer), then the sign. */
-static stp_fix third_toward_zero(int32_t v)
-{
-    uint32_t u = v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
-    uint32_t q = (uint32_t)(stp_umul32x32(u, 0xAAAAAAABu) >> 33);
-    return v < 0 ? (stp_fix)(0 - (int32_t)q) : (stp_fix)q;
-}
-
 /* Newell normal (Algorithm 10.4) of the view-space vertices in clip_a,
  * not normalised (components below 2^62), and their average.  Returns 0 for
  * a zero normal.  For a triangle Newell's sum is the cross product
@@ -844,9 +829,9 @@ static int newell(const stp_renderer *r, stp_entry *e)
         sz >= INT32_MIN && sz <= INT32_MAX) {
         /* the same truncated quotients without a division (a library
          * call per coordinate where 32-bit division is one) */
-        e->centre.x = third_toward_zero((int32_t)sx);
-        e->centre.y = third_toward_zero((int32_t)sy);
-        e->centre.z = third_toward_zero((int32_t)sz);
+        e->centre.x = (stp_fix)stp_div3_toward_zero((int32_t)sx);
+        e->centre.y = (stp_fix)stp_div3_toward_zero((int32_t)sy);
+        e->centre.z = (stp_fix)stp_div3_toward_zero((int32_t)sz);
     } else {
         e->centre.x = (stp_fix)(sx / n);
         e->centre.y = (stp_fix)(sy / n);
@@ -1136,6 +1121,30 @@ static stp_face world_facing_near(const stp_renderer *r, const stp_vec3 *v)
     int64_t cx, cy, cz, side;
     if ((x1 | y1 | z1 | x2 | y2 | z2) >= 2 * half || !r->near_ok)
         return STP_FACE_UNKNOWN;
+    x0 = (uint32_t)v[0].x - r->near_bias_x;
+    y0 = (uint32_t)v[0].y - r->near_bias_y;
+    z0 = (uint32_t)v[0].z - r->near_bias_z;
+    if ((x0 | y0 | z0) >= 2 * half)
+        return STP_FACE_UNKNOWN;
+#if !STP_WIDE_ARITH
+    {
+        /* where 64-bit products are library calls, a small triangle (every
+         * edge component within 2^15, half a unit: a mesh's): with d = w - w0, w0.(w1 x w2) = w0.(d1 x d2) (the
+         * other terms are perpendicular to w0), d1 x d2 below 2^31 in
+         * int32, three 64-bit products instead of nine */
+        int32_t ax = (int32_t)(x1 - x0), ay = (int32_t)(y1 - y0), az = (int32_t)(z1 - z0);
+        int32_t bx = (int32_t)(x2 - x0), by = (int32_t)(y2 - y0), bz = (int32_t)(z2 - z0);
+        const uint32_t edge = (uint32_t)1 << 15;
+        if (((uint32_t)ax + edge) < 2 * edge && ((uint32_t)ay + edge) < 2 * edge &&
+            ((uint32_t)az + edge) < 2 * edge && ((uint32_t)bx + edge) < 2 * edge &&
+            ((uint32_t)by + edge) < 2 * edge && ((uint32_t)bz + edge) < 2 * edge) {
+            side = -((int64_t)(ay * bz - az * by) * ((int32_t)x0 - (int32_t)half) +
+                     (int64_t)(az * bx - ax * bz) * ((int32_t)y0 - (int32_t)half) +
+                     (int64_t)(ax * by - ay * bx) * ((int32_t)z0 - (int32_t)half));
+            return side > 0 ? STP_FACE_FRONT : (side < 0 ? STP_FACE_BACK : STP_FACE_UNKNOWN);
+        }
+    }
+#endif
     /* w = u - 2^20 in int32 */
     cx = (int64_t)((int32_t)y1 - (int32_t)half) * ((int32_t)z2 - (int32_t)half) -
          (int64_t)((int32_t)z1 - (int32_t)half) * ((int32_t)y2 - (int32_t)half);
@@ -1143,11 +1152,6 @@ static stp_face world_facing_near(const stp_renderer *r, const stp_vec3 *v)
          (int64_t)((int32_t)x1 - (int32_t)half) * ((int32_t)z2 - (int32_t)half);
     cz = (int64_t)((int32_t)x1 - (int32_t)half) * ((int32_t)y2 - (int32_t)half) -
          (int64_t)((int32_t)y1 - (int32_t)half) * ((int32_t)x2 - (int32_t)half);
-    x0 = (uint32_t)v[0].x - r->near_bias_x;
-    y0 = (uint32_t)v[0].y - r->near_bias_y;
-    z0 = (uint32_t)v[0].z - r->near_bias_z;
-    if ((x0 | y0 | z0) >= 2 * half)
-        return STP_FACE_UNKNOWN;
     side = -(cx * ((int32_t)x0 - (int32_t)half) + cy * ((int32_t)y0 - (int32_t)half) +
              cz * ((int32_t)z0 - (int32_t)half));
     return side > 0 ? STP_FACE_FRONT : (side < 0 ? STP_FACE_BACK : STP_FACE_UNKNOWN);
