@@ -356,20 +356,30 @@ static inline uint64_t rsqrt_q30(uint32_t m)
     /* Newton for 1/sqrt: y <- y (3 - m y^2) / 2; each step squares the
      * relative error (2^-8 -> 2^-15 -> 2^-29 with the rounding).  m y^2 stays
      * within 2^30 (1 +- 2^-7), so 3 2^30 - m y^2 > 0 and y (...) < 2^62 */
-    /* Newton approaches 1/sqrt from below (the floors add a few units at
-     * most), so y, y2 and my2 stay within a few units of 2^30 and each
-     * floor(product / 2^s) fits 32 bits: mul_shr32, exact */
-    for (k = 0; k < 2; k++) {
 #if STP_WIDE_ARITH
+    for (k = 0; k < 2; k++) {
         uint64_t y2 = (y * y) >> 30;
         uint64_t my2 = ((uint64_t)m * y2) >> 30;
         y = (y * (((uint64_t)3 << 30) - my2)) >> 31;
+    }
 #else
+    /* the same floors in 32-bit words: Newton approaches 1/sqrt from
+     * below (the floors add a few units at most), so y and y2 stay within
+     * a few units of 2^30, my2 within 2^30 (1 +- 2^-7), and each
+     * floor(product / 2^s) fits 32 bits.  The first step's y is the
+     * 16-bit seed times 2^14: y2 = seed^2 / 4, and y t / 2^31 =
+     * (seed t_high + seed t_low / 2^16) / 2, floored at each step */
+    {
+        uint32_t seed = (uint32_t)(y >> 14), y2 = (seed * seed) >> 2;
+        uint32_t t = ((uint32_t)3 << 30) - mul_shr32(m, y2, 30);
+        y = (seed * (t >> 16) + ((seed * (t & 0xFFFFu)) >> 16)) >> 1;
+    }
+    for (k = 1; k < 2; k++) {
         uint32_t y2 = mul_shr32((uint32_t)y, (uint32_t)y, 30);
         uint32_t my2 = mul_shr32(m, y2, 30);
         y = mul_shr32((uint32_t)y, ((uint32_t)3 << 30) - my2, 31);
-#endif
     }
+#endif
     return y;
 }
 
@@ -396,13 +406,36 @@ static inline int64_t floor_shift(int64_t v, int s)
     return ((v + ((int64_t)1 << 62)) >> s) - ((int64_t)1 << (62 - s));
 }
 
+#if !STP_WIDE_ARITH
+/* a^2 for a <= 2^30 from three 32-bit products (ah <= 2^14, so the cross
+ * product al ah < 2^30 and twice it fits) */
+static inline uint64_t square30(uint32_t a)
+{
+    uint32_t al = a & 0xFFFFu, ah = a >> 16;
+    uint32_t ll = al * al, mid = al * ah, low = ll + (mid << 17);
+    uint32_t high = ah * ah + (mid >> 15) + (low < ll ? 1u : 0u);
+    return ((uint64_t)high << 32) | low;
+}
+
+/* floor((x inv + 2^(e-1)) / 2^e) for |x| <= 2^30, inv < 2^31, e = 29 or
+ * 30 (stp_unit_from64's rounding) from the magnitude's product p: for
+ * x < 0 it is -ceil((p - 2^(e-1)) / 2^e) = -floor((p + 2^(e-1) - 1) / 2^e) */
+static inline int32_t round_unit(int32_t x, uint32_t inv, int e)
+{
+    uint64_t half = (uint64_t)1 << (e - 1);
+    if (x >= 0)
+        return (int32_t)((stp_umul32x32((uint32_t)x, inv) + half) >> e);
+    return 0 - (int32_t)((stp_umul32x32(0u - (uint32_t)x, inv) + half - 1u) >> e);
+}
+#endif
+
 int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
 {
     uint64_t ax = (uint64_t)(x < 0 ? -x : x), ay = (uint64_t)(y < 0 ? -y : y),
              az = (uint64_t)(z < 0 ? -z : z);
     uint64_t s, len;
     int up, e, sh;
-    int64_t inv, half;
+    int64_t inv;
     out->x = out->y = out->z = 0;
     if ((ax | ay | az) == 0)
         return 0;
@@ -422,27 +455,27 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
 #if STP_WIDE_ARITH
     s = (uint64_t)(x * x) + (uint64_t)(y * y) + (uint64_t)(z * z);
 #else
-    s = stp_umul32x32(abs32((int32_t)x), abs32((int32_t)x)) +
-        stp_umul32x32(abs32((int32_t)y), abs32((int32_t)y)) +
-        stp_umul32x32(abs32((int32_t)z), abs32((int32_t)z));
+    s = square30(abs32((int32_t)x)) + square30(abs32((int32_t)y)) + square30(abs32((int32_t)z));
 #endif
     /* rsqrt64 for s in [2^58, 3 2^60), a bit length of 59..62: its even
      * shift is 28 or 30, and 1/sqrt(s) = inv 2^-e with e = 59 or 60 */
     sh = s >= ((uint64_t)1 << 60) ? 30 : 28;
     inv = (int64_t)rsqrt_q30((uint32_t)(s >> sh));
     e = 45 + sh / 2 - 30; /* to STP_UNIT */
-    half = (int64_t)1 << (e - 1);
     /* |x inv| < 2^60 */
 #if STP_WIDE_ARITH
-    out->x = (int32_t)floor_shift(x * inv + half, e);
-    out->y = (int32_t)floor_shift(y * inv + half, e);
-    out->z = (int32_t)floor_shift(z * inv + half, e);
+    {
+        const int64_t half = (int64_t)1 << (e - 1);
+        out->x = (int32_t)floor_shift(x * inv + half, e);
+        out->y = (int32_t)floor_shift(y * inv + half, e);
+        out->z = (int32_t)floor_shift(z * inv + half, e);
+    }
     /* |v| scaled = s / sqrt(s): s >> 30 < 2^32 times inv < 2^31 */
     len = ((s >> 30) * (uint64_t)inv) >> e;
 #else
-    out->x = (int32_t)floor_shift(stp_smul32x32((int32_t)x, (int32_t)inv) + half, e);
-    out->y = (int32_t)floor_shift(stp_smul32x32((int32_t)y, (int32_t)inv) + half, e);
-    out->z = (int32_t)floor_shift(stp_smul32x32((int32_t)z, (int32_t)inv) + half, e);
+    out->x = round_unit((int32_t)x, (uint32_t)inv, e);
+    out->y = round_unit((int32_t)y, (uint32_t)inv, e);
+    out->z = round_unit((int32_t)z, (uint32_t)inv, e);
     len = mul_shr32((uint32_t)(s >> 30), (uint32_t)inv, e); /* < 2^32: |v| scaled < 2^30 sqrt 3 */
 #endif
     /* to the input's units, rounded to nearest (len may sit 2^-29 below an
