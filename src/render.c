@@ -779,9 +779,21 @@ static int newell(const stp_renderer *r, stp_entry *e)
             y2 /= div;
             z2 /= div;
         }
-        a = y1 * z2 - z1 * y2;
-        b = z1 * x2 - x1 * z2;
-        c = x1 * y2 - y1 * x2;
+#if !STP_WIDE_ARITH
+        if (spread < ((uint64_t)1 << 15)) {
+            /* differences below 2^15 (half a unit, a mesh's triangle):
+             * products below 2^30 and their differences below 2^31 in
+             * int32, without the 64-bit multiply library call */
+            a = (int32_t)y1 * (int32_t)z2 - (int32_t)z1 * (int32_t)y2;
+            b = (int32_t)z1 * (int32_t)x2 - (int32_t)x1 * (int32_t)z2;
+            c = (int32_t)x1 * (int32_t)y2 - (int32_t)y1 * (int32_t)x2;
+        } else
+#endif
+        {
+            a = y1 * z2 - z1 * y2;
+            b = z1 * x2 - x1 * z2;
+            c = x1 * y2 - y1 * x2;
+        }
         sx = (int64_t)v[0].x + v[1].x + v[2].x;
         sy = (int64_t)v[0].y + v[1].y + v[2].y;
         sz = (int64_t)v[0].z + v[1].z + v[2].z;
