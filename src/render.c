@@ -542,9 +542,18 @@ static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
         /* focal * x / z has F fractional bits; keep SUBPIXEL of them */
         /* stp_div64_fast: the same quotients as C's operator, without a
          * library call where 64-bit division is one (recip.c) */
+#if STP_WIDE_ARITH
         x = stp_asr64(stp_div64_fast((int64_t)r->focal * p.x, z), F - STP_SUBPIXEL_BITS);
         y = stp_asr64(stp_div64_fast((int64_t)r->focal * p.y, z), F - STP_SUBPIXEL_BITS);
         out->z = (int32_t)stp_div64_fast(((int64_t)r->hither) << 30, z);
+#else
+        /* one reciprocal of z for the three quotients (z < 2^31) */
+        stp_recip_divisor dz;
+        stp_recip_divisor_init(&dz, (uint32_t)z);
+        x = stp_asr64(stp_div64_by(&dz, (int64_t)r->focal * p.x), F - STP_SUBPIXEL_BITS);
+        y = stp_asr64(stp_div64_by(&dz, (int64_t)r->focal * p.y), F - STP_SUBPIXEL_BITS);
+        out->z = (int32_t)stp_div64_by(&dz, ((int64_t)r->hither) << 30);
+#endif
     } else {
         x = stp_asr64((int64_t)r->focal * p.x, 2 * F - STP_SUBPIXEL_BITS);
         y = stp_asr64((int64_t)r->focal * p.y, 2 * F - STP_SUBPIXEL_BITS);
