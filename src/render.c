@@ -699,9 +699,11 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
     unsigned all = 31u, any = 0;
     for (i = 0; i < e->n; i++) {
         stp_vec3 p = vertices[i];
-        /* a multiplicative hash of the exact coordinates */
-        uint32_t h = ((uint32_t)p.x * 0x9E3779B1u) ^ ((uint32_t)p.y * 0x85EBCA77u) ^
-                     ((uint32_t)p.z * 0xC2B2AE3Du);
+        /* a multiplicative hash of the exact coordinates, rotated apart
+         * and mixed by one product (compilers for cores without a fast
+         * multiplier expand each constant product into ~20 shifts) */
+        uint32_t ux = (uint32_t)p.x, uy = (uint32_t)p.y, uz = (uint32_t)p.z;
+        uint32_t h = (ux ^ ((uy << 11) | (uy >> 21)) ^ ((uz << 22) | (uz >> 10))) * 0x9E3779B1u;
         uint32_t slot = (h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1);
         stp_vertex_entry *c = &r->cache[slot];
         if (c->stamp != r->cache_stamp || c->point.x != p.x || c->point.y != p.y ||
