@@ -2,6 +2,7 @@
 /* Fixed-point arithmetic: see include/stipple/fix.h for formats and errors. */
 #include "stipple/fix.h"
 #include "fix_private.h"
+#include "recip_private.h"
 
 #define F STP_FIX_FRAC_BITS
 
@@ -329,6 +330,24 @@ static const uint16_t rsqrt_seed[192] STP_TABLE = {
     34384, 34310, 34237, 34164, 34092, 34020, 33949, 33878, 33807, 33737, 33668, 33599,
     33530, 33461, 33393, 33326, 33259, 33192, 33126, 33060, 32994, 32929, 32864, 32800};
 
+/* floor(a b / 2^s) for 16 <= s < 32 and a result below 2^32 (the caller's
+ * bound): exact.  Where 64-bit products are a library call, four 32-bit
+ * products of 16-bit halves put together in 32-bit words (no 64-bit
+ * shifts or adds). */
+static inline uint32_t mul_shr32(uint32_t a, uint32_t b, int s)
+{
+#if STP_WIDE_ARITH
+    return (uint32_t)(((uint64_t)a * b) >> s);
+#else
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl;
+    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    uint32_t high = ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16); /* a b / 2^32 */
+    uint32_t low = (mid << 16) | (ll & 0xFFFFu);
+    return (uint32_t)(high << (32 - s)) | (low >> s);
+#endif
+}
+
 /* 1/sqrt(m / 2^30) in Q30 for m in [2^30, 2^32). */
 static inline uint64_t rsqrt_q30(uint32_t m)
 {
@@ -337,11 +356,30 @@ static inline uint64_t rsqrt_q30(uint32_t m)
     /* Newton for 1/sqrt: y <- y (3 - m y^2) / 2; each step squares the
      * relative error (2^-8 -> 2^-15 -> 2^-29 with the rounding).  m y^2 stays
      * within 2^30 (1 +- 2^-7), so 3 2^30 - m y^2 > 0 and y (...) < 2^62 */
+#if STP_WIDE_ARITH
     for (k = 0; k < 2; k++) {
         uint64_t y2 = (y * y) >> 30;
         uint64_t my2 = ((uint64_t)m * y2) >> 30;
         y = (y * (((uint64_t)3 << 30) - my2)) >> 31;
     }
+#else
+    /* the same floors in 32-bit words: Newton approaches 1/sqrt from
+     * below (the floors add a few units at most), so y and y2 stay within
+     * a few units of 2^30, my2 within 2^30 (1 +- 2^-7), and each
+     * floor(product / 2^s) fits 32 bits.  The first step's y is the
+     * 16-bit seed times 2^14: y2 = seed^2 / 4, and y t / 2^31 =
+     * (seed t_high + seed t_low / 2^16) / 2, floored at each step */
+    {
+        uint32_t seed = (uint32_t)(y >> 14), y2 = (seed * seed) >> 2;
+        uint32_t t = ((uint32_t)3 << 30) - mul_shr32(m, y2, 30);
+        y = (seed * (t >> 16) + ((seed * (t & 0xFFFFu)) >> 16)) >> 1;
+    }
+    for (k = 1; k < 2; k++) {
+        uint32_t y2 = mul_shr32((uint32_t)y, (uint32_t)y, 30);
+        uint32_t my2 = mul_shr32(m, y2, 30);
+        y = mul_shr32((uint32_t)y, ((uint32_t)3 << 30) - my2, 31);
+    }
+#endif
     return y;
 }
 
@@ -368,13 +406,36 @@ static inline int64_t floor_shift(int64_t v, int s)
     return ((v + ((int64_t)1 << 62)) >> s) - ((int64_t)1 << (62 - s));
 }
 
+#if !STP_WIDE_ARITH
+/* a^2 for a <= 2^30 from three 32-bit products (ah <= 2^14, so the cross
+ * product al ah < 2^30 and twice it fits) */
+static inline uint64_t square30(uint32_t a)
+{
+    uint32_t al = a & 0xFFFFu, ah = a >> 16;
+    uint32_t ll = al * al, mid = al * ah, low = ll + (mid << 17);
+    uint32_t high = ah * ah + (mid >> 15) + (low < ll ? 1u : 0u);
+    return ((uint64_t)high << 32) | low;
+}
+
+/* floor((x inv + 2^(e-1)) / 2^e) for |x| <= 2^30, inv < 2^31, e = 29 or
+ * 30 (stp_unit_from64's rounding) from the magnitude's product p: for
+ * x < 0 it is -ceil((p - 2^(e-1)) / 2^e) = -floor((p + 2^(e-1) - 1) / 2^e) */
+static inline int32_t round_unit(int32_t x, uint32_t inv, int e)
+{
+    uint64_t half = (uint64_t)1 << (e - 1);
+    if (x >= 0)
+        return (int32_t)((stp_umul32x32((uint32_t)x, inv) + half) >> e);
+    return 0 - (int32_t)((stp_umul32x32(0u - (uint32_t)x, inv) + half - 1u) >> e);
+}
+#endif
+
 int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
 {
     uint64_t ax = (uint64_t)(x < 0 ? -x : x), ay = (uint64_t)(y < 0 ? -y : y),
              az = (uint64_t)(z < 0 ? -z : z);
     uint64_t s, len;
     int up, e, sh;
-    int64_t inv, half;
+    int64_t inv;
     out->x = out->y = out->z = 0;
     if ((ax | ay | az) == 0)
         return 0;
@@ -390,19 +451,33 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
         y = stp_asr64(y, -up);
         z = stp_asr64(z, -up);
     }
+    /* |x|, |y|, |z| <= 2^30 now: exact 32 x 32 products */
+#if STP_WIDE_ARITH
     s = (uint64_t)(x * x) + (uint64_t)(y * y) + (uint64_t)(z * z);
+#else
+    s = square30(abs32((int32_t)x)) + square30(abs32((int32_t)y)) + square30(abs32((int32_t)z));
+#endif
     /* rsqrt64 for s in [2^58, 3 2^60), a bit length of 59..62: its even
      * shift is 28 or 30, and 1/sqrt(s) = inv 2^-e with e = 59 or 60 */
     sh = s >= ((uint64_t)1 << 60) ? 30 : 28;
     inv = (int64_t)rsqrt_q30((uint32_t)(s >> sh));
     e = 45 + sh / 2 - 30; /* to STP_UNIT */
-    half = (int64_t)1 << (e - 1);
     /* |x inv| < 2^60 */
-    out->x = (int32_t)floor_shift(x * inv + half, e);
-    out->y = (int32_t)floor_shift(y * inv + half, e);
-    out->z = (int32_t)floor_shift(z * inv + half, e);
+#if STP_WIDE_ARITH
+    {
+        const int64_t half = (int64_t)1 << (e - 1);
+        out->x = (int32_t)floor_shift(x * inv + half, e);
+        out->y = (int32_t)floor_shift(y * inv + half, e);
+        out->z = (int32_t)floor_shift(z * inv + half, e);
+    }
     /* |v| scaled = s / sqrt(s): s >> 30 < 2^32 times inv < 2^31 */
-    len = ((s >> 30) * (uint64_t)inv) >> (e - 0);
+    len = ((s >> 30) * (uint64_t)inv) >> e;
+#else
+    out->x = round_unit((int32_t)x, (uint32_t)inv, e);
+    out->y = round_unit((int32_t)y, (uint32_t)inv, e);
+    out->z = round_unit((int32_t)z, (uint32_t)inv, e);
+    len = mul_shr32((uint32_t)(s >> 30), (uint32_t)inv, e); /* < 2^32: |v| scaled < 2^30 sqrt 3 */
+#endif
     /* to the input's units, rounded to nearest (len may sit 2^-29 below an
      * exact integer length, which a floor would take a whole unit down) */
     if (up > 0)
@@ -423,6 +498,10 @@ uint32_t stp_sqrt64_fast(uint64_t v)
     inv = rsqrt64(v, &e); /* sets e: a statement of its own */
     /* sqrt(v) = v / sqrt(v) = m 2^sh inv 2^-e: m < 2^32, inv <= 2^30;
      * e - sh = 45 - sh/2 > 0 */
+#if STP_WIDE_ARITH
     r = (m * inv) >> (e - sh);
+#else
+    r = stp_umul32x32((uint32_t)m, (uint32_t)inv) >> (e - sh);
+#endif
     return r > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)r;
 }

@@ -133,10 +133,40 @@ static inline uint32_t div_2by1(uint32_t u1, uint32_t u0, uint32_t d, uint32_t v
     return q1;
 }
 
+void stp_recip_divisor_init(stp_recip_divisor *p, uint32_t d)
+{
+    p->s = d == 0 ? 0 : 32 - bit_length32(d);
+    p->dn = d << p->s;
+    p->v = stp_recip32(p->dn);
+}
+
+uint64_t stp_udiv64_by(const stp_recip_divisor *p, uint64_t n)
+{
+    /* n 2^s as three words w2 w1 w0 (w2 < 2^s <= dn), then two steps of
+     * the 2-by-1 division, the first skipped when its quotient word is 0 */
+    uint32_t nh = (uint32_t)(n >> 32), nl = (uint32_t)n, w2, w1, w0, qh = 0, ql, r;
+    int s = p->s;
+    if (p->dn == 0)
+        return UINT64_MAX;
+    w2 = s != 0 ? nh >> (32 - s) : 0u;
+    w1 = s != 0 ? (nh << s) | (nl >> (32 - s)) : nh;
+    w0 = nl << s;
+    if (w2 != 0 || w1 >= p->dn)
+        qh = div_2by1(w2, w1, p->dn, p->v, &w1);
+    ql = div_2by1(w1, w0, p->dn, p->v, &r);
+    return ((uint64_t)qh << 32) | ql;
+}
+
+int64_t stp_div64_by(const stp_recip_divisor *p, int64_t n)
+{
+    uint64_t q = stp_udiv64_by(p, n < 0 ? 0u - (uint64_t)n : (uint64_t)n);
+    return (int64_t)(n < 0 ? 0u - q : q);
+}
+
 uint64_t stp_udiv64_recip(uint64_t n, uint64_t d)
 {
     uint32_t dh = (uint32_t)(d >> 32), nh = (uint32_t)(n >> 32), nl = (uint32_t)n;
-    uint32_t w2, w1, w0, dn, v, r;
+    uint32_t w2, w1, w0, v, r;
     int s;
     if (d == 0)
         return UINT64_MAX;
@@ -148,15 +178,11 @@ uint64_t stp_udiv64_recip(uint64_t n, uint64_t d)
     w1 = s != 0 ? (nh << s) | (nl >> (32 - s)) : nh;
     w0 = nl << s;
     if (dh == 0) {
-        /* a one-word divisor: two steps of the 2-by-1 division (w2 < 2^s
-         * <= dn), the first skipped when its quotient word is 0 */
-        uint32_t qh = 0, ql;
-        dn = (uint32_t)d << s;
-        v = stp_recip32(dn);
-        if (w2 != 0 || w1 >= dn)
-            qh = div_2by1(w2, w1, dn, v, &w1);
-        ql = div_2by1(w1, w0, dn, v, &r);
-        return ((uint64_t)qh << 32) | ql;
+        stp_recip_divisor one;
+        one.dn = (uint32_t)d << s;
+        one.v = stp_recip32(one.dn);
+        one.s = s;
+        return stp_udiv64_by(&one, n);
     } else {
         /* a two-word divisor d1 d0 (normalised): the quotient is below
          * 2^32; the estimate from w2 w1 / d1 (w2 < 2^s <= d1) is at most 2

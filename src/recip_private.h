@@ -63,6 +63,23 @@ uint32_t stp_recip32(uint32_t d);
  * UINT64_MAX. */
 uint64_t stp_udiv64_recip(uint64_t n, uint64_t d);
 
+/* A divisor d in [1, 2^32) prepared once for several quotients: d
+ * normalised (dn = d 2^s, top bit set) and stp_recip32(dn).  d = 0 makes
+ * dn = 0, for which stp_udiv64_by returns UINT64_MAX. */
+typedef struct stp_recip_divisor {
+    uint32_t dn, v;
+    int s;
+} stp_recip_divisor;
+void stp_recip_divisor_init(stp_recip_divisor *p, uint32_t d);
+
+/* floor(n / d) for the prepared d, any n: stp_udiv64_recip's quotient
+ * (two 2-by-1 steps, no reciprocal of its own). */
+uint64_t stp_udiv64_by(const stp_recip_divisor *p, uint64_t n);
+
+/* n / d truncated toward zero, as C's operator, for the prepared d > 0 and
+ * any n but INT64_MIN with d = 1. */
+int64_t stp_div64_by(const stp_recip_divisor *p, int64_t n);
+
 /* n / d truncated toward zero, as C's operator, for d != 0 and a quotient
  * that fits int64_t (not INT64_MIN / -1), through stp_udiv64_recip. */
 int64_t stp_div64_recip(int64_t n, int64_t d);

@@ -14,11 +14,7 @@
 /* Whether a 64-bit division is one instruction (64-bit hosts); elsewhere
  * (a ~470-instruction library call on ARMv6-M) a quotient that fits 32
  * bits is taken in 32 bits, with the same result. */
-#if defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
-#define WIDE_DIVISION 1
-#else
-#define WIDE_DIVISION 0
-#endif
+#define WIDE_DIVISION STP_WIDE_ARITH /* recip_private.h: the same test */
 
 /* STP_RENDERER_BYTES must bound the object: a negative array size here
  * stops the build when it does not. */
@@ -546,9 +542,18 @@ static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
         /* focal * x / z has F fractional bits; keep SUBPIXEL of them */
         /* stp_div64_fast: the same quotients as C's operator, without a
          * library call where 64-bit division is one (recip.c) */
+#if STP_WIDE_ARITH
         x = stp_asr64(stp_div64_fast((int64_t)r->focal * p.x, z), F - STP_SUBPIXEL_BITS);
         y = stp_asr64(stp_div64_fast((int64_t)r->focal * p.y, z), F - STP_SUBPIXEL_BITS);
         out->z = (int32_t)stp_div64_fast(((int64_t)r->hither) << 30, z);
+#else
+        /* one reciprocal of z for the three quotients (z < 2^31) */
+        stp_recip_divisor dz;
+        stp_recip_divisor_init(&dz, (uint32_t)z);
+        x = stp_asr64(stp_div64_by(&dz, (int64_t)r->focal * p.x), F - STP_SUBPIXEL_BITS);
+        y = stp_asr64(stp_div64_by(&dz, (int64_t)r->focal * p.y), F - STP_SUBPIXEL_BITS);
+        out->z = (int32_t)stp_div64_by(&dz, ((int64_t)r->hither) << 30);
+#endif
     } else {
         x = stp_asr64((int64_t)r->focal * p.x, 2 * F - STP_SUBPIXEL_BITS);
         y = stp_asr64((int64_t)r->focal * p.y, 2 * F - STP_SUBPIXEL_BITS);
@@ -694,9 +699,11 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
     unsigned all = 31u, any = 0;
     for (i = 0; i < e->n; i++) {
         stp_vec3 p = vertices[i];
-        /* a multiplicative hash of the exact coordinates */
-        uint32_t h = ((uint32_t)p.x * 0x9E3779B1u) ^ ((uint32_t)p.y * 0x85EBCA77u) ^
-                     ((uint32_t)p.z * 0xC2B2AE3Du);
+        /* a multiplicative hash of the exact coordinates, rotated apart
+         * and mixed by one product (compilers for cores without a fast
+         * multiplier expand each constant product into ~20 shifts) */
+        uint32_t ux = (uint32_t)p.x, uy = (uint32_t)p.y, uz = (uint32_t)p.z;
+        uint32_t h = (ux ^ ((uy << 11) | (uy >> 21)) ^ ((uz << 22) | (uz >> 10))) * 0x9E3779B1u;
         uint32_t slot = (h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1);
         stp_vertex_entry *c = &r->cache[slot];
         if (c->stamp != r->cache_stamp || c->point.x != p.x || c->point.y != p.y ||
@@ -783,9 +790,21 @@ static int newell(const stp_renderer *r, stp_entry *e)
             y2 /= div;
             z2 /= div;
         }
-        a = y1 * z2 - z1 * y2;
-        b = z1 * x2 - x1 * z2;
-        c = x1 * y2 - y1 * x2;
+#if !STP_WIDE_ARITH
+        if (spread < ((uint64_t)1 << 15)) {
+            /* differences below 2^15 (half a unit, a mesh's triangle):
+             * products below 2^30 and their differences below 2^31 in
+             * int32, without the 64-bit multiply library call */
+            a = (int32_t)y1 * (int32_t)z2 - (int32_t)z1 * (int32_t)y2;
+            b = (int32_t)z1 * (int32_t)x2 - (int32_t)x1 * (int32_t)z2;
+            c = (int32_t)x1 * (int32_t)y2 - (int32_t)y1 * (int32_t)x2;
+        } else
+#endif
+        {
+            a = y1 * z2 - z1 * y2;
+            b = z1 * x2 - x1 * z2;
+            c = x1 * y2 - y1 * x2;
+        }
         sx = (int64_t)v[0].x + v[1].x + v[2].x;
         sy = (int64_t)v[0].y + v[1].y + v[2].y;
         sz = (int64_t)v[0].z + v[1].z + v[2].z;
@@ -831,11 +850,11 @@ static int newell(const stp_renderer *r, stp_entry *e)
         return 0;
     if (!WIDE_DIVISION && n == 3 && sx >= INT32_MIN && sx <= INT32_MAX && sy >= INT32_MIN && sy <= INT32_MAX &&
         sz >= INT32_MIN && sz <= INT32_MAX) {
-        /* the same truncated quotients in 32 bits (a library call fewer
-         * per coordinate where a 64-bit division is one) */
-        e->centre.x = (stp_fix)((int32_t)sx / 3);
-        e->centre.y = (stp_fix)((int32_t)sy / 3);
-        e->centre.z = (stp_fix)((int32_t)sz / 3);
+        /* the same truncated quotients without a division (a library
+         * call per coordinate where 32-bit division is one) */
+        e->centre.x = (stp_fix)stp_div3_toward_zero((int32_t)sx);
+        e->centre.y = (stp_fix)stp_div3_toward_zero((int32_t)sy);
+        e->centre.z = (stp_fix)stp_div3_toward_zero((int32_t)sz);
     } else {
         e->centre.x = (stp_fix)(sx / n);
         e->centre.y = (stp_fix)(sy / n);
@@ -1125,6 +1144,30 @@ static stp_face world_facing_near(const stp_renderer *r, const stp_vec3 *v)
     int64_t cx, cy, cz, side;
     if ((x1 | y1 | z1 | x2 | y2 | z2) >= 2 * half || !r->near_ok)
         return STP_FACE_UNKNOWN;
+    x0 = (uint32_t)v[0].x - r->near_bias_x;
+    y0 = (uint32_t)v[0].y - r->near_bias_y;
+    z0 = (uint32_t)v[0].z - r->near_bias_z;
+    if ((x0 | y0 | z0) >= 2 * half)
+        return STP_FACE_UNKNOWN;
+#if !STP_WIDE_ARITH
+    {
+        /* where 64-bit products are library calls, a small triangle (every
+         * edge component within 2^15, half a unit: a mesh's): with d = w - w0, w0.(w1 x w2) = w0.(d1 x d2) (the
+         * other terms are perpendicular to w0), d1 x d2 below 2^31 in
+         * int32, three 64-bit products instead of nine */
+        int32_t ax = (int32_t)(x1 - x0), ay = (int32_t)(y1 - y0), az = (int32_t)(z1 - z0);
+        int32_t bx = (int32_t)(x2 - x0), by = (int32_t)(y2 - y0), bz = (int32_t)(z2 - z0);
+        const uint32_t edge = (uint32_t)1 << 15;
+        if (((uint32_t)ax + edge) < 2 * edge && ((uint32_t)ay + edge) < 2 * edge &&
+            ((uint32_t)az + edge) < 2 * edge && ((uint32_t)bx + edge) < 2 * edge &&
+            ((uint32_t)by + edge) < 2 * edge && ((uint32_t)bz + edge) < 2 * edge) {
+            side = -((int64_t)(ay * bz - az * by) * ((int32_t)x0 - (int32_t)half) +
+                     (int64_t)(az * bx - ax * bz) * ((int32_t)y0 - (int32_t)half) +
+                     (int64_t)(ax * by - ay * bx) * ((int32_t)z0 - (int32_t)half));
+            return side > 0 ? STP_FACE_FRONT : (side < 0 ? STP_FACE_BACK : STP_FACE_UNKNOWN);
+        }
+    }
+#endif
     /* w = u - 2^20 in int32 */
     cx = (int64_t)((int32_t)y1 - (int32_t)half) * ((int32_t)z2 - (int32_t)half) -
          (int64_t)((int32_t)z1 - (int32_t)half) * ((int32_t)y2 - (int32_t)half);
@@ -1132,11 +1175,6 @@ static stp_face world_facing_near(const stp_renderer *r, const stp_vec3 *v)
          (int64_t)((int32_t)x1 - (int32_t)half) * ((int32_t)z2 - (int32_t)half);
     cz = (int64_t)((int32_t)x1 - (int32_t)half) * ((int32_t)y2 - (int32_t)half) -
          (int64_t)((int32_t)y1 - (int32_t)half) * ((int32_t)x2 - (int32_t)half);
-    x0 = (uint32_t)v[0].x - r->near_bias_x;
-    y0 = (uint32_t)v[0].y - r->near_bias_y;
-    z0 = (uint32_t)v[0].z - r->near_bias_z;
-    if ((x0 | y0 | z0) >= 2 * half)
-        return STP_FACE_UNKNOWN;
     side = -(cx * ((int32_t)x0 - (int32_t)half) + cy * ((int32_t)y0 - (int32_t)half) +
              cz * ((int32_t)z0 - (int32_t)half));
     return side > 0 ? STP_FACE_FRONT : (side < 0 ? STP_FACE_BACK : STP_FACE_UNKNOWN);

@@ -721,6 +721,31 @@ static void test_transform_against_double(void **state)
  * (4e-9) of the exact direction and the length within 2^-27 relative plus
  * half a unit (it is rounded to the input's units); the
  * zero vector gives 0.  Also the scalar reciprocal root and fast root. */
+/* stp_div3_toward_zero equals C's v / 3 at the ends of the range, around
+ * every power of two and multiple of 3 near them, and at random values */
+static void test_div3_toward_zero_matches_operator(void **state)
+{
+    int32_t k, b;
+    uint32_t seed = 12345u;
+    (void)state;
+    for (b = 0; b < 31; b++)
+        for (k = -4; k <= 4; k++) {
+            int32_t v = (int32_t)(((uint32_t)1 << b) + (uint32_t)k);
+            assert_int_equal(stp_div3_toward_zero(v), v / 3);
+            assert_int_equal(stp_div3_toward_zero(-v), -v / 3);
+        }
+    for (k = 0; k < 8; k++) {
+        assert_int_equal(stp_div3_toward_zero(INT32_MAX - k), (INT32_MAX - k) / 3);
+        assert_int_equal(stp_div3_toward_zero(INT32_MIN + k), (INT32_MIN + k) / 3);
+    }
+    for (k = 0; k < 1000000; k++) {
+        int32_t v;
+        seed = seed * 1664525u + 1013904223u;
+        v = (int32_t)seed;
+        assert_int_equal(stp_div3_toward_zero(v), v / 3);
+    }
+}
+
 static void test_unit_from64_against_double(void **state)
 {
     uint64_t seed = 0x1234567ull;
@@ -795,6 +820,7 @@ int main(void)
         cmocka_unit_test(test_vec3_unity_random),
         cmocka_unit_test(test_vec3_unity_tiny_and_huge),
         cmocka_unit_test(test_transform_against_double),
+        cmocka_unit_test(test_div3_toward_zero_matches_operator),
         cmocka_unit_test(test_unit_from64_against_double),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -162,6 +162,36 @@ static void test_div_signs(void **state)
     }
 }
 
+/* a prepared divisor gives C's quotients for any numerator */
+static void test_prepared_divisor(void **state)
+{
+    static const uint32_t divisors[] = {1, 2, 3, 7, 65535, 65536, 1000003, 0x7FFFFFFFu,
+                                        0x80000000u, 0xFFFFFFFFu};
+    size_t i;
+    int k;
+    (void)state;
+    for (i = 0; i < sizeof divisors / sizeof divisors[0]; i++) {
+        stp_recip_divisor p;
+        stp_recip_divisor_init(&p, divisors[i]);
+        assert_true(stp_udiv64_by(&p, UINT64_MAX) == UINT64_MAX / divisors[i]);
+        assert_true(stp_div64_by(&p, INT64_MAX) == INT64_MAX / (int64_t)divisors[i]);
+        assert_true(stp_div64_by(&p, -INT64_MAX) == -INT64_MAX / (int64_t)divisors[i]);
+        assert_true(stp_div64_by(&p, 0) == 0);
+    }
+    for (k = 0; k < 100000; k++) {
+        uint32_t d = (uint32_t)random_bits(1 + (int)(next_random() % 32));
+        int64_t n = (int64_t)random_bits(1 + (int)(next_random() % 63));
+        stp_recip_divisor p;
+        if (d == 0)
+            d = 1;
+        stp_recip_divisor_init(&p, d);
+        n = k & 1 ? -n : n;
+        if (stp_div64_by(&p, n) != n / (int64_t)d)
+            fail_msg("stp_div64_by(%lld / %lu) = %lld", (long long)n, (unsigned long)d,
+                     (long long)stp_div64_by(&p, n));
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -169,6 +199,7 @@ int main(void)
         cmocka_unit_test(test_udiv_every_length),
         cmocka_unit_test(test_udiv_edges),
         cmocka_unit_test(test_div_signs),
+        cmocka_unit_test(test_prepared_divisor),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
