@@ -8,7 +8,7 @@
 #define SUB STP_SUBPIXEL_BITS
 #define HALF_PIXEL (1 << (SUB - 1))
 
-#if UINTPTR_MAX > 0xFFFFu
+#if UINTPTR_MAX > 0xFFFFu && !STP_SMALL_DIVISION
 /* floor(2^32 / d) + 1 for d = 2..127 (raster_private.h, stp_slope_q16);
  * entries 0 and 1 unused */
 const uint32_t stp_slope_recip[STP_SLOPE_RECIP_SIZE] = {
@@ -64,6 +64,7 @@ static int64_t div_trunc(int64_t num, int64_t den)
     return STP_DIV64(num, den);
 }
 
+#if STP_WITH_TRIANGLE_PATH
 /* a b for |a b| < 2^63: a 32 x 32-bit product while a fits (ARMv6-M: no
  * 64 x 64-bit library call) */
 static int64_t mul_wide(int64_t a, int32_t b)
@@ -72,6 +73,7 @@ static int64_t mul_wide(int64_t a, int32_t b)
         return stp_smul32((int32_t)a, b);
     return a * b;
 }
+#endif
 
 /* floor(s / n) for n >= 1: n = 3 and 4 without a division */
 static uint32_t div_count(uint32_t s, uint32_t n)
@@ -829,7 +831,7 @@ static int paint_setup(frame *fr, uint32_t at, paint style, int smooth, stp_fix 
     return direct && style == fr->pattern_style;
 }
 
-
+#if STP_WITH_TRIANGLE_PATH
 /* A polygon (its header instruction) with a shade per vertex. */
 static int polygon_smooth(const stp_instr *header)
 {
@@ -1003,10 +1005,14 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
 #endif
     }
 }
+#endif /* STP_WITH_TRIANGLE_PATH */
+
 /* Flat triangles take their own path unless the edge pass is on (it reads
  * the general path's crossings) or they reach x = 2^14 (1024 pixels:
  * tri_edge's 32 bits). */
-#if STP_WITH_EDGE_AA
+#if !STP_WITH_TRIANGLE_PATH
+#define TRIANGLE_PATH(fr) 0
+#elif STP_WITH_EDGE_AA
 #define TRIANGLE_PATH(fr) ((fr)->aa.out == 0)
 #else
 #define TRIANGLE_PATH(fr) 1
@@ -1046,10 +1052,12 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
     depth_plane pl = {0, 0, 0, 0, 0};
     int64_t d_row = 0;
 #endif
+#if STP_WITH_TRIANGLE_PATH
     if (n == 3 && !smooth && TRIANGLE_PATH(fr) && TRIANGLE_NARROW(v)) {
         draw_triangle(fr, at, v, style, use_z, t, ordinal); /* the painter's order comes here */
         return;
     }
+#endif
     for (i = 0; i < n; i++) {
         if (v[i].y < ymin)
             ymin = v[i].y;
@@ -1188,8 +1196,10 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
             if (in->op >= 3) {
                 if (skip_polygons || !(pass == 0 || (pass == 1) == (t == 0)))
                     ;
+#if STP_WITH_TRIANGLE_PATH
                 else if (in->op == 3 && !polygon_smooth(in) && TRIANGLE_PATH(fr) && TRIANGLE_NARROW(in))
                     draw_triangle(fr, k, in, style, use_z, t, ordinal);
+#endif
                 else
                     draw_polygon(fr, k, style, use_z, t, ordinal);
                 ordinal++;

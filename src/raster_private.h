@@ -63,12 +63,13 @@ static inline int64_t stp_smul32(int32_t a, int32_t b)
 /* Reciprocals for slopes of short edges where a 32-bit division is a
  * library call (without wide arithmetic; AVR, with 16-bit pointers, keeps
  * the division and its flash): stp_slope_recip[d] = floor(2^32 / d) + 1
- * for 2 <= d < 128 (raster.c; made wherever pointers exceed 16 bits). */
+ * for 2 <= d < 128 (raster.c; made wherever pointers exceed 16 bits,
+ * except in size-first builds, STP_SMALL_DIVISION, which divide). */
 #define STP_SLOPE_RECIP_SIZE 128
-#if UINTPTR_MAX > 0xFFFFu
+#if UINTPTR_MAX > 0xFFFFu && !STP_SMALL_DIVISION
 extern const uint32_t stp_slope_recip[STP_SLOPE_RECIP_SIZE];
 #endif
-#if !STP_WIDE_ARITH && UINTPTR_MAX > 0xFFFFu
+#if !STP_WIDE_ARITH && UINTPTR_MAX > 0xFFFFu && !STP_SMALL_DIVISION
 #define STP_SLOPE_RECIP STP_SLOPE_RECIP_SIZE
 #else
 #define STP_SLOPE_RECIP 0

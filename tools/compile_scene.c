@@ -232,9 +232,11 @@ static void write_config(writer *w, const plan *p, const stp_tool_options *opt, 
            "/* The cell is compiled in as a value: none is built on the chip. */\n"
            "#define STP_WITH_DEFAULT_CELL 0\n");
     out(w, "/* A display file played back from flash (--static): 64-bit division by a\n"
-           " * small loop, not the C library's routines (size first). */\n"
-           "#define STP_SMALL_DIVISION %d\n",
-        is_static);
+           " * small loop, not the C library's routines, and triangles through the\n"
+           " * general scan converter (size first). */\n"
+           "#define STP_SMALL_DIVISION %d\n"
+           "#define STP_WITH_TRIANGLE_PATH %d\n",
+        is_static, !is_static);
     out(w, "/* --static: the chip only plays the display file back (a smaller renderer\n"
            " * object; the core is built from the playback sources alone). */\n"
            "#define STP_PLAYBACK_ONLY %d\n",
