@@ -143,9 +143,11 @@
 /* 1: edge anti-aliasing (stp_output.edge_aa) is compiled in: the pixels
  * just outside a polygon's edges take its shade blended with what is under
  * them in proportion to the part of them it covers (docs/edge-aa.md).  Each
- * edge and row crossing carries the edge's slope and x extent: about 28
- * bytes of the renderer object per STP_MAX_POLYGON_VERTICES.  0: a render
- * asked for it returns STP_ERR_UNSUPPORTED, and its code is not linked. */
+ * edge and row crossing carries the edge's slope and x extent: 28 bytes of
+ * the renderer object (x86-64) per clipped-polygon vertex slot, of which
+ * there are STP_MAX_POLYGON_VERTICES + 5 (STP_RENDERER_BYTES counts 32).
+ * 0: a render asked for it returns STP_ERR_UNSUPPORTED, and its code is
+ * not linked. */
 #ifndef STP_WITH_EDGE_AA
 #define STP_WITH_EDGE_AA 1
 #endif
