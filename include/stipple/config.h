@@ -180,8 +180,8 @@
  * keeps only what stp_playback_create and stp_renderer_render use, and the
  * entry side (render.c, view.c, clip.c, transform.c, ...) must not be
  * built; firmware/CMakeLists.txt builds src/playback.c, raster.c, dither.c,
- * output.c, shade.c, status.c, frame_memory.c, div64.c and edge_aa.c.  Needs
- * STP_WITH_SHADOWS 0. */
+ * output.c, shade.c, status.c, frame_memory.c, div64.c, recip.c, fix.c and
+ * edge_aa.c.  Needs STP_WITH_SHADOWS 0. */
 #ifndef STP_PLAYBACK_ONLY
 #define STP_PLAYBACK_ONLY 0
 #endif
