@@ -41,7 +41,7 @@ for s in $switches; do
     if [ "$s" = STP_PLAYBACK_ONLY ]; then
         # only the playback sources build with it (config.h), shadows off:
         # compared with the same sources and shadows off without it
-        files=$(for f in playback raster dither output shade status frame_memory div64 fix edge_aa; do echo "$src/src/$f.c"; done)
+        files=$(for f in playback raster dither output shade status frame_memory div64 recip fix edge_aa; do echo "$src/src/$f.c"; done)
         extra=-DSTP_WITH_SHADOWS=0
         base_s=$(build "$work/$s-base" "$extra") || base_s=none
     else

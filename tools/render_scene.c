@@ -527,7 +527,8 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
         return -1;
 
     if (opt->outlines && find_outlines(prep, &view, &outline, &outline_count) != 0) {
-        snprintf(err, err_size, "out of memory for the outlines");
+        snprintf(err, err_size,
+                 "outlines: out of memory, or a view with from = at or up along the line of sight");
         return -1;
     }
     capacity += 3 * outline_count; /* a style, then move and line each */

@@ -104,7 +104,7 @@ int stp_tool_static_spans(const stp_instr *df, uint32_t used, uint32_t width, ui
     int result = -1;
     memset(s, 0, sizeof *s);
     if (width < 1 || width > 256 || height < 1 || height > 32767) {
-        snprintf(err, errlen, "--spans needs a picture 1..256 pixels wide (%lux%lu)",
+        snprintf(err, errlen, "--spans needs a picture 1..256 pixels wide and 1..32767 high (%lux%lu)",
                  (unsigned long)width, (unsigned long)height);
         goto done;
     }

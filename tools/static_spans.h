@@ -26,9 +26,10 @@ typedef struct stp_tool_spans {
 /* The spans of display file df[0, used) (a width x height picture of
  * `levels` levels, first fill style fill_style) drawn with output (its
  * hidden-surface method, cell, gamma, background; no diffusion).  Returns 0
- * (free s->runs), or -1 with a message in err: the picture wider than 256,
- * a cell that is not 1, 2, 4 or 8 pixels each way (or a mask cell), a core
- * error, or spans that do not give the core's picture. */
+ * (free s->runs), or -1 with a message in err: the picture wider than 256
+ * or higher than 32767, a cell that is not 1, 2, 4 or 8 pixels each way (or
+ * a mask cell), a core error, or spans that do not give the core's
+ * picture. */
 int stp_tool_static_spans(const stp_instr *df, uint32_t used, uint32_t width, uint32_t height,
                           int levels, int fill_style, const stp_output *output,
                           stp_tool_spans *s, char *err, size_t errlen);

@@ -143,9 +143,11 @@
 /* 1: edge anti-aliasing (stp_output.edge_aa) is compiled in: the pixels
  * just outside a polygon's edges take its shade blended with what is under
  * them in proportion to the part of them it covers (docs/edge-aa.md).  Each
- * edge and row crossing carries the edge's slope and x extent: about 28
- * bytes of the renderer object per STP_MAX_POLYGON_VERTICES.  0: a render
- * asked for it returns STP_ERR_UNSUPPORTED, and its code is not linked. */
+ * edge and row crossing carries the edge's slope and x extent: 28 bytes of
+ * the renderer object (x86-64) per clipped-polygon vertex slot, of which
+ * there are STP_MAX_POLYGON_VERTICES + 5 (STP_RENDERER_BYTES counts 32).
+ * 0: a render asked for it returns STP_ERR_UNSUPPORTED, and its code is
+ * not linked. */
 #ifndef STP_WITH_EDGE_AA
 #define STP_WITH_EDGE_AA 1
 #endif
@@ -178,8 +180,8 @@
  * keeps only what stp_playback_create and stp_renderer_render use, and the
  * entry side (render.c, view.c, clip.c, transform.c, ...) must not be
  * built; firmware/CMakeLists.txt builds src/playback.c, raster.c, dither.c,
- * output.c, shade.c, status.c, frame_memory.c, div64.c and edge_aa.c.  Needs
- * STP_WITH_SHADOWS 0. */
+ * output.c, shade.c, status.c, frame_memory.c, div64.c, recip.c, fix.c and
+ * edge_aa.c.  Needs STP_WITH_SHADOWS 0. */
 #ifndef STP_PLAYBACK_ONLY
 #define STP_PLAYBACK_ONLY 0
 #endif

@@ -41,7 +41,8 @@ typedef struct stp_spans_cursor {
     uint16_t y;
 } stp_spans_cursor;
 
-/* Put the cursor on row 0 of the picture. */
+/* Put the cursor on row 0 of the picture (spans and cursor not NULL; no
+ * errors: the data is checked as stp_spans_draw reads it). */
 void stp_spans_start(const stp_spans *spans, stp_spans_cursor *cursor);
 
 /* Draw the cursor's next `rows` rows (1..height - cursor row) as MONO1 into
@@ -49,7 +50,8 @@ void stp_spans_start(const stp_spans *spans, stp_spans_cursor *cursor);
  * pixel of the rows is written) and move the cursor past them.  Returns
  * STP_OK, or STP_ERR_ARG for rows beyond the picture, a cell_rows that is
  * not 1, 2, 4 or 8, a run that goes backwards or past the row, or a shade
- * index of shade_count or more (the band is then partly drawn). */
+ * index of shade_count or more (the band is then partly drawn).  width must
+ * be 1..256 (not checked: `stipple compile --spans` refuses other sizes). */
 int stp_spans_draw(const stp_spans *spans, stp_spans_cursor *cursor, uint8_t *band, size_t stride,
                    uint32_t rows);
 

@@ -4,7 +4,8 @@
 # shared scenes (it checks the spans against the core's own picture itself
 # and fails if they differ), its runs cover every row exactly once, and it
 # refuses, with a message and a non-zero status, what the span player cannot
-# draw (error diffusion, a mask cell) without leaving a half-written file.
+# draw (error diffusion, a mask cell, more than 256 pixels a row) without
+# leaving a half-written file.
 # Usage: test_compile_spans.sh STIPPLE_BINARY SCENES_DIR
 set -u
 stipple=$1
@@ -26,7 +27,7 @@ for scene in tetra-s1 teapot-s1 gears-s1; do
     grep -q "#define STP_PLAYBACK_ONLY 1" "$work/${scene}_config.h" || bad "$scene: config header"
 done
 
-for refused in "-d fs" "-d blue-noise"; do
+for refused in "-d fs" "-d blue-noise" "-s 300x20"; do
     # shellcheck disable=SC2086
     if "$stipple" compile "$scenes/tetra-s1.nff" --spans $refused -o "$work/no.c" 2>"$work/err"; then
         bad "--spans $refused was accepted"

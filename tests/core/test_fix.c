@@ -716,11 +716,6 @@ static void test_transform_against_double(void **state)
     }
 }
 
-/* STP_UNIT normalisation (fix_private.h) against double: random vectors of
- * every magnitude from 1 to 2^61, each component within 4 units of Q30
- * (4e-9) of the exact direction and the length within 2^-27 relative plus
- * half a unit (it is rounded to the input's units); the
- * zero vector gives 0.  Also the scalar reciprocal root and fast root. */
 /* stp_div3_toward_zero equals C's v / 3 at the ends of the range, around
  * every power of two and multiple of 3 near them, and at random values */
 static void test_div3_toward_zero_matches_operator(void **state)
@@ -746,6 +741,11 @@ static void test_div3_toward_zero_matches_operator(void **state)
     }
 }
 
+/* STP_UNIT normalisation (fix_private.h) against double: random vectors of
+ * every magnitude from 1 to 2^61, each component within 4 units of Q30
+ * (4e-9) of the exact direction and the length within 2^-27 relative plus
+ * half a unit (it is rounded to the input's units); the
+ * zero vector gives 0.  Also the scalar reciprocal root and fast root. */
 static void test_unit_from64_against_double(void **state)
 {
     uint64_t seed = 0x1234567ull;
