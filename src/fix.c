@@ -330,23 +330,21 @@ static const uint16_t rsqrt_seed[192] STP_TABLE = {
     34384, 34310, 34237, 34164, 34092, 34020, 33949, 33878, 33807, 33737, 33668, 33599,
     33530, 33461, 33393, 33326, 33259, 33192, 33126, 33060, 32994, 32929, 32864, 32800};
 
+#if !STP_WIDE_ARITH
 /* floor(a b / 2^s) for 16 <= s < 32 and a result below 2^32 (the caller's
- * bound): exact.  Where 64-bit products are a library call, four 32-bit
- * products of 16-bit halves put together in 32-bit words (no 64-bit
- * shifts or adds). */
+ * bound): exact.  Where 64-bit products are a library call (the only
+ * builds that use it), four 32-bit products of 16-bit halves put together
+ * in 32-bit words (no 64-bit shifts or adds). */
 static inline uint32_t mul_shr32(uint32_t a, uint32_t b, int s)
 {
-#if STP_WIDE_ARITH
-    return (uint32_t)(((uint64_t)a * b) >> s);
-#else
     uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
     uint32_t ll = al * bl, lh = al * bh, hl = ah * bl;
     uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
     uint32_t high = ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16); /* a b / 2^32 */
     uint32_t low = (mid << 16) | (ll & 0xFFFFu);
     return (uint32_t)(high << (32 - s)) | (low >> s);
-#endif
 }
+#endif
 
 /* 1/sqrt(m / 2^30) in Q30 for m in [2^30, 2^32). */
 static inline uint64_t rsqrt_q30(uint32_t m)
@@ -399,14 +397,14 @@ uint32_t stp_rsqrt64(uint64_t v, int *exponent)
     return rsqrt64(v, exponent);
 }
 
+#if STP_WIDE_ARITH
 /* floor(v / 2^s) for |v| < 2^62, 0 <= s < 62, without a branch on the sign
  * (2^62 is a multiple of 2^s, so the offset changes nothing but the sign) */
 static inline int64_t floor_shift(int64_t v, int s)
 {
     return ((v + ((int64_t)1 << 62)) >> s) - ((int64_t)1 << (62 - s));
 }
-
-#if !STP_WIDE_ARITH
+#else
 /* a^2 for a <= 2^30 from three 32-bit products (ah <= 2^14, so the cross
  * product al ah < 2^30 and twice it fits) */
 static inline uint64_t square30(uint32_t a)
