@@ -16,13 +16,7 @@
  * division is a ~470-instruction libgcc call on ARMv6-M, a 64-bit product
  * a ~50-instruction one) it takes 32 x 32 -> 64-bit products from 16-bit
  * halves and divides through 32-bit quotients, with the same results. */
-#ifndef STP_WIDE_ARITH /* a test defines it 0 to check the narrow arithmetic on the host */
-#if defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
-#define STP_WIDE_ARITH 1
-#else
-#define STP_WIDE_ARITH 0
-#endif
-#endif
+#include "recip_private.h" /* STP_WIDE_ARITH; a test defines it 0 to check the narrow arithmetic on the host */
 
 /* a b, exactly, for 32-bit a and b */
 static inline uint64_t stp_umul32(uint32_t a, uint32_t b)

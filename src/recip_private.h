@@ -10,8 +10,8 @@
 
 #include <stdint.h>
 
-/* Whether 64-bit products and quotients are single instructions (the same
- * test as raster_private.h's, which a file may include as well). */
+/* Whether 64-bit products and quotients are single instructions: the one
+ * definition the core's files share (raster_private.h includes it). */
 #ifndef STP_WIDE_ARITH
 #if defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
 #define STP_WIDE_ARITH 1
