@@ -33,10 +33,15 @@
 
 /* ---- integer helpers ---- */
 
-/* v >> s rounding toward minus infinity for negative v too (C99 leaves >>
- * of a negative value to the implementation); 0 <= s < 32. */
+/* v >> s rounding toward minus infinity for negative v too, 0 <= s < 32:
+ * C99 leaves >> of a negative value to the implementation, so the
+ * operator is used only where it is the arithmetic shift (every compiler
+ * the project builds with: the test is folded, one instruction remains);
+ * elsewhere the complement form. */
 static inline int32_t asr32(int32_t v, int s)
 {
+    if ((int32_t)-1 >> 1 == (int32_t)-1)
+        return v >> s;
     return v >= 0 ? v >> s : (int32_t)~(~(uint32_t)v >> s);
 }
 
@@ -93,14 +98,30 @@ static const uint16_t rsqrt_seed[48] STP_TABLE = {
     36179, 35840, 35509, 35188, 34875, 34571, 34274, 33985, 33703, 33427, 33159, 32897,
 };
 
-/* 2^31 / x at the middle of [64 + i, 65 + i) 2^9 */
-static const uint16_t recip_seed[64] STP_TABLE = {
-    65028, 64035, 63072, 62138, 61231, 60350, 59494, 58662, 57852, 57065, 56299, 55554,
-    54828, 54120, 53431, 52759, 52103, 51464, 50840, 50231, 49637, 49056, 48489, 47935,
-    47393, 46864, 46346, 45839, 45344, 44859, 44384, 43919, 43464, 43019, 42582, 42154,
-    41734, 41323, 40920, 40525, 40137, 39756, 39383, 39017, 38657, 38304, 37958, 37617,
-    37283, 36954, 36631, 36314, 36003, 35696, 35395, 35099, 34808, 34521, 34239, 33962,
-    33689, 33421, 33157, 32897,
+/* 2^31 / x at the middle of [256 + i, 257 + i) 2^7 */
+static const uint16_t recip_seed[256] STP_TABLE = {
+    65408, 65154, 64902, 64652, 64404, 64158, 63913, 63671, 63430, 63191, 62954, 62719,
+    62485, 62253, 62023, 61795, 61568, 61343, 61119, 60897, 60677, 60458, 60241, 60026,
+    59812, 59599, 59388, 59179, 58971, 58764, 58559, 58356, 58153, 57952, 57753, 57555,
+    57358, 57163, 56968, 56776, 56584, 56394, 56205, 56017, 55831, 55646, 55462, 55279,
+    55098, 54917, 54738, 54560, 54383, 54207, 54033, 53859, 53687, 53516, 53346, 53177,
+    53009, 52842, 52676, 52511, 52347, 52184, 52022, 51862, 51702, 51543, 51385, 51228,
+    51072, 50917, 50763, 50610, 50458, 50306, 50156, 50007, 49858, 49710, 49563, 49417,
+    49272, 49128, 48985, 48842, 48700, 48559, 48419, 48280, 48141, 48003, 47867, 47730,
+    47595, 47460, 47326, 47193, 47061, 46929, 46798, 46668, 46539, 46410, 46282, 46155,
+    46028, 45902, 45777, 45652, 45528, 45405, 45283, 45161, 45040, 44919, 44799, 44680,
+    44561, 44443, 44326, 44209, 44093, 43977, 43862, 43748, 43634, 43521, 43408, 43296,
+    43185, 43074, 42963, 42854, 42744, 42636, 42528, 42420, 42313, 42207, 42101, 41996,
+    41891, 41786, 41683, 41579, 41476, 41374, 41272, 41171, 41070, 40970, 40870, 40771,
+    40672, 40574, 40476, 40378, 40281, 40185, 40089, 39993, 39898, 39804, 39709, 39616,
+    39522, 39429, 39337, 39245, 39153, 39062, 38971, 38881, 38791, 38702, 38613, 38524,
+    38436, 38348, 38260, 38173, 38087, 38000, 37915, 37829, 37744, 37659, 37575, 37491,
+    37407, 37324, 37241, 37159, 37077, 36995, 36914, 36833, 36752, 36672, 36592, 36512,
+    36433, 36354, 36275, 36197, 36119, 36041, 35964, 35887, 35810, 35734, 35658, 35583,
+    35507, 35432, 35358, 35283, 35209, 35136, 35062, 34989, 34916, 34844, 34771, 34700,
+    34628, 34557, 34486, 34415, 34344, 34274, 34204, 34135, 34065, 33996, 33928, 33859,
+    33791, 33723, 33655, 33588, 33521, 33454, 33387, 33321, 33255, 33189, 33124, 33059,
+    32994, 32929, 32864, 32800,
 };
 
 /* 1/sqrt(q) for q in [2^30, 2^32): r in (2^30, 2^31] with 1/sqrt(q) =
@@ -121,17 +142,13 @@ static uint32_t rsqrt_norm(uint32_t q)
 }
 
 /* 2^31 / m for m in [2^15, 2^16): in (2^15, 2^16], error below 2^-15
- * relative: a seed (2^-7) and two Newton steps y (2 - m y 2^-31). */
+ * relative: a seed (2^-9) and one Newton step y (2 - m y 2^-31). */
 static uint32_t recip16(uint32_t m)
 {
-    uint32_t y = STP_TABLE_U16(&recip_seed[(m >> 9) - 64u]);
-    int k;
-    for (k = 0; k < 2; k++) {
-        uint32_t p = m * y; /* ~ 2^31, < 2^32 */
-        int32_t e = p <= 0x80000000u ? (int32_t)(0x80000000u - p) : -(int32_t)(p - 0x80000000u);
-        y = (uint32_t)((int32_t)y + asr32(mul_q16(e, y), 15)); /* |e| < 2^26 */
-    }
-    return y;
+    uint32_t y = STP_TABLE_U16(&recip_seed[(m >> 7) - 256u]);
+    uint32_t p = m * y; /* ~ 2^31, < 2^32 */
+    int32_t e = p <= 0x80000000u ? (int32_t)(0x80000000u - p) : -(int32_t)(p - 0x80000000u);
+    return (uint32_t)((int32_t)y + asr32(mul_q16(e, y), 15)); /* |e| < 2^23 */
 }
 
 /* ---- stp_sf16: m 2^-e, m = 0 or in [2^15, 2^16) ---- */
@@ -330,6 +347,19 @@ static int32_t cos_dirs(const stp_shade_fast_dir *a, const stp_shade_fast_dir *b
 #endif
 
 #if STP_WITH_SPECULAR
+/* r 2^-e for r in (2^30, 2^31] (a reciprocal square root): no search */
+static stp_sf16 sf_from_r(uint32_t r, int e)
+{
+    stp_sf16 a;
+    a.m = r >> 15;
+    a.e = e - 15;
+    if (a.m > 0xFFFFu) {
+        a.m >>= 1;
+        a.e--;
+    }
+    return a;
+}
+
 /* 1/sqrt(q) for any q in (0, 2^32): r 2^(j - 46) with r in (2^30, 2^31]
  * (q 4^j is brought into [2^30, 2^32)). */
 static uint32_t rsqrt_any(uint32_t q, int *j)
@@ -372,7 +402,7 @@ static uint32_t sqrt_q30(uint32_t x)
 static stp_sf16 fresnel_sf(const stp_shade_fast *s, uint32_t c)
 {
     uint32_t u = (uint32_t)Q30 - (mul_hi(c, c) << 2); /* c^2 <= 2^60 */
-    stp_sf16 g, cs, us, r, t, den;
+    stp_sf16 g, cs, us, r, p, den;
     if (u > (uint32_t)Q30)
         u = 0;
     if (s->refraction_ge_1) {
@@ -385,14 +415,16 @@ static stp_sf16 fresnel_sf(const stp_shade_fast *s, uint32_t c)
     }
     cs = sf_make(c, 30);
     us = sf_make(u, 30);
-    r = sf_mul(sf_diff(g, cs), sf_recip(sf_add(g, cs))); /* g + c > 0 */
-    t = sf_mul(cs, g);
-    den = sf_add(t, us);
+    /* F = (g - c)^2 (p^2 + u^2) / ((g + c)(p + u))^2: one reciprocal;
+     * g + c > 0 and p + u > 0 (c > 0) */
+    p = sf_mul(cs, g);
+    den = sf_mul(sf_add(g, cs), sf_add(p, us));
     if (den.m == 0)
         return sf_one;
-    t = sf_mul(sf_diff(t, us), sf_recip(den));
-    r = sf_mul(sf_mul(r, r), sf_add(sf_one, sf_mul(t, t)));
-    r.e++;
+    r = sf_diff(g, cs);
+    r = sf_mul(sf_mul(r, r), sf_add(sf_mul(p, p), sf_mul(us, us)));
+    den = sf_recip(den);
+    r = sf_mul(r, sf_mul(den, den));
     return sf_less(sf_one, r) ? sf_one : r;
 }
 
@@ -426,7 +458,7 @@ static stp_sf16 specular_sf(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_
         d = sf_mul(d, d);
     }
     /* 2 N.H / E.H = N.H 2^-29 r 2^(j - 30) */
-    g = sf_mul(sf_make(nh, 29), sf_make(r, 30 - j));
+    g = sf_mul(sf_make(nh, 29), sf_from_r(r, 30 - j));
     if (n_dot_l < n_dot_e)
         g = sf_mul(g, sf_mul(sf_make((uint32_t)n_dot_l, 30), inv_ne));
     if (sf_less(inv_ne, g))
