@@ -45,8 +45,15 @@ static inline int32_t asr32(int32_t v, int s)
     return v >= 0 ? v >> s : (int32_t)~(~(uint32_t)v >> s);
 }
 
+/* Forced inline where the call would cost as much as the body. */
+#if defined(__GNUC__)
+#define HOT_INLINE static inline __attribute__((always_inline))
+#else
+#define HOT_INLINE static inline
+#endif
+
 /* Significant bits of v (0 for 0): ARMv6-M has no CLZ instruction. */
-static int bit_length32(uint32_t v)
+HOT_INLINE int bit_length32(uint32_t v)
 {
     int n = 0;
     if (v >= 0x10000u) {
@@ -288,10 +295,12 @@ static int dir_make(stp_shade_fast_dir *d, stp_vec3 a, stp_vec3 b, int big, int 
         } else {
             w = v[i] * ((int32_t)1 << -n);
         }
-        if (w > 0xFFFF)
-            w = 0xFFFF; /* the rounding of the largest: keeps w^2 < 2^32 */
-        if (w < -0xFFFF)
-            w = -0xFFFF;
+        /* the rounding of the largest may reach 2^16: kept below, so w^2 < 2^32
+         * (int32_t constants: 0xFFFF is an unsigned int where int has 16 bits) */
+        if (w > (int32_t)0xFFFF)
+            w = (int32_t)0xFFFF;
+        if (w < -(int32_t)0xFFFF)
+            w = -(int32_t)0xFFFF;
         d->w[i] = w;
         u = w < 0 ? (uint32_t)-w : (uint32_t)w;
         q += (u * u) >> 2;
