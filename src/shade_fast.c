@@ -45,8 +45,9 @@ static inline int32_t asr32(int32_t v, int s)
     return v >= 0 ? v >> s : (int32_t)~(~(uint32_t)v >> s);
 }
 
-/* Forced inline where the call would cost as much as the body. */
-#if defined(__GNUC__)
+/* Forced inline where the call would cost as much as the body (not in
+ * builds for size: -Os). */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
 #define HOT_INLINE static inline __attribute__((always_inline))
 #else
 #define HOT_INLINE static inline
@@ -160,7 +161,7 @@ static uint32_t recip16(uint32_t m)
 
 /* ---- stp_sf16: m 2^-e, m = 0 or in [2^15, 2^16) ---- */
 
-static stp_sf16 sf_make(uint32_t v, int e)
+HOT_INLINE stp_sf16 sf_make(uint32_t v, int e)
 {
     stp_sf16 r;
     int n;
