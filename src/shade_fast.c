@@ -56,6 +56,9 @@ static inline int32_t asr32(int32_t v, int s)
 /* Significant bits of v (0 for 0): ARMv6-M has no CLZ instruction. */
 HOT_INLINE int bit_length32(uint32_t v)
 {
+#if defined(__GNUC__) && (STP_WIDE_ARITH || defined(__ARM_FEATURE_CLZ))
+    return v == 0 ? 0 : 32 - __builtin_clz(v); /* one instruction there */
+#else
     int n = 0;
     if (v >= 0x10000u) {
         v >>= 16;
@@ -78,15 +81,22 @@ HOT_INLINE int bit_length32(uint32_t v)
         n += 1;
     }
     return n + (int)v;
+#endif
 }
 
-/* floor(a b / 2^32), exact, from four 16 x 16 -> 32 products. */
+/* floor(a b / 2^32), exact: one 64-bit product where that is one
+ * instruction (STP_WIDE_ARITH), else four 16 x 16 -> 32 products (the same
+ * value). */
 static inline uint32_t mul_hi(uint32_t a, uint32_t b)
 {
+#if STP_WIDE_ARITH
+    return (uint32_t)(((uint64_t)a * b) >> 32);
+#else
     uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
     uint32_t lh = al * bh, hl = ah * bl;
     uint32_t mid = ((al * bl) >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
     return ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+#endif
 }
 
 /* floor(a m / 2^16) for |a| < 2^31 and m <= 2^16 with |a >> 16| m < 2^31:
