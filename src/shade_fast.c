@@ -414,17 +414,15 @@ static uint32_t sqrt_q30(uint32_t x)
 }
 
 /* Fresnel (10.6)-(10.8) at c = E.H (Q30, in (0, 2^30]) for the prepared
- * index n, as stp_sf16 in [0, 1]:
+ * index n, as stp_sf16 in [0, 1], given u = 1 - c^2 (Q30, in [0, 2^30]:
+ * (1 - E.L)/2, since c^2 = |L + E|^2/4 = (1 + E.L)/2):
  *   g = sqrt(n^2 - u), u = 1 - c^2 (n >= 1: g = n sqrt(1 - u/n^2), so
  *   that n^2 needs no range), r = (g - c)/(g + c), t = (p - u)/(p + u)
  *   with p = c g (the listing's (c (g + c) - 1)/(c (g - c) + 1)),
  *   F = r^2 (1 + t^2)/2; 1 where g is imaginary (n < 1). */
-static stp_sf16 fresnel_sf(const stp_shade_fast *s, uint32_t c)
+static stp_sf16 fresnel_sf(const stp_shade_fast *s, uint32_t c, uint32_t u)
 {
-    uint32_t u = (uint32_t)Q30 - (mul_hi(c, c) << 2); /* c^2 <= 2^60 */
     stp_sf16 g, cs, us, r, p, den;
-    if (u > (uint32_t)Q30)
-        u = 0;
     if (s->refraction_ge_1) {
         uint32_t w = (uint32_t)Q30 - (mul_hi(u, s->inv_n2) << 1); /* in [0, 2^30] */
         g = w == 0 ? sf_make(0, 0) : sf_mul(s->refraction, sf_make(sqrt_q30(w), 30));
@@ -483,7 +481,7 @@ static stp_sf16 specular_sf(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_
         g = sf_mul(g, sf_mul(sf_make((uint32_t)n_dot_l, 30), inv_ne));
     if (sf_less(inv_ne, g))
         g = inv_ne;
-    return sf_mul(sf_mul(sf_mul(s->ks, d), fresnel_sf(s, eh)), g);
+    return sf_mul(sf_mul(sf_mul(s->ks, d), fresnel_sf(s, eh, e_dot_l >= Q30 ? 0u : ((uint32_t)Q30 - (uint32_t)e_dot_l) >> 1)), g);
 }
 #endif
 
