@@ -272,19 +272,19 @@ static int is_big(stp_vec3 a)
 /* a - b scaled to 16 bits (stp_shade_fast_dir) and, when need_r, its
  * 1/length; halved first when either has a component beyond 2^30 (big).
  * Returns 0 for a zero difference (d->w = 0 then). */
-static int dir_make(stp_shade_fast_dir *d, stp_vec3 a, stp_vec3 b, int big, int need_r)
+static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b, int big, int need_r)
 {
     int32_t v[3];
     uint32_t m = 0, q = 0;
     int i, n;
     if (big) {
-        v[0] = asr32(a.x, 1) - asr32(b.x, 1);
-        v[1] = asr32(a.y, 1) - asr32(b.y, 1);
-        v[2] = asr32(a.z, 1) - asr32(b.z, 1);
+        v[0] = asr32(a->x, 1) - asr32(b->x, 1);
+        v[1] = asr32(a->y, 1) - asr32(b->y, 1);
+        v[2] = asr32(a->z, 1) - asr32(b->z, 1);
     } else {
-        v[0] = a.x - b.x;
-        v[1] = a.y - b.y;
-        v[2] = a.z - b.z;
+        v[0] = a->x - b->x;
+        v[1] = a->y - b->y;
+        v[2] = a->z - b->z;
     }
     for (i = 0; i < 3; i++) {
         uint32_t u = v[i] < 0 ? 0u - (uint32_t)v[i] : (uint32_t)v[i];
@@ -527,9 +527,9 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
     s->eye_big = is_big(eye);
     if (parallel) {
         stp_vec3 zero = {0, 0, 0};
-        if (!dir_make(&s->e, parallel_dir, zero, is_big(parallel_dir), 1)) {
+        if (!dir_make(&s->e, &parallel_dir, &zero, is_big(parallel_dir), 1)) {
             stp_vec3 back = {0, 0, -ONE};
-            (void)dir_make(&s->e, back, zero, 0, 1);
+            (void)dir_make(&s->e, &back, &zero, 0, 1);
         }
     }
     for (j = 0; j < count; j++) {
@@ -576,7 +576,7 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     if (s->count == 0)
         return s->ambient_shade;
     if (!s->parallel) {
-        if (!dir_make(&e_local, s->eye, point, s->eye_big | point_big, s->specular))
+        if (!dir_make(&e_local, &s->eye, &point, s->eye_big | point_big, s->specular))
             return s->ambient_shade; /* the eye on the face */
         e = &e_local;
     }
@@ -598,7 +598,7 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     for (j = 0; j < s->count; j++) {
         int32_t n_dot_l, share;
         stp_sf16 w, term;
-        int at_point = !dir_make(&l, s->light[j], point, s->light_big[j] | point_big, 1);
+        int at_point = !dir_make(&l, &s->light[j], &point, s->light_big[j] | point_big, 1);
         if (!at_point) {
             n_dot_l = cos_n(dot_n(normal, &l), &l, nd);
             if (n_dot_l <= 0)

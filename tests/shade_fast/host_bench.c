@@ -5,10 +5,13 @@
  * stp_unit_from64 and stp_shade_unit), 1000 times each, in functions of
  * their own so callgrind's inclusive counts divide into instructions per
  * face (m0_bench.sh's figures are the Cortex-M0+ ones).  Argument "diffuse":
- * the material's Ks = 0.  Prints the sum of
+ * the material's Ks = 0; a second argument "time": the ratio of their
+ * wall times over 20 interleaved runs instead.  Prints the sum of
  * the shades so the work cannot be optimised away.
  */
+#define _POSIX_C_SOURCE 199309L
 #include <stdio.h>
+#include <time.h>
 
 #include "fix_private.h"
 #include "shade_fast_private.h"
@@ -72,6 +75,23 @@ int main(int argc, char **argv)
     }
     if (argc > 1 && argv[1][0] == 'd')
         material.specular = 0; /* "diffuse": Ks = 0 */
+    if (argc > 2 && argv[2][0] == 't') {
+        /* wall time, interleaved: the ratio only (third argument "time") */
+        double tf = 0, ta = 0;
+        int r;
+        for (r = 0; r < 20; r++) {
+            struct timespec a, b, c;
+            clock_gettime(CLOCK_MONOTONIC, &a);
+            (void)bench_fast(&lighting, &material);
+            clock_gettime(CLOCK_MONOTONIC, &b);
+            (void)bench_accurate(&lighting, &material);
+            clock_gettime(CLOCK_MONOTONIC, &c);
+            tf += (double)(b.tv_sec - a.tv_sec) + 1e-9 * (double)(b.tv_nsec - a.tv_nsec);
+            ta += (double)(c.tv_sec - b.tv_sec) + 1e-9 * (double)(c.tv_nsec - b.tv_nsec);
+        }
+        printf("wall time fast / accurate: %.2f\n", tf / ta);
+        return 0;
+    }
     printf("fast %ld accurate %ld\n", bench_fast(&lighting, &material), bench_accurate(&lighting, &material));
     return 0;
 }
