@@ -219,24 +219,20 @@ static uint32_t sf_aligned(stp_sf16 b, int d)
     return d > 16 ? 0 : b.m >> d;
 }
 
-static int sf_less(stp_sf16 a, stp_sf16 b)
-{
-    if (a.m == 0 || b.m == 0)
-        return b.m != 0;
-    return a.e != b.e ? a.e > b.e : a.m < b.m;
-}
 
 static stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
 {
     stp_sf16 t;
     uint32_t sum;
-    if (sf_less(a, b)) {
+    if (b.m == 0)
+        return a;
+    if (a.m == 0)
+        return b;
+    if (a.e > b.e) { /* a the one with the larger scale */
         t = a;
         a = b;
         b = t;
     }
-    if (b.m == 0)
-        return a;
     sum = a.m + sf_aligned(b, b.e - a.e); /* < 2^17 */
     if (sum > 0xFFFFu) {
         a.m = sum >> 1;
@@ -367,6 +363,14 @@ static int32_t cos_dirs(const stp_shade_fast_dir *a, const stp_shade_fast_dir *b
 #endif
 
 #if STP_WITH_SPECULAR
+/* a < b */
+static int sf_less(stp_sf16 a, stp_sf16 b)
+{
+    if (a.m == 0 || b.m == 0)
+        return b.m != 0;
+    return a.e != b.e ? a.e > b.e : a.m < b.m;
+}
+
 /* r 2^-e for r in (2^30, 2^31] (a reciprocal square root): no search */
 static stp_sf16 sf_from_r(uint32_t r, int e)
 {
@@ -392,13 +396,15 @@ static uint32_t rsqrt_any(uint32_t q, int *j)
 static stp_sf16 sf_diff(stp_sf16 a, stp_sf16 b)
 {
     stp_sf16 t;
-    if (sf_less(a, b)) {
+    if (b.m == 0)
+        return a;
+    if (a.m == 0)
+        return b;
+    if (a.e > b.e || (a.e == b.e && a.m < b.m)) { /* a the larger */
         t = a;
         a = b;
         b = t;
     }
-    if (b.m == 0)
-        return a;
     return sf_make(a.m - sf_aligned(b, b.e - a.e), a.e);
 }
 
