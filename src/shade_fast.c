@@ -293,24 +293,25 @@ static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b,
     }
     n = bit_length32(m) - 16; /* m 2^-n in [2^15, 2^16) */
     d->shift = n + big;
-    for (i = 0; i < 3; i++) {
-        int32_t w;
-        uint32_t u;
-        if (n > 0) {
-            w = asr32(v[i], n - 1); /* rounded to nearest */
-            w = asr32(w + 1, 1);
-        } else {
-            w = v[i] * ((int32_t)1 << -n);
+    if (n > 0) {
+        for (i = 0; i < 3; i++) {
+            int32_t w = asr32(asr32(v[i], n - 1) + 1, 1); /* rounded to nearest */
+            /* the rounding of the largest may reach 2^16: kept below, so
+             * w^2 < 2^32 (int32_t constants: 0xFFFF is an unsigned int where
+             * int has 16 bits) */
+            if (w > (int32_t)0xFFFF)
+                w = (int32_t)0xFFFF;
+            if (w < -(int32_t)0xFFFF)
+                w = -(int32_t)0xFFFF;
+            d->w[i] = w;
+            q += ((uint32_t)w * (uint32_t)w) >> 2; /* w^2 < 2^32: exact mod 2^32 */
         }
-        /* the rounding of the largest may reach 2^16: kept below, so w^2 < 2^32
-         * (int32_t constants: 0xFFFF is an unsigned int where int has 16 bits) */
-        if (w > (int32_t)0xFFFF)
-            w = (int32_t)0xFFFF;
-        if (w < -(int32_t)0xFFFF)
-            w = -(int32_t)0xFFFF;
-        d->w[i] = w;
-        u = w < 0 ? (uint32_t)-w : (uint32_t)w;
-        q += (u * u) >> 2;
+    } else {
+        for (i = 0; i < 3; i++) {
+            int32_t w = v[i] * ((int32_t)1 << -n); /* exact, |w| < 2^16 */
+            d->w[i] = w;
+            q += ((uint32_t)w * (uint32_t)w) >> 2;
+        }
     }
     d->q = q; /* in [2^28, 3 2^30) */
     d->j = q < 0x40000000u;
