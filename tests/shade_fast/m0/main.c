@@ -77,6 +77,28 @@ int main(void)
     t1 = stp_count_now();
     report("instructions per stp_shade_fast_face", (uint32_t)((t1 - t0) * per_tick / (FACES * REPEAT)));
 
+    material.gloss = STP_FIX_ONE / 10; /* a sharp highlight: k = 0.1 */
+    stp_shade_fast_prepare(&fast, &lighting, &material, eye, 0, back);
+    t0 = stp_count_now();
+    for (k = 0; k < REPEAT; k++)
+        for (i = 0; i < FACES; i++)
+            (void)stp_shade_fast_face(&fast, normals[i], points[i]);
+    t1 = stp_count_now();
+    report("instructions per stp_shade_fast_face with k = 0.1",
+           (uint32_t)((t1 - t0) * per_tick / (FACES * REPEAT)));
+    t0 = stp_count_now();
+    for (k = 0; k < REPEAT; k++)
+        for (i = 0; i < FACES; i++) {
+            stp_unit3 n, e;
+            (void)stp_unit_from64(normals[i][0], normals[i][1], normals[i][2], &n);
+            (void)stp_unit_from64(-(int64_t)points[i].x, -(int64_t)points[i].y, -(int64_t)points[i].z, &e);
+            (void)stp_shade_unit(&lighting, &material, n, points[i], e, stp_unit_dot(n, e));
+        }
+    t1 = stp_count_now();
+    report("instructions per accurate face with k = 0.1",
+           (uint32_t)((t1 - t0) * per_tick / (FACES * REPEAT)));
+    material.gloss = 10 * STP_FIX_ONE;
+
     material.specular = 0; /* diffuse only (Ks = 0) */
     stp_shade_fast_prepare(&fast, &lighting, &material, eye, 0, back);
     t0 = stp_count_now();
