@@ -298,13 +298,29 @@ static stp_fix shade_face(const mesh_context *c, const int16_t normal[3], stp_ve
     return stp_shade_unit(&c->r->segment_lighting, &c->r->material, n, centre, eye, n_dot_e);
 }
 
+/* floor(u / 3) for any uint32 u in shifts and adds (no 64-bit product,
+ * a library call on ARMv6-M): q underestimates u / 3 by less than 32, the
+ * remainder r = u - 3 q is below 96, and (11 r) >> 5 is floor(r / 3) for
+ * r < 96. */
+static uint32_t udiv3(uint32_t u)
+{
+    uint32_t q = (u >> 2) + (u >> 4), r;
+    q += q >> 4;
+    q += q >> 8;
+    q += q >> 16;
+    r = u - 3u * q;
+    return q + ((11u * r) >> 5);
+}
+
 /* The vertex average, truncated toward zero as render.c's Newell step
- * forms it. */
+ * forms it (the same quotients). */
 static stp_fix average3(int32_t a, int32_t b, int32_t c)
 {
     int64_t s = (int64_t)a + b + c;
-    if (s >= INT32_MIN && s <= INT32_MAX)
-        return (stp_fix)stp_div3_toward_zero((int32_t)s);
+    if (s > -((int64_t)1 << 32) && s < ((int64_t)1 << 32)) {
+        uint32_t q = udiv3(s < 0 ? (uint32_t)-s : (uint32_t)s);
+        return s < 0 ? -(stp_fix)q : (stp_fix)q; /* |s| / 3 < 2^31 */
+    }
     return (stp_fix)(s / 3);
 }
 

@@ -4,7 +4,8 @@
  * compiled once more here under other names, beside the library's own
  * (fallback on).  A triangle inside the view enters as with the fallback;
  * one that needs clipping, or a state only stp_renderer_polygon handles, is
- * STP_ERR_UNSUPPORTED.
+ * STP_ERR_UNSUPPORTED.  Also mesh.c's division-free vertex average against
+ * C's operator.
  */
 #define STP_WITH_MESH_FALLBACK 0
 #define stp_renderer_mesh stp_renderer_mesh_nofallback
@@ -81,9 +82,38 @@ static void test_fallback_refused(void **state)
     torus_bench_free(&b);
 }
 
+/* mesh.c's vertex average against C's division of the 64-bit sum. */
+static void test_average_exact(void **state)
+{
+    static const int32_t edge[] = {0, 1, 2, 3, 4, 5, -1, -2, -3, INT32_MAX, INT32_MIN,
+                                   INT32_MAX - 1, INT32_MIN + 1, 1 << 30, -(1 << 30)};
+    uint32_t x = 12345u;
+    size_t i, j, k;
+    long n;
+    (void)state;
+    for (i = 0; i < sizeof edge / sizeof edge[0]; i++)
+        for (j = 0; j < sizeof edge / sizeof edge[0]; j++)
+            for (k = 0; k < sizeof edge / sizeof edge[0]; k++)
+                assert_int_equal(average3(edge[i], edge[j], edge[k]),
+                                 ((int64_t)edge[i] + edge[j] + edge[k]) / 3);
+    for (n = 0; n < 3000000; n++) {
+        int32_t v[3];
+        int shift;
+        for (k = 0; k < 3; k++) {
+            x = x * 1664525u + 1013904223u;
+            v[k] = (int32_t)x;
+        }
+        shift = (int)(x >> 27); /* magnitudes of every size */
+        for (k = 0; k < 3; k++)
+            v[k] = v[k] / ((int32_t)1 << (shift > 30 ? 30 : shift));
+        assert_int_equal(average3(v[0], v[1], v[2]), ((int64_t)v[0] + v[1] + v[2]) / 3);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_average_exact),
         cmocka_unit_test(test_inside_view_enters),
         cmocka_unit_test(test_fallback_refused),
     };
