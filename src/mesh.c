@@ -33,6 +33,7 @@ typedef struct mesh_context {
      * that it and every shifted vertex are within 2^14 in magnitude */
     int32_t eye[3];
     int shift;
+    int inside; /* 1: every vertex is inside the view volume (no outcodes) */
 } mesh_context;
 
 /* floor(v / 2^s) for any int32 v, 0 <= s <= 31 (>> of a negative value is
@@ -175,6 +176,48 @@ static int similarity(const stp_renderer *r, int32_t m[3][3], int64_t *s2)
     return det > 0;
 }
 
+/* Whether a view coordinate saturated (as render.c's test). */
+static int saturated(stp_vec3 p)
+{
+    return p.x >= STP_FIX_MAX || p.x <= STP_FIX_MIN || p.y >= STP_FIX_MAX || p.y <= STP_FIX_MIN ||
+           p.z >= STP_FIX_MAX || p.z <= STP_FIX_MIN;
+}
+
+/* Whether every point of the model box [lo, hi] lands strictly inside the
+ * view volume under the model and view transforms, with room for their
+ * rounding: the box grown by a margin worth 64 raw view units (64 / s
+ * model units, s the model's scale: s2 = s^2 2^(2F)) has its eight
+ * corners inside (outcode 0, nothing saturated).  The volume is convex
+ * and the transforms affine, so then every vertex is inside too, and its
+ * outcode (0) need not be formed. */
+static int box_inside(const stp_renderer *r, stp_vec3 lo, stp_vec3 hi, int64_t s2)
+{
+    uint32_t s = stp_sqrt64_fast((uint64_t)s2); /* s 2^F, >= 2^10 (similarity) */
+    int64_t margin = ((int64_t)64 << F) / (int64_t)(s > 0 ? s : 1) + 1;
+    int corner;
+    for (corner = 0; corner < 8; corner++) {
+        int64_t x = (corner & 1) ? (int64_t)hi.x + margin : (int64_t)lo.x - margin;
+        int64_t y = (corner & 2) ? (int64_t)hi.y + margin : (int64_t)lo.y - margin;
+        int64_t z = (corner & 4) ? (int64_t)hi.z + margin : (int64_t)lo.z - margin;
+        stp_vec3 p, view;
+        if (x <= STP_FIX_MIN || x >= STP_FIX_MAX || y <= STP_FIX_MIN || y >= STP_FIX_MAX ||
+            z <= STP_FIX_MIN || z >= STP_FIX_MAX)
+            return 0;
+        p.x = (stp_fix)x;
+        p.y = (stp_fix)y;
+        p.z = (stp_fix)z;
+        if (r->model_on) {
+            p = stp_transform_point(&r->model, p);
+            if (saturated(p))
+                return 0;
+        }
+        stp_view_transform_point(&r->to_view, p, &view);
+        if (saturated(view) || stp_clip_outcode(&r->clip_volume, view) != 0)
+            return 0;
+    }
+    return 1;
+}
+
 /* The per-call values of the fast path (mesh_context); 0 when the model
  * transform or the eye's place rules it out. */
 static int prepare_call(mesh_context *c)
@@ -184,6 +227,7 @@ static int prepare_call(mesh_context *c)
     int64_t s2, d[3];
     const stp_vec3 *axis[3];
     uint32_t big = 0;
+    stp_vec3 lo, hi;
     uint16_t v;
     int i, j, k;
     if (!similarity(r, m, &s2))
@@ -220,11 +264,20 @@ static int prepare_call(mesh_context *c)
         c->eye[j] = (int32_t)e;
         big |= magnitude(c->eye[j]);
     }
-    /* the scale of the back-face test: every coordinate below 2^14 */
+    /* the scale of the back-face test (every coordinate below 2^14) and
+     * the model's bounding box */
+    lo = hi = c->mesh->vertices[0];
     for (v = 0; v < c->mesh->vertex_count; v++) {
         const stp_vec3 *p = &c->mesh->vertices[v];
         big |= magnitude(p->x) | magnitude(p->y) | magnitude(p->z);
+        lo.x = p->x < lo.x ? p->x : lo.x;
+        lo.y = p->y < lo.y ? p->y : lo.y;
+        lo.z = p->z < lo.z ? p->z : lo.z;
+        hi.x = p->x > hi.x ? p->x : hi.x;
+        hi.y = p->y > hi.y ? p->y : hi.y;
+        hi.z = p->z > hi.z ? p->z : hi.z;
     }
+    c->inside = box_inside(r, lo, hi, s2);
     k = bit_length32(big) - 14;
     c->shift = k > 0 ? k : 0;
     for (j = 0; j < 3; j++)
@@ -233,13 +286,6 @@ static int prepare_call(mesh_context *c)
 }
 
 /* ---- per vertex and per face ---- */
-
-/* Whether a view coordinate saturated (as render.c's test). */
-static int saturated(stp_vec3 p)
-{
-    return p.x >= STP_FIX_MAX || p.x <= STP_FIX_MIN || p.y >= STP_FIX_MAX || p.y <= STP_FIX_MIN ||
-           p.z >= STP_FIX_MAX || p.z <= STP_FIX_MIN;
-}
 
 /* Vertex i in view coordinates with its outcode (or CODE_RANGE), once per
  * call: the same transforms as stp_renderer_polygon's. */
@@ -255,9 +301,12 @@ static int32_t vertex_code(mesh_context *c, uint16_t i)
             range = saturated(p);
         }
         stp_view_transform_point(&r->to_view, p, &s->view);
-        s->state = range || saturated(s->view)
-                       ? CODE_RANGE
-                       : (int32_t)stp_clip_outcode(&r->clip_volume, s->view);
+        if (c->inside)
+            s->state = 0; /* box_inside: no vertex is outside or saturated */
+        else
+            s->state = range || saturated(s->view)
+                           ? CODE_RANGE
+                           : (int32_t)stp_clip_outcode(&r->clip_volume, s->view);
     }
     return s->state & (CODE_RANGE | 31);
 }
@@ -298,29 +347,13 @@ static stp_fix shade_face(const mesh_context *c, const int16_t normal[3], stp_ve
     return stp_shade_unit(&c->r->segment_lighting, &c->r->material, n, centre, eye, n_dot_e);
 }
 
-/* floor(u / 3) for any uint32 u in shifts and adds (no 64-bit product,
- * a library call on ARMv6-M): q underestimates u / 3 by less than 32, the
- * remainder r = u - 3 q is below 96, and (11 r) >> 5 is floor(r / 3) for
- * r < 96. */
-static uint32_t udiv3(uint32_t u)
-{
-    uint32_t q = (u >> 2) + (u >> 4), r;
-    q += q >> 4;
-    q += q >> 8;
-    q += q >> 16;
-    r = u - 3u * q;
-    return q + ((11u * r) >> 5);
-}
-
 /* The vertex average, truncated toward zero as render.c's Newell step
  * forms it (the same quotients). */
 static stp_fix average3(int32_t a, int32_t b, int32_t c)
 {
     int64_t s = (int64_t)a + b + c;
-    if (s > -((int64_t)1 << 32) && s < ((int64_t)1 << 32)) {
-        uint32_t q = udiv3(s < 0 ? (uint32_t)-s : (uint32_t)s);
-        return s < 0 ? -(stp_fix)q : (stp_fix)q; /* |s| / 3 < 2^31 */
-    }
+    if (s >= INT32_MIN && s <= INT32_MAX)
+        return (stp_fix)stp_div3_toward_zero((int32_t)s);
     return (stp_fix)(s / 3);
 }
 

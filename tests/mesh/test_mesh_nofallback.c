@@ -4,8 +4,7 @@
  * compiled once more here under other names, beside the library's own
  * (fallback on).  A triangle inside the view enters as with the fallback;
  * one that needs clipping, or a state only stp_renderer_polygon handles, is
- * STP_ERR_UNSUPPORTED.  Also mesh.c's division-free vertex average against
- * C's operator.
+ * STP_ERR_UNSUPPORTED.  Also mesh.c's vertex average against C's operator.
  */
 #define STP_WITH_MESH_FALLBACK 0
 #define stp_renderer_mesh stp_renderer_mesh_nofallback
