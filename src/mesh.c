@@ -138,41 +138,45 @@ static int fast_state(const stp_renderer *r, const stp_mesh *mesh)
     return 1;
 }
 
-/* The model transform's matrix (identity when off), and whether it is a
- * rotation times a uniform scale: columns of equal squared length s^2 and
- * pairwise orthogonal, each within s^2 / 1024 (the rounding of composed
- * stp_fix rotations), a positive determinant (a reflection turns the
- * winding), entries below 2^24 (scale below 256) so the sums below fit. */
-static int similarity(const stp_renderer *r, int32_t m[3][3], int64_t *s2)
+/* The model transform's matrix m (identity when off), and whether it is a
+ * rotation times a uniform scale: columns of equal squared length and
+ * pairwise orthogonal, each within 1/1024 of the squared length (the
+ * rounding of composed stp_fix rotations), a positive determinant (a
+ * reflection turns the winding), a scale of at least 2^-6 (enough bits for
+ * the normals).  Tested on m cut to 14 significant bits (mq = m / 2^shift):
+ * products below 2^28, sums of three below 2^30, all in 32 bits. */
+static int similarity(const stp_renderer *r, int32_t m[3][3], int32_t mq[3][3])
 {
-    int64_t col[3][3], len[3], dot[3], cross[3], tol, det;
-    int i, j;
+    int32_t len[3], dot[3], cross[3], tol, det;
+    uint32_t big = 0;
+    int i, j, shift;
     for (i = 0; i < 3; i++)
         for (j = 0; j < 3; j++) {
             m[i][j] = r->model_on ? r->model.m[i][j] : (i == j ? ONE : 0);
-            if (magnitude(m[i][j]) >= ((uint32_t)1 << 24))
-                return 0;
-            col[j][i] = m[i][j];
+            big |= magnitude(m[i][j]);
         }
+    if (big < ((uint32_t)1 << (F - 6)) || big >= ((uint32_t)1 << 24))
+        return 0; /* scale below 2^-6 or 256 and more */
+    shift = bit_length32(big) - 14;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            mq[i][j] = shift > 0 ? asr32(m[i][j], shift) : m[i][j] * ((int32_t)1 << -shift);
     for (j = 0; j < 3; j++)
-        len[j] = col[j][0] * col[j][0] + col[j][1] * col[j][1] + col[j][2] * col[j][2];
-    dot[0] = col[0][0] * col[1][0] + col[0][1] * col[1][1] + col[0][2] * col[1][2];
-    dot[1] = col[0][0] * col[2][0] + col[0][1] * col[2][1] + col[0][2] * col[2][2];
-    dot[2] = col[1][0] * col[2][0] + col[1][1] * col[2][1] + col[1][2] * col[2][2];
-    *s2 = len[0];
+        len[j] = mq[0][j] * mq[0][j] + mq[1][j] * mq[1][j] + mq[2][j] * mq[2][j];
+    dot[0] = mq[0][0] * mq[0][1] + mq[1][0] * mq[1][1] + mq[2][0] * mq[2][1];
+    dot[1] = mq[0][0] * mq[0][2] + mq[1][0] * mq[1][2] + mq[2][0] * mq[2][2];
+    dot[2] = mq[0][1] * mq[0][2] + mq[1][1] * mq[1][2] + mq[2][1] * mq[2][2];
     tol = len[0] >> 10;
-    if (len[0] < ((int64_t)1 << 20)) /* scale below 2^-6: too few bits for the normals */
-        return 0;
     for (j = 0; j < 3; j++) {
-        int64_t d = j == 0 ? 0 : len[j] - len[0];
+        int32_t d = len[j] - len[0];
         if (d > tol || -d > tol || dot[j] > tol || -dot[j] > tol)
             return 0;
     }
-    /* c1 x c2 (below 2^49) cut to 25 bits, dotted with c0 (below 2^24) */
-    cross[0] = stp_asr64(col[1][1] * col[2][2] - col[1][2] * col[2][1], 24);
-    cross[1] = stp_asr64(col[1][2] * col[2][0] - col[1][0] * col[2][2], 24);
-    cross[2] = stp_asr64(col[1][0] * col[2][1] - col[1][1] * col[2][0], 24);
-    det = col[0][0] * cross[0] + col[0][1] * cross[1] + col[0][2] * cross[2];
+    /* c1 x c2 (below 2^29) cut to 15 bits, dotted with c0 (below 2^14) */
+    cross[0] = asr32(mq[1][1] * mq[2][2] - mq[2][1] * mq[1][2], 14);
+    cross[1] = asr32(mq[2][1] * mq[0][2] - mq[0][1] * mq[2][2], 14);
+    cross[2] = asr32(mq[0][1] * mq[1][2] - mq[1][1] * mq[0][2], 14);
+    det = mq[0][0] * cross[0] + mq[1][0] * cross[1] + mq[2][0] * cross[2];
     return det > 0;
 }
 
@@ -223,26 +227,28 @@ static int box_inside(const stp_renderer *r, stp_vec3 lo, stp_vec3 hi, int64_t s
 static int prepare_call(mesh_context *c)
 {
     const stp_renderer *r = c->r;
-    int32_t m[3][3];
+    int32_t m[3][3], mq[3][3];
     int64_t s2, d[3];
     const stp_vec3 *axis[3];
     uint32_t big = 0;
     stp_vec3 lo, hi;
     uint16_t v;
     int i, j, k;
-    if (!similarity(r, m, &s2))
+    if (!similarity(r, m, mq))
         return 0;
+    s2 = (int64_t)m[0][0] * m[0][0] + (int64_t)m[1][0] * m[1][0] + (int64_t)m[2][0] * m[2][0];
     axis[0] = &r->right;
     axis[1] = &r->up;
     axis[2] = &r->forward;
-    /* rows of V M (V: the view axes as rows), each of length s 2^(2F),
-     * normalised: below 2^17 2^24 3 in each sum */
+    /* rows of V M (V: the view axes as rows, Q15 here), normalised: each
+     * product below 2^15 2^14, the sums below 2^31 (|V_i| = 1,
+     * |mq column| < 2^14 sqrt 3) */
     for (i = 0; i < 3; i++) {
-        int64_t row[3];
+        int32_t row[3];
+        int32_t ax = asr32(axis[i]->x, 1), ay = asr32(axis[i]->y, 1), az = asr32(axis[i]->z, 1);
         stp_unit3 u;
         for (j = 0; j < 3; j++)
-            row[j] = (int64_t)axis[i]->x * m[0][j] + (int64_t)axis[i]->y * m[1][j] +
-                     (int64_t)axis[i]->z * m[2][j];
+            row[j] = ax * mq[0][j] + ay * mq[1][j] + az * mq[2][j];
         if (stp_unit_from64(row[0], row[1], row[2], &u) == 0)
             return 0;
         /* Q30 to Q15, rounded */
