@@ -6,7 +6,7 @@
  * faces whose style differs, shades within 1/30 of the double reference;
  * the fallback (clipping, a non-uniform scale, colour, transparency, no
  * prepared normals) giving the polygon path's display file; the normals;
- * bad arguments.
+ * bad arguments; the shared teapots (teapot-s1, teapot-s2) both ways.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -19,6 +19,8 @@
 #include <cmocka.h>
 
 #include "render_ref.h"
+#include "render_scene.h"
+#include "test_scenes.h"
 #include "torus.h"
 
 /* A triangle as entered into a display file: its three vertex records'
@@ -505,6 +507,141 @@ static void test_bad_arguments(void **state)
     torus_bench_free(&b);
 }
 
+/* A shared scene's triangles of its first triangle's material (flat, back
+ * faces removed, the scene's view and lights at 256 x 256), entered one by
+ * one with stp_renderer_polygon and as one mesh: the same vertex records
+ * for the front faces both enter, few faces decided or styled otherwise. */
+static void scene_mesh_matches_polygon(const char *name)
+{
+    static face fp[4096], fm[4096];
+    stp_scene s;
+    stp_tool_options opt;
+    stp_view view;
+    stp_lighting lighting;
+    stp_material material;
+    stp_renderer *r[2];
+    void *mem[2];
+    stp_instr *df[2];
+    stp_vec3 *tri = 0, *verts = 0;
+    uint16_t *index = 0;
+    int16_t *normals = 0;
+    stp_mesh_vertex *scratch = 0;
+    stp_mesh mesh;
+    torus_bench view_of[2];
+    size_t t, n = 0, nv = 0, np, nm, cp, cm, i, only = 0, restyled = 0;
+    uint32_t capacity;
+    char err[256];
+    int m = -1, k;
+    stp_test_load_scene(name, &s);
+    stp_tool_options_default(&opt);
+    opt.width = 256;
+    opt.height = 256;
+    opt.backface_removal = 1;
+    assert_int_equal(stp_tool_setup(&s, &opt, &view, &lighting, err, sizeof err), 0);
+    tri = malloc(sizeof *tri * 3 * s.polygon_count);
+    verts = malloc(sizeof *verts * 3 * s.polygon_count);
+    index = malloc(sizeof *index * 3 * s.polygon_count);
+    normals = malloc(sizeof *normals * 3 * s.polygon_count);
+    scratch = malloc(sizeof *scratch * 3 * s.polygon_count);
+    assert_non_null(tri && verts && index && normals && scratch);
+    /* the non-degenerate triangles of one material, vertices merged */
+    for (t = 0; t < s.polygon_count; t++) {
+        const stp_scene_polygon *p = &s.polygons[t];
+        stp_mesh one;
+        uint16_t ix[3] = {0, 1, 2};
+        int16_t nn[3];
+        if (p->count != 3 || (m >= 0 && p->material != m))
+            continue;
+        m = p->material;
+        for (k = 0; k < 3; k++)
+            tri[3 * n + (size_t)k] = stp_tool_vec3(s.vertices[p->first + (size_t)k]);
+        memset(&one, 0, sizeof one);
+        one.vertices = &tri[3 * n];
+        one.vertex_count = 3;
+        one.triangles = ix;
+        one.triangle_count = 1;
+        if (stp_mesh_prepare_normals(&one, nn, 0) != STP_OK)
+            continue; /* degenerate: stp_renderer_polygon refuses it too */
+        for (k = 0; k < 3; k++) {
+            stp_vec3 q = tri[3 * n + (size_t)k];
+            for (i = 0; i < nv; i++)
+                if (verts[i].x == q.x && verts[i].y == q.y && verts[i].z == q.z)
+                    break;
+            if (i == nv)
+                verts[nv++] = q;
+            index[3 * n + (size_t)k] = (uint16_t)i;
+        }
+        n++;
+    }
+    assert_true(n >= 50);
+    memset(&mesh, 0, sizeof mesh);
+    mesh.vertices = verts;
+    mesh.vertex_count = (uint16_t)nv;
+    mesh.triangles = index;
+    mesh.triangle_count = (uint16_t)n;
+    assert_int_equal(stp_mesh_prepare_normals(&mesh, normals, 0), STP_OK);
+    mesh.normals = normals;
+    stp_material_default(&material);
+    stp_tool_material(&s.materials[m], 0, &material);
+    capacity = (uint32_t)(9 * n + 16);
+    for (k = 0; k < 2; k++) {
+        mem[k] = malloc(stp_renderer_size());
+        df[k] = malloc(sizeof *df[k] * capacity);
+        r[k] = stp_renderer_create(mem[k], stp_renderer_size(), df[k], capacity, 256, 256);
+        assert_non_null(r[k]);
+        assert_int_equal(stp_renderer_set_view(r[k], &view), STP_OK);
+        assert_int_equal(stp_renderer_set_levels(r[k], 16), STP_OK);
+        assert_int_equal(stp_renderer_set_lighting(r[k], &lighting), STP_OK);
+        assert_int_equal(stp_renderer_set_shading(r[k], 1), STP_OK);
+        assert_int_equal(stp_renderer_set_backface_removal(r[k], 1), STP_OK);
+        assert_int_equal(stp_segment_create(r[k], 1), STP_OK);
+        assert_int_equal(stp_renderer_set_object_shade(r[k], &material), STP_OK);
+        memset(&view_of[k], 0, sizeof view_of[k]);
+        view_of[k].r = r[k];
+        view_of[k].df = df[k];
+    }
+    for (t = 0; t < n; t++)
+        assert_int_equal(stp_renderer_polygon(r[0], &tri[3 * t], 3), STP_OK);
+    assert_int_equal(stp_renderer_mesh(r[1], &mesh, scratch, nv), STP_OK);
+    np = faces_of(&view_of[0], fp, &cp);
+    nm = faces_of(&view_of[1], fm, &cm);
+    for (i = 0; i < nm; i++) {
+        face *f = bsearch(&fm[i], fp, np, sizeof *fp, face_cmp);
+        if (!f) {
+            only++;
+            continue;
+        }
+        f->matched = 1;
+        restyled += f->style != fm[i].style;
+    }
+    for (i = 0; i < np; i++)
+        only += !fp[i].matched;
+    fprintf(stderr, "%s: %zu triangles, %zu vertices; %zu faces entered (polygon %zu), %zu by one "
+            "path only, %zu restyled, clipped %zu / %zu\n",
+            name, n, nv, nm, np, only, restyled, cm, cp);
+    assert_true(nm >= n / 4);
+    assert_int_equal(cm, cp); /* the clipped ones through the fallback */
+    assert_true(only * 50 <= n);
+    assert_true(restyled * 10 <= nm);
+    for (k = 0; k < 2; k++) {
+        free(mem[k]);
+        free(df[k]);
+    }
+    free(tri);
+    free(verts);
+    free(index);
+    free(normals);
+    free(scratch);
+    stp_scene_free(&s);
+}
+
+static void test_shared_scenes(void **state)
+{
+    (void)state;
+    scene_mesh_matches_polygon("teapot-s2");
+    scene_mesh_matches_polygon("teapot-s1");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -517,6 +654,7 @@ int main(void)
         cmocka_unit_test(test_normals),
         cmocka_unit_test(test_normals_errors),
         cmocka_unit_test(test_bad_arguments),
+        cmocka_unit_test(test_shared_scenes),
     };
     return cmocka_run_group_tests(tests, 0, 0);
 }
