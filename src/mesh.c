@@ -293,27 +293,33 @@ static int prepare_call(mesh_context *c)
 
 /* ---- per vertex and per face ---- */
 
-/* Vertex i in view coordinates with its outcode (or CODE_RANGE), once per
- * call: the same transforms as stp_renderer_polygon's. */
-static int32_t vertex_code(mesh_context *c, uint16_t i)
+/* Vertex i (not transformed yet) in view coordinates with its outcode (or
+ * CODE_RANGE): the same transforms as stp_renderer_polygon's. */
+static void vertex_transform(mesh_context *c, uint16_t i)
 {
     stp_mesh_vertex *s = &c->scratch[i];
-    if (s->state == STATE_NEW) {
-        const stp_renderer *r = c->r;
-        stp_vec3 p = c->mesh->vertices[i];
-        int range = 0;
-        if (r->model_on) {
-            p = stp_transform_point(&r->model, p);
-            range = saturated(p);
-        }
-        stp_view_transform_point(&r->to_view, p, &s->view);
-        if (c->inside)
-            s->state = 0; /* box_inside: no vertex is outside or saturated */
-        else
-            s->state = range || saturated(s->view)
-                           ? CODE_RANGE
-                           : (int32_t)stp_clip_outcode(&r->clip_volume, s->view);
+    const stp_renderer *r = c->r;
+    stp_vec3 p = c->mesh->vertices[i];
+    int range = 0;
+    if (r->model_on) {
+        p = stp_transform_point(&r->model, p);
+        range = saturated(p);
     }
+    stp_view_transform_point(&r->to_view, p, &s->view);
+    if (c->inside)
+        s->state = 0; /* box_inside: no vertex is outside or saturated */
+    else
+        s->state = range || saturated(s->view) ? CODE_RANGE
+                                               : (int32_t)stp_clip_outcode(&r->clip_volume, s->view);
+}
+
+/* Vertex i's outcode (or CODE_RANGE), transformed once per call; the
+ * common case, a vertex an earlier face transformed, stays inline. */
+static inline int32_t vertex_code(mesh_context *c, uint16_t i)
+{
+    stp_mesh_vertex *s = &c->scratch[i];
+    if (s->state == STATE_NEW)
+        vertex_transform(c, i);
     return s->state & (CODE_RANGE | 31);
 }
 
