@@ -33,7 +33,8 @@ typedef struct mesh_context {
      * that it and every shifted vertex are within 2^14 in magnitude */
     int32_t eye[3];
     int shift;
-    int inside; /* 1: every vertex is inside the view volume (no outcodes) */
+    int inside; /* 1: every vertex is inside the view volume (no outcodes)
+                   and its view coordinates are below 2^29 in magnitude */
 } mesh_context;
 
 /* floor(v / 2^s) for any int32 v, 0 <= s <= 31 (>> of a negative value is
@@ -191,9 +192,11 @@ static int saturated(stp_vec3 p)
  * view volume under the model and view transforms, with room for their
  * rounding: the box grown by a margin worth 64 raw view units (64 / s
  * model units, s the model's scale: s2 = s^2 2^(2F)) has its eight
- * corners inside (outcode 0, nothing saturated).  The volume is convex
- * and the transforms affine, so then every vertex is inside too, and its
- * outcode (0) need not be formed. */
+ * corners inside (outcode 0, nothing saturated) and their view
+ * coordinates below 2^28.  The volume is convex and the transforms affine,
+ * so then every vertex is inside too, its outcode (0) need not be formed,
+ * and its view coordinates are below 2^28 (plus the rounding): a sum of
+ * three fits int32. */
 static int box_inside(const stp_renderer *r, stp_vec3 lo, stp_vec3 hi, int64_t s2)
 {
     uint32_t s = stp_sqrt64_fast((uint64_t)s2); /* s 2^F, >= 2^10 (similarity) */
@@ -216,7 +219,8 @@ static int box_inside(const stp_renderer *r, stp_vec3 lo, stp_vec3 hi, int64_t s
                 return 0;
         }
         stp_view_transform_point(&r->to_view, p, &view);
-        if (saturated(view) || stp_clip_outcode(&r->clip_volume, view) != 0)
+        if (saturated(view) || stp_clip_outcode(&r->clip_volume, view) != 0 ||
+            (magnitude(view.x) | magnitude(view.y) | magnitude(view.z)) >= ((uint32_t)1 << 28))
             return 0;
     }
     return 1;
@@ -275,7 +279,6 @@ static int prepare_call(mesh_context *c)
     lo = hi = c->mesh->vertices[0];
     for (v = 0; v < c->mesh->vertex_count; v++) {
         const stp_vec3 *p = &c->mesh->vertices[v];
-        big |= magnitude(p->x) | magnitude(p->y) | magnitude(p->z);
         lo.x = p->x < lo.x ? p->x : lo.x;
         lo.y = p->y < lo.y ? p->y : lo.y;
         lo.z = p->z < lo.z ? p->z : lo.z;
@@ -283,6 +286,9 @@ static int prepare_call(mesh_context *c)
         hi.y = p->y > hi.y ? p->y : hi.y;
         hi.z = p->z > hi.z ? p->z : hi.z;
     }
+    /* the box's corners bound every coordinate's magnitude */
+    big |= magnitude(lo.x) | magnitude(lo.y) | magnitude(lo.z) | magnitude(hi.x) |
+           magnitude(hi.y) | magnitude(hi.z);
     c->inside = box_inside(r, lo, hi, s2);
     k = bit_length32(big) - 14;
     c->shift = k > 0 ? k : 0;
@@ -469,9 +475,16 @@ static int enter_face(mesh_context *c, uint16_t t)
     }
     for (i = 0; i < 3; i++)
         v[i] = &c->scratch[k[i]].view;
-    centre.x = average3(v[0]->x, v[1]->x, v[2]->x);
-    centre.y = average3(v[0]->y, v[1]->y, v[2]->y);
-    centre.z = average3(v[0]->z, v[1]->z, v[2]->z);
+    if (c->inside) {
+        /* below 2^28 each (box_inside): the sums fit int32 */
+        centre.x = (stp_fix)stp_div3_toward_zero(v[0]->x + v[1]->x + v[2]->x);
+        centre.y = (stp_fix)stp_div3_toward_zero(v[0]->y + v[1]->y + v[2]->y);
+        centre.z = (stp_fix)stp_div3_toward_zero(v[0]->z + v[1]->z + v[2]->z);
+    } else {
+        centre.x = average3(v[0]->x, v[1]->x, v[2]->x);
+        centre.y = average3(v[0]->y, v[1]->y, v[2]->y);
+        centre.z = average3(v[0]->z, v[1]->z, v[2]->z);
+    }
     if (r->shading) {
         r->last_shade = shade_face(c, nv, centre);
         style = stp_intensity_index(r->last_shade, r->levels);
@@ -494,9 +507,12 @@ static int check_mesh(const stp_renderer *r, const stp_mesh *mesh, const stp_mes
     if (mesh->vertices == 0 || mesh->triangles == 0)
         return STP_ERR_ARG;
     n = 3 * (uint32_t)mesh->triangle_count;
-    for (i = 0; i < n; i++)
-        if (mesh->triangles[i] >= mesh->vertex_count)
+    for (i = 0; i < n; i += 3) {
+        const uint16_t *k = &mesh->triangles[i];
+        if (k[0] >= mesh->vertex_count || k[1] >= mesh->vertex_count ||
+            k[2] >= mesh->vertex_count)
             return STP_ERR_ARG;
+    }
     return STP_OK;
 }
 
