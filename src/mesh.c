@@ -366,10 +366,14 @@ static stp_fix shade_face(const mesh_context *c, const int16_t normal[3], stp_ve
 }
 
 /* The vertex average, truncated toward zero as render.c's Newell step
- * forms it (the same quotients). */
-static stp_fix average3(int32_t a, int32_t b, int32_t c)
+ * forms it (the same quotients); small: each value below 2^28 in
+ * magnitude (box_inside), so the sum fits int32. */
+static stp_fix average3(int small, int32_t a, int32_t b, int32_t c)
 {
-    int64_t s = (int64_t)a + b + c;
+    int64_t s;
+    if (small)
+        return (stp_fix)stp_div3_toward_zero(a + b + c);
+    s = (int64_t)a + b + c;
     if (s >= INT32_MIN && s <= INT32_MAX)
         return (stp_fix)stp_div3_toward_zero((int32_t)s);
     return (stp_fix)(s / 3);
@@ -475,16 +479,9 @@ static int enter_face(mesh_context *c, uint16_t t)
     }
     for (i = 0; i < 3; i++)
         v[i] = &c->scratch[k[i]].view;
-    if (c->inside) {
-        /* below 2^28 each (box_inside): the sums fit int32 */
-        centre.x = (stp_fix)stp_div3_toward_zero(v[0]->x + v[1]->x + v[2]->x);
-        centre.y = (stp_fix)stp_div3_toward_zero(v[0]->y + v[1]->y + v[2]->y);
-        centre.z = (stp_fix)stp_div3_toward_zero(v[0]->z + v[1]->z + v[2]->z);
-    } else {
-        centre.x = average3(v[0]->x, v[1]->x, v[2]->x);
-        centre.y = average3(v[0]->y, v[1]->y, v[2]->y);
-        centre.z = average3(v[0]->z, v[1]->z, v[2]->z);
-    }
+    centre.x = average3(c->inside, v[0]->x, v[1]->x, v[2]->x);
+    centre.y = average3(c->inside, v[0]->y, v[1]->y, v[2]->y);
+    centre.z = average3(c->inside, v[0]->z, v[1]->z, v[2]->z);
     if (r->shading) {
         r->last_shade = shade_face(c, nv, centre);
         style = stp_intensity_index(r->last_shade, r->levels);

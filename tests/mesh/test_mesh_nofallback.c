@@ -93,7 +93,7 @@ static void test_average_exact(void **state)
     for (i = 0; i < sizeof edge / sizeof edge[0]; i++)
         for (j = 0; j < sizeof edge / sizeof edge[0]; j++)
             for (k = 0; k < sizeof edge / sizeof edge[0]; k++)
-                assert_int_equal(average3(edge[i], edge[j], edge[k]),
+                assert_int_equal(average3(0, edge[i], edge[j], edge[k]),
                                  ((int64_t)edge[i] + edge[j] + edge[k]) / 3);
     for (n = 0; n < 3000000; n++) {
         int32_t v[3];
@@ -105,7 +105,10 @@ static void test_average_exact(void **state)
         shift = (int)(x >> 27); /* magnitudes of every size */
         for (k = 0; k < 3; k++)
             v[k] = v[k] / ((int32_t)1 << (shift > 30 ? 30 : shift));
-        assert_int_equal(average3(v[0], v[1], v[2]), ((int64_t)v[0] + v[1] + v[2]) / 3);
+        assert_int_equal(average3(0, v[0], v[1], v[2]), ((int64_t)v[0] + v[1] + v[2]) / 3);
+        for (k = 0; k < 3; k++)
+            v[k] /= 8; /* below 2^28: the small case */
+        assert_int_equal(average3(1, v[0], v[1], v[2]), ((int64_t)v[0] + v[1] + v[2]) / 3);
     }
 }
 
