@@ -573,6 +573,16 @@ static int check_open(stp_renderer *r)
     return r->open_segment < 0 ? open_implicit_segment(r) : STP_OK;
 }
 
+int stp_render_check_open(stp_renderer *r)
+{
+    return check_open(r);
+}
+
+void stp_render_project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
+{
+    project(r, p, out);
+}
+
 static void append(stp_renderer *r, int32_t op, int32_t x, int32_t y, int32_t z, int32_t shade)
 {
     stp_instr *in = &r->df[r->used++];

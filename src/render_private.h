@@ -177,6 +177,15 @@ struct stp_renderer {
 #endif
 };
 
+#if !STP_PLAYBACK_ONLY
+/* render.c, for mesh.c: an implicit segment opened when none is (as
+ * stp_renderer_polygon does; STP_OK or its error), and the device position
+ * (Q27.4) and depth key of a view point inside the view volume, exactly as
+ * stp_renderer_polygon stores it. */
+int stp_render_check_open(stp_renderer *r);
+void stp_render_project(const stp_renderer *r, stp_vec3 p, stp_instr *out);
+#endif
+
 #if STP_WITH_SHADOWS
 
 /* shadow.c, at entry: the STP_OP_LIGHT_TERM records of a polygon shaded

@@ -161,6 +161,16 @@
 #define STP_WITH_TRIANGLE_PATH 1
 #endif
 
+/* 1: stp_renderer_mesh (mesh.h) enters a triangle its fast path does not
+ * handle (one that needs clipping; every one under a non-similar model
+ * transform, a parallel view, colour, transparency or shadow maps) through
+ * stp_renderer_polygon; 0: such a triangle is STP_ERR_UNSUPPORTED, and a
+ * firmware calling only stp_renderer_mesh does not link the general entry
+ * path (a size-first choice for a spinning model kept inside the view). */
+#ifndef STP_WITH_MESH_FALLBACK
+#define STP_WITH_MESH_FALLBACK 1
+#endif
+
 /* 1: a render with no halftone cell (stp_output.cell NULL) builds the Bayer
  * 4x4 cell on the stack; 0: it returns STP_ERR_UNSUPPORTED, and the cell
  * construction code is not linked (compiled scenes carry their cell). */

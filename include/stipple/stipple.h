@@ -27,6 +27,7 @@ extern "C" {
 #include "stipple/port.h"
 #include "stipple/transform.h"
 #include "stipple/render.h"
+#include "stipple/mesh.h"
 #include "stipple/colour.h"
 #include "stipple/raytrace.h"
 #include "stipple/playback.h"

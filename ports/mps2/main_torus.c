@@ -19,13 +19,27 @@
 #define WIDTH 128u
 #define HEIGHT 64u
 #define STRIDE (WIDTH / 8u)
+#ifndef STP_FW_MESH
+#define STP_FW_MESH 0 /* 1: stp_renderer_mesh instead of stp_renderer_polygon */
+#endif
 #ifndef STP_FW_BAND_ROWS
 #define STP_FW_BAND_ROWS HEIGHT
 #endif
 
 static stp_renderer_storage storage;
 static stp_instr display_file[TORUS_DF_CAPACITY];
+#if STP_FW_MESH
+/* the torus as one indexed mesh, entered by stp_renderer_mesh */
+static stp_mesh mesh;
+static stp_vec3 vertices[TORUS_MESH_VERTICES];
+static uint16_t triangles[3 * TORUS_TRIANGLES];
+static int16_t normals[3 * TORUS_TRIANGLES];
+static stp_mesh_vertex scratch[TORUS_MESH_VERTICES];
+#define TORUS_ENTER(r) torus_enter_mesh(r, &mesh, scratch)
+#else
 static stp_vec3 vertices[3 * TORUS_TRIANGLES];
+#define TORUS_ENTER(r) torus_enter(r, vertices)
+#endif
 static uint8_t band[STRIDE * STP_FW_BAND_ROWS];
 static uint16_t zbuf[WIDTH * STP_FW_BAND_ROWS];
 static uint8_t picture[STRIDE * HEIGHT];
@@ -89,7 +103,14 @@ int main(void)
         stp_semihost_write("stipple: setup failed\n");
         return 1;
     }
+#if STP_FW_MESH
+    if (torus_mesh_build(&mesh, vertices, triangles, normals) != STP_OK) {
+        stp_semihost_write("stipple: mesh normals failed\n");
+        return 1;
+    }
+#else
     torus_build(vertices);
+#endif
     port.width = WIDTH;
     port.height = HEIGHT;
     port.format = STP_PIXEL_MONO1;
@@ -111,10 +132,12 @@ int main(void)
 #endif
     status = torus_setup(r);
     if (status == STP_OK)
-        status = torus_frame(r, vertices, &port, &mem);
+        status = TORUS_ENTER(r);
+    if (status == STP_OK)
+        status = torus_render(r, &port, &mem);
     t0 = stp_count_now();
     if (status == STP_OK)
-        status = torus_enter(r, vertices);
+        status = TORUS_ENTER(r);
     t1 = stp_count_now();
     if (status == STP_OK)
         status = torus_render(r, &port, &mem);
@@ -127,6 +150,7 @@ int main(void)
     }
     report("instructions per tick", per_tick);
     report("band rows", STP_FW_BAND_ROWS);
+    report("entered as one mesh", STP_FW_MESH);
     report("setups kept across bands", STP_FW_KEEP_SETUP);
     report("instructions to enter the torus", (uint32_t)((t1 - t0) * per_tick));
     report("instructions to render it", (uint32_t)((t2 - t1) * per_tick));

@@ -43,6 +43,49 @@ void torus_build(stp_vec3 *vertices)
     }
 }
 
+static uint16_t torus_index(int i, int j)
+{
+    return (uint16_t)((i % TORUS_AROUND) * TORUS_TUBE + j % TORUS_TUBE);
+}
+
+int torus_mesh_build(stp_mesh *mesh, stp_vec3 *vertices, uint16_t *triangles, int16_t *normals)
+{
+    int i, j;
+    uint16_t *t = triangles;
+    for (i = 0; i < TORUS_AROUND; i++)
+        for (j = 0; j < TORUS_TUBE; j++) {
+            vertices[torus_index(i, j)] = torus_point(i, j);
+            /* torus_build's two triangles of the quad */
+            *t++ = torus_index(i, j);
+            *t++ = torus_index(i + 1, j + 1);
+            *t++ = torus_index(i + 1, j);
+            *t++ = torus_index(i, j);
+            *t++ = torus_index(i, j + 1);
+            *t++ = torus_index(i + 1, j + 1);
+        }
+    mesh->vertices = vertices;
+    mesh->vertex_count = TORUS_MESH_VERTICES;
+    mesh->triangles = triangles;
+    mesh->triangle_count = TORUS_TRIANGLES;
+    mesh->normals = 0;
+    if (stp_mesh_prepare_normals(mesh, normals, 0) != STP_OK)
+        return STP_ERR_DEGENERATE;
+    mesh->normals = normals;
+    return STP_OK;
+}
+
+int torus_enter_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *scratch)
+{
+    int status;
+    (void)stp_segment_delete(r, 1); /* absent on the first frame */
+    status = stp_segment_create(r, 1);
+    if (status == STP_OK)
+        status = stp_renderer_mesh(r, mesh, scratch, TORUS_MESH_VERTICES);
+    if (status == STP_OK)
+        status = stp_segment_close(r);
+    return status;
+}
+
 int torus_setup(stp_renderer *r)
 {
     stp_view view;

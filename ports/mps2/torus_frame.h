@@ -17,6 +17,19 @@
 /* display-file entries: each triangle, a style change and a margin */
 #define TORUS_DF_CAPACITY (TORUS_TRIANGLES * 5u + 16u)
 
+/* The torus as an indexed mesh (stp_renderer_mesh): one vertex per ring
+ * and tube step, the same points and triangles as torus_build's. */
+#define TORUS_MESH_VERTICES (TORUS_AROUND * TORUS_TUBE)
+
+/* vertices: TORUS_MESH_VERTICES points; triangles: 3 * TORUS_TRIANGLES
+ * indices (in torus_build's order); normals: 3 * TORUS_TRIANGLES
+ * (stp_mesh_prepare_normals).  Returns STP_OK or its error. */
+int torus_mesh_build(stp_mesh *mesh, stp_vec3 *vertices, uint16_t *triangles, int16_t *normals);
+
+/* torus_enter through stp_renderer_mesh (scratch: TORUS_MESH_VERTICES
+ * entries). */
+int torus_enter_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *scratch);
+
 /* The 3 * TORUS_TRIANGLES vertices (world units), from the core's own
  * fixed-point sine and cosine. */
 void torus_build(stp_vec3 *vertices);

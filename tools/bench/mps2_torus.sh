@@ -10,7 +10,9 @@
 # Environment: STP_FW_CPU (cortex-m0plus: ARMv6-M code, which runs on the
 # board's Cortex-M3 model), STP_MPS2_OPT (-O2), STP_FW_BAND_ROWS (64: the
 # whole frame), STP_FW_KEEP_SETUP (1/0: lend the per-polygon setup array;
-# default: with several bands), STP_QEMU_TIMEOUT (seconds, 120), STP_BUILD_TIMEOUT (600).
+# default: with several bands), STP_FW_MESH (1: the torus entered as one
+# mesh by stp_renderer_mesh, checked against torus_frame_host --mesh),
+# STP_QEMU_TIMEOUT (seconds, 120), STP_BUILD_TIMEOUT (600).
 # Exit status: 0 pass, 1 fail, 77 tools missing (skipped).
 set -eu
 if [ $# -ne 3 ]; then
@@ -28,12 +30,13 @@ cpu=${STP_FW_CPU:-cortex-m0plus}
 opt=${STP_MPS2_OPT:--O2}
 band_rows=${STP_FW_BAND_ROWS:-64}
 keep=${STP_FW_KEEP_SETUP:-}
-fw=$work/fw-$cpu$opt-$band_rows${keep:+-keep$keep}
+mesh=${STP_FW_MESH:-0}
+fw=$work/fw-$cpu$opt-$band_rows${keep:+-keep$keep}-mesh$mesh
 
 echo "== building the mps2-an385 torus firmware ($cpu, $opt, $band_rows-row bands) in $fw"
 timeout "${STP_BUILD_TIMEOUT:-600}" cmake -S "$src/ports/mps2" -B "$fw" \
     -DCMAKE_TOOLCHAIN_FILE="$src/cmake/toolchain-arm-none-eabi.cmake" -DSTP_CPU="$cpu" \
-    -DSTP_MPS2_OPT="$opt" -DSTP_FW_BAND_ROWS="$band_rows" -DSTP_FW_KEEP_SETUP="$keep" \
+    -DSTP_MPS2_OPT="$opt" -DSTP_FW_BAND_ROWS="$band_rows" -DSTP_FW_KEEP_SETUP="$keep" -DSTP_FW_MESH="$mesh" \
     >"$work/configure.log" 2>&1 ||
     { cat "$work/configure.log" >&2; exit 1; }
 timeout "${STP_BUILD_TIMEOUT:-600}" cmake --build "$fw" >"$work/build.log" 2>&1 ||
@@ -54,7 +57,11 @@ grep -q "^stipple: instructions per torus frame [0-9]" "$log" ||
     printf 'P4\n128 64\n'
     sed -n '/^stipple: row /{n;p}' "$log" | tr -d '\r\n' | sed 's/../\\x&/g' | xargs -0 printf '%b'
 } >"$work/firmware.pbm"
-"$host" -s 128x64 -o "$work/host.pbm"
+if [ "$mesh" = 1 ]; then
+    "$host" -s 128x64 --mesh -o "$work/host.pbm"
+else
+    "$host" -s 128x64 -o "$work/host.pbm"
+fi
 if cmp -s "$work/firmware.pbm" "$work/host.pbm"; then
     echo "PASS: the firmware's frame equals the host's pixel for pixel"
 else

@@ -91,6 +91,10 @@ void torus_bench_free(torus_bench *b)
     free(b->band);
     free(b->zbuf);
     free(b->frame);
+    free(b->mesh_vertices);
+    free(b->mesh_triangles);
+    free(b->mesh_normals);
+    free(b->mesh_scratch);
     stp_scene_free(&b->scene);
     memset(b, 0, sizeof *b);
 }
@@ -175,6 +179,47 @@ void torus_bench_pose(torus_bench *b, double tilt_degrees, double spin_degrees, 
     b->posed = 1;
 }
 
+int torus_bench_use_mesh(torus_bench *b, char *err, size_t err_size)
+{
+    size_t n = 3 * (size_t)TORUS_TRIANGLES, i, j, count = 0;
+    uint16_t bad = 0;
+    int status;
+    b->mesh_vertices = malloc(sizeof *b->mesh_vertices * n);
+    b->mesh_triangles = malloc(sizeof *b->mesh_triangles * n);
+    b->mesh_normals = malloc(sizeof *b->mesh_normals * n);
+    if (!b->mesh_vertices || !b->mesh_triangles || !b->mesh_normals) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    for (i = 0; i < n; i++) {
+        stp_vec3 p = b->vertices[i];
+        for (j = 0; j < count; j++)
+            if (b->mesh_vertices[j].x == p.x && b->mesh_vertices[j].y == p.y &&
+                b->mesh_vertices[j].z == p.z)
+                break;
+        if (j == count)
+            b->mesh_vertices[count++] = p;
+        b->mesh_triangles[i] = (uint16_t)j;
+    }
+    b->mesh.vertices = b->mesh_vertices;
+    b->mesh.vertex_count = (uint16_t)count;
+    b->mesh.triangles = b->mesh_triangles;
+    b->mesh.triangle_count = TORUS_TRIANGLES;
+    status = stp_mesh_prepare_normals(&b->mesh, b->mesh_normals, &bad);
+    if (status != STP_OK) {
+        snprintf(err, err_size, "triangle %u: %s", (unsigned)bad, stp_status_text(status));
+        return -1;
+    }
+    b->mesh.normals = b->mesh_normals;
+    b->mesh_scratch = malloc(sizeof *b->mesh_scratch * count);
+    if (!b->mesh_scratch) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    b->use_mesh = 1;
+    return 0;
+}
+
 int torus_frame(torus_bench *b)
 {
     int t;
@@ -184,7 +229,9 @@ int torus_frame(torus_bench *b)
     if (b->posed && stp_renderer_set_transform(b->r, &b->pose) != STP_OK)
         return -1;
     stp_renderer_set_object_shade(b->r, &b->material);
-    for (t = 0; t < TORUS_TRIANGLES; t++) {
+    if (b->use_mesh && stp_renderer_mesh(b->r, &b->mesh, b->mesh_scratch, b->mesh.vertex_count) != STP_OK)
+        return -1;
+    for (t = 0; !b->use_mesh && t < TORUS_TRIANGLES; t++) {
         if (stp_renderer_polygon(b->r, b->vertices + 3 * t, 3) != STP_OK)
             return -1;
         if (b->keep_shades)

@@ -61,6 +61,12 @@ typedef struct torus_bench {
     int keep_shades;                /* 1: fill shade[] during torus_frame */
     int posed;                      /* 1: enter through `pose` (stp_renderer_set_transform) */
     stp_transform pose;
+    int use_mesh;                   /* 1: enter through stp_renderer_mesh (torus_bench_use_mesh) */
+    stp_mesh mesh;                  /* vertices[] with exact duplicates merged */
+    stp_vec3 *mesh_vertices;
+    uint16_t *mesh_triangles;
+    int16_t *mesh_normals;
+    stp_mesh_vertex *mesh_scratch;
 } torus_bench;
 
 /* Pose the model for the next frames: tilt about x, then spin about y (the
@@ -73,6 +79,13 @@ void torus_bench_pose(torus_bench *b, double tilt_degrees, double spin_degrees, 
  * or -1 with a message in err. */
 int torus_bench_init(torus_bench *b, int width, int height, char *err, size_t err_size);
 void torus_bench_free(torus_bench *b);
+
+/* Enter the next frames through stp_renderer_mesh instead of one
+ * stp_renderer_polygon per triangle: the triangles' vertices as an indexed
+ * mesh (exactly equal vertices merged, so every vertex is the one the
+ * polygon path enters), normals prepared here.  Returns 0, or -1 with a
+ * message in err. */
+int torus_bench_use_mesh(torus_bench *b, char *err, size_t err_size);
 
 /* One frame, as described above.  Returns 0, or -1 when the core refused
  * something (a bug: the workload fits by construction). */

@@ -3,10 +3,11 @@
  * renders it and writes the 1-bit picture as PBM, for the firmware test to
  * compare with, and as a callgrind driver for the raster's profile.
  *
- * usage: torus_frame_host [-s WxH] [--band-rows N] [--frames N] [-o OUT.pbm]
+ * usage: torus_frame_host [-s WxH] [--band-rows N] [--frames N] [--mesh] [-o OUT.pbm]
  *   -s WxH         frame size (default 128x64)
  *   --band-rows N  rows per band (default: the whole frame)
  *   --frames N     frames to render (default 1; the last one is written)
+ *   --mesh         enter the torus as one mesh (torus_enter_mesh)
  *   -o OUT.pbm     write the picture (binary PBM) */
 #include <stdio.h>
 #include <stdlib.h>
@@ -30,7 +31,12 @@ int main(int argc, char **argv)
 {
     unsigned w = 128, h = 64, band_rows = 0, frames = 1, f;
     const char *out_path = 0;
-    int i, status = STP_OK;
+    int i, status = STP_OK, use_mesh = 0;
+    stp_mesh mesh;
+    stp_vec3 *mesh_vertices;
+    uint16_t *triangles;
+    int16_t *normals;
+    stp_mesh_vertex *scratch;
     stp_vec3 *vertices;
     stp_instr *df;
     void *rmem;
@@ -45,10 +51,12 @@ int main(int argc, char **argv)
             band_rows = (unsigned)atoi(argv[++i]);
         } else if (!strcmp(argv[i], "--frames") && i + 1 < argc) {
             frames = (unsigned)atoi(argv[++i]);
+        } else if (!strcmp(argv[i], "--mesh")) {
+            use_mesh = 1;
         } else if (!strcmp(argv[i], "-o") && i + 1 < argc) {
             out_path = argv[++i];
         } else {
-            fprintf(stderr, "usage: torus_frame_host [-s WxH] [--band-rows N] [--frames N] [-o OUT.pbm]\n");
+            fprintf(stderr, "usage: torus_frame_host [-s WxH] [--band-rows N] [--frames N] [--mesh] [-o OUT.pbm]\n");
             return 2;
         }
     }
@@ -61,6 +69,10 @@ int main(int argc, char **argv)
     vertices = malloc(sizeof *vertices * 3 * TORUS_TRIANGLES);
     df = malloc(sizeof *df * TORUS_DF_CAPACITY);
     rmem = malloc(stp_renderer_size());
+    mesh_vertices = malloc(sizeof *mesh_vertices * TORUS_MESH_VERTICES);
+    triangles = malloc(sizeof *triangles * 3 * TORUS_TRIANGLES);
+    normals = malloc(sizeof *normals * 3 * TORUS_TRIANGLES);
+    scratch = malloc(sizeof *scratch * TORUS_MESH_VERTICES);
     pic.stride = stp_row_bytes(STP_PIXEL_MONO1, w);
     pic.pixels = calloc(pic.stride, h);
     memset(&mem, 0, sizeof mem);
@@ -69,7 +81,8 @@ int main(int argc, char **argv)
     mem.band = malloc(mem.band_size);
     mem.zbuf_count = (size_t)w * band_rows;
     mem.zbuf = malloc(sizeof *mem.zbuf * mem.zbuf_count);
-    if (!vertices || !df || !rmem || !pic.pixels || !mem.band || !mem.zbuf) {
+    if (!vertices || !df || !rmem || !pic.pixels || !mem.band || !mem.zbuf || !mesh_vertices ||
+        !triangles || !normals || !scratch) {
         fprintf(stderr, "torus_frame_host: out of memory\n");
         return 1;
     }
@@ -81,8 +94,13 @@ int main(int argc, char **argv)
     port.flush = keep_band;
     port.user = &pic;
     status = r ? torus_setup(r) : STP_ERR_ARG;
-    for (f = 0; f < frames && status == STP_OK; f++)
-        status = torus_frame(r, vertices, &port, &mem);
+    if (status == STP_OK && use_mesh)
+        status = torus_mesh_build(&mesh, mesh_vertices, triangles, normals);
+    for (f = 0; f < frames && status == STP_OK; f++) {
+        status = use_mesh ? torus_enter_mesh(r, &mesh, scratch) : torus_enter(r, vertices);
+        if (status == STP_OK)
+            status = torus_render(r, &port, &mem);
+    }
     if (status != STP_OK) {
         fprintf(stderr, "torus_frame_host: %s\n", stp_status_text(status));
         return 1;
@@ -96,6 +114,10 @@ int main(int argc, char **argv)
         }
     }
     free(vertices);
+    free(mesh_vertices);
+    free(triangles);
+    free(normals);
+    free(scratch);
     free(df);
     free(rmem);
     free(pic.pixels);

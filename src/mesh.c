@@ -1,0 +1,544 @@
+/* SPDX-License-Identifier: MIT */
+/* Indexed triangle meshes entered in one call: see include/stipple/mesh.h.
+ * Per call: the composite normal rotation, the eye in model coordinates
+ * and a scale for the back-face test; per front face: its three vertices
+ * transformed, outcoded and projected once each (scratch), the prepared
+ * normal rotated into view coordinates, one shade. */
+#include "stipple/mesh.h"
+
+#include "render_private.h"
+#include "shade_private.h"
+#include "clip_private.h"
+#include "view_private.h"
+
+#define F STP_FIX_FRAC_BITS
+#define ONE STP_FIX_ONE
+
+/* stp_mesh_vertex.state: -1 not transformed in this call; else the outcode
+ * (bits 0..4, clip.c) or CODE_RANGE, plus PROJECTED once dx, dy, dz hold
+ * the device position. */
+#define STATE_NEW (-1)
+#define CODE_RANGE 32
+#define PROJECTED 64
+
+/* What one call finds once for all its triangles. */
+typedef struct mesh_context {
+    stp_renderer *r;
+    const stp_mesh *mesh;
+    stp_mesh_vertex *scratch;
+    /* model normal to view normal: the view rotation times the model
+     * transform's rotation, Q15 (|entry| <= 2^15 plus rounding) */
+    int32_t rot[3][3];
+    /* the eye in model coordinates, floor-shifted right by `shift`, so
+     * that it and every shifted vertex are within 2^14 in magnitude */
+    int32_t eye[3];
+    int shift;
+    int inside; /* 1: every vertex is inside the view volume (no outcodes)
+                   and its view coordinates are below 2^29 in magnitude */
+} mesh_context;
+
+/* floor(v / 2^s) for any int32 v, 0 <= s <= 31 (>> of a negative value is
+ * implementation-defined in C). */
+static int32_t asr32(int32_t v, int s)
+{
+    return v >= 0 ? v >> s : -1 - ((-1 - v) >> s);
+}
+
+static uint32_t magnitude(int32_t v)
+{
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+}
+
+static int bit_length32(uint32_t v)
+{
+    int n = 0;
+    while (v != 0) {
+        v >>= 1;
+        n++;
+    }
+    return n;
+}
+
+/* ---- normals, once ---- */
+
+/* The unit outward normal of triangle v as Q1.14 in out[]; 0 for a zero
+ * normal.  The edge vectors (below 2^33) are cut to 30 bits together, so
+ * each cross-product term is below 2^61 and their difference below 2^62. */
+static int triangle_normal(stp_vec3 a, stp_vec3 b, stp_vec3 c, int16_t *out)
+{
+    int64_t e[6];
+    int64_t nx, ny, nz;
+    uint64_t spread = 0;
+    stp_unit3 u;
+    int i, bits;
+    e[0] = (int64_t)b.x - a.x;
+    e[1] = (int64_t)b.y - a.y;
+    e[2] = (int64_t)b.z - a.z;
+    e[3] = (int64_t)c.x - a.x;
+    e[4] = (int64_t)c.y - a.y;
+    e[5] = (int64_t)c.z - a.z;
+    for (i = 0; i < 6; i++)
+        spread |= (uint64_t)(e[i] < 0 ? -e[i] : e[i]);
+    bits = stp_bit_length64(spread) - 30;
+    if (bits > 0)
+        for (i = 0; i < 6; i++)
+            e[i] = stp_asr64(e[i], bits);
+    nx = e[1] * e[5] - e[2] * e[4];
+    ny = e[2] * e[3] - e[0] * e[5];
+    nz = e[0] * e[4] - e[1] * e[3];
+    if (stp_unit_from64(nx, ny, nz, &u) == 0)
+        return 0;
+    /* STP_UNIT (Q30) to Q14, rounded to nearest */
+    out[0] = (int16_t)stp_asr64((int64_t)u.x + ((int64_t)1 << 15), 16);
+    out[1] = (int16_t)stp_asr64((int64_t)u.y + ((int64_t)1 << 15), 16);
+    out[2] = (int16_t)stp_asr64((int64_t)u.z + ((int64_t)1 << 15), 16);
+    return 1;
+}
+
+int stp_mesh_prepare_normals(const stp_mesh *mesh, int16_t *normals, uint16_t *bad_triangle)
+{
+    uint16_t t;
+    if (mesh == 0 || normals == 0 ||
+        (mesh->triangle_count > 0 && (mesh->vertices == 0 || mesh->triangles == 0)))
+        return STP_ERR_ARG;
+    for (t = 0; t < mesh->triangle_count; t++) {
+        const uint16_t *k = &mesh->triangles[3 * (uint32_t)t];
+        if (k[0] >= mesh->vertex_count || k[1] >= mesh->vertex_count ||
+            k[2] >= mesh->vertex_count) {
+            if (bad_triangle)
+                *bad_triangle = t;
+            return STP_ERR_ARG;
+        }
+        if (!triangle_normal(mesh->vertices[k[0]], mesh->vertices[k[1]], mesh->vertices[k[2]],
+                             &normals[3 * (uint32_t)t])) {
+            if (bad_triangle)
+                *bad_triangle = t;
+            return STP_ERR_DEGENERATE;
+        }
+    }
+    return STP_OK;
+}
+
+/* ---- once per call ---- */
+
+/* Whether the fast path can enter this call's triangles: perspective,
+ * prepared normals, none of the states it does not reproduce. */
+static int fast_state(const stp_renderer *r, const stp_mesh *mesh)
+{
+    if (mesh->normals == 0 || r->projection != STP_PERSPECTIVE || r->colour ||
+        r->current_transmission != 0)
+        return 0;
+#if STP_WITH_TRANSPARENCY
+    if (r->t_max > 0 || r->t_min > 0)
+        return 0;
+#endif
+#if STP_WITH_SHADOWS
+    if (r->shadow_set != 0)
+        return 0;
+#endif
+    return 1;
+}
+
+/* The model transform's matrix m (identity when off), and whether it is a
+ * rotation times a uniform scale: columns of equal squared length and
+ * pairwise orthogonal, each within 1/1024 of the squared length (the
+ * rounding of composed stp_fix rotations), a positive determinant (a
+ * reflection turns the winding), a scale of at least 2^-6 (enough bits for
+ * the normals).  Tested on m cut to 14 significant bits (mq = m / 2^shift):
+ * products below 2^28, sums of three below 2^30, all in 32 bits. */
+static int similarity(const stp_renderer *r, int32_t m[3][3], int32_t mq[3][3])
+{
+    int32_t len[3], dot[3], cross[3], tol, det;
+    uint32_t big = 0;
+    int i, j, shift;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) {
+            m[i][j] = r->model_on ? r->model.m[i][j] : (i == j ? ONE : 0);
+            big |= magnitude(m[i][j]);
+        }
+    if (big < ((uint32_t)1 << (F - 6)) || big >= ((uint32_t)1 << 24))
+        return 0; /* scale below 2^-6 or 256 and more */
+    shift = bit_length32(big) - 14;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            mq[i][j] = shift > 0 ? asr32(m[i][j], shift) : m[i][j] * ((int32_t)1 << -shift);
+    for (j = 0; j < 3; j++)
+        len[j] = mq[0][j] * mq[0][j] + mq[1][j] * mq[1][j] + mq[2][j] * mq[2][j];
+    dot[0] = mq[0][0] * mq[0][1] + mq[1][0] * mq[1][1] + mq[2][0] * mq[2][1];
+    dot[1] = mq[0][0] * mq[0][2] + mq[1][0] * mq[1][2] + mq[2][0] * mq[2][2];
+    dot[2] = mq[0][1] * mq[0][2] + mq[1][1] * mq[1][2] + mq[2][1] * mq[2][2];
+    tol = len[0] >> 10;
+    for (j = 0; j < 3; j++) {
+        int32_t d = len[j] - len[0];
+        if (d > tol || -d > tol || dot[j] > tol || -dot[j] > tol)
+            return 0;
+    }
+    /* c1 x c2 (below 2^29) cut to 15 bits, dotted with c0 (below 2^14) */
+    cross[0] = asr32(mq[1][1] * mq[2][2] - mq[2][1] * mq[1][2], 14);
+    cross[1] = asr32(mq[2][1] * mq[0][2] - mq[0][1] * mq[2][2], 14);
+    cross[2] = asr32(mq[0][1] * mq[1][2] - mq[1][1] * mq[0][2], 14);
+    det = mq[0][0] * cross[0] + mq[1][0] * cross[1] + mq[2][0] * cross[2];
+    return det > 0;
+}
+
+/* Whether a view coordinate saturated (as render.c's test). */
+static int saturated(stp_vec3 p)
+{
+    return p.x >= STP_FIX_MAX || p.x <= STP_FIX_MIN || p.y >= STP_FIX_MAX || p.y <= STP_FIX_MIN ||
+           p.z >= STP_FIX_MAX || p.z <= STP_FIX_MIN;
+}
+
+/* Whether every point of the model box [lo, hi] lands strictly inside the
+ * view volume under the model and view transforms, with room for their
+ * rounding: the box grown by a margin worth 64 raw view units (64 / s
+ * model units, s the model's scale: s2 = s^2 2^(2F)) has its eight
+ * corners inside (outcode 0, nothing saturated) and their view
+ * coordinates below 2^28.  The volume is convex and the transforms affine,
+ * so then every vertex is inside too, its outcode (0) need not be formed,
+ * and its view coordinates are below 2^28 (plus the rounding): a sum of
+ * three fits int32. */
+static int box_inside(const stp_renderer *r, stp_vec3 lo, stp_vec3 hi, int64_t s2)
+{
+    uint32_t s = stp_sqrt64_fast((uint64_t)s2); /* s 2^F, >= 2^10 (similarity) */
+    int64_t margin = ((int64_t)64 << F) / (int64_t)(s > 0 ? s : 1) + 1;
+    int corner;
+    for (corner = 0; corner < 8; corner++) {
+        int64_t x = (corner & 1) ? (int64_t)hi.x + margin : (int64_t)lo.x - margin;
+        int64_t y = (corner & 2) ? (int64_t)hi.y + margin : (int64_t)lo.y - margin;
+        int64_t z = (corner & 4) ? (int64_t)hi.z + margin : (int64_t)lo.z - margin;
+        stp_vec3 p, view;
+        if (x <= STP_FIX_MIN || x >= STP_FIX_MAX || y <= STP_FIX_MIN || y >= STP_FIX_MAX ||
+            z <= STP_FIX_MIN || z >= STP_FIX_MAX)
+            return 0;
+        p.x = (stp_fix)x;
+        p.y = (stp_fix)y;
+        p.z = (stp_fix)z;
+        if (r->model_on) {
+            p = stp_transform_point(&r->model, p);
+            if (saturated(p))
+                return 0;
+        }
+        stp_view_transform_point(&r->to_view, p, &view);
+        if (saturated(view) || stp_clip_outcode(&r->clip_volume, view) != 0 ||
+            (magnitude(view.x) | magnitude(view.y) | magnitude(view.z)) >= ((uint32_t)1 << 28))
+            return 0;
+    }
+    return 1;
+}
+
+/* The per-call values of the fast path (mesh_context); 0 when the model
+ * transform or the eye's place rules it out. */
+static int prepare_call(mesh_context *c)
+{
+    const stp_renderer *r = c->r;
+    int32_t m[3][3], mq[3][3];
+    int64_t s2, d[3];
+    const stp_vec3 *axis[3];
+    uint32_t big = 0;
+    stp_vec3 lo, hi;
+    uint16_t v;
+    int i, j, k;
+    if (!similarity(r, m, mq))
+        return 0;
+    s2 = (int64_t)m[0][0] * m[0][0] + (int64_t)m[1][0] * m[1][0] + (int64_t)m[2][0] * m[2][0];
+    axis[0] = &r->right;
+    axis[1] = &r->up;
+    axis[2] = &r->forward;
+    /* rows of V M (V: the view axes as rows, Q15 here), normalised: each
+     * product below 2^15 2^14, the sums below 2^31 (|V_i| = 1,
+     * |mq column| < 2^14 sqrt 3) */
+    for (i = 0; i < 3; i++) {
+        int32_t row[3];
+        int32_t ax = asr32(axis[i]->x, 1), ay = asr32(axis[i]->y, 1), az = asr32(axis[i]->z, 1);
+        stp_unit3 u;
+        for (j = 0; j < 3; j++)
+            row[j] = ax * mq[0][j] + ay * mq[1][j] + az * mq[2][j];
+        if (stp_unit_from64(row[0], row[1], row[2], &u) == 0)
+            return 0;
+        /* Q30 to Q15, rounded */
+        c->rot[i][0] = (int32_t)stp_asr64((int64_t)u.x + ((int64_t)1 << 14), 15);
+        c->rot[i][1] = (int32_t)stp_asr64((int64_t)u.y + ((int64_t)1 << 14), 15);
+        c->rot[i][2] = (int32_t)stp_asr64((int64_t)u.z + ((int64_t)1 << 14), 15);
+    }
+    /* eye in model coordinates: M^-1 (from - t) = M^T (from - t) / s^2 */
+    d[0] = (int64_t)r->from.x - (r->model_on ? r->model.t.x : 0);
+    d[1] = (int64_t)r->from.y - (r->model_on ? r->model.t.y : 0);
+    d[2] = (int64_t)r->from.z - (r->model_on ? r->model.t.z : 0);
+    for (j = 0; j < 3; j++) {
+        int64_t sum = m[0][j] * d[0] + m[1][j] * d[1] + m[2][j] * d[2], e;
+        if (sum >= ((int64_t)1 << 46) || sum <= -((int64_t)1 << 46))
+            return 0;
+        e = (sum * ONE) / s2; /* |sum| < 2^46: the product fits */
+        if (e >= ((int64_t)1 << 30) || e <= -((int64_t)1 << 30))
+            return 0;
+        c->eye[j] = (int32_t)e;
+        big |= magnitude(c->eye[j]);
+    }
+    /* the scale of the back-face test (every coordinate below 2^14) and
+     * the model's bounding box */
+    lo = hi = c->mesh->vertices[0];
+    for (v = 0; v < c->mesh->vertex_count; v++) {
+        const stp_vec3 *p = &c->mesh->vertices[v];
+        lo.x = p->x < lo.x ? p->x : lo.x;
+        lo.y = p->y < lo.y ? p->y : lo.y;
+        lo.z = p->z < lo.z ? p->z : lo.z;
+        hi.x = p->x > hi.x ? p->x : hi.x;
+        hi.y = p->y > hi.y ? p->y : hi.y;
+        hi.z = p->z > hi.z ? p->z : hi.z;
+    }
+    /* the box's corners bound every coordinate's magnitude */
+    big |= magnitude(lo.x) | magnitude(lo.y) | magnitude(lo.z) | magnitude(hi.x) |
+           magnitude(hi.y) | magnitude(hi.z);
+    c->inside = box_inside(r, lo, hi, s2);
+    k = bit_length32(big) - 14;
+    c->shift = k > 0 ? k : 0;
+    for (j = 0; j < 3; j++)
+        c->eye[j] = asr32(c->eye[j], c->shift);
+    return 1;
+}
+
+/* ---- per vertex and per face ---- */
+
+/* Vertex i (not transformed yet) in view coordinates with its outcode (or
+ * CODE_RANGE): the same transforms as stp_renderer_polygon's. */
+static void vertex_transform(mesh_context *c, uint16_t i)
+{
+    stp_mesh_vertex *s = &c->scratch[i];
+    const stp_renderer *r = c->r;
+    stp_vec3 p = c->mesh->vertices[i];
+    int range = 0;
+    if (r->model_on) {
+        p = stp_transform_point(&r->model, p);
+        range = saturated(p);
+    }
+    stp_view_transform_point(&r->to_view, p, &s->view);
+    if (c->inside)
+        s->state = 0; /* box_inside: no vertex is outside or saturated */
+    else
+        s->state = range || saturated(s->view) ? CODE_RANGE
+                                               : (int32_t)stp_clip_outcode(&r->clip_volume, s->view);
+}
+
+/* Vertex i's outcode (or CODE_RANGE), transformed once per call; the
+ * common case, a vertex an earlier face transformed, stays inline. */
+static inline int32_t vertex_code(mesh_context *c, uint16_t i)
+{
+    stp_mesh_vertex *s = &c->scratch[i];
+    if (s->state == STATE_NEW)
+        vertex_transform(c, i);
+    return s->state & (CODE_RANGE | 31);
+}
+
+/* Vertex i's device position, projected once per call (it is inside the
+ * view volume: its outcode is 0). */
+static void vertex_project(mesh_context *c, uint16_t i)
+{
+    stp_mesh_vertex *s = &c->scratch[i];
+    if ((s->state & PROJECTED) == 0) {
+        stp_instr out;
+        stp_render_project(c->r, s->view, &out);
+        s->dx = out.x;
+        s->dy = out.y;
+        s->dz = out.z;
+        s->state |= PROJECTED;
+    }
+}
+
+/* The shade of a face from its unit normal (Q1.14, view coordinates,
+ * turned to the eye) and its vertex average (view coordinates): the seed's
+ * shading as stp_renderer_polygon's SHADE-CHECK does it. */
+static stp_fix shade_face(const mesh_context *c, const int16_t normal[3], stp_vec3 centre)
+{
+    stp_unit3 n, eye;
+    int32_t n_dot_e = 0;
+    n.x = (int32_t)normal[0] * 65536; /* Q14 to STP_UNIT (Q30) */
+    n.y = (int32_t)normal[1] * 65536;
+    n.z = (int32_t)normal[2] * 65536;
+    if (stp_unit_from64(-(int64_t)centre.x, -(int64_t)centre.y, -(int64_t)centre.z, &eye) == 0) {
+        eye.x = eye.y = 0; /* centre at the eye: no light reaches the eye */
+        eye.z = -STP_UNIT_ONE;
+    } else {
+        n_dot_e = stp_unit_dot(n, eye);
+        if (n_dot_e < 0)
+            n_dot_e = 0;
+    }
+    return stp_shade_unit(&c->r->segment_lighting, &c->r->material, n, centre, eye, n_dot_e);
+}
+
+/* The vertex average, truncated toward zero as render.c's Newell step
+ * forms it (the same quotients); small: each value below 2^28 in
+ * magnitude (box_inside), so the sum fits int32. */
+static stp_fix average3(int small, int32_t a, int32_t b, int32_t c)
+{
+    int64_t s;
+    if (small)
+        return (stp_fix)stp_div3_toward_zero(a + b + c);
+    s = (int64_t)a + b + c;
+    if (s >= INT32_MIN && s <= INT32_MAX)
+        return (stp_fix)stp_div3_toward_zero((int32_t)s);
+    return (stp_fix)(s / 3);
+}
+
+/* Triangle t through stp_renderer_polygon (mesh.h: the fallback). */
+static int enter_fallback(const mesh_context *c, uint16_t t)
+{
+#if STP_WITH_MESH_FALLBACK
+    const uint16_t *k = &c->mesh->triangles[3 * (uint32_t)t];
+    stp_vec3 v[3];
+    v[0] = c->mesh->vertices[k[0]];
+    v[1] = c->mesh->vertices[k[1]];
+    v[2] = c->mesh->vertices[k[2]];
+    return stp_renderer_polygon(c->r, v, 3);
+#else
+    (void)c;
+    (void)t;
+    return STP_ERR_UNSUPPORTED;
+#endif
+}
+
+/* The display-file records of a front face inside the view: SHADE when
+ * the style changed, then its three projected vertices. */
+static int store_face(mesh_context *c, const uint16_t *k, int style)
+{
+    stp_renderer *r = c->r;
+    int change = style != r->current_style || r->current_colour != 0, i;
+    stp_instr *out;
+    if (r->capacity - r->used < 3u + (change ? 1u : 0u))
+        return STP_ERR_FULL;
+    for (i = 0; i < 3; i++)
+        vertex_project(c, k[i]);
+    out = &r->df[r->used];
+    if (change) {
+        out->op = STP_OP_SHADE;
+        out->x = style;
+        out->y = r->last_shade;
+        out->z = 0;
+#if STP_WITH_GOURAUD
+        out->shade = -1;
+#endif
+        out++;
+        r->current_style = style;
+        r->current_colour = 0;
+    }
+    for (i = 0; i < 3; i++, out++) {
+        const stp_mesh_vertex *s = &c->scratch[k[i]];
+        out->op = i == 0 ? 3 : STP_OP_LINE;
+        out->x = s->dx;
+        out->y = s->dy;
+        out->z = s->dz;
+#if STP_WITH_GOURAUD
+        out->shade = -1;
+#endif
+    }
+    r->used = (uint32_t)(out - r->df);
+    r->segments[r->open_segment].end = r->used;
+    return STP_OK;
+}
+
+/* Triangle t on the fast path. */
+static int enter_face(mesh_context *c, uint16_t t)
+{
+    stp_renderer *r = c->r;
+    const uint16_t *k = &c->mesh->triangles[3 * (uint32_t)t];
+    const int16_t *n = &c->mesh->normals[3 * (uint32_t)t];
+    const stp_vec3 *a = &c->mesh->vertices[k[0]];
+    const stp_vec3 *v[3];
+    int16_t nv[3];
+    int32_t side, all, any;
+    stp_vec3 centre;
+    int i, style;
+    /* N.(eye - v0) in model coordinates: products below 2^29, the sum
+     * below 2^30 (|N| <= 1, |eye - v0| < 2^15 sqrt 3) */
+    side = (int32_t)n[0] * (c->eye[0] - asr32(a->x, c->shift)) +
+           (int32_t)n[1] * (c->eye[1] - asr32(a->y, c->shift)) +
+           (int32_t)n[2] * (c->eye[2] - asr32(a->z, c->shift));
+    r->last_shade = -1;
+    if (side <= 0 && r->backface_removal)
+        return STP_OK; /* a back face (or edge-on): removed */
+    if (side == 0)
+        return enter_fallback(c, t); /* edge-on, shown: the general path decides */
+    all = vertex_code(c, k[0]);
+    any = all;
+    for (i = 1; i < 3; i++) {
+        int32_t code = vertex_code(c, k[i]);
+        all &= code;
+        any |= code;
+    }
+    if (any & CODE_RANGE)
+        return STP_ERR_RANGE;
+    if (all != 0)
+        return STP_OK; /* wholly outside one plane */
+    if (any != 0)
+        return enter_fallback(c, t); /* crosses a plane: to be clipped */
+    for (i = 0; i < 3; i++) {
+        int32_t s = c->rot[i][0] * n[0] + c->rot[i][1] * n[1] + c->rot[i][2] * n[2];
+        /* Q15 x Q14, below 2^29 (1 + rounding): to Q14, rounded; the back
+         * side of an open surface shows its other side */
+        s = asr32(s + ((int32_t)1 << 14), 15);
+        nv[i] = (int16_t)(side > 0 ? s : -s);
+    }
+    for (i = 0; i < 3; i++)
+        v[i] = &c->scratch[k[i]].view;
+    centre.x = average3(c->inside, v[0]->x, v[1]->x, v[2]->x);
+    centre.y = average3(c->inside, v[0]->y, v[1]->y, v[2]->y);
+    centre.z = average3(c->inside, v[0]->z, v[1]->z, v[2]->z);
+    if (r->shading) {
+        r->last_shade = shade_face(c, nv, centre);
+        style = stp_intensity_index(r->last_shade, r->levels);
+    } else {
+        style = r->fill_style;
+        r->last_shade = stp_intensity_shade(style, r->levels);
+    }
+    return store_face(c, k, style);
+}
+
+/* The arguments and every index, before anything is entered. */
+static int check_mesh(const stp_renderer *r, const stp_mesh *mesh, const stp_mesh_vertex *scratch,
+                      size_t scratch_count)
+{
+    uint32_t i, n;
+    if (r == 0 || mesh == 0 || scratch == 0 || scratch_count < mesh->vertex_count)
+        return STP_ERR_ARG;
+    if (mesh->triangle_count == 0)
+        return STP_OK;
+    if (mesh->vertices == 0 || mesh->triangles == 0)
+        return STP_ERR_ARG;
+    n = 3 * (uint32_t)mesh->triangle_count;
+    for (i = 0; i < n; i += 3) {
+        const uint16_t *k = &mesh->triangles[i];
+        if (k[0] >= mesh->vertex_count || k[1] >= mesh->vertex_count ||
+            k[2] >= mesh->vertex_count)
+            return STP_ERR_ARG;
+    }
+    return STP_OK;
+}
+
+int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *scratch,
+                      size_t scratch_count)
+{
+    mesh_context c;
+    uint16_t t, v;
+    int status = check_mesh(r, mesh, scratch, scratch_count), fast;
+    if (status != STP_OK)
+        return status;
+    if (mesh->triangle_count == 0)
+        return STP_OK;
+    if ((status = stp_render_check_open(r)) != STP_OK)
+        return status;
+    c.r = r;
+    c.mesh = mesh;
+    c.scratch = scratch;
+    fast = fast_state(r, mesh) && prepare_call(&c);
+#if !STP_WITH_MESH_FALLBACK
+    if (!fast)
+        return STP_ERR_UNSUPPORTED;
+#endif
+    for (v = 0; v < mesh->vertex_count; v++)
+        scratch[v].state = STATE_NEW;
+    for (t = 0; t < mesh->triangle_count; t++) {
+        status = fast ? enter_face(&c, t) : enter_fallback(&c, t);
+        if (status != STP_OK)
+            return status;
+    }
+    return STP_OK;
+}
