@@ -75,6 +75,24 @@ static int64_t mul_wide(int64_t a, int32_t b)
 }
 #endif
 
+#if STP_WITH_TRIANGLE_PATH
+/* |g| extent < 2^29 (extent >= 0): a depth gradient g (Q12 per subpixel)
+ * over a triangle's extent in x or y, so each term of dc + ddx (x - xc) +
+ * ddy (y - yc) at its pixel centres (x and xc within the vertices' x
+ * extent, y and yc within their y extent) is below 2^29 and the sum, with
+ * dc < 2^28 + 2^12, fits int32. */
+static int depth_term_short(int64_t g, int32_t extent)
+{
+    uint32_t m, hi;
+    if (g <= -((int64_t)1 << 29) || g >= ((int64_t)1 << 29) || extent >= ((int32_t)1 << 14))
+        return 0;
+    m = (uint32_t)(g < 0 ? -g : g);
+    /* m extent = hi 2^15 + (m mod 2^15) extent, hi = (m >> 15) extent < 2^28 */
+    hi = (m >> 15) * (uint32_t)extent;
+    return hi < (1u << 14) && (hi << 15) + (m & 0x7FFFu) * (uint32_t)extent < ((uint32_t)1 << 29);
+}
+#endif
+
 /* floor(s / n) for n >= 1: n = 3 and 4 without a division */
 static uint32_t div_count(uint32_t s, uint32_t n)
 {
@@ -129,6 +147,7 @@ typedef struct frame {
                                  a transparent polygon or a line (lines are
                                  drawn again over the opaque polygons) */
     stp_polygon_setup *setup; /* the caller's per-polygon depth setups, or NULL */
+    uint32_t key_range;       /* key_max - key_min, when positive */
     uint32_t depth_scale;     /* depth_q12's reciprocal and its shift */
     int depth_shift;
 #if KEY_CACHE > 0
@@ -655,14 +674,35 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
 /* Depth key mapped to the Z buffer's 1..65535 with 12 fractional bits:
  * 2^12 + floor(u 65534 2^12 / range), u = key - key_min <= range < 2^32.
  * Without wide arithmetic the quotient comes from the frame's reciprocal:
- * depth_scale = floor(65534 2^12 2^s / range) < 2^29 with 2^s >= range
- * (s = depth_shift), so u depth_scale / 2^s is less than one short of the
+ * depth_scale = floor(65534 2^12 2^s / range) < 2^29 with 2^s > range (s =
+ * depth_shift), so u depth_scale / 2^s is less than one short of the
  * quotient and one correction makes it exact. */
-static int32_t depth_q12(frame *fr, int32_t key)
+static uint32_t key_quotient(const frame *fr, uint32_t u)
 {
     const uint32_t k = (uint32_t)65534 << 12;
-    uint32_t range = (uint32_t)((int64_t)fr->key_max - fr->key_min), u;
-    uint64_t num, q;
+#if STP_WIDE_ARITH
+    return (uint32_t)(stp_umul32(u, k) / fr->key_range);
+#else
+    uint32_t q;
+    if (fr->depth_shift < 32) {
+        /* u < 2^s: u 2^(32 - s) < 2^32, and its high product word is the
+         * estimate; the remainder u k - q range is in [0, 2 range), below
+         * 2^32 (range < 2^31 here), so its 32-bit wrap is exact */
+        q = stp_umulhi32(u << (32 - fr->depth_shift), fr->depth_scale);
+        if (u * k - q * fr->key_range >= fr->key_range)
+            q++;
+    } else {
+        uint64_t num = stp_umul32(u, k);
+        q = (uint32_t)(stp_umul32(u, fr->depth_scale) >> fr->depth_shift);
+        if (stp_umul32(q + 1u, fr->key_range) <= num)
+            q++;
+    }
+    return q;
+#endif
+}
+
+static int32_t depth_q12(frame *fr, int32_t key)
+{
     if (fr->key_max <= fr->key_min)
         return (int32_t)65535 << 12;
 #if KEY_CACHE > 0
@@ -670,26 +710,14 @@ static int32_t depth_q12(frame *fr, int32_t key)
         uint32_t slot = ((uint32_t)key ^ ((uint32_t)key >> 8)) & (KEY_CACHE - 1);
         if (fr->cached_q12[slot] != 0 && fr->cached_key[slot] == key)
             return fr->cached_q12[slot];
-        u = (uint32_t)((int64_t)key - fr->key_min); /* 0..range */
-        num = stp_umul32(u, k);
-        q = stp_umul32(u, fr->depth_scale) >> fr->depth_shift;
-        if (stp_umul32((uint32_t)q + 1u, range) <= num)
-            q++;
         fr->cached_key[slot] = key;
-        fr->cached_q12[slot] = (int32_t)q + (1 << 12); /* < 2^28 + 2^12 */
-        return fr->cached_q12[slot];
+        /* u = key - key_min in 0..range, modulo 2^32 */
+        fr->cached_q12[slot] = (int32_t)key_quotient(fr, (uint32_t)key - (uint32_t)fr->key_min) + (1 << 12);
+        return fr->cached_q12[slot]; /* < 2^28 + 2^12 */
     }
 #else
-    u = (uint32_t)((int64_t)key - fr->key_min); /* 0..range */
-    num = stp_umul32(u, k);
-#if STP_WIDE_ARITH
-    q = num / range;
-#else
-    q = stp_umul32(u, fr->depth_scale) >> fr->depth_shift;
-    if (stp_umul32((uint32_t)q + 1u, range) <= num)
-        q++;
-#endif
-    return (int32_t)(1 << 12) + (int32_t)q; /* q <= 65534 2^12: below 2^28 */
+    /* the quotient is at most 65534 2^12: below 2^28 */
+    return (int32_t)(1 << 12) + (int32_t)key_quotient(fr, (uint32_t)key - (uint32_t)fr->key_min);
 #endif
 }
 
@@ -724,24 +752,56 @@ static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, 
     pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : STP_DIV64(sd, n);
 }
 
+/* trunc(-g 4096 / c) for |g| < 2^19 and c != 0 (a small triangle's
+ * gradient, depth_plane_from_sums's quotient): a 32-bit division of the
+ * magnitudes, |g| 4096 < 2^31, so the quotient fits int32 */
+static int32_t gradient_short(int32_t g, int32_t c)
+{
+    uint32_t ug = g < 0 ? 0u - (uint32_t)g : (uint32_t)g, uc = c < 0 ? 0u - (uint32_t)c : (uint32_t)c;
+    uint32_t q = (ug << 12) / uc;
+    return (g > 0) == (c > 0) ? -(int32_t)q : (int32_t)q; /* -g and c of opposite signs: negative */
+}
+
 /* A triangle's plane: its Newell sums are its cross product, exactly
  * (relative coordinates below 2^20, depths below 2^16); its three Q12
- * depths (below 2^28) sum below 2^30. */
+ * depths (below 2^28) sum below 2^30.  A small triangle (relative x below
+ * 2^14, y below 2^13: products below 2^30, so the sums fit int32, and
+ * |a|, |b| < 2^19) in 32 bits: no clamp (|a|, |b| < 2^28), the same
+ * values. */
 static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
 {
     int32_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z), d2 = depth_q12(fr, v[2].z);
     int32_t x1 = v[1].x - v[0].x, y1 = v[1].y - v[0].y, x2 = v[2].x - v[0].x, y2 = v[2].y - v[0].y;
     int32_t e1 = (d1 >> 12) - (d0 >> 12), e2 = (d2 >> 12) - (d0 >> 12);
-    int64_t c = stp_smul32(x1, y2) - stp_smul32(y1, x2);
+    uint32_t sx = (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x,
+             sy = (uint32_t)v[0].y + (uint32_t)v[1].y + (uint32_t)v[2].y,
+             sd = (uint32_t)d0 + (uint32_t)d1 + (uint32_t)d2;
+    const int32_t xs = (int32_t)1 << 14, ys = (int32_t)1 << 13, gs = (int32_t)1 << 19;
+    int64_t a, b, c;
+    if (x1 > -xs && x1 < xs && x2 > -xs && x2 < xs && y1 > -ys && y1 < ys && y2 > -ys && y2 < ys) {
+        int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
+        if (c32 != 0 && a32 > -gs && a32 < gs && b32 > -gs && b32 < gs) {
+            pl->ddx = gradient_short(a32, c32);
+            pl->ddy = gradient_short(b32, c32);
+            pl->xc = (int32_t)stp_div3_u30(sx); /* coordinates below 2^20 */
+            pl->yc = (int32_t)stp_div3_u30(sy);
+            pl->dc = stp_div3_u30(sd);
+            return 1;
+        }
+        a = a32;
+        b = b32;
+        c = c32;
+    } else {
+        a = stp_smul32(y1, e2) - stp_smul32(e1, y2);
+        b = stp_smul32(e1, x2) - stp_smul32(x1, e2);
+        c = stp_smul32(x1, y2) - stp_smul32(y1, x2);
+    }
     if (c == 0) {
         pl->ddx = pl->ddy = pl->dc = 0;
         pl->xc = pl->yc = 0;
         return 0;
     }
-    depth_plane_from_sums(pl, stp_smul32(y1, e2) - stp_smul32(e1, y2), stp_smul32(e1, x2) - stp_smul32(x1, e2), c,
-                          (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x,
-                          (uint32_t)v[0].y + (uint32_t)v[1].y + (uint32_t)v[2].y,
-                          (int64_t)((uint32_t)d0 + (uint32_t)d1 + (uint32_t)d2), 3);
+    depth_plane_from_sums(pl, a, b, c, sx, sy, (int64_t)sd, 3);
     return 1;
 }
 
@@ -859,7 +919,7 @@ static int polygon_smooth(const stp_instr *header)
 typedef int64_t tri_acc;
 #define TRIANGLE_NARROW(v) 1
 #else
-typedef int32_t tri_acc;
+typedef uint32_t tri_acc; /* the accumulator modulo 2^32 (two's complement) */
 #define TRIANGLE_NARROW(v) ((((uint32_t)(v)[0].x | (uint32_t)(v)[1].x | (uint32_t)(v)[2].x) >> 14) == 0)
 #endif
 typedef struct tri_edge {
@@ -868,28 +928,30 @@ typedef struct tri_edge {
 
 static void tri_edge_start(tri_edge *e, const stp_instr *a, const stp_instr *b, int32_t yc)
 {
-    int64_t slope = stp_slope_q16(b->x - a->x, b->y - a->y);
-    int64_t acc = (int64_t)a->x * 65536 + (slope >= INT32_MIN && slope <= INT32_MAX
-                                               ? stp_smul32(yc - a->y, (int32_t)slope)
-                                               : (int64_t)(yc - a->y) * slope);
 #if STP_WIDE_ARITH
-    e->acc = acc;
+    int64_t slope = stp_slope_q16(b->x - a->x, b->y - a->y);
+    e->acc = (int64_t)a->x * 65536 + (slope >= INT32_MIN && slope <= INT32_MAX
+                                          ? stp_smul32(yc - a->y, (int32_t)slope)
+                                          : (int64_t)(yc - a->y) * slope);
     e->step = slope * 16;
 #else
-    const int64_t big = (int64_t)1 << 27;
-    e->acc = (int32_t)acc;
-    e->step = slope > -big && slope < big ? (int32_t)slope * 16 : 0;
+    /* |xb - xa| < 2^14: the slope fits 32 bits (|slope| <= 2^30), and the
+     * accumulator's value lies within int32 (above), so its sum taken
+     * modulo 2^32 in unsigned arithmetic is its value's two's complement */
+    int32_t slope = stp_slope_q16_short(b->x - a->x, b->y - a->y);
+    e->acc = (uint32_t)a->x * 65536u + (uint32_t)(yc - a->y) * (uint32_t)slope;
+    e->step = slope > -((int32_t)1 << 27) && slope < ((int32_t)1 << 27) ? (uint32_t)slope * 16u : 0u;
 #endif
 }
 
-/* floor(acc / 2^16) of an edge accumulator (narrow: without shifting a
- * negative value, implementation-defined in C99) */
+/* floor(acc / 2^16) of an edge accumulator (narrow: the value of its two's
+ * complement, biased by 2^31 so nothing negative is shifted) */
 static int32_t tri_edge_x(tri_acc acc)
 {
 #if STP_WIDE_ARITH
     return (int32_t)stp_asr64(acc, 16);
 #else
-    return (int32_t)(((uint32_t)acc + 0x80000000u) >> 16) - (int32_t)0x8000;
+    return (int32_t)((acc + 0x80000000u) >> 16) - (int32_t)0x8000;
 #endif
 }
 
@@ -910,6 +972,7 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
 #if STP_WITH_ZBUFFER
     depth_plane pl; /* field by field: ARMv6-M's GCC clears a whole struct by memset */
     int64_t d_row = 0;
+    int short_depth = 0; /* depths in 32 bits (depth_term_short) */
     pl.ddx = pl.ddy = pl.dc = 0;
     pl.xc = pl.yc = 0;
 #endif
@@ -965,10 +1028,17 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
             if (!ready) {
 #if STP_WITH_ZBUFFER
                 if (use_z) {
+                    int32_t x_lo = v[0].x, x_hi = v[0].x;
                     if (!depth_plane_for(fr, v, 3, ordinal, top->y, &pl))
                         return; /* edge-on: no area on screen */
-                    /* the depth at device x = 0 of this row's centre */
-                    d_row = pl.dc - mul_wide(pl.ddx, pl.xc) + mul_wide(pl.ddy, yc - pl.yc);
+                    x_lo = v[1].x < x_lo ? v[1].x : x_lo;
+                    x_hi = v[1].x > x_hi ? v[1].x : x_hi;
+                    x_lo = v[2].x < x_lo ? v[2].x : x_lo;
+                    x_hi = v[2].x > x_hi ? v[2].x : x_hi;
+                    short_depth = depth_term_short(pl.ddx, x_hi - x_lo) && depth_term_short(pl.ddy, bot->y - top->y);
+                    /* else the depth at device x = 0 of this row's centre */
+                    if (!short_depth)
+                        d_row = pl.dc - mul_wide(pl.ddx, pl.xc) + mul_wide(pl.ddy, yc - pl.yc);
                 }
 #endif
                 direct = paint_setup(fr, at, style, 0, t);
@@ -976,7 +1046,22 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
                 ready = 1;
             }
 #if STP_WITH_ZBUFFER
-            if (use_z) {
+            if (use_z && short_depth) {
+                /* dc + ddx (x - xc) + ddy (y - yc) at the span's first and
+                 * last pixel centres, each term below 2^29 */
+                int32_t dx = (int32_t)pl.ddx, d_y = (int32_t)pl.dc + (int32_t)pl.ddy * (yc - pl.yc);
+                int32_t d = d_y + dx * ((int32_t)(p1 << SUB) + HALF_PIXEL - pl.xc);
+                int32_t d_end = d_y + dx * ((int32_t)(p2 << SUB) + HALF_PIXEL - pl.xc);
+                const uint32_t depths = (uint32_t)(DEPTH_Q12_END - DEPTH_Q12_MIN);
+                if (direct && (uint32_t)(d - (int32_t)DEPTH_Q12_MIN) < depths &&
+                    (uint32_t)(d_end - (int32_t)DEPTH_Q12_MIN) < depths)
+                    /* two pixel centres 16 apart lie within the x extent:
+                     * 16 |ddx| < 2^29 */
+                    span_z_direct(z_row(fr, (uint32_t)row), band_row(fr, (uint32_t)row), pattern_of_row(fr, (uint32_t)row),
+                                  p1, p2, d, p2 > p1 ? dx * 16 : 0);
+                else
+                    put_span_z(fr, (uint32_t)row, p1, p2, style, d, pl.ddx * (1 << SUB), 0, 0, 0, t, direct);
+            } else if (use_z) {
                 int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
                 int64_t d = d_row + mul_wide(pl.ddx, xq);
                 int64_t ddx = pl.ddx * (1 << SUB), d_end = d + mul_wide(ddx, (int32_t)(p2 - p1));
@@ -1001,7 +1086,8 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
         else
             sht.acc += sht.step;
 #if STP_WITH_ZBUFFER
-        d_row += pl.ddy * (1 << SUB);
+        if (!short_depth)
+            d_row += pl.ddy * (1 << SUB);
 #endif
     }
 }
@@ -1444,13 +1530,16 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
         fr.setup = mem->setup;
     }
 #endif
+    fr.key_range = 0;
     fr.depth_scale = 0;
     fr.depth_shift = 0;
     if (fr.key_max > fr.key_min) {
-        uint64_t range = (uint64_t)((int64_t)fr.key_max - fr.key_min);
-        while (((uint64_t)1 << fr.depth_shift) < range)
+        fr.key_range = (uint32_t)fr.key_max - (uint32_t)fr.key_min;
+#if !STP_WIDE_ARITH
+        while (((uint64_t)1 << fr.depth_shift) <= fr.key_range)
             fr.depth_shift++;
-        fr.depth_scale = (uint32_t)STP_DIV64(((uint64_t)65534 << 12) << fr.depth_shift, range);
+        fr.depth_scale = (uint32_t)STP_DIV64(((uint64_t)65534 << 12) << fr.depth_shift, fr.key_range);
+#endif
     }
 #if KEY_CACHE > 0
     for (y0 = 0; y0 < KEY_CACHE; y0++)
