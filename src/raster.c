@@ -84,9 +84,10 @@ static int64_t mul_wide(int64_t a, int32_t b)
 static int depth_term_short(int64_t g, int32_t extent)
 {
     uint32_t m, hi;
-    if (g <= -((int64_t)1 << 29) || g >= ((int64_t)1 << 29) || extent >= ((int32_t)1 << 14))
+    /* g + 2^29 in [1, 2^30): |g| < 2^29 */
+    if (((uint64_t)g + ((uint64_t)1 << 29)) - 1u >= ((uint64_t)1 << 30) - 1u || extent >= ((int32_t)1 << 14))
         return 0;
-    m = (uint32_t)(g < 0 ? -g : g);
+    m = g < 0 ? 0u - (uint32_t)g : (uint32_t)g;
     /* m extent = hi 2^15 + (m mod 2^15) extent, hi = (m >> 15) extent < 2^28 */
     hi = (m >> 15) * (uint32_t)extent;
     return hi < (1u << 14) && (hi << 15) + (m & 0x7FFFu) * (uint32_t)extent < ((uint32_t)1 << 29);
@@ -131,32 +132,20 @@ size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
  * STP_COLOUR_FLAG, a colour; 32 bits wide because the flag is bit 24. */
 typedef int32_t paint;
 
+/* The fields a triangle reads come first: ARMv6-M loads a word at an
+ * offset below 128 bytes in one instruction, farther ones in three. */
 typedef struct frame {
     stp_renderer *r;
-    const stp_port *port;
-    const stp_output *out;
-    const stp_cell *cell;
-    stp_cell default_cell;
-    size_t stride;
     uint8_t *band;
     uint16_t *zbuf;
+    size_t stride;
     uint32_t y0, rows; /* current band */
     int32_t band_top, band_end; /* its rows' extent in subpixels: y0 2^SUB, (y0 + rows) 2^SUB */
-    int32_t key_min, key_max; /* depth-key range of the visible polygons */
-    int second_pass;          /* the Z buffer's second pass draws something:
-                                 a transparent polygon or a line (lines are
-                                 drawn again over the opaque polygons) */
     stp_polygon_setup *setup; /* the caller's per-polygon depth setups, or NULL */
+    int32_t key_min, key_max; /* depth-key range of the visible polygons */
     uint32_t key_range;       /* key_max - key_min, when positive */
     uint32_t depth_scale;     /* depth_q12's reciprocal and its shift */
     int depth_shift;
-#if KEY_CACHE > 0
-    /* depth_q12's recent results, slot by the key's low bits: a mesh's
-     * vertex comes again in the next triangles; q12 0: empty */
-    int32_t cached_key[KEY_CACHE], cached_q12[KEY_CACHE];
-#endif
-    /* pixels any visible polygon can cover (x_min > x_max: none) */
-    uint32_t x_min, x_max, y_min, y_max;
     /* MONO1 spans from pattern bytes: a threshold cell whose width divides
      * 8 (mono_fill); cell_mask its height - 1 when a power of two, else 0;
      * patterns[] the byte of each cell row for style pattern_style (-1:
@@ -165,7 +154,19 @@ typedef struct frame {
     int pattern_port; /* mono_fill on a MONO1 port (not drawn grey): spans may come from patterns[] */
     uint32_t cell_mask;
     paint pattern_style;
+    const stp_cell *cell;
+    const stp_port *port;
+    const stp_output *out;
+#if STP_WITH_SHADOWS
+    stp_shadow_poly *shadow; /* the polygon being drawn's shadow records;
+                                NULL when no light has a map */
+#endif
     uint8_t patterns[STP_CELL_MAX];
+    int second_pass;          /* the Z buffer's second pass draws something:
+                                 a transparent polygon or a line (lines are
+                                 drawn again over the opaque polygons) */
+    /* pixels any visible polygon can cover (x_min > x_max: none) */
+    uint32_t x_min, x_max, y_min, y_max;
 #if STP_PATTERN_CACHE > 0
     /* the pattern rows of recent styles (cells up to 4 rows high), slot
      * style mod STP_PATTERN_CACHE: a depth-ordered frame alternates styles
@@ -173,13 +174,15 @@ typedef struct frame {
     paint cached_style[STP_PATTERN_CACHE];
     uint8_t cached_rows[STP_PATTERN_CACHE][4]; /* the byte of each cell row */
 #endif
-#if STP_WITH_SHADOWS
-    stp_shadow_poly *shadow; /* the polygon being drawn's shadow records;
-                                NULL when no light has a map */
+#if KEY_CACHE > 0
+    /* depth_q12's recent results, slot by the key's low bits: a mesh's
+     * vertex comes again in the next triangles; q12 0: empty */
+    int32_t cached_key[KEY_CACHE], cached_q12[KEY_CACHE];
 #endif
 #if STP_WITH_EDGE_AA
     stp_edge_aa aa; /* edge anti-aliasing (edge_aa.c); aa.out NULL: off */
 #endif
+    stp_cell default_cell;
 } frame;
 
 
@@ -944,16 +947,53 @@ static void tri_edge_start(tri_edge *e, const stp_instr *a, const stp_instr *b, 
 #endif
 }
 
-/* floor(acc / 2^16) of an edge accumulator (narrow: the value of its two's
- * complement, biased by 2^31 so nothing negative is shifted) */
+/* floor(acc / 2^16) of an edge accumulator at a row centre the edge
+ * crosses: 2^16 times a point between xa and the edge's exact crossing
+ * (the slope is truncated toward zero), so 0 <= acc < 2^30 (device x are
+ * >= 0) and, narrow, its 32 bits are its value */
 static int32_t tri_edge_x(tri_acc acc)
 {
-#if STP_WIDE_ARITH
-    return (int32_t)stp_asr64(acc, 16);
-#else
-    return (int32_t)((acc + 0x80000000u) >> 16) - (int32_t)0x8000;
-#endif
+    return (int32_t)(acc >> 16);
 }
+
+/* The pixels [*p1, *p2] of 0..width-1 whose centres c satisfy xl <= c <
+ * xr (stp_span_pixels) for crossings xl, xr >= 0: a triangle's, within its
+ * vertices' x extent, and device coordinates are >= 0 (project() clamps
+ * them), so the first centres at or right of xl and xr come by a shift. */
+static int tri_span_pixels(int32_t xl, int32_t xr, uint32_t width, uint32_t *p1, uint32_t *p2)
+{
+    uint32_t a = (uint32_t)(xl + HALF_PIXEL - 1) >> SUB, b = (uint32_t)(xr + HALF_PIXEL - 1) >> SUB;
+    if (b > width)
+        b = width;
+    if (a >= b)
+        return 0;
+    *p1 = a;
+    *p2 = b - 1u;
+    return 1;
+}
+
+#if STP_WITH_ZBUFFER
+/* The int32 whose two's complement is u (no implementation-defined
+ * conversion of a value above INT32_MAX) */
+static int32_t from_twos(uint32_t u)
+{
+    return u < 0x80000000u ? (int32_t)u : -(int32_t)~u - 1;
+}
+
+/* The triangle v's depth terms are short (depth_term_short in x and y):
+ * its depths at pixel centres, dc + ddx (x - xc) + ddy (y - yc), then lie
+ * within +-(2^28 + 2^12 + 2^30), so they follow from their values modulo
+ * 2^32 in 32-bit unsigned arithmetic. */
+static int depth_terms_short(const depth_plane *pl, const stp_instr *v, int32_t y_extent)
+{
+    int32_t x_lo = v[0].x, x_hi = v[0].x;
+    x_lo = v[1].x < x_lo ? v[1].x : x_lo;
+    x_hi = v[1].x > x_hi ? v[1].x : x_hi;
+    x_lo = v[2].x < x_lo ? v[2].x : x_lo;
+    x_hi = v[2].x > x_hi ? v[2].x : x_hi;
+    return depth_term_short(pl->ddx, x_hi - x_lo) && depth_term_short(pl->ddy, y_extent);
+}
+#endif
 
 /* A flat triangle (df[at], vertices v) in the current band: the general
  * path's fill rule and depths, set up for what the triangle needs.  Its
@@ -961,7 +1001,7 @@ static int32_t tri_edge_x(tri_acc acc)
  * the long edge top-bottom and by top-mid above mid, mid-bottom from mid
  * down; the two crossings bound the row's span.  Nothing is set up before
  * the first span with pixels: a small triangle often covers no pixel
- * centre. */
+ * centre.  Coordinates are >= 0 (project()), so are the crossings. */
 static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint style, int use_z, stp_fix t,
                           uint32_t ordinal)
 {
@@ -971,8 +1011,11 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
     tri_edge lng, sht;
 #if STP_WITH_ZBUFFER
     depth_plane pl; /* field by field: ARMv6-M's GCC clears a whole struct by memset */
-    int64_t d_row = 0;
-    int short_depth = 0; /* depths in 32 bits (depth_term_short) */
+    int64_t d_row = 0; /* general depths: at device x = 0 of the row centre, Q12 */
+    /* short depths (depth_terms_short) modulo 2^32: at device x = 0 of
+     * the row centre, per subpixel in x, per row */
+    uint32_t d_row32 = 0, gx = 0, gy_row = 0;
+    int short_depth = 0;
     pl.ddx = pl.ddy = pl.dc = 0;
     pl.xc = pl.yc = 0;
 #endif
@@ -1001,9 +1044,9 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
     (void)ordinal;
 #endif
     /* rows whose centre 16 r + 8 lies in [top, bottom), in the band */
-    r_first = stp_floor16(top->y + HALF_PIXEL - 1);
-    r_last = stp_floor16(bot->y + HALF_PIXEL - 1) - 1;
-    r_mid = stp_floor16(mid->y + HALF_PIXEL - 1); /* the first row below mid's y */
+    r_first = (int32_t)((uint32_t)(top->y + HALF_PIXEL - 1) >> SUB);
+    r_last = (int32_t)((uint32_t)(bot->y + HALF_PIXEL - 1) >> SUB) - 1;
+    r_mid = (int32_t)((uint32_t)(mid->y + HALF_PIXEL - 1) >> SUB); /* the first row below mid's y */
     if (r_first < (int32_t)fr->y0)
         r_first = (int32_t)fr->y0;
     if (r_last > (int32_t)(fr->y0 + fr->rows) - 1)
@@ -1024,21 +1067,20 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
             xl = xr;
             xr = x;
         }
-        if (stp_span_pixels(xl, xr, fr->r->width, &p1, &p2)) {
+        if (tri_span_pixels(xl, xr, fr->r->width, &p1, &p2)) {
             if (!ready) {
 #if STP_WITH_ZBUFFER
                 if (use_z) {
-                    int32_t x_lo = v[0].x, x_hi = v[0].x;
                     if (!depth_plane_for(fr, v, 3, ordinal, top->y, &pl))
                         return; /* edge-on: no area on screen */
-                    x_lo = v[1].x < x_lo ? v[1].x : x_lo;
-                    x_hi = v[1].x > x_hi ? v[1].x : x_hi;
-                    x_lo = v[2].x < x_lo ? v[2].x : x_lo;
-                    x_hi = v[2].x > x_hi ? v[2].x : x_hi;
-                    short_depth = depth_term_short(pl.ddx, x_hi - x_lo) && depth_term_short(pl.ddy, bot->y - top->y);
-                    /* else the depth at device x = 0 of this row's centre */
-                    if (!short_depth)
+                    short_depth = depth_terms_short(&pl, v, bot->y - top->y);
+                    if (short_depth) {
+                        gx = (uint32_t)pl.ddx;
+                        gy_row = (uint32_t)pl.ddy << SUB;
+                        d_row32 = (uint32_t)pl.dc - gx * (uint32_t)pl.xc + (uint32_t)pl.ddy * (uint32_t)(yc - pl.yc);
+                    } else {
                         d_row = pl.dc - mul_wide(pl.ddx, pl.xc) + mul_wide(pl.ddy, yc - pl.yc);
+                    }
                 }
 #endif
                 direct = paint_setup(fr, at, style, 0, t);
@@ -1047,20 +1089,17 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
             }
 #if STP_WITH_ZBUFFER
             if (use_z && short_depth) {
-                /* dc + ddx (x - xc) + ddy (y - yc) at the span's first and
-                 * last pixel centres, each term below 2^29 */
-                int32_t dx = (int32_t)pl.ddx, d_y = (int32_t)pl.dc + (int32_t)pl.ddy * (yc - pl.yc);
-                int32_t d = d_y + dx * ((int32_t)(p1 << SUB) + HALF_PIXEL - pl.xc);
-                int32_t d_end = d_y + dx * ((int32_t)(p2 << SUB) + HALF_PIXEL - pl.xc);
+                /* the depths at the span's first and last pixel centres,
+                 * modulo 2^32 */
+                uint32_t d = d_row32 + gx * ((p1 << SUB) + HALF_PIXEL), d_end = d + (gx << SUB) * (p2 - p1);
                 const uint32_t depths = (uint32_t)(DEPTH_Q12_END - DEPTH_Q12_MIN);
-                if (direct && (uint32_t)(d - (int32_t)DEPTH_Q12_MIN) < depths &&
-                    (uint32_t)(d_end - (int32_t)DEPTH_Q12_MIN) < depths)
-                    /* two pixel centres 16 apart lie within the x extent:
-                     * 16 |ddx| < 2^29 */
+                if (direct && d - (uint32_t)DEPTH_Q12_MIN < depths && d_end - (uint32_t)DEPTH_Q12_MIN < depths)
+                    /* 1..65535 at both ends; two pixel centres 16 apart
+                     * lie within the x extent: 16 |ddx| < 2^29 */
                     span_z_direct(z_row(fr, (uint32_t)row), band_row(fr, (uint32_t)row), pattern_of_row(fr, (uint32_t)row),
-                                  p1, p2, d, p2 > p1 ? dx * 16 : 0);
+                                  p1, p2, (int32_t)d, p2 > p1 ? from_twos(gx << SUB) : 0);
                 else
-                    put_span_z(fr, (uint32_t)row, p1, p2, style, d, pl.ddx * (1 << SUB), 0, 0, 0, t, direct);
+                    put_span_z(fr, (uint32_t)row, p1, p2, style, from_twos(d), pl.ddx * (1 << SUB), 0, 0, 0, t, direct);
             } else if (use_z) {
                 int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
                 int64_t d = d_row + mul_wide(pl.ddx, xq);
@@ -1086,7 +1125,9 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
         else
             sht.acc += sht.step;
 #if STP_WITH_ZBUFFER
-        if (!short_depth)
+        if (short_depth)
+            d_row32 += gy_row;
+        else
             d_row += pl.ddy * (1 << SUB);
 #endif
     }
