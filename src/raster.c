@@ -755,14 +755,32 @@ static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, 
     pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : STP_DIV64(sd, n);
 }
 
-/* trunc(-g 4096 / c) for |g| < 2^19 and c != 0 (a small triangle's
- * gradient, depth_plane_from_sums's quotient): a 32-bit division of the
- * magnitudes, |g| 4096 < 2^31, so the quotient fits int32 */
-static int32_t gradient_short(int32_t g, int32_t c)
+/* A small triangle's gradients (depth_plane_from_sums's quotients)
+ * trunc(-a 4096 / c) and trunc(-b 4096 / c) for |a|, |b| < 2^19 and c !=
+ * 0: quotients of 32-bit magnitudes (n = |a| 4096 < 2^31, so they fit
+ * int32).  Without wide arithmetic (a 32-bit division is a ~130-instruction
+ * library call on ARMv6-M) both come from one reciprocal r = floor((2^32 -
+ * 1) / |c|) (stp_quotient_by_recip). */
+static void gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t *gb)
 {
-    uint32_t ug = g < 0 ? 0u - (uint32_t)g : (uint32_t)g, uc = c < 0 ? 0u - (uint32_t)c : (uint32_t)c;
-    uint32_t q = (ug << 12) / uc;
-    return (g > 0) == (c > 0) ? -(int32_t)q : (int32_t)q; /* -g and c of opposite signs: negative */
+    uint32_t ua = (a < 0 ? 0u - (uint32_t)a : (uint32_t)a) << 12, ub = (b < 0 ? 0u - (uint32_t)b : (uint32_t)b) << 12,
+             uc = c < 0 ? 0u - (uint32_t)c : (uint32_t)c, qa, qb;
+#if STP_WIDE_ARITH
+    qa = ua / uc;
+    qb = ub / uc;
+#else
+    if (uc == 1) {
+        qa = ua;
+        qb = ub;
+    } else {
+        uint32_t r = 0xFFFFFFFFu / uc;
+        qa = stp_quotient_by_recip(ua, uc, r);
+        qb = stp_quotient_by_recip(ub, uc, r);
+    }
+#endif
+    /* -a and c of opposite signs: negative */
+    *ga = (a > 0) == (c > 0) ? -(int64_t)qa : (int64_t)qa;
+    *gb = (b > 0) == (c > 0) ? -(int64_t)qb : (int64_t)qb;
 }
 
 /* A triangle's plane: its Newell sums are its cross product, exactly
@@ -784,8 +802,7 @@ static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
     if (x1 > -xs && x1 < xs && x2 > -xs && x2 < xs && y1 > -ys && y1 < ys && y2 > -ys && y2 < ys) {
         int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
         if (c32 != 0 && a32 > -gs && a32 < gs && b32 > -gs && b32 < gs) {
-            pl->ddx = gradient_short(a32, c32);
-            pl->ddy = gradient_short(b32, c32);
+            gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy);
             pl->xc = (int32_t)stp_div3_u30(sx); /* coordinates below 2^20 */
             pl->yc = (int32_t)stp_div3_u30(sy);
             pl->dc = stp_div3_u30(sd);

@@ -66,6 +66,17 @@ static inline uint32_t stp_umulhi32(uint32_t a, uint32_t b)
 #endif
 }
 
+/* floor(n / d) for n < 2^31 and 2 <= d < 2^31 from r = floor((2^32 - 1) /
+ * d): r > (2^32 - d) / d, so n r / 2^32 lies less than n / 2^32 < 1/2
+ * below n / d and not above it; its floor is the quotient or one short,
+ * and the remainder (below 2 d < 2^32) corrects it.  One division (r)
+ * serves every n with the same d. */
+static inline uint32_t stp_quotient_by_recip(uint32_t n, uint32_t d, uint32_t r)
+{
+    uint32_t q = stp_umulhi32(n, r);
+    return n - q * d >= d ? q + 1u : q;
+}
+
 /* floor(s / 3) for s < 2^30.  Without wide arithmetic from 32-bit
  * products: floor(t 0xAAAB / 2^17) is floor(t / 3) for t < 2^16 (3 0xAAAB
  * = 2^17 + 1: the excess t / (3 2^17) stays below 1/3), applied to s's top
