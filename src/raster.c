@@ -755,40 +755,34 @@ static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, 
     pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : STP_DIV64(sd, n);
 }
 
+#if !STP_WIDE_ARITH
 /* A small triangle's gradients (depth_plane_from_sums's quotients)
  * trunc(-a 4096 / c) and trunc(-b 4096 / c) for |a|, |b| < 2^19 and c !=
  * 0: quotients of 32-bit magnitudes (n = |a| 4096 < 2^31, so they fit
- * int32).  Without wide arithmetic (a 32-bit division is a ~130-instruction
- * library call on ARMv6-M) both come from one reciprocal r = floor((2^32 -
- * 1) / |c|) (stp_quotient_by_recip). */
+ * int32), both from one reciprocal r = floor((2^32 - 1) / |c|)
+ * (stp_quotient_by_recip): a 32-bit division is a ~130-instruction library
+ * call on ARMv6-M. */
 static void gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t *gb)
 {
     uint32_t ua = (a < 0 ? 0u - (uint32_t)a : (uint32_t)a) << 12, ub = (b < 0 ? 0u - (uint32_t)b : (uint32_t)b) << 12,
-             uc = c < 0 ? 0u - (uint32_t)c : (uint32_t)c, qa, qb;
-#if STP_WIDE_ARITH
-    qa = ua / uc;
-    qb = ub / uc;
-#else
-    if (uc == 1) {
-        qa = ua;
-        qb = ub;
-    } else {
+             uc = c < 0 ? 0u - (uint32_t)c : (uint32_t)c, qa = ua, qb = ub;
+    if (uc > 1) {
         uint32_t r = 0xFFFFFFFFu / uc;
         qa = stp_quotient_by_recip(ua, uc, r);
         qb = stp_quotient_by_recip(ub, uc, r);
     }
-#endif
     /* -a and c of opposite signs: negative */
     *ga = (a > 0) == (c > 0) ? -(int64_t)qa : (int64_t)qa;
     *gb = (b > 0) == (c > 0) ? -(int64_t)qb : (int64_t)qb;
 }
+#endif
 
 /* A triangle's plane: its Newell sums are its cross product, exactly
  * (relative coordinates below 2^20, depths below 2^16); its three Q12
- * depths (below 2^28) sum below 2^30.  A small triangle (relative x below
- * 2^14, y below 2^13: products below 2^30, so the sums fit int32, and
- * |a|, |b| < 2^19) in 32 bits: no clamp (|a|, |b| < 2^28), the same
- * values. */
+ * depths (below 2^28) sum below 2^30.  Without wide arithmetic a small
+ * triangle (relative x below 2^14, y below 2^13: products below 2^30, so
+ * the sums fit int32, and |a|, |b| < 2^19) in 32 bits: no clamp (|a|, |b|
+ * < 2^28), the same values. */
 static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
 {
     int32_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z), d2 = depth_q12(fr, v[2].z);
@@ -797,8 +791,9 @@ static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
     uint32_t sx = (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x,
              sy = (uint32_t)v[0].y + (uint32_t)v[1].y + (uint32_t)v[2].y,
              sd = (uint32_t)d0 + (uint32_t)d1 + (uint32_t)d2;
-    const int32_t xs = (int32_t)1 << 14, ys = (int32_t)1 << 13, gs = (int32_t)1 << 19;
     int64_t a, b, c;
+#if !STP_WIDE_ARITH /* 64-bit hosts: 64-bit products and quotients cost what 32-bit ones do */
+    const int32_t xs = (int32_t)1 << 14, ys = (int32_t)1 << 13, gs = (int32_t)1 << 19;
     if (x1 > -xs && x1 < xs && x2 > -xs && x2 < xs && y1 > -ys && y1 < ys && y2 > -ys && y2 < ys) {
         int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
         if (c32 != 0 && a32 > -gs && a32 < gs && b32 > -gs && b32 < gs) {
@@ -811,7 +806,9 @@ static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
         a = a32;
         b = b32;
         c = c32;
-    } else {
+    } else
+#endif
+    {
         a = stp_smul32(y1, e2) - stp_smul32(e1, y2);
         b = stp_smul32(e1, x2) - stp_smul32(x1, e2);
         c = stp_smul32(x1, y2) - stp_smul32(y1, x2);
@@ -1090,7 +1087,8 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
                 if (use_z) {
                     if (!depth_plane_for(fr, v, 3, ordinal, top->y, &pl))
                         return; /* edge-on: no area on screen */
-                    short_depth = depth_terms_short(&pl, v, bot->y - top->y);
+                    /* (64-bit hosts: 64-bit depths cost what 32-bit ones do) */
+                    short_depth = !STP_WIDE_ARITH && depth_terms_short(&pl, v, bot->y - top->y);
                     if (short_depth) {
                         gx = (uint32_t)pl.ddx;
                         gy_row = (uint32_t)pl.ddy << SUB;
