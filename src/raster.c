@@ -132,6 +132,12 @@ size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
  * STP_COLOUR_FLAG, a colour; 32 bits wide because the flag is bit 24. */
 typedef int32_t paint;
 
+#if KEY_CACHE > 0
+typedef struct key_mapping {
+    int32_t key, q12;
+} key_mapping;
+#endif
+
 /* The fields a triangle reads come first: ARMv6-M loads a word at an
  * offset below 128 bytes in one instruction, farther ones in three. */
 typedef struct frame {
@@ -177,7 +183,7 @@ typedef struct frame {
 #if KEY_CACHE > 0
     /* depth_q12's recent results, slot by the key's low bits: a mesh's
      * vertex comes again in the next triangles; q12 0: empty */
-    int32_t cached_key[KEY_CACHE], cached_q12[KEY_CACHE];
+    key_mapping cached[KEY_CACHE];
 #endif
 #if STP_WITH_EDGE_AA
     stp_edge_aa aa; /* edge anti-aliasing (edge_aa.c); aa.out NULL: off */
@@ -704,23 +710,37 @@ static uint32_t key_quotient(const frame *fr, uint32_t u)
 #endif
 }
 
-static int32_t depth_q12(frame *fr, int32_t key)
+static int32_t depth_q12_made(frame *fr, int32_t key)
 {
+    /* the quotient is at most 65534 2^12: below 2^28 */
     if (fr->key_max <= fr->key_min)
         return (int32_t)65535 << 12;
-#if KEY_CACHE > 0
-    {
-        uint32_t slot = ((uint32_t)key ^ ((uint32_t)key >> 8)) & (KEY_CACHE - 1);
-        if (fr->cached_q12[slot] != 0 && fr->cached_key[slot] == key)
-            return fr->cached_q12[slot];
-        fr->cached_key[slot] = key;
-        /* u = key - key_min in 0..range, modulo 2^32 */
-        fr->cached_q12[slot] = (int32_t)key_quotient(fr, (uint32_t)key - (uint32_t)fr->key_min) + (1 << 12);
-        return fr->cached_q12[slot]; /* < 2^28 + 2^12 */
-    }
-#else
-    /* the quotient is at most 65534 2^12: below 2^28 */
     return (int32_t)(1 << 12) + (int32_t)key_quotient(fr, (uint32_t)key - (uint32_t)fr->key_min);
+}
+
+#if KEY_CACHE > 0
+/* its slot of the kept mappings: the key's low bits, mixed */
+#define KEY_SLOT(key) ((((uint32_t)(key)) ^ ((uint32_t)(key) >> 8)) & (KEY_CACHE - 1))
+
+static int32_t depth_q12_keep(frame *fr, int32_t key)
+{
+    key_mapping *m = &fr->cached[KEY_SLOT(key)];
+    m->key = key;
+    m->q12 = depth_q12_made(fr, key);
+    return m->q12;
+}
+#endif
+
+/* a key's Q12 depth: kept, or made (and kept) */
+static inline int32_t depth_q12(frame *fr, int32_t key)
+{
+#if KEY_CACHE > 0
+    const key_mapping *m = &fr->cached[KEY_SLOT(key)];
+    if (m->key == key && m->q12 != 0)
+        return m->q12;
+    return depth_q12_keep(fr, key);
+#else
+    return depth_q12_made(fr, key);
 #endif
 }
 
@@ -1414,7 +1434,7 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
     /* locals, not fr's fields: a store through fr may alias the display file */
     int32_t x_lo = INT32_MAX, x_hi = INT32_MIN, y_lo = INT32_MAX, y_hi = INT32_MIN;
     int32_t key_min = INT32_MAX, key_max = INT32_MIN;
-    fr->second_pass = 0;
+    int second_pass = 0;
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
         paint style = r->fill_style;
@@ -1423,17 +1443,10 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
             continue;
         for (k = seg->start; k < seg->end; k++) {
             const stp_instr *in = &r->df[k];
-            if (in->op == STP_OP_SHADE)
-                style = paint_of(fr, in);
-            if (in->op == STP_OP_TRANSPARENCY)
-                t = in->x;
-            if (in->op == STP_OP_LINE)
-                fr->second_pass = 1;
-            if (in->op >= 3) {
-                int32_t far_key = INT32_MAX;
-                for (i = 0; i < in->op; i++) {
+            int32_t op = in->op;
+            if (op >= 3) {
+                for (i = 0; i < op; i++) {
                     int32_t z = in[i].z, x = in[i].x, y = in[i].y;
-                    far_key = z < far_key ? z : far_key;
                     key_min = z < key_min ? z : key_min;
                     key_max = z > key_max ? z : key_max;
                     x_lo = x < x_lo ? x : x_lo;
@@ -1441,19 +1454,28 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
                     y_lo = y < y_lo ? y : y_lo;
                     y_hi = y > y_hi ? y : y_hi;
                 }
-                if (t > 0)
-                    fr->second_pass = 1;
+                second_pass |= t > 0;
                 if (sort) {
+                    int32_t far_key = in[0].z;
+                    for (i = 1; i < op; i++)
+                        far_key = in[i].z < far_key ? in[i].z : far_key;
                     sort[count].index = k;
                     sort[count].key = far_key;
                     sort[count].style = style;
                     sort[count].transmission = t;
                 }
                 count++;
-                k += (uint32_t)in->op - 1;
+                k += (uint32_t)op - 1;
+            } else if (op == STP_OP_SHADE) {
+                style = paint_of(fr, in);
+            } else if (op == STP_OP_TRANSPARENCY) {
+                t = in->x;
+            } else if (op == STP_OP_LINE) {
+                second_pass = 1;
             }
         }
     }
+    fr->second_pass = second_pass;
     fr->key_min = key_min;
     fr->key_max = key_max;
     /* a pixel a polygon covers has its centre within the polygon's
@@ -1599,7 +1621,7 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
     }
 #if KEY_CACHE > 0
     for (y0 = 0; y0 < KEY_CACHE; y0++)
-        fr.cached_q12[y0] = 0;
+        fr.cached[y0].q12 = 0;
 #endif
     fr.mono_fill = port->format == STP_PIXEL_MONO1 && fr.cell->kind == STP_CELL_THRESHOLD &&
                    fr.cell->width > 0 && 8u % fr.cell->width == 0 && fr.cell->height > 0 &&

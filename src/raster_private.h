@@ -87,7 +87,12 @@ static inline uint32_t stp_div3_u30(uint32_t s)
 #if STP_WIDE_ARITH
     return s / 3u;
 #else
-    uint32_t h = s >> 14, hq = (h * 0xAAABu) >> 17, t = ((h - 3u * hq) << 14) | (s & 0x3FFFu);
+    uint32_t h, hq, t;
+    if (s < 0x10000u) /* a small triangle's coordinate sums */
+        return (s * 0xAAABu) >> 17;
+    h = s >> 14;
+    hq = (h * 0xAAABu) >> 17;
+    t = ((h - 3u * hq) << 14) | (s & 0x3FFFu);
     return (hq << 14) + ((t * 0xAAABu) >> 17);
 #endif
 }
