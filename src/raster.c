@@ -1344,7 +1344,8 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
 {
     stp_renderer *r = fr->r;
     uint32_t ordinal = 0;
-    int s;
+    int s, triangle_path = TRIANGLE_PATH(fr); /* once, not per polygon */
+    (void)triangle_path; /* read only with the triangle path compiled in */
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
         paint style = r->fill_style, line_style = r->fill_style;
@@ -1359,7 +1360,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
                 if (skip_polygons || !(pass == 0 || (pass == 1) == (t == 0)))
                     ;
 #if STP_WITH_TRIANGLE_PATH
-                else if (in->op == 3 && !polygon_smooth(in) && TRIANGLE_PATH(fr) && TRIANGLE_NARROW(in))
+                else if (in->op == 3 && triangle_path && !polygon_smooth(in) && TRIANGLE_NARROW(in))
                     draw_triangle(fr, k, in, style, use_z, t, ordinal);
 #endif
                 else
