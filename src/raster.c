@@ -963,7 +963,7 @@ typedef struct tri_edge {
     tri_acc acc, step;
 } tri_edge;
 
-static void tri_edge_start(tri_edge *e, const stp_instr *a, const stp_instr *b, int32_t yc)
+static inline void tri_edge_start(tri_edge *e, const stp_instr *a, const stp_instr *b, int32_t yc)
 {
 #if STP_WIDE_ARITH
     int64_t slope = stp_slope_q16(b->x - a->x, b->y - a->y);
