@@ -35,6 +35,8 @@ typedef struct stp_shade_fast_dir {
     int j, shift;
 } stp_shade_fast_dir;
 
+#define STP_SHADE_FAST_FRESNEL_NODES 65
+
 /* Per-call constants of stp_shade_fast_face. */
 typedef struct stp_shade_fast {
     int count;           /* lights that can reach a face (0 when BRIGHT <= 0) */
@@ -59,6 +61,9 @@ typedef struct stp_shade_fast {
     int refraction_ge_1; /* n >= 1: g = n sqrt(1 - (1 - c^2)/n^2) */
     uint32_t inv_n2;     /* n >= 1: 1/n^2 in Q31 */
     uint32_t n2;         /* n < 1: n^2 in Q30 */
+    /* n >= 1: F(c) in Q16 (capped at 65535) at c = 1/4 + 3 i/256, i = 0..64
+     * (E.H = c; below 1/4, and for n < 1, F is computed exactly) */
+    uint16_t fresnel[STP_SHADE_FAST_FRESNEL_NODES];
 #endif
 } stp_shade_fast;
 
