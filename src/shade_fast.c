@@ -453,24 +453,20 @@ static stp_sf16 fresnel_sf(const stp_shade_fast *s, uint32_t c, uint32_t u)
     return sf_less(sf_one, r) ? sf_one : r;
 }
 
-/* The table's first node (c = 1/4) in Q30, and its spacing 3/256 */
+/* The table's first node (c = 1/4) in Q30; nodes every 1/64 (2^24) */
 #define FRESNEL_C0 ((uint32_t)1 << 28)
 
 /* F at c = E.H (Q30, in (0, 2^30]), e_dot_l = 2 c^2 - 1: the prepared
- * table linearly interpolated where c >= 1/4 and n >= 1 (the index
- * (c - 1/4) 256/3 through x 43690 2^-32 ~ x/(3 2^15), x = (c - 1/4) 2^-13
- * <= 3 2^15: the product stays below 2^32), else fresnel_sf. */
+ * table linearly interpolated where c >= 1/4 and n >= 1, else fresnel_sf. */
 static stp_sf16 fresnel_at(const stp_shade_fast *s, uint32_t c, int32_t e_dot_l)
 {
     if (s->refraction_ge_1 && c >= FRESNEL_C0) {
-        uint32_t p = ((c - FRESNEL_C0) >> 13) * 43690u; /* 64 (c - 1/4)/(3/4) in Q26 */
-        uint32_t i = p >> 26, frac = (p >> 10) & 0xFFFFu;
-        uint32_t a = s->fresnel[i], b;
+        uint32_t i = (c - FRESNEL_C0) >> 24, frac = ((c - FRESNEL_C0) >> 8) & 0xFFFFu;
+        uint32_t a = s->fresnel[i];
         int32_t d;
         if (i >= STP_SHADE_FAST_FRESNEL_NODES - 1)
             return sf_make(a, 16);
-        b = s->fresnel[i + 1];
-        d = (int32_t)b - (int32_t)a; /* |d| < 2^16 */
+        d = (int32_t)s->fresnel[i + 1] - (int32_t)a; /* |d| < 2^16 */
         return sf_make((uint32_t)((int32_t)a + asr32(d * (int32_t)frac, 16)), 16);
     }
     return fresnel_sf(s, c, e_dot_l >= Q30 ? 0u : ((uint32_t)Q30 - (uint32_t)e_dot_l) >> 1);
@@ -591,7 +587,7 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
         /* the Fresnel table: exact F at its nodes (about 570 instructions
          * each on ARMv6-M: the reason prepare is meant to be cached) */
         for (j = 0; j < STP_SHADE_FAST_FRESNEL_NODES; j++) {
-            uint32_t c = FRESNEL_C0 + (uint32_t)j * ((uint32_t)3 << 22); /* <= 2^30 */
+            uint32_t c = FRESNEL_C0 + ((uint32_t)j << 24); /* <= 2^30 */
             uint32_t u = (uint32_t)Q30 - (mul_hi(c << 1, c << 1)); /* 1 - c^2 in Q30 */
             s->fresnel[j] = (uint16_t)sf_to_fixed(fresnel_sf(s, c, u), 16, 0xFFFFu);
         }

@@ -35,7 +35,7 @@ typedef struct stp_shade_fast_dir {
     int j, shift;
 } stp_shade_fast_dir;
 
-#define STP_SHADE_FAST_FRESNEL_NODES 65
+#define STP_SHADE_FAST_FRESNEL_NODES 49
 
 /* Per-call constants of stp_shade_fast_face. */
 typedef struct stp_shade_fast {
@@ -61,7 +61,7 @@ typedef struct stp_shade_fast {
     int refraction_ge_1; /* n >= 1: g = n sqrt(1 - (1 - c^2)/n^2) */
     uint32_t inv_n2;     /* n >= 1: 1/n^2 in Q31 */
     uint32_t n2;         /* n < 1: n^2 in Q30 */
-    /* n >= 1: F(c) in Q16 (capped at 65535) at c = 1/4 + 3 i/256, i = 0..64
+    /* n >= 1: F(c) in Q16 (capped at 65535) at c = 1/4 + i/64, i = 0..48
      * (E.H = c; below 1/4, and for n < 1, F is computed exactly) */
     uint16_t fresnel[STP_SHADE_FAST_FRESNEL_NODES];
 #endif
