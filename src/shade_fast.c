@@ -456,20 +456,67 @@ static stp_sf16 fresnel_sf(const stp_shade_fast *s, uint32_t c, uint32_t u)
 /* The table's first node (c = 1/4) in Q30; nodes every 1/64 (2^24) */
 #define FRESNEL_C0 ((uint32_t)1 << 28)
 
-/* F at c = E.H (Q30, in (0, 2^30]), e_dot_l = 2 c^2 - 1: the prepared
- * table linearly interpolated where c >= 1/4 and n >= 1, else fresnel_sf. */
-static stp_sf16 fresnel_at(const stp_shade_fast *s, uint32_t c, int32_t e_dot_l)
+/* F at c = E.H (Q30, in [2^28, 2^30]: c >= 1/4) in Q16, at most 65535:
+ * the prepared table linearly interpolated (n >= 1), else fresnel_sf. */
+static uint32_t fresnel_q16(const stp_shade_fast *s, uint32_t c, int32_t e_dot_l)
 {
-    if (s->refraction_ge_1 && c >= FRESNEL_C0) {
+    if (s->refraction_ge_1) {
         uint32_t i = (c - FRESNEL_C0) >> 24, frac = ((c - FRESNEL_C0) >> 8) & 0xFFFFu;
         uint32_t a = s->fresnel[i];
         int32_t d;
         if (i >= STP_SHADE_FAST_FRESNEL_NODES - 1)
-            return sf_make(a, 16);
+            return a;
         d = (int32_t)s->fresnel[i + 1] - (int32_t)a; /* |d| < 2^16 */
-        return sf_make((uint32_t)((int32_t)a + asr32(d * (int32_t)frac, 16)), 16);
+        return (uint32_t)((int32_t)a + asr32(d * (int32_t)frac, 16));
     }
-    return fresnel_sf(s, c, e_dot_l >= Q30 ? 0u : ((uint32_t)Q30 - (uint32_t)e_dot_l) >> 1);
+    return sf_to_fixed(fresnel_sf(s, c, e_dot_l >= Q30 ? 0u : ((uint32_t)Q30 - (uint32_t)e_dot_l) >> 1),
+                       16, 0xFFFFu);
+}
+
+/* D = (1/(1 + (1 - N.H)/k))^2 in Q30 from omx = 1 - N.H (Q30, < 2^30):
+ * x = omx/k in Q16 (below 2^32: 1/k in Q16 is below 2^32), t = 1 + x
+ * = m 2^(n - 16) with m in [2^15, 2^16), 1/t = y 2^(-15 - n) with
+ * y = 2^31/m (recip16), D = y^2 2^(-30 - 2n).  0 when x >= 2^31 (D < 2^-30). */
+static uint32_t gloss_q30(const stp_shade_fast *s, uint32_t omx)
+{
+    uint32_t x = mul_hi(omx << 2, s->inv_gloss_q16), t, y;
+    int n;
+    if (x >= 0x80000000u)
+        return 0;
+    t = ((uint32_t)1 << 16) + x;
+    n = bit_length32(t) - 16; /* 1 .. 16 */
+    y = recip16(t >> n);
+    if (y > 0xFFFFu) /* m = 2^15: D = 2^(32 - 2n) 2^-30 */
+        return n >= 16 ? 0u : (uint32_t)1 << (32 - 2 * n);
+    return n >= 16 ? 0u : (y * y) >> (2 * n);
+}
+
+/* Ks D F G/(N.E) where E.H >= 1/4 (so G/(N.E) <= 2 (N.H)/(E.H) <= 8):
+ * fixed formats, one conversion to stp_sf16 at the end.
+ *   g1 = 2 N.H/E.H = 4 N.H/|L + E| in Q26 (<= 2^29),
+ *   G/(N.E) = min(1/(N.E), g1 min(1, N.L/N.E)) in Q26 (<= 2^29),
+ *   D in Q30, F in Q16, D F in Q31, D F G/(N.E) in Q27 (<= 2^30). */
+static stp_sf16 specular_fixed(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_dot_e,
+                               uint32_t nh, uint32_t r, int j, uint32_t eh, int32_t e_dot_l,
+                               stp_sf16 inv_ne, uint32_t inv_ne_q26)
+{
+    uint32_t g1 = mul_hi(nh, r) >> (1 - j), gne = g1, d, df;
+    if (n_dot_l < n_dot_e) {
+        /* N.L/N.E < 1 in Q30: N.L m 2^-e (inv_ne = m 2^-e) */
+        uint32_t p = mul_hi((uint32_t)n_dot_l << 1, inv_ne.m << 16); /* N.L m 2^-15 */
+        int sh = 15 - inv_ne.e;
+        uint32_t ratio = sh >= 0 ? (sh >= 16 ? (uint32_t)Q30 : p << sh) : (sh <= -32 ? 0u : p >> -sh);
+        if (ratio > (uint32_t)Q30)
+            ratio = (uint32_t)Q30;
+        gne = mul_hi(g1 << 2, ratio); /* g1 ratio in Q26 */
+    }
+    if (gne > inv_ne_q26)
+        gne = inv_ne_q26;
+    if (gne > ((uint32_t)1 << 29))
+        gne = (uint32_t)1 << 29;
+    d = gloss_q30(s, (uint32_t)Q30 - nh);
+    df = mul_hi(d << 1, fresnel_q16(s, eh, e_dot_l) << 16);
+    return sf_mul(s->ks, sf_make(mul_hi(df, gne << 2), 27));
 }
 
 /* Ks D F G/(N.E) of one light, from the cosines (Q30, N.L and N.E > 0)
@@ -479,7 +526,7 @@ static stp_sf16 fresnel_at(const stp_shade_fast *s, uint32_t c, int32_t e_dot_l)
  *   D = (1/(1 + (1 - N.H)/k))^2;
  *   G/(N.E) = min(1/(N.E), 2 (N.H) min(N.E, N.L)/((N.E)(E.H))). */
 static stp_sf16 specular_sf(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_dot_e,
-                            int32_t e_dot_l, stp_sf16 inv_ne)
+                            int32_t e_dot_l, stp_sf16 inv_ne, uint32_t inv_ne_q26)
 {
     uint32_t one_el = (uint32_t)(Q30 + e_dot_l), x, r, nh, eh, omx;
     int j;
@@ -495,6 +542,8 @@ static stp_sf16 specular_sf(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_
         return zero;
     if (nh > (uint32_t)Q30)
         nh = (uint32_t)Q30;
+    if (eh >= FRESNEL_C0)
+        return specular_fixed(s, n_dot_l, n_dot_e, nh, r, j, eh, e_dot_l, inv_ne, inv_ne_q26);
     omx = (uint32_t)Q30 - nh;
     d = sf_one;
     if (omx != 0) {
@@ -507,7 +556,7 @@ static stp_sf16 specular_sf(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_
         g = sf_mul(g, sf_mul(sf_make((uint32_t)n_dot_l, 30), inv_ne));
     if (sf_less(inv_ne, g))
         g = inv_ne;
-    return sf_mul(sf_mul(sf_mul(s->ks, d), fresnel_at(s, eh, e_dot_l)), g);
+    return sf_mul(sf_mul(sf_mul(s->ks, d), fresnel_sf(s, eh, e_dot_l >= Q30 ? 0u : ((uint32_t)Q30 - (uint32_t)e_dot_l) >> 1)), g);
 }
 #endif
 
@@ -570,6 +619,7 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
     s->specular = material->specular > 0;
     s->ks = sf_make(material->specular > 0 ? (uint32_t)material->specular : 0u, F);
     s->inv_gloss = sf_recip(sf_make(material->gloss < 1 ? 1u : (uint32_t)material->gloss, F));
+    s->inv_gloss_q16 = sf_to_fixed(s->inv_gloss, 15, 0x7FFFFFFFu) << 1; /* below 2^32 */
     {
         stp_fix n = material->refraction <= 0 ? 1 : material->refraction;
         s->refraction = sf_make((uint32_t)n, F);
@@ -607,6 +657,7 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
 #if STP_WITH_SPECULAR
     int32_t n_dot_e = 0;
     stp_sf16 inv_ne = {0, 0};
+    uint32_t inv_ne_q26 = 0;
 #endif
     if (s->count == 0)
         return s->ambient_shade;
@@ -628,6 +679,7 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
         if (n_dot_e <= 0)
             return s->ambient_shade;
         inv_ne = sf_recip(sf_make((uint32_t)n_dot_e, 30));
+        inv_ne_q26 = sf_to_fixed(inv_ne, 26, 0x7FFFFFFFu);
     }
 #endif
     for (j = 0; j < s->count; j++) {
@@ -651,7 +703,7 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
 #if STP_WITH_SPECULAR
         if (s->specular) {
             int32_t e_dot_l = at_point ? n_dot_e : cos_dirs(e, &l);
-            term = sf_mul(specular_sf(s, n_dot_l, n_dot_e, e_dot_l, inv_ne), w);
+            term = sf_mul(specular_sf(s, n_dot_l, n_dot_e, e_dot_l, inv_ne, inv_ne_q26), w);
             share += (int32_t)sf_to_fixed(term, SUM_BITS, SHARE_CAP);
         }
 #endif

@@ -57,6 +57,7 @@ typedef struct stp_shade_fast {
 #if STP_WITH_SPECULAR
     stp_sf16 ks;         /* Ks */
     stp_sf16 inv_gloss;  /* 1/k */
+    uint32_t inv_gloss_q16; /* 1/k in Q16, at most 2^32 - 1 */
     stp_sf16 refraction; /* n (>= 1 branch) */
     int refraction_ge_1; /* n >= 1: g = n sqrt(1 - (1 - c^2)/n^2) */
     uint32_t inv_n2;     /* n >= 1: 1/n^2 in Q31 */
