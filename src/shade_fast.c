@@ -320,6 +320,27 @@ static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b,
     return 1;
 }
 
+/* N.(a - b) > 0, exactly, for |a_i|, |b_i| < 2^30 (not big): with
+ * v = a - b = h 2^16 + l (h = v >> 16, |h| <= 2^15; l in [0, 2^16)),
+ * N.v = 2^16 A + 2 B + c, A = N.h, B = N.(l >> 1), c = N.(l & 1):
+ * |A|, |B| <= 3 2^29 (|N_i| <= 2^14 + 2), |c| < 2^16.  N.v > 0 iff
+ * 2^15 A + s > 0 with s = B + c/2 (exact in halves: the sign of
+ * 2^15 A + B + c/2 is that of 2^15 A + floor(B + c/2) unless the sum is
+ * 0 or -1/2, both "not > 0" as floor keeps them <= 0). */
+static int faces_point(const int16_t n[3], const stp_vec3 *a, const stp_vec3 *b)
+{
+    int32_t v0 = a->x - b->x, v1 = a->y - b->y, v2 = a->z - b->z;
+    int32_t h = (int32_t)n[0] * asr32(v0, 16) + (int32_t)n[1] * asr32(v1, 16) + (int32_t)n[2] * asr32(v2, 16);
+    int32_t l = (int32_t)n[0] * (int32_t)(((uint32_t)v0 & 0xFFFFu) >> 1) +
+                (int32_t)n[1] * (int32_t)(((uint32_t)v1 & 0xFFFFu) >> 1) +
+                (int32_t)n[2] * (int32_t)(((uint32_t)v2 & 0xFFFFu) >> 1);
+    int32_t c = (int32_t)n[0] * (int32_t)((uint32_t)v0 & 1u) + (int32_t)n[1] * (int32_t)((uint32_t)v1 & 1u) +
+                (int32_t)n[2] * (int32_t)((uint32_t)v2 & 1u);
+    int32_t t = l + asr32(c, 1); /* floor(B + c/2): |t| < 2^31 */
+    /* 2^15 h + t > 0  <=>  h > floor(-t / 2^15) */
+    return h > asr32(-t, 15);
+}
+
 /* N.w (|.| < 2^31: see the file comment) */
 static int32_t dot_n(const int16_t n[3], const stp_shade_fast_dir *d)
 {
@@ -652,7 +673,7 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     stp_shade_fast_dir e_local, l;
     const stp_shade_fast_dir *e = &s->e;
     uint32_t nn;
-    int32_t nd, dot_e, sum = s->ambient;
+    int32_t nd, dot_e = 0, sum = s->ambient;
     int j, lit = 0, point_big = is_big(point);
 #if STP_WITH_SPECULAR
     int32_t n_dot_e = 0;
@@ -661,14 +682,20 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
 #endif
     if (s->count == 0)
         return s->ambient_shade;
-    if (!s->parallel) {
+    if (!s->parallel && !s->specular && !(s->eye_big | point_big)) {
+        /* diffuse only: E matters only through the sign of N.E */
+        if (!faces_point(normal, &s->eye, &point))
+            return s->ambient_shade; /* a back face, or edge-on */
+    } else if (!s->parallel) {
         if (!dir_make(&e_local, &s->eye, &point, s->eye_big | point_big, s->specular))
             return s->ambient_shade; /* the eye on the face */
         e = &e_local;
     }
-    dot_e = dot_n(normal, e);
-    if (dot_e <= 0)
-        return s->ambient_shade; /* a back face, or edge-on */
+    if (s->parallel || s->specular || (s->eye_big | point_big)) {
+        dot_e = dot_n(normal, e);
+        if (dot_e <= 0)
+            return s->ambient_shade; /* a back face, or edge-on */
+    }
     /* |N|^2 - 1 in Q28: each n_i^2 <= 2^30, so the sum fits unsigned */
     nn = (uint32_t)((int32_t)normal[0] * normal[0]) + (uint32_t)((int32_t)normal[1] * normal[1]) +
          (uint32_t)((int32_t)normal[2] * normal[2]);
