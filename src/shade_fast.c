@@ -99,6 +99,30 @@ static inline uint32_t mul_hi(uint32_t a, uint32_t b)
 #endif
 }
 
+/* floor(a b / 2^32) - t with t in {0, 1, 2}: on ARMv6-M three 16 x 16
+ * products (the low halves' product and the carries from the middle
+ * sums' low halves are dropped); exact with STP_WIDE_ARITH.  For products
+ * whose last two units do not matter (each use is at least 2^28). */
+HOT_INLINE uint32_t mul_hi_fast(uint32_t a, uint32_t b)
+{
+#if STP_WIDE_ARITH
+    return (uint32_t)(((uint64_t)a * b) >> 32);
+#else
+    uint32_t ah = a >> 16, bh = b >> 16;
+    return ah * bh + ((ah * (b & 0xFFFFu)) >> 16) + (((a & 0xFFFFu) * bh) >> 16);
+#endif
+}
+
+/* floor(a m / 2^16) for m < 2^16, exact: two 32-bit products */
+HOT_INLINE uint32_t mul_u16(uint32_t a, uint32_t m)
+{
+#if STP_WIDE_ARITH
+    return (uint32_t)(((uint64_t)a * m) >> 16);
+#else
+    return (a >> 16) * m + (((a & 0xFFFFu) * m) >> 16);
+#endif
+}
+
 /* floor(a m / 2^16) for |a| < 2^31 and m <= 2^16 with |a >> 16| m < 2^31:
  * two 32-bit products. */
 static inline int32_t mul_q16(int32_t a, uint32_t m)
@@ -155,7 +179,7 @@ static uint32_t rsqrt_norm(uint32_t q)
     if (y > 0xFFFFu)
         y = 0xFFFFu;
     /* q y^2 2^-32 ~ 2^30, y^2 < 2^32; e is now below 2^20 */
-    e = Q30 - (int32_t)mul_hi(q, y * y);
+    e = Q30 - (int32_t)mul_hi_fast(q, y * y);
     return (y << 15) + (uint32_t)mul_q16(e, y);
 }
 
@@ -352,7 +376,7 @@ static int32_t dot_n(const int16_t n[3], const stp_shade_fast_dir *d)
 static int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t nd)
 {
     uint32_t a = dot < 0 ? 0u - (uint32_t)dot : (uint32_t)dot;
-    int32_t c = (int32_t)(mul_hi(a, d->r) << (1 + d->j)); /* <= 2^30 (1 + 2^-12) */
+    int32_t c = (int32_t)(mul_hi_fast(a, d->r) << (1 + d->j)); /* <= 2^30 (1 + 2^-12) */
     c -= asr32(asr32(c, 15) * asr32(nd, 2), 12); /* 2^15 2^15: fits */
     return dot < 0 ? -c : c;
 }
@@ -360,7 +384,7 @@ static int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t nd)
 /* The length of d's vector in raw stp_fix units: 2 sqrt(q) 2^shift */
 static stp_sf16 dir_length(const stp_shade_fast_dir *d)
 {
-    return sf_make(mul_hi(d->q, d->r), 13 - d->j - d->shift);
+    return sf_make(mul_hi_fast(d->q, d->r), 13 - d->j - d->shift);
 }
 
 #if STP_WITH_SPECULAR
@@ -377,7 +401,7 @@ static int32_t cos_dirs(const stp_shade_fast_dir *a, const stp_shade_fast_dir *b
         s += asr32(a->w[i] * h, 2) + ((b->w[i] & 1) ? asr32(a->w[i], 3) : 0);
     }
     m = s < 0 ? 0u - (uint32_t)s : (uint32_t)s;
-    m = mul_hi(mul_hi(m, a->r), b->r) << (3 + a->j + b->j);
+    m = mul_hi_fast(mul_hi_fast(m, a->r), b->r) << (3 + a->j + b->j);
     if (m > (uint32_t)Q30)
         m = (uint32_t)Q30;
     return s < 0 ? -(int32_t)m : (int32_t)m;
@@ -500,7 +524,7 @@ static uint32_t fresnel_q16(const stp_shade_fast *s, uint32_t c, int32_t e_dot_l
  * y = 2^31/m (recip16), D = y^2 2^(-30 - 2n).  0 when x >= 2^31 (D < 2^-30). */
 static uint32_t gloss_q30(const stp_shade_fast *s, uint32_t omx)
 {
-    uint32_t x = mul_hi(omx << 2, s->inv_gloss_q16), t, y;
+    uint32_t x = mul_hi_fast(omx << 2, s->inv_gloss_q16), t, y;
     int n;
     if (x >= 0x80000000u)
         return 0;
@@ -521,23 +545,23 @@ static stp_sf16 specular_fixed(const stp_shade_fast *s, int32_t n_dot_l, int32_t
                                uint32_t nh, uint32_t r, int j, uint32_t eh, int32_t e_dot_l,
                                stp_sf16 inv_ne, uint32_t inv_ne_q26)
 {
-    uint32_t g1 = mul_hi(nh, r) >> (1 - j), gne = g1, d, df;
+    uint32_t g1 = mul_hi_fast(nh, r) >> (1 - j), gne = g1, d, df;
     if (n_dot_l < n_dot_e) {
         /* N.L/N.E < 1 in Q30: N.L m 2^-e (inv_ne = m 2^-e) */
-        uint32_t p = mul_hi((uint32_t)n_dot_l << 1, inv_ne.m << 16); /* N.L m 2^-15 */
+        uint32_t p = mul_u16((uint32_t)n_dot_l << 1, inv_ne.m); /* N.L m 2^-15 */
         int sh = 15 - inv_ne.e;
         uint32_t ratio = sh >= 0 ? (sh >= 16 ? (uint32_t)Q30 : p << sh) : (sh <= -32 ? 0u : p >> -sh);
         if (ratio > (uint32_t)Q30)
             ratio = (uint32_t)Q30;
-        gne = mul_hi(g1 << 2, ratio); /* g1 ratio in Q26 */
+        gne = mul_hi_fast(g1 << 2, ratio); /* g1 ratio in Q26 */
     }
     if (gne > inv_ne_q26)
         gne = inv_ne_q26;
     if (gne > ((uint32_t)1 << 29))
         gne = (uint32_t)1 << 29;
     d = gloss_q30(s, (uint32_t)Q30 - nh);
-    df = mul_hi(d << 1, fresnel_q16(s, eh, e_dot_l) << 16);
-    return sf_mul(s->ks, sf_make(mul_hi(df, gne << 2), 27));
+    df = mul_u16(d << 1, fresnel_q16(s, eh, e_dot_l));
+    return sf_mul(s->ks, sf_make(mul_hi_fast(df, gne << 2), 27));
 }
 
 /* Ks D F G/(N.E) of one light, from the cosines (Q30, N.L and N.E > 0)
@@ -556,9 +580,9 @@ static stp_sf16 specular_sf(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_
         return zero; /* L = -E: H undefined */
     x = one_el >= 0x80000000u ? 0xFFFFFFFFu : one_el << 1;
     r = rsqrt_any(x, &j); /* 1/|L + E| = r 2^(j - 31) */
-    nh = mul_hi((uint32_t)n_dot_l + (uint32_t)n_dot_e, r); /* the sum <= 2^31 + 8 */
+    nh = mul_hi_fast((uint32_t)n_dot_l + (uint32_t)n_dot_e, r); /* the sum <= 2^31 + 8 */
     nh = nh >= (0x80000000u >> (1 + j)) ? (uint32_t)Q30 : nh << (1 + j);
-    eh = mul_hi(x, r) << j; /* sqrt(x) 2^14 <= 2^30 */
+    eh = mul_hi_fast(x, r) << j; /* sqrt(x) 2^14 <= 2^30 */
     if (nh == 0 || eh == 0)
         return zero;
     if (nh > (uint32_t)Q30)
