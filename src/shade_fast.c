@@ -59,6 +59,8 @@ HOT_INLINE int bit_length32(uint32_t v)
 #if defined(__GNUC__) && (STP_WIDE_ARITH || defined(__ARM_FEATURE_CLZ))
     return v == 0 ? 0 : 32 - __builtin_clz(v); /* one instruction there */
 #else
+    /* three halvings of the range, then the length of a 4-bit value */
+    static const uint16_t len4[16] STP_TABLE = {0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4};
     int n = 0;
     if (v >= 0x10000u) {
         v >>= 16;
@@ -72,15 +74,7 @@ HOT_INLINE int bit_length32(uint32_t v)
         v >>= 4;
         n += 4;
     }
-    if (v >= 4u) {
-        v >>= 2;
-        n += 2;
-    }
-    if (v >= 2u) {
-        v >>= 1;
-        n += 1;
-    }
-    return n + (int)v;
+    return n + (int)STP_TABLE_U16(&len4[v]);
 #endif
 }
 
