@@ -288,49 +288,43 @@ static int is_big(stp_vec3 a)
  * Returns 0 for a zero difference (d->w = 0 then). */
 static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b, int big, int need_r)
 {
-    int32_t v[3];
-    uint32_t m = 0, q = 0;
-    int i, n;
+    int32_t v0, v1, v2;
+    uint32_t u0, u1, u2, q;
+    int n;
     if (big) {
-        v[0] = asr32(a->x, 1) - asr32(b->x, 1);
-        v[1] = asr32(a->y, 1) - asr32(b->y, 1);
-        v[2] = asr32(a->z, 1) - asr32(b->z, 1);
+        v0 = asr32(a->x, 1) - asr32(b->x, 1);
+        v1 = asr32(a->y, 1) - asr32(b->y, 1);
+        v2 = asr32(a->z, 1) - asr32(b->z, 1);
     } else {
-        v[0] = a->x - b->x;
-        v[1] = a->y - b->y;
-        v[2] = a->z - b->z;
+        v0 = a->x - b->x;
+        v1 = a->y - b->y;
+        v2 = a->z - b->z;
     }
-    for (i = 0; i < 3; i++) {
-        uint32_t u = v[i] < 0 ? 0u - (uint32_t)v[i] : (uint32_t)v[i];
-        if (u > m)
-            m = u;
-    }
-    if (m == 0) {
+    u0 = v0 < 0 ? 0u - (uint32_t)v0 : (uint32_t)v0;
+    u1 = v1 < 0 ? 0u - (uint32_t)v1 : (uint32_t)v1;
+    u2 = v2 < 0 ? 0u - (uint32_t)v2 : (uint32_t)v2;
+    /* the bit length of the largest |v_i| is that of their OR */
+    n = bit_length32(u0 | u1 | u2) - 16; /* the largest 2^-n in [2^15, 2^16) */
+    if (n == -16) {
         d->w[0] = d->w[1] = d->w[2] = 0;
         return 0;
     }
-    n = bit_length32(m) - 16; /* m 2^-n in [2^15, 2^16) */
     d->shift = n + big;
+    /* |v_i| 2^-n truncated, below 2^16: the direction moves by at most
+     * 2^-15 radian, which moves a cosine near 1 only to second order */
     if (n > 0) {
-        for (i = 0; i < 3; i++) {
-            int32_t w = asr32(asr32(v[i], n - 1) + 1, 1); /* rounded to nearest */
-            /* the rounding of the largest may reach 2^16: kept below, so
-             * w^2 < 2^32 (int32_t constants: 0xFFFF is an unsigned int where
-             * int has 16 bits) */
-            if (w > (int32_t)0xFFFF)
-                w = (int32_t)0xFFFF;
-            if (w < -(int32_t)0xFFFF)
-                w = -(int32_t)0xFFFF;
-            d->w[i] = w;
-            q += ((uint32_t)w * (uint32_t)w) >> 2; /* w^2 < 2^32: exact mod 2^32 */
-        }
+        u0 >>= n;
+        u1 >>= n;
+        u2 >>= n;
     } else {
-        for (i = 0; i < 3; i++) {
-            int32_t w = v[i] * ((int32_t)1 << -n); /* exact, |w| < 2^16 */
-            d->w[i] = w;
-            q += ((uint32_t)w * (uint32_t)w) >> 2;
-        }
+        u0 <<= -n;
+        u1 <<= -n;
+        u2 <<= -n;
     }
+    d->w[0] = v0 < 0 ? -(int32_t)u0 : (int32_t)u0;
+    d->w[1] = v1 < 0 ? -(int32_t)u1 : (int32_t)u1;
+    d->w[2] = v2 < 0 ? -(int32_t)u2 : (int32_t)u2;
+    q = ((u0 * u0) >> 2) + ((u1 * u1) >> 2) + ((u2 * u2) >> 2); /* each u^2 < 2^32 */
     d->q = q; /* in [2^28, 3 2^30) */
     d->j = q < 0x40000000u;
     if (need_r)
