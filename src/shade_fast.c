@@ -261,6 +261,7 @@ static stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
     return a;
 }
 
+#if STP_WITH_SPECULAR
 /* a 2^q truncated, saturated at cap (< 2^31) */
 static uint32_t sf_to_fixed(stp_sf16 a, int q, uint32_t cap)
 {
@@ -272,6 +273,22 @@ static uint32_t sf_to_fixed(stp_sf16 a, int q, uint32_t cap)
         return cap; /* >= 2^31 */
     v = sh >= 0 ? a.m << sh : a.m >> -sh;
     return v > cap ? cap : v;
+}
+#endif
+
+/* p 2^sh in Q26 for the sums, saturated at SHARE_CAP */
+HOT_INLINE int32_t share_of(uint32_t p, int sh)
+{
+    if (sh >= 0)
+        return sh >= 31 || p > (SHARE_CAP >> sh) ? (int32_t)SHARE_CAP : (int32_t)(p << sh);
+    return sh <= -32 ? 0 : (int32_t)(p >> -sh);
+}
+
+/* a b in Q26 for a in Q(q) (a < 2^31), b = m 2^-e: floor(2 a m 2^-16)
+ * = a m 2^-15 scaled by 2^(26 - q + 15 - e) */
+HOT_INLINE int32_t share_times(uint32_t a, int q, stp_sf16 b)
+{
+    return share_of(mul_u16(a << 1, b.m), 41 - q - b.e);
 }
 
 /* ---- directions ---- */
@@ -529,7 +546,7 @@ static uint32_t gloss_q30(const stp_shade_fast *s, uint32_t omx)
  *   g1 = 2 N.H/E.H = 4 N.H/|L + E| in Q26 (<= 2^29),
  *   G/(N.E) = min(1/(N.E), g1 min(1, N.L/N.E)) in Q26 (<= 2^29),
  *   D in Q30, F in Q16, D F in Q31, D F G/(N.E) in Q27 (<= 2^30). */
-static stp_sf16 specular_fixed(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_dot_e,
+static uint32_t specular_fixed(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_dot_e,
                                uint32_t nh, uint32_t r, int j, uint32_t eh, int32_t e_dot_l,
                                stp_sf16 inv_ne, uint32_t inv_ne_q26)
 {
@@ -549,7 +566,7 @@ static stp_sf16 specular_fixed(const stp_shade_fast *s, int32_t n_dot_l, int32_t
         gne = (uint32_t)1 << 29;
     d = gloss_q30(s, (uint32_t)Q30 - nh);
     df = mul_u16(d << 1, fresnel_q16(s, eh, e_dot_l));
-    return sf_mul(s->ks, sf_make(mul_hi_fast(df, gne << 2), 27));
+    return mul_hi_fast(df, gne << 2);
 }
 
 /* Ks D F G/(N.E) of one light, from the cosines (Q30, N.L and N.E > 0)
@@ -558,25 +575,25 @@ static stp_sf16 specular_fixed(const stp_shade_fast *s, int32_t n_dot_l, int32_t
  *   E.H = |L + E|/2, 1/(E.H) = 2/|L + E| (one reciprocal square root);
  *   D = (1/(1 + (1 - N.H)/k))^2;
  *   G/(N.E) = min(1/(N.E), 2 (N.H) min(N.E, N.L)/((N.E)(E.H))). */
-static stp_sf16 specular_sf(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_dot_e,
-                            int32_t e_dot_l, stp_sf16 inv_ne, uint32_t inv_ne_q26)
+static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_dot_e,
+                              int32_t e_dot_l, stp_sf16 inv_ne, uint32_t inv_ne_q26, stp_sf16 wk)
 {
     uint32_t one_el = (uint32_t)(Q30 + e_dot_l), x, r, nh, eh, omx;
     int j;
-    stp_sf16 d, g, zero = {0, 0};
+    stp_sf16 d, g;
     if ((int32_t)one_el <= 0)
-        return zero; /* L = -E: H undefined */
+        return 0; /* L = -E: H undefined */
     x = one_el >= 0x80000000u ? 0xFFFFFFFFu : one_el << 1;
     r = rsqrt_any(x, &j); /* 1/|L + E| = r 2^(j - 31) */
     nh = mul_hi_fast((uint32_t)n_dot_l + (uint32_t)n_dot_e, r); /* the sum <= 2^31 + 8 */
     nh = nh >= (0x80000000u >> (1 + j)) ? (uint32_t)Q30 : nh << (1 + j);
     eh = mul_hi_fast(x, r) << j; /* sqrt(x) 2^14 <= 2^30 */
     if (nh == 0 || eh == 0)
-        return zero;
+        return 0;
     if (nh > (uint32_t)Q30)
         nh = (uint32_t)Q30;
     if (eh >= FRESNEL_C0)
-        return specular_fixed(s, n_dot_l, n_dot_e, nh, r, j, eh, e_dot_l, inv_ne, inv_ne_q26);
+        return share_times(specular_fixed(s, n_dot_l, n_dot_e, nh, r, j, eh, e_dot_l, inv_ne, inv_ne_q26), 27, wk);
     omx = (uint32_t)Q30 - nh;
     d = sf_one;
     if (omx != 0) {
@@ -589,7 +606,7 @@ static stp_sf16 specular_sf(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_
         g = sf_mul(g, sf_mul(sf_make((uint32_t)n_dot_l, 30), inv_ne));
     if (sf_less(inv_ne, g))
         g = inv_ne;
-    return sf_mul(sf_mul(sf_mul(s->ks, d), fresnel_sf(s, eh, e_dot_l >= Q30 ? 0u : ((uint32_t)Q30 - (uint32_t)e_dot_l) >> 1)), g);
+    return (int32_t)sf_to_fixed(sf_mul(sf_mul(sf_mul(d, fresnel_sf(s, eh, e_dot_l >= Q30 ? 0u : ((uint32_t)Q30 - (uint32_t)e_dot_l) >> 1)), g), wk), SUM_BITS, SHARE_CAP);
 }
 #endif
 
@@ -600,15 +617,18 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
     stp_fix background = stp_fix_clamp(lighting->background, 0, ONE);
     stp_fix refl = material->reflectivity, bright = lighting->brightness;
     stp_sf16 bright_sf = sf_make(bright > 0 ? (uint32_t)bright : 0u, F);
+    stp_sf16 refl_sf = sf_make(refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl, F);
+#if STP_WITH_SPECULAR
+    stp_sf16 ks_sf = sf_make(material->specular > 0 ? (uint32_t)material->specular : 0u, F);
+#endif
     int64_t ambient;
     int j, count;
     count = lighting->count < 0 ? 0 : (lighting->count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : lighting->count);
     if (bright <= 0)
         count = 0;
-    s->count = count;
-    s->parallel = parallel != 0;
-    s->refl_negative = refl < 0;
-    s->refl = sf_make(refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl, F);
+    s->count = (uint8_t)count;
+    s->parallel = (uint8_t)(parallel != 0);
+    s->refl_negative = (uint8_t)(refl < 0);
     s->attenuation_c = sf_make(lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u, 0);
     /* the ambient-only shade as shade_unit forms it: B R (2F bits, < 2^(31 + F)
      * in magnitude) times BRIGHT, capped, rounded once */
@@ -632,7 +652,7 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
         s->ambient = (int32_t)(a > SHARE_CAP ? SHARE_CAP : (a < -(int64_t)SHARE_CAP ? -(int64_t)SHARE_CAP : a));
     }
     s->eye = eye;
-    s->eye_big = is_big(eye);
+    s->eye_big = (uint8_t)is_big(eye);
     if (parallel) {
         stp_vec3 zero = {0, 0, 0};
         if (!dir_make(&s->e, &parallel_dir, &zero, is_big(parallel_dir), 1)) {
@@ -644,19 +664,22 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
         const stp_light *light = &lighting->lights[j];
         stp_sf16 p = sf_make(light->power > 0 ? (uint32_t)light->power : 0u, F);
         s->light[j] = light->position;
-        s->light_big[j] = is_big(light->position);
-        s->power[j] = sf_mul(bright_sf, p);
-        s->power[j].e -= F; /* per raw unit of C + U */
+        s->light_big[j] = (uint8_t)is_big(light->position);
+        p = sf_mul(bright_sf, p);
+        p.e -= F; /* per raw unit of C + U */
+        s->power_refl[j] = sf_mul(p, refl_sf);
+#if STP_WITH_SPECULAR
+        s->power_ks[j] = sf_mul(p, ks_sf);
+#endif
     }
 #if STP_WITH_SPECULAR
-    s->specular = material->specular > 0;
-    s->ks = sf_make(material->specular > 0 ? (uint32_t)material->specular : 0u, F);
+    s->specular = (uint8_t)(material->specular > 0);
     s->inv_gloss = sf_recip(sf_make(material->gloss < 1 ? 1u : (uint32_t)material->gloss, F));
     s->inv_gloss_q16 = sf_to_fixed(s->inv_gloss, 15, 0x7FFFFFFFu) << 1; /* below 2^32 */
     {
         stp_fix n = material->refraction <= 0 ? 1 : material->refraction;
         s->refraction = sf_make((uint32_t)n, F);
-        s->refraction_ge_1 = n >= ONE;
+        s->refraction_ge_1 = (uint8_t)(n >= ONE);
         s->inv_n2 = 0;
         s->n2 = 0;
         if (s->refraction_ge_1)
@@ -723,7 +746,7 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
 #endif
     for (j = 0; j < s->count; j++) {
         int32_t n_dot_l, share;
-        stp_sf16 w, term;
+        stp_sf16 w;
         int at_point = !dir_make(&l, &s->light[j], &point, s->light_big[j] | point_big, 1);
         if (!at_point) {
             n_dot_l = cos_n(dot_n(normal, &l), &l, nd);
@@ -734,16 +757,15 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
             n_dot_l = Q30; /* the light on the face: lit head-on (L = N), U = 0 */
             w = sf_recip(s->attenuation_c);
         }
-        w = sf_mul(w, s->power[j]); /* BRIGHT P_j / (C + U) */
-        term = sf_mul(sf_mul(s->refl, sf_make((uint32_t)n_dot_l, 30)), w);
-        share = (int32_t)sf_to_fixed(term, SUM_BITS, SHARE_CAP);
+        /* BRIGHT P_j |R| (N.L)/(C + U) */
+        share = share_times((uint32_t)n_dot_l, 30, sf_mul(w, s->power_refl[j]));
         if (s->refl_negative)
             share = -share;
 #if STP_WITH_SPECULAR
         if (s->specular) {
             int32_t e_dot_l = at_point ? n_dot_e : cos_dirs(e, &l);
-            term = sf_mul(specular_sf(s, n_dot_l, n_dot_e, e_dot_l, inv_ne, inv_ne_q26), w);
-            share += (int32_t)sf_to_fixed(term, SUM_BITS, SHARE_CAP);
+            share += specular_share(s, n_dot_l, n_dot_e, e_dot_l, inv_ne, inv_ne_q26,
+                                    sf_mul(w, s->power_ks[j]));
         }
 #endif
         if (share > 0) {

@@ -39,27 +39,26 @@ typedef struct stp_shade_fast_dir {
 
 /* Per-call constants of stp_shade_fast_face. */
 typedef struct stp_shade_fast {
-    int count;           /* lights that can reach a face (0 when BRIGHT <= 0) */
-    int parallel;        /* E constant (parallel projection) */
-    int specular;        /* the highlight is on (Ks > 0, STP_WITH_SPECULAR) */
-    int refl_negative;   /* R < 0: the diffuse term subtracts */
+    uint8_t count;       /* lights that can reach a face (0 when BRIGHT <= 0) */
+    uint8_t parallel;    /* E constant (parallel projection) */
+    uint8_t specular;    /* the highlight is on (Ks > 0, STP_WITH_SPECULAR) */
+    uint8_t refl_negative; /* R < 0: the diffuse term subtracts */
     stp_fix ambient_shade; /* the shade of a face no light reaches (exactly
                               as stp_shade_unit rounds it) */
     int32_t ambient;     /* BRIGHT B R in Q26 (one = 2^26), in [-2^29, 2^29] */
     stp_vec3 eye;        /* perspective: the centre of projection */
-    int eye_big;         /* a component of eye outside [-2^30, 2^30) */
+    uint8_t eye_big;     /* a component of eye outside [-2^30, 2^30) */
     stp_shade_fast_dir e; /* parallel: the direction towards the eye */
     stp_vec3 light[STP_MAX_LIGHTS];
-    int light_big[STP_MAX_LIGHTS];
-    stp_sf16 power[STP_MAX_LIGHTS]; /* BRIGHT P_j 2^F (per raw unit of C + U) */
-    stp_sf16 refl;       /* |R| */
+    uint8_t light_big[STP_MAX_LIGHTS];
+    stp_sf16 power_refl[STP_MAX_LIGHTS]; /* BRIGHT P_j |R| 2^F (per raw unit of C + U) */
     stp_sf16 attenuation_c; /* C in raw stp_fix units */
 #if STP_WITH_SPECULAR
-    stp_sf16 ks;         /* Ks */
+    stp_sf16 power_ks[STP_MAX_LIGHTS]; /* BRIGHT P_j Ks 2^F (per raw unit of C + U) */
     stp_sf16 inv_gloss;  /* 1/k */
     uint32_t inv_gloss_q16; /* 1/k in Q16, at most 2^32 - 1 */
     stp_sf16 refraction; /* n (>= 1 branch) */
-    int refraction_ge_1; /* n >= 1: g = n sqrt(1 - (1 - c^2)/n^2) */
+    uint8_t refraction_ge_1; /* n >= 1: g = n sqrt(1 - (1 - c^2)/n^2) */
     uint32_t inv_n2;     /* n >= 1: 1/n^2 in Q31 */
     uint32_t n2;         /* n < 1: n^2 in Q30 */
     /* n >= 1: F(c) in Q16 (capped at 65535) at c = 1/4 + i/64, i = 0..48
