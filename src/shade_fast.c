@@ -398,13 +398,12 @@ static stp_sf16 dir_length(const stp_shade_fast_dir *d)
  * the sum below 1.5 2^30), then times both 1/lengths. */
 static int32_t cos_dirs(const stp_shade_fast_dir *a, const stp_shade_fast_dir *b)
 {
-    int32_t s = 0;
+    const int32_t *aw = a->w, *bw = b->w;
+    /* |a_i (b_i >> 1)| < 2^16 2^15; b_i & 1 is 0 or 1 */
+    int32_t s = asr32(aw[0] * asr32(bw[0], 1), 2) + asr32(aw[1] * asr32(bw[1], 1), 2) +
+                asr32(aw[2] * asr32(bw[2], 1), 2) +
+                asr32(aw[0] * (bw[0] & 1) + aw[1] * (bw[1] & 1) + aw[2] * (bw[2] & 1), 3);
     uint32_t m;
-    int i;
-    for (i = 0; i < 3; i++) {
-        int32_t h = asr32(b->w[i], 1); /* |a w h| < 2^16 2^15 */
-        s += asr32(a->w[i] * h, 2) + ((b->w[i] & 1) ? asr32(a->w[i], 3) : 0);
-    }
     m = s < 0 ? 0u - (uint32_t)s : (uint32_t)s;
     m = mul_hi_fast(mul_hi_fast(m, a->r), b->r) << (3 + a->j + b->j);
     if (m > (uint32_t)Q30)
