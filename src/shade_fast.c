@@ -78,6 +78,7 @@ HOT_INLINE int bit_length32(uint32_t v)
 #endif
 }
 
+#if STP_WITH_SPECULAR /* used by prepare's Fresnel table and the exact Fresnel */
 /* floor(a b / 2^32), exact: one 64-bit product where that is one
  * instruction (STP_WIDE_ARITH), else four 16 x 16 -> 32 products (the same
  * value). */
@@ -92,6 +93,7 @@ static inline uint32_t mul_hi(uint32_t a, uint32_t b)
     return ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
 #endif
 }
+#endif
 
 /* floor(a b / 2^32) - t with t in {0, 1, 2}: on ARMv6-M three 16 x 16
  * products (the low halves' product and the carries from the middle
@@ -591,7 +593,7 @@ static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t 
         return 0;
     if (nh > (uint32_t)Q30)
         nh = (uint32_t)Q30;
-    if (eh >= FRESNEL_C0)
+    if (eh >= FRESNEL_C0 && j <= 1) /* j <= 1: |L + E| >= 1/2 */
         return share_times(specular_fixed(s, n_dot_l, n_dot_e, nh, r, j, eh, e_dot_l, inv_ne, inv_ne_q26), 27, wk);
     omx = (uint32_t)Q30 - nh;
     d = sf_one;
