@@ -9,16 +9,24 @@
  *   cosines  Q30 in int32 (one = 2^30): N.E, N.L, E.L, N.H, E.H, within
  *            [-2^30, 2^30] after clamping (rounding can exceed 1 by a few
  *            units: each is clamped where it feeds a formula that needs <= 1)
- *   stp_sf16 16-bit mantissa floating numbers for everything after the
- *            cosines (D, F, G/(N.E), Ks, R, 1/(C + U), BRIGHT P_j): their
- *            range is any exponent, so a grazing 1/(N.E) or a huge BRIGHT
- *            cannot overflow; each operation truncates (relative error
- *            below 2^-15)
+ *   D, F, G/(N.E) where E.H >= 1/4 (specular_fixed): D in Q30 (<= 1),
+ *            F in Q16 (<= 65535, the prepared table), G/(N.E) in Q26 (<=
+ *            min(1/(N.E), 2 N.H/E.H) <= 8, capped at 2^29), D F G/(N.E)
+ *            in Q27 (<= 2^30); below E.H = 1/4 (L nearly opposite E) the
+ *            old stp_sf16 route with the exact Fresnel
+ *   stp_sf16 16-bit mantissa floating numbers where the range is not
+ *            bounded: BRIGHT P_j |R| and BRIGHT P_j Ks (prepared),
+ *            1/(C + U), 1/(N.E), their products: any exponent, so a huge
+ *            BRIGHT or a grazing view cannot overflow; each operation
+ *            truncates (relative error below 2^-15)
  *   sums     Q26 in int32 (one = 2^26): each light's share is saturated at
  *            8 and the sum returns 1 as soon as it reaches 1 (every share
  *            is >= 0), so at most 2^26 + 2 2^29 < 2^31 is ever formed.
- * Products of two 32-bit numbers whose high word is needed (the cosines'
- * 30 bits) go through mul_hi: four 16 x 16 -> 32 products, exact.
+ * High words of 32 x 32 products: mul_hi_fast (three 16 x 16 products on
+ * ARMv6-M, up to 2 units low; exact with STP_WIDE_ARITH) on the face path,
+ * where each product is used at 2^28 or more or only as an absolute
+ * error; mul_hi (four, exact) in prepare and the exact Fresnel; mul_u16
+ * where one factor has 16 bits (two products, exact).
  */
 #include "shade_fast_private.h"
 
