@@ -229,7 +229,7 @@ static stp_sf16 sf_mul(stp_sf16 a, stp_sf16 b)
 }
 
 /* 1/a for a != 0 */
-static stp_sf16 sf_recip(stp_sf16 a)
+HOT_INLINE stp_sf16 sf_recip(stp_sf16 a)
 {
     stp_sf16 r;
     r.m = recip16(a.m);
@@ -248,7 +248,7 @@ static uint32_t sf_aligned(stp_sf16 b, int d)
 }
 
 
-static stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
+HOT_INLINE stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
 {
     stp_sf16 t;
     uint32_t sum;
