@@ -448,7 +448,8 @@ static stp_sf16 sf_from_r(uint32_t r, int e)
  * (q 4^j is brought into [2^30, 2^32)). */
 static uint32_t rsqrt_any(uint32_t q, int *j)
 {
-    *j = (32 - bit_length32(q)) >> 1;
+    /* the common cases (|L + E|^2 >= 1/4) without a search */
+    *j = q >= 0x40000000u ? 0 : (q >= 0x10000000u ? 1 : (32 - bit_length32(q)) >> 1);
     return rsqrt_norm(q << (2 * *j));
 }
 
