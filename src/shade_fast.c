@@ -9,16 +9,24 @@
  *   cosines  Q30 in int32 (one = 2^30): N.E, N.L, E.L, N.H, E.H, within
  *            [-2^30, 2^30] after clamping (rounding can exceed 1 by a few
  *            units: each is clamped where it feeds a formula that needs <= 1)
- *   stp_sf16 16-bit mantissa floating numbers for everything after the
- *            cosines (D, F, G/(N.E), Ks, R, 1/(C + U), BRIGHT P_j): their
- *            range is any exponent, so a grazing 1/(N.E) or a huge BRIGHT
- *            cannot overflow; each operation truncates (relative error
- *            below 2^-15)
+ *   D, F, G/(N.E) where E.H >= 1/4 (specular_fixed): D in Q30 (<= 1),
+ *            F in Q16 (<= 65535, the prepared table), G/(N.E) in Q26 (<=
+ *            min(1/(N.E), 2 N.H/E.H) <= 8, capped at 2^29), D F G/(N.E)
+ *            in Q27 (<= 2^30); below E.H = 1/4 (L nearly opposite E) the
+ *            old stp_sf16 route with the exact Fresnel
+ *   stp_sf16 16-bit mantissa floating numbers where the range is not
+ *            bounded: BRIGHT P_j |R| and BRIGHT P_j Ks (prepared),
+ *            1/(C + U), 1/(N.E), their products: any exponent, so a huge
+ *            BRIGHT or a grazing view cannot overflow; each operation
+ *            truncates (relative error below 2^-15)
  *   sums     Q26 in int32 (one = 2^26): each light's share is saturated at
  *            8 and the sum returns 1 as soon as it reaches 1 (every share
  *            is >= 0), so at most 2^26 + 2 2^29 < 2^31 is ever formed.
- * Products of two 32-bit numbers whose high word is needed (the cosines'
- * 30 bits) go through mul_hi: four 16 x 16 -> 32 products, exact.
+ * High words of 32 x 32 products: mul_hi_fast (three 16 x 16 products on
+ * ARMv6-M, up to 2 units low; exact with STP_WIDE_ARITH) on the face path,
+ * where each product is used at 2^28 or more or only as an absolute
+ * error; mul_hi (four, exact) in prepare and the exact Fresnel; mul_u16
+ * where one factor has 16 bits (two products, exact).
  */
 #include "shade_fast_private.h"
 
@@ -59,6 +67,8 @@ HOT_INLINE int bit_length32(uint32_t v)
 #if defined(__GNUC__) && (STP_WIDE_ARITH || defined(__ARM_FEATURE_CLZ))
     return v == 0 ? 0 : 32 - __builtin_clz(v); /* one instruction there */
 #else
+    /* three halvings of the range, then the length of a 4-bit value */
+    static const uint16_t len4[16] STP_TABLE = {0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4};
     int n = 0;
     if (v >= 0x10000u) {
         v >>= 16;
@@ -72,18 +82,11 @@ HOT_INLINE int bit_length32(uint32_t v)
         v >>= 4;
         n += 4;
     }
-    if (v >= 4u) {
-        v >>= 2;
-        n += 2;
-    }
-    if (v >= 2u) {
-        v >>= 1;
-        n += 1;
-    }
-    return n + (int)v;
+    return n + (int)STP_TABLE_U16(&len4[v]);
 #endif
 }
 
+#if STP_WITH_SPECULAR /* used by prepare's Fresnel table and the exact Fresnel */
 /* floor(a b / 2^32), exact: one 64-bit product where that is one
  * instruction (STP_WIDE_ARITH), else four 16 x 16 -> 32 products (the same
  * value). */
@@ -96,6 +99,31 @@ static inline uint32_t mul_hi(uint32_t a, uint32_t b)
     uint32_t lh = al * bh, hl = ah * bl;
     uint32_t mid = ((al * bl) >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
     return ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+#endif
+}
+#endif
+
+/* floor(a b / 2^32) - t with t in {0, 1, 2}: on ARMv6-M three 16 x 16
+ * products (the low halves' product and the carries from the middle
+ * sums' low halves are dropped); exact with STP_WIDE_ARITH.  For products
+ * whose last two units do not matter (each use is at least 2^28). */
+HOT_INLINE uint32_t mul_hi_fast(uint32_t a, uint32_t b)
+{
+#if STP_WIDE_ARITH
+    return (uint32_t)(((uint64_t)a * b) >> 32);
+#else
+    uint32_t ah = a >> 16, bh = b >> 16;
+    return ah * bh + ((ah * (b & 0xFFFFu)) >> 16) + (((a & 0xFFFFu) * bh) >> 16);
+#endif
+}
+
+/* floor(a m / 2^16) for m < 2^16, exact: two 32-bit products */
+HOT_INLINE uint32_t mul_u16(uint32_t a, uint32_t m)
+{
+#if STP_WIDE_ARITH
+    return (uint32_t)(((uint64_t)a * m) >> 16);
+#else
+    return (a >> 16) * m + (((a & 0xFFFFu) * m) >> 16);
 #endif
 }
 
@@ -155,7 +183,7 @@ static uint32_t rsqrt_norm(uint32_t q)
     if (y > 0xFFFFu)
         y = 0xFFFFu;
     /* q y^2 2^-32 ~ 2^30, y^2 < 2^32; e is now below 2^20 */
-    e = Q30 - (int32_t)mul_hi(q, y * y);
+    e = Q30 - (int32_t)mul_hi_fast(q, y * y);
     return (y << 15) + (uint32_t)mul_q16(e, y);
 }
 
@@ -201,7 +229,7 @@ static stp_sf16 sf_mul(stp_sf16 a, stp_sf16 b)
 }
 
 /* 1/a for a != 0 */
-static stp_sf16 sf_recip(stp_sf16 a)
+HOT_INLINE stp_sf16 sf_recip(stp_sf16 a)
 {
     stp_sf16 r;
     r.m = recip16(a.m);
@@ -220,7 +248,7 @@ static uint32_t sf_aligned(stp_sf16 b, int d)
 }
 
 
-static stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
+HOT_INLINE stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
 {
     stp_sf16 t;
     uint32_t sum;
@@ -243,6 +271,7 @@ static stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
     return a;
 }
 
+#if STP_WITH_SPECULAR
 /* a 2^q truncated, saturated at cap (< 2^31) */
 static uint32_t sf_to_fixed(stp_sf16 a, int q, uint32_t cap)
 {
@@ -254,6 +283,22 @@ static uint32_t sf_to_fixed(stp_sf16 a, int q, uint32_t cap)
         return cap; /* >= 2^31 */
     v = sh >= 0 ? a.m << sh : a.m >> -sh;
     return v > cap ? cap : v;
+}
+#endif
+
+/* p 2^sh in Q26 for the sums, saturated at SHARE_CAP */
+HOT_INLINE int32_t share_of(uint32_t p, int sh)
+{
+    if (sh >= 0)
+        return sh >= 31 || p > (SHARE_CAP >> sh) ? (int32_t)SHARE_CAP : (int32_t)(p << sh);
+    return sh <= -32 ? 0 : (int32_t)(p >> -sh);
+}
+
+/* a b in Q26 for a in Q(q) (a < 2^31), b = m 2^-e: floor(2 a m 2^-16)
+ * = a m 2^-15 scaled by 2^(26 - q + 15 - e) */
+HOT_INLINE int32_t share_times(uint32_t a, int q, stp_sf16 b)
+{
+    return share_of(mul_u16(a << 1, b.m), 41 - q - b.e);
 }
 
 /* ---- directions ---- */
@@ -270,54 +315,69 @@ static int is_big(stp_vec3 a)
  * Returns 0 for a zero difference (d->w = 0 then). */
 static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b, int big, int need_r)
 {
-    int32_t v[3];
-    uint32_t m = 0, q = 0;
-    int i, n;
+    int32_t v0, v1, v2;
+    uint32_t u0, u1, u2, q;
+    int n;
     if (big) {
-        v[0] = asr32(a->x, 1) - asr32(b->x, 1);
-        v[1] = asr32(a->y, 1) - asr32(b->y, 1);
-        v[2] = asr32(a->z, 1) - asr32(b->z, 1);
+        v0 = asr32(a->x, 1) - asr32(b->x, 1);
+        v1 = asr32(a->y, 1) - asr32(b->y, 1);
+        v2 = asr32(a->z, 1) - asr32(b->z, 1);
     } else {
-        v[0] = a->x - b->x;
-        v[1] = a->y - b->y;
-        v[2] = a->z - b->z;
+        v0 = a->x - b->x;
+        v1 = a->y - b->y;
+        v2 = a->z - b->z;
     }
-    for (i = 0; i < 3; i++) {
-        uint32_t u = v[i] < 0 ? 0u - (uint32_t)v[i] : (uint32_t)v[i];
-        if (u > m)
-            m = u;
-    }
-    if (m == 0) {
+    u0 = v0 < 0 ? 0u - (uint32_t)v0 : (uint32_t)v0;
+    u1 = v1 < 0 ? 0u - (uint32_t)v1 : (uint32_t)v1;
+    u2 = v2 < 0 ? 0u - (uint32_t)v2 : (uint32_t)v2;
+    /* the bit length of the largest |v_i| is that of their OR */
+    n = bit_length32(u0 | u1 | u2) - 16; /* the largest 2^-n in [2^15, 2^16) */
+    if (n == -16) {
         d->w[0] = d->w[1] = d->w[2] = 0;
         return 0;
     }
-    n = bit_length32(m) - 16; /* m 2^-n in [2^15, 2^16) */
     d->shift = n + big;
+    /* |v_i| 2^-n truncated, below 2^16: the direction moves by at most
+     * 2^-15 radian, which moves a cosine near 1 only to second order */
     if (n > 0) {
-        for (i = 0; i < 3; i++) {
-            int32_t w = asr32(asr32(v[i], n - 1) + 1, 1); /* rounded to nearest */
-            /* the rounding of the largest may reach 2^16: kept below, so
-             * w^2 < 2^32 (int32_t constants: 0xFFFF is an unsigned int where
-             * int has 16 bits) */
-            if (w > (int32_t)0xFFFF)
-                w = (int32_t)0xFFFF;
-            if (w < -(int32_t)0xFFFF)
-                w = -(int32_t)0xFFFF;
-            d->w[i] = w;
-            q += ((uint32_t)w * (uint32_t)w) >> 2; /* w^2 < 2^32: exact mod 2^32 */
-        }
+        u0 >>= n;
+        u1 >>= n;
+        u2 >>= n;
     } else {
-        for (i = 0; i < 3; i++) {
-            int32_t w = v[i] * ((int32_t)1 << -n); /* exact, |w| < 2^16 */
-            d->w[i] = w;
-            q += ((uint32_t)w * (uint32_t)w) >> 2;
-        }
+        u0 <<= -n;
+        u1 <<= -n;
+        u2 <<= -n;
     }
+    d->w[0] = v0 < 0 ? -(int32_t)u0 : (int32_t)u0;
+    d->w[1] = v1 < 0 ? -(int32_t)u1 : (int32_t)u1;
+    d->w[2] = v2 < 0 ? -(int32_t)u2 : (int32_t)u2;
+    q = ((u0 * u0) >> 2) + ((u1 * u1) >> 2) + ((u2 * u2) >> 2); /* each u^2 < 2^32 */
     d->q = q; /* in [2^28, 3 2^30) */
     d->j = q < 0x40000000u;
     if (need_r)
         d->r = rsqrt_norm(q << (2 * d->j));
     return 1;
+}
+
+/* N.(a - b) > 0, exactly, for |a_i|, |b_i| < 2^30 (not big): with
+ * v = a - b = h 2^16 + l (h = v >> 16, |h| <= 2^15; l in [0, 2^16)),
+ * N.v = 2^16 A + 2 B + c, A = N.h, B = N.(l >> 1), c = N.(l & 1):
+ * |A|, |B| <= 3 2^29 (|N_i| <= 2^14 + 2), |c| < 2^16.  N.v > 0 iff
+ * 2^15 A + s > 0 with s = B + c/2 (exact in halves: the sign of
+ * 2^15 A + B + c/2 is that of 2^15 A + floor(B + c/2) unless the sum is
+ * 0 or -1/2, both "not > 0" as floor keeps them <= 0). */
+static int faces_point(const int16_t n[3], const stp_vec3 *a, const stp_vec3 *b)
+{
+    int32_t v0 = a->x - b->x, v1 = a->y - b->y, v2 = a->z - b->z;
+    int32_t h = (int32_t)n[0] * asr32(v0, 16) + (int32_t)n[1] * asr32(v1, 16) + (int32_t)n[2] * asr32(v2, 16);
+    int32_t l = (int32_t)n[0] * (int32_t)(((uint32_t)v0 & 0xFFFFu) >> 1) +
+                (int32_t)n[1] * (int32_t)(((uint32_t)v1 & 0xFFFFu) >> 1) +
+                (int32_t)n[2] * (int32_t)(((uint32_t)v2 & 0xFFFFu) >> 1);
+    int32_t c = (int32_t)n[0] * (int32_t)((uint32_t)v0 & 1u) + (int32_t)n[1] * (int32_t)((uint32_t)v1 & 1u) +
+                (int32_t)n[2] * (int32_t)((uint32_t)v2 & 1u);
+    int32_t t = l + asr32(c, 1); /* floor(B + c/2): |t| < 2^31 */
+    /* 2^15 h + t > 0  <=>  h > floor(-t / 2^15) */
+    return h > asr32(-t, 15);
 }
 
 /* N.w (|.| < 2^31: see the file comment) */
@@ -331,7 +391,7 @@ static int32_t dot_n(const int16_t n[3], const stp_shade_fast_dir *d)
 static int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t nd)
 {
     uint32_t a = dot < 0 ? 0u - (uint32_t)dot : (uint32_t)dot;
-    int32_t c = (int32_t)(mul_hi(a, d->r) << (1 + d->j)); /* <= 2^30 (1 + 2^-12) */
+    int32_t c = (int32_t)(mul_hi_fast(a, d->r) << (1 + d->j)); /* <= 2^30 (1 + 2^-12) */
     c -= asr32(asr32(c, 15) * asr32(nd, 2), 12); /* 2^15 2^15: fits */
     return dot < 0 ? -c : c;
 }
@@ -339,7 +399,7 @@ static int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t nd)
 /* The length of d's vector in raw stp_fix units: 2 sqrt(q) 2^shift */
 static stp_sf16 dir_length(const stp_shade_fast_dir *d)
 {
-    return sf_make(mul_hi(d->q, d->r), 13 - d->j - d->shift);
+    return sf_make(mul_hi_fast(d->q, d->r), 13 - d->j - d->shift);
 }
 
 #if STP_WITH_SPECULAR
@@ -348,15 +408,14 @@ static stp_sf16 dir_length(const stp_shade_fast_dir *d)
  * the sum below 1.5 2^30), then times both 1/lengths. */
 static int32_t cos_dirs(const stp_shade_fast_dir *a, const stp_shade_fast_dir *b)
 {
-    int32_t s = 0;
+    const int32_t *aw = a->w, *bw = b->w;
+    /* |a_i (b_i >> 1)| < 2^16 2^15; b_i & 1 is 0 or 1 */
+    int32_t s = asr32(aw[0] * asr32(bw[0], 1), 2) + asr32(aw[1] * asr32(bw[1], 1), 2) +
+                asr32(aw[2] * asr32(bw[2], 1), 2) +
+                asr32(aw[0] * (bw[0] & 1) + aw[1] * (bw[1] & 1) + aw[2] * (bw[2] & 1), 3);
     uint32_t m;
-    int i;
-    for (i = 0; i < 3; i++) {
-        int32_t h = asr32(b->w[i], 1); /* |a w h| < 2^16 2^15 */
-        s += asr32(a->w[i] * h, 2) + ((b->w[i] & 1) ? asr32(a->w[i], 3) : 0);
-    }
     m = s < 0 ? 0u - (uint32_t)s : (uint32_t)s;
-    m = mul_hi(mul_hi(m, a->r), b->r) << (3 + a->j + b->j);
+    m = mul_hi_fast(mul_hi_fast(m, a->r), b->r) << (3 + a->j + b->j);
     if (m > (uint32_t)Q30)
         m = (uint32_t)Q30;
     return s < 0 ? -(int32_t)m : (int32_t)m;
@@ -389,7 +448,8 @@ static stp_sf16 sf_from_r(uint32_t r, int e)
  * (q 4^j is brought into [2^30, 2^32)). */
 static uint32_t rsqrt_any(uint32_t q, int *j)
 {
-    *j = (32 - bit_length32(q)) >> 1;
+    /* the common cases (|L + E|^2 >= 1/4) without a search */
+    *j = q >= 0x40000000u ? 0 : (q >= 0x10000000u ? 1 : (32 - bit_length32(q)) >> 1);
     return rsqrt_norm(q << (2 * *j));
 }
 
@@ -453,29 +513,97 @@ static stp_sf16 fresnel_sf(const stp_shade_fast *s, uint32_t c, uint32_t u)
     return sf_less(sf_one, r) ? sf_one : r;
 }
 
+/* The table's first node (c = 1/4) in Q30; nodes every 1/64 (2^24) */
+#define FRESNEL_C0 ((uint32_t)1 << 28)
+
+/* F at c = E.H (Q30, in [2^28, 2^30]: c >= 1/4) in Q16, at most 65535:
+ * the prepared table linearly interpolated (n >= 1), else fresnel_sf. */
+static uint32_t fresnel_q16(const stp_shade_fast *s, uint32_t c, int32_t e_dot_l)
+{
+    if (s->refraction_ge_1) {
+        uint32_t i = (c - FRESNEL_C0) >> 24, frac = ((c - FRESNEL_C0) >> 8) & 0xFFFFu;
+        uint32_t a = s->fresnel[i];
+        int32_t d;
+        if (i >= STP_SHADE_FAST_FRESNEL_NODES - 1)
+            return a;
+        d = (int32_t)s->fresnel[i + 1] - (int32_t)a; /* |d| < 2^16 */
+        return (uint32_t)((int32_t)a + asr32(d * (int32_t)frac, 16));
+    }
+    return sf_to_fixed(fresnel_sf(s, c, e_dot_l >= Q30 ? 0u : ((uint32_t)Q30 - (uint32_t)e_dot_l) >> 1),
+                       16, 0xFFFFu);
+}
+
+/* D = (1/(1 + (1 - N.H)/k))^2 in Q30 from omx = 1 - N.H (Q30, < 2^30):
+ * x = omx/k in Q16 (below 2^32: 1/k in Q16 is below 2^32), t = 1 + x
+ * = m 2^(n - 16) with m in [2^15, 2^16), 1/t = y 2^(-15 - n) with
+ * y = 2^31/m (recip16), D = y^2 2^(-30 - 2n).  0 when x >= 2^31 (D < 2^-30). */
+static uint32_t gloss_q30(const stp_shade_fast *s, uint32_t omx)
+{
+    uint32_t x = mul_hi_fast(omx << 2, s->inv_gloss_q16), t, y;
+    int n;
+    if (x >= 0x80000000u)
+        return 0;
+    t = ((uint32_t)1 << 16) + x;
+    n = bit_length32(t) - 16; /* 1 .. 16 */
+    y = recip16(t >> n);
+    if (y > 0xFFFFu) /* m = 2^15: D = 2^(32 - 2n) 2^-30 */
+        return n >= 16 ? 0u : (uint32_t)1 << (32 - 2 * n);
+    return n >= 16 ? 0u : (y * y) >> (2 * n);
+}
+
+/* Ks D F G/(N.E) where E.H >= 1/4 (so G/(N.E) <= 2 (N.H)/(E.H) <= 8):
+ * fixed formats, one conversion to stp_sf16 at the end.
+ *   g1 = 2 N.H/E.H = 4 N.H/|L + E| in Q26 (<= 2^29),
+ *   G/(N.E) = min(1/(N.E), g1 min(1, N.L/N.E)) in Q26 (<= 2^29),
+ *   D in Q30, F in Q16, D F in Q31, D F G/(N.E) in Q27 (<= 2^30). */
+static uint32_t specular_fixed(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_dot_e,
+                               uint32_t nh, uint32_t r, int j, uint32_t eh, int32_t e_dot_l,
+                               stp_sf16 inv_ne, uint32_t inv_ne_q26)
+{
+    uint32_t g1 = mul_hi_fast(nh, r) >> (1 - j), gne = g1, d, df;
+    if (n_dot_l < n_dot_e) {
+        /* N.L/N.E < 1 in Q30: N.L m 2^-e (inv_ne = m 2^-e) */
+        uint32_t p = mul_u16((uint32_t)n_dot_l << 1, inv_ne.m); /* N.L m 2^-15 */
+        int sh = 15 - inv_ne.e;
+        uint32_t ratio = sh >= 0 ? (sh >= 16 ? (uint32_t)Q30 : p << sh) : (sh <= -32 ? 0u : p >> -sh);
+        if (ratio > (uint32_t)Q30)
+            ratio = (uint32_t)Q30;
+        gne = mul_hi_fast(g1 << 2, ratio); /* g1 ratio in Q26 */
+    }
+    if (gne > inv_ne_q26)
+        gne = inv_ne_q26;
+    if (gne > ((uint32_t)1 << 29))
+        gne = (uint32_t)1 << 29;
+    d = gloss_q30(s, (uint32_t)Q30 - nh);
+    df = mul_u16(d << 1, fresnel_q16(s, eh, e_dot_l));
+    return mul_hi_fast(df, gne << 2);
+}
+
 /* Ks D F G/(N.E) of one light, from the cosines (Q30, N.L and N.E > 0)
  * and inv_ne = 1/(N.E):
  *   |L + E|^2 = 2 (1 + E.L) = X, N.H = (N.L + N.E)/|L + E|,
  *   E.H = |L + E|/2, 1/(E.H) = 2/|L + E| (one reciprocal square root);
  *   D = (1/(1 + (1 - N.H)/k))^2;
  *   G/(N.E) = min(1/(N.E), 2 (N.H) min(N.E, N.L)/((N.E)(E.H))). */
-static stp_sf16 specular_sf(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_dot_e,
-                            int32_t e_dot_l, stp_sf16 inv_ne)
+static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_dot_e,
+                              int32_t e_dot_l, stp_sf16 inv_ne, uint32_t inv_ne_q26, stp_sf16 wk)
 {
     uint32_t one_el = (uint32_t)(Q30 + e_dot_l), x, r, nh, eh, omx;
     int j;
-    stp_sf16 d, g, zero = {0, 0};
+    stp_sf16 d, g;
     if ((int32_t)one_el <= 0)
-        return zero; /* L = -E: H undefined */
+        return 0; /* L = -E: H undefined */
     x = one_el >= 0x80000000u ? 0xFFFFFFFFu : one_el << 1;
     r = rsqrt_any(x, &j); /* 1/|L + E| = r 2^(j - 31) */
-    nh = mul_hi((uint32_t)n_dot_l + (uint32_t)n_dot_e, r); /* the sum <= 2^31 + 8 */
+    nh = mul_hi_fast((uint32_t)n_dot_l + (uint32_t)n_dot_e, r); /* the sum <= 2^31 + 8 */
     nh = nh >= (0x80000000u >> (1 + j)) ? (uint32_t)Q30 : nh << (1 + j);
-    eh = mul_hi(x, r) << j; /* sqrt(x) 2^14 <= 2^30 */
+    eh = mul_hi_fast(x, r) << j; /* sqrt(x) 2^14 <= 2^30 */
     if (nh == 0 || eh == 0)
-        return zero;
+        return 0;
     if (nh > (uint32_t)Q30)
         nh = (uint32_t)Q30;
+    if (eh >= FRESNEL_C0 && j <= 1) /* j <= 1: |L + E| >= 1/2 */
+        return share_times(specular_fixed(s, n_dot_l, n_dot_e, nh, r, j, eh, e_dot_l, inv_ne, inv_ne_q26), 27, wk);
     omx = (uint32_t)Q30 - nh;
     d = sf_one;
     if (omx != 0) {
@@ -488,7 +616,7 @@ static stp_sf16 specular_sf(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_
         g = sf_mul(g, sf_mul(sf_make((uint32_t)n_dot_l, 30), inv_ne));
     if (sf_less(inv_ne, g))
         g = inv_ne;
-    return sf_mul(sf_mul(sf_mul(s->ks, d), fresnel_sf(s, eh, e_dot_l >= Q30 ? 0u : ((uint32_t)Q30 - (uint32_t)e_dot_l) >> 1)), g);
+    return (int32_t)sf_to_fixed(sf_mul(sf_mul(sf_mul(d, fresnel_sf(s, eh, e_dot_l >= Q30 ? 0u : ((uint32_t)Q30 - (uint32_t)e_dot_l) >> 1)), g), wk), SUM_BITS, SHARE_CAP);
 }
 #endif
 
@@ -499,15 +627,18 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
     stp_fix background = stp_fix_clamp(lighting->background, 0, ONE);
     stp_fix refl = material->reflectivity, bright = lighting->brightness;
     stp_sf16 bright_sf = sf_make(bright > 0 ? (uint32_t)bright : 0u, F);
+    stp_sf16 refl_sf = sf_make(refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl, F);
+#if STP_WITH_SPECULAR
+    stp_sf16 ks_sf = sf_make(material->specular > 0 ? (uint32_t)material->specular : 0u, F);
+#endif
     int64_t ambient;
     int j, count;
     count = lighting->count < 0 ? 0 : (lighting->count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : lighting->count);
     if (bright <= 0)
         count = 0;
-    s->count = count;
-    s->parallel = parallel != 0;
-    s->refl_negative = refl < 0;
-    s->refl = sf_make(refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl, F);
+    s->count = (uint8_t)count;
+    s->parallel = (uint8_t)(parallel != 0);
+    s->refl_negative = (uint8_t)(refl < 0);
     s->attenuation_c = sf_make(lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u, 0);
     /* the ambient-only shade as shade_unit forms it: B R (2F bits, < 2^(31 + F)
      * in magnitude) times BRIGHT, capped, rounded once */
@@ -531,7 +662,7 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
         s->ambient = (int32_t)(a > SHARE_CAP ? SHARE_CAP : (a < -(int64_t)SHARE_CAP ? -(int64_t)SHARE_CAP : a));
     }
     s->eye = eye;
-    s->eye_big = is_big(eye);
+    s->eye_big = (uint8_t)is_big(eye);
     if (parallel) {
         stp_vec3 zero = {0, 0, 0};
         if (!dir_make(&s->e, &parallel_dir, &zero, is_big(parallel_dir), 1)) {
@@ -543,18 +674,22 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
         const stp_light *light = &lighting->lights[j];
         stp_sf16 p = sf_make(light->power > 0 ? (uint32_t)light->power : 0u, F);
         s->light[j] = light->position;
-        s->light_big[j] = is_big(light->position);
-        s->power[j] = sf_mul(bright_sf, p);
-        s->power[j].e -= F; /* per raw unit of C + U */
+        s->light_big[j] = (uint8_t)is_big(light->position);
+        p = sf_mul(bright_sf, p);
+        p.e -= F; /* per raw unit of C + U */
+        s->power_refl[j] = sf_mul(p, refl_sf);
+#if STP_WITH_SPECULAR
+        s->power_ks[j] = sf_mul(p, ks_sf);
+#endif
     }
 #if STP_WITH_SPECULAR
-    s->specular = material->specular > 0;
-    s->ks = sf_make(material->specular > 0 ? (uint32_t)material->specular : 0u, F);
+    s->specular = (uint8_t)(material->specular > 0);
     s->inv_gloss = sf_recip(sf_make(material->gloss < 1 ? 1u : (uint32_t)material->gloss, F));
+    s->inv_gloss_q16 = sf_to_fixed(s->inv_gloss, 15, 0x7FFFFFFFu) << 1; /* below 2^32 */
     {
         stp_fix n = material->refraction <= 0 ? 1 : material->refraction;
         s->refraction = sf_make((uint32_t)n, F);
-        s->refraction_ge_1 = n >= ONE;
+        s->refraction_ge_1 = (uint8_t)(n >= ONE);
         s->inv_n2 = 0;
         s->n2 = 0;
         if (s->refraction_ge_1)
@@ -563,6 +698,15 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
         else
             s->n2 = (uint32_t)(2 * F >= 30 ? ((int64_t)n * n) >> (2 * F - 30)
                                            : ((int64_t)n * n) << (30 - 2 * F)); /* n < 1: < 2^30 */
+    }
+    if (s->refraction_ge_1) {
+        /* the Fresnel table: exact F at its nodes (about 570 instructions
+         * each on ARMv6-M: the reason prepare is meant to be cached) */
+        for (j = 0; j < STP_SHADE_FAST_FRESNEL_NODES; j++) {
+            uint32_t c = FRESNEL_C0 + ((uint32_t)j << 24); /* <= 2^30 */
+            uint32_t u = (uint32_t)Q30 - (mul_hi(c << 1, c << 1)); /* 1 - c^2 in Q30 */
+            s->fresnel[j] = (uint16_t)sf_to_fixed(fresnel_sf(s, c, u), 16, 0xFFFFu);
+        }
     }
 #else
     s->specular = 0;
@@ -574,22 +718,29 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     stp_shade_fast_dir e_local, l;
     const stp_shade_fast_dir *e = &s->e;
     uint32_t nn;
-    int32_t nd, dot_e, sum = s->ambient;
+    int32_t nd, dot_e = 0, sum = s->ambient;
     int j, lit = 0, point_big = is_big(point);
 #if STP_WITH_SPECULAR
     int32_t n_dot_e = 0;
     stp_sf16 inv_ne = {0, 0};
+    uint32_t inv_ne_q26 = 0;
 #endif
     if (s->count == 0)
         return s->ambient_shade;
-    if (!s->parallel) {
+    if (!s->parallel && !s->specular && !(s->eye_big | point_big)) {
+        /* diffuse only: E matters only through the sign of N.E */
+        if (!faces_point(normal, &s->eye, &point))
+            return s->ambient_shade; /* a back face, or edge-on */
+    } else if (!s->parallel) {
         if (!dir_make(&e_local, &s->eye, &point, s->eye_big | point_big, s->specular))
             return s->ambient_shade; /* the eye on the face */
         e = &e_local;
     }
-    dot_e = dot_n(normal, e);
-    if (dot_e <= 0)
-        return s->ambient_shade; /* a back face, or edge-on */
+    if (s->parallel || s->specular || (s->eye_big | point_big)) {
+        dot_e = dot_n(normal, e);
+        if (dot_e <= 0)
+            return s->ambient_shade; /* a back face, or edge-on */
+    }
     /* |N|^2 - 1 in Q28: each n_i^2 <= 2^30, so the sum fits unsigned */
     nn = (uint32_t)((int32_t)normal[0] * normal[0]) + (uint32_t)((int32_t)normal[1] * normal[1]) +
          (uint32_t)((int32_t)normal[2] * normal[2]);
@@ -600,11 +751,12 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
         if (n_dot_e <= 0)
             return s->ambient_shade;
         inv_ne = sf_recip(sf_make((uint32_t)n_dot_e, 30));
+        inv_ne_q26 = sf_to_fixed(inv_ne, 26, 0x7FFFFFFFu);
     }
 #endif
     for (j = 0; j < s->count; j++) {
         int32_t n_dot_l, share;
-        stp_sf16 w, term;
+        stp_sf16 w;
         int at_point = !dir_make(&l, &s->light[j], &point, s->light_big[j] | point_big, 1);
         if (!at_point) {
             n_dot_l = cos_n(dot_n(normal, &l), &l, nd);
@@ -615,16 +767,15 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
             n_dot_l = Q30; /* the light on the face: lit head-on (L = N), U = 0 */
             w = sf_recip(s->attenuation_c);
         }
-        w = sf_mul(w, s->power[j]); /* BRIGHT P_j / (C + U) */
-        term = sf_mul(sf_mul(s->refl, sf_make((uint32_t)n_dot_l, 30)), w);
-        share = (int32_t)sf_to_fixed(term, SUM_BITS, SHARE_CAP);
+        /* BRIGHT P_j |R| (N.L)/(C + U) */
+        share = share_times((uint32_t)n_dot_l, 30, sf_mul(w, s->power_refl[j]));
         if (s->refl_negative)
             share = -share;
 #if STP_WITH_SPECULAR
         if (s->specular) {
             int32_t e_dot_l = at_point ? n_dot_e : cos_dirs(e, &l);
-            term = sf_mul(specular_sf(s, n_dot_l, n_dot_e, e_dot_l, inv_ne), w);
-            share += (int32_t)sf_to_fixed(term, SUM_BITS, SHARE_CAP);
+            share += specular_share(s, n_dot_l, n_dot_e, e_dot_l, inv_ne, inv_ne_q26,
+                                    sf_mul(w, s->power_ks[j]));
         }
 #endif
         if (share > 0) {

@@ -7,8 +7,10 @@
  * computed with 32 x 32 -> 32-bit products only (a 32 x 32 -> 64 product is
  * formed from four of them where 30 bits are needed) and no division: unit
  * vectors through a reciprocal square root (table seed and Newton steps),
- * reciprocals through a table seed and Newton steps, and the factors after
- * the cosines in a 16-bit-mantissa floating format (shade_fast.c).
+ * reciprocals through a table seed and Newton steps, Fresnel's F from a
+ * per-material table (built by prepare from the exact F), D, F and G/(N.E)
+ * in fixed formats where E.H >= 1/4 bounds them, and BRIGHT P_j/(C + U)
+ * in a 16-bit-mantissa floating format (shade_fast.c).
  * Measured error against the double reference: tests/shade_fast.
  */
 #ifndef STIPPLE_SHADE_FAST_PRIVATE_H
@@ -35,30 +37,35 @@ typedef struct stp_shade_fast_dir {
     int j, shift;
 } stp_shade_fast_dir;
 
+#define STP_SHADE_FAST_FRESNEL_NODES 49
+
 /* Per-call constants of stp_shade_fast_face. */
 typedef struct stp_shade_fast {
-    int count;           /* lights that can reach a face (0 when BRIGHT <= 0) */
-    int parallel;        /* E constant (parallel projection) */
-    int specular;        /* the highlight is on (Ks > 0, STP_WITH_SPECULAR) */
-    int refl_negative;   /* R < 0: the diffuse term subtracts */
+    uint8_t count;       /* lights that can reach a face (0 when BRIGHT <= 0) */
+    uint8_t parallel;    /* E constant (parallel projection) */
+    uint8_t specular;    /* the highlight is on (Ks > 0, STP_WITH_SPECULAR) */
+    uint8_t refl_negative; /* R < 0: the diffuse term subtracts */
     stp_fix ambient_shade; /* the shade of a face no light reaches (exactly
                               as stp_shade_unit rounds it) */
     int32_t ambient;     /* BRIGHT B R in Q26 (one = 2^26), in [-2^29, 2^29] */
     stp_vec3 eye;        /* perspective: the centre of projection */
-    int eye_big;         /* a component of eye outside [-2^30, 2^30) */
+    uint8_t eye_big;     /* a component of eye outside [-2^30, 2^30) */
     stp_shade_fast_dir e; /* parallel: the direction towards the eye */
     stp_vec3 light[STP_MAX_LIGHTS];
-    int light_big[STP_MAX_LIGHTS];
-    stp_sf16 power[STP_MAX_LIGHTS]; /* BRIGHT P_j 2^F (per raw unit of C + U) */
-    stp_sf16 refl;       /* |R| */
+    uint8_t light_big[STP_MAX_LIGHTS];
+    stp_sf16 power_refl[STP_MAX_LIGHTS]; /* BRIGHT P_j |R| 2^F (per raw unit of C + U) */
     stp_sf16 attenuation_c; /* C in raw stp_fix units */
 #if STP_WITH_SPECULAR
-    stp_sf16 ks;         /* Ks */
+    stp_sf16 power_ks[STP_MAX_LIGHTS]; /* BRIGHT P_j Ks 2^F (per raw unit of C + U) */
     stp_sf16 inv_gloss;  /* 1/k */
+    uint32_t inv_gloss_q16; /* 1/k in Q16, at most 2^32 - 1 */
     stp_sf16 refraction; /* n (>= 1 branch) */
-    int refraction_ge_1; /* n >= 1: g = n sqrt(1 - (1 - c^2)/n^2) */
+    uint8_t refraction_ge_1; /* n >= 1: g = n sqrt(1 - (1 - c^2)/n^2) */
     uint32_t inv_n2;     /* n >= 1: 1/n^2 in Q31 */
     uint32_t n2;         /* n < 1: n^2 in Q30 */
+    /* n >= 1: F(c) in Q16 (capped at 65535) at c = 1/4 + i/64, i = 0..48
+     * (E.H = c; below 1/4, and for n < 1, F is computed exactly) */
+    uint16_t fresnel[STP_SHADE_FAST_FRESNEL_NODES];
 #endif
 } stp_shade_fast;
 
@@ -66,7 +73,11 @@ typedef struct stp_shade_fast {
  * as render.c keeps them per segment) and the material.  eye: the centre of
  * projection in view coordinates (perspective); parallel != 0: parallel
  * projection with parallel_dir the direction towards the eye (any length
- * but 0; 0 gives (0, 0, -1)).  Cheap enough for once per mesh per frame. */
+ * but 0; 0 gives (0, 0, -1)).  Meant to be cached: call it only when the
+ * lighting, the material or the view changes, and keep the struct (about
+ * 320 bytes) across frames; with the highlight (Ks > 0, n >= 1) it builds
+ * the 49-node Fresnel table from the exact F, about 27 000 Cortex-M0+
+ * instructions (-O2; 39 400 at -Os), a few hundred otherwise. */
 void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
                             const stp_material *material, stp_vec3 eye, int parallel,
                             stp_vec3 parallel_dir);

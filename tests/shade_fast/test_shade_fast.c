@@ -35,10 +35,11 @@
 #define GRAZING 0.1
 
 /* Worst error allowed against the reference, and against stp_shade_unit
- * (measured at F = 16, printed: 2.1e-4 worst over the random faces, 1.1e-4
- * over the grid, 3.4e-5 over the stiff cases; 1.8e-4 from stp_shade_unit):
- * a margin of 2.4, and 1/67 of a 16-level INTENSITY step.  With
- * STP_WITH_SPECULAR 0 both paths are diffuse-only. */
+ * (measured at F = 16, printed: 1.8e-4 worst over the random faces,
+ * 6.2e-5 over the grid, 9.3e-5 over the Fresnel range sweep, 2.4e-5 over
+ * the highlight sweep, 1.9e-5 over the stiff cases; 1.4e-4 from
+ * stp_shade_unit): a margin of 2.8, and 1/67 of a 16-level INTENSITY step.
+ * With STP_WITH_SPECULAR 0 both paths are diffuse-only. */
 #if STP_FIX_FRAC_BITS >= 16
 #define TOL 5e-4
 #else
@@ -319,6 +320,46 @@ static void test_highlight_sweep(void **state)
     report("highlight sweep", &st);
 }
 
+/* E.H across its range, both sides of the Fresnel table's first node
+ * (E.H = 1/4: below it, and for n < 1, F is computed exactly): the light
+ * swept from beside the eye to behind the face's horizon, several indices
+ * (n near 1 has the steepest F near grazing) and glosses. */
+static void test_fresnel_range_sweep(void **state)
+{
+    static const double ns[] = {0.7, 1.0, 1.05, 1.5, 10.0, 100.0};
+    static const double ks[] = {0.05, 1.0, 10.0};
+    stats st;
+    int i, in, ik;
+    int16_t n[3];
+    ref_vec3 rn = q14_normal(0.0, 0.0, -1.0, n);
+    (void)state;
+    memset(&st, 0, sizeof st);
+    for (i = 0; i < 400; i++)
+        for (in = 0; in < 6; in++)
+            for (ik = 0; ik < 3; ik++) {
+                scene sc;
+                light_desc l;
+                /* the angle between L and E from 0 to 179 degrees, L in the
+                 * x-z plane, N.L > 0 while the angle stays below 180 - the
+                 * eye's angle (E nearly along N here, so almost everywhere) */
+                double a = (double)i * (179.0 / 400.0) * PI / 180.0;
+                double ex = 0.3, ez = -1.0, el = sqrt(ex * ex + ez * ez);
+                double b = atan2(ex / el, -ez / el) + a; /* E's angle from -z, plus a */
+                l.x = 4.0 * sin(b);
+                l.y = 0.1;
+                l.z = 5.0 - 4.0 * cos(b);
+                l.power = 4.0;
+                make_lighting(&sc.fl, &sc.rl, 1.0, 0.1, 1.0, &l, 1);
+                make_material(&sc.fm, &sc.rm, 0.5, ns[in], ks[ik], 1.0);
+                sc.eye = fvec(1.5, 0, 0);
+                sc.pdir = fvec(0, 0, -1);
+                sc.parallel = 0;
+                (void)check(&sc, n, rn, fvec(0, 0, 5), &st, "Fresnel range sweep");
+            }
+    report("Fresnel range sweep", &st);
+    assert_true(st.cases + st.graze_cases > 5000);
+}
+
 /* Random faces: normals anywhere, points and lights at many distances,
  * materials and lightings drawn from wide ranges. */
 static double uni(uint32_t *seed)
@@ -472,6 +513,7 @@ int main(void)
         cmocka_unit_test(test_back_face_is_exactly_ambient),
         cmocka_unit_test(test_stiff_cases),
         cmocka_unit_test(test_highlight_sweep),
+        cmocka_unit_test(test_fresnel_range_sweep),
         cmocka_unit_test(test_random_against_reference),
         cmocka_unit_test(test_grid_against_reference),
     };
