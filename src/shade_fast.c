@@ -1,0 +1,642 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * MAKE-SHADE of flat faces in 32-bit arithmetic: see shade_fast_private.h.
+ *
+ * Formats (each with its range; nothing here overflows):
+ *   N        the caller's unit normal, Q14 in int16 (|N| = 1 +- 2^-13)
+ *   w        a direction scaled to 16 bits (stp_shade_fast_dir): |w_i| < 2^16
+ *   N.w      int32: |N.w| <= |N||w| < 2^14 (1 + 2^-13) sqrt(3) 2^16 < 2^31
+ *   cosines  Q30 in int32 (one = 2^30): N.E, N.L, E.L, N.H, E.H, within
+ *            [-2^30, 2^30] after clamping (rounding can exceed 1 by a few
+ *            units: each is clamped where it feeds a formula that needs <= 1)
+ *   stp_sf16 16-bit mantissa floating numbers for everything after the
+ *            cosines (D, F, G/(N.E), Ks, R, 1/(C + U), BRIGHT P_j): their
+ *            range is any exponent, so a grazing 1/(N.E) or a huge BRIGHT
+ *            cannot overflow; each operation truncates (relative error
+ *            below 2^-15)
+ *   sums     Q26 in int32 (one = 2^26): each light's share is saturated at
+ *            8 and the sum returns 1 as soon as it reaches 1 (every share
+ *            is >= 0), so at most 2^26 + 2 2^29 < 2^31 is ever formed.
+ * Products of two 32-bit numbers whose high word is needed (the cosines'
+ * 30 bits) go through mul_hi: four 16 x 16 -> 32 products, exact.
+ */
+#include "shade_fast_private.h"
+
+#include "fix_private.h" /* STP_TABLE */
+
+#define F STP_FIX_FRAC_BITS
+#define ONE STP_FIX_ONE
+#define Q30 ((int32_t)1 << 30)
+#define SUM_BITS 26
+#define SUM_ONE ((int32_t)1 << SUM_BITS)
+#define SHARE_CAP ((uint32_t)1 << 29)
+
+/* ---- integer helpers ---- */
+
+/* v >> s rounding toward minus infinity for negative v too, 0 <= s < 32:
+ * C99 leaves >> of a negative value to the implementation, so the
+ * operator is used only where it is the arithmetic shift (every compiler
+ * the project builds with: the test is folded, one instruction remains);
+ * elsewhere the complement form. */
+static inline int32_t asr32(int32_t v, int s)
+{
+    if ((int32_t)-1 >> 1 == (int32_t)-1)
+        return v >> s;
+    return v >= 0 ? v >> s : (int32_t)~(~(uint32_t)v >> s);
+}
+
+/* Forced inline where the call would cost as much as the body (not in
+ * builds for size: -Os). */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define HOT_INLINE static inline __attribute__((always_inline))
+#else
+#define HOT_INLINE static inline
+#endif
+
+/* Significant bits of v (0 for 0): ARMv6-M has no CLZ instruction. */
+HOT_INLINE int bit_length32(uint32_t v)
+{
+#if defined(__GNUC__) && (STP_WIDE_ARITH || defined(__ARM_FEATURE_CLZ))
+    return v == 0 ? 0 : 32 - __builtin_clz(v); /* one instruction there */
+#else
+    int n = 0;
+    if (v >= 0x10000u) {
+        v >>= 16;
+        n = 16;
+    }
+    if (v >= 0x100u) {
+        v >>= 8;
+        n += 8;
+    }
+    if (v >= 0x10u) {
+        v >>= 4;
+        n += 4;
+    }
+    if (v >= 4u) {
+        v >>= 2;
+        n += 2;
+    }
+    if (v >= 2u) {
+        v >>= 1;
+        n += 1;
+    }
+    return n + (int)v;
+#endif
+}
+
+/* floor(a b / 2^32), exact: one 64-bit product where that is one
+ * instruction (STP_WIDE_ARITH), else four 16 x 16 -> 32 products (the same
+ * value). */
+static inline uint32_t mul_hi(uint32_t a, uint32_t b)
+{
+#if STP_WIDE_ARITH
+    return (uint32_t)(((uint64_t)a * b) >> 32);
+#else
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t lh = al * bh, hl = ah * bl;
+    uint32_t mid = ((al * bl) >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    return ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+#endif
+}
+
+/* floor(a m / 2^16) for |a| < 2^31 and m <= 2^16 with |a >> 16| m < 2^31:
+ * two 32-bit products. */
+static inline int32_t mul_q16(int32_t a, uint32_t m)
+{
+    return asr32(a, 16) * (int32_t)m + (int32_t)((((uint32_t)a & 0xFFFFu) * m) >> 16);
+}
+
+/* ---- reciprocal square root and reciprocal ---- */
+
+/* 2^31 / sqrt(x) at the middle of [16 + i, 17 + i) 2^26 */
+static const uint16_t rsqrt_seed[48] STP_TABLE = {
+    64535, 62664, 60947, 59364, 57898, 56535, 55265, 54076, 52961, 51912, 50923, 49989,
+    49104, 48265, 47467, 46707, 45983, 45292, 44630, 43997, 43390, 42808, 42248, 41710,
+    41192, 40693, 40211, 39746, 39297, 38863, 38443, 38036, 37642, 37260, 36889, 36529,
+    36179, 35840, 35509, 35188, 34875, 34571, 34274, 33985, 33703, 33427, 33159, 32897,
+};
+
+/* 2^31 / x at the middle of [256 + i, 257 + i) 2^7 */
+static const uint16_t recip_seed[256] STP_TABLE = {
+    65408, 65154, 64902, 64652, 64404, 64158, 63913, 63671, 63430, 63191, 62954, 62719,
+    62485, 62253, 62023, 61795, 61568, 61343, 61119, 60897, 60677, 60458, 60241, 60026,
+    59812, 59599, 59388, 59179, 58971, 58764, 58559, 58356, 58153, 57952, 57753, 57555,
+    57358, 57163, 56968, 56776, 56584, 56394, 56205, 56017, 55831, 55646, 55462, 55279,
+    55098, 54917, 54738, 54560, 54383, 54207, 54033, 53859, 53687, 53516, 53346, 53177,
+    53009, 52842, 52676, 52511, 52347, 52184, 52022, 51862, 51702, 51543, 51385, 51228,
+    51072, 50917, 50763, 50610, 50458, 50306, 50156, 50007, 49858, 49710, 49563, 49417,
+    49272, 49128, 48985, 48842, 48700, 48559, 48419, 48280, 48141, 48003, 47867, 47730,
+    47595, 47460, 47326, 47193, 47061, 46929, 46798, 46668, 46539, 46410, 46282, 46155,
+    46028, 45902, 45777, 45652, 45528, 45405, 45283, 45161, 45040, 44919, 44799, 44680,
+    44561, 44443, 44326, 44209, 44093, 43977, 43862, 43748, 43634, 43521, 43408, 43296,
+    43185, 43074, 42963, 42854, 42744, 42636, 42528, 42420, 42313, 42207, 42101, 41996,
+    41891, 41786, 41683, 41579, 41476, 41374, 41272, 41171, 41070, 40970, 40870, 40771,
+    40672, 40574, 40476, 40378, 40281, 40185, 40089, 39993, 39898, 39804, 39709, 39616,
+    39522, 39429, 39337, 39245, 39153, 39062, 38971, 38881, 38791, 38702, 38613, 38524,
+    38436, 38348, 38260, 38173, 38087, 38000, 37915, 37829, 37744, 37659, 37575, 37491,
+    37407, 37324, 37241, 37159, 37077, 36995, 36914, 36833, 36752, 36672, 36592, 36512,
+    36433, 36354, 36275, 36197, 36119, 36041, 35964, 35887, 35810, 35734, 35658, 35583,
+    35507, 35432, 35358, 35283, 35209, 35136, 35062, 34989, 34916, 34844, 34771, 34700,
+    34628, 34557, 34486, 34415, 34344, 34274, 34204, 34135, 34065, 33996, 33928, 33859,
+    33791, 33723, 33655, 33588, 33521, 33454, 33387, 33321, 33255, 33189, 33124, 33059,
+    32994, 32929, 32864, 32800,
+};
+
+/* 1/sqrt(q) for q in [2^30, 2^32): r in (2^30, 2^31] with 1/sqrt(q) =
+ * r 2^-46, relative error below 2^-20.  The seed (2^-6) is refined by one
+ * Newton step on 16-bit operands (2^-11) and one with the exact high word
+ * of q y^2, which keeps the 15 more bits of its correction in r. */
+static uint32_t rsqrt_norm(uint32_t q)
+{
+    uint32_t y = STP_TABLE_U16(&rsqrt_seed[(q >> 26) - 16u]); /* ~ 2^31/sqrt(q) < 2^16 */
+    /* (q 2^-16)(y^2 2^-16) ~ 2^30: both factors below 2^16 */
+    int32_t e = Q30 - (int32_t)((q >> 16) * ((y * y) >> 16));
+    y = (uint32_t)((int32_t)y + asr32(mul_q16(e, y), 15)); /* y (1 + e 2^-31), |e| < 2^26 */
+    if (y > 0xFFFFu)
+        y = 0xFFFFu;
+    /* q y^2 2^-32 ~ 2^30, y^2 < 2^32; e is now below 2^20 */
+    e = Q30 - (int32_t)mul_hi(q, y * y);
+    return (y << 15) + (uint32_t)mul_q16(e, y);
+}
+
+/* 2^31 / m for m in [2^15, 2^16): in (2^15, 2^16], error below 2^-15
+ * relative: a seed (2^-9) and one Newton step y (2 - m y 2^-31). */
+static uint32_t recip16(uint32_t m)
+{
+    uint32_t y = STP_TABLE_U16(&recip_seed[(m >> 7) - 256u]);
+    uint32_t p = m * y; /* ~ 2^31, < 2^32 */
+    int32_t e = p <= 0x80000000u ? (int32_t)(0x80000000u - p) : -(int32_t)(p - 0x80000000u);
+    return (uint32_t)((int32_t)y + asr32(mul_q16(e, y), 15)); /* |e| < 2^23 */
+}
+
+/* ---- stp_sf16: m 2^-e, m = 0 or in [2^15, 2^16) ---- */
+
+HOT_INLINE stp_sf16 sf_make(uint32_t v, int e)
+{
+    stp_sf16 r;
+    int n;
+    if (v == 0) {
+        r.m = 0;
+        r.e = 0;
+        return r;
+    }
+    n = bit_length32(v) - 16;
+    r.m = n > 0 ? v >> n : v << -n;
+    r.e = e - n;
+    return r;
+}
+
+static stp_sf16 sf_mul(stp_sf16 a, stp_sf16 b)
+{
+    uint32_t p = a.m * b.m; /* < 2^32 */
+    stp_sf16 r;
+    if (p >= 0x80000000u) {
+        r.m = p >> 16;
+        r.e = a.e + b.e - 16;
+    } else {
+        r.m = p >> 15; /* 0 stays 0 */
+        r.e = a.e + b.e - 15;
+    }
+    return r;
+}
+
+/* 1/a for a != 0 */
+static stp_sf16 sf_recip(stp_sf16 a)
+{
+    stp_sf16 r;
+    r.m = recip16(a.m);
+    r.e = 31 - a.e;
+    if (r.m > 0xFFFFu) { /* a.m = 2^15 exactly */
+        r.m >>= 1;
+        r.e--;
+    }
+    return r;
+}
+
+/* a with b's exponent difference d >= 0 (a >= b) aligned: b.m >> d */
+static uint32_t sf_aligned(stp_sf16 b, int d)
+{
+    return d > 16 ? 0 : b.m >> d;
+}
+
+
+static stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
+{
+    stp_sf16 t;
+    uint32_t sum;
+    if (b.m == 0)
+        return a;
+    if (a.m == 0)
+        return b;
+    if (a.e > b.e) { /* a the one with the larger scale */
+        t = a;
+        a = b;
+        b = t;
+    }
+    sum = a.m + sf_aligned(b, b.e - a.e); /* < 2^17 */
+    if (sum > 0xFFFFu) {
+        a.m = sum >> 1;
+        a.e--;
+    } else {
+        a.m = sum;
+    }
+    return a;
+}
+
+/* a 2^q truncated, saturated at cap (< 2^31) */
+static uint32_t sf_to_fixed(stp_sf16 a, int q, uint32_t cap)
+{
+    int sh = q - a.e;
+    uint32_t v;
+    if (a.m == 0 || sh <= -32)
+        return 0;
+    if (sh >= 16)
+        return cap; /* >= 2^31 */
+    v = sh >= 0 ? a.m << sh : a.m >> -sh;
+    return v > cap ? cap : v;
+}
+
+/* ---- directions ---- */
+
+/* |a| < 2^30 for each component: then the difference of two fits int32 */
+static int is_big(stp_vec3 a)
+{
+    const uint32_t h = 0x40000000u;
+    return (((uint32_t)a.x + h) | ((uint32_t)a.y + h) | ((uint32_t)a.z + h)) >= 0x80000000u;
+}
+
+/* a - b scaled to 16 bits (stp_shade_fast_dir) and, when need_r, its
+ * 1/length; halved first when either has a component beyond 2^30 (big).
+ * Returns 0 for a zero difference (d->w = 0 then). */
+static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b, int big, int need_r)
+{
+    int32_t v[3];
+    uint32_t m = 0, q = 0;
+    int i, n;
+    if (big) {
+        v[0] = asr32(a->x, 1) - asr32(b->x, 1);
+        v[1] = asr32(a->y, 1) - asr32(b->y, 1);
+        v[2] = asr32(a->z, 1) - asr32(b->z, 1);
+    } else {
+        v[0] = a->x - b->x;
+        v[1] = a->y - b->y;
+        v[2] = a->z - b->z;
+    }
+    for (i = 0; i < 3; i++) {
+        uint32_t u = v[i] < 0 ? 0u - (uint32_t)v[i] : (uint32_t)v[i];
+        if (u > m)
+            m = u;
+    }
+    if (m == 0) {
+        d->w[0] = d->w[1] = d->w[2] = 0;
+        return 0;
+    }
+    n = bit_length32(m) - 16; /* m 2^-n in [2^15, 2^16) */
+    d->shift = n + big;
+    if (n > 0) {
+        for (i = 0; i < 3; i++) {
+            int32_t w = asr32(asr32(v[i], n - 1) + 1, 1); /* rounded to nearest */
+            /* the rounding of the largest may reach 2^16: kept below, so
+             * w^2 < 2^32 (int32_t constants: 0xFFFF is an unsigned int where
+             * int has 16 bits) */
+            if (w > (int32_t)0xFFFF)
+                w = (int32_t)0xFFFF;
+            if (w < -(int32_t)0xFFFF)
+                w = -(int32_t)0xFFFF;
+            d->w[i] = w;
+            q += ((uint32_t)w * (uint32_t)w) >> 2; /* w^2 < 2^32: exact mod 2^32 */
+        }
+    } else {
+        for (i = 0; i < 3; i++) {
+            int32_t w = v[i] * ((int32_t)1 << -n); /* exact, |w| < 2^16 */
+            d->w[i] = w;
+            q += ((uint32_t)w * (uint32_t)w) >> 2;
+        }
+    }
+    d->q = q; /* in [2^28, 3 2^30) */
+    d->j = q < 0x40000000u;
+    if (need_r)
+        d->r = rsqrt_norm(q << (2 * d->j));
+    return 1;
+}
+
+/* N.w (|.| < 2^31: see the file comment) */
+static int32_t dot_n(const int16_t n[3], const stp_shade_fast_dir *d)
+{
+    return (int32_t)n[0] * d->w[0] + (int32_t)n[1] * d->w[1] + (int32_t)n[2] * d->w[2];
+}
+
+/* The cosine N.w/|w| in Q30 from dot = N.w (N in Q14), corrected for
+ * |N|^2 = 1 + nd 2^-28 (|nd| <= 2^17): cos (1 - nd 2^-29). */
+static int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t nd)
+{
+    uint32_t a = dot < 0 ? 0u - (uint32_t)dot : (uint32_t)dot;
+    int32_t c = (int32_t)(mul_hi(a, d->r) << (1 + d->j)); /* <= 2^30 (1 + 2^-12) */
+    c -= asr32(asr32(c, 15) * asr32(nd, 2), 12); /* 2^15 2^15: fits */
+    return dot < 0 ? -c : c;
+}
+
+/* The length of d's vector in raw stp_fix units: 2 sqrt(q) 2^shift */
+static stp_sf16 dir_length(const stp_shade_fast_dir *d)
+{
+    return sf_make(mul_hi(d->q, d->r), 13 - d->j - d->shift);
+}
+
+#if STP_WITH_SPECULAR
+/* E.L in Q30 from two scaled directions: the products w_i w'_i can reach
+ * 2^32, so each is formed as w (w' >> 1) 2^-2 + w (w' & 1) 2^-3 (~ w w'/8,
+ * the sum below 1.5 2^30), then times both 1/lengths. */
+static int32_t cos_dirs(const stp_shade_fast_dir *a, const stp_shade_fast_dir *b)
+{
+    int32_t s = 0;
+    uint32_t m;
+    int i;
+    for (i = 0; i < 3; i++) {
+        int32_t h = asr32(b->w[i], 1); /* |a w h| < 2^16 2^15 */
+        s += asr32(a->w[i] * h, 2) + ((b->w[i] & 1) ? asr32(a->w[i], 3) : 0);
+    }
+    m = s < 0 ? 0u - (uint32_t)s : (uint32_t)s;
+    m = mul_hi(mul_hi(m, a->r), b->r) << (3 + a->j + b->j);
+    if (m > (uint32_t)Q30)
+        m = (uint32_t)Q30;
+    return s < 0 ? -(int32_t)m : (int32_t)m;
+}
+#endif
+
+#if STP_WITH_SPECULAR
+/* a < b */
+static int sf_less(stp_sf16 a, stp_sf16 b)
+{
+    if (a.m == 0 || b.m == 0)
+        return b.m != 0;
+    return a.e != b.e ? a.e > b.e : a.m < b.m;
+}
+
+/* r 2^-e for r in (2^30, 2^31] (a reciprocal square root): no search */
+static stp_sf16 sf_from_r(uint32_t r, int e)
+{
+    stp_sf16 a;
+    a.m = r >> 15;
+    a.e = e - 15;
+    if (a.m > 0xFFFFu) {
+        a.m >>= 1;
+        a.e--;
+    }
+    return a;
+}
+
+/* 1/sqrt(q) for any q in (0, 2^32): r 2^(j - 46) with r in (2^30, 2^31]
+ * (q 4^j is brought into [2^30, 2^32)). */
+static uint32_t rsqrt_any(uint32_t q, int *j)
+{
+    *j = (32 - bit_length32(q)) >> 1;
+    return rsqrt_norm(q << (2 * *j));
+}
+
+/* |a - b| */
+static stp_sf16 sf_diff(stp_sf16 a, stp_sf16 b)
+{
+    stp_sf16 t;
+    if (b.m == 0)
+        return a;
+    if (a.m == 0)
+        return b;
+    if (a.e > b.e || (a.e == b.e && a.m < b.m)) { /* a the larger */
+        t = a;
+        a = b;
+        b = t;
+    }
+    return sf_make(a.m - sf_aligned(b, b.e - a.e), a.e);
+}
+
+static const stp_sf16 sf_one = {0x8000u, 15};
+
+/* sqrt(x) in Q30 for x in (0, 2^32) in Q30 */
+static uint32_t sqrt_q30(uint32_t x)
+{
+    int j;
+    uint32_t r = rsqrt_any(x, &j);
+    /* sqrt(x 2^-30) 2^30 = x r 2^(j - 46) 2^15 */
+    return mul_hi(x, r) << (j + 1);
+}
+
+/* Fresnel (10.6)-(10.8) at c = E.H (Q30, in (0, 2^30]) for the prepared
+ * index n, as stp_sf16 in [0, 1], given u = 1 - c^2 (Q30, in [0, 2^30]:
+ * (1 - E.L)/2, since c^2 = |L + E|^2/4 = (1 + E.L)/2):
+ *   g = sqrt(n^2 - u), u = 1 - c^2 (n >= 1: g = n sqrt(1 - u/n^2), so
+ *   that n^2 needs no range), r = (g - c)/(g + c), t = (p - u)/(p + u)
+ *   with p = c g (the listing's (c (g + c) - 1)/(c (g - c) + 1)),
+ *   F = r^2 (1 + t^2)/2; 1 where g is imaginary (n < 1). */
+static stp_sf16 fresnel_sf(const stp_shade_fast *s, uint32_t c, uint32_t u)
+{
+    stp_sf16 g, cs, us, r, p, den;
+    if (s->refraction_ge_1) {
+        uint32_t w = (uint32_t)Q30 - (mul_hi(u, s->inv_n2) << 1); /* in [0, 2^30] */
+        g = w == 0 ? sf_make(0, 0) : sf_mul(s->refraction, sf_make(sqrt_q30(w), 30));
+    } else {
+        if (s->n2 <= u)
+            return sf_one; /* beyond the critical angle: total reflection */
+        g = sf_make(sqrt_q30(s->n2 - u), 30);
+    }
+    cs = sf_make(c, 30);
+    us = sf_make(u, 30);
+    /* F = (g - c)^2 (p^2 + u^2) / ((g + c)(p + u))^2: one reciprocal;
+     * g + c > 0 and p + u > 0 (c > 0) */
+    p = sf_mul(cs, g);
+    den = sf_mul(sf_add(g, cs), sf_add(p, us));
+    if (den.m == 0)
+        return sf_one;
+    r = sf_diff(g, cs);
+    r = sf_mul(sf_mul(r, r), sf_add(sf_mul(p, p), sf_mul(us, us)));
+    den = sf_recip(den);
+    r = sf_mul(r, sf_mul(den, den));
+    return sf_less(sf_one, r) ? sf_one : r;
+}
+
+/* Ks D F G/(N.E) of one light, from the cosines (Q30, N.L and N.E > 0)
+ * and inv_ne = 1/(N.E):
+ *   |L + E|^2 = 2 (1 + E.L) = X, N.H = (N.L + N.E)/|L + E|,
+ *   E.H = |L + E|/2, 1/(E.H) = 2/|L + E| (one reciprocal square root);
+ *   D = (1/(1 + (1 - N.H)/k))^2;
+ *   G/(N.E) = min(1/(N.E), 2 (N.H) min(N.E, N.L)/((N.E)(E.H))). */
+static stp_sf16 specular_sf(const stp_shade_fast *s, int32_t n_dot_l, int32_t n_dot_e,
+                            int32_t e_dot_l, stp_sf16 inv_ne)
+{
+    uint32_t one_el = (uint32_t)(Q30 + e_dot_l), x, r, nh, eh, omx;
+    int j;
+    stp_sf16 d, g, zero = {0, 0};
+    if ((int32_t)one_el <= 0)
+        return zero; /* L = -E: H undefined */
+    x = one_el >= 0x80000000u ? 0xFFFFFFFFu : one_el << 1;
+    r = rsqrt_any(x, &j); /* 1/|L + E| = r 2^(j - 31) */
+    nh = mul_hi((uint32_t)n_dot_l + (uint32_t)n_dot_e, r); /* the sum <= 2^31 + 8 */
+    nh = nh >= (0x80000000u >> (1 + j)) ? (uint32_t)Q30 : nh << (1 + j);
+    eh = mul_hi(x, r) << j; /* sqrt(x) 2^14 <= 2^30 */
+    if (nh == 0 || eh == 0)
+        return zero;
+    if (nh > (uint32_t)Q30)
+        nh = (uint32_t)Q30;
+    omx = (uint32_t)Q30 - nh;
+    d = sf_one;
+    if (omx != 0) {
+        d = sf_recip(sf_add(sf_one, sf_mul(sf_make(omx, 30), s->inv_gloss)));
+        d = sf_mul(d, d);
+    }
+    /* 2 N.H / E.H = N.H 2^-29 r 2^(j - 30) */
+    g = sf_mul(sf_make(nh, 29), sf_from_r(r, 30 - j));
+    if (n_dot_l < n_dot_e)
+        g = sf_mul(g, sf_mul(sf_make((uint32_t)n_dot_l, 30), inv_ne));
+    if (sf_less(inv_ne, g))
+        g = inv_ne;
+    return sf_mul(sf_mul(sf_mul(s->ks, d), fresnel_sf(s, eh, e_dot_l >= Q30 ? 0u : ((uint32_t)Q30 - (uint32_t)e_dot_l) >> 1)), g);
+}
+#endif
+
+void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
+                            const stp_material *material, stp_vec3 eye, int parallel,
+                            stp_vec3 parallel_dir)
+{
+    stp_fix background = stp_fix_clamp(lighting->background, 0, ONE);
+    stp_fix refl = material->reflectivity, bright = lighting->brightness;
+    stp_sf16 bright_sf = sf_make(bright > 0 ? (uint32_t)bright : 0u, F);
+    int64_t ambient;
+    int j, count;
+    count = lighting->count < 0 ? 0 : (lighting->count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : lighting->count);
+    if (bright <= 0)
+        count = 0;
+    s->count = count;
+    s->parallel = parallel != 0;
+    s->refl_negative = refl < 0;
+    s->refl = sf_make(refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl, F);
+    s->attenuation_c = sf_make(lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u, 0);
+    /* the ambient-only shade as shade_unit forms it: B R (2F bits, < 2^(31 + F)
+     * in magnitude) times BRIGHT, capped, rounded once */
+    ambient = (int64_t)background * refl;
+    if (bright <= 0 || ambient <= 0) {
+        s->ambient_shade = 0;
+    } else {
+        int64_t a = stp_mul_shift_sat(ambient, bright, F); /* 2F fractional bits */
+        s->ambient_shade = a >= ((int64_t)ONE << F) ? ONE
+                                                   : (stp_fix)((a + ((int64_t)1 << (F - 1))) >> F);
+    }
+    /* the same in Q26 for the sums, saturated at +-8 */
+    if (bright <= 0) {
+        s->ambient = 0;
+    } else {
+        /* to Q26: |.| < 2^(31 + F - 6) */
+        int64_t a = 2 * F >= SUM_BITS ? stp_asr64(ambient, 2 * F - SUM_BITS)
+                                      : ambient * ((int64_t)1 << (SUM_BITS - 2 * F));
+        a = a > ((int64_t)1 << 31) || a < -((int64_t)1 << 31) ? (a < 0 ? -((int64_t)1 << 31) : (int64_t)1 << 31) : a;
+        a = stp_asr64(a * bright, F);
+        s->ambient = (int32_t)(a > SHARE_CAP ? SHARE_CAP : (a < -(int64_t)SHARE_CAP ? -(int64_t)SHARE_CAP : a));
+    }
+    s->eye = eye;
+    s->eye_big = is_big(eye);
+    if (parallel) {
+        stp_vec3 zero = {0, 0, 0};
+        if (!dir_make(&s->e, &parallel_dir, &zero, is_big(parallel_dir), 1)) {
+            stp_vec3 back = {0, 0, -ONE};
+            (void)dir_make(&s->e, &back, &zero, 0, 1);
+        }
+    }
+    for (j = 0; j < count; j++) {
+        const stp_light *light = &lighting->lights[j];
+        stp_sf16 p = sf_make(light->power > 0 ? (uint32_t)light->power : 0u, F);
+        s->light[j] = light->position;
+        s->light_big[j] = is_big(light->position);
+        s->power[j] = sf_mul(bright_sf, p);
+        s->power[j].e -= F; /* per raw unit of C + U */
+    }
+#if STP_WITH_SPECULAR
+    s->specular = material->specular > 0;
+    s->ks = sf_make(material->specular > 0 ? (uint32_t)material->specular : 0u, F);
+    s->inv_gloss = sf_recip(sf_make(material->gloss < 1 ? 1u : (uint32_t)material->gloss, F));
+    {
+        stp_fix n = material->refraction <= 0 ? 1 : material->refraction;
+        s->refraction = sf_make((uint32_t)n, F);
+        s->refraction_ge_1 = n >= ONE;
+        s->inv_n2 = 0;
+        s->n2 = 0;
+        if (s->refraction_ge_1)
+            s->inv_n2 = sf_to_fixed(sf_recip(sf_mul(s->refraction, s->refraction)), 31,
+                                    0x80000000u - 1u);
+        else
+            s->n2 = (uint32_t)(2 * F >= 30 ? ((int64_t)n * n) >> (2 * F - 30)
+                                           : ((int64_t)n * n) << (30 - 2 * F)); /* n < 1: < 2^30 */
+    }
+#else
+    s->specular = 0;
+#endif
+}
+
+stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+{
+    stp_shade_fast_dir e_local, l;
+    const stp_shade_fast_dir *e = &s->e;
+    uint32_t nn;
+    int32_t nd, dot_e, sum = s->ambient;
+    int j, lit = 0, point_big = is_big(point);
+#if STP_WITH_SPECULAR
+    int32_t n_dot_e = 0;
+    stp_sf16 inv_ne = {0, 0};
+#endif
+    if (s->count == 0)
+        return s->ambient_shade;
+    if (!s->parallel) {
+        if (!dir_make(&e_local, &s->eye, &point, s->eye_big | point_big, s->specular))
+            return s->ambient_shade; /* the eye on the face */
+        e = &e_local;
+    }
+    dot_e = dot_n(normal, e);
+    if (dot_e <= 0)
+        return s->ambient_shade; /* a back face, or edge-on */
+    /* |N|^2 - 1 in Q28: each n_i^2 <= 2^30, so the sum fits unsigned */
+    nn = (uint32_t)((int32_t)normal[0] * normal[0]) + (uint32_t)((int32_t)normal[1] * normal[1]) +
+         (uint32_t)((int32_t)normal[2] * normal[2]);
+    nd = nn > 0x10020000u ? 0x20000 : (nn < 0x0FFE0000u ? -0x20000 : (int32_t)(nn - 0x10000000u));
+#if STP_WITH_SPECULAR
+    if (s->specular) {
+        n_dot_e = cos_n(dot_e, e, nd);
+        if (n_dot_e <= 0)
+            return s->ambient_shade;
+        inv_ne = sf_recip(sf_make((uint32_t)n_dot_e, 30));
+    }
+#endif
+    for (j = 0; j < s->count; j++) {
+        int32_t n_dot_l, share;
+        stp_sf16 w, term;
+        int at_point = !dir_make(&l, &s->light[j], &point, s->light_big[j] | point_big, 1);
+        if (!at_point) {
+            n_dot_l = cos_n(dot_n(normal, &l), &l, nd);
+            if (n_dot_l <= 0)
+                continue;
+            w = sf_recip(sf_add(s->attenuation_c, dir_length(&l)));
+        } else {
+            n_dot_l = Q30; /* the light on the face: lit head-on (L = N), U = 0 */
+            w = sf_recip(s->attenuation_c);
+        }
+        w = sf_mul(w, s->power[j]); /* BRIGHT P_j / (C + U) */
+        term = sf_mul(sf_mul(s->refl, sf_make((uint32_t)n_dot_l, 30)), w);
+        share = (int32_t)sf_to_fixed(term, SUM_BITS, SHARE_CAP);
+        if (s->refl_negative)
+            share = -share;
+#if STP_WITH_SPECULAR
+        if (s->specular) {
+            int32_t e_dot_l = at_point ? n_dot_e : cos_dirs(e, &l);
+            term = sf_mul(specular_sf(s, n_dot_l, n_dot_e, e_dot_l, inv_ne), w);
+            share += (int32_t)sf_to_fixed(term, SUM_BITS, SHARE_CAP);
+        }
+#endif
+        if (share > 0) {
+            lit = 1;
+            sum += share;
+            if (sum >= SUM_ONE)
+                return ONE; /* every later share is >= 0 */
+        }
+    }
+    if (!lit)
+        return s->ambient_shade;
+    if (sum <= 0)
+        return 0;
+    return (stp_fix)((sum + ((int32_t)1 << (SUM_BITS - F - 1))) >> (SUM_BITS - F));
+}

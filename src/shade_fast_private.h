@@ -1,0 +1,80 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Private: MAKE-SHADE of flat faces in 32-bit arithmetic, for entry paths
+ * (triangle meshes) that shade many faces under one lighting and material.
+ * The equation is shade.c's shade_unit (docs/model.md section 2):
+ *   s = min(1, BRIGHT (B R + sum_j P_j (R (N.L_j) + Ks D G F/(N.E)) / (C + U_j)))
+ * computed with 32 x 32 -> 32-bit products only (a 32 x 32 -> 64 product is
+ * formed from four of them where 30 bits are needed) and no division: unit
+ * vectors through a reciprocal square root (table seed and Newton steps),
+ * reciprocals through a table seed and Newton steps, and the factors after
+ * the cosines in a 16-bit-mantissa floating format (shade_fast.c).
+ * Measured error against the double reference: tests/shade_fast.
+ */
+#ifndef STIPPLE_SHADE_FAST_PRIVATE_H
+#define STIPPLE_SHADE_FAST_PRIVATE_H
+
+#include <stdint.h>
+
+#include "stipple/shade.h"
+
+/* A positive number m 2^-e with m = 0 (the number 0) or m in [2^15, 2^16):
+ * 16 significant bits, any exponent an int holds (|e| stays below 200). */
+typedef struct stp_sf16 {
+    uint32_t m;
+    int e;
+} stp_sf16;
+
+/* A direction scaled to 16 bits: w = v 2^-shift rounded, the largest
+ * |component| in [2^15, 2^16) (or all 0 for a zero vector), q = sum of
+ * the w_i^2 / 4 in [2^28, 3 2^30), r = 1/sqrt(q) as r 2^(j - 46) with r in
+ * (2^30, 2^31] and j in {0, 1}. */
+typedef struct stp_shade_fast_dir {
+    int32_t w[3];
+    uint32_t q, r;
+    int j, shift;
+} stp_shade_fast_dir;
+
+/* Per-call constants of stp_shade_fast_face. */
+typedef struct stp_shade_fast {
+    int count;           /* lights that can reach a face (0 when BRIGHT <= 0) */
+    int parallel;        /* E constant (parallel projection) */
+    int specular;        /* the highlight is on (Ks > 0, STP_WITH_SPECULAR) */
+    int refl_negative;   /* R < 0: the diffuse term subtracts */
+    stp_fix ambient_shade; /* the shade of a face no light reaches (exactly
+                              as stp_shade_unit rounds it) */
+    int32_t ambient;     /* BRIGHT B R in Q26 (one = 2^26), in [-2^29, 2^29] */
+    stp_vec3 eye;        /* perspective: the centre of projection */
+    int eye_big;         /* a component of eye outside [-2^30, 2^30) */
+    stp_shade_fast_dir e; /* parallel: the direction towards the eye */
+    stp_vec3 light[STP_MAX_LIGHTS];
+    int light_big[STP_MAX_LIGHTS];
+    stp_sf16 power[STP_MAX_LIGHTS]; /* BRIGHT P_j 2^F (per raw unit of C + U) */
+    stp_sf16 refl;       /* |R| */
+    stp_sf16 attenuation_c; /* C in raw stp_fix units */
+#if STP_WITH_SPECULAR
+    stp_sf16 ks;         /* Ks */
+    stp_sf16 inv_gloss;  /* 1/k */
+    stp_sf16 refraction; /* n (>= 1 branch) */
+    int refraction_ge_1; /* n >= 1: g = n sqrt(1 - (1 - c^2)/n^2) */
+    uint32_t inv_n2;     /* n >= 1: 1/n^2 in Q31 */
+    uint32_t n2;         /* n < 1: n^2 in Q30 */
+#endif
+} stp_shade_fast;
+
+/* Prepare from the segment's lighting (light positions in VIEW coordinates,
+ * as render.c keeps them per segment) and the material.  eye: the centre of
+ * projection in view coordinates (perspective); parallel != 0: parallel
+ * projection with parallel_dir the direction towards the eye (any length
+ * but 0; 0 gives (0, 0, -1)).  Cheap enough for once per mesh per frame. */
+void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
+                            const stp_material *material, stp_vec3 eye, int parallel,
+                            stp_vec3 parallel_dir);
+
+/* Shade of a flat face, in [0, 1] (stp_fix).  normal: unit normal in view
+ * coordinates, Q1.14 (one = 16384; |n| = 1 +- 2^-13 is corrected to 1);
+ * point: the face's vertex average in view coordinates.  N.E <= 0 gives
+ * exactly the ambient share min(1, BRIGHT B R). */
+stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point);
+
+#endif
