@@ -497,6 +497,41 @@ static void test_sine(void **state)
     }
 }
 
+/* stp_direct_mesh_normals within 2^-12 (4 raw Q1.14 units) of
+ * stp_mesh_prepare_normals' exact normals; its errors. */
+static void test_normals(void **state)
+{
+    model *m = calloc(1, sizeof *m);
+    int16_t lean[3 * MAX_T];
+    void (*makers[])(model *) = {make_torus, make_sphere, make_tetra};
+    size_t k, i;
+    int worst = 0;
+    (void)state;
+    assert_non_null(m);
+    for (k = 0; k < 3; k++) {
+        makers[k](m);
+        assert_int_equal(stp_direct_mesh_normals(&m->mesh, lean), STP_OK);
+        for (i = 0; i < 3u * m->mesh.triangle_count; i++) {
+            int d = abs(lean[i] - m->n[i]);
+            worst = d > worst ? d : worst;
+        }
+    }
+    printf("normals: largest difference from the exact %d / 16384\n", worst);
+    assert_true(worst <= 4);
+    m->v[3] = m->v[0]; /* the tetrahedron's triangles through 0 and 3 collapse */
+    assert_int_equal(stp_direct_mesh_normals(&m->mesh, lean), STP_ERR_DEGENERATE);
+    make_tetra(m);
+    m->t[4] = 9;
+    assert_int_equal(stp_direct_mesh_normals(&m->mesh, lean), STP_ERR_ARG);
+    assert_int_equal(stp_direct_mesh_normals(NULL, lean), STP_ERR_ARG);
+    assert_int_equal(stp_direct_mesh_normals(&m->mesh, NULL), STP_ERR_ARG);
+    make_tetra(m);
+    m->v[1].x = 200 * STP_FIX_ONE;
+    m->v[0].x = -200 * STP_FIX_ONE;
+    assert_int_equal(stp_direct_mesh_normals(&m->mesh, lean), STP_ERR_RANGE);
+    free(m);
+}
+
 static void test_bad_arguments(void **state)
 {
     work *w = calloc(1, sizeof *w);
@@ -561,7 +596,8 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sine),         cmocka_unit_test(test_tetra), cmocka_unit_test(test_sphere),
-        cmocka_unit_test(test_torus),        cmocka_unit_test(test_bands), cmocka_unit_test(test_bad_arguments),
+        cmocka_unit_test(test_torus),        cmocka_unit_test(test_bands), cmocka_unit_test(test_normals),
+        cmocka_unit_test(test_bad_arguments),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
