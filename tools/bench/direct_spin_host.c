@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* The host's render of the direct-drawing spinning torus
  * (ports/direct/direct_spin.h): frame N in B-row bands as a binary PBM,
- * for tools/bench/mps2_direct.sh to compare with the firmware's.
- * usage: direct_spin_host [-n FRAME] [-b BAND_ROWS] -o OUT.pbm */
+ * for tools/bench/mps2_direct.sh to compare with the firmware's (bit 1 =
+ * ON, as the firmware's rows), or with -i 1 as stipple writes PBM (1 =
+ * black = OFF) for tests/firmware/run_direct_oled_test.sh.
+ * usage: direct_spin_host [-n FRAME] [-b BAND_ROWS] [-i 0|1] -o OUT.pbm */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,7 +17,7 @@ int main(int argc, char **argv)
     static uint8_t picture[SPIN_STRIDE * SPIN_HEIGHT];
     stp_direct_frame f;
     const char *out = NULL;
-    long n = 10, rows = 8;
+    long n = 10, rows = 8, invert = 0;
     uint32_t y;
     int i, status;
     FILE *o;
@@ -24,13 +26,16 @@ int main(int argc, char **argv)
             n = strtol(argv[i + 1], NULL, 10);
         else if (strcmp(argv[i], "-b") == 0)
             rows = strtol(argv[i + 1], NULL, 10);
+        else if (strcmp(argv[i], "-i") == 0)
+            invert = strtol(argv[i + 1], NULL, 10);
         else if (strcmp(argv[i], "-o") == 0)
             out = argv[i + 1];
         else
             break;
     }
-    if (i != argc || out == NULL || n < 0 || n > 65535 || rows < 1 || rows > (long)SPIN_HEIGHT) {
-        fprintf(stderr, "usage: %s [-n FRAME] [-b BAND_ROWS] -o OUT.pbm\n", argv[0]);
+    if (i != argc || out == NULL || n < 0 || n > 65535 || rows < 1 || rows > (long)SPIN_HEIGHT ||
+        (invert != 0 && invert != 1)) {
+        fprintf(stderr, "usage: %s [-n FRAME] [-b BAND_ROWS] [-i 0|1] -o OUT.pbm\n", argv[0]);
         return 2;
     }
     status = direct_spin_init(&spin);
@@ -44,6 +49,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "%s: frame %ld: %s\n", argv[0], n, stp_status_text(status));
         return 1;
     }
+    for (y = 0; invert && y < sizeof picture; y++)
+        picture[y] = (uint8_t)~picture[y];
     o = fopen(out, "wb");
     if (o == NULL || fprintf(o, "P4\n%u %u\n", SPIN_WIDTH, SPIN_HEIGHT) < 0 ||
         fwrite(picture, 1, sizeof picture, o) != sizeof picture || fclose(o) != 0) {
