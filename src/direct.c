@@ -72,22 +72,40 @@ static stp_sf16 sf16_of(uint32_t v, int e)
 /* stp_shade_fast_prepare for one light, eye at the view origin, no
  * highlight, in 32-bit arithmetic.  light_view: the light in view
  * coordinates. */
+/* The shifts between stp_fix (F fractional bits) and Q16 (both folded to
+ * constants; the unused one is 0). */
+#define DOWN16 (F >= 16 ? F - 16 : 0)
+#define UP16 (F >= 16 ? 0 : 16 - F)
+
+/* v (stp_fix, 0 <= v < 2^(F + 8)) in Q16: below 2^24 */
+static uint32_t to_q16(stp_fix v)
+{
+    return ((uint32_t)v >> DOWN16) << UP16;
+}
+
+/* v in Q16 (<= 2^16) with F fractional bits, rounded */
+static stp_fix from_q16(uint32_t v)
+{
+    return (stp_fix)(((v << DOWN16) + ((1u << UP16) >> 1)) >> UP16);
+}
+
 static void shade_prepare(stp_shade_fast *s, const stp_direct_light *l, const int32_t light_view[3])
 {
-    uint32_t b = (uint32_t)l->background, r = (uint32_t)l->reflectivity, br, p;
+    uint32_t b = to_q16(l->background), r = to_q16(l->reflectivity), bright16 = to_q16(l->brightness), br, p;
     stp_sf16 bright = sf16_of((uint32_t)l->brightness, F), power = sf16_of((uint32_t)l->power, F);
-    /* B R with 2F fractional bits: B, R <= 2^16, so at most 2^32 (taken as
-     * 2^32 - 1) */
-    br = b == (uint32_t)ONE ? (r == (uint32_t)ONE ? 0xFFFFFFFFu : r << F) : b * r;
+    /* B R in Q32: B, R <= 2^16, so at most 2^32 (taken as 2^32 - 1) */
+    br = b == 65536u ? (r == 65536u ? 0xFFFFFFFFu : r << 16) : b * r;
     s->count = l->brightness > 0 ? 1 : 0;
     s->parallel = 0;
     s->specular = 0;
     s->refl_negative = 0;
-    /* BRIGHT < 2^24: round(B R BRIGHT / 2^32) with F fractional bits, capped */
-    p = mul_hi(br, (uint32_t)l->brightness << 1);
-    s->ambient_shade = p >= 2u * (uint32_t)ONE ? ONE : (stp_fix)((p + 1u) >> 1);
+    /* BRIGHT < 2^24 in Q16: round(B R BRIGHT) in Q16, capped at 1, then
+     * with F fractional bits */
+    p = mul_hi(br, bright16 << 1);
+    p = p >= 2u * 65536u ? 65536u : (p + 1u) >> 1;
+    s->ambient_shade = from_q16(p);
     /* the same in Q26 (B R BRIGHT / 2^22), capped at 2^29 */
-    p = mul_hi(br, (uint32_t)l->brightness);
+    p = mul_hi(br, bright16);
     s->ambient = p >= ((uint32_t)1 << 19) ? (int32_t)1 << 29 : (int32_t)(p << 10);
     s->eye.x = s->eye.y = s->eye.z = 0;
     s->eye_big = 0;
@@ -99,7 +117,7 @@ static void shade_prepare(stp_shade_fast *s, const stp_direct_light *l, const in
     p = bright.m * power.m;
     s->power[0].m = p >= 0x80000000u ? p >> 16 : p >> 15;
     s->power[0].e = bright.e + power.e - (p >= 0x80000000u ? 16 : 15) - F;
-    s->refl = sf16_of(r, F);
+    s->refl = sf16_of(r, 16); /* r in Q16 */
     s->attenuation_c = sf16_of(l->attenuation_c > 0 ? (uint32_t)l->attenuation_c : 1u, 0);
 }
 
@@ -128,8 +146,8 @@ int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_view *vie
 
 static int light_ok(const stp_direct_light *l)
 {
-    return l->power >= 0 && l->power < ((stp_fix)1 << 24) && l->brightness >= 0 &&
-           l->brightness < ((stp_fix)1 << 24) && l->background >= 0 && l->background <= ONE &&
+    return l->power >= 0 && l->power < 256 * ONE && l->brightness >= 0 &&
+           l->brightness < 256 * ONE && l->background >= 0 && l->background <= ONE &&
            l->reflectivity >= 0 && l->reflectivity <= ONE;
 }
 
@@ -143,8 +161,9 @@ static int project(const stp_direct_view *view, uint32_t fm, int fe, stp_direct_
     int32_t c[2];
     m = n > 16 ? z >> (n - 16) : z << (16 - n);
     g = fm * stp_direct_udiv(0x80000000u, m); /* focal / z 2^(15 + n - fe) */
-    /* focal x / z in Q4: x g 2^(fe - 27 - n) = mul_hi(x, g) 2^(fe + 5 - n) */
-    sh = fe + 5 - n;
+    /* focal x / z in Q4 (focal with F fractional bits): x g 2^(fe - 11 - n -
+     * F) = mul_hi(x, g) 2^(fe + 21 - F - n) */
+    sh = fe + 21 - F - n;
     for (i = 0; i < 2; i++) {
         int32_t v = i == 0 ? pt->x : pt->y;
         uint32_t h = mul_hi(stp_direct_abs(v), g); /* < 2^26 */
@@ -225,7 +244,7 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
                              const uint8_t cell[16], stp_direct_point *points, size_t point_count,
                              uint16_t *faces, size_t face_count)
 {
-    int32_t m[3][3], t[3], d[3], scale4;
+    int32_t m[3][3], t[3], d[3], scale14;
     stp_direct_shading shading;
     uint32_t fm;
     int i, j, fe, status;
@@ -233,13 +252,14 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
     status = check_args(f, mesh, model, view, light, levels, cell, points, point_count, faces, face_count);
     if (status != STP_OK)
         return status;
-    /* C = V R (shading.rot, for the normals) and M = C scale: scale / 4 < 2^15 */
-    scale4 = stp_direct_asr(model->scale, 2);
+    /* C = V R (shading.rot, for the normals) and M = C scale: scale in Q14,
+     * below 2^15 */
+    scale14 = F >= 14 ? stp_direct_asr(model->scale, F >= 14 ? F - 14 : 0) : model->scale * (1 << (F >= 14 ? 0 : 14 - F));
     if (!stp_direct_shading_prepare(&shading, view, model, light))
         return STP_ERR_RANGE;
     for (i = 0; i < 3; i++)
         for (j = 0; j < 3; j++)
-            m[i][j] = stp_direct_asr((int32_t)shading.rot[i][j] * scale4, Q14); /* < 2^15 */
+            m[i][j] = stp_direct_asr((int32_t)shading.rot[i][j] * scale14, Q14); /* < 2^15 */
     d[0] = model->translate.x - view->from.x;
     d[1] = model->translate.y - view->from.y;
     d[2] = model->translate.z - view->from.z;

@@ -86,8 +86,7 @@ int stp_direct_view_look(stp_direct_view *v, stp_vec3 from, stp_vec3 at, stp_vec
     int32_t d[3], u[3], c[3];
     int16_t upn[3];
     int i;
-    if (v == 0 || width < 1 || width > 512 || height < 1 || height > 512 || focal <= 0 ||
-        focal >= ((stp_fix)1 << 24) || hither <= 0)
+    if (v == 0 || width < 1 || width > 512 || height < 1 || height > 512 || focal <= 0 || hither <= 0)
         return STP_ERR_ARG;
     d[0] = at.x - from.x;
     d[1] = at.y - from.y;

@@ -23,7 +23,9 @@
  * pixels.  Formats and ranges:
  *   Q1.14      int16_t, one = 16384 (STP_MESH_NORMAL_ONE): rotations, the
  *              view axes, normals.
- *   stp_fix    Q15.16 world and view coordinates.  Mesh vertices and the
+ *   stp_fix    world and view coordinates (STP_FIX_FRAC_BITS fractional
+ *              bits; the limits below are raw, so in units they shrink as
+ *              the precision grows: 128 units at 16 bits).  Mesh vertices and the
  *              differences used (translation - eye, light - eye) must be
  *              below 2^23 raw (128 units) in magnitude, so every product
  *              below stays in 32 bits; view coordinates then stay below
@@ -48,7 +50,7 @@ extern "C" {
 typedef struct stp_direct_view {
     stp_vec3 from;        /* the eye, world units */
     int16_t axis[3][3];   /* rows: right, up, forward (left-handed), Q1.14 */
-    stp_fix focal;        /* pixels per unit of x/z, (0, 2^24) */
+    stp_fix focal;        /* pixels per unit of x/z, > 0 */
     stp_fix hither;       /* nearest view z allowed, > 0 */
     uint16_t width, height; /* device pixels, 1..512 */
 } stp_direct_view;
@@ -57,7 +59,7 @@ typedef struct stp_direct_view {
  * up, focal pixels per unit of x/z (for a field of view fov over the
  * shorter side s: focal = (s / 2) / tan(fov / 2)), points nearer than
  * hither refused.  Errors: STP_ERR_ARG (v NULL, width or height not in
- * 1..512, focal not in (0, 2^24), hither <= 0), STP_ERR_VIEW (from = at,
+ * 1..512, focal or hither <= 0), STP_ERR_VIEW (from = at,
  * up along the line of sight, or from - at not below 2^23 raw). */
 int stp_direct_view_look(stp_direct_view *v, stp_vec3 from, stp_vec3 at, stp_vec3 up, stp_fix focal,
                          stp_fix hither, uint16_t width, uint16_t height);

@@ -7,11 +7,15 @@
 /* The Bayer 4x4 cell's thresholds (stp_cell_bayer(cell, 4)), as const data */
 static const uint8_t bayer4[16] = {14, 134, 44, 164, 194, 74, 224, 104, 59, 179, 29, 149, 239, 119, 209, 89};
 
-/* 2 pi i / n of a turn in 1/65536 turns, rounded */
-static uint16_t turn(uint32_t i, uint32_t n)
+/* i / n of a turn in 1/65536 turns, within one unit, as i (2^32 / n)
+ * 2^-16 rounded, for i < n (the product stays below 2^32): no division
+ * (ARMv6-M has none; the library's would be linked in) */
+static uint16_t turn(uint32_t i, uint32_t two32_over_n)
 {
-    return (uint16_t)((i * 65536u + n / 2u) / n);
+    return (uint16_t)((i * two32_over_n + 32768u) >> 16);
 }
+#define OVER_AROUND 171798692u /* 2^32 / 25 */
+#define OVER_TUBE 214748365u   /* 2^32 / 20 */
 
 static stp_vec3 point(stp_fix x, stp_fix y, stp_fix z)
 {
@@ -29,7 +33,7 @@ int direct_spin_init(direct_spin *s)
     int status;
     for (i = 0; i < SPIN_AROUND; i++)
         for (j = 0; j < SPIN_TUBE; j++) {
-            uint16_t u = turn(i, SPIN_AROUND), v = turn(j, SPIN_TUBE);
+            uint16_t u = turn(i, OVER_AROUND), v = turn(j, OVER_TUBE);
             int32_t cu = stp_direct_sin((uint16_t)(u + 0x4000u)), su = stp_direct_sin(u);
             int32_t cv = stp_direct_sin((uint16_t)(v + 0x4000u)), sv = stp_direct_sin(v);
             int32_t ring = major + ((minor * cv) >> 14); /* below 2^17: times Q14 below 2^31 */
@@ -37,9 +41,10 @@ int direct_spin_init(direct_spin *s)
         }
     for (i = 0; i < SPIN_AROUND; i++)
         for (j = 0; j < SPIN_TUBE; j++) {
-            uint16_t a = (uint16_t)(i * SPIN_TUBE + j), b = (uint16_t)(((i + 1u) % SPIN_AROUND) * SPIN_TUBE + j);
-            uint16_t c = (uint16_t)(((i + 1u) % SPIN_AROUND) * SPIN_TUBE + (j + 1u) % SPIN_TUBE);
-            uint16_t d = (uint16_t)(i * SPIN_TUBE + (j + 1u) % SPIN_TUBE);
+            /* the next ring and tube step, wrapping (no % on the chip) */
+            uint32_t i1 = i + 1u == SPIN_AROUND ? 0u : i + 1u, j1 = j + 1u == SPIN_TUBE ? 0u : j + 1u;
+            uint16_t a = (uint16_t)(i * SPIN_TUBE + j), b = (uint16_t)(i1 * SPIN_TUBE + j);
+            uint16_t c = (uint16_t)(i1 * SPIN_TUBE + j1), d = (uint16_t)(i * SPIN_TUBE + j1);
             /* counter-clockwise seen from outside: (a, d, c), (a, c, b) */
             s->triangles[t++] = a;
             s->triangles[t++] = d;
@@ -70,7 +75,7 @@ int direct_spin_init(direct_spin *s)
 int direct_spin_frame(direct_spin *s, uint16_t n, stp_direct_frame *f)
 {
     stp_direct_model pose;
-    stp_direct_model_turn(&pose, (uint16_t)(n * 1024u), turn((uint32_t)n % 160u, 160u), ONE, point(0, 0, 0));
+    stp_direct_model_turn(&pose, (uint16_t)(n * 1024u), (uint16_t)(n * 410u), ONE, point(0, 0, 0));
     return stp_direct_frame_project(f, &s->mesh, &pose, &s->view, &s->light, 16, bayer4, s->points, SPIN_VERTICES,
                                     s->faces, SPIN_TRIANGLES);
 }

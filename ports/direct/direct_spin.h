@@ -7,7 +7,7 @@
  * looking at the centre, 35 degrees across the 64 rows; one light at
  * (-4, 6, 5), power 9.775 (its attenuation at the centre cancelled),
  * background 0.2, R 0.7; 16 levels, Bayer 4x4; 128 x 64, 1 bit.  Frame n
- * turns the torus by n/64 of a turn about y and n/160 about x. */
+ * turns the torus by n/64 of a turn about y and n 410/65536 about x. */
 #ifndef STIPPLE_PORTS_DIRECT_SPIN_H
 #define STIPPLE_PORTS_DIRECT_SPIN_H
 
