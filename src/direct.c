@@ -154,7 +154,7 @@ static int light_ok(const stp_direct_light *l)
 /* Device position (Q4) of view point p with p[2] >= hither > 0; 0 when it
  * falls outside the device range.  fm, fe: focal = fm 2^fe, fm in
  * [2^15, 2^16). */
-static int project(const stp_direct_view *view, uint32_t fm, int fe, stp_direct_point *pt)
+static int project_point(const stp_direct_view *view, uint32_t fm, int fe, stp_direct_point *pt)
 {
     uint32_t z = (uint32_t)pt->z, m, g;
     int n = stp_direct_bits(z), i, sh;
@@ -281,7 +281,7 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
         p->x = c[0];
         p->y = c[1];
         p->z = c[2];
-        if (c[2] < view->hither || !project(view, fm, fe, p))
+        if (c[2] < view->hither || !project_point(view, fm, fe, p))
             return STP_ERR_RANGE;
     }
     for (k = 0; k < mesh->triangle_count; k++) {
