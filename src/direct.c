@@ -167,7 +167,7 @@ static int project_point(const stp_direct_view *view, uint32_t fm, int fe, stp_d
     for (i = 0; i < 2; i++) {
         int32_t v = i == 0 ? pt->x : pt->y;
         uint32_t h = mul_hi(stp_direct_abs(v), g); /* < 2^26 */
-        if (sh >= 0) {
+        if (sh >= 0) { /* sh > 4: z below 2^(fe + 16 - F) raw, refused */
             if (sh > 4 || h >= ((uint32_t)DEVICE_LIMIT >> sh))
                 return 0;
             h <<= sh;
@@ -187,8 +187,9 @@ static int project_point(const stp_direct_view *view, uint32_t fm, int fe, stp_d
     return 1;
 }
 
-/* The sum of three view coordinates (each below 2^26) over 3, within one
- * raw unit: s/3 as floor(s / 2^16) 21846 + low 21846 / 2^16. */
+/* The sum of three view coordinates (each below 2^26) over 3 as
+ * floor(s / 2^16) 21846 + (s mod 2^16) 21846 / 2^16: relative error below
+ * 2^-15 (21846 / 2^16 for 1/3), enough for the point a face is shaded at. */
 static int32_t third(int32_t a, int32_t b, int32_t c)
 {
     int32_t s = a + b + c;
