@@ -22,9 +22,8 @@ static inline uint32_t stp_direct_abs(int32_t v)
     return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
 }
 
-/* floor(n / d) for d in [1, 2^31): restoring division over n's
- * significant bits (no library call, no table: setup code only, never per
- * pixel). */
+/* floor(n / d) for d >= 1: shift-and-subtract over the quotient's bits
+ * (no library call, no table: setup code only, never per pixel). */
 uint32_t stp_direct_udiv(uint32_t n, uint32_t d);
 
 /* Significant bits of v (0 for 0). */

@@ -11,15 +11,21 @@
 
 uint32_t stp_direct_udiv(uint32_t n, uint32_t d)
 {
-    uint32_t q = 0, r = 0;
-    int i;
-    for (i = stp_direct_bits(n) - 1; i >= 0; i--) {
-        r = (r << 1) | ((n >> i) & 1u); /* r < 2d < 2^32 */
+    uint32_t q = 0;
+    int shift;
+    if (n < d)
+        return 0;
+    /* d aligned under n's top bit (below 2^32), then one step per
+     * quotient bit: bits(n) - bits(d) + 1 of them */
+    shift = stp_direct_bits(n) - stp_direct_bits(d);
+    d <<= shift;
+    for (; shift >= 0; shift--) {
         q <<= 1;
-        if (r >= d) {
-            r -= d;
+        if (n >= d) {
+            n -= d;
             q |= 1u;
         }
+        d >>= 1;
     }
     return q;
 }
@@ -27,6 +33,19 @@ uint32_t stp_direct_udiv(uint32_t n, uint32_t d)
 int stp_direct_bits(uint32_t v)
 {
     int n = 0;
+    /* halving steps: ARMv6-M has no count-leading-zeros instruction */
+    if (v >= 0x10000u) {
+        v >>= 16;
+        n = 16;
+    }
+    if (v >= 0x100u) {
+        v >>= 8;
+        n += 8;
+    }
+    if (v >= 0x10u) {
+        v >>= 4;
+        n += 4;
+    }
     while (v != 0) {
         v >>= 1;
         n++;
