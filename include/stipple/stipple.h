@@ -28,6 +28,7 @@ extern "C" {
 #include "stipple/transform.h"
 #include "stipple/render.h"
 #include "stipple/mesh.h"
+#include "stipple/direct.h"
 #include "stipple/colour.h"
 #include "stipple/raytrace.h"
 #include "stipple/playback.h"

@@ -1,0 +1,157 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Direct drawing (issue 15 item 3): an immediate-mode path that draws a
+ * triangle mesh straight into a 1-bit band, for a spinning model on a
+ * small chip.  No display file, no segments, no clipping, no hidden-surface
+ * removal beyond back faces (convex models, or models whose triangles are
+ * ordered so later ones may cover earlier ones: the triangles are painted
+ * in mesh order, as the full renderer's --hidden none paints them).
+ *
+ * Per frame:
+ *   1. stp_direct_frame_project: every vertex transformed (model, then
+ *      view) and projected once into caller scratch (stp_direct_point),
+ *      every front face shaded once (flat; one light; the seed's ambient +
+ *      diffuse equation, docs/model.md section 2, shade_fast.c's 32-bit
+ *      arithmetic) into a per-face byte pair;
+ *   2. stp_direct_draw_band for each band of rows (u8g2-style page mode:
+ *      one band of caller memory), painting the faces that touch it with
+ *      the full renderer's fill rule (pixel centres, top-left rule, Q27.4
+ *      device coordinates) and its ordered-dither halftone, MSB first.
+ *
+ * 32-bit arithmetic only (no 64-bit product or division is formed, so no
+ * libgcc helper is linked on a Cortex-M0+), no division in any loop over
+ * pixels.  Formats and ranges:
+ *   Q1.14      int16_t, one = 16384 (STP_MESH_NORMAL_ONE): rotations, the
+ *              view axes, normals.
+ *   stp_fix    world and view coordinates (STP_FIX_FRAC_BITS fractional
+ *              bits; the limits below are raw, so in units they shrink as
+ *              the precision grows: 128 units at 16 bits).  Mesh vertices and the
+ *              differences used (translation - eye, light - eye) must be
+ *              below 2^23 raw (128 units) in magnitude, so every product
+ *              below stays in 32 bits; view coordinates then stay below
+ *              2^26.
+ *   device     Q27.4 (1/16 pixel), kept in int16_t: every projected vertex
+ *              must land in [-8192, 8192) (pixels -512..511) or the frame
+ *              is refused with STP_ERR_RANGE; so width, height <= 512.
+ */
+#ifndef STIPPLE_DIRECT_H
+#define STIPPLE_DIRECT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "stipple/mesh.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* A camera, prepared once (stp_direct_view_look). */
+typedef struct stp_direct_view {
+    stp_vec3 from;        /* the eye, world units */
+    int16_t axis[3][3];   /* rows: right, up, forward (left-handed), Q1.14 */
+    stp_fix focal;        /* pixels per unit of x/z, > 0 */
+    stp_fix hither;       /* nearest view z allowed, > 0 */
+    uint16_t width, height; /* device pixels, 1..512 */
+} stp_direct_view;
+
+/* The camera at from looking at at, with up's projection as the picture's
+ * up, focal pixels per unit of x/z (for a field of view fov over the
+ * shorter side s: focal = (s / 2) / tan(fov / 2)), points nearer than
+ * hither refused.  Errors: STP_ERR_ARG (v NULL, width or height not in
+ * 1..512, focal or hither <= 0), STP_ERR_VIEW (from = at,
+ * up along the line of sight, or from - at not below 2^23 raw). */
+int stp_direct_view_look(stp_direct_view *v, stp_vec3 from, stp_vec3 at, stp_vec3 up, stp_fix focal,
+                         stp_fix hither, uint16_t width, uint16_t height);
+
+/* A model transform: p' = scale (rot p) + translate. */
+typedef struct stp_direct_model {
+    int16_t rot[3][3];   /* a rotation, row-major, Q1.14 */
+    stp_fix scale;       /* uniform, (0, 2) */
+    stp_vec3 translate;  /* world units */
+} stp_direct_model;
+
+/* sin(2 pi angle / 65536) in Q1.14 (angle: 1/65536 of a turn), within
+ * 2 raw units: a 65-entry quarter table and linear interpolation. */
+int16_t stp_direct_sin(uint16_t angle);
+
+/* The model turned by yaw about the y axis, then by pitch about the x
+ * axis (angles in 1/65536 of a turn), scaled and translated: rot =
+ * Rx(pitch) Ry(yaw).  m NULL is ignored. */
+void stp_direct_model_turn(stp_direct_model *m, uint16_t yaw, uint16_t pitch, stp_fix scale,
+                           stp_vec3 translate);
+
+/* The one light and the material (docs/model.md section 2, one light):
+ *   s = min(1, BRIGHT (B R + P R (N.L) / (C + U)))
+ * position: world units; power P, brightness BRIGHT in [0, 256);
+ * background B and reflectivity R in [0, 1]; attenuation_c C > 0 (values
+ * <= 0 are taken as 1 raw unit, as shade.c does). */
+typedef struct stp_direct_light {
+    stp_vec3 position;
+    stp_fix power;
+    stp_fix brightness;
+    stp_fix background;
+    stp_fix attenuation_c;
+    stp_fix reflectivity;
+} stp_direct_light;
+
+/* The unit outward normal of every triangle of mesh into normals[3 t ..
+ * 3 t + 2], Q1.14, as stp_mesh_prepare_normals but in 32-bit arithmetic
+ * (its normals field is ignored): the two edge vectors cut to 15
+ * significant bits together, their cross product normalised; within
+ * 2^-12 of the exact unit normal while the edges keep 10 or more bits
+ * after the cut (a triangle not much thinner than 1/32 of its longest
+ * side).  Errors: STP_ERR_ARG (NULL, an index not below vertex_count),
+ * STP_ERR_RANGE (an edge component not below 2^24 raw),
+ * STP_ERR_DEGENERATE (a zero cross product after the cut).  normals[] is
+ * written up to the bad triangle. */
+int stp_direct_mesh_normals(const stp_mesh *mesh, int16_t *normals);
+
+/* Per-vertex scratch (caller memory, one per mesh vertex; 16 bytes). */
+typedef struct stp_direct_point {
+    int32_t x, y, z;     /* view coordinates, stp_fix */
+    int16_t dx, dy;      /* device position, Q27.4 */
+} stp_direct_point;
+
+/* One frame, as stp_direct_frame_project leaves it for the bands. */
+typedef struct stp_direct_frame {
+    const stp_mesh *mesh;
+    const stp_direct_point *points;
+    const uint16_t *faces;    /* per triangle: 0 not drawn, else 256 + intensity */
+    const uint8_t *cell;      /* 4 x 4 thresholds, row-major */
+    uint16_t width, height;
+} stp_direct_frame;
+
+/* Transform, project and shade one frame of mesh (prepared normals
+ * required: stp_mesh_prepare_normals) under model, view and light, into
+ * points[0 .. vertex_count - 1] and faces[0 .. triangle_count - 1] (caller
+ * memory, kept until the frame's bands are drawn) and *f.  A face is drawn
+ * when its projected vertices turn counter-clockwise on the screen (the
+ * back faces and edge-on faces are removed); its shade goes through
+ * INTENSITY with levels (2..255) styles and the linear 8-bit drive value
+ * ((index - 1) 255 / (levels - 1), rounded), later compared with cell
+ * (4 x 4 thresholds, row-major: a Bayer cell's, stp_cell_bayer) pixel by
+ * pixel: ON where intensity > threshold.
+ * Errors: STP_ERR_ARG (a pointer NULL, a mesh array NULL, an index not
+ * below vertex_count, point_count or face_count too small, levels
+ * outside 2..255, scale outside (0, 2), a light value outside its range),
+ * STP_ERR_RANGE (a vertex nearer than hither or projecting outside the
+ * device range, or a coordinate beyond 2^23 raw); *f is then not usable. */
+int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const stp_direct_model *model,
+                             const stp_direct_view *view, const stp_direct_light *light, int levels,
+                             const uint8_t cell[16], stp_direct_point *points, size_t point_count,
+                             uint16_t *faces, size_t face_count);
+
+/* Draw rows y0 .. y0 + rows - 1 of frame f into band (rows x stride
+ * bytes, 1 bit per pixel, most significant bit first, bit 1 = ON): the
+ * band is cleared (OFF) first, then every drawn face is painted in mesh
+ * order.  stride >= (width + 7) / 8.  Errors: STP_ERR_ARG (f, its arrays
+ * or band NULL, stride too small, rows 0 or y0 + rows > height). */
+int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0,
+                         uint16_t rows);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,41 @@
+/* SPDX-License-Identifier: MIT */
+/* A spinning torus drawn by direct drawing (include/stipple/direct.h),
+ * integer only, so the host and the Cortex-M firmware build the same model
+ * and draw the same pictures: the torus of issue 11's bench (major radius
+ * 1, minor 0.4, 25 x 20 quads split into 1000 triangles) built from
+ * stp_direct_sin, normals by stp_direct_mesh_normals; eye at (0, 3, 5.2)
+ * looking at the centre, 35 degrees across the 64 rows; one light at
+ * (-4, 6, 5), power 9.775 (its attenuation at the centre cancelled),
+ * background 0.2, R 0.7; 16 levels, Bayer 4x4; 128 x 64, 1 bit.  Frame n
+ * turns the torus by n/64 of a turn about y and n 410/65536 about x. */
+#ifndef STIPPLE_PORTS_DIRECT_SPIN_H
+#define STIPPLE_PORTS_DIRECT_SPIN_H
+
+#include "stipple/direct.h"
+
+#define SPIN_WIDTH 128u
+#define SPIN_HEIGHT 64u
+#define SPIN_STRIDE (SPIN_WIDTH / 8u)
+#define SPIN_AROUND 25u
+#define SPIN_TUBE 20u
+#define SPIN_VERTICES (SPIN_AROUND * SPIN_TUBE)
+#define SPIN_TRIANGLES (2u * SPIN_VERTICES)
+
+typedef struct direct_spin {
+    stp_mesh mesh;
+    stp_direct_view view;
+    stp_direct_light light;
+    stp_vec3 vertices[SPIN_VERTICES];
+    uint16_t triangles[3 * SPIN_TRIANGLES];
+    int16_t normals[3 * SPIN_TRIANGLES];
+    stp_direct_point points[SPIN_VERTICES];
+    uint16_t faces[SPIN_TRIANGLES];
+} direct_spin;
+
+/* The model, its normals, the view and the light.  STP_OK or the error. */
+int direct_spin_init(direct_spin *s);
+
+/* Frame n projected and shaded into *f (its bands: stp_direct_draw_band). */
+int direct_spin_frame(direct_spin *s, uint16_t n, stp_direct_frame *f);
+
+#endif

@@ -1,0 +1,309 @@
+/* SPDX-License-Identifier: MIT */
+/* Direct drawing's per-frame step (include/stipple/direct.h): every vertex
+ * transformed and projected once, every front face shaded once.
+ *
+ * Formats (ranges as direct.h states them):
+ *   composite  C = V R (view axes times the model rotation), Q1.14 rows:
+ *              each sum of three Q28 products below 3 2^28, rounded to
+ *              Q14; M = C scale, Q1.14 with |m| < 2^15 (scale < 2)
+ *   vmul       v m / 2^14 for |v| < 2^23 and |m| < 2^15 as
+ *              floor(v / 2^14) m + floor((v mod 2^14) m / 2^14): the
+ *              products below 2^24 and 2^29
+ *   view       M v + V (t - from): three vmul below 2^24 each plus one
+ *              below 2^24: |.| < 2^26
+ *   projection 1/z from a 16-bit mantissa of z (z in [hither, 2^26)):
+ *              r = floor(2^31 / m) in (2^15, 2^16]; g = focal's 16-bit
+ *              mantissa times r, below 2^32; x g / 2^32 from 16-bit
+ *              halves; relative error below 2^-14, so a device
+ *              coordinate (below 2^13 in Q4) is within 1/2 of a Q4 unit of
+ *              the full renderer's floor(focal x / z 2^-12)
+ *   shading    shade_fast.c (its file comment), prepared here without
+ *              64-bit arithmetic: B R BRIGHT from 16-bit halves. */
+#include "stipple/direct.h"
+
+#include "direct_private.h"
+#include "shade_fast_private.h"
+
+#define F STP_FIX_FRAC_BITS
+#define ONE STP_FIX_ONE
+#define Q14 14
+#define COORD_LIMIT ((int32_t)1 << 23)
+#define DEVICE_LIMIT 8192
+
+/* floor(a b / 2^32) for a, b < 2^32, from four 16 x 16-bit products */
+static uint32_t mul_hi(uint32_t a, uint32_t b)
+{
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t lh = al * bh, hl = ah * bl;
+    uint32_t mid = ((al * bl) >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    return ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+}
+
+/* v m / 2^14 (file comment: vmul) */
+static int32_t vmul(int32_t v, int32_t m)
+{
+    return stp_direct_asr(v, Q14) * m + stp_direct_asr((v & 0x3FFF) * m, Q14);
+}
+
+static int outside(int32_t v)
+{
+    return v >= COORD_LIMIT || v <= -COORD_LIMIT;
+}
+
+/* The view coordinates of world-space difference d (|d_i| < 2^23); out
+ * must not be d. */
+static void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out[3])
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        out[i] = vmul(d[0], view->axis[i][0]) + vmul(d[1], view->axis[i][1]) + vmul(d[2], view->axis[i][2]);
+}
+
+/* v 2^-e as shade_fast.c's stp_sf16 (its sf_make: truncated) */
+static stp_sf16 sf16_of(uint32_t v, int e)
+{
+    stp_sf16 r;
+    int n = stp_direct_bits(v) - 16;
+    r.m = v == 0 ? 0u : (n > 0 ? v >> n : v << -n);
+    r.e = v == 0 ? 0 : e - n;
+    return r;
+}
+
+/* stp_shade_fast_prepare for one light, eye at the view origin, no
+ * highlight, in 32-bit arithmetic.  light_view: the light in view
+ * coordinates. */
+/* The shifts between stp_fix (F fractional bits) and Q16 (both folded to
+ * constants; the unused one is 0). */
+#define DOWN16 (F >= 16 ? F - 16 : 0)
+#define UP16 (F >= 16 ? 0 : 16 - F)
+
+/* v (stp_fix, 0 <= v < 2^(F + 8)) in Q16: below 2^24 */
+static uint32_t to_q16(stp_fix v)
+{
+    return ((uint32_t)v >> DOWN16) << UP16;
+}
+
+/* v in Q16 (<= 2^16) with F fractional bits, rounded */
+static stp_fix from_q16(uint32_t v)
+{
+    return (stp_fix)(((v << DOWN16) + ((1u << UP16) >> 1)) >> UP16);
+}
+
+static void shade_prepare(stp_shade_fast *s, const stp_direct_light *l, const int32_t light_view[3])
+{
+    uint32_t b = to_q16(l->background), r = to_q16(l->reflectivity), bright16 = to_q16(l->brightness), br, p;
+    stp_sf16 bright = sf16_of((uint32_t)l->brightness, F), power = sf16_of((uint32_t)l->power, F);
+    /* B R in Q32: B, R <= 2^16, so at most 2^32 (taken as 2^32 - 1) */
+    br = b == 65536u ? (r == 65536u ? 0xFFFFFFFFu : r << 16) : b * r;
+    s->count = l->brightness > 0 ? 1 : 0;
+    s->parallel = 0;
+    s->specular = 0;
+    s->refl_negative = 0;
+    /* BRIGHT < 2^24 in Q16: round(B R BRIGHT) in Q16, capped at 1, then
+     * with F fractional bits */
+    p = mul_hi(br, bright16 << 1);
+    p = p >= 2u * 65536u ? 65536u : (p + 1u) >> 1;
+    s->ambient_shade = from_q16(p);
+    /* the same in Q26 (B R BRIGHT / 2^22), capped at 2^29 */
+    p = mul_hi(br, bright16);
+    s->ambient = p >= ((uint32_t)1 << 19) ? (int32_t)1 << 29 : (int32_t)(p << 10);
+    s->eye.x = s->eye.y = s->eye.z = 0;
+    s->eye_big = 0;
+    s->light[0].x = light_view[0];
+    s->light[0].y = light_view[1];
+    s->light[0].z = light_view[2];
+    s->light_big[0] = 0; /* below 2^26 */
+    /* BRIGHT P as shade_fast.c's sf_mul, per raw unit of C + U */
+    p = bright.m * power.m;
+    s->power[0].m = p >= 0x80000000u ? p >> 16 : p >> 15;
+    s->power[0].e = bright.e + power.e - (p >= 0x80000000u ? 16 : 15) - F;
+    s->refl = sf16_of(r, 16); /* r in Q16 */
+    s->attenuation_c = sf16_of(l->attenuation_c > 0 ? (uint32_t)l->attenuation_c : 1u, 0);
+}
+
+int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_view *view,
+                               const stp_direct_model *model, const stp_direct_light *light)
+{
+    int32_t d[3], lv[3];
+    int i, j;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) {
+            /* three Q28 products: below 3 2^28 */
+            int32_t c = (int32_t)view->axis[i][0] * model->rot[0][j] +
+                        (int32_t)view->axis[i][1] * model->rot[1][j] + (int32_t)view->axis[i][2] * model->rot[2][j];
+            s->rot[i][j] = (int16_t)stp_direct_asr(c + ((int32_t)1 << (Q14 - 1)), Q14);
+        }
+    d[0] = light->position.x - view->from.x;
+    d[1] = light->position.y - view->from.y;
+    d[2] = light->position.z - view->from.z;
+    for (i = 0; i < 3; i++)
+        if (outside(d[i]))
+            return 0;
+    to_view(view, d, lv);
+    shade_prepare(&s->fast, light, lv);
+    return 1;
+}
+
+static int light_ok(const stp_direct_light *l)
+{
+    return l->power >= 0 && l->power < 256 * ONE && l->brightness >= 0 &&
+           l->brightness < 256 * ONE && l->background >= 0 && l->background <= ONE &&
+           l->reflectivity >= 0 && l->reflectivity <= ONE;
+}
+
+/* Device position (Q4) of view point p with p[2] >= hither > 0; 0 when it
+ * falls outside the device range.  fm, fe: focal = fm 2^fe, fm in
+ * [2^15, 2^16). */
+static int project_point(const stp_direct_view *view, uint32_t fm, int fe, stp_direct_point *pt)
+{
+    uint32_t z = (uint32_t)pt->z, m, g;
+    int n = stp_direct_bits(z), i, sh;
+    int32_t c[2];
+    m = n > 16 ? z >> (n - 16) : z << (16 - n);
+    g = fm * stp_direct_udiv(0x80000000u, m); /* focal / z 2^(15 + n - fe) */
+    /* focal x / z in Q4 (focal with F fractional bits): x g 2^(fe - 11 - n -
+     * F) = mul_hi(x, g) 2^(fe + 21 - F - n) */
+    sh = fe + 21 - F - n;
+    for (i = 0; i < 2; i++) {
+        int32_t v = i == 0 ? pt->x : pt->y;
+        uint32_t h = mul_hi(stp_direct_abs(v), g); /* < 2^26 */
+        if (sh >= 0) { /* sh > 4: z below 2^(fe + 16 - F) raw, refused */
+            if (sh > 4 || h >= ((uint32_t)DEVICE_LIMIT >> sh))
+                return 0;
+            h <<= sh;
+        } else {
+            h = sh <= -32 ? 0u : h >> -sh;
+        }
+        if (h >= (uint32_t)DEVICE_LIMIT * 2u)
+            return 0;
+        c[i] = v < 0 ? -(int32_t)h : (int32_t)h;
+    }
+    c[0] = (int32_t)view->width * 8 + c[0];
+    c[1] = (int32_t)view->height * 8 - c[1];
+    if (c[0] < -DEVICE_LIMIT || c[0] >= DEVICE_LIMIT || c[1] < -DEVICE_LIMIT || c[1] >= DEVICE_LIMIT)
+        return 0;
+    pt->dx = (int16_t)c[0];
+    pt->dy = (int16_t)c[1];
+    return 1;
+}
+
+/* The sum of three view coordinates (each below 2^26) over 3 as
+ * floor(s / 2^16) 21846 + (s mod 2^16) 21846 / 2^16: relative error below
+ * 2^-15 (21846 / 2^16 for 1/3), enough for the point a face is shaded at. */
+static int32_t third(int32_t a, int32_t b, int32_t c)
+{
+    int32_t s = a + b + c;
+    return stp_direct_asr(s, 16) * 21846 + (int32_t)(((uint32_t)s & 0xFFFFu) * 21846u >> 16);
+}
+
+stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal,
+                              const stp_direct_point *const p[3])
+{
+    int16_t nv[3];
+    stp_vec3 centre;
+    int i;
+    for (i = 0; i < 3; i++)
+        nv[i] = (int16_t)stp_direct_asr((int32_t)s->rot[i][0] * normal[0] + (int32_t)s->rot[i][1] * normal[1] +
+                                            (int32_t)s->rot[i][2] * normal[2] + ((int32_t)1 << (Q14 - 1)),
+                                        Q14);
+    centre.x = third(p[0]->x, p[1]->x, p[2]->x);
+    centre.y = third(p[0]->y, p[1]->y, p[2]->y);
+    centre.z = third(p[0]->z, p[1]->z, p[2]->z);
+    return stp_shade_fast_face(&s->fast, nv, centre); /* [0, 1] */
+}
+
+/* The intensity byte of a front face: the shade, INTENSITY, the linear
+ * drive value. */
+static uint16_t face_intensity(const stp_direct_shading *s, const int16_t *normal,
+                               const stp_direct_point *const p[3], int levels)
+{
+    stp_fix shade = stp_direct_face_shade(s, normal, p);
+    uint32_t index = ((uint32_t)shade * (uint32_t)(levels - 1)) >> F; /* index - 1 */
+    return (uint16_t)(256u + stp_direct_udiv(index * 255u + (uint32_t)(levels - 1) / 2u,
+                                             (uint32_t)(levels - 1)));
+}
+
+static int check_args(const stp_direct_frame *f, const stp_mesh *mesh, const stp_direct_model *model,
+                      const stp_direct_view *view, const stp_direct_light *light, int levels,
+                      const uint8_t *cell, const stp_direct_point *points, size_t point_count,
+                      const uint16_t *faces, size_t face_count)
+{
+    uint32_t i;
+    if (f == 0 || mesh == 0 || model == 0 || view == 0 || light == 0 || cell == 0 || points == 0 ||
+        faces == 0 || mesh->vertices == 0 || mesh->triangles == 0 || mesh->normals == 0 ||
+        point_count < mesh->vertex_count || face_count < mesh->triangle_count || levels < 2 ||
+        levels > 255 || model->scale <= 0 || model->scale >= 2 * ONE || !light_ok(light))
+        return STP_ERR_ARG;
+    for (i = 0; i < 3 * (uint32_t)mesh->triangle_count; i++)
+        if (mesh->triangles[i] >= mesh->vertex_count)
+            return STP_ERR_ARG;
+    return STP_OK;
+}
+
+int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const stp_direct_model *model,
+                             const stp_direct_view *view, const stp_direct_light *light, int levels,
+                             const uint8_t cell[16], stp_direct_point *points, size_t point_count,
+                             uint16_t *faces, size_t face_count)
+{
+    int32_t m[3][3], t[3], d[3], scale14;
+    stp_direct_shading shading;
+    uint32_t fm;
+    int i, j, fe, status;
+    uint16_t k;
+    status = check_args(f, mesh, model, view, light, levels, cell, points, point_count, faces, face_count);
+    if (status != STP_OK)
+        return status;
+    /* C = V R (shading.rot, for the normals) and M = C scale: scale in Q14,
+     * below 2^15 */
+    scale14 = F >= 14 ? stp_direct_asr(model->scale, F >= 14 ? F - 14 : 0) : model->scale * (1 << (F >= 14 ? 0 : 14 - F));
+    if (!stp_direct_shading_prepare(&shading, view, model, light))
+        return STP_ERR_RANGE;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            m[i][j] = stp_direct_asr((int32_t)shading.rot[i][j] * scale14, Q14); /* < 2^15 */
+    d[0] = model->translate.x - view->from.x;
+    d[1] = model->translate.y - view->from.y;
+    d[2] = model->translate.z - view->from.z;
+    for (i = 0; i < 3; i++)
+        if (outside(d[i]))
+            return STP_ERR_RANGE;
+    to_view(view, d, t);
+    fm = (uint32_t)view->focal;
+    fe = stp_direct_bits(fm) - 16;
+    fm = fe > 0 ? fm >> fe : fm << -fe;
+    for (k = 0; k < mesh->vertex_count; k++) {
+        const stp_vec3 *v = &mesh->vertices[k];
+        stp_direct_point *p = &points[k];
+        int32_t c[3];
+        if (outside(v->x) || outside(v->y) || outside(v->z))
+            return STP_ERR_RANGE;
+        for (i = 0; i < 3; i++)
+            c[i] = vmul(v->x, m[i][0]) + vmul(v->y, m[i][1]) + vmul(v->z, m[i][2]) + t[i];
+        p->x = c[0];
+        p->y = c[1];
+        p->z = c[2];
+        if (c[2] < view->hither || !project_point(view, fm, fe, p))
+            return STP_ERR_RANGE;
+    }
+    for (k = 0; k < mesh->triangle_count; k++) {
+        const uint16_t *tri = &mesh->triangles[3 * (uint32_t)k];
+        const stp_direct_point *p[3];
+        int32_t area;
+        p[0] = &points[tri[0]];
+        p[1] = &points[tri[1]];
+        p[2] = &points[tri[2]];
+        /* twice the signed screen area (y down): differences below 2^14,
+         * products below 2^28; a front face turns counter-clockwise seen
+         * from the eye, clockwise in device coordinates */
+        area = ((int32_t)p[1]->dx - p[0]->dx) * ((int32_t)p[2]->dy - p[0]->dy) -
+               ((int32_t)p[1]->dy - p[0]->dy) * ((int32_t)p[2]->dx - p[0]->dx);
+        faces[k] = area < 0 ? face_intensity(&shading, &mesh->normals[3 * (uint32_t)k], p, levels) : 0;
+    }
+    f->mesh = mesh;
+    f->points = points;
+    f->faces = faces;
+    f->cell = cell;
+    f->width = view->width;
+    f->height = view->height;
+    return STP_OK;
+}

@@ -1,0 +1,224 @@
+/* SPDX-License-Identifier: MIT */
+/* Direct drawing's camera, model transform and sine (include/stipple/direct.h),
+ * and the integer helpers the direct files share (direct_private.h). */
+#include "stipple/direct.h"
+
+#include "direct_private.h"
+#include "fix_private.h" /* STP_TABLE */
+
+#define Q14 14
+#define COORD_LIMIT ((int32_t)1 << 23) /* direct.h: coordinates below 2^23 raw */
+
+uint32_t stp_direct_udiv(uint32_t n, uint32_t d)
+{
+    uint32_t q = 0;
+    int shift;
+    if (n < d)
+        return 0;
+    /* d aligned under n's top bit (below 2^32), then one step per
+     * quotient bit: bits(n) - bits(d) + 1 of them */
+    shift = stp_direct_bits(n) - stp_direct_bits(d);
+    d <<= shift;
+    for (; shift >= 0; shift--) {
+        q <<= 1;
+        if (n >= d) {
+            n -= d;
+            q |= 1u;
+        }
+        d >>= 1;
+    }
+    return q;
+}
+
+int stp_direct_bits(uint32_t v)
+{
+    int n = 0;
+    /* halving steps: ARMv6-M has no count-leading-zeros instruction */
+    if (v >= 0x10000u) {
+        v >>= 16;
+        n = 16;
+    }
+    if (v >= 0x100u) {
+        v >>= 8;
+        n += 8;
+    }
+    if (v >= 0x10u) {
+        v >>= 4;
+        n += 4;
+    }
+    while (v != 0) {
+        v >>= 1;
+        n++;
+    }
+    return n;
+}
+
+/* floor(sqrt(v)) bit by bit */
+static uint32_t isqrt32(uint32_t v)
+{
+    uint32_t root = 0, bit = (uint32_t)1 << 30;
+    while (bit > v)
+        bit >>= 2;
+    while (bit != 0) {
+        if (v >= root + bit) {
+            v -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    return root;
+}
+
+/* v scaled to unit length in Q1.14 (|v_i| < 2^31); returns its length
+ * after v was cut to 15 bits (0: a zero vector, out untouched). */
+static uint32_t unit14(const int32_t v[3], int16_t out[3])
+{
+    uint32_t big = stp_direct_abs(v[0]) | stp_direct_abs(v[1]) | stp_direct_abs(v[2]), len;
+    int32_t w[3];
+    int i, s = stp_direct_bits(big) - 15;
+    if (big == 0)
+        return 0;
+    for (i = 0; i < 3; i++)
+        w[i] = s > 0 ? stp_direct_asr(v[i], s) : v[i] * ((int32_t)1 << -s); /* |w| < 2^15 */
+    /* each square below 2^30: the sum below 3 2^30 < 2^32 */
+    len = isqrt32((uint32_t)(w[0] * w[0]) + (uint32_t)(w[1] * w[1]) + (uint32_t)(w[2] * w[2]));
+    for (i = 0; i < 3; i++) {
+        uint32_t q = stp_direct_udiv((stp_direct_abs(w[i]) << Q14) + len / 2u, len); /* <= 2^14 */
+        out[i] = (int16_t)(w[i] < 0 ? -(int32_t)q : (int32_t)q);
+    }
+    return len;
+}
+
+/* a x b of Q1.14 vectors: Q2.28, each component below 2^29 */
+static void cross14(const int16_t a[3], const int16_t b[3], int32_t c[3])
+{
+    c[0] = (int32_t)a[1] * b[2] - (int32_t)a[2] * b[1];
+    c[1] = (int32_t)a[2] * b[0] - (int32_t)a[0] * b[2];
+    c[2] = (int32_t)a[0] * b[1] - (int32_t)a[1] * b[0];
+}
+
+int stp_direct_view_look(stp_direct_view *v, stp_vec3 from, stp_vec3 at, stp_vec3 up, stp_fix focal,
+                         stp_fix hither, uint16_t width, uint16_t height)
+{
+    int32_t d[3], u[3], c[3];
+    int16_t upn[3];
+    int i;
+    if (v == 0 || width < 1 || width > 512 || height < 1 || height > 512 || focal <= 0 || hither <= 0)
+        return STP_ERR_ARG;
+    d[0] = at.x - from.x;
+    d[1] = at.y - from.y;
+    d[2] = at.z - from.z;
+    for (i = 0; i < 3; i++)
+        if (d[i] >= COORD_LIMIT || d[i] <= -COORD_LIMIT)
+            return STP_ERR_VIEW;
+    u[0] = up.x;
+    u[1] = up.y;
+    u[2] = up.z;
+    if (unit14(d, v->axis[2]) == 0 || unit14(u, upn) == 0)
+        return STP_ERR_VIEW;
+    /* right = forward x up, as view.c; short: up along the line of sight */
+    cross14(v->axis[2], upn, c);
+    if (stp_direct_abs(c[0]) + stp_direct_abs(c[1]) + stp_direct_abs(c[2]) < ((uint32_t)1 << 18))
+        return STP_ERR_VIEW;
+    (void)unit14(c, v->axis[0]);
+    cross14(v->axis[0], v->axis[2], c);
+    (void)unit14(c, v->axis[1]);
+    v->from = from;
+    v->focal = focal;
+    v->hither = hither;
+    v->width = width;
+    v->height = height;
+    return STP_OK;
+}
+
+/* sin(pi i / 128) in Q1.14, i = 0..64 */
+static const uint16_t quarter_sine[65] STP_TABLE = {
+    0,     402,   804,   1205,  1606,  2006,  2404,  2801,  3196,  3590,  3981,  4370,  4756,
+    5139,  5520,  5897,  6270,  6639,  7005,  7366,  7723,  8076,  8423,  8765,  9102,  9434,
+    9760,  10080, 10394, 10702, 11003, 11297, 11585, 11866, 12140, 12406, 12665, 12916, 13160,
+    13395, 13623, 13842, 14053, 14256, 14449, 14635, 14811, 14978, 15137, 15286, 15426, 15557,
+    15679, 15791, 15893, 15986, 16069, 16143, 16207, 16261, 16305, 16340, 16364, 16379, 16384,
+};
+
+int16_t stp_direct_sin(uint16_t angle)
+{
+    uint32_t quadrant = (uint32_t)angle >> 14, r = (uint32_t)angle & 0x3FFFu, i, f;
+    int32_t a, b, s;
+    if (quadrant & 1u)
+        r = 0x4000u - r; /* sin(pi - x) */
+    i = r >> 8;
+    f = r & 0xFFu;
+    a = (int32_t)STP_TABLE_U16(&quarter_sine[i]);
+    b = i < 64u ? (int32_t)STP_TABLE_U16(&quarter_sine[i + 1u]) : a;
+    s = a + stp_direct_asr((b - a) * (int32_t)f + 128, 8);
+    return (int16_t)(quadrant >= 2u ? -s : s);
+}
+
+/* a b in Q1.14, rounded */
+static int16_t mul14(int32_t a, int32_t b)
+{
+    return (int16_t)stp_direct_asr(a * b + ((int32_t)1 << (Q14 - 1)), Q14);
+}
+
+void stp_direct_model_turn(stp_direct_model *m, uint16_t yaw, uint16_t pitch, stp_fix scale,
+                           stp_vec3 translate)
+{
+    int32_t sy = stp_direct_sin(yaw), cy = stp_direct_sin((uint16_t)(yaw + 0x4000u));
+    int32_t sx = stp_direct_sin(pitch), cx = stp_direct_sin((uint16_t)(pitch + 0x4000u));
+    if (m == 0)
+        return;
+    /* Rx(pitch) Ry(yaw) */
+    m->rot[0][0] = (int16_t)cy;
+    m->rot[0][1] = 0;
+    m->rot[0][2] = (int16_t)sy;
+    m->rot[1][0] = mul14(sx, sy);
+    m->rot[1][1] = (int16_t)cx;
+    m->rot[1][2] = mul14(-sx, cy);
+    m->rot[2][0] = mul14(-cx, sy);
+    m->rot[2][1] = (int16_t)sx;
+    m->rot[2][2] = mul14(cx, cy);
+    m->scale = scale;
+    m->translate = translate;
+}
+
+int stp_direct_mesh_normals(const stp_mesh *mesh, int16_t *normals)
+{
+    uint32_t t;
+    if (mesh == 0 || normals == 0 || (mesh->triangle_count > 0 && (mesh->vertices == 0 || mesh->triangles == 0)))
+        return STP_ERR_ARG;
+    for (t = 0; t < mesh->triangle_count; t++) {
+        const uint16_t *k = &mesh->triangles[3 * t];
+        const stp_vec3 *a, *b, *c;
+        int32_t e[6], n[3];
+        uint32_t big = 0;
+        int i, s;
+        if (k[0] >= mesh->vertex_count || k[1] >= mesh->vertex_count || k[2] >= mesh->vertex_count)
+            return STP_ERR_ARG;
+        a = &mesh->vertices[k[0]];
+        b = &mesh->vertices[k[1]];
+        c = &mesh->vertices[k[2]];
+        e[0] = b->x - a->x;
+        e[1] = b->y - a->y;
+        e[2] = b->z - a->z;
+        e[3] = c->x - a->x;
+        e[4] = c->y - a->y;
+        e[5] = c->z - a->z;
+        for (i = 0; i < 6; i++) {
+            if (e[i] >= 2 * COORD_LIMIT || e[i] <= -2 * COORD_LIMIT)
+                return STP_ERR_RANGE;
+            big |= stp_direct_abs(e[i]);
+        }
+        /* the edges cut to 15 bits together: products below 2^30 */
+        s = stp_direct_bits(big) - 15;
+        for (i = 0; s > 0 && i < 6; i++)
+            e[i] = stp_direct_asr(e[i], s);
+        n[0] = e[1] * e[5] - e[2] * e[4];
+        n[1] = e[2] * e[3] - e[0] * e[5];
+        n[2] = e[0] * e[4] - e[1] * e[3];
+        if (unit14(n, &normals[3 * t]) == 0)
+            return STP_ERR_DEGENERATE;
+    }
+    return STP_OK;
+}
