@@ -69,6 +69,18 @@ static stp_sf16 sf16_of(uint32_t v, int e)
     return r;
 }
 
+/* a b as shade_fast.c's sf_mul (truncated): the mantissas' product is below
+ * 2^32 */
+static stp_sf16 sf16_mul(stp_sf16 a, stp_sf16 b)
+{
+    uint32_t p = a.m * b.m;
+    stp_sf16 r;
+    int top = p >= 0x80000000u;
+    r.m = top ? p >> 16 : p >> 15;
+    r.e = a.e + b.e - (top ? 16 : 15);
+    return r;
+}
+
 /* stp_shade_fast_prepare for one light, eye at the view origin, no
  * highlight, in 32-bit arithmetic.  light_view: the light in view
  * coordinates. */
@@ -113,11 +125,9 @@ static void shade_prepare(stp_shade_fast *s, const stp_direct_light *l, const in
     s->light[0].y = light_view[1];
     s->light[0].z = light_view[2];
     s->light_big[0] = 0; /* below 2^26 */
-    /* BRIGHT P as shade_fast.c's sf_mul, per raw unit of C + U */
-    p = bright.m * power.m;
-    s->power[0].m = p >= 0x80000000u ? p >> 16 : p >> 15;
-    s->power[0].e = bright.e + power.e - (p >= 0x80000000u ? 16 : 15) - F;
-    s->refl = sf16_of(r, 16); /* r in Q16 */
+    /* BRIGHT P |R| as shade_fast.c's sf_mul twice, per raw unit of C + U */
+    s->power_refl[0] = sf16_mul(sf16_mul(bright, power), sf16_of(r, 16)); /* r in Q16 */
+    s->power_refl[0].e -= F;
     s->attenuation_c = sf16_of(l->attenuation_c > 0 ? (uint32_t)l->attenuation_c : 1u, 0);
 }
 
