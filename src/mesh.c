@@ -346,23 +346,26 @@ static void vertex_project(mesh_context *c, uint16_t i)
 
 /* The shade of a face from its unit normal (Q1.14, view coordinates,
  * turned to the eye) and its vertex average (view coordinates): the seed's
- * shading as stp_renderer_polygon's SHADE-CHECK does it. */
+ * shading in 32-bit arithmetic (shade_fast.c), the same on every target. */
 static stp_fix shade_face(const mesh_context *c, const int16_t normal[3], stp_vec3 centre)
 {
-    stp_unit3 n, eye;
-    int32_t n_dot_e = 0;
-    n.x = (int32_t)normal[0] * 65536; /* Q14 to STP_UNIT (Q30) */
-    n.y = (int32_t)normal[1] * 65536;
-    n.z = (int32_t)normal[2] * 65536;
-    if (stp_unit_from64(-(int64_t)centre.x, -(int64_t)centre.y, -(int64_t)centre.z, &eye) == 0) {
-        eye.x = eye.y = 0; /* centre at the eye: no light reaches the eye */
-        eye.z = -STP_UNIT_ONE;
-    } else {
-        n_dot_e = stp_unit_dot(n, eye);
-        if (n_dot_e < 0)
-            n_dot_e = 0;
-    }
-    return stp_shade_unit(&c->r->segment_lighting, &c->r->material, n, centre, eye, n_dot_e);
+    return stp_shade_fast_face(&c->r->fast_shade, normal, centre);
+}
+
+/* The renderer's prepared shading (render_private.h: fast_shade), made
+ * again only after the segment's lighting or the material changed: the
+ * eye is the view's origin (the fast path is perspective only). */
+static void prepare_shading(stp_renderer *r)
+{
+    stp_vec3 origin, towards_eye;
+    if (r->fast_shade_valid)
+        return;
+    origin.x = origin.y = origin.z = 0;
+    towards_eye.x = towards_eye.y = 0;
+    towards_eye.z = -ONE; /* unused: perspective */
+    stp_shade_fast_prepare(&r->fast_shade, &r->segment_lighting, &r->material, origin, 0,
+                           towards_eye);
+    r->fast_shade_valid = 1;
 }
 
 /* The vertex average, truncated toward zero as render.c's Newell step
@@ -529,6 +532,8 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
     c.mesh = mesh;
     c.scratch = scratch;
     fast = fast_state(r, mesh) && prepare_call(&c);
+    if (fast && r->shading)
+        prepare_shading(r);
 #if !STP_WITH_MESH_FALLBACK
     if (!fast)
         return STP_ERR_UNSUPPORTED;
