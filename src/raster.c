@@ -75,6 +75,25 @@ static int64_t mul_wide(int64_t a, int32_t b)
 }
 #endif
 
+#if STP_WITH_TRIANGLE_PATH
+/* |g| extent < 2^29 (extent >= 0): a depth gradient g (Q12 per subpixel)
+ * over a triangle's extent in x or y, so each term of dc + ddx (x - xc) +
+ * ddy (y - yc) at its pixel centres (x and xc within the vertices' x
+ * extent, y and yc within their y extent) is below 2^29 and the sum, with
+ * dc < 2^28 + 2^12, fits int32. */
+static int depth_term_short(int64_t g, int32_t extent)
+{
+    uint32_t m, hi;
+    /* g + 2^29 in [1, 2^30): |g| < 2^29 */
+    if (((uint64_t)g + ((uint64_t)1 << 29)) - 1u >= ((uint64_t)1 << 30) - 1u || extent >= ((int32_t)1 << 14))
+        return 0;
+    m = g < 0 ? 0u - (uint32_t)g : (uint32_t)g;
+    /* m extent = hi 2^15 + (m mod 2^15) extent, hi = (m >> 15) extent < 2^28 */
+    hi = (m >> 15) * (uint32_t)extent;
+    return hi < (1u << 14) && (hi << 15) + (m & 0x7FFFu) * (uint32_t)extent < ((uint32_t)1 << 29);
+}
+#endif
+
 /* floor(s / n) for n >= 1: n = 3 and 4 without a division */
 static uint32_t div_count(uint32_t s, uint32_t n)
 {
@@ -113,31 +132,26 @@ size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
  * STP_COLOUR_FLAG, a colour; 32 bits wide because the flag is bit 24. */
 typedef int32_t paint;
 
+#if KEY_CACHE > 0
+typedef struct key_mapping {
+    int32_t key, q12;
+} key_mapping;
+#endif
+
+/* The fields a triangle reads come first: ARMv6-M loads a word at an
+ * offset below 128 bytes in one instruction, farther ones in three. */
 typedef struct frame {
     stp_renderer *r;
-    const stp_port *port;
-    const stp_output *out;
-    const stp_cell *cell;
-    stp_cell default_cell;
-    size_t stride;
     uint8_t *band;
     uint16_t *zbuf;
+    size_t stride;
     uint32_t y0, rows; /* current band */
     int32_t band_top, band_end; /* its rows' extent in subpixels: y0 2^SUB, (y0 + rows) 2^SUB */
-    int32_t key_min, key_max; /* depth-key range of the visible polygons */
-    int second_pass;          /* the Z buffer's second pass draws something:
-                                 a transparent polygon or a line (lines are
-                                 drawn again over the opaque polygons) */
     stp_polygon_setup *setup; /* the caller's per-polygon depth setups, or NULL */
+    int32_t key_min, key_max; /* depth-key range of the visible polygons */
+    uint32_t key_range;       /* key_max - key_min, when positive */
     uint32_t depth_scale;     /* depth_q12's reciprocal and its shift */
     int depth_shift;
-#if KEY_CACHE > 0
-    /* depth_q12's recent results, slot by the key's low bits: a mesh's
-     * vertex comes again in the next triangles; q12 0: empty */
-    int32_t cached_key[KEY_CACHE], cached_q12[KEY_CACHE];
-#endif
-    /* pixels any visible polygon can cover (x_min > x_max: none) */
-    uint32_t x_min, x_max, y_min, y_max;
     /* MONO1 spans from pattern bytes: a threshold cell whose width divides
      * 8 (mono_fill); cell_mask its height - 1 when a power of two, else 0;
      * patterns[] the byte of each cell row for style pattern_style (-1:
@@ -146,7 +160,19 @@ typedef struct frame {
     int pattern_port; /* mono_fill on a MONO1 port (not drawn grey): spans may come from patterns[] */
     uint32_t cell_mask;
     paint pattern_style;
+    const stp_cell *cell;
+    const stp_port *port;
+    const stp_output *out;
+#if STP_WITH_SHADOWS
+    stp_shadow_poly *shadow; /* the polygon being drawn's shadow records;
+                                NULL when no light has a map */
+#endif
     uint8_t patterns[STP_CELL_MAX];
+    int second_pass;          /* the Z buffer's second pass draws something:
+                                 a transparent polygon or a line (lines are
+                                 drawn again over the opaque polygons) */
+    /* pixels any visible polygon can cover (x_min > x_max: none) */
+    uint32_t x_min, x_max, y_min, y_max;
 #if STP_PATTERN_CACHE > 0
     /* the pattern rows of recent styles (cells up to 4 rows high), slot
      * style mod STP_PATTERN_CACHE: a depth-ordered frame alternates styles
@@ -154,13 +180,15 @@ typedef struct frame {
     paint cached_style[STP_PATTERN_CACHE];
     uint8_t cached_rows[STP_PATTERN_CACHE][4]; /* the byte of each cell row */
 #endif
-#if STP_WITH_SHADOWS
-    stp_shadow_poly *shadow; /* the polygon being drawn's shadow records;
-                                NULL when no light has a map */
+#if KEY_CACHE > 0
+    /* depth_q12's recent results, slot by the key's low bits: a mesh's
+     * vertex comes again in the next triangles; q12 0: empty */
+    key_mapping cached[KEY_CACHE];
 #endif
 #if STP_WITH_EDGE_AA
     stp_edge_aa aa; /* edge anti-aliasing (edge_aa.c); aa.out NULL: off */
 #endif
+    stp_cell default_cell;
 } frame;
 
 
@@ -655,41 +683,64 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
 /* Depth key mapped to the Z buffer's 1..65535 with 12 fractional bits:
  * 2^12 + floor(u 65534 2^12 / range), u = key - key_min <= range < 2^32.
  * Without wide arithmetic the quotient comes from the frame's reciprocal:
- * depth_scale = floor(65534 2^12 2^s / range) < 2^29 with 2^s >= range
- * (s = depth_shift), so u depth_scale / 2^s is less than one short of the
+ * depth_scale = floor(65534 2^12 2^s / range) < 2^29 with 2^s > range (s =
+ * depth_shift), so u depth_scale / 2^s is less than one short of the
  * quotient and one correction makes it exact. */
-static int32_t depth_q12(frame *fr, int32_t key)
+static uint32_t key_quotient(const frame *fr, uint32_t u)
 {
     const uint32_t k = (uint32_t)65534 << 12;
-    uint32_t range = (uint32_t)((int64_t)fr->key_max - fr->key_min), u;
-    uint64_t num, q;
+#if STP_WIDE_ARITH
+    return (uint32_t)(stp_umul32(u, k) / fr->key_range);
+#else
+    uint32_t q;
+    if (fr->depth_shift < 32) {
+        /* u < 2^s: u 2^(32 - s) < 2^32, and its high product word is the
+         * estimate; the remainder u k - q range is in [0, 2 range), below
+         * 2^32 (range < 2^31 here), so its 32-bit wrap is exact */
+        q = stp_umulhi32(u << (32 - fr->depth_shift), fr->depth_scale);
+        if (u * k - q * fr->key_range >= fr->key_range)
+            q++;
+    } else {
+        uint64_t num = stp_umul32(u, k);
+        q = (uint32_t)(stp_umul32(u, fr->depth_scale) >> fr->depth_shift);
+        if (stp_umul32(q + 1u, fr->key_range) <= num)
+            q++;
+    }
+    return q;
+#endif
+}
+
+static int32_t depth_q12_made(frame *fr, int32_t key)
+{
+    /* the quotient is at most 65534 2^12: below 2^28 */
     if (fr->key_max <= fr->key_min)
         return (int32_t)65535 << 12;
+    return (int32_t)(1 << 12) + (int32_t)key_quotient(fr, (uint32_t)key - (uint32_t)fr->key_min);
+}
+
 #if KEY_CACHE > 0
-    {
-        uint32_t slot = ((uint32_t)key ^ ((uint32_t)key >> 8)) & (KEY_CACHE - 1);
-        if (fr->cached_q12[slot] != 0 && fr->cached_key[slot] == key)
-            return fr->cached_q12[slot];
-        u = (uint32_t)((int64_t)key - fr->key_min); /* 0..range */
-        num = stp_umul32(u, k);
-        q = stp_umul32(u, fr->depth_scale) >> fr->depth_shift;
-        if (stp_umul32((uint32_t)q + 1u, range) <= num)
-            q++;
-        fr->cached_key[slot] = key;
-        fr->cached_q12[slot] = (int32_t)q + (1 << 12); /* < 2^28 + 2^12 */
-        return fr->cached_q12[slot];
-    }
-#else
-    u = (uint32_t)((int64_t)key - fr->key_min); /* 0..range */
-    num = stp_umul32(u, k);
-#if STP_WIDE_ARITH
-    q = num / range;
-#else
-    q = stp_umul32(u, fr->depth_scale) >> fr->depth_shift;
-    if (stp_umul32((uint32_t)q + 1u, range) <= num)
-        q++;
+/* its slot of the kept mappings: the key's low bits, mixed */
+#define KEY_SLOT(key) ((((uint32_t)(key)) ^ ((uint32_t)(key) >> 8)) & (KEY_CACHE - 1))
+
+static int32_t depth_q12_keep(frame *fr, int32_t key)
+{
+    key_mapping *m = &fr->cached[KEY_SLOT(key)];
+    m->key = key;
+    m->q12 = depth_q12_made(fr, key);
+    return m->q12;
+}
 #endif
-    return (int32_t)(1 << 12) + (int32_t)q; /* q <= 65534 2^12: below 2^28 */
+
+/* a key's Q12 depth: kept, or made (and kept) */
+static inline int32_t depth_q12(frame *fr, int32_t key)
+{
+#if KEY_CACHE > 0
+    const key_mapping *m = &fr->cached[KEY_SLOT(key)];
+    if (m->key == key && m->q12 != 0)
+        return m->q12;
+    return depth_q12_keep(fr, key);
+#else
+    return depth_q12_made(fr, key);
 #endif
 }
 
@@ -724,24 +775,70 @@ static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, 
     pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : STP_DIV64(sd, n);
 }
 
+#if !STP_WIDE_ARITH
+/* A small triangle's gradients (depth_plane_from_sums's quotients)
+ * trunc(-a 4096 / c) and trunc(-b 4096 / c) for |a|, |b| < 2^19 and c !=
+ * 0: quotients of 32-bit magnitudes (n = |a| 4096 < 2^31, so they fit
+ * int32), both from one reciprocal r = floor((2^32 - 1) / |c|)
+ * (stp_quotient_by_recip): a 32-bit division is a ~130-instruction library
+ * call on ARMv6-M. */
+static void gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t *gb)
+{
+    uint32_t ua = (a < 0 ? 0u - (uint32_t)a : (uint32_t)a) << 12, ub = (b < 0 ? 0u - (uint32_t)b : (uint32_t)b) << 12,
+             uc = c < 0 ? 0u - (uint32_t)c : (uint32_t)c, qa = ua, qb = ub;
+    if (uc > 1) {
+        uint32_t r = 0xFFFFFFFFu / uc;
+        qa = stp_quotient_by_recip(ua, uc, r);
+        qb = stp_quotient_by_recip(ub, uc, r);
+    }
+    /* -a and c of opposite signs: negative */
+    *ga = (a > 0) == (c > 0) ? -(int64_t)qa : (int64_t)qa;
+    *gb = (b > 0) == (c > 0) ? -(int64_t)qb : (int64_t)qb;
+}
+#endif
+
 /* A triangle's plane: its Newell sums are its cross product, exactly
  * (relative coordinates below 2^20, depths below 2^16); its three Q12
- * depths (below 2^28) sum below 2^30. */
+ * depths (below 2^28) sum below 2^30.  Without wide arithmetic a small
+ * triangle (relative x below 2^14, y below 2^13: products below 2^30, so
+ * the sums fit int32, and |a|, |b| < 2^19) in 32 bits: no clamp (|a|, |b|
+ * < 2^28), the same values. */
 static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
 {
     int32_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z), d2 = depth_q12(fr, v[2].z);
     int32_t x1 = v[1].x - v[0].x, y1 = v[1].y - v[0].y, x2 = v[2].x - v[0].x, y2 = v[2].y - v[0].y;
     int32_t e1 = (d1 >> 12) - (d0 >> 12), e2 = (d2 >> 12) - (d0 >> 12);
-    int64_t c = stp_smul32(x1, y2) - stp_smul32(y1, x2);
+    uint32_t sx = (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x,
+             sy = (uint32_t)v[0].y + (uint32_t)v[1].y + (uint32_t)v[2].y,
+             sd = (uint32_t)d0 + (uint32_t)d1 + (uint32_t)d2;
+    int64_t a, b, c;
+#if !STP_WIDE_ARITH /* 64-bit hosts: 64-bit products and quotients cost what 32-bit ones do */
+    const int32_t xs = (int32_t)1 << 14, ys = (int32_t)1 << 13, gs = (int32_t)1 << 19;
+    if (x1 > -xs && x1 < xs && x2 > -xs && x2 < xs && y1 > -ys && y1 < ys && y2 > -ys && y2 < ys) {
+        int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
+        if (c32 != 0 && a32 > -gs && a32 < gs && b32 > -gs && b32 < gs) {
+            gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy);
+            pl->xc = (int32_t)stp_div3_u30(sx); /* coordinates below 2^20 */
+            pl->yc = (int32_t)stp_div3_u30(sy);
+            pl->dc = stp_div3_u30(sd);
+            return 1;
+        }
+        a = a32;
+        b = b32;
+        c = c32;
+    } else
+#endif
+    {
+        a = stp_smul32(y1, e2) - stp_smul32(e1, y2);
+        b = stp_smul32(e1, x2) - stp_smul32(x1, e2);
+        c = stp_smul32(x1, y2) - stp_smul32(y1, x2);
+    }
     if (c == 0) {
         pl->ddx = pl->ddy = pl->dc = 0;
         pl->xc = pl->yc = 0;
         return 0;
     }
-    depth_plane_from_sums(pl, stp_smul32(y1, e2) - stp_smul32(e1, y2), stp_smul32(e1, x2) - stp_smul32(x1, e2), c,
-                          (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x,
-                          (uint32_t)v[0].y + (uint32_t)v[1].y + (uint32_t)v[2].y,
-                          (int64_t)((uint32_t)d0 + (uint32_t)d1 + (uint32_t)d2), 3);
+    depth_plane_from_sums(pl, a, b, c, sx, sy, (int64_t)sd, 3);
     return 1;
 }
 
@@ -859,39 +956,78 @@ static int polygon_smooth(const stp_instr *header)
 typedef int64_t tri_acc;
 #define TRIANGLE_NARROW(v) 1
 #else
-typedef int32_t tri_acc;
+typedef uint32_t tri_acc; /* the accumulator modulo 2^32 (two's complement) */
 #define TRIANGLE_NARROW(v) ((((uint32_t)(v)[0].x | (uint32_t)(v)[1].x | (uint32_t)(v)[2].x) >> 14) == 0)
 #endif
 typedef struct tri_edge {
     tri_acc acc, step;
 } tri_edge;
 
-static void tri_edge_start(tri_edge *e, const stp_instr *a, const stp_instr *b, int32_t yc)
+static inline void tri_edge_start(tri_edge *e, const stp_instr *a, const stp_instr *b, int32_t yc)
 {
-    int64_t slope = stp_slope_q16(b->x - a->x, b->y - a->y);
-    int64_t acc = (int64_t)a->x * 65536 + (slope >= INT32_MIN && slope <= INT32_MAX
-                                               ? stp_smul32(yc - a->y, (int32_t)slope)
-                                               : (int64_t)(yc - a->y) * slope);
 #if STP_WIDE_ARITH
-    e->acc = acc;
+    int64_t slope = stp_slope_q16(b->x - a->x, b->y - a->y);
+    e->acc = (int64_t)a->x * 65536 + (slope >= INT32_MIN && slope <= INT32_MAX
+                                          ? stp_smul32(yc - a->y, (int32_t)slope)
+                                          : (int64_t)(yc - a->y) * slope);
     e->step = slope * 16;
 #else
-    const int64_t big = (int64_t)1 << 27;
-    e->acc = (int32_t)acc;
-    e->step = slope > -big && slope < big ? (int32_t)slope * 16 : 0;
+    /* |xb - xa| < 2^14: the slope fits 32 bits (|slope| <= 2^30), and the
+     * accumulator's value lies within int32 (above), so its sum taken
+     * modulo 2^32 in unsigned arithmetic is its value's two's complement */
+    int32_t slope = stp_slope_q16_short(b->x - a->x, b->y - a->y);
+    e->acc = (uint32_t)a->x * 65536u + (uint32_t)(yc - a->y) * (uint32_t)slope;
+    e->step = slope > -((int32_t)1 << 27) && slope < ((int32_t)1 << 27) ? (uint32_t)slope * 16u : 0u;
 #endif
 }
 
-/* floor(acc / 2^16) of an edge accumulator (narrow: without shifting a
- * negative value, implementation-defined in C99) */
+/* floor(acc / 2^16) of an edge accumulator at a row centre the edge
+ * crosses: 2^16 times a point between xa and the edge's exact crossing
+ * (the slope is truncated toward zero), so 0 <= acc < 2^30 (device x are
+ * >= 0) and, narrow, its 32 bits are its value */
 static int32_t tri_edge_x(tri_acc acc)
 {
-#if STP_WIDE_ARITH
-    return (int32_t)stp_asr64(acc, 16);
-#else
-    return (int32_t)(((uint32_t)acc + 0x80000000u) >> 16) - (int32_t)0x8000;
-#endif
+    return (int32_t)(acc >> 16);
 }
+
+/* The pixels [*p1, *p2] of 0..width-1 whose centres c satisfy xl <= c <
+ * xr (stp_span_pixels) for crossings xl, xr >= 0: a triangle's, within its
+ * vertices' x extent, and device coordinates are >= 0 (project() clamps
+ * them), so the first centres at or right of xl and xr come by a shift. */
+static int tri_span_pixels(int32_t xl, int32_t xr, uint32_t width, uint32_t *p1, uint32_t *p2)
+{
+    uint32_t a = (uint32_t)(xl + HALF_PIXEL - 1) >> SUB, b = (uint32_t)(xr + HALF_PIXEL - 1) >> SUB;
+    if (b > width)
+        b = width;
+    if (a >= b)
+        return 0;
+    *p1 = a;
+    *p2 = b - 1u;
+    return 1;
+}
+
+#if STP_WITH_ZBUFFER
+/* The int32 whose two's complement is u (no implementation-defined
+ * conversion of a value above INT32_MAX) */
+static int32_t from_twos(uint32_t u)
+{
+    return u < 0x80000000u ? (int32_t)u : -(int32_t)~u - 1;
+}
+
+/* The triangle v's depth terms are short (depth_term_short in x and y):
+ * its depths at pixel centres, dc + ddx (x - xc) + ddy (y - yc), then lie
+ * within +-(2^28 + 2^12 + 2^30), so they follow from their values modulo
+ * 2^32 in 32-bit unsigned arithmetic. */
+static int depth_terms_short(const depth_plane *pl, const stp_instr *v, int32_t y_extent)
+{
+    int32_t x_lo = v[0].x, x_hi = v[0].x;
+    x_lo = v[1].x < x_lo ? v[1].x : x_lo;
+    x_hi = v[1].x > x_hi ? v[1].x : x_hi;
+    x_lo = v[2].x < x_lo ? v[2].x : x_lo;
+    x_hi = v[2].x > x_hi ? v[2].x : x_hi;
+    return depth_term_short(pl->ddx, x_hi - x_lo) && depth_term_short(pl->ddy, y_extent);
+}
+#endif
 
 /* A flat triangle (df[at], vertices v) in the current band: the general
  * path's fill rule and depths, set up for what the triangle needs.  Its
@@ -899,7 +1035,7 @@ static int32_t tri_edge_x(tri_acc acc)
  * the long edge top-bottom and by top-mid above mid, mid-bottom from mid
  * down; the two crossings bound the row's span.  Nothing is set up before
  * the first span with pixels: a small triangle often covers no pixel
- * centre. */
+ * centre.  Coordinates are >= 0 (project()), so are the crossings. */
 static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint style, int use_z, stp_fix t,
                           uint32_t ordinal)
 {
@@ -909,7 +1045,11 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
     tri_edge lng, sht;
 #if STP_WITH_ZBUFFER
     depth_plane pl; /* field by field: ARMv6-M's GCC clears a whole struct by memset */
-    int64_t d_row = 0;
+    int64_t d_row = 0; /* general depths: at device x = 0 of the row centre, Q12 */
+    /* short depths (depth_terms_short) modulo 2^32: at device x = 0 of
+     * the row centre, per subpixel in x, per row */
+    uint32_t d_row32 = 0, gx = 0, gy_row = 0;
+    int short_depth = 0;
     pl.ddx = pl.ddy = pl.dc = 0;
     pl.xc = pl.yc = 0;
 #endif
@@ -938,9 +1078,9 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
     (void)ordinal;
 #endif
     /* rows whose centre 16 r + 8 lies in [top, bottom), in the band */
-    r_first = stp_floor16(top->y + HALF_PIXEL - 1);
-    r_last = stp_floor16(bot->y + HALF_PIXEL - 1) - 1;
-    r_mid = stp_floor16(mid->y + HALF_PIXEL - 1); /* the first row below mid's y */
+    r_first = (int32_t)((uint32_t)(top->y + HALF_PIXEL - 1) >> SUB);
+    r_last = (int32_t)((uint32_t)(bot->y + HALF_PIXEL - 1) >> SUB) - 1;
+    r_mid = (int32_t)((uint32_t)(mid->y + HALF_PIXEL - 1) >> SUB); /* the first row below mid's y */
     if (r_first < (int32_t)fr->y0)
         r_first = (int32_t)fr->y0;
     if (r_last > (int32_t)(fr->y0 + fr->rows) - 1)
@@ -961,14 +1101,21 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
             xl = xr;
             xr = x;
         }
-        if (stp_span_pixels(xl, xr, fr->r->width, &p1, &p2)) {
+        if (tri_span_pixels(xl, xr, fr->r->width, &p1, &p2)) {
             if (!ready) {
 #if STP_WITH_ZBUFFER
                 if (use_z) {
                     if (!depth_plane_for(fr, v, 3, ordinal, top->y, &pl))
                         return; /* edge-on: no area on screen */
-                    /* the depth at device x = 0 of this row's centre */
-                    d_row = pl.dc - mul_wide(pl.ddx, pl.xc) + mul_wide(pl.ddy, yc - pl.yc);
+                    /* (64-bit hosts: 64-bit depths cost what 32-bit ones do) */
+                    short_depth = !STP_WIDE_ARITH && depth_terms_short(&pl, v, bot->y - top->y);
+                    if (short_depth) {
+                        gx = (uint32_t)pl.ddx;
+                        gy_row = (uint32_t)pl.ddy << SUB;
+                        d_row32 = (uint32_t)pl.dc - gx * (uint32_t)pl.xc + (uint32_t)pl.ddy * (uint32_t)(yc - pl.yc);
+                    } else {
+                        d_row = pl.dc - mul_wide(pl.ddx, pl.xc) + mul_wide(pl.ddy, yc - pl.yc);
+                    }
                 }
 #endif
                 direct = paint_setup(fr, at, style, 0, t);
@@ -976,7 +1123,19 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
                 ready = 1;
             }
 #if STP_WITH_ZBUFFER
-            if (use_z) {
+            if (use_z && short_depth) {
+                /* the depths at the span's first and last pixel centres,
+                 * modulo 2^32 */
+                uint32_t d = d_row32 + gx * ((p1 << SUB) + HALF_PIXEL), d_end = d + (gx << SUB) * (p2 - p1);
+                const uint32_t depths = (uint32_t)(DEPTH_Q12_END - DEPTH_Q12_MIN);
+                if (direct && d - (uint32_t)DEPTH_Q12_MIN < depths && d_end - (uint32_t)DEPTH_Q12_MIN < depths)
+                    /* 1..65535 at both ends; two pixel centres 16 apart
+                     * lie within the x extent: 16 |ddx| < 2^29 */
+                    span_z_direct(z_row(fr, (uint32_t)row), band_row(fr, (uint32_t)row), pattern_of_row(fr, (uint32_t)row),
+                                  p1, p2, (int32_t)d, p2 > p1 ? from_twos(gx << SUB) : 0);
+                else
+                    put_span_z(fr, (uint32_t)row, p1, p2, style, from_twos(d), pl.ddx * (1 << SUB), 0, 0, 0, t, direct);
+            } else if (use_z) {
                 int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
                 int64_t d = d_row + mul_wide(pl.ddx, xq);
                 int64_t ddx = pl.ddx * (1 << SUB), d_end = d + mul_wide(ddx, (int32_t)(p2 - p1));
@@ -1001,7 +1160,10 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
         else
             sht.acc += sht.step;
 #if STP_WITH_ZBUFFER
-        d_row += pl.ddy * (1 << SUB);
+        if (short_depth)
+            d_row32 += gy_row;
+        else
+            d_row += pl.ddy * (1 << SUB);
 #endif
     }
 }
@@ -1182,7 +1344,8 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
 {
     stp_renderer *r = fr->r;
     uint32_t ordinal = 0;
-    int s;
+    int s, triangle_path = TRIANGLE_PATH(fr); /* once, not per polygon */
+    (void)triangle_path; /* read only with the triangle path compiled in */
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
         paint style = r->fill_style, line_style = r->fill_style;
@@ -1197,7 +1360,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
                 if (skip_polygons || !(pass == 0 || (pass == 1) == (t == 0)))
                     ;
 #if STP_WITH_TRIANGLE_PATH
-                else if (in->op == 3 && !polygon_smooth(in) && TRIANGLE_PATH(fr) && TRIANGLE_NARROW(in))
+                else if (in->op == 3 && triangle_path && !polygon_smooth(in) && TRIANGLE_NARROW(in))
                     draw_triangle(fr, k, in, style, use_z, t, ordinal);
 #endif
                 else
@@ -1272,7 +1435,7 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
     /* locals, not fr's fields: a store through fr may alias the display file */
     int32_t x_lo = INT32_MAX, x_hi = INT32_MIN, y_lo = INT32_MAX, y_hi = INT32_MIN;
     int32_t key_min = INT32_MAX, key_max = INT32_MIN;
-    fr->second_pass = 0;
+    int second_pass = 0;
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
         paint style = r->fill_style;
@@ -1281,17 +1444,10 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
             continue;
         for (k = seg->start; k < seg->end; k++) {
             const stp_instr *in = &r->df[k];
-            if (in->op == STP_OP_SHADE)
-                style = paint_of(fr, in);
-            if (in->op == STP_OP_TRANSPARENCY)
-                t = in->x;
-            if (in->op == STP_OP_LINE)
-                fr->second_pass = 1;
-            if (in->op >= 3) {
-                int32_t far_key = INT32_MAX;
-                for (i = 0; i < in->op; i++) {
+            int32_t op = in->op;
+            if (op >= 3) {
+                for (i = 0; i < op; i++) {
                     int32_t z = in[i].z, x = in[i].x, y = in[i].y;
-                    far_key = z < far_key ? z : far_key;
                     key_min = z < key_min ? z : key_min;
                     key_max = z > key_max ? z : key_max;
                     x_lo = x < x_lo ? x : x_lo;
@@ -1299,19 +1455,28 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
                     y_lo = y < y_lo ? y : y_lo;
                     y_hi = y > y_hi ? y : y_hi;
                 }
-                if (t > 0)
-                    fr->second_pass = 1;
+                second_pass |= t > 0;
                 if (sort) {
+                    int32_t far_key = in[0].z;
+                    for (i = 1; i < op; i++)
+                        far_key = in[i].z < far_key ? in[i].z : far_key;
                     sort[count].index = k;
                     sort[count].key = far_key;
                     sort[count].style = style;
                     sort[count].transmission = t;
                 }
                 count++;
-                k += (uint32_t)in->op - 1;
+                k += (uint32_t)op - 1;
+            } else if (op == STP_OP_SHADE) {
+                style = paint_of(fr, in);
+            } else if (op == STP_OP_TRANSPARENCY) {
+                t = in->x;
+            } else if (op == STP_OP_LINE) {
+                second_pass = 1;
             }
         }
     }
+    fr->second_pass = second_pass;
     fr->key_min = key_min;
     fr->key_max = key_max;
     /* a pixel a polygon covers has its centre within the polygon's
@@ -1444,17 +1609,20 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
         fr.setup = mem->setup;
     }
 #endif
+    fr.key_range = 0;
     fr.depth_scale = 0;
     fr.depth_shift = 0;
     if (fr.key_max > fr.key_min) {
-        uint64_t range = (uint64_t)((int64_t)fr.key_max - fr.key_min);
-        while (((uint64_t)1 << fr.depth_shift) < range)
+        fr.key_range = (uint32_t)fr.key_max - (uint32_t)fr.key_min;
+#if !STP_WIDE_ARITH
+        while (((uint64_t)1 << fr.depth_shift) <= fr.key_range)
             fr.depth_shift++;
-        fr.depth_scale = (uint32_t)STP_DIV64(((uint64_t)65534 << 12) << fr.depth_shift, range);
+        fr.depth_scale = (uint32_t)STP_DIV64(((uint64_t)65534 << 12) << fr.depth_shift, fr.key_range);
+#endif
     }
 #if KEY_CACHE > 0
     for (y0 = 0; y0 < KEY_CACHE; y0++)
-        fr.cached_q12[y0] = 0;
+        fr.cached[y0].q12 = 0;
 #endif
     fr.mono_fill = port->format == STP_PIXEL_MONO1 && fr.cell->kind == STP_CELL_THRESHOLD &&
                    fr.cell->width > 0 && 8u % fr.cell->width == 0 && fr.cell->height > 0 &&

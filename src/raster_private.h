@@ -54,6 +54,49 @@ static inline int64_t stp_smul32(int32_t a, int32_t b)
 }
 
 
+/* floor(a b / 2^32), the high word of a 32 x 32-bit product */
+static inline uint32_t stp_umulhi32(uint32_t a, uint32_t b)
+{
+#if STP_WIDE_ARITH
+    return (uint32_t)(((uint64_t)a * b) >> 32);
+#else
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t lh = al * bh, hl = ah * bl, mid = ((al * bl) >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    return ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+#endif
+}
+
+/* floor(n / d) for n < 2^31 and 2 <= d < 2^31 from r = floor((2^32 - 1) /
+ * d): r > (2^32 - d) / d, so n r / 2^32 lies less than n / 2^32 < 1/2
+ * below n / d and not above it; its floor is the quotient or one short,
+ * and the remainder (below 2 d < 2^32) corrects it.  One division (r)
+ * serves every n with the same d. */
+static inline uint32_t stp_quotient_by_recip(uint32_t n, uint32_t d, uint32_t r)
+{
+    uint32_t q = stp_umulhi32(n, r);
+    return n - q * d >= d ? q + 1u : q;
+}
+
+/* floor(s / 3) for s < 2^30.  Without wide arithmetic from 32-bit
+ * products: floor(t 0xAAAB / 2^17) is floor(t / 3) for t < 2^16 (3 0xAAAB
+ * = 2^17 + 1: the excess t / (3 2^17) stays below 1/3), applied to s's top
+ * 16 bits h = s >> 14 and then to t = (h mod 3) 2^14 + (s mod 2^14) < 3
+ * 2^14. */
+static inline uint32_t stp_div3_u30(uint32_t s)
+{
+#if STP_WIDE_ARITH
+    return s / 3u;
+#else
+    uint32_t h, hq, t;
+    if (s < 0x10000u) /* a small triangle's coordinate sums */
+        return (s * 0xAAABu) >> 17;
+    h = s >> 14;
+    hq = (h * 0xAAABu) >> 17;
+    t = ((h - 3u * hq) << 14) | (s & 0x3FFFu);
+    return (hq << 14) + ((t * 0xAAABu) >> 17);
+#endif
+}
+
 /* Reciprocals for slopes of short edges where a 32-bit division is a
  * library call (without wide arithmetic; AVR, with 16-bit pointers, keeps
  * the division and its flash): stp_slope_recip[d] = floor(2^32 / d) + 1
@@ -96,6 +139,22 @@ static inline int64_t stp_slope_q16(int32_t num, int32_t den)
     if (num > -32768 && num < 32768)
         return (int32_t)(num * 65536) / den;
     return STP_DIV64((int64_t)num * 65536, den);
+}
+
+/* stp_slope_q16 for |num| < 2^15 (an edge of a triangle whose x are below
+ * 2^14) in 32 bits: the quotient's magnitude is below 2^31.  The table's
+ * floor(un m / 2^16) as un (m >> 16) + floor(un (m & 0xFFFF) / 2^16), two
+ * products below 2^31 (un < 2^15). */
+static inline int32_t stp_slope_q16_short(int32_t num, int32_t den)
+{
+#if STP_SLOPE_RECIP > 0
+    uint32_t un = num < 0 ? 0u - (uint32_t)num : (uint32_t)num;
+    if (den >= 2 && den < STP_SLOPE_RECIP && un * (uint32_t)den < 65536u) {
+        uint32_t m = stp_slope_recip[den], q = un * (m >> 16) + ((un * (m & 0xFFFFu)) >> 16);
+        return num < 0 ? -(int32_t)q : (int32_t)q;
+    }
+#endif
+    return (num * (int32_t)65536) / den;
 }
 
 /* The edge setup the polygon raster and the shadow maps share.

@@ -87,9 +87,10 @@
 #endif
 
 /* Styles whose 1-bit pattern rows a frame keeps (a power of two; 8 bytes
- * of the frame's stack each; 0: rebuilt at every change of style). */
+ * of the frame's stack each; 0: rebuilt at every change of style).  16:
+ * every style of a 16-level frame keeps its own slot. */
 #ifndef STP_PATTERN_CACHE
-#define STP_PATTERN_CACHE 8
+#define STP_PATTERN_CACHE 16
 #endif
 #if STP_PATTERN_CACHE & (STP_PATTERN_CACHE - 1)
 #error "STP_PATTERN_CACHE must be 0 or a power of two"

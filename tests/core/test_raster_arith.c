@@ -2,8 +2,9 @@
 /* The raster's arithmetic for targets without wide arithmetic (ARMv6-M,
  * RV32, AVR), compiled here on the host with STP_WIDE_ARITH 0: the 32 x
  * 32-bit products from 16-bit halves (with their one- and two-product
- * shortcuts) and the slopes of short edges from the reciprocal table,
- * against the host's own 64-bit operators. */
+ * shortcuts), the slopes of short edges from the reciprocal table, the
+ * quotients through one reciprocal and the division by 3 from 32-bit
+ * products, against the host's own 64-bit operators. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -82,11 +83,79 @@ static void test_slopes_against_division(void **state)
     }
 }
 
+/* stp_slope_q16_short: stp_slope_q16 for |num| < 2^15 (a narrow triangle's
+ * edges), every numerator against every short denominator the table
+ * serves and random longer ones */
+static void test_short_slopes_against_division(void **state)
+{
+    int32_t num, den;
+    uint32_t s = 521288629u;
+    int k;
+    (void)state;
+    for (den = 1; den < 160; den++)
+        for (num = -(1 << 15) + 1; num < (1 << 15); num += (den & 1) ? 1 : 7) {
+            int64_t want = ((int64_t)num * 65536) / den;
+            if (stp_slope_q16_short(num, den) != want)
+                fail_msg("stp_slope_q16_short(%d, %d) = %d, want %lld", num, den, stp_slope_q16_short(num, den),
+                         (long long)want);
+        }
+    for (k = 0; k < 200000; k++) {
+        int32_t n = (int32_t)(next_random(&s) % ((1u << 16) - 1u)) - (1 << 15) + 1; /* |n| < 2^15 */
+        int32_t d = (int32_t)(next_random(&s) % (1u << (k % 21 + 1))) + 1;
+        assert_true(stp_slope_q16_short(n, d) == ((int64_t)n * 65536) / d);
+    }
+}
+
+static void check_recip_quotient(uint32_t n, uint32_t d)
+{
+    uint32_t got = stp_quotient_by_recip(n, d, 0xFFFFFFFFu / d);
+    if (got != n / d)
+        fail_msg("stp_quotient_by_recip(%u, %u) = %u, want %u", n, d, got, n / d);
+}
+
+/* stp_umulhi32 against the 64-bit product; stp_quotient_by_recip (n <
+ * 2^31, 2 <= d < 2^31) and stp_div3_u30 (s < 2^30) against C's division:
+ * the edges of their ranges, every small value, random ones of every size */
+static void test_reciprocal_quotients_against_division(void **state)
+{
+    static const uint32_t big[] = {0x7FFFFFFFu, 0x7FFFFFFEu, 0x40000000u, 0x3FFFFFFFu, 0x10000u, 0xFFFFu, 0x1FFFFu};
+    uint32_t s = 3141592653u, n, d;
+    size_t i, j;
+    int k;
+    (void)state;
+    for (i = 0; i < sizeof big / sizeof big[0]; i++)
+        for (j = 0; j < sizeof big / sizeof big[0]; j++) {
+            check_recip_quotient(big[i], big[j]);
+            assert_true(stp_umulhi32(big[i], big[j] << 1) == (uint32_t)(((uint64_t)big[i] * (big[j] << 1)) >> 32));
+        }
+    for (d = 2; d < 3000; d++) {
+        check_recip_quotient(0x7FFFFFFFu, d);
+        for (n = 0; n < 3 * d + 5; n++)
+            check_recip_quotient(n, d);
+        for (n = 1; n < 64; n++) {
+            check_recip_quotient(n * d - 1u, d);
+            check_recip_quotient(0x7FFFFFFFu - n * d, d);
+        }
+    }
+    for (k = 0; k < 1000000; k++) {
+        uint32_t a = next_random(&s), b = next_random(&s);
+        assert_true(stp_umulhi32(a, b) == (uint32_t)(((uint64_t)a * b) >> 32));
+        n = a >> 1 >> (k % 31);
+        d = (b >> 1 >> ((k >> 5) % 30)) | 2u;
+        check_recip_quotient(n, d);
+        assert_true(stp_div3_u30(a >> 2) == (a >> 2) / 3u);
+    }
+    for (n = 0; n < (1u << 20); n++)
+        assert_true(stp_div3_u30(n) == n / 3u && stp_div3_u30(0x3FFFFFFFu - n) == (0x3FFFFFFFu - n) / 3u);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_products_against_64_bit),
         cmocka_unit_test(test_slopes_against_division),
+        cmocka_unit_test(test_short_slopes_against_division),
+        cmocka_unit_test(test_reciprocal_quotients_against_division),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -47,6 +47,9 @@
 #include "stiff_cases.h"
 #include "torus.h"
 #include "stipple/stipple.h"
+#if STP_BENCH_MESH
+#include "shade_fast_private.h"
+#endif
 
 #ifndef STP_BENCH_CONFIG
 #define STP_BENCH_CONFIG "default"
@@ -143,7 +146,28 @@ typedef struct shade_input {
     stp_lighting fl;
     stp_material fm;
     stp_vec3 fn, fp, fe, fd;
+#if STP_BENCH_MESH
+    stp_shade_fast fast; /* prepared once per input (the mesh path caches it) */
+    int16_t qn[3];       /* the normal in Q1.14, as a prepared mesh normal */
+#endif
 } shade_input;
+
+#if STP_BENCH_MESH
+/* A unit normal as the mesh path's Q1.14 prepared normal (rounded). */
+static void q14_normal(ref_vec3 n, int16_t out[3])
+{
+    double len = sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    out[0] = (int16_t)lround(n.x / len * STP_MESH_NORMAL_ONE);
+    out[1] = (int16_t)lround(n.y / len * STP_MESH_NORMAL_ONE);
+    out[2] = (int16_t)lround(n.z / len * STP_MESH_NORMAL_ONE);
+}
+
+static void fast_prepare_input(shade_input *in)
+{
+    q14_normal(in->normal, in->qn);
+    stp_shade_fast_prepare(&in->fast, &in->fl, &in->fm, in->fe, in->parallel, in->fd);
+}
+#endif
 
 static void random_input(shade_input *in)
 {
@@ -193,6 +217,9 @@ static void random_input(shade_input *in)
     in->fp = fix3(in->point);
     in->fe = fix3(in->eye);
     in->fd = fix3(in->pdir);
+#if STP_BENCH_MESH
+    fast_prepare_input(in);
+#endif
 }
 
 /* Smallest of N.E and |N.L_j|: near 0 the shade jumps (a light or the eye
@@ -220,8 +247,54 @@ static double min_cosine(const shade_input *in)
 
 static stp_fix core_shade(const shade_input *in)
 {
+#if STP_BENCH_MESH
+    return stp_shade_fast_face(&in->fast, in->qn, in->fp);
+#else
     return stp_shade_point(&in->fl, &in->fm, in->fn, in->fp, in->fe, in->parallel, in->fd);
+#endif
 }
+
+#if STP_BENCH_MESH
+/* A stiff shading case through the fast flat-face shading: the mesh
+ * configuration measures what stp_renderer_mesh computes (its polygon
+ * cases are the polygon path's, so they are left out of this row). */
+static int fast_stiff_run(const stiff_case *c, stiff_outcome *o)
+{
+    shade_input in;
+    int j;
+    memset(o, 0, sizeof *o);
+    if (c->kind != STIFF_SHADE)
+        return 0;
+    memset(&in, 0, sizeof in);
+    stp_lighting_default(&in.fl);
+    in.fl.brightness = stiff_to_fix(c->lighting.brightness);
+    in.fl.background = stiff_to_fix(c->lighting.background);
+    in.fl.attenuation_c = stiff_to_fix(c->lighting.c);
+    in.fl.count = c->lighting.count;
+    for (j = 0; j < c->lighting.count && j < STP_MAX_LIGHTS; j++) {
+        in.fl.lights[j].position = fix3(c->lighting.lights[j].position);
+        in.fl.lights[j].power = stiff_to_fix(c->lighting.lights[j].power);
+    }
+    stp_material_default(&in.fm);
+    in.fm.reflectivity = stiff_to_fix(c->material.reflectivity);
+    in.fm.refraction = stiff_to_fix(c->material.refraction);
+    in.fm.gloss = stiff_to_fix(c->material.gloss);
+    in.fm.specular = stiff_to_fix(c->material.specular);
+    in.normal = c->normal;
+    in.parallel = c->parallel;
+    in.fp = fix3(c->point);
+    in.fe = fix3(c->eye);
+    in.fd = fix3(c->pdir);
+    fast_prepare_input(&in);
+    o->core = from_fix(core_shade(&in));
+    o->ref = ref_shade_point(&c->lighting, &c->material, c->normal, c->point, c->eye, c->parallel,
+                             c->pdir);
+    o->answer = c->expect >= 0 ? c->expect : o->ref;
+    o->has_err = o->core >= 0 && o->answer >= 0 && o->answer == o->answer;
+    o->err = o->has_err ? fabs(o->core - o->answer) : 0;
+    return 1;
+}
+#endif
 
 /* ---- the core side of stp_tool_render, step by step ----
  *
@@ -240,6 +313,8 @@ typedef struct core_scene {
     stp_material *materials; /* per scene material, [count] = the default */
     int levels;
     int opened;
+    stp_lighting lighting; /* world positions, as given to the renderer */
+    stp_vec3 eye;          /* the view's centre of projection, world units */
 } core_scene;
 
 static stp_vec3 sfix3(stp_scene_vec3 v)
@@ -304,6 +379,8 @@ static int core_scene_prepare(core_scene *cs, const stp_scene *scene, const stp_
             stp_tool_material(&scene->materials[i], opt->colour, m);
     }
     cs->levels = opt->levels;
+    cs->lighting = lighting;
+    cs->eye = view.from;
     cs->r = stp_renderer_create(cs->rmem, stp_renderer_size(), cs->df, cs->capacity,
                                 (uint32_t)opt->width, (uint32_t)opt->height);
     if (!cs->r || (status = stp_renderer_set_view(cs->r, &view)) != STP_OK ||
@@ -470,6 +547,28 @@ static void write_pbm(const char *path, const unsigned char *bits, int w, int h)
 
 static const char *dump_dir;
 
+/* The reference gets the lights the core gets: stp_tool_prepare merges
+ * lights beyond STP_MAX_LIGHTS (gears-s1 has five), each merged light with
+ * the power of the lights it stands for. */
+static void ref_lights_as_core(const stp_scene *scene, const stp_tool_options *opt,
+                               ref_render_options *ropt)
+{
+    stp_tool_prepared prep;
+    char err[256];
+    size_t j;
+    if (stp_tool_prepare(scene, opt, &prep, err, sizeof err) != 0)
+        return; /* the core's side reports it */
+    if (prep.lights_in > STP_MAX_LIGHTS && prep.scene.light_count <= STP_MAX_LIGHTS) {
+        ropt->light_count = (int)prep.scene.light_count;
+        for (j = 0; j < prep.scene.light_count; j++) {
+            ropt->lights[j] = ref_v3(prep.scene.lights[j].position.x, prep.scene.lights[j].position.y,
+                                     prep.scene.lights[j].position.z);
+            ropt->light_weight[j] = prep.light_weight[j];
+        }
+    }
+    stp_tool_prepared_free(&prep);
+}
+
 /* Compare stp_tool_render with the reference renderer on one scene and
  * size; also checks the bench's mirror of stp_tool_render against it.
  * Returns the differing pixels of this render, or -1 on failure. */
@@ -498,6 +597,7 @@ static long compare_images(const char *name, const stp_scene *scene, int w, int 
     ropt.height = h;
     ropt.max_lights = STP_MAX_LIGHTS;
     ropt.max_vertices = STP_MAX_POLYGON_VERTICES;
+    ref_lights_as_core(scene, &opt, &ropt);
     if (frame_init(&f, w, h) != 0 || frame_init(&g, w, h) != 0)
         return -1;
     ie->renders++;
@@ -574,6 +674,59 @@ static long compare_images(const char *name, const stp_scene *scene, int w, int 
     return diff;
 }
 
+#if STP_BENCH_MESH
+/* Replace every shade the polygon path gave (shade[i] >= 0) by the fast
+ * flat-face shading of the mesh path: the polygon's Newell normal (double,
+ * from its rounded vertices) as a Q1.14 prepared normal, its vertex average,
+ * in world coordinates (the view is rigid, so the shade is the same). */
+static void fast_scene_shades(const core_scene *cs, const stp_scene *scene, double *shade)
+{
+    stp_shade_fast fast;
+    int last_material = -2;
+    size_t i;
+    for (i = 0; i < scene->polygon_count; i++) {
+        const stp_scene_polygon *p = &scene->polygons[i];
+        const stp_vec3 *v = cs->verts + p->first;
+        ref_vec3 n = {0, 0, 0};
+        int64_t sx = 0, sy = 0, sz = 0;
+        int16_t qn[3];
+        stp_vec3 centre;
+        int k;
+        if (shade[i] < 0)
+            continue;
+        if (p->material != last_material) {
+            size_t mi = p->material >= 0 && (size_t)p->material < scene->material_count
+                            ? (size_t)p->material
+                            : scene->material_count;
+            stp_vec3 zero = {0, 0, 0};
+            stp_shade_fast_prepare(&fast, &cs->lighting, &cs->materials[mi], cs->eye, 0, zero);
+            last_material = p->material;
+        }
+        for (k = 0; k < p->count; k++) {
+            const stp_vec3 *a = &v[(k + p->count - 1) % p->count], *b = &v[k];
+            double ax = from_fix(a->x), ay = from_fix(a->y), az = from_fix(a->z);
+            double bx = from_fix(b->x), by = from_fix(b->y), bz = from_fix(b->z);
+            n.x += (ay - by) * (az + bz);
+            n.y += (az - bz) * (ax + bx);
+            n.z += (ax - bx) * (ay + by);
+            sx += b->x;
+            sy += b->y;
+            sz += b->z;
+        }
+        centre.x = (stp_fix)(sx / p->count);
+        centre.y = (stp_fix)(sy / p->count);
+        centre.z = (stp_fix)(sz / p->count);
+        /* a back face is shaded as seen from its front (back-face removal
+         * off, as stp_renderer_polygon and stp_renderer_mesh do) */
+        if (n.x * (from_fix(cs->eye.x) - from_fix(centre.x)) + n.y * (from_fix(cs->eye.y) - from_fix(centre.y)) +
+                n.z * (from_fix(cs->eye.z) - from_fix(centre.z)) < 0)
+            n = ref_v3(-n.x, -n.y, -n.z);
+        q14_normal(n, qn);
+        shade[i] = from_fix(stp_shade_fast_face(&fast, qn, centre));
+    }
+}
+#endif
+
 /* Per-polygon shades of the core and the reference on one scene. */
 typedef struct poly_error {
     stat shade;
@@ -593,6 +746,7 @@ static int compare_polygons(const char *name, const stp_scene *scene, poly_error
     ref_render_options_default(&ropt);
     ropt.max_lights = STP_MAX_LIGHTS;
     ropt.max_vertices = STP_MAX_POLYGON_VERTICES;
+    ref_lights_as_core(scene, &opt, &ropt);
     if (core_scene_prepare(&cs, scene, &opt, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s: %s\n", name, err);
         return -1;
@@ -605,6 +759,9 @@ static int compare_polygons(const char *name, const stp_scene *scene, poly_error
         core_scene_free(&cs);
         return -1;
     }
+#if STP_BENCH_MESH
+    fast_scene_shades(&cs, scene, shade);
+#endif
     for (i = 0; i < scene->polygon_count; i++) {
         double c = shade[i], r = res.shade[i];
         if ((c >= 0) != (r >= 0)) {
@@ -695,6 +852,12 @@ static double time_torus(const stp_scene *torus, int w, int h, double budget)
     (void)torus;
     if (torus_bench_init(&b, w, h, err, sizeof err) != 0)
         return -1;
+#if STP_BENCH_MESH
+    if (torus_bench_use_mesh(&b, err, sizeof err) != 0) {
+        torus_bench_free(&b);
+        return -1;
+    }
+#endif
     t = best_time(torus_once, &b, budget);
     if (b.keep_shades < 0)
         t = -1;
@@ -815,7 +978,12 @@ int main(int argc, char **argv)
     /* the stiff suite */
     for (k = 0; k < stiff_case_count(); k++) {
         stiff_outcome o;
+#if STP_BENCH_MESH
+        if (!fast_stiff_run(stiff_case_at(k), &o))
+            continue;
+#else
         stiff_run(stiff_case_at(k), &o);
+#endif
         if (!o.has_err)
             continue;
         stat_add(&stiff_err, o.err);

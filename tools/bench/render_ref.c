@@ -520,6 +520,7 @@ int ref_render_scene(const stp_scene *scene, const ref_render_options *opt,
     ref_vec3 *verts = 0;
     size_t i, npx;
     int j, light_count, last_material = -2, max_lights;
+    double weight[REF_MAX_LIGHTS], weight_total = 0;
 
     memset(res, 0, sizeof *res);
     if (stp_scene_bounds(scene, &slo, &shi) != 0) {
@@ -571,10 +572,15 @@ int ref_render_scene(const stp_scene *scene, const ref_render_options *opt,
     lighting.background = opt->background;
     lighting.c = opt->attenuation_c;
     lighting.count = light_count;
+    for (j = 0; j < light_count; j++)
+        weight[j] = opt->light_count > 0 && opt->light_weight[j] > 0 ? opt->light_weight[j] : 1.0;
+    for (j = 0; j < light_count; j++)
+        weight_total += weight[j];
     for (j = 0; j < light_count; j++) {
-        double power = 1.0 - opt->background;
+        /* a merged light has the power of the lights it stands for */
+        double power = (1.0 - opt->background) * weight[j];
         if (opt->auto_power)
-            power *= (opt->attenuation_c + dist3(light_pos[j], centre)) / sqrt((double)light_count);
+            power *= (opt->attenuation_c + dist3(light_pos[j], centre)) / sqrt(weight_total);
         lighting.lights[j].position = light_pos[j];
         lighting.lights[j].power = power;
     }

@@ -167,6 +167,9 @@ typedef struct ref_render_options {
     int auto_power;
     int light_count;           /* > 0: these replace the scene's lights */
     ref_vec3 lights[REF_MAX_LIGHTS];
+    double light_weight[REF_MAX_LIGHTS]; /* with light_count: how many of the file's
+                                  lights each stands for (merged, as
+                                  stp_tool_prepare does; 0 counts as 1) */
     int max_lights;            /* the core's STP_MAX_LIGHTS (lights beyond are dropped) */
     int max_vertices;          /* the core's STP_MAX_POLYGON_VERTICES (0: no limit) */
     int perspective;
