@@ -439,7 +439,10 @@ static void vertex_project(mesh_context *c, uint16_t i)
 {
     stp_mesh_vertex *s = &c->scratch[i];
     if ((s->state & PROJECTED) == 0) {
-        if (!c->inside || !c->exact_projection || !project_inside(c->r, s->view, s)) {
+        /* where 64-bit quotients are one instruction, render.c's form is
+         * cheaper (the values are the same) */
+        if (STP_WIDE_ARITH || !c->inside || !c->exact_projection ||
+            !project_inside(c->r, s->view, s)) {
             stp_instr out;
             stp_render_project(c->r, s->view, &out);
             s->dx = out.x;
@@ -492,6 +495,8 @@ static uint32_t div3_small(uint32_t u)
 static stp_fix average3(int small, int32_t a, int32_t b, int32_t c)
 {
     int64_t s;
+    if (small && STP_WIDE_ARITH)
+        return (stp_fix)stp_div3_toward_zero(a + b + c); /* one product here */
     if (small) {
         int32_t sum = a + b + c; /* below 3 2^28 in magnitude */
         return sum >= 0 ? (stp_fix)div3_small((uint32_t)sum)
