@@ -37,6 +37,10 @@ typedef struct mesh_context {
     int inside; /* 1: every vertex is inside the view volume (no outcodes)
                    and its view coordinates are below 2^29 in magnitude */
     int exact_projection; /* project_inside applies: 0 < focal, hither */
+    const stp_shade_fast *shade; /* the prepared shading (prepare_shading) */
+#if !STP_VERTEX_CACHE
+    stp_shade_fast shade_here; /* prepared per call (render_private.h) */
+#endif
 } mesh_context;
 
 /* floor(v / 2^s) for any int32 v, 0 <= s <= 31 (>> of a negative value is
@@ -458,23 +462,32 @@ static void vertex_project(mesh_context *c, uint16_t i)
  * shading in 32-bit arithmetic (shade_fast.c), the same on every target. */
 static stp_fix shade_face(const mesh_context *c, const int16_t normal[3], stp_vec3 centre)
 {
-    return stp_shade_fast_face(&c->r->fast_shade, normal, centre);
+    return stp_shade_fast_face(c->shade, normal, centre);
 }
 
-/* The renderer's prepared shading (render_private.h: fast_shade), made
- * again only after the segment's lighting or the material changed: the
- * eye is the view's origin (the fast path is perspective only). */
-static void prepare_shading(stp_renderer *r)
+/* The prepared shading of the segment's lighting, the material and the eye
+ * at the view's origin (the fast path is perspective only): the
+ * renderer's, made again only after they changed (render_private.h:
+ * fast_shade), or with STP_VERTEX_CACHE 0 made for this call. */
+static void prepare_shading(mesh_context *c)
 {
+    stp_renderer *r = c->r;
+    stp_shade_fast *s;
     stp_vec3 origin, towards_eye;
+#if STP_VERTEX_CACHE
+    s = &r->fast_shade;
+    c->shade = s;
     if (r->fast_shade_valid)
         return;
+    r->fast_shade_valid = 1;
+#else
+    s = &c->shade_here;
+    c->shade = s;
+#endif
     origin.x = origin.y = origin.z = 0;
     towards_eye.x = towards_eye.y = 0;
     towards_eye.z = -ONE; /* unused: perspective */
-    stp_shade_fast_prepare(&r->fast_shade, &r->segment_lighting, &r->material, origin, 0,
-                           towards_eye);
-    r->fast_shade_valid = 1;
+    stp_shade_fast_prepare(s, &r->segment_lighting, &r->material, origin, 0, towards_eye);
 }
 
 /* The vertex average, truncated toward zero as render.c's Newell step
@@ -659,7 +672,7 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
     c.scratch = scratch;
     fast = fast_state(r, mesh) && prepare_call(&c);
     if (fast && r->shading)
-        prepare_shading(r);
+        prepare_shading(&c);
 #if !STP_WITH_MESH_FALLBACK
     if (!fast)
         return STP_ERR_UNSUPPORTED;

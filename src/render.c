@@ -26,6 +26,16 @@ size_t stp_renderer_size(void)
 }
 
 static void world_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out);
+
+/* The mesh path's prepared shading (render_private.h) is out of date. */
+static void forget_fast_shade(stp_renderer *r)
+{
+#if STP_VERTEX_CACHE
+    r->fast_shade_valid = 0;
+#else
+    (void)r;
+#endif
+}
 static void close_implicit_segment(stp_renderer *r);
 
 /* C99 has no alignof: a type's alignment is its offset after a char. */
@@ -64,7 +74,7 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     stp_lighting_default(&r->user_lighting);
     r->segment_lighting = r->user_lighting;
     stp_material_default(&r->material);
-    r->fast_shade_valid = 0;
+    forget_fast_shade(r);
     r->shading = 0;
     r->levels = 16;
     r->fill_style = 16;
@@ -199,7 +209,7 @@ int stp_renderer_set_object_shade(stp_renderer *r, const stp_material *material)
         if (material->colour[c] < 0 || material->colour[c] > ONE)
             return STP_ERR_ARG;
     if (!material_equal(&r->material, material))
-        r->fast_shade_valid = 0; /* mesh.c prepares its shading again */
+        forget_fast_shade(r); /* mesh.c prepares its shading again */
     r->material = *material;
     return STP_OK;
 }
@@ -327,7 +337,7 @@ static void copy_light(stp_renderer *r)
     s->background = u->background;
     s->attenuation_c = u->attenuation_c;
     if (!same)
-        r->fast_shade_valid = 0;
+        forget_fast_shade(r);
 }
 
 /* Open segment id (checked by the caller: no segment open, id not in use). */
