@@ -10,6 +10,7 @@
 #include "shade_private.h"
 #include "clip_private.h"
 #include "view_private.h"
+#include "recip_private.h"
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -35,6 +36,11 @@ typedef struct mesh_context {
     int shift;
     int inside; /* 1: every vertex is inside the view volume (no outcodes)
                    and its view coordinates are below 2^29 in magnitude */
+    int exact_projection; /* project_inside applies: 0 < focal, hither */
+    const stp_shade_fast *shade; /* the prepared shading (prepare_shading) */
+#if !STP_VERTEX_CACHE
+    stp_shade_fast shade_here; /* prepared per call (render_private.h) */
+#endif
 } mesh_context;
 
 /* floor(v / 2^s) for any int32 v, 0 <= s <= 31 (>> of a negative value is
@@ -290,6 +296,7 @@ static int prepare_call(mesh_context *c)
     big |= magnitude(lo.x) | magnitude(lo.y) | magnitude(lo.z) | magnitude(hi.x) |
            magnitude(hi.y) | magnitude(hi.z);
     c->inside = box_inside(r, lo, hi, s2);
+    c->exact_projection = r->focal > 0 && r->hither > 0;
     k = bit_length32(big) - 14;
     c->shift = k > 0 ? k : 0;
     for (j = 0; j < 3; j++)
@@ -329,50 +336,185 @@ static inline int32_t vertex_code(mesh_context *c, uint16_t i)
     return s->state & (CODE_RANGE | 31);
 }
 
+/* Significant bits of v (0 for 0), by halving (ARMv6-M has no CLZ). */
+static int bits32(uint32_t v)
+{
+    int n = 0;
+    if (v >= 0x10000u) {
+        v >>= 16;
+        n = 16;
+    }
+    if (v >= 0x100u) {
+        v >>= 8;
+        n += 8;
+    }
+    if (v >= 0x10u) {
+        v >>= 4;
+        n += 4;
+    }
+    if (v >= 4u) {
+        v >>= 2;
+        n += 2;
+    }
+    return n + (v >= 2u ? 2 : (int)v);
+}
+
+/* One vertex's 1/z, for the quotients of a numerator f m (f per view,
+ * 0 < f < 2^31): z = dn 2^-s with dn in [2^31, 2^32) and 2^32 + v =
+ * floor((2^64 - 1) / dn) (stp_recip32), so P = f (2^32 + v) < 2^64
+ * approximates f 2^64 / dn from below within f + 1 (relative 2^-31); w =
+ * P's top 32 bits (P >> t, w >= 2^31) and sh = 64 - t - s: f / z ~ w 2^-sh. */
+static void scale_reciprocal(uint32_t f, uint32_t v, int s, uint32_t *w, int *sh)
+{
+    uint64_t p = ((uint64_t)f << 32) + stp_umul32x32(f, v);
+    uint32_t ph = (uint32_t)(p >> 32), pl = (uint32_t)p; /* ph >= f >= 1 */
+    int t = bits32(ph);
+    *w = t == 32 ? ph : (ph << (32 - t)) | (pl >> t);
+    *sh = 64 - t - s;
+}
+
+/* floor(f m / z) exactly, for m < 2^31 (n_low = f m mod 2^32) and z <
+ * 2^29, from the estimate e = floor(m w / 2^sh): every step rounds down, so
+ * e <= the quotient Q, and Q - e <= 6 Q 2^-32 + 1 (w 2^-sh is below f / z
+ * by at most (2 f + 2^t) 2^(s - 64) <= 6 f 2^(s - 64), and m f 2^(s - 64)
+ * <= Q 2^-32), below 5 for Q < 2^31: the remainder f m - e z is in
+ * [0, 5 z), below 2^32, so taken mod 2^32 it corrects e.  0 when the
+ * quotient is 2^31 or more. */
+static int exact_quotient(uint32_t m, uint32_t w, int sh, uint32_t n_low, uint32_t z,
+                          uint32_t *q)
+{
+    uint64_t prod = stp_umul32x32(m, w);
+    uint32_t hi = (uint32_t)(prod >> 32), lo = (uint32_t)prod, e, rem;
+    if (sh >= 32) {
+        e = sh - 32 >= 32 ? 0u : hi >> (sh - 32);
+    } else {
+        if ((hi >> sh) != 0)
+            return 0;
+        e = (hi << (32 - sh)) | (lo >> sh);
+    }
+    if (e >= 0x80000000u)
+        return 0;
+    rem = n_low - e * z; /* in [0, 5 z): below 2^32 */
+    while (rem >= z) {
+        e++;
+        rem -= z;
+    }
+    *q = e;
+    return e < 0x80000000u;
+}
+
+/* A device coordinate from the quotient q = floor(f |c| / z): floor of the
+ * signed quotient truncated toward zero, at STP_SUBPIXEL_BITS (as
+ * stp_asr64 of stp_div64_by's in render.c's project). */
+static int32_t subpixel(int negative, uint32_t q)
+{
+    const int shift = F - STP_SUBPIXEL_BITS;
+    return negative ? -(int32_t)((q + ((1u << shift) - 1u)) >> shift) : (int32_t)(q >> shift);
+}
+
+/* The device position of an inside vertex (view coordinates below 2^28,
+ * z >= hither), the same values as stp_render_project (perspective) but
+ * with 32-bit products and one reciprocal: 1 on success, 0 when a
+ * quotient is out of this form's range (then stp_render_project). */
+static int project_inside(const stp_renderer *r, stp_vec3 p, stp_mesh_vertex *s)
+{
+    uint32_t z = (uint32_t)(p.z < r->hither ? r->hither : p.z), f = (uint32_t)r->focal;
+    uint32_t h = (uint32_t)r->hither, mx = magnitude(p.x), my = magnitude(p.y), qx, qy, qk, w, wh;
+    int sz = 32 - bits32(z), sh, shh;
+    int32_t wq = (int32_t)r->width << STP_SUBPIXEL_BITS, hq = (int32_t)r->height << STP_SUBPIXEL_BITS;
+    int32_t x, y;
+    uint32_t v = stp_recip32(z << sz);
+    scale_reciprocal(f, v, sz, &w, &sh);
+    scale_reciprocal(h, v, sz, &wh, &shh);
+    if (!exact_quotient(mx, w, sh, f * mx, z, &qx) || !exact_quotient(my, w, sh, f * my, z, &qy) ||
+        !exact_quotient((uint32_t)1 << 30, wh, shh, h << 30, z, &qk))
+        return 0;
+    x = wq / 2 + subpixel(p.x < 0, qx);
+    y = hq / 2 - subpixel(p.y < 0, qy);
+    s->dx = x < 0 ? 0 : (x > wq ? wq : x);
+    s->dy = y < 0 ? 0 : (y > hq ? hq : y);
+    s->dz = (int32_t)qk;
+    return 1;
+}
+
 /* Vertex i's device position, projected once per call (it is inside the
  * view volume: its outcode is 0). */
 static void vertex_project(mesh_context *c, uint16_t i)
 {
     stp_mesh_vertex *s = &c->scratch[i];
     if ((s->state & PROJECTED) == 0) {
-        stp_instr out;
-        stp_render_project(c->r, s->view, &out);
-        s->dx = out.x;
-        s->dy = out.y;
-        s->dz = out.z;
+        /* where 64-bit quotients are one instruction, render.c's form is
+         * cheaper (the values are the same) */
+        if (STP_WIDE_ARITH || !c->inside || !c->exact_projection ||
+            !project_inside(c->r, s->view, s)) {
+            stp_instr out;
+            stp_render_project(c->r, s->view, &out);
+            s->dx = out.x;
+            s->dy = out.y;
+            s->dz = out.z;
+        }
         s->state |= PROJECTED;
     }
 }
 
 /* The shade of a face from its unit normal (Q1.14, view coordinates,
  * turned to the eye) and its vertex average (view coordinates): the seed's
- * shading as stp_renderer_polygon's SHADE-CHECK does it. */
+ * shading in 32-bit arithmetic (shade_fast.c), the same on every target. */
 static stp_fix shade_face(const mesh_context *c, const int16_t normal[3], stp_vec3 centre)
 {
-    stp_unit3 n, eye;
-    int32_t n_dot_e = 0;
-    n.x = (int32_t)normal[0] * 65536; /* Q14 to STP_UNIT (Q30) */
-    n.y = (int32_t)normal[1] * 65536;
-    n.z = (int32_t)normal[2] * 65536;
-    if (stp_unit_from64(-(int64_t)centre.x, -(int64_t)centre.y, -(int64_t)centre.z, &eye) == 0) {
-        eye.x = eye.y = 0; /* centre at the eye: no light reaches the eye */
-        eye.z = -STP_UNIT_ONE;
-    } else {
-        n_dot_e = stp_unit_dot(n, eye);
-        if (n_dot_e < 0)
-            n_dot_e = 0;
-    }
-    return stp_shade_unit(&c->r->segment_lighting, &c->r->material, n, centre, eye, n_dot_e);
+    return stp_shade_fast_face(c->shade, normal, centre);
+}
+
+/* The prepared shading of the segment's lighting, the material and the eye
+ * at the view's origin (the fast path is perspective only): the
+ * renderer's, made again only after they changed (render_private.h:
+ * fast_shade), or with STP_VERTEX_CACHE 0 made for this call. */
+static void prepare_shading(mesh_context *c)
+{
+    stp_renderer *r = c->r;
+    stp_shade_fast *s;
+    stp_vec3 origin, towards_eye;
+#if STP_VERTEX_CACHE
+    s = &r->fast_shade;
+    c->shade = s;
+    if (r->fast_shade_valid)
+        return;
+    r->fast_shade_valid = 1;
+#else
+    s = &c->shade_here;
+    c->shade = s;
+#endif
+    origin.x = origin.y = origin.z = 0;
+    towards_eye.x = towards_eye.y = 0;
+    towards_eye.z = -ONE; /* unused: perspective */
+    stp_shade_fast_prepare(s, &r->segment_lighting, &r->material, origin, 0, towards_eye);
 }
 
 /* The vertex average, truncated toward zero as render.c's Newell step
  * forms it (the same quotients); small: each value below 2^28 in
  * magnitude (box_inside), so the sum fits int32. */
+/* floor(u / 3) for u < 2^30, three 32-bit products (no 32 x 32 -> 64 one):
+ * u = h 2^15 + l with 2^15 = 3 10922 + 2 gives floor(u / 3) = 10922 h +
+ * floor(t / 3), t = 2 h + l < 3 2^15; t = th 2^14 + tl with 2^14 = 3 5461
+ * + 1 gives floor(t / 3) = 5461 th + floor(x / 3), x = th + tl < 2^14 + 6;
+ * and for x < 2^15, (x 21846) >> 16 = floor(x / 3 + x / 98304) is floor(x
+ * / 3) (x / 98304 < 1/3). */
+static uint32_t div3_small(uint32_t u)
+{
+    uint32_t h = u >> 15, t = 2u * h + (u & 0x7FFFu), th = t >> 14;
+    return 10922u * h + 5461u * th + (((th + (t & 0x3FFFu)) * 21846u) >> 16);
+}
+
 static stp_fix average3(int small, int32_t a, int32_t b, int32_t c)
 {
     int64_t s;
-    if (small)
-        return (stp_fix)stp_div3_toward_zero(a + b + c);
+    if (small && STP_WIDE_ARITH)
+        return (stp_fix)stp_div3_toward_zero(a + b + c); /* one product here */
+    if (small) {
+        int32_t sum = a + b + c; /* below 3 2^28 in magnitude */
+        return sum >= 0 ? (stp_fix)div3_small((uint32_t)sum)
+                        : -(stp_fix)div3_small(0u - (uint32_t)sum);
+    }
     s = (int64_t)a + b + c;
     if (s >= INT32_MIN && s <= INT32_MAX)
         return (stp_fix)stp_div3_toward_zero((int32_t)s);
@@ -529,6 +671,8 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
     c.mesh = mesh;
     c.scratch = scratch;
     fast = fast_state(r, mesh) && prepare_call(&c);
+    if (fast && r->shading)
+        prepare_shading(&c);
 #if !STP_WITH_MESH_FALLBACK
     if (!fast)
         return STP_ERR_UNSUPPORTED;

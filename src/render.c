@@ -26,6 +26,16 @@ size_t stp_renderer_size(void)
 }
 
 static void world_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out);
+
+/* The mesh path's prepared shading (render_private.h) is out of date. */
+static void forget_fast_shade(stp_renderer *r)
+{
+#if STP_VERTEX_CACHE
+    r->fast_shade_valid = 0;
+#else
+    (void)r;
+#endif
+}
 static void close_implicit_segment(stp_renderer *r);
 
 /* C99 has no alignof: a type's alignment is its offset after a char. */
@@ -64,6 +74,7 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     stp_lighting_default(&r->user_lighting);
     r->segment_lighting = r->user_lighting;
     stp_material_default(&r->material);
+    forget_fast_shade(r);
     r->shading = 0;
     r->levels = 16;
     r->fill_style = 16;
@@ -181,6 +192,13 @@ int stp_renderer_set_lighting(stp_renderer *r, const stp_lighting *lighting)
     return STP_OK;
 }
 
+static int material_equal(const stp_material *a, const stp_material *b)
+{
+    return a->reflectivity == b->reflectivity && a->refraction == b->refraction &&
+           a->gloss == b->gloss && a->specular == b->specular && a->colour[0] == b->colour[0] &&
+           a->colour[1] == b->colour[1] && a->colour[2] == b->colour[2];
+}
+
 int stp_renderer_set_object_shade(stp_renderer *r, const stp_material *material)
 {
     int c;
@@ -190,6 +208,8 @@ int stp_renderer_set_object_shade(stp_renderer *r, const stp_material *material)
     for (c = 0; c < 3; c++)
         if (material->colour[c] < 0 || material->colour[c] > ONE)
             return STP_ERR_ARG;
+    if (!material_equal(&r->material, material))
+        forget_fast_shade(r); /* mesh.c prepares its shading again */
     r->material = *material;
     return STP_OK;
 }
@@ -288,10 +308,42 @@ static int free_segment_slot(const stp_renderer *r)
     return -1;
 }
 
+static int vec_equal(stp_vec3 a, stp_vec3 b)
+{
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+
+/* COPY-LIGHT: the user's lighting into the segment's with the lights in
+ * view coordinates; the mesh path's prepared shading is kept when the
+ * result equals the last segment's (the common case: a scene re-entered
+ * every frame under a fixed view and lighting). */
+static void copy_light(stp_renderer *r)
+{
+    const stp_lighting *u = &r->user_lighting;
+    stp_lighting *s = &r->segment_lighting;
+    int same = s->count == u->count && s->brightness == u->brightness &&
+               s->background == u->background && s->attenuation_c == u->attenuation_c, j, c;
+    for (j = 0; j < u->count; j++) {
+        stp_vec3 p;
+        world_to_view(r, u->lights[j].position, &p);
+        same = same && vec_equal(p, s->lights[j].position) && u->lights[j].power == s->lights[j].power;
+        for (c = 0; c < 3; c++)
+            same = same && u->lights[j].colour[c] == s->lights[j].colour[c];
+        s->lights[j] = u->lights[j];
+        s->lights[j].position = p;
+    }
+    s->count = u->count;
+    s->brightness = u->brightness;
+    s->background = u->background;
+    s->attenuation_c = u->attenuation_c;
+    if (!same)
+        forget_fast_shade(r);
+}
+
 /* Open segment id (checked by the caller: no segment open, id not in use). */
 static int open_segment(stp_renderer *r, int id)
 {
-    int i = free_segment_slot(r), j;
+    int i = free_segment_slot(r);
     if (i < 0)
         return STP_ERR_FULL;
     r->segments[i].used = 1;
@@ -309,10 +361,7 @@ static int open_segment(stp_renderer *r, int id)
     r->model_on = 0;
     /* COPY-LIGHT: the lighting belongs to the view; fix it for this segment
      * with the lights in view coordinates */
-    r->segment_lighting = r->user_lighting;
-    for (j = 0; j < r->segment_lighting.count; j++)
-        world_to_view(r, r->user_lighting.lights[j].position,
-                      &r->segment_lighting.lights[j].position);
+    copy_light(r);
     return STP_OK;
 }
 

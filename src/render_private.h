@@ -7,6 +7,7 @@
 #include "fix_private.h"
 #include "clip_private.h"
 #include "view_private.h"
+#include "shade_fast_private.h"
 
 #define STP_CLIP_VERTICES (STP_MAX_POLYGON_VERTICES + 5)
 
@@ -142,6 +143,18 @@ struct stp_renderer {
     stp_fix current_transmission; /* t last entered in the open segment */
     int32_t current_colour; /* colour last entered with current_style */
     stp_fix last_shade;
+#if STP_VERTEX_CACHE
+    /* the mesh path's shading constants (mesh.c: stp_shade_fast_prepare of
+     * segment_lighting, material and the eye at the view origin), prepared
+     * on the first shaded mesh after they change: open_segment clears
+     * fast_shade_valid when the copied lighting differs from the last
+     * segment's, set_object_shade when the material differs.  Kept, like
+     * the vertex cache, only where scenes are re-entered (STP_VERTEX_CACHE
+     * > 0): with 0 (a scene entered once, RAM tight) mesh.c prepares them
+     * per call on the stack */
+    stp_shade_fast fast_shade;
+    int fast_shade_valid;
+#endif
 
     int pen_valid;
     stp_vec3 pen; /* view coordinates */

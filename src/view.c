@@ -2,6 +2,7 @@
 /* The view frame (see view_private.h). */
 #include "view_private.h"
 #include "fix_private.h"
+#include "recip_private.h" /* STP_WIDE_ARITH */
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -64,19 +65,33 @@ int stp_view_frame_make(const stp_view *v, uint32_t width, uint32_t height, stp_
     return STP_OK;
 }
 
-void stp_view_transform_make(const stp_view_frame *vf, stp_view_transform *out)
+void stp_view_transform_of_axes(stp_vec3 right, stp_vec3 up, stp_vec3 forward, stp_vec3 from,
+                                stp_view_transform *out)
 {
-    out->right = vf->right;
-    out->up = vf->up;
-    out->forward = vf->forward;
-    out->from_right = (int64_t)vf->from.x * vf->right.x + (int64_t)vf->from.y * vf->right.y +
-                      (int64_t)vf->from.z * vf->right.z;
-    out->from_up = (int64_t)vf->from.x * vf->up.x + (int64_t)vf->from.y * vf->up.y +
-                   (int64_t)vf->from.z * vf->up.z;
-    out->from_forward = (int64_t)vf->from.x * vf->forward.x + (int64_t)vf->from.y * vf->forward.y +
-                        (int64_t)vf->from.z * vf->forward.z;
+    const int64_t *d[3];
+    int k;
+    out->right = right;
+    out->up = up;
+    out->forward = forward;
+    out->from_right = (int64_t)from.x * right.x + (int64_t)from.y * right.y + (int64_t)from.z * right.z;
+    out->from_up = (int64_t)from.x * up.x + (int64_t)from.y * up.y + (int64_t)from.z * up.z;
+    out->from_forward =
+        (int64_t)from.x * forward.x + (int64_t)from.y * forward.y + (int64_t)from.z * forward.z;
+    d[0] = &out->from_right;
+    d[1] = &out->from_up;
+    d[2] = &out->from_forward;
+    for (k = 0; k < 3; k++) {
+        out->from_high[k] = stp_asr64(*d[k], 16);
+        out->from_low[k] = (int32_t)(*d[k] - out->from_high[k] * 65536);
+    }
 }
 
+void stp_view_transform_make(const stp_view_frame *vf, stp_view_transform *out)
+{
+    stp_view_transform_of_axes(vf->right, vf->up, vf->forward, vf->from, out);
+}
+
+#if STP_WIDE_ARITH
 /* floor(v / 2^F), saturated, for |v| < 2^62: the offset makes the shifted
  * value non-negative (a right shift of a negative value is the
  * implementation's), and 2^62 is a multiple of 2^F, so the floor is exact */
@@ -97,6 +112,78 @@ void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 
     out->z = floor_shift_sat((int64_t)p.x * t->forward.x + (int64_t)p.y * t->forward.y +
                              (int64_t)p.z * t->forward.z - t->from_forward);
 }
+#else
+/* floor(v / 2^16) (>> of a negative value is the implementation's: the
+ * arithmetic shift on every compiler the project builds with, where the
+ * test folds away) */
+static int32_t high16(int32_t v)
+{
+    if ((int32_t)-1 >> 1 == (int32_t)-1)
+        return v >> 16;
+    return v >= 0 ? v >> 16 : (int32_t)~(~(uint32_t)v >> 16);
+}
+
+/* A point split in 16-bit halves: v = h 2^16 + l, h signed, l in [0, 2^16). */
+typedef struct point_halves {
+    int32_t h[3];
+    uint32_t l[3];
+} point_halves;
+
+/* floor((p . a - from) / 2^16) saturated (from = from_high 2^16 +
+ * from_low), the same value as the 64-bit formula's, for an axis a
+ * (|a_i| < 2^17), from 32-bit products of 16-bit halves (ARMv6-M has no
+ * 32 x 32 -> 64 multiply; the library's costs ~40 instructions a call).
+ * With a_i = ah 2^16 + al (ah in [-2, 1]), p_i a_i = 2^16 ph a_i +
+ * 2^16 pl ah + pl al, and pl al = 2^16 (pl al >> 16) + (pl al & 0xFFFF),
+ * so the floor is
+ *   sum ph a_i - from_high + small,
+ *   small = sum pl ah + sum (pl al >> 16)
+ *           + floor((sum (pl al & 0xFFFF) - from_low) / 2^16)
+ * with |pl ah| < 2^17, pl al < 2^32 (unsigned), |small| < 2^19.  small:
+ * every |p_i| < 2^28 (|ph| < 2^12): |ph a_i| < 2^29, the sum below
+ * 1.5 2^30, all in 32 bits; else ph a_i = 2^16 ph ah + ph al, |ph ah| <=
+ * 2^16, |ph al| < 2^31, summed in 64 bits. */
+static stp_fix axis_coordinate(const point_halves *p, int small_point, stp_vec3 a,
+                               int64_t from_high, int32_t from_low)
+{
+    int32_t ah0 = high16(a.x), ah1 = high16(a.y), ah2 = high16(a.z);
+    uint32_t al0 = (uint32_t)a.x & 0xFFFFu, al1 = (uint32_t)a.y & 0xFFFFu,
+             al2 = (uint32_t)a.z & 0xFFFFu;
+    uint32_t l0 = p->l[0] * al0, l1 = p->l[1] * al1, l2 = p->l[2] * al2;
+    int32_t small = (int32_t)p->l[0] * ah0 + (int32_t)p->l[1] * ah1 + (int32_t)p->l[2] * ah2 +
+                    (int32_t)(l0 >> 16) + (int32_t)(l1 >> 16) + (int32_t)(l2 >> 16) +
+                    high16((int32_t)(l0 & 0xFFFFu) + (int32_t)(l1 & 0xFFFFu) +
+                           (int32_t)(l2 & 0xFFFFu) - from_low);
+    int64_t v;
+    if (small_point) {
+        v = (int64_t)(p->h[0] * a.x + p->h[1] * a.y + p->h[2] * a.z + small) - from_high;
+    } else {
+        int32_t high = p->h[0] * ah0 + p->h[1] * ah1 + p->h[2] * ah2;
+        v = (int64_t)high * 65536 + (int64_t)(p->h[0] * (int32_t)al0) +
+            (int64_t)(p->h[1] * (int32_t)al1) + (int64_t)(p->h[2] * (int32_t)al2) +
+            ((int64_t)small - from_high);
+    }
+    return stp_fix_sat64(v);
+}
+
+void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out)
+{
+    point_halves ph;
+    int small_point;
+    ph.h[0] = high16(p.x);
+    ph.h[1] = high16(p.y);
+    ph.h[2] = high16(p.z);
+    ph.l[0] = (uint32_t)p.x & 0xFFFFu;
+    ph.l[1] = (uint32_t)p.y & 0xFFFFu;
+    ph.l[2] = (uint32_t)p.z & 0xFFFFu;
+    /* |p_i| < 2^28: ph in [-2^12, 2^12) */
+    small_point = (uint32_t)(ph.h[0] + 4096) < 8192u && (uint32_t)(ph.h[1] + 4096) < 8192u &&
+                  (uint32_t)(ph.h[2] + 4096) < 8192u;
+    out->x = axis_coordinate(&ph, small_point, t->right, t->from_high[0], t->from_low[0]);
+    out->y = axis_coordinate(&ph, small_point, t->up, t->from_high[1], t->from_low[1]);
+    out->z = axis_coordinate(&ph, small_point, t->forward, t->from_high[2], t->from_low[2]);
+}
+#endif
 
 /* Ranges: each difference of vertices below 2^ld (raw), the eye's below
  * 2^le: the cross product's components are below 2^(2 ld + 1) and the

@@ -28,9 +28,17 @@ int stp_view_frame_make(const stp_view *v, uint32_t width, uint32_t height, stp_
 typedef struct stp_view_transform {
     stp_vec3 right, up, forward;
     int64_t from_right, from_up, from_forward;
+    /* the same split for 32-bit targets (view.c): from . axis = high 2^16
+     * + low, low in [0, 2^16), for right, up, forward */
+    int64_t from_high[3];
+    int32_t from_low[3];
 } stp_view_transform;
 
 void stp_view_transform_make(const stp_view_frame *vf, stp_view_transform *out);
+/* The transform of axes right, up, forward (unit: |component| < 2^17) and
+ * eye from, as stp_view_transform_make forms it from a frame. */
+void stp_view_transform_of_axes(stp_vec3 right, stp_vec3 up, stp_vec3 forward, stp_vec3 from,
+                                stp_view_transform *out);
 
 /* p (world) in view coordinates, each floor((p - from) . axis), saturated. */
 void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out);

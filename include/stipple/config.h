@@ -59,7 +59,8 @@
  * so a repeated vertex is not transformed and projected again.  Each entry
  * costs 44 bytes of the renderer object, plus 2 bytes per
  * STP_MAX_POLYGON_VERTICES; 0 takes the cache out (`stipple compile`'s
- * headers do: a compiled scene is entered once). */
+ * headers do: a compiled scene is entered once), and with it the mesh
+ * path's shading kept across calls (render_private.h). */
 #ifndef STP_VERTEX_CACHE
 #define STP_VERTEX_CACHE 64
 #endif

@@ -11,11 +11,15 @@
  * stp_renderer_polygon would enter its three vertices: the same display-file
  * records (STP_OP_SHADE when the style changes, device coordinates, depth
  * keys), the segment's model transform applied, back-face removal honoured,
- * shaded with the segment's lighting and material.  Pictures differ from
- * triangle-by-triangle entry only where a face's shade differs (the
- * prepared Q1.14 normal against the exact normal of the transformed
- * vertices) or where a face within a hair of edge-on is decided the other
- * way.
+ * shaded with the segment's lighting and material.  The shade is the
+ * seed's equation in 32-bit arithmetic (the same on every target; within
+ * 0.0025 of a double-precision reference on the tests' torus: tests/mesh),
+ * prepared once and kept in the renderer until the segment's lighting (in
+ * view coordinates) or the material changes.  Pictures differ from
+ * triangle-by-triangle entry only where a face's shade differs (that
+ * arithmetic, and the prepared Q1.14 normal against the exact normal of
+ * the transformed vertices) or where a face within a hair of edge-on is
+ * decided the other way.
  *
  * What the fast path does not handle goes, triangle by triangle, through
  * stp_renderer_polygon (the fallback): a triangle that crosses or touches

@@ -1,0 +1,98 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * stp_view_transform_point built for 32-bit targets (STP_WIDE_ARITH 0:
+ * view.c's products from 16-bit halves, this test's own copy of view.c)
+ * against the plain 64-bit formula, floor((p . axis - from . axis) / 2^16)
+ * saturated to stp_fix: the same value for random points over the whole
+ * int32 range (both of view.c's cases: every |coordinate| below 2^28, and
+ * not), unit axes (exactly +-1 among them) and eyes.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+#include <cmocka.h>
+
+#include "view_private.h"
+
+#if STP_WIDE_ARITH
+#error "this test is built with STP_WIDE_ARITH 0"
+#endif
+
+static uint64_t seed = 0x9E3779B97F4A7C15u;
+
+static uint32_t next_random(void)
+{
+    seed = seed * 6364136223846793005u + 1442695040888963407u;
+    return (uint32_t)(seed >> 32);
+}
+
+/* a random int32 of a random bit length (small and huge values alike) */
+static int32_t random_coordinate(void)
+{
+    int bits = (int)(next_random() % 32);
+    int32_t v = (int32_t)(next_random() & (((uint32_t)1 << bits) - 1u));
+    if (next_random() & 1u)
+        v = -v;
+    return (next_random() % 16u) == 0 ? (int32_t)next_random() : v;
+}
+
+/* an axis component in [-2^16, 2^16]: exactly +-1 or 0 one time in four */
+static int32_t random_axis(void)
+{
+    static const int32_t exact[4] = {65536, -65536, 0, 46341};
+    if (next_random() % 4u == 0)
+        return exact[next_random() % 4u];
+    return (int32_t)(next_random() % 131073u) - 65536;
+}
+
+static stp_fix reference(stp_vec3 p, stp_vec3 a, int64_t from)
+{
+    int64_t v = (int64_t)p.x * a.x + (int64_t)p.y * a.y + (int64_t)p.z * a.z - from;
+    int64_t q = v >= 0 ? v / 65536 : -((-v + 65535) / 65536); /* floor */
+    return q > INT32_MAX ? STP_FIX_MAX : q < -INT32_MAX ? STP_FIX_MIN : (stp_fix)q;
+}
+
+static void test_exact(void **state)
+{
+    long i, saturated = 0, small = 0;
+    (void)state;
+    for (i = 0; i < 2000000; i++) {
+        stp_view_transform t;
+        stp_vec3 p, out, axis[3], from;
+        int k;
+        for (k = 0; k < 3; k++) {
+            axis[k].x = random_axis();
+            axis[k].y = random_axis();
+            axis[k].z = random_axis();
+        }
+        from.x = random_coordinate();
+        from.y = random_coordinate();
+        from.z = random_coordinate();
+        stp_view_transform_of_axes(axis[0], axis[1], axis[2], from, &t);
+        assert_true(t.from_right == (int64_t)from.x * axis[0].x + (int64_t)from.y * axis[0].y +
+                                        (int64_t)from.z * axis[0].z);
+        p.x = random_coordinate();
+        p.y = random_coordinate();
+        p.z = random_coordinate();
+        stp_view_transform_point(&t, p, &out);
+        assert_int_equal(out.x, reference(p, t.right, t.from_right));
+        assert_int_equal(out.y, reference(p, t.up, t.from_up));
+        assert_int_equal(out.z, reference(p, t.forward, t.from_forward));
+        saturated += out.x == STP_FIX_MAX || out.x == STP_FIX_MIN;
+        small += llabs(p.x) < (1 << 28) && llabs(p.y) < (1 << 28) && llabs(p.z) < (1 << 28);
+    }
+    /* both the exact and the saturated ranges were visited */
+    assert_true(saturated > 1000 && saturated < 1000000);
+    assert_true(small > 100000 && small < 1900000);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_exact),
+    };
+    return cmocka_run_group_tests(tests, 0, 0);
+}
