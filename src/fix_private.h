@@ -3,6 +3,14 @@
 #ifndef STIPPLE_FIX_PRIVATE_H
 #define STIPPLE_FIX_PRIVATE_H
 
+/* A small function forced inline where a call would cost as much as its
+ * body, except in builds for size (-Os), which keep it a call. */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define STP_HOT_INLINE static inline __attribute__((always_inline))
+#else
+#define STP_HOT_INLINE static inline
+#endif
+
 #include <stdint.h>
 
 #include "stipple/fix.h"

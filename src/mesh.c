@@ -505,7 +505,7 @@ static uint32_t div3_small(uint32_t u)
     return 10922u * h + 5461u * th + (((th + (t & 0x3FFFu)) * 21846u) >> 16);
 }
 
-static stp_fix average3(int small, int32_t a, int32_t b, int32_t c)
+STP_HOT_INLINE stp_fix average3(int small, int32_t a, int32_t b, int32_t c)
 {
     int64_t s;
     if (small && STP_WIDE_ARITH)
@@ -626,7 +626,7 @@ static int enter_face(mesh_context *c, uint16_t t)
     centre.z = average3(c->inside, v[0]->z, v[1]->z, v[2]->z);
     if (r->shading) {
         r->last_shade = shade_face(c, nv, centre);
-        style = stp_intensity_index(r->last_shade, r->levels);
+        style = stp_intensity_index_inline(r->last_shade, r->levels);
     } else {
         style = r->fill_style;
         r->last_shade = stp_intensity_shade(style, r->levels);

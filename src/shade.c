@@ -366,10 +366,7 @@ static int clamp_levels(int levels)
 
 int stp_intensity_index(stp_fix shade, int levels)
 {
-    levels = clamp_levels(levels);
-    shade = stp_fix_clamp(shade, 0, ONE);
-    /* INT(s*(N-1) + 1): exact, s*(N-1) < 2^(F+8) */
-    return (int)(((int64_t)shade * (levels - 1)) >> F) + 1;
+    return stp_intensity_index_inline(shade, levels);
 }
 
 stp_fix stp_intensity_shade(int index, int levels)

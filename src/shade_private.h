@@ -13,4 +13,15 @@
 stp_fix stp_shade_unit(const stp_lighting *lighting, const stp_material *material,
                        stp_unit3 normal, stp_vec3 point, stp_unit3 eye_dir, int32_t n_dot_e);
 
+
+/* stp_intensity_index (shade.h) inline, for the mesh path's per-face
+ * step: INT(s (N - 1) + 1) with s clamped to [0, 1] and N to 2..256;
+ * s (N - 1) <= 2^F 255 < 2^28 (F <= 20), so 32 bits hold it. */
+STP_HOT_INLINE int stp_intensity_index_inline(stp_fix shade, int levels)
+{
+    int32_t n1 = levels < 2 ? 1 : (levels > 256 ? 255 : (int32_t)levels - 1);
+    stp_fix s = shade < 0 ? 0 : (shade > STP_FIX_ONE ? STP_FIX_ONE : shade);
+    return (int)((s * n1) >> STP_FIX_FRAC_BITS) + 1;
+}
+
 #endif
