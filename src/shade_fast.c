@@ -620,6 +620,321 @@ static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t 
 }
 #endif
 
+#if STP_WIDE_ARITH
+/* ---- the host path: 64-bit fixed point, native products and quotients ----
+ *
+ * On a host (STP_WIDE_ARITH) a 64-bit product, a 64-bit quotient and a
+ * count of leading zeros are one instruction each, so the face is shaded
+ * without the scaled 16-bit directions, tables and soft mantissas above:
+ *   v        a direction (light - point, eye - point): int64 differences of
+ *            stp_fix, |v_i| < 2^32; scaled by 2^k (wide_scale) so that the
+ *            largest |v_i| is in [2^29, 2^30): |v|^2 < 3 2^60, each v.w
+ *            of two scaled vectors below 3 2^60 in magnitude
+ *   |v|      wide_sqrt: floor(sqrt) of the 64-bit square, in [2^29, 2^31)
+ *   |N|      the caller's Q14 normal: |N| 2^14 = (n.n + 2^28)/2 to first
+ *            order (n.n = 2^28 (1 + d), |d| <= 2^-11: error below 2^-25)
+ *   cosines  Q30 in int64 (<= 2^30 after clamping), each one quotient
+ *   D        (k/(k + 1 - N.H))^2 in Q30, one quotient (k prepared in Q30,
+ *            shifted below 2^32)
+ *   F        Q16 (<= 65535): the prepared table, or the exact Fresnel
+ *   G/(N.E)  Q26 in uint64: min(1/(N.E), 4 N.H/|L + E| min(1, N.L/N.E)),
+ *            at most 2^56 (N.E >= 2^-30)
+ *   shares   BRIGHT P_j |R| (N.L)/(C + U) and BRIGHT P_j Ks D F G/(N.E)/(C
+ *            + U): C + U normalised to [2^31, 2^32) by a shift, the prepared
+ *            32-bit power mantissa divided by it (one quotient in (2^30,
+ *            2^32)), times the Q30 cosine or the Q26 D F G/(N.E) brought to
+ *            32 bits (products below 2^64), shifted to Q26 saturated at
+ *            SHARE_CAP; the sum as in the narrow path. */
+
+static inline int64_t asr64(int64_t v, int s)
+{
+    if ((int64_t)-1 >> 1 == (int64_t)-1)
+        return v >> s;
+    return v >= 0 ? v >> s : (int64_t)~(~(uint64_t)v >> s);
+}
+
+HOT_INLINE int bit_length64(uint64_t v)
+{
+    return v == 0 ? 0 : 64 - __builtin_clzll(v);
+}
+
+/* floor(sqrt(q)) for q in [2^58, 2^62): the power of two above it, then
+ * Newton steps from above (the error ratio at most 2: 1, 1/4, 2^-5.3,
+ * 2^-11.6, 2^-24, below one unit after the fifth). */
+HOT_INLINE uint64_t wide_sqrt(uint64_t q)
+{
+    uint64_t x = (uint64_t)1 << ((bit_length64(q) + 1) >> 1);
+    x = (x + (q >> ((bit_length64(q) + 1) >> 1))) >> 1; /* the first step: q/x by a shift */
+    x = (x + q / x) >> 1;
+    x = (x + q / x) >> 1;
+    x = (x + q / x) >> 1;
+    x = (x + q / x) >> 1;
+    return x;
+}
+
+/* A direction a - b scaled (see above); 0 for a zero difference.  *k gets
+ * the scale (v scaled = (a - b) 2^k, k in [-3, 30]), *len its length. */
+typedef struct wide_dir {
+    int64_t v[3];
+    uint64_t len;
+    int k;
+} wide_dir;
+
+HOT_INLINE int wide_make(wide_dir *d, const stp_vec3 *a, const stp_vec3 *b)
+{
+    int64_t v0 = (int64_t)a->x - b->x, v1 = (int64_t)a->y - b->y, v2 = (int64_t)a->z - b->z;
+    uint64_t m = (uint64_t)(v0 < 0 ? -v0 : v0) | (uint64_t)(v1 < 0 ? -v1 : v1) | (uint64_t)(v2 < 0 ? -v2 : v2);
+    int k;
+    if (m == 0) {
+        d->v[0] = d->v[1] = d->v[2] = 0;
+        d->len = 0;
+        d->k = 0;
+        return 0;
+    }
+    k = 30 - bit_length64(m);
+    if (k >= 0) {
+        v0 *= (int64_t)1 << k;
+        v1 *= (int64_t)1 << k;
+        v2 *= (int64_t)1 << k;
+    } else {
+        v0 = asr64(v0, -k);
+        v1 = asr64(v1, -k);
+        v2 = asr64(v2, -k);
+    }
+    d->v[0] = v0;
+    d->v[1] = v1;
+    d->v[2] = v2;
+    d->k = k;
+    d->len = wide_sqrt((uint64_t)(v0 * v0 + v1 * v1 + v2 * v2)); /* in [2^58, 3 2^60) */
+    return 1;
+}
+
+/* N.v/(|N| |v|) in Q30 (clamped to [-2^30, 2^30]): |N.v| <= |N||v| <
+ * 2^14 (1 + 2^-12) sqrt(3) 2^30, so N.v 2^18 < 2^63; nlen28 |v| < 2^59 */
+HOT_INLINE int64_t wide_cos_n(const int16_t n[3], const wide_dir *d, uint64_t nlen28)
+{
+    int64_t dot = n[0] * d->v[0] + n[1] * d->v[1] + n[2] * d->v[2];
+    int64_t c = (dot * ((int64_t)1 << 18)) / (int64_t)((nlen28 * d->len) >> 26);
+    return c > Q30 ? Q30 : (c < -Q30 ? -Q30 : c);
+}
+
+/* p 2^t in Q26 (p < 2^64), saturated at SHARE_CAP */
+HOT_INLINE int32_t wide_share(uint64_t p, int t)
+{
+    if (t >= 0)
+        return t >= 30 ? (p != 0 ? (int32_t)SHARE_CAP : 0)
+                       : (p > ((uint64_t)SHARE_CAP >> t) ? (int32_t)SHARE_CAP : (int32_t)(p << t));
+    return t <= -64 ? 0 : (int32_t)(p >> -t);
+}
+
+#if STP_WITH_SPECULAR
+/* Ks D F G/(N.E) in Q26 (uint64, <= 2^57) for one light: nl, ne, el Q30
+ * cosines (nl, ne > 0), inv_ne = 1/(N.E) in Q26. */
+static uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, int64_t el, uint64_t inv_ne)
+{
+    uint64_t x = (uint64_t)(2 * (Q30 + el)), sum, nh, eh, omx, gk, d, f, g1, gne, df;
+    int r = s->wide_gloss_shift;
+    if ((int64_t)x <= 0)
+        return 0; /* L = -E: H undefined */
+    sum = wide_sqrt(x << 30); /* |L + E| in Q30, <= 2^31; x 2^30 <= 2^62 */
+    if (sum == 0)
+        return 0;
+    nh = ((uint64_t)(nl + ne) << 30) / sum; /* (N.L + N.E) <= 2^31 */
+    if (nh > (uint64_t)Q30)
+        nh = (uint64_t)Q30;
+    eh = sum >> 1;
+    if (nh == 0 || eh == 0)
+        return 0;
+    /* D: k in Q30 as gk 2^r (gk < 2^32), 1 - N.H in [0, 2^30] */
+    omx = (uint64_t)Q30 - nh;
+    gk = s->wide_gloss;
+    d = (gk << 30) / (gk + (omx >> r)); /* Q30, <= 2^30 */
+    d = (d * d) >> 30;
+    /* F in Q16 */
+    if (eh >= FRESNEL_C0)
+        f = fresnel_q16(s, (uint32_t)eh, (int32_t)el);
+    else
+        f = sf_to_fixed(fresnel_sf(s, (uint32_t)eh, el >= Q30 ? 0u : (uint32_t)((Q30 - el) >> 1)), 16, 0xFFFFu);
+    /* G/(N.E) in Q26: g1 = 2 N.H/E.H = 4 N.H/|L + E| (< 2^59) */
+    g1 = (nh << 28) / sum;
+    gne = g1 < inv_ne ? g1 : inv_ne;
+    if (nl < ne) {
+        /* g1 N.L/N.E is below 1/(N.E) iff g1 N.L < 2^56 (Q26 Q30) */
+        if (g1 >> 33 == 0 || g1 < ((uint64_t)1 << 56) / (uint64_t)nl) {
+            uint64_t t = (g1 * (uint64_t)nl) / (uint64_t)ne; /* g1 nl < 2^63 or < 2^56 */
+            gne = t < gne ? t : gne;
+        }
+    }
+    df = (d * f) >> 16; /* Q30, <= 2^30 */
+    /* D F G/(N.E) in Q26, exactly floor(df gne 2^-30) in two parts */
+    return df * (gne >> 30) + ((df * (gne & ((uint64_t)Q30 - 1))) >> 30);
+}
+#endif
+
+static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+{
+    int64_t ve0, ve1, ve2;
+    uint64_t nn, nlen28;
+    int32_t sum = s->ambient;
+    int j, lit = 0;
+#if STP_WITH_SPECULAR
+    wide_dir e = {{0, 0, 0}, 0, 0};
+    int64_t ne = 0;
+    uint64_t inv_ne = 0;
+#endif
+    if (s->count == 0)
+        return s->ambient_shade;
+    if (s->parallel) {
+        ve0 = s->wide_parallel.x;
+        ve1 = s->wide_parallel.y;
+        ve2 = s->wide_parallel.z;
+    } else {
+        ve0 = (int64_t)s->eye.x - point.x;
+        ve1 = (int64_t)s->eye.y - point.y;
+        ve2 = (int64_t)s->eye.z - point.z;
+    }
+    /* N.E > 0 exactly: |N_i| <= 2^14 + 2, |ve_i| < 2^32 */
+    if (normal[0] * ve0 + normal[1] * ve1 + normal[2] * ve2 <= 0)
+        return s->ambient_shade; /* a back face, edge-on, or the eye on it */
+    nn = (uint64_t)((int32_t)normal[0] * normal[0]) + (uint64_t)((int32_t)normal[1] * normal[1]) +
+         (uint64_t)((int32_t)normal[2] * normal[2]);
+    nlen28 = (nn + ((uint64_t)1 << 28)) >> 1;
+#if STP_WITH_SPECULAR
+    if (s->specular) {
+        static const stp_vec3 zero = {0, 0, 0};
+        /* not 0: N.E > 0 above */
+        if (s->parallel)
+            (void)wide_make(&e, &s->wide_parallel, &zero);
+        else
+            (void)wide_make(&e, &s->eye, &point);
+        ne = wide_cos_n(normal, &e, nlen28);
+        if (ne <= 0)
+            return s->ambient_shade;
+        inv_ne = ((uint64_t)1 << 56) / (uint64_t)ne;
+    }
+#endif
+    for (j = 0; j < s->count; j++) {
+        wide_dir l;
+        int64_t nl;
+        uint64_t cu, w;
+        int c, t;
+        int32_t share;
+        int at_point = !wide_make(&l, &s->light[j], &point);
+        if (!at_point) {
+            nl = wide_cos_n(normal, &l, nlen28);
+            if (nl <= 0)
+                continue;
+            /* C + U in raw units 2^-max(k, 0): C < 2^31 times 2^k <= 2^30 */
+            cu = l.k >= 0 ? ((uint64_t)s->wide_c << l.k) + l.len : (uint64_t)s->wide_c + (l.len << -l.k);
+            c = l.k >= 0 ? l.k : 0;
+        } else {
+            nl = Q30; /* the light on the face: lit head-on (L = N), U = 0 */
+            cu = s->wide_c;
+            c = 0;
+        }
+        /* C + U = cu 2^-c, brought to [2^31, 2^32) */
+        t = 32 - bit_length64(cu);
+        cu = t >= 0 ? cu << t : cu >> -t;
+        c += t;
+        /* (m 2^-e)/(cu 2^-c) = w 2^(c - e - 31), w = m 2^31/cu in (2^30, 2^32) */
+        w = ((uint64_t)s->wide_refl_m[j] << 31) / cu;
+        /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: w nl 2^(c - e - 31 - 30 + 26);
+         * the raw C + U is per 2^-16: the prepared m 2^-e is b p r 2^-32 */
+        share = wide_share(w * (uint64_t)nl, c - s->wide_refl_e[j] - 35);
+        if (s->refl_negative)
+            share = -share;
+#if STP_WITH_SPECULAR
+        if (s->specular) {
+            /* E.L: |e.l| < 3 2^60, so 2 e.l fits; |E||L| < 2^62 */
+            int64_t el = ne;
+            uint64_t dfg;
+            if (!at_point) {
+                int64_t dot = e.v[0] * l.v[0] + e.v[1] * l.v[1] + e.v[2] * l.v[2];
+                el = (dot * 2) / (int64_t)((e.len * l.len) >> 29);
+                el = el > Q30 ? Q30 : (el < -Q30 ? -Q30 : el);
+            }
+            dfg = wide_specular(s, nl, ne, el, inv_ne);
+            if (dfg != 0) {
+                int sh = bit_length64(dfg) - 32;
+                uint64_t wk = ((uint64_t)s->wide_ks_m[j] << 31) / cu;
+                if (sh < 0)
+                    sh = 0;
+                share += wide_share((dfg >> sh) * wk, sh + c - s->wide_ks_e[j] - 31);
+            }
+        }
+#endif
+        if (share > 0) {
+            lit = 1;
+            sum += share;
+            if (sum >= SUM_ONE)
+                return ONE; /* every later share is >= 0 */
+        }
+    }
+    if (!lit)
+        return s->ambient_shade;
+    if (sum <= 0)
+        return 0;
+    return (stp_fix)((sum + ((int32_t)1 << (SUM_BITS - F - 1))) >> (SUM_BITS - F));
+}
+#endif
+
+#if STP_WIDE_ARITH
+/* a b as m 2^-e with m in [2^31, 2^32) (or 0): a < 2^62 normalised, then
+ * times b (< 2^32: the product below 2^63), normalised again (truncated:
+ * relative error below 2^-30) */
+static uint32_t wide_mantissa(uint64_t a, uint32_t b, int e, int16_t *exponent)
+{
+    int n = bit_length64(a) - 32;
+    uint64_t p;
+    a = n >= 0 ? a >> n : a << -n;
+    p = a * b;
+    e -= n;
+    n = bit_length64(p) - 32;
+    if (p == 0) {
+        *exponent = 0;
+        return 0;
+    }
+    p = n >= 0 ? p >> n : p << -n;
+    *exponent = (int16_t)(e - n); /* |e - n| < 200 */
+    return (uint32_t)p;
+}
+
+/* The host path's prepared fields (face_wide). */
+static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const stp_material *material,
+                         stp_vec3 parallel_dir)
+{
+    stp_fix refl = material->reflectivity, bright = lighting->brightness;
+    uint32_t refl_abs = refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl;
+    int j;
+    s->wide_parallel = parallel_dir;
+    if (parallel_dir.x == 0 && parallel_dir.y == 0 && parallel_dir.z == 0)
+        s->wide_parallel.z = -ONE;
+    s->wide_c = lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u;
+    for (j = 0; j < STP_MAX_LIGHTS; j++) {
+        /* BRIGHT P_j (raw, each < 2^31: the product < 2^62) times |R| or Ks,
+         * as m 2^-e = b p r 2^-32 */
+        uint64_t bp = 0;
+        if (j < s->count && lighting->lights[j].power > 0 && bright > 0)
+            bp = (uint64_t)(uint32_t)bright * (uint32_t)lighting->lights[j].power;
+        s->wide_refl_m[j] = wide_mantissa(bp, refl_abs, 32, &s->wide_refl_e[j]);
+#if STP_WITH_SPECULAR
+        s->wide_ks_m[j] = wide_mantissa(bp, material->specular > 0 ? (uint32_t)material->specular : 0u, 32,
+                                        &s->wide_ks_e[j]);
+#endif
+    }
+#if STP_WITH_SPECULAR
+    {
+        /* k in Q30 (< 2^45), shifted below 2^32 */
+        uint64_t k = (uint64_t)(material->gloss < 1 ? 1u : (uint32_t)material->gloss) << 14;
+        int r = bit_length64(k) - 32;
+        r = r < 0 ? 0 : r;
+        s->wide_gloss = (uint32_t)(k >> r);
+        s->wide_gloss_shift = (uint8_t)r;
+    }
+#endif
+}
+#endif
+
 void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
                             const stp_material *material, stp_vec3 eye, int parallel,
                             stp_vec3 parallel_dir)
@@ -711,6 +1026,9 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
 #else
     s->specular = 0;
 #endif
+#if STP_WIDE_ARITH
+    wide_prepare(s, lighting, material, parallel_dir);
+#endif
 }
 
 stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
@@ -724,6 +1042,11 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     int32_t n_dot_e = 0;
     stp_sf16 inv_ne = {0, 0};
     uint32_t inv_ne_q26 = 0;
+#endif
+#if STP_WIDE_ARITH
+    /* the host path; the code below is the 32-bit targets' (kept compiled
+     * on the host: its helpers serve prepare and the Fresnel) */
+    return face_wide(s, normal, point);
 #endif
     if (s->count == 0)
         return s->ambient_shade;

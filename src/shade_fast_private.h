@@ -18,6 +18,7 @@
 
 #include <stdint.h>
 
+#include "recip_private.h" /* STP_WIDE_ARITH */
 #include "stipple/shade.h"
 
 /* A positive number m 2^-e with m = 0 (the number 0) or m in [2^15, 2^16):
@@ -66,6 +67,20 @@ typedef struct stp_shade_fast {
     /* n >= 1: F(c) in Q16 (capped at 65535) at c = 1/4 + i/64, i = 0..48
      * (E.H = c; below 1/4, and for n < 1, F is computed exactly) */
     uint16_t fresnel[STP_SHADE_FAST_FRESNEL_NODES];
+#endif
+#if STP_WIDE_ARITH /* the 64-bit host path (shade_fast.c "wide") */
+    stp_vec3 wide_parallel; /* parallel: the direction towards the eye (not 0) */
+    uint32_t wide_c;        /* C in raw stp_fix units, >= 1 */
+    /* BRIGHT P_j |R| and BRIGHT P_j Ks as m 2^-e (raw stp_fix products
+     * b p r 2^-32), m in [2^31, 2^32) or 0 */
+    uint32_t wide_refl_m[STP_MAX_LIGHTS];
+    int16_t wide_refl_e[STP_MAX_LIGHTS];
+#if STP_WITH_SPECULAR
+    uint32_t wide_ks_m[STP_MAX_LIGHTS];
+    int16_t wide_ks_e[STP_MAX_LIGHTS];
+    uint32_t wide_gloss;    /* k in Q30 shifted right by wide_gloss_shift: < 2^32 */
+    uint8_t wide_gloss_shift;
+#endif
 #endif
 } stp_shade_fast;
 
