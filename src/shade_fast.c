@@ -658,21 +658,20 @@ HOT_INLINE int bit_length64(uint64_t v)
     return v == 0 ? 0 : 64 - __builtin_clzll(v);
 }
 
-/* floor(sqrt(q)) for q in [2^58, 2^62): the power of two above it, then
- * Newton steps from above (the error ratio at most 2: 1, 1/4, 2^-5.3,
- * 2^-11.6, 2^-24, below one unit after the fifth). */
+/* sqrt(q) for q in [2^30, 2^62], relative error below 2^-26: q 4^-h in
+ * [2^30, 2^32) (h = ceil(bits/2) - 16 >= 0), the rsqrt_seed table (2^-6)
+ * times it for sqrt(q 4^-h) 2^h, then two Newton steps (2^-13, 2^-26;
+ * each step leaves x above the root, so q/x never divides by 0). */
 HOT_INLINE uint64_t wide_sqrt(uint64_t q)
 {
-    uint64_t x = (uint64_t)1 << ((bit_length64(q) + 1) >> 1);
-    x = (x + (q >> ((bit_length64(q) + 1) >> 1))) >> 1; /* the first step: q/x by a shift */
+    int h = ((64 - __builtin_clzll(q) + 1) >> 1) - 16;
+    uint32_t y = (uint32_t)(q >> (2 * h)); /* in [2^30, 2^32) */
+    uint64_t x = ((uint64_t)y * STP_TABLE_U16(&rsqrt_seed[(y >> 26) - 16u]) >> 31) << h;
     x = (x + q / x) >> 1;
-    x = (x + q / x) >> 1;
-    x = (x + q / x) >> 1;
-    x = (x + q / x) >> 1;
-    return x;
+    return (x + q / x) >> 1;
 }
 
-/* A direction a - b scaled (see above); 0 for a zero difference.  *k gets
+/* A direction (v0, v1, v2) (|v_i| < 2^32) scaled (see above); 0 for 0.  *k gets
  * the scale (v scaled = (a - b) 2^k, k in [-3, 30]), *len its length. */
 typedef struct wide_dir {
     int64_t v[3];
@@ -680,9 +679,8 @@ typedef struct wide_dir {
     int k;
 } wide_dir;
 
-HOT_INLINE int wide_make(wide_dir *d, const stp_vec3 *a, const stp_vec3 *b)
+HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
 {
-    int64_t v0 = (int64_t)a->x - b->x, v1 = (int64_t)a->y - b->y, v2 = (int64_t)a->z - b->z;
     uint64_t m = (uint64_t)(v0 < 0 ? -v0 : v0) | (uint64_t)(v1 < 0 ? -v1 : v1) | (uint64_t)(v2 < 0 ? -v2 : v2);
     int k;
     if (m == 0) {
@@ -801,12 +799,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
     nlen28 = (nn + ((uint64_t)1 << 28)) >> 1;
 #if STP_WITH_SPECULAR
     if (s->specular) {
-        static const stp_vec3 zero = {0, 0, 0};
-        /* not 0: N.E > 0 above */
-        if (s->parallel)
-            (void)wide_make(&e, &s->wide_parallel, &zero);
-        else
-            (void)wide_make(&e, &s->eye, &point);
+        (void)wide_make(&e, ve0, ve1, ve2); /* not 0: N.E > 0 above */
         ne = wide_cos_n(normal, &e, nlen28);
         if (ne <= 0)
             return s->ambient_shade;
@@ -819,28 +812,30 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
         uint64_t cu, w;
         int c, t;
         int32_t share;
-        int at_point = !wide_make(&l, &s->light[j], &point);
+        int at_point = !wide_make(&l, (int64_t)s->light[j].x - point.x, (int64_t)s->light[j].y - point.y,
+                                  (int64_t)s->light[j].z - point.z);
         if (!at_point) {
             nl = wide_cos_n(normal, &l, nlen28);
             if (nl <= 0)
                 continue;
-            /* C + U in raw units 2^-max(k, 0): C < 2^31 times 2^k <= 2^30 */
+            /* C + U = cu 2^-c in raw units, cu >= |v| 2^k >= 2^29: C < 2^31
+             * times 2^k <= 2^30 */
             cu = l.k >= 0 ? ((uint64_t)s->wide_c << l.k) + l.len : (uint64_t)s->wide_c + (l.len << -l.k);
             c = l.k >= 0 ? l.k : 0;
         } else {
             nl = Q30; /* the light on the face: lit head-on (L = N), U = 0 */
-            cu = s->wide_c;
-            c = 0;
+            cu = (uint64_t)s->wide_c << 29;
+            c = 29;
         }
-        /* C + U = cu 2^-c, brought to [2^31, 2^32) */
-        t = 32 - bit_length64(cu);
-        cu = t >= 0 ? cu << t : cu >> -t;
-        c += t;
-        /* (m 2^-e)/(cu 2^-c) = w 2^(c - e - 31), w = m 2^31/cu in (2^30, 2^32) */
-        w = ((uint64_t)s->wide_refl_m[j] << 31) / cu;
-        /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: w nl 2^(c - e - 31 - 30 + 26);
+        /* cu >= 2^29 brought to [2^28, 2^29) by a right shift (c -= t);
+         * (m 2^-e)/(cu 2^-c) = w 2^(c - e - 28), w = m 2^28/cu in (2^30, 2^32) */
+        t = bit_length64(cu) - 29;
+        cu >>= t;
+        c -= t;
+        w = ((uint64_t)s->wide_refl_m[j] << 28) / cu;
+        /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: w nl 2^(c - e - 28 - 30 + 26);
          * the raw C + U is per 2^-16: the prepared m 2^-e is b p r 2^-32 */
-        share = wide_share(w * (uint64_t)nl, c - s->wide_refl_e[j] - 35);
+        share = wide_share(w * (uint64_t)nl, c - s->wide_refl_e[j] - 32);
         if (s->refl_negative)
             share = -share;
 #if STP_WITH_SPECULAR
@@ -851,15 +846,15 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
             if (!at_point) {
                 int64_t dot = e.v[0] * l.v[0] + e.v[1] * l.v[1] + e.v[2] * l.v[2];
                 el = (dot * 2) / (int64_t)((e.len * l.len) >> 29);
-                el = el > Q30 ? Q30 : (el < -Q30 ? -Q30 : el);
+                el = el > Q30 ? Q30 : el; /* below -1: x <= 0 in wide_specular */
             }
             dfg = wide_specular(s, nl, ne, el, inv_ne);
             if (dfg != 0) {
                 int sh = bit_length64(dfg) - 32;
-                uint64_t wk = ((uint64_t)s->wide_ks_m[j] << 31) / cu;
+                uint64_t wk = ((uint64_t)s->wide_ks_m[j] << 28) / cu;
                 if (sh < 0)
                     sh = 0;
-                share += wide_share((dfg >> sh) * wk, sh + c - s->wide_ks_e[j] - 31);
+                share += wide_share((dfg >> sh) * wk, sh + c - s->wide_ks_e[j] - 28);
             }
         }
 #endif
