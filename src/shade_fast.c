@@ -709,11 +709,11 @@ HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
     return 1;
 }
 
-/* N.v/(|N| |v|) in Q30 (clamped to [-2^30, 2^30]): |N.v| <= |N||v| <
+/* N.v/(|N| |v|) in Q30 (clamped to [-2^30, 2^30]) from dot = N.v (v
+ * scaled): |N.v| <= |N||v| <
  * 2^14 (1 + 2^-12) sqrt(3) 2^30, so N.v 2^18 < 2^63; nlen28 |v| < 2^59 */
-HOT_INLINE int64_t wide_cos_n(const int16_t n[3], const wide_dir *d, uint64_t nlen28)
+HOT_INLINE int64_t wide_cos_dot(int64_t dot, const wide_dir *d, uint64_t nlen28)
 {
-    int64_t dot = n[0] * d->v[0] + n[1] * d->v[1] + n[2] * d->v[2];
     int64_t c = (dot * ((int64_t)1 << 18)) / (int64_t)((nlen28 * d->len) >> 26);
     return c > Q30 ? Q30 : (c < -Q30 ? -Q30 : c);
 }
@@ -736,24 +736,27 @@ static uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, i
     int r = s->wide_gloss_shift;
     if ((int64_t)x <= 0)
         return 0; /* L = -E: H undefined */
-    sum = wide_sqrt(x << 30); /* |L + E| in Q30, <= 2^31; x 2^30 <= 2^62 */
-    if (sum == 0)
-        return 0;
+    /* x >= 2: |L + E| in Q30 in [2^15, 2^31], N.H in (0, 2^30], E.H > 0 */
+    sum = wide_sqrt(x << 30);
     nh = ((uint64_t)(nl + ne) << 30) / sum; /* (N.L + N.E) <= 2^31 */
     if (nh > (uint64_t)Q30)
         nh = (uint64_t)Q30;
     eh = sum >> 1;
-    if (nh == 0 || eh == 0)
-        return 0;
     /* D: k in Q30 as gk 2^r (gk < 2^32), 1 - N.H in [0, 2^30] */
     omx = (uint64_t)Q30 - nh;
     gk = s->wide_gloss;
     d = (gk << 30) / (gk + (omx >> r)); /* Q30, <= 2^30 */
     d = (d * d) >> 30;
     /* F in Q16 */
-    if (eh >= FRESNEL_C0)
+    if (eh >= FRESNEL_C0 && s->refraction_ge_1) {
+        /* the prepared table, linearly interpolated (fresnel_q16 inline) */
+        uint64_t i = (eh - FRESNEL_C0) >> 24, frac = ((eh - FRESNEL_C0) >> 8) & 0xFFFFu;
+        f = s->fresnel[i];
+        if (i < STP_SHADE_FAST_FRESNEL_NODES - 1)
+            f = (uint64_t)((int64_t)f + asr64(((int64_t)s->fresnel[i + 1] - (int64_t)f) * (int64_t)frac, 16));
+    } else if (eh >= FRESNEL_C0) {
         f = fresnel_q16(s, (uint32_t)eh, (int32_t)el);
-    else
+    } else
         f = sf_to_fixed(fresnel_sf(s, (uint32_t)eh, el >= Q30 ? 0u : (uint32_t)((Q30 - el) >> 1)), 16, 0xFFFFu);
     /* G/(N.E) in Q26: g1 = 2 N.H/E.H = 4 N.H/|L + E| (< 2^59) */
     g1 = (nh << 28) / sum;
@@ -773,7 +776,7 @@ static uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, i
 
 static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
 {
-    int64_t ve0, ve1, ve2;
+    int64_t ve0, ve1, ve2, dot_e;
     uint64_t nn, nlen28;
     int32_t sum = s->ambient;
     int j, lit = 0;
@@ -794,7 +797,8 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
         ve2 = (int64_t)s->eye.z - point.z;
     }
     /* N.E > 0 exactly: |N_i| <= 2^14 + 2, |ve_i| < 2^32 */
-    if (normal[0] * ve0 + normal[1] * ve1 + normal[2] * ve2 <= 0)
+    dot_e = normal[0] * ve0 + normal[1] * ve1 + normal[2] * ve2;
+    if (dot_e <= 0)
         return s->ambient_shade; /* a back face, edge-on, or the eye on it */
     nn = (uint64_t)((int32_t)normal[0] * normal[0]) + (uint64_t)((int32_t)normal[1] * normal[1]) +
          (uint64_t)((int32_t)normal[2] * normal[2]);
@@ -802,7 +806,8 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
 #if STP_WITH_SPECULAR
     if (s->specular) {
         (void)wide_make(&e, ve0, ve1, ve2); /* not 0: N.E > 0 above */
-        ne = wide_cos_n(normal, &e, nlen28);
+        /* N.(E 2^k) from the exact N.E: within 3 2^14 of e's (k < 0) */
+        ne = wide_cos_dot(e.k >= 0 ? dot_e * ((int64_t)1 << e.k) : asr64(dot_e, -e.k), &e, nlen28);
         if (ne <= 0)
             return s->ambient_shade;
         inv_ne = ((uint64_t)1 << 56) / (uint64_t)ne;
@@ -817,7 +822,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
         int at_point = !wide_make(&l, (int64_t)s->light[j].x - point.x, (int64_t)s->light[j].y - point.y,
                                   (int64_t)s->light[j].z - point.z);
         if (!at_point) {
-            nl = wide_cos_n(normal, &l, nlen28);
+            nl = wide_cos_dot(normal[0] * l.v[0] + normal[1] * l.v[1] + normal[2] * l.v[2], &l, nlen28);
             if (nl <= 0)
                 continue;
             /* C + U = cu 2^-c in raw units, cu >= |v| 2^k >= 2^29: C < 2^31
