@@ -627,10 +627,12 @@ static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t 
  * count of leading zeros are one instruction each, so the face is shaded
  * without the scaled 16-bit directions, tables and soft mantissas above:
  *   v        a direction (light - point, eye - point): int64 differences of
- *            stp_fix, |v_i| < 2^32; scaled by 2^k (wide_scale) so that the
- *            largest |v_i| is in [2^29, 2^30): |v|^2 < 3 2^60, each v.w
- *            of two scaled vectors below 3 2^60 in magnitude
- *   |v|      wide_sqrt: floor(sqrt) of the 64-bit square, in [2^29, 2^31)
+ *            stp_fix, kept as they are when every |v_i| < 2^30, else
+ *            divided by 4 (wide_make): |v|^2 < 3 2^60 and the dot product
+ *            of two below 3 2^60 in magnitude
+ *   |v|      len = |v| 2^j in [2^30, 2^31): |v|^2 4^j brought to [2^60,
+ *            2^62) by one shift, its root by a seed line and two Newton
+ *            steps (wide_sqrt60; relative error below 2^-23)
  *   |N|      the caller's Q14 normal: |N| 2^14 = (n.n + 2^28)/2 to first
  *            order (n.n = 2^28 (1 + d), |d| <= 2^-11: error below 2^-25)
  *   cosines  Q30 in int64 (<= 2^30 after clamping), each one quotient
@@ -673,48 +675,59 @@ HOT_INLINE uint64_t wide_sqrt(uint64_t q)
     return (x + q / x) >> 1;
 }
 
-/* A direction (v0, v1, v2) (|v_i| < 2^32) scaled (see above); 0 for 0.  *k gets
- * the scale (v scaled = (a - b) 2^k, k in [-3, 30]), *len its length. */
+/* sqrt(q) for q in [2^60, 2^62): the sqrt above with h = 15 known */
+HOT_INLINE uint64_t wide_sqrt60(uint64_t q)
+{
+    uint64_t y = q >> 30; /* in [2^30, 2^32) */
+    uint64_t x = (22488u + ((y * 11243u) >> 30)) << 15;
+    x = (x + q / x) >> 1;
+    return (x + q / x) >> 1;
+}
+
+/* A direction: its stp_fix differences v (|v_i| < 2^32) kept as they are
+ * when every |v_i| < 2^30, else v 2^-2 (s = 2), so that |v|^2 < 3 2^60
+ * and the dot product of two is below 3 2^60 in magnitude; len = |v| 2^j
+ * in [2^30, 2^31) with j in [0, 30] (from |v|^2 4^j in [2^60, 2^62): one
+ * count of leading zeros, no scaling of the components); k = j - s: the
+ * raw length is len 2^-k. */
 typedef struct wide_dir {
     int64_t v[3];
     uint64_t len;
-    int k;
+    int j, k;
 } wide_dir;
 
 HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
 {
-    uint64_t m = (uint64_t)(v0 < 0 ? -v0 : v0) | (uint64_t)(v1 < 0 ? -v1 : v1) | (uint64_t)(v2 < 0 ? -v2 : v2);
-    int k;
-    if (m == 0) {
-        d->v[0] = d->v[1] = d->v[2] = 0;
-        d->len = 0;
-        d->k = 0;
-        return 0;
-    }
-    k = 30 - bit_length64(m);
-    if (k >= 0) {
-        v0 *= (int64_t)1 << k;
-        v1 *= (int64_t)1 << k;
-        v2 *= (int64_t)1 << k;
-    } else {
-        v0 = asr64(v0, -k);
-        v1 = asr64(v1, -k);
-        v2 = asr64(v2, -k);
+    const uint64_t h = (uint64_t)1 << 30;
+    uint64_t q;
+    int s = 0;
+    if ((((uint64_t)v0 + h) | ((uint64_t)v1 + h) | ((uint64_t)v2 + h)) >= 2 * h) {
+        v0 = asr64(v0, 2);
+        v1 = asr64(v1, 2);
+        v2 = asr64(v2, 2);
+        s = 2;
     }
     d->v[0] = v0;
     d->v[1] = v1;
     d->v[2] = v2;
-    d->k = k;
-    d->len = wide_sqrt((uint64_t)(v0 * v0 + v1 * v1 + v2 * v2)); /* in [2^58, 3 2^60) */
+    q = (uint64_t)(v0 * v0 + v1 * v1 + v2 * v2); /* < 3 2^60 */
+    if (q == 0) {
+        d->len = 0;
+        d->j = d->k = 0;
+        return 0;
+    }
+    d->j = (62 - (64 - __builtin_clzll(q))) >> 1; /* bits <= 62 */
+    d->k = d->j - s;
+    d->len = wide_sqrt60(q << (2 * d->j));
     return 1;
 }
 
-/* N.v/(|N| |v|) in Q30 (clamped to [-2^30, 2^30]) from dot = N.v (v
- * scaled): |N.v| <= |N||v| <
- * 2^14 (1 + 2^-12) sqrt(3) 2^30, so N.v 2^18 < 2^63; nlen28 |v| < 2^59 */
+/* N.v/(|N| |v|) in Q30 (clamped to [-2^30, 2^30]) from dot = N.v:
+ * |N.v| 2^j <= |N| len < (2^14 + 3) 2^31, so N.v 2^(j + 17) < 2^63;
+ * nlen28 len < 2^60, and >> 27 leaves at least 2^31 */
 HOT_INLINE int64_t wide_cos_dot(int64_t dot, const wide_dir *d, uint64_t nlen28)
 {
-    int64_t c = (dot * ((int64_t)1 << 18)) / (int64_t)((nlen28 * d->len) >> 26);
+    int64_t c = (dot * ((int64_t)1 << (d->j + 17))) / (int64_t)((nlen28 * d->len) >> 27);
     return c > Q30 ? Q30 : (c < -Q30 ? -Q30 : c);
 }
 
@@ -781,7 +794,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
     int32_t sum = s->ambient;
     int j, lit = 0;
 #if STP_WITH_SPECULAR
-    wide_dir e = {{0, 0, 0}, 0, 0};
+    wide_dir e = {{0, 0, 0}, 0, 0, 0};
     int64_t ne = 0;
     uint64_t inv_ne = 0;
 #endif
@@ -806,8 +819,9 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
 #if STP_WITH_SPECULAR
     if (s->specular) {
         (void)wide_make(&e, ve0, ve1, ve2); /* not 0: N.E > 0 above */
-        /* N.(E 2^k) from the exact N.E: within 3 2^14 of e's (k < 0) */
-        ne = wide_cos_dot(e.k >= 0 ? dot_e * ((int64_t)1 << e.k) : asr64(dot_e, -e.k), &e, nlen28);
+        /* the exact N.E unless e was shifted */
+        ne = wide_cos_dot(e.k == e.j ? dot_e : normal[0] * e.v[0] + normal[1] * e.v[1] + normal[2] * e.v[2], &e,
+                          nlen28);
         if (ne <= 0)
             return s->ambient_shade;
         inv_ne = ((uint64_t)1 << 56) / (uint64_t)ne;
@@ -825,7 +839,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
             nl = wide_cos_dot(normal[0] * l.v[0] + normal[1] * l.v[1] + normal[2] * l.v[2], &l, nlen28);
             if (nl <= 0)
                 continue;
-            /* C + U = cu 2^-c in raw units, cu >= |v| 2^k >= 2^29: C < 2^31
+            /* C + U = cu 2^-c in raw units, cu >= len >= 2^30: C < 2^31
              * times 2^k <= 2^30 */
             cu = l.k >= 0 ? ((uint64_t)s->wide_c << l.k) + l.len : (uint64_t)s->wide_c + (l.len << -l.k);
             c = l.k >= 0 ? l.k : 0;
@@ -847,12 +861,13 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
             share = -share;
 #if STP_WITH_SPECULAR
         if (s->specular) {
-            /* E.L: |e.l| < 3 2^60, so 2 e.l fits; |E||L| < 2^62 */
+            /* E.L: |e.l| 2^(je + jl) <= len_e len_l < 2^62, so twice it
+             * fits; len_e len_l >> 29 >= 2^31 */
             int64_t el = ne;
             uint64_t dfg;
             if (!at_point) {
                 int64_t dot = e.v[0] * l.v[0] + e.v[1] * l.v[1] + e.v[2] * l.v[2];
-                el = (dot * 2) / (int64_t)((e.len * l.len) >> 29);
+                el = (dot * ((int64_t)2 << (e.j + l.j))) / (int64_t)((e.len * l.len) >> 29);
                 el = el > Q30 ? Q30 : el; /* below -1: x <= 0 in wide_specular */
             }
             dfg = wide_specular(s, nl, ne, el, inv_ne);
