@@ -642,8 +642,8 @@ static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t 
  *   G/(N.E)  Q26 in uint64: min(1/(N.E), 4 N.H/|L + E| min(1, N.L/N.E)),
  *            at most 2^56 (N.E >= 2^-30)
  *   shares   BRIGHT P_j |R| (N.L)/(C + U) and BRIGHT P_j Ks D F G/(N.E)/(C
- *            + U): C + U normalised to [2^31, 2^32) by a shift, the prepared
- *            32-bit power mantissa divided by it (one quotient in (2^30,
+ *            + U): C + U brought to [2^28, 2^29) by a right shift, the prepared
+ *            32-bit power mantissa times 2^28 divided by it (one quotient in (2^30,
  *            2^32)), times the Q30 cosine or the Q26 D F G/(N.E) brought to
  *            32 bits (products below 2^64), shifted to Q26 saturated at
  *            SHARE_CAP; the sum as in the narrow path. */
