@@ -746,7 +746,7 @@ HOT_INLINE int32_t wide_share(uint64_t p, int t)
 static uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, int64_t el, uint64_t inv_ne)
 {
     uint64_t x = (uint64_t)(2 * (Q30 + el)), sum, nh, eh, omx, gk, d, f, g1, gne, df;
-    int r = s->wide_gloss_shift;
+    int r = (int)(s->wide_gloss >> 24);
     if ((int64_t)x <= 0)
         return 0; /* L = -E: H undefined */
     /* x >= 2: |L + E| in Q30 in [2^15, 2^31], N.H in (0, 2^30], E.H > 0 */
@@ -755,9 +755,9 @@ static uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, i
     if (nh > (uint64_t)Q30)
         nh = (uint64_t)Q30;
     eh = sum >> 1;
-    /* D: k in Q30 as gk 2^r (gk < 2^32), 1 - N.H in [0, 2^30] */
+    /* D: k in Q30 as gk 2^r (gk < 2^24), 1 - N.H in [0, 2^30] */
     omx = (uint64_t)Q30 - nh;
-    gk = s->wide_gloss;
+    gk = s->wide_gloss & 0xFFFFFFu;
     d = (gk << 30) / (gk + (omx >> r)); /* Q30, <= 2^30 */
     d = (d * d) >> 30;
     /* F in Q16 */
@@ -801,9 +801,9 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
     if (s->count == 0)
         return s->ambient_shade;
     if (s->parallel) {
-        ve0 = s->wide_parallel.x;
-        ve1 = s->wide_parallel.y;
-        ve2 = s->wide_parallel.z;
+        ve0 = s->eye.x; /* the direction towards the eye (wide_prepare) */
+        ve1 = s->eye.y;
+        ve2 = s->eye.z;
     } else {
         ve0 = (int64_t)s->eye.x - point.x;
         ve1 = (int64_t)s->eye.y - point.y;
@@ -849,14 +849,17 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
             c = 29;
         }
         /* cu >= 2^29 brought to [2^28, 2^29) by a right shift (c -= t);
-         * (m 2^-e)/(cu 2^-c) = w 2^(c - e - 28), w = m 2^28/cu in (2^30, 2^32) */
+         * BRIGHT P_j/(C + U) = (m 2^-e)/(cu 2^-c) = w 2^(c - e - 36) with
+         * w = m 2^36/cu in (2^30, 2^32) */
         t = bit_length64(cu) - 29;
         cu >>= t;
         c -= t;
-        w = ((uint64_t)s->wide_refl_m[j] << 28) / cu;
-        /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: w nl 2^(c - e - 28 - 30 + 26);
-         * the raw C + U is per 2^-16: the prepared m 2^-e is b p r 2^-32 */
-        share = wide_share(w * (uint64_t)nl, c - s->wide_refl_e[j] - 32);
+        w = ((uint64_t)(s->wide_power[j] & 0xFFFFFFu) << 36) / cu;
+        c -= (int)(s->wide_power[j] >> 24) - 64; /* c - e */
+        /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: nl 2^-30 |R| 2^-16 w 2^(c -
+         * e - 36) 2^26 = (w nl 2^-30) |R| 2^(c - e - 26); w nl 2^-30 <
+         * 2^32, times |R| < 2^31 */
+        share = wide_share(((w * (uint64_t)nl) >> 30) * s->wide_refl, c - 26);
         if (s->refl_negative)
             share = -share;
 #if STP_WITH_SPECULAR
@@ -872,11 +875,12 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
             }
             dfg = wide_specular(s, nl, ne, el, inv_ne);
             if (dfg != 0) {
+                /* D F G/(N.E) = dfg 2^-26 = n 2^(sh - 26), n in [2^31, 2^32);
+                 * the share n w Ks 2^(sh + c - e - 52) = (n w 2^-32) Ks
+                 * 2^(sh + c - e - 20), n w 2^-32 < 2^32, times Ks < 2^31 */
                 int sh = bit_length64(dfg) - 32;
-                uint64_t wk = ((uint64_t)s->wide_ks_m[j] << 28) / cu;
-                if (sh < 0)
-                    sh = 0;
-                share += wide_share((dfg >> sh) * wk, sh + c - s->wide_ks_e[j] - 28);
+                uint64_t n = sh >= 0 ? dfg >> sh : dfg << -sh;
+                share += wide_share(((n * w) >> 32) * s->wide_ks, sh + c - 20);
             }
         }
 #endif
@@ -896,57 +900,38 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
 #endif
 
 #if STP_WIDE_ARITH
-/* a b as m 2^-e with m in [2^31, 2^32) (or 0): a < 2^62 normalised, then
- * times b (< 2^32: the product below 2^63), normalised again (truncated:
- * relative error below 2^-30) */
-static uint32_t wide_mantissa(uint64_t a, uint32_t b, int e, int16_t *exponent)
-{
-    int n = bit_length64(a) - 32;
-    uint64_t p;
-    a = n >= 0 ? a >> n : a << -n;
-    p = a * b;
-    e -= n;
-    n = bit_length64(p) - 32;
-    if (p == 0) {
-        *exponent = 0;
-        return 0;
-    }
-    p = n >= 0 ? p >> n : p << -n;
-    *exponent = (int16_t)(e - n); /* |e - n| < 200 */
-    return (uint32_t)p;
-}
-
 /* The host path's prepared fields (face_wide). */
 static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const stp_material *material,
-                         stp_vec3 parallel_dir)
+                         int parallel, stp_vec3 parallel_dir)
 {
     stp_fix refl = material->reflectivity, bright = lighting->brightness;
-    uint32_t refl_abs = refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl;
     int j;
-    s->wide_parallel = parallel_dir;
-    if (parallel_dir.x == 0 && parallel_dir.y == 0 && parallel_dir.z == 0)
-        s->wide_parallel.z = -ONE;
+    if (parallel) {
+        s->eye = parallel_dir;
+        if (parallel_dir.x == 0 && parallel_dir.y == 0 && parallel_dir.z == 0)
+            s->eye.z = -ONE;
+    }
     s->wide_c = lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u;
+    s->wide_refl = refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl;
     for (j = 0; j < STP_MAX_LIGHTS; j++) {
-        /* BRIGHT P_j (raw, each < 2^31: the product < 2^62) times |R| or Ks,
-         * as m 2^-e = b p r 2^-32 */
+        /* b p (raw, each < 2^31: below 2^62) = m 2^n, m in [2^23, 2^24)
+         * truncated: b p 2^-16 = m 2^-(16 - n), 16 - n in [-22, 39] */
         uint64_t bp = 0;
+        int n;
         if (j < s->count && lighting->lights[j].power > 0 && bright > 0)
             bp = (uint64_t)(uint32_t)bright * (uint32_t)lighting->lights[j].power;
-        s->wide_refl_m[j] = wide_mantissa(bp, refl_abs, 32, &s->wide_refl_e[j]);
-#if STP_WITH_SPECULAR
-        s->wide_ks_m[j] = wide_mantissa(bp, material->specular > 0 ? (uint32_t)material->specular : 0u, 32,
-                                        &s->wide_ks_e[j]);
-#endif
+        n = bit_length64(bp) - 24;
+        s->wide_power[j] = bp == 0 ? 0u : (uint32_t)(n >= 0 ? bp >> n : bp << -n) + ((uint32_t)(16 - n + 64) << 24);
     }
 #if STP_WITH_SPECULAR
+    s->wide_ks = material->specular > 0 ? (uint32_t)material->specular : 0u;
     {
-        /* k in Q30 (< 2^45), shifted below 2^32 */
+        /* k in Q30 (< 2^45), shifted below 2^24 (truncated: relative error
+         * below 2^-23) */
         uint64_t k = (uint64_t)(material->gloss < 1 ? 1u : (uint32_t)material->gloss) << 14;
-        int r = bit_length64(k) - 32;
+        int r = bit_length64(k) - 24;
         r = r < 0 ? 0 : r;
-        s->wide_gloss = (uint32_t)(k >> r);
-        s->wide_gloss_shift = (uint8_t)r;
+        s->wide_gloss = (uint32_t)(k >> r) + ((uint32_t)r << 24);
     }
 #endif
 }
@@ -1044,7 +1029,7 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
     s->specular = 0;
 #endif
 #if STP_WIDE_ARITH
-    wide_prepare(s, lighting, material, parallel_dir);
+    wide_prepare(s, lighting, material, parallel, parallel_dir);
 #endif
 }
 

@@ -68,18 +68,18 @@ typedef struct stp_shade_fast {
      * (E.H = c; below 1/4, and for n < 1, F is computed exactly) */
     uint16_t fresnel[STP_SHADE_FAST_FRESNEL_NODES];
 #endif
-#if STP_WIDE_ARITH /* the 64-bit host path (shade_fast.c "wide") */
-    stp_vec3 wide_parallel; /* parallel: the direction towards the eye (not 0) */
-    uint32_t wide_c;        /* C in raw stp_fix units, >= 1 */
-    /* BRIGHT P_j |R| and BRIGHT P_j Ks as m 2^-e (raw stp_fix products
-     * b p r 2^-32), m in [2^31, 2^32) or 0 */
-    uint32_t wide_refl_m[STP_MAX_LIGHTS];
-    int16_t wide_refl_e[STP_MAX_LIGHTS];
+#if STP_WIDE_ARITH /* the 64-bit host path (shade_fast.c "wide"); parallel
+                      projection there keeps the direction towards the eye
+                      (not 0) in eye */
+    uint32_t wide_c;     /* C in raw stp_fix units, >= 1 */
+    uint32_t wide_refl;  /* |R| in raw units */
+    /* BRIGHT P_j as m 2^-e = b p 2^-16 (b, p raw), m in [2^23, 2^24) or 0,
+     * e in [-22, 39]: stored as m + (e + 64) 2^24 */
+    uint32_t wide_power[STP_MAX_LIGHTS];
 #if STP_WITH_SPECULAR
-    uint32_t wide_ks_m[STP_MAX_LIGHTS];
-    int16_t wide_ks_e[STP_MAX_LIGHTS];
-    uint32_t wide_gloss;    /* k in Q30 shifted right by wide_gloss_shift: < 2^32 */
-    uint8_t wide_gloss_shift;
+    uint32_t wide_ks;    /* Ks in raw units, 0 when Ks <= 0 */
+    /* k in Q30 as g 2^r, g < 2^24: stored as g + r 2^24 */
+    uint32_t wide_gloss;
 #endif
 #endif
 } stp_shade_fast;
