@@ -660,6 +660,7 @@ HOT_INLINE int bit_length64(uint64_t v)
     return v == 0 ? 0 : 64 - __builtin_clzll(v);
 }
 
+#if STP_WITH_SPECULAR
 /* sqrt(q) for q in [2^30, 2^63), relative error below 2^-23: q 4^-h in
  * [2^30, 2^32) (h = ceil(bits/2) - 16 >= 0), whose root 2^15 sqrt(u)
  * (u in [1, 4)) is seeded by the minimax line 2^15 (0.6863 + 0.3431 u)
@@ -674,8 +675,9 @@ HOT_INLINE uint64_t wide_sqrt(uint64_t q)
     x = (x + q / x) >> 1;
     return (x + q / x) >> 1;
 }
+#endif
 
-/* sqrt(q) for q in [2^60, 2^62): the sqrt above with h = 15 known */
+/* sqrt(q) for q in [2^60, 2^62): wide_sqrt with h = 15 known */
 HOT_INLINE uint64_t wide_sqrt60(uint64_t q)
 {
     uint64_t y = q >> 30; /* in [2^30, 2^32) */
@@ -737,7 +739,10 @@ HOT_INLINE int32_t wide_share(uint64_t p, int t)
     if (t >= 0)
         return t >= 30 ? (p != 0 ? (int32_t)SHARE_CAP : 0)
                        : (p > ((uint64_t)SHARE_CAP >> t) ? (int32_t)SHARE_CAP : (int32_t)(p << t));
-    return t <= -64 ? 0 : (int32_t)(p >> -t);
+    if (t <= -64)
+        return 0;
+    p >>= -t;
+    return p > SHARE_CAP ? (int32_t)SHARE_CAP : (int32_t)p;
 }
 
 #if STP_WITH_SPECULAR
