@@ -620,6 +620,328 @@ static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t 
 }
 #endif
 
+#if STP_WIDE_ARITH
+/* ---- the host path: 64-bit fixed point, native products and quotients ----
+ *
+ * On a host (STP_WIDE_ARITH) a 64-bit product, a 64-bit quotient and a
+ * count of leading zeros are one instruction each, so the face is shaded
+ * without the scaled 16-bit directions, tables and soft mantissas above:
+ *   v        a direction (light - point, eye - point): int64 differences of
+ *            stp_fix, kept as they are when every |v_i| < 2^30, else
+ *            divided by 4 (wide_make): |v|^2 < 3 2^60 and the dot product
+ *            of two below 3 2^60 in magnitude
+ *   |v|      len = |v| 2^j in [2^30, 2^31): |v|^2 4^j brought to [2^60,
+ *            2^62) by one shift, its root by a seed line and two Newton
+ *            steps (wide_sqrt60; relative error below 2^-23)
+ *   |N|      the caller's Q14 normal: |N| 2^14 = (n.n + 2^28)/2 to first
+ *            order (n.n = 2^28 (1 + d), |d| <= 2^-11: error below 2^-25)
+ *   cosines  Q30 in int64 (<= 2^30 after clamping), each one quotient
+ *   D        (k/(k + 1 - N.H))^2 in Q30, one quotient (k prepared in Q30,
+ *            shifted below 2^32)
+ *   F        Q16 (<= 65535): the prepared table, or the exact Fresnel
+ *   G/(N.E)  Q26 in uint64: min(1/(N.E), 4 N.H/|L + E| min(1, N.L/N.E)),
+ *            at most 2^56 (N.E >= 2^-30)
+ *   shares   BRIGHT P_j |R| (N.L)/(C + U) and BRIGHT P_j Ks D F G/(N.E)/(C
+ *            + U): C + U brought to [2^28, 2^29) by a right shift, the prepared
+ *            32-bit power mantissa times 2^28 divided by it (one quotient in (2^30,
+ *            2^32)), times the Q30 cosine or the Q26 D F G/(N.E) brought to
+ *            32 bits (products below 2^64), shifted to Q26 saturated at
+ *            SHARE_CAP; the sum as in the narrow path. */
+
+static inline int64_t asr64(int64_t v, int s)
+{
+    if ((int64_t)-1 >> 1 == (int64_t)-1)
+        return v >> s;
+    return v >= 0 ? v >> s : (int64_t)~(~(uint64_t)v >> s);
+}
+
+HOT_INLINE int bit_length64(uint64_t v)
+{
+    return v == 0 ? 0 : 64 - __builtin_clzll(v);
+}
+
+#if STP_WITH_SPECULAR
+/* sqrt(q) for q in [2^30, 2^63), relative error below 2^-23: q 4^-h in
+ * [2^30, 2^32) (h = ceil(bits/2) - 16 >= 0), whose root 2^15 sqrt(u)
+ * (u in [1, 4)) is seeded by the minimax line 2^15 (0.6863 + 0.3431 u)
+ * (relative error 2.94 %), shifted back by h, then two Newton steps
+ * (4.3e-4, then 9.3e-8 and the truncations; each step leaves x at or
+ * above the integer root, so q/x never divides by 0). */
+HOT_INLINE uint64_t wide_sqrt(uint64_t q)
+{
+    int h = ((64 - __builtin_clzll(q) + 1) >> 1) - 16;
+    uint64_t y = q >> (2 * h); /* in [2^30, 2^32) */
+    uint64_t x = (22488u + ((y * 11243u) >> 30)) << h;
+    x = (x + q / x) >> 1;
+    return (x + q / x) >> 1;
+}
+#endif
+
+/* sqrt(q) for q in [2^60, 2^62): wide_sqrt with h = 15 known */
+HOT_INLINE uint64_t wide_sqrt60(uint64_t q)
+{
+    uint64_t y = q >> 30; /* in [2^30, 2^32) */
+    uint64_t x = (22488u + ((y * 11243u) >> 30)) << 15;
+    x = (x + q / x) >> 1;
+    return (x + q / x) >> 1;
+}
+
+/* A direction: its stp_fix differences v (|v_i| < 2^32) kept as they are
+ * when every |v_i| < 2^30, else v 2^-2 (s = 2), so that |v|^2 < 3 2^60
+ * and the dot product of two is below 3 2^60 in magnitude; len = |v| 2^j
+ * in [2^30, 2^31) with j in [0, 30] (from |v|^2 4^j in [2^60, 2^62): one
+ * count of leading zeros, no scaling of the components); k = j - s: the
+ * raw length is len 2^-k. */
+typedef struct wide_dir {
+    int64_t v[3];
+    uint64_t len;
+    int j, k;
+} wide_dir;
+
+HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
+{
+    const uint64_t h = (uint64_t)1 << 30;
+    uint64_t q;
+    int s = 0;
+    if ((((uint64_t)v0 + h) | ((uint64_t)v1 + h) | ((uint64_t)v2 + h)) >= 2 * h) {
+        v0 = asr64(v0, 2);
+        v1 = asr64(v1, 2);
+        v2 = asr64(v2, 2);
+        s = 2;
+    }
+    d->v[0] = v0;
+    d->v[1] = v1;
+    d->v[2] = v2;
+    q = (uint64_t)(v0 * v0 + v1 * v1 + v2 * v2); /* < 3 2^60 */
+    if (q == 0) {
+        d->len = 0;
+        d->j = d->k = 0;
+        return 0;
+    }
+    d->j = (62 - (64 - __builtin_clzll(q))) >> 1; /* bits <= 62 */
+    d->k = d->j - s;
+    d->len = wide_sqrt60(q << (2 * d->j));
+    return 1;
+}
+
+/* N.v/(|N| |v|) in Q30 (clamped to [-2^30, 2^30]) from dot = N.v:
+ * |N.v| 2^j <= |N| len < (2^14 + 3) 2^31, so N.v 2^(j + 17) < 2^63;
+ * nlen28 len < 2^60, and >> 27 leaves at least 2^31 */
+HOT_INLINE int64_t wide_cos_dot(int64_t dot, const wide_dir *d, uint64_t nlen28)
+{
+    int64_t c = (dot * ((int64_t)1 << (d->j + 17))) / (int64_t)((nlen28 * d->len) >> 27);
+    return c > Q30 ? Q30 : (c < -Q30 ? -Q30 : c);
+}
+
+/* p 2^t in Q26 (p < 2^64), saturated at SHARE_CAP */
+HOT_INLINE int32_t wide_share(uint64_t p, int t)
+{
+    if (t >= 0)
+        return t >= 30 ? (p != 0 ? (int32_t)SHARE_CAP : 0)
+                       : (p > ((uint64_t)SHARE_CAP >> t) ? (int32_t)SHARE_CAP : (int32_t)(p << t));
+    if (t <= -64)
+        return 0;
+    p >>= -t;
+    return p > SHARE_CAP ? (int32_t)SHARE_CAP : (int32_t)p;
+}
+
+#if STP_WITH_SPECULAR
+/* Ks D F G/(N.E) in Q26 (uint64, <= 2^57) for one light: nl, ne, el Q30
+ * cosines (nl, ne > 0), inv_ne = 1/(N.E) in Q26. */
+static uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, int64_t el, uint64_t inv_ne)
+{
+    uint64_t x = (uint64_t)(2 * (Q30 + el)), sum, nh, eh, omx, gk, d, f, g1, gne, df;
+    int r = (int)(s->wide_gloss >> 24);
+    if ((int64_t)x <= 0)
+        return 0; /* L = -E: H undefined */
+    /* x >= 2: |L + E| in Q30 in [2^15, 2^31], N.H in (0, 2^30], E.H > 0 */
+    sum = wide_sqrt(x << 30);
+    nh = ((uint64_t)(nl + ne) << 30) / sum; /* (N.L + N.E) <= 2^31 */
+    if (nh > (uint64_t)Q30)
+        nh = (uint64_t)Q30;
+    eh = sum >> 1;
+    /* D: k in Q30 as gk 2^r (gk < 2^24), 1 - N.H in [0, 2^30] */
+    omx = (uint64_t)Q30 - nh;
+    gk = s->wide_gloss & 0xFFFFFFu;
+    d = (gk << 30) / (gk + (omx >> r)); /* Q30, <= 2^30 */
+    d = (d * d) >> 30;
+    /* F in Q16 */
+    if (eh >= FRESNEL_C0 && s->refraction_ge_1) {
+        /* the prepared table, linearly interpolated (fresnel_q16 inline) */
+        uint64_t i = (eh - FRESNEL_C0) >> 24, frac = ((eh - FRESNEL_C0) >> 8) & 0xFFFFu;
+        f = s->fresnel[i];
+        if (i < STP_SHADE_FAST_FRESNEL_NODES - 1)
+            f = (uint64_t)((int64_t)f + asr64(((int64_t)s->fresnel[i + 1] - (int64_t)f) * (int64_t)frac, 16));
+    } else if (eh >= FRESNEL_C0) {
+        f = fresnel_q16(s, (uint32_t)eh, (int32_t)el);
+    } else
+        f = sf_to_fixed(fresnel_sf(s, (uint32_t)eh, el >= Q30 ? 0u : (uint32_t)((Q30 - el) >> 1)), 16, 0xFFFFu);
+    /* G/(N.E) in Q26: g1 = 2 N.H/E.H = 4 N.H/|L + E| (< 2^59) */
+    g1 = (nh << 28) / sum;
+    gne = g1 < inv_ne ? g1 : inv_ne;
+    if (nl < ne) {
+        /* g1 N.L/N.E is below 1/(N.E) iff g1 N.L < 2^56 (Q26 Q30) */
+        if (g1 >> 33 == 0 || g1 < ((uint64_t)1 << 56) / (uint64_t)nl) {
+            uint64_t t = (g1 * (uint64_t)nl) / (uint64_t)ne; /* g1 nl < 2^63 or < 2^56 */
+            gne = t < gne ? t : gne;
+        }
+    }
+    df = (d * f) >> 16; /* Q30, <= 2^30 */
+    /* D F G/(N.E) in Q26, exactly floor(df gne 2^-30) in two parts */
+    return df * (gne >> 30) + ((df * (gne & ((uint64_t)Q30 - 1))) >> 30);
+}
+#endif
+
+static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+{
+    int64_t ve0, ve1, ve2, dot_e;
+    uint64_t nn, nlen28;
+    int32_t sum = s->ambient;
+    int j, lit = 0;
+#if STP_WITH_SPECULAR
+    wide_dir e = {{0, 0, 0}, 0, 0, 0};
+    int64_t ne = 0;
+    uint64_t inv_ne = 0;
+#endif
+    if (s->count == 0)
+        return s->ambient_shade;
+    if (s->parallel) {
+        ve0 = s->eye.x; /* the direction towards the eye (wide_prepare) */
+        ve1 = s->eye.y;
+        ve2 = s->eye.z;
+    } else {
+        ve0 = (int64_t)s->eye.x - point.x;
+        ve1 = (int64_t)s->eye.y - point.y;
+        ve2 = (int64_t)s->eye.z - point.z;
+    }
+    /* N.E > 0 exactly: |N_i| <= 2^14 + 2, |ve_i| < 2^32 */
+    dot_e = normal[0] * ve0 + normal[1] * ve1 + normal[2] * ve2;
+    if (dot_e <= 0)
+        return s->ambient_shade; /* a back face, edge-on, or the eye on it */
+    nn = (uint64_t)((int32_t)normal[0] * normal[0]) + (uint64_t)((int32_t)normal[1] * normal[1]) +
+         (uint64_t)((int32_t)normal[2] * normal[2]);
+    nlen28 = (nn + ((uint64_t)1 << 28)) >> 1;
+#if STP_WITH_SPECULAR
+    if (s->specular) {
+        (void)wide_make(&e, ve0, ve1, ve2); /* not 0: N.E > 0 above */
+        /* the exact N.E unless e was shifted */
+        ne = wide_cos_dot(e.k == e.j ? dot_e : normal[0] * e.v[0] + normal[1] * e.v[1] + normal[2] * e.v[2], &e,
+                          nlen28);
+        if (ne <= 0)
+            return s->ambient_shade;
+        inv_ne = ((uint64_t)1 << 56) / (uint64_t)ne;
+    }
+#endif
+    for (j = 0; j < s->count; j++) {
+        wide_dir l;
+        int64_t nl;
+        uint64_t cu, w;
+        int c, t;
+        int32_t share;
+        int at_point = !wide_make(&l, (int64_t)s->light[j].x - point.x, (int64_t)s->light[j].y - point.y,
+                                  (int64_t)s->light[j].z - point.z);
+        if (!at_point) {
+            nl = wide_cos_dot(normal[0] * l.v[0] + normal[1] * l.v[1] + normal[2] * l.v[2], &l, nlen28);
+            if (nl <= 0)
+                continue;
+            /* C + U = cu 2^-c in raw units, cu >= len >= 2^30: C < 2^31
+             * times 2^k <= 2^30 */
+            cu = l.k >= 0 ? ((uint64_t)s->wide_c << l.k) + l.len : (uint64_t)s->wide_c + (l.len << -l.k);
+            c = l.k >= 0 ? l.k : 0;
+        } else {
+            nl = Q30; /* the light on the face: lit head-on (L = N), U = 0 */
+            cu = (uint64_t)s->wide_c << 29;
+            c = 29;
+        }
+        /* cu >= 2^29 brought to [2^28, 2^29) by a right shift (c -= t);
+         * BRIGHT P_j/(C + U) = (m 2^-e)/(cu 2^-c) = w 2^(c - e - 36) with
+         * w = m 2^36/cu in (2^30, 2^32) */
+        t = bit_length64(cu) - 29;
+        cu >>= t;
+        c -= t;
+        w = ((uint64_t)(s->wide_power[j] & 0xFFFFFFu) << 36) / cu;
+        c -= (int)(s->wide_power[j] >> 24) - 64; /* c - e */
+        /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: nl 2^-30 |R| 2^-16 w 2^(c -
+         * e - 36) 2^26 = (w nl 2^-30) |R| 2^(c - e - 26); w nl 2^-30 <
+         * 2^32, times |R| < 2^31 */
+        share = wide_share(((w * (uint64_t)nl) >> 30) * s->wide_refl, c - 26);
+        if (s->refl_negative)
+            share = -share;
+#if STP_WITH_SPECULAR
+        if (s->specular) {
+            /* E.L: |e.l| 2^(je + jl) <= len_e len_l < 2^62, so twice it
+             * fits; len_e len_l >> 29 >= 2^31 */
+            int64_t el = ne;
+            uint64_t dfg;
+            if (!at_point) {
+                int64_t dot = e.v[0] * l.v[0] + e.v[1] * l.v[1] + e.v[2] * l.v[2];
+                el = (dot * ((int64_t)2 << (e.j + l.j))) / (int64_t)((e.len * l.len) >> 29);
+                el = el > Q30 ? Q30 : el; /* below -1: x <= 0 in wide_specular */
+            }
+            dfg = wide_specular(s, nl, ne, el, inv_ne);
+            if (dfg != 0) {
+                /* D F G/(N.E) = dfg 2^-26 = n 2^(sh - 26), n in [2^31, 2^32);
+                 * the share n w Ks 2^(sh + c - e - 52) = (n w 2^-32) Ks
+                 * 2^(sh + c - e - 20), n w 2^-32 < 2^32, times Ks < 2^31 */
+                int sh = bit_length64(dfg) - 32;
+                uint64_t n = sh >= 0 ? dfg >> sh : dfg << -sh;
+                share += wide_share(((n * w) >> 32) * s->wide_ks, sh + c - 20);
+            }
+        }
+#endif
+        if (share > 0) {
+            lit = 1;
+            sum += share;
+            if (sum >= SUM_ONE)
+                return ONE; /* every later share is >= 0 */
+        }
+    }
+    if (!lit)
+        return s->ambient_shade;
+    if (sum <= 0)
+        return 0;
+    return (stp_fix)((sum + ((int32_t)1 << (SUM_BITS - F - 1))) >> (SUM_BITS - F));
+}
+#endif
+
+#if STP_WIDE_ARITH
+/* The host path's prepared fields (face_wide). */
+static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const stp_material *material,
+                         int parallel, stp_vec3 parallel_dir)
+{
+    stp_fix refl = material->reflectivity, bright = lighting->brightness;
+    int j;
+    if (parallel) {
+        s->eye = parallel_dir;
+        if (parallel_dir.x == 0 && parallel_dir.y == 0 && parallel_dir.z == 0)
+            s->eye.z = -ONE;
+    }
+    s->wide_c = lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u;
+    s->wide_refl = refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl;
+    for (j = 0; j < STP_MAX_LIGHTS; j++) {
+        /* b p (raw, each < 2^31: below 2^62) = m 2^n, m in [2^23, 2^24)
+         * truncated: b p 2^-16 = m 2^-(16 - n), 16 - n in [-22, 39] */
+        uint64_t bp = 0;
+        int n;
+        if (j < s->count && lighting->lights[j].power > 0 && bright > 0)
+            bp = (uint64_t)(uint32_t)bright * (uint32_t)lighting->lights[j].power;
+        n = bit_length64(bp) - 24;
+        s->wide_power[j] = bp == 0 ? 0u : (uint32_t)(n >= 0 ? bp >> n : bp << -n) + ((uint32_t)(16 - n + 64) << 24);
+    }
+#if STP_WITH_SPECULAR
+    s->wide_ks = material->specular > 0 ? (uint32_t)material->specular : 0u;
+    {
+        /* k in Q30 (< 2^45), shifted below 2^24 (truncated: relative error
+         * below 2^-23) */
+        uint64_t k = (uint64_t)(material->gloss < 1 ? 1u : (uint32_t)material->gloss) << 14;
+        int r = bit_length64(k) - 24;
+        r = r < 0 ? 0 : r;
+        s->wide_gloss = (uint32_t)(k >> r) + ((uint32_t)r << 24);
+    }
+#endif
+}
+#endif
+
 void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
                             const stp_material *material, stp_vec3 eye, int parallel,
                             stp_vec3 parallel_dir)
@@ -711,6 +1033,9 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
 #else
     s->specular = 0;
 #endif
+#if STP_WIDE_ARITH
+    wide_prepare(s, lighting, material, parallel, parallel_dir);
+#endif
 }
 
 stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
@@ -724,6 +1049,11 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     int32_t n_dot_e = 0;
     stp_sf16 inv_ne = {0, 0};
     uint32_t inv_ne_q26 = 0;
+#endif
+#if STP_WIDE_ARITH
+    /* the host path; the code below is the 32-bit targets' (kept compiled
+     * on the host: its helpers serve prepare and the Fresnel) */
+    return face_wide(s, normal, point);
 #endif
     if (s->count == 0)
         return s->ambient_shade;

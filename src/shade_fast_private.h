@@ -18,6 +18,7 @@
 
 #include <stdint.h>
 
+#include "recip_private.h" /* STP_WIDE_ARITH */
 #include "stipple/shade.h"
 
 /* A positive number m 2^-e with m = 0 (the number 0) or m in [2^15, 2^16):
@@ -66,6 +67,20 @@ typedef struct stp_shade_fast {
     /* n >= 1: F(c) in Q16 (capped at 65535) at c = 1/4 + i/64, i = 0..48
      * (E.H = c; below 1/4, and for n < 1, F is computed exactly) */
     uint16_t fresnel[STP_SHADE_FAST_FRESNEL_NODES];
+#endif
+#if STP_WIDE_ARITH /* the 64-bit host path (shade_fast.c "wide"); parallel
+                      projection there keeps the direction towards the eye
+                      (not 0) in eye */
+    uint32_t wide_c;     /* C in raw stp_fix units, >= 1 */
+    uint32_t wide_refl;  /* |R| in raw units */
+    /* BRIGHT P_j as m 2^-e = b p 2^-16 (b, p raw), m in [2^23, 2^24) or 0,
+     * e in [-22, 39]: stored as m + (e + 64) 2^24 */
+    uint32_t wide_power[STP_MAX_LIGHTS];
+#if STP_WITH_SPECULAR
+    uint32_t wide_ks;    /* Ks in raw units, 0 when Ks <= 0 */
+    /* k in Q30 as g 2^r, g < 2^24: stored as g + r 2^24 */
+    uint32_t wide_gloss;
+#endif
 #endif
 } stp_shade_fast;
 
