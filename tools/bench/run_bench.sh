@@ -41,7 +41,9 @@ done
 
 if [ ${#configs[@]} -eq 0 ]; then
     for exe in "$bin_dir"/bench_*; do
-        [ -x "$exe" ] && configs+=("${exe##*/bench_}")
+        # bench_quality is the dithering bench (tools/bench/quality.c), not a
+        # numeric configuration
+        [ -x "$exe" ] && [ "${exe##*/}" != bench_quality ] && configs+=("${exe##*/bench_}")
     done
 fi
 if [ ${#configs[@]} -eq 0 ]; then
