@@ -53,16 +53,9 @@ static inline int32_t asr32(int32_t v, int s)
     return v >= 0 ? v >> s : (int32_t)~(~(uint32_t)v >> s);
 }
 
-/* Forced inline where the call would cost as much as the body (not in
- * builds for size: -Os). */
-#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
-#define HOT_INLINE static inline __attribute__((always_inline))
-#else
-#define HOT_INLINE static inline
-#endif
 
 /* Significant bits of v (0 for 0): ARMv6-M has no CLZ instruction. */
-HOT_INLINE int bit_length32(uint32_t v)
+STP_HOT_INLINE int bit_length32(uint32_t v)
 {
 #if defined(__GNUC__) && (STP_WIDE_ARITH || defined(__ARM_FEATURE_CLZ))
     return v == 0 ? 0 : 32 - __builtin_clz(v); /* one instruction there */
@@ -107,7 +100,7 @@ static inline uint32_t mul_hi(uint32_t a, uint32_t b)
  * products (the low halves' product and the carries from the middle
  * sums' low halves are dropped); exact with STP_WIDE_ARITH.  For products
  * whose last two units do not matter (each use is at least 2^28). */
-HOT_INLINE uint32_t mul_hi_fast(uint32_t a, uint32_t b)
+STP_HOT_INLINE uint32_t mul_hi_fast(uint32_t a, uint32_t b)
 {
 #if STP_WIDE_ARITH
     return (uint32_t)(((uint64_t)a * b) >> 32);
@@ -118,7 +111,7 @@ HOT_INLINE uint32_t mul_hi_fast(uint32_t a, uint32_t b)
 }
 
 /* floor(a m / 2^16) for m < 2^16, exact: two 32-bit products */
-HOT_INLINE uint32_t mul_u16(uint32_t a, uint32_t m)
+STP_HOT_INLINE uint32_t mul_u16(uint32_t a, uint32_t m)
 {
 #if STP_WIDE_ARITH
     return (uint32_t)(((uint64_t)a * m) >> 16);
@@ -199,7 +192,7 @@ static uint32_t recip16(uint32_t m)
 
 /* ---- stp_sf16: m 2^-e, m = 0 or in [2^15, 2^16) ---- */
 
-HOT_INLINE stp_sf16 sf_make(uint32_t v, int e)
+STP_HOT_INLINE stp_sf16 sf_make(uint32_t v, int e)
 {
     stp_sf16 r;
     int n;
@@ -229,7 +222,7 @@ static stp_sf16 sf_mul(stp_sf16 a, stp_sf16 b)
 }
 
 /* 1/a for a != 0 */
-HOT_INLINE stp_sf16 sf_recip(stp_sf16 a)
+STP_HOT_INLINE stp_sf16 sf_recip(stp_sf16 a)
 {
     stp_sf16 r;
     r.m = recip16(a.m);
@@ -248,7 +241,7 @@ static uint32_t sf_aligned(stp_sf16 b, int d)
 }
 
 
-HOT_INLINE stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
+STP_HOT_INLINE stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
 {
     stp_sf16 t;
     uint32_t sum;
@@ -287,7 +280,7 @@ static uint32_t sf_to_fixed(stp_sf16 a, int q, uint32_t cap)
 #endif
 
 /* p 2^sh in Q26 for the sums, saturated at SHARE_CAP */
-HOT_INLINE int32_t share_of(uint32_t p, int sh)
+STP_HOT_INLINE int32_t share_of(uint32_t p, int sh)
 {
     if (sh >= 0)
         return sh >= 31 || p > (SHARE_CAP >> sh) ? (int32_t)SHARE_CAP : (int32_t)(p << sh);
@@ -296,7 +289,7 @@ HOT_INLINE int32_t share_of(uint32_t p, int sh)
 
 /* a b in Q26 for a in Q(q) (a < 2^31), b = m 2^-e: floor(2 a m 2^-16)
  * = a m 2^-15 scaled by 2^(26 - q + 15 - e) */
-HOT_INLINE int32_t share_times(uint32_t a, int q, stp_sf16 b)
+STP_HOT_INLINE int32_t share_times(uint32_t a, int q, stp_sf16 b)
 {
     return share_of(mul_u16(a << 1, b.m), 41 - q - b.e);
 }
@@ -655,7 +648,7 @@ static inline int64_t asr64(int64_t v, int s)
     return v >= 0 ? v >> s : (int64_t)~(~(uint64_t)v >> s);
 }
 
-HOT_INLINE int bit_length64(uint64_t v)
+STP_HOT_INLINE int bit_length64(uint64_t v)
 {
     return v == 0 ? 0 : 64 - __builtin_clzll(v);
 }
@@ -667,7 +660,7 @@ HOT_INLINE int bit_length64(uint64_t v)
  * (relative error 2.94 %), shifted back by h, then two Newton steps
  * (4.3e-4, then 9.3e-8 and the truncations; each step leaves x at or
  * above the integer root, so q/x never divides by 0). */
-HOT_INLINE uint64_t wide_sqrt(uint64_t q)
+STP_HOT_INLINE uint64_t wide_sqrt(uint64_t q)
 {
     int h = ((64 - __builtin_clzll(q) + 1) >> 1) - 16;
     uint64_t y = q >> (2 * h); /* in [2^30, 2^32) */
@@ -678,7 +671,7 @@ HOT_INLINE uint64_t wide_sqrt(uint64_t q)
 #endif
 
 /* sqrt(q) for q in [2^60, 2^62): wide_sqrt with h = 15 known */
-HOT_INLINE uint64_t wide_sqrt60(uint64_t q)
+STP_HOT_INLINE uint64_t wide_sqrt60(uint64_t q)
 {
     uint64_t y = q >> 30; /* in [2^30, 2^32) */
     uint64_t x = (22488u + ((y * 11243u) >> 30)) << 15;
@@ -698,7 +691,7 @@ typedef struct wide_dir {
     int j, k;
 } wide_dir;
 
-HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
+STP_HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
 {
     const uint64_t h = (uint64_t)1 << 30;
     uint64_t q;
@@ -727,14 +720,14 @@ HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
 /* N.v/(|N| |v|) in Q30 (clamped to [-2^30, 2^30]) from dot = N.v:
  * |N.v| 2^j <= |N| len < (2^14 + 3) 2^31, so N.v 2^(j + 17) < 2^63;
  * nlen28 len < 2^60, and >> 27 leaves at least 2^31 */
-HOT_INLINE int64_t wide_cos_dot(int64_t dot, const wide_dir *d, uint64_t nlen28)
+STP_HOT_INLINE int64_t wide_cos_dot(int64_t dot, const wide_dir *d, uint64_t nlen28)
 {
     int64_t c = (dot * ((int64_t)1 << (d->j + 17))) / (int64_t)((nlen28 * d->len) >> 27);
     return c > Q30 ? Q30 : (c < -Q30 ? -Q30 : c);
 }
 
 /* p 2^t in Q26 (p < 2^64), saturated at SHARE_CAP */
-HOT_INLINE int32_t wide_share(uint64_t p, int t)
+STP_HOT_INLINE int32_t wide_share(uint64_t p, int t)
 {
     if (t >= 0)
         return t >= 30 ? (p != 0 ? (int32_t)SHARE_CAP : 0)
