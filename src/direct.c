@@ -129,6 +129,9 @@ static void shade_prepare(stp_shade_fast *s, const stp_direct_light *l, const in
     s->power_refl[0] = sf16_mul(sf16_mul(bright, power), sf16_of(r, 16)); /* r in Q16 */
     s->power_refl[0].e -= F;
     s->attenuation_c = sf16_of(l->attenuation_c > 0 ? (uint32_t)l->attenuation_c : 1u, 0);
+#if STP_WIDE_ARITH
+    s->wide_ready = 0; /* the 32-bit face path on hosts too: the chip's values */
+#endif
 }
 
 int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_view *view,

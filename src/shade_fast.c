@@ -909,6 +909,10 @@ static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const 
         if (parallel_dir.x == 0 && parallel_dir.y == 0 && parallel_dir.z == 0)
             s->eye.z = -ONE;
     }
+    /* the wide path's formats are written for F = 16 (its powers and
+     * attenuation scale by 2^-16); other precisions take the 32-bit path,
+     * tested at F = 12, 16 and 20 */
+    s->wide_ready = STP_FIX_FRAC_BITS == 16;
     s->wide_c = lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u;
     s->wide_refl = refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl;
     for (j = 0; j < STP_MAX_LIGHTS; j++) {
@@ -1046,7 +1050,8 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
 #if STP_WIDE_ARITH
     /* the host path; the code below is the 32-bit targets' (kept compiled
      * on the host: its helpers serve prepare and the Fresnel) */
-    return face_wide(s, normal, point);
+    if (s->wide_ready)
+        return face_wide(s, normal, point);
 #endif
     if (s->count == 0)
         return s->ambient_shade;
