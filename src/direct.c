@@ -63,7 +63,7 @@ static void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out
 static stp_sf16 sf16_of(uint32_t v, int e)
 {
     stp_sf16 r;
-    int n = stp_direct_bits(v) - 16;
+    int n = stp_bit_length32(v) - 16;
     r.m = v == 0 ? 0u : (n > 0 ? v >> n : v << -n);
     r.e = v == 0 ? 0 : e - n;
     return r;
@@ -170,7 +170,7 @@ static int light_ok(const stp_direct_light *l)
 static int project_point(const stp_direct_view *view, uint32_t fm, int fe, stp_direct_point *pt)
 {
     uint32_t z = (uint32_t)pt->z, m, g;
-    int n = stp_direct_bits(z), i, sh;
+    int n = stp_bit_length32(z), i, sh;
     int32_t c[2];
     m = n > 16 ? z >> (n - 16) : z << (16 - n);
     g = fm * stp_direct_udiv(0x80000000u, m); /* focal / z 2^(15 + n - fe) */
@@ -282,7 +282,7 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
             return STP_ERR_RANGE;
     to_view(view, d, t);
     fm = (uint32_t)view->focal;
-    fe = stp_direct_bits(fm) - 16;
+    fe = stp_bit_length32(fm) - 16;
     fm = fe > 0 ? fm >> fe : fm << -fe;
     for (k = 0; k < mesh->vertex_count; k++) {
         const stp_vec3 *v = &mesh->vertices[k];

@@ -8,6 +8,7 @@
 
 #include "stipple/direct.h"
 #include "shade_fast_private.h"
+#include "fix_private.h" /* stp_bit_length32 */
 
 /* floor(v / 2^s) for any int32 v, 0 <= s <= 31 (C leaves >> of a negative
  * value to the implementation: the complement form is exact everywhere,
@@ -25,9 +26,6 @@ static inline uint32_t stp_direct_abs(int32_t v)
 /* floor(n / d) for d >= 1: shift-and-subtract over the quotient's bits
  * (no library call, no table: setup code only, never per pixel). */
 uint32_t stp_direct_udiv(uint32_t n, uint32_t d);
-
-/* Significant bits of v (0 for 0). */
-int stp_direct_bits(uint32_t v);
 
 /* A frame's shading: shade_fast.c's constants and C = V R, the model's
  * rotation into view coordinates (Q1.14), for the normals. */

@@ -17,7 +17,7 @@ uint32_t stp_direct_udiv(uint32_t n, uint32_t d)
         return 0;
     /* d aligned under n's top bit (below 2^32), then one step per
      * quotient bit: bits(n) - bits(d) + 1 of them */
-    shift = stp_direct_bits(n) - stp_direct_bits(d);
+    shift = stp_bit_length32(n) - stp_bit_length32(d);
     d <<= shift;
     for (; shift >= 0; shift--) {
         q <<= 1;
@@ -28,29 +28,6 @@ uint32_t stp_direct_udiv(uint32_t n, uint32_t d)
         d >>= 1;
     }
     return q;
-}
-
-int stp_direct_bits(uint32_t v)
-{
-    int n = 0;
-    /* halving steps: ARMv6-M has no count-leading-zeros instruction */
-    if (v >= 0x10000u) {
-        v >>= 16;
-        n = 16;
-    }
-    if (v >= 0x100u) {
-        v >>= 8;
-        n += 8;
-    }
-    if (v >= 0x10u) {
-        v >>= 4;
-        n += 4;
-    }
-    while (v != 0) {
-        v >>= 1;
-        n++;
-    }
-    return n;
 }
 
 /* floor(sqrt(v)) bit by bit */
@@ -77,7 +54,7 @@ static uint32_t unit14(const int32_t v[3], int16_t out[3])
 {
     uint32_t big = stp_direct_abs(v[0]) | stp_direct_abs(v[1]) | stp_direct_abs(v[2]), len;
     int32_t w[3];
-    int i, s = stp_direct_bits(big) - 15;
+    int i, s = stp_bit_length32(big) - 15;
     if (big == 0)
         return 0;
     for (i = 0; i < 3; i++)
@@ -211,7 +188,7 @@ int stp_direct_mesh_normals(const stp_mesh *mesh, int16_t *normals)
             big |= stp_direct_abs(e[i]);
         }
         /* the edges cut to 15 bits together: products below 2^30 */
-        s = stp_direct_bits(big) - 15;
+        s = stp_bit_length32(big) - 15;
         for (i = 0; s > 0 && i < 6; i++)
             e[i] = stp_direct_asr(e[i], s);
         n[0] = e[1] * e[5] - e[2] * e[4];

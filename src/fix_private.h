@@ -216,4 +216,46 @@ static inline int32_t stp_div3_toward_zero(int32_t v)
     return v < 0 ? 0 - (int32_t)q : (int32_t)q;
 }
 
+/* Significant bits of v (0 for 0, else floor(log2 v) + 1): one
+ * instruction where there is a count-leading-zeros instruction (64-bit
+ * hosts, ARMv7-M), else three halvings of the range and a 16-entry table
+ * (ARMv6-M and AVR have none; GCC's __builtin_clz would be a library call). */
+STP_HOT_INLINE int stp_bit_length32(uint32_t v)
+{
+#if defined(__GNUC__) && (STP_WIDE_ARITH || defined(__ARM_FEATURE_CLZ))
+    return v == 0 ? 0 : 32 - __builtin_clz(v);
+#else
+    static const uint16_t len4[16] STP_TABLE = {0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4};
+    int n = 0;
+    if (v >= 0x10000u) {
+        v >>= 16;
+        n = 16;
+    }
+    if (v >= 0x100u) {
+        v >>= 8;
+        n += 8;
+    }
+    if (v >= 0x10u) {
+        v >>= 4;
+        n += 4;
+    }
+    return n + (int)STP_TABLE_U16(&len4[v]);
+#endif
+}
+
+/* The high word of a b for 32-bit a and b, short of floor(a b / 2^32) by
+ * at most 2 (the low halves' product and the carries out of the middle
+ * products' low halves are dropped): three 32-bit products on 32-bit
+ * targets; exact where a 64-bit product is one instruction.  For products
+ * whose last two units do not matter. */
+STP_HOT_INLINE uint32_t stp_umulhi32_approx(uint32_t a, uint32_t b)
+{
+#if STP_WIDE_ARITH
+    return (uint32_t)(((uint64_t)a * b) >> 32);
+#else
+    uint32_t ah = a >> 16, bh = b >> 16;
+    return ah * bh + ((ah * (b & 0xFFFFu)) >> 16) + (((a & 0xFFFFu) * bh) >> 16);
+#endif
+}
+
 #endif

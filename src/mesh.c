@@ -55,16 +55,6 @@ static uint32_t magnitude(int32_t v)
     return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
 }
 
-static int bit_length32(uint32_t v)
-{
-    int n = 0;
-    while (v != 0) {
-        v >>= 1;
-        n++;
-    }
-    return n;
-}
-
 /* ---- normals, once ---- */
 
 /* The unit outward normal of triangle v as Q1.14 in out[]; 0 for a zero
@@ -164,7 +154,7 @@ static int similarity(const stp_renderer *r, int32_t m[3][3], int32_t mq[3][3])
         }
     if (big < ((uint32_t)1 << (F - 6)) || big >= ((uint32_t)1 << 24))
         return 0; /* scale below 2^-6 or 256 and more */
-    shift = bit_length32(big) - 14;
+    shift = stp_bit_length32(big) - 14;
     for (i = 0; i < 3; i++)
         for (j = 0; j < 3; j++)
             mq[i][j] = shift > 0 ? asr32(m[i][j], shift) : m[i][j] * ((int32_t)1 << -shift);
@@ -297,7 +287,7 @@ static int prepare_call(mesh_context *c)
            magnitude(hi.y) | magnitude(hi.z);
     c->inside = box_inside(r, lo, hi, s2);
     c->exact_projection = r->focal > 0 && r->hither > 0;
-    k = bit_length32(big) - 14;
+    k = stp_bit_length32(big) - 14;
     c->shift = k > 0 ? k : 0;
     for (j = 0; j < 3; j++)
         c->eye[j] = asr32(c->eye[j], c->shift);
@@ -336,29 +326,6 @@ static inline int32_t vertex_code(mesh_context *c, uint16_t i)
     return s->state & (CODE_RANGE | 31);
 }
 
-/* Significant bits of v (0 for 0), by halving (ARMv6-M has no CLZ). */
-static int bits32(uint32_t v)
-{
-    int n = 0;
-    if (v >= 0x10000u) {
-        v >>= 16;
-        n = 16;
-    }
-    if (v >= 0x100u) {
-        v >>= 8;
-        n += 8;
-    }
-    if (v >= 0x10u) {
-        v >>= 4;
-        n += 4;
-    }
-    if (v >= 4u) {
-        v >>= 2;
-        n += 2;
-    }
-    return n + (v >= 2u ? 2 : (int)v);
-}
-
 /* One vertex's 1/z, for the quotients of a numerator f m (f per view,
  * 0 < f < 2^31): z = dn 2^-s with dn in [2^31, 2^32) and 2^32 + v =
  * floor((2^64 - 1) / dn) (stp_recip32), so P = f (2^32 + v) < 2^64
@@ -368,7 +335,7 @@ static void scale_reciprocal(uint32_t f, uint32_t v, int s, uint32_t *w, int *sh
 {
     uint64_t p = ((uint64_t)f << 32) + stp_umul32x32(f, v);
     uint32_t ph = (uint32_t)(p >> 32), pl = (uint32_t)p; /* ph >= f >= 1 */
-    int t = bits32(ph);
+    int t = stp_bit_length32(ph);
     *w = t == 32 ? ph : (ph << (32 - t)) | (pl >> t);
     *sh = 64 - t - s;
 }
@@ -420,7 +387,7 @@ static int project_inside(const stp_renderer *r, stp_vec3 p, stp_mesh_vertex *s)
 {
     uint32_t z = (uint32_t)(p.z < r->hither ? r->hither : p.z), f = (uint32_t)r->focal;
     uint32_t h = (uint32_t)r->hither, mx = magnitude(p.x), my = magnitude(p.y), qx, qy, qk, w, wh;
-    int sz = 32 - bits32(z), sh, shh;
+    int sz = 32 - stp_bit_length32(z), sh, shh;
     int32_t wq = (int32_t)r->width << STP_SUBPIXEL_BITS, hq = (int32_t)r->height << STP_SUBPIXEL_BITS;
     int32_t x, y;
     uint32_t v = stp_recip32(z << sz);

@@ -4,8 +4,6 @@
 #include "recip_private.h"
 #include "fix_private.h" /* STP_TABLE */
 
-#include <limits.h>
-
 /* RECIP_SEED[i] = round(2^24 / (257 + 2 i)): 2^47 / m at the middle of the
  * i-th of 128 equal intervals of m in [2^31, 2^32) (m's bits 30..24 are i).
  * Relative error against 2^47 / m anywhere in the interval: below
@@ -29,35 +27,6 @@ static const uint16_t RECIP_SEED[128] STP_TABLE = {
     33757u, 33622u, 33487u, 33354u, 33222u, 33091u, 32961u, 32832u,
 };
 
-/* The high word of a b for 32-bit a and b, short of floor(a b / 2^32) by
- * at most 2 (the carries out of the low partial products are dropped):
- * three 32-bit products on 32-bit targets */
-static inline uint32_t mulhi_low(uint32_t a, uint32_t b)
-{
-#if STP_WIDE_ARITH
-    return (uint32_t)(((uint64_t)a * b) >> 32);
-#else
-    uint32_t ah = a >> 16, bh = b >> 16;
-    return ah * bh + ((ah * (b & 0xFFFFu)) >> 16) + (((a & 0xFFFFu) * bh) >> 16);
-#endif
-}
-
-static int bit_length32(uint32_t v)
-{
-#if defined(__GNUC__) && UINT_MAX >= 0xFFFFFFFFu
-    return v == 0 ? 0 : 32 - __builtin_clz(v);
-#elif defined(__GNUC__)
-    return v == 0 ? 0 : 32 - __builtin_clzl(v);
-#else
-    int n = 0;
-    while (v != 0) {
-        v >>= 1;
-        n++;
-    }
-    return n;
-#endif
-}
-
 uint32_t stp_recip32(uint32_t d)
 {
     uint32_t y0, y1, u, dh = d >> 16, dl = d & 0xFFFFu, at, corr, v;
@@ -80,9 +49,9 @@ uint32_t stp_recip32(uint32_t d)
     /* y1 ~ 2^63 / d within 2^-17.  Step 2 straight into v's scale:
      * v ~ 2 y1 - 2^32 + y1 e / 2^62 with the exact error e = 2^63 - d y1
      * (|e| < 2^47, so e / 2^15 fits 32 bits), the product's high word from
-     * three partial products (mulhi_low).  Newton's step lands below
-     * 2^64 / d by the square of y1's error (under a unit here) and every
-     * rounding is downwards: over all 2^31 values of d, v is the floor or
+     * three partial products (stp_umulhi32_approx, fix_private.h).
+     * Newton's step lands below 2^64 / d by the square of y1's error
+     * (under a unit here) and every rounding is downwards: over all 2^31 values of d, v is the floor or
      * up to 2 below it (0.14 corrections on average), corrected below */
     if (d == 0x80000000u)
         return 0xFFFFFFFFu; /* 2^64 / d - 2^32 = 2^32 exactly: the floor is one less */
@@ -91,10 +60,10 @@ uint32_t stp_recip32(uint32_t d)
     p = stp_umul32x32(d, y1);
     v = y1 << 1; /* 2 y1 - 2^32 */
     if (p <= ((uint64_t)1 << 63)) {
-        uint32_t c = mulhi_low(y1, (uint32_t)((((uint64_t)1 << 63) - p) >> 15)) >> 15;
+        uint32_t c = stp_umulhi32_approx(y1, (uint32_t)((((uint64_t)1 << 63) - p) >> 15)) >> 15;
         v = c > 0xFFFFFFFFu - v ? 0xFFFFFFFFu : v + c;
     } else {
-        uint32_t c = (mulhi_low(y1, (uint32_t)((p - ((uint64_t)1 << 63)) >> 15)) >> 15) + 2u;
+        uint32_t c = (stp_umulhi32_approx(y1, (uint32_t)((p - ((uint64_t)1 << 63)) >> 15)) >> 15) + 2u;
         v = c > v ? 0u : v - c;
     }
     /* (2^32 + v) d brought to at most 2^64 - 1 (a wrapped sum is below
@@ -135,7 +104,7 @@ static inline uint32_t div_2by1(uint32_t u1, uint32_t u0, uint32_t d, uint32_t v
 
 void stp_recip_divisor_init(stp_recip_divisor *p, uint32_t d)
 {
-    p->s = d == 0 ? 0 : 32 - bit_length32(d);
+    p->s = d == 0 ? 0 : 32 - stp_bit_length32(d);
     p->dn = d << p->s;
     p->v = stp_recip32(p->dn);
 }
@@ -173,7 +142,7 @@ uint64_t stp_udiv64_recip(uint64_t n, uint64_t d)
     if (n < d)
         return 0;
     /* n 2^s as three 32-bit words w2 w1 w0, s normalising d's top word */
-    s = 32 - bit_length32(dh != 0 ? dh : (uint32_t)d);
+    s = 32 - stp_bit_length32(dh != 0 ? dh : (uint32_t)d);
     w2 = s != 0 ? nh >> (32 - s) : 0u;
     w1 = s != 0 ? (nh << s) | (nl >> (32 - s)) : nh;
     w0 = nl << s;

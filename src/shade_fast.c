@@ -22,8 +22,8 @@
  *   sums     Q26 in int32 (one = 2^26): each light's share is saturated at
  *            8 and the sum returns 1 as soon as it reaches 1 (every share
  *            is >= 0), so at most 2^26 + 2 2^29 < 2^31 is ever formed.
- * High words of 32 x 32 products: mul_hi_fast (three 16 x 16 products on
- * ARMv6-M, up to 2 units low; exact with STP_WIDE_ARITH) on the face path,
+ * High words of 32 x 32 products: stp_umulhi32_approx (fix_private.h:
+ * three 16 x 16 products on ARMv6-M, up to 2 units low; exact with STP_WIDE_ARITH) on the face path,
  * where each product is used at 2^28 or more or only as an absolute
  * error; mul_hi (four, exact) in prepare and the exact Fresnel; mul_u16
  * where one factor has 16 bits (two products, exact).
@@ -53,32 +53,6 @@ static inline int32_t asr32(int32_t v, int s)
     return v >= 0 ? v >> s : (int32_t)~(~(uint32_t)v >> s);
 }
 
-
-/* Significant bits of v (0 for 0): ARMv6-M has no CLZ instruction. */
-STP_HOT_INLINE int bit_length32(uint32_t v)
-{
-#if defined(__GNUC__) && (STP_WIDE_ARITH || defined(__ARM_FEATURE_CLZ))
-    return v == 0 ? 0 : 32 - __builtin_clz(v); /* one instruction there */
-#else
-    /* three halvings of the range, then the length of a 4-bit value */
-    static const uint16_t len4[16] STP_TABLE = {0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4};
-    int n = 0;
-    if (v >= 0x10000u) {
-        v >>= 16;
-        n = 16;
-    }
-    if (v >= 0x100u) {
-        v >>= 8;
-        n += 8;
-    }
-    if (v >= 0x10u) {
-        v >>= 4;
-        n += 4;
-    }
-    return n + (int)STP_TABLE_U16(&len4[v]);
-#endif
-}
-
 #if STP_WITH_SPECULAR /* used by prepare's Fresnel table and the exact Fresnel */
 /* floor(a b / 2^32), exact: one 64-bit product where that is one
  * instruction (STP_WIDE_ARITH), else four 16 x 16 -> 32 products (the same
@@ -95,20 +69,6 @@ static inline uint32_t mul_hi(uint32_t a, uint32_t b)
 #endif
 }
 #endif
-
-/* floor(a b / 2^32) - t with t in {0, 1, 2}: on ARMv6-M three 16 x 16
- * products (the low halves' product and the carries from the middle
- * sums' low halves are dropped); exact with STP_WIDE_ARITH.  For products
- * whose last two units do not matter (each use is at least 2^28). */
-STP_HOT_INLINE uint32_t mul_hi_fast(uint32_t a, uint32_t b)
-{
-#if STP_WIDE_ARITH
-    return (uint32_t)(((uint64_t)a * b) >> 32);
-#else
-    uint32_t ah = a >> 16, bh = b >> 16;
-    return ah * bh + ((ah * (b & 0xFFFFu)) >> 16) + (((a & 0xFFFFu) * bh) >> 16);
-#endif
-}
 
 /* floor(a m / 2^16) for m < 2^16, exact: two 32-bit products */
 STP_HOT_INLINE uint32_t mul_u16(uint32_t a, uint32_t m)
@@ -176,7 +136,7 @@ static uint32_t rsqrt_norm(uint32_t q)
     if (y > 0xFFFFu)
         y = 0xFFFFu;
     /* q y^2 2^-32 ~ 2^30, y^2 < 2^32; e is now below 2^20 */
-    e = Q30 - (int32_t)mul_hi_fast(q, y * y);
+    e = Q30 - (int32_t)stp_umulhi32_approx(q, y * y);
     return (y << 15) + (uint32_t)mul_q16(e, y);
 }
 
@@ -201,7 +161,7 @@ STP_HOT_INLINE stp_sf16 sf_make(uint32_t v, int e)
         r.e = 0;
         return r;
     }
-    n = bit_length32(v) - 16;
+    n = stp_bit_length32(v) - 16;
     r.m = n > 0 ? v >> n : v << -n;
     r.e = e - n;
     return r;
@@ -239,7 +199,6 @@ static uint32_t sf_aligned(stp_sf16 b, int d)
 {
     return d > 16 ? 0 : b.m >> d;
 }
-
 
 STP_HOT_INLINE stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
 {
@@ -324,7 +283,7 @@ static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b,
     u1 = v1 < 0 ? 0u - (uint32_t)v1 : (uint32_t)v1;
     u2 = v2 < 0 ? 0u - (uint32_t)v2 : (uint32_t)v2;
     /* the bit length of the largest |v_i| is that of their OR */
-    n = bit_length32(u0 | u1 | u2) - 16; /* the largest 2^-n in [2^15, 2^16) */
+    n = stp_bit_length32(u0 | u1 | u2) - 16; /* the largest 2^-n in [2^15, 2^16) */
     if (n == -16) {
         d->w[0] = d->w[1] = d->w[2] = 0;
         return 0;
@@ -384,7 +343,7 @@ static int32_t dot_n(const int16_t n[3], const stp_shade_fast_dir *d)
 static int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t nd)
 {
     uint32_t a = dot < 0 ? 0u - (uint32_t)dot : (uint32_t)dot;
-    int32_t c = (int32_t)(mul_hi_fast(a, d->r) << (1 + d->j)); /* <= 2^30 (1 + 2^-12) */
+    int32_t c = (int32_t)(stp_umulhi32_approx(a, d->r) << (1 + d->j)); /* <= 2^30 (1 + 2^-12) */
     c -= asr32(asr32(c, 15) * asr32(nd, 2), 12); /* 2^15 2^15: fits */
     return dot < 0 ? -c : c;
 }
@@ -392,7 +351,7 @@ static int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t nd)
 /* The length of d's vector in raw stp_fix units: 2 sqrt(q) 2^shift */
 static stp_sf16 dir_length(const stp_shade_fast_dir *d)
 {
-    return sf_make(mul_hi_fast(d->q, d->r), 13 - d->j - d->shift);
+    return sf_make(stp_umulhi32_approx(d->q, d->r), 13 - d->j - d->shift);
 }
 
 #if STP_WITH_SPECULAR
@@ -408,7 +367,7 @@ static int32_t cos_dirs(const stp_shade_fast_dir *a, const stp_shade_fast_dir *b
                 asr32(aw[0] * (bw[0] & 1) + aw[1] * (bw[1] & 1) + aw[2] * (bw[2] & 1), 3);
     uint32_t m;
     m = s < 0 ? 0u - (uint32_t)s : (uint32_t)s;
-    m = mul_hi_fast(mul_hi_fast(m, a->r), b->r) << (3 + a->j + b->j);
+    m = stp_umulhi32_approx(stp_umulhi32_approx(m, a->r), b->r) << (3 + a->j + b->j);
     if (m > (uint32_t)Q30)
         m = (uint32_t)Q30;
     return s < 0 ? -(int32_t)m : (int32_t)m;
@@ -442,7 +401,7 @@ static stp_sf16 sf_from_r(uint32_t r, int e)
 static uint32_t rsqrt_any(uint32_t q, int *j)
 {
     /* the common cases (|L + E|^2 >= 1/4) without a search */
-    *j = q >= 0x40000000u ? 0 : (q >= 0x10000000u ? 1 : (32 - bit_length32(q)) >> 1);
+    *j = q >= 0x40000000u ? 0 : (q >= 0x10000000u ? 1 : (32 - stp_bit_length32(q)) >> 1);
     return rsqrt_norm(q << (2 * *j));
 }
 
@@ -532,12 +491,12 @@ static uint32_t fresnel_q16(const stp_shade_fast *s, uint32_t c, int32_t e_dot_l
  * y = 2^31/m (recip16), D = y^2 2^(-30 - 2n).  0 when x >= 2^31 (D < 2^-30). */
 static uint32_t gloss_q30(const stp_shade_fast *s, uint32_t omx)
 {
-    uint32_t x = mul_hi_fast(omx << 2, s->inv_gloss_q16), t, y;
+    uint32_t x = stp_umulhi32_approx(omx << 2, s->inv_gloss_q16), t, y;
     int n;
     if (x >= 0x80000000u)
         return 0;
     t = ((uint32_t)1 << 16) + x;
-    n = bit_length32(t) - 16; /* 1 .. 16 */
+    n = stp_bit_length32(t) - 16; /* 1 .. 16 */
     y = recip16(t >> n);
     if (y > 0xFFFFu) /* m = 2^15: D = 2^(32 - 2n) 2^-30 */
         return n >= 16 ? 0u : (uint32_t)1 << (32 - 2 * n);
@@ -553,7 +512,7 @@ static uint32_t specular_fixed(const stp_shade_fast *s, int32_t n_dot_l, int32_t
                                uint32_t nh, uint32_t r, int j, uint32_t eh, int32_t e_dot_l,
                                stp_sf16 inv_ne, uint32_t inv_ne_q26)
 {
-    uint32_t g1 = mul_hi_fast(nh, r) >> (1 - j), gne = g1, d, df;
+    uint32_t g1 = stp_umulhi32_approx(nh, r) >> (1 - j), gne = g1, d, df;
     if (n_dot_l < n_dot_e) {
         /* N.L/N.E < 1 in Q30: N.L m 2^-e (inv_ne = m 2^-e) */
         uint32_t p = mul_u16((uint32_t)n_dot_l << 1, inv_ne.m); /* N.L m 2^-15 */
@@ -561,7 +520,7 @@ static uint32_t specular_fixed(const stp_shade_fast *s, int32_t n_dot_l, int32_t
         uint32_t ratio = sh >= 0 ? (sh >= 16 ? (uint32_t)Q30 : p << sh) : (sh <= -32 ? 0u : p >> -sh);
         if (ratio > (uint32_t)Q30)
             ratio = (uint32_t)Q30;
-        gne = mul_hi_fast(g1 << 2, ratio); /* g1 ratio in Q26 */
+        gne = stp_umulhi32_approx(g1 << 2, ratio); /* g1 ratio in Q26 */
     }
     if (gne > inv_ne_q26)
         gne = inv_ne_q26;
@@ -569,7 +528,7 @@ static uint32_t specular_fixed(const stp_shade_fast *s, int32_t n_dot_l, int32_t
         gne = (uint32_t)1 << 29;
     d = gloss_q30(s, (uint32_t)Q30 - nh);
     df = mul_u16(d << 1, fresnel_q16(s, eh, e_dot_l));
-    return mul_hi_fast(df, gne << 2);
+    return stp_umulhi32_approx(df, gne << 2);
 }
 
 /* Ks D F G/(N.E) of one light, from the cosines (Q30, N.L and N.E > 0)
@@ -588,9 +547,9 @@ static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t 
         return 0; /* L = -E: H undefined */
     x = one_el >= 0x80000000u ? 0xFFFFFFFFu : one_el << 1;
     r = rsqrt_any(x, &j); /* 1/|L + E| = r 2^(j - 31) */
-    nh = mul_hi_fast((uint32_t)n_dot_l + (uint32_t)n_dot_e, r); /* the sum <= 2^31 + 8 */
+    nh = stp_umulhi32_approx((uint32_t)n_dot_l + (uint32_t)n_dot_e, r); /* the sum <= 2^31 + 8 */
     nh = nh >= (0x80000000u >> (1 + j)) ? (uint32_t)Q30 : nh << (1 + j);
-    eh = mul_hi_fast(x, r) << j; /* sqrt(x) 2^14 <= 2^30 */
+    eh = stp_umulhi32_approx(x, r) << j; /* sqrt(x) 2^14 <= 2^30 */
     if (nh == 0 || eh == 0)
         return 0;
     if (nh > (uint32_t)Q30)
