@@ -53,6 +53,18 @@ static inline int32_t asr32(int32_t v, int s)
     return v >= 0 ? v >> s : (int32_t)~(~(uint32_t)v >> s);
 }
 
+/* The face's shade from the Q26 sum of the ambient part and the shares
+ * of the lights that reach it (lit: at least one did), rounded once to
+ * stp_fix; a face no light reaches gets the prepared ambient shade. */
+STP_HOT_INLINE stp_fix shade_of_sum(const stp_shade_fast *s, int lit, int32_t sum)
+{
+    if (!lit)
+        return s->ambient_shade;
+    if (sum <= 0)
+        return 0;
+    return (stp_fix)((sum + ((int32_t)1 << (SUM_BITS - F - 1))) >> (SUM_BITS - F));
+}
+
 #if STP_WITH_SPECULAR /* used by prepare's Fresnel table and the exact Fresnel */
 /* floor(a b / 2^32), exact: one 64-bit product where that is one
  * instruction (STP_WIDE_ARITH), else four 16 x 16 -> 32 products (the same
@@ -848,11 +860,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
                 return ONE; /* every later share is >= 0 */
         }
     }
-    if (!lit)
-        return s->ambient_shade;
-    if (sum <= 0)
-        return 0;
-    return (stp_fix)((sum + ((int32_t)1 << (SUM_BITS - F - 1))) >> (SUM_BITS - F));
+    return shade_of_sum(s, lit, sum);
 }
 #endif
 
@@ -1072,9 +1080,5 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
                 return ONE; /* every later share is >= 0 */
         }
     }
-    if (!lit)
-        return s->ambient_shade;
-    if (sum <= 0)
-        return 0;
-    return (stp_fix)((sum + ((int32_t)1 << (SUM_BITS - F - 1))) >> (SUM_BITS - F));
+    return shade_of_sum(s, lit, sum);
 }
