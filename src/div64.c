@@ -3,7 +3,7 @@
  * fix_private.h): for a playback-only image where the C library's 64-bit
  * division routines (about 1 KB on ARMv6-M) outweigh the rest of the
  * rasterizer's arithmetic. */
-#include "fix_private.h"
+#include "recip_private.h"
 
 #if STP_SMALL_DIVISION
 int64_t stp_div64_trunc(int64_t num, int64_t den)

@@ -2,7 +2,6 @@
 /* Fixed-point arithmetic: see include/stipple/fix.h for formats and errors. */
 #include "stipple/fix.h"
 #include "fix_private.h"
-#include "recip_private.h"
 
 #define F STP_FIX_FRAC_BITS
 
@@ -55,61 +54,23 @@ stp_fix stp_fix_div(stp_fix a, stp_fix b)
 
 uint32_t stp_isqrt64(uint64_t v)
 {
-    /* Digit-by-digit (restoring) square root: exact floor, 32 steps, only
-     * shifts, adds and compares, so it costs the same on every core. */
-    uint64_t root = 0, bit = (uint64_t)1 << 62;
-    while (bit > v)
-        bit >>= 2;
-    while (bit != 0) {
-        if (v >= root + bit) {
-            v -= root + bit;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
-    return (uint32_t)root;
+    /* The core's one square root (stp_sqrt64_fast: a table seed and two
+     * Newton steps of the reciprocal root, no division) made the exact
+     * floor: its estimate is within 2^-29 relative, so a few units at most
+     * from floor(sqrt(v)), and each step up or down is checked with an
+     * exact 32 x 32 -> 64 product. */
+    uint32_t r = stp_sqrt64_fast(v);
+    while (r != 0 && stp_umul32x32(r, r) > v)
+        r--;
+    while (r != 0xFFFFFFFFu && stp_umul32x32(r + 1u, r + 1u) <= v)
+        r++;
+    return r;
 }
 
 #if STP_SQRT_FAST
-/* Fast root of a 64-bit value: normalise so the value has its top set bit in
- * one of the two highest positions, seed from an 8-entry table of
- * sqrt(m) over [1, 4) and refine with two Newton steps (each doubles the
- * correct bits: 4 -> 8 -> 16, relative error < 2^-15). */
-static uint32_t fast_sqrt64(uint64_t v)
-{
-    /* sqrt(1 + (i + 1/2) * 3/8) * 2^15: the root at the middle of each of the
-     * 8 sub-ranges of [1, 4) */
-    static const uint16_t seed[8] = {35708, 40960, 45611, 49830, 53719, 57344, 60753, 63982};
-    int shift = 0;
-    uint64_t x;
-    uint32_t y;
-    if (v == 0)
-        return 0;
-    while ((v >> shift) >= ((uint64_t)1 << 2))
-        shift += 2;
-    /* v = m * 2^shift with m in [1, 4): find m's sub-range from its top bits */
-    {
-        uint64_t m32 = shift >= 30 ? v >> (shift - 30) : v << (30 - shift); /* m * 2^30 */
-        uint32_t idx = (uint32_t)(((m32 - ((uint64_t)1 << 30)) * 8) / ((uint64_t)3 << 30));
-        if (idx > 7)
-            idx = 7;
-        /* root = sqrt(m) * 2^(shift/2); seed has 15 fractional bits */
-        x = (uint64_t)seed[idx];
-        x = shift >= 30 ? x << (shift / 2 - 15) : x >> (15 - shift / 2);
-        if (shift / 2 < 15 && x == 0)
-            x = 1;
-    }
-    /* two Newton steps: x = (x + v/x)/2 */
-    x = (x + v / x) >> 1;
-    x = (x + v / x) >> 1;
-    if (x > 0xFFFFFFFFu)
-        x = 0xFFFFFFFFu;
-    y = (uint32_t)x;
-    return y;
-}
-#define ROOT64(v) fast_sqrt64(v)
+/* the reciprocal square root's root (stp_sqrt64_fast, below): within
+ * 2^-29 relative, a few multiplications instead of a 32-step loop */
+#define ROOT64(v) stp_sqrt64_fast(v)
 #else
 #define ROOT64(v) stp_isqrt64(v)
 #endif
@@ -330,11 +291,11 @@ static const uint16_t rsqrt_seed[192] STP_TABLE = {
     34384, 34310, 34237, 34164, 34092, 34020, 33949, 33878, 33807, 33737, 33668, 33599,
     33530, 33461, 33393, 33326, 33259, 33192, 33126, 33060, 32994, 32929, 32864, 32800};
 
-#if !STP_WIDE_ARITH
 /* floor(a b / 2^s) for 16 <= s < 32 and a result below 2^32 (the caller's
- * bound): exact.  Where 64-bit products are a library call (the only
- * builds that use it), four 32-bit products of 16-bit halves put together
- * in 32-bit words (no 64-bit shifts or adds). */
+ * bound): exact.  Without STP_HAVE_MUL64 (the only builds that use it),
+ * four 32-bit products of 16-bit halves put together in 32-bit words (no
+ * 64-bit shifts or adds). */
+#if !STP_HAVE_MUL64
 static inline uint32_t mul_shr32(uint32_t a, uint32_t b, int s)
 {
     uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
@@ -354,11 +315,12 @@ static inline uint64_t rsqrt_q30(uint32_t m)
     /* Newton for 1/sqrt: y <- y (3 - m y^2) / 2; each step squares the
      * relative error (2^-8 -> 2^-15 -> 2^-29 with the rounding).  m y^2 stays
      * within 2^30 (1 +- 2^-7), so 3 2^30 - m y^2 > 0 and y (...) < 2^62 */
-#if STP_WIDE_ARITH
+#if STP_HAVE_MUL64
     for (k = 0; k < 2; k++) {
-        uint64_t y2 = (y * y) >> 30;
-        uint64_t my2 = ((uint64_t)m * y2) >> 30;
-        y = (y * (((uint64_t)3 << 30) - my2)) >> 31;
+        /* y < 2^31, y2 and my2 near 2^30: 32 x 32 -> 64 products */
+        uint32_t y2 = (uint32_t)(stp_umul32x32((uint32_t)y, (uint32_t)y) >> 30);
+        uint32_t my2 = (uint32_t)(stp_umul32x32(m, y2) >> 30);
+        y = stp_umul32x32((uint32_t)y, ((uint32_t)3 << 30) - my2) >> 31;
     }
 #else
     /* the same floors in 32-bit words: Newton approaches 1/sqrt from
@@ -397,7 +359,7 @@ uint32_t stp_rsqrt64(uint64_t v, int *exponent)
     return rsqrt64(v, exponent);
 }
 
-#if STP_WIDE_ARITH
+#if STP_HAVE_MUL64
 /* floor(v / 2^s) for |v| < 2^62, 0 <= s < 62, without a branch on the sign
  * (2^62 is a multiple of 2^s, so the offset changes nothing but the sign) */
 static inline int64_t floor_shift(int64_t v, int s)
@@ -450,8 +412,9 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
         z = stp_asr64(z, -up);
     }
     /* |x|, |y|, |z| <= 2^30 now: exact 32 x 32 products */
-#if STP_WIDE_ARITH
-    s = (uint64_t)(x * x) + (uint64_t)(y * y) + (uint64_t)(z * z);
+#if STP_HAVE_MUL64
+    s = (uint64_t)stp_smul32x32((int32_t)x, (int32_t)x) + (uint64_t)stp_smul32x32((int32_t)y, (int32_t)y) +
+        (uint64_t)stp_smul32x32((int32_t)z, (int32_t)z);
 #else
     s = square30(abs32((int32_t)x)) + square30(abs32((int32_t)y)) + square30(abs32((int32_t)z));
 #endif
@@ -461,15 +424,15 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
     inv = (int64_t)rsqrt_q30((uint32_t)(s >> sh));
     e = 45 + sh / 2 - 30; /* to STP_UNIT */
     /* |x inv| < 2^60 */
-#if STP_WIDE_ARITH
+#if STP_HAVE_MUL64
     {
         const int64_t half = (int64_t)1 << (e - 1);
-        out->x = (int32_t)floor_shift(x * inv + half, e);
-        out->y = (int32_t)floor_shift(y * inv + half, e);
-        out->z = (int32_t)floor_shift(z * inv + half, e);
+        out->x = (int32_t)floor_shift(stp_smul32x32((int32_t)x, (int32_t)inv) + half, e);
+        out->y = (int32_t)floor_shift(stp_smul32x32((int32_t)y, (int32_t)inv) + half, e);
+        out->z = (int32_t)floor_shift(stp_smul32x32((int32_t)z, (int32_t)inv) + half, e);
     }
     /* |v| scaled = s / sqrt(s): s >> 30 < 2^32 times inv < 2^31 */
-    len = ((s >> 30) * (uint64_t)inv) >> e;
+    len = stp_umul32x32((uint32_t)(s >> 30), (uint32_t)inv) >> e;
 #else
     out->x = round_unit((int32_t)x, (uint32_t)inv, e);
     out->y = round_unit((int32_t)y, (uint32_t)inv, e);
@@ -496,10 +459,6 @@ uint32_t stp_sqrt64_fast(uint64_t v)
     inv = rsqrt64(v, &e); /* sets e: a statement of its own */
     /* sqrt(v) = v / sqrt(v) = m 2^sh inv 2^-e: m < 2^32, inv <= 2^30;
      * e - sh = 45 - sh/2 > 0 */
-#if STP_WIDE_ARITH
-    r = (m * inv) >> (e - sh);
-#else
     r = stp_umul32x32((uint32_t)m, (uint32_t)inv) >> (e - sh);
-#endif
     return r > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)r;
 }

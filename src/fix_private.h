@@ -3,30 +3,11 @@
 #ifndef STIPPLE_FIX_PRIVATE_H
 #define STIPPLE_FIX_PRIVATE_H
 
-/* A small function forced inline where a call would cost as much as its
- * body, except in builds for size (-Os), which keep it a call. */
-#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
-#define STP_HOT_INLINE static inline __attribute__((always_inline))
-#else
-#define STP_HOT_INLINE static inline
-#endif
-
 #include <stdint.h>
 
 #include "stipple/fix.h"
-#include "recip_private.h" /* stp_umul32x32 */
-
-/* Constant tables of the core.  On AVR, const data is copied into RAM at
- * start-up unless it is put in program memory and read with LPM; 384 bytes
- * of square-root seeds are a twentieth of an ATmega2560's RAM. */
-#if defined(__AVR__)
-#include <avr/pgmspace.h>
-#define STP_TABLE PROGMEM
-#define STP_TABLE_U16(p) pgm_read_word(p)
-#else
-#define STP_TABLE
-#define STP_TABLE_U16(p) (*(p))
-#endif
+#include "arith_private.h" /* STP_HOT_INLINE, STP_TABLE, products, bit counts */
+#include "recip_private.h" /* reciprocals and exact division */
 
 /* Arithmetic shift right rounding toward minus infinity, for negative values
  * too (C99 leaves >> of a negative value to the implementation). */
@@ -34,16 +15,6 @@ static inline int64_t stp_asr64(int64_t v, int s)
 {
     return v >= 0 ? v >> s : -((-(v + 1)) >> s) - 1;
 }
-
-/* num / den truncated toward zero for den != 0 and a quotient that fits:
- * C's operator, or with STP_SMALL_DIVISION (config.h) the bit-serial loop
- * of div64.c, so the C library's 64-bit division is not linked. */
-#if STP_SMALL_DIVISION
-int64_t stp_div64_trunc(int64_t num, int64_t den);
-#define STP_DIV64(num, den) stp_div64_trunc((int64_t)(num), (int64_t)(den))
-#else
-#define STP_DIV64(num, den) ((int64_t)(num) / (int64_t)(den))
-#endif
 
 /* floor(a / b) for b > 0. */
 static inline int64_t stp_floordiv64(int64_t a, int64_t b)
@@ -151,25 +122,6 @@ static inline stp_vec3 stp_unit_to_fix(stp_unit3 u)
     return v;
 }
 
-/* Number of significant bits of v (0 for 0). */
-static inline int stp_bit_length64(uint64_t v)
-{
-#if defined(__GNUC__)
-    return v == 0 ? 0 : 64 - __builtin_clzll(v);
-#else
-    int n = 0;
-    while (v >= ((uint64_t)1 << 16)) {
-        v >>= 16;
-        n += 16;
-    }
-    while (v != 0) {
-        v >>= 1;
-        n++;
-    }
-    return n;
-#endif
-}
-
 /* (a b) >> s for a, b >= 0 and 0 <= s <= 62, exact when a b < 2^63;
  * otherwise both are cut to 63 significant bits together first (relative
  * error below 2^-30 when each keeps 31 bits), and a result of 2^62 or more
@@ -214,48 +166,6 @@ static inline int32_t stp_div3_toward_zero(int32_t v)
     uint32_t u = v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
     uint32_t q = (uint32_t)(stp_umul32x32(u, 0xAAAAAAABu) >> 33);
     return v < 0 ? 0 - (int32_t)q : (int32_t)q;
-}
-
-/* Significant bits of v (0 for 0, else floor(log2 v) + 1): one
- * instruction where there is a count-leading-zeros instruction (64-bit
- * hosts, ARMv7-M), else three halvings of the range and a 16-entry table
- * (ARMv6-M and AVR have none; GCC's __builtin_clz would be a library call). */
-STP_HOT_INLINE int stp_bit_length32(uint32_t v)
-{
-#if defined(__GNUC__) && (STP_WIDE_ARITH || defined(__ARM_FEATURE_CLZ))
-    return v == 0 ? 0 : 32 - __builtin_clz(v);
-#else
-    static const uint16_t len4[16] STP_TABLE = {0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4};
-    int n = 0;
-    if (v >= 0x10000u) {
-        v >>= 16;
-        n = 16;
-    }
-    if (v >= 0x100u) {
-        v >>= 8;
-        n += 8;
-    }
-    if (v >= 0x10u) {
-        v >>= 4;
-        n += 4;
-    }
-    return n + (int)STP_TABLE_U16(&len4[v]);
-#endif
-}
-
-/* The high word of a b for 32-bit a and b, short of floor(a b / 2^32) by
- * at most 2 (the low halves' product and the carries out of the middle
- * products' low halves are dropped): three 32-bit products on 32-bit
- * targets; exact where a 64-bit product is one instruction.  For products
- * whose last two units do not matter. */
-STP_HOT_INLINE uint32_t stp_umulhi32_approx(uint32_t a, uint32_t b)
-{
-#if STP_WIDE_ARITH
-    return (uint32_t)(((uint64_t)a * b) >> 32);
-#else
-    uint32_t ah = a >> 16, bh = b >> 16;
-    return ah * bh + ((ah * (b & 0xFFFFu)) >> 16) + (((a & 0xFFFFu) * bh) >> 16);
-#endif
 }
 
 #endif

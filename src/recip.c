@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Reciprocals and exact 64-bit division without a divide instruction: see
  * recip_private.h. */
+#include "arith_private.h" /* STP_TABLE, products, bit counts */
 #include "recip_private.h"
-#include "fix_private.h" /* STP_TABLE */
 
 /* RECIP_SEED[i] = round(2^24 / (257 + 2 i)): 2^47 / m at the middle of the
  * i-th of 128 equal intervals of m in [2^31, 2^32) (m's bits 30..24 are i).

@@ -10,43 +10,8 @@
 
 #include <stdint.h>
 
-/* Whether 64-bit products and quotients are single instructions: the one
- * definition the core's files share (raster_private.h includes it). */
-#ifndef STP_WIDE_ARITH
-#if defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
-#define STP_WIDE_ARITH 1
-#else
-#define STP_WIDE_ARITH 0
-#endif
-#endif
-
-/* a b exactly for 32-bit a and b: one instruction on 64-bit hosts, four
- * 32-bit products of 16-bit halves elsewhere (ARMv6-M has no 32 x 32 -> 64
- * multiply; the library's 64-bit one costs ~40 instructions a call). */
-static inline uint64_t stp_umul32x32(uint32_t a, uint32_t b)
-{
-#if STP_WIDE_ARITH
-    return (uint64_t)a * b;
-#else
-    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
-    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
-    return ((uint64_t)(hh + (lh >> 16) + (hl >> 16) + (mid >> 16)) << 32) |
-           (uint64_t)((mid << 16) | (ll & 0xFFFFu));
-#endif
-}
-
-/* a b exactly for signed 32-bit a and b */
-static inline int64_t stp_smul32x32(int32_t a, int32_t b)
-{
-#if STP_WIDE_ARITH
-    return (int64_t)a * b;
-#else
-    uint64_t p = stp_umul32x32(a < 0 ? 0u - (uint32_t)a : (uint32_t)a,
-                               b < 0 ? 0u - (uint32_t)b : (uint32_t)b);
-    return (a < 0) != (b < 0) ? -(int64_t)p : (int64_t)p;
-#endif
-}
+#include "stipple/config.h" /* STP_SMALL_DIVISION */
+#include "arith_private.h" /* STP_WIDE_ARITH, stp_umul32x32 */
 
 /* The reciprocal of d in [2^31, 2^32): floor((2^64 - 1) / d) - 2^32, in
  * [0, 2^32), so 2^32 + result approximates 2^64 / d to within one unit.
@@ -90,6 +55,16 @@ int64_t stp_div64_recip(int64_t n, int64_t d);
 #define stp_div64_fast(n, d) ((int64_t)(n) / (int64_t)(d))
 #else
 #define stp_div64_fast(n, d) stp_div64_recip((int64_t)(n), (int64_t)(d))
+#endif
+
+/* num / den truncated toward zero for den != 0 and a quotient that fits:
+ * C's operator, or with STP_SMALL_DIVISION (stipple/config.h) the bit-serial loop
+ * of div64.c, so the C library's 64-bit division is not linked. */
+#if STP_SMALL_DIVISION
+int64_t stp_div64_trunc(int64_t num, int64_t den);
+#define STP_DIV64(num, den) stp_div64_trunc((int64_t)(num), (int64_t)(den))
+#else
+#define STP_DIV64(num, den) ((int64_t)(num) / (int64_t)(den))
 #endif
 
 #endif

@@ -39,8 +39,9 @@
  * view's and shadow maps' set-up, smooth vertex normals, the ray tracer;
  * polygon shading normalises through its own reciprocal square root,
  * fix_private.h, whatever this says):
- * 0 (default) exact: bit-by-bit integer square root, floor of the true root.
- * 1 fast: 8-entry-table seed plus two Newton steps, relative error < 2^-15. */
+ * 0 (default) exact: floor of the true root.
+ * 1 fast: the same reciprocal-root estimate without the final correction,
+ * rounded down within 2^-29 relative. */
 #ifndef STP_SQRT_FAST
 #define STP_SQRT_FAST 0
 #endif

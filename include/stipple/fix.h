@@ -11,8 +11,8 @@
  * to make overflow impossible.
  *
  * Rounding: mul rounds to nearest (ties away from zero); div truncates toward
- * zero; sqrt returns the floor of the exact root (STP_SQRT_FAST: within
- * 2^-15 relative).
+ * zero; sqrt returns the floor of the exact root (STP_SQRT_FAST: rounded
+ * down within 2^-29 relative, a few units of the root at most).
  */
 #ifndef STIPPLE_FIX_H
 #define STIPPLE_FIX_H

@@ -1,0 +1,217 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Private: the target's arithmetic, the bottom layer of the core.  What a
+ * target can do in one instruction decides which form of a product,
+ * quotient or bit count the core compiles, not its pointer width:
+ *
+ *   STP_HAVE_MUL64  a 32 x 32 -> 64-bit multiply (x86-64, AArch64, ARMv7-M
+ *                   and ARMv8-M Mainline: UMULL/SMULL, 32-bit ARM, RISC-V
+ *                   with M: MUL + MULHU).  Not ARMv6-M (Cortex-M0/M0+/M1),
+ *                   ARMv8-M Baseline (Cortex-M23), AVR: there a 64-bit
+ *                   product is a library call, and the core forms it from
+ *                   16-bit halves.
+ *   STP_HAVE_CLZ    a count-leading-zeros instruction (x86-64, AArch64,
+ *                   ARMv5T and later but ARMv6-M, RISC-V with Zbb); without
+ *                   it GCC's __builtin_clz is a library call, and the core
+ *                   counts with three halvings and a 16-entry table.
+ *   STP_HAVE_DIV    a 32-bit hardware divide (x86-64, AArch64, ARMv7-M,
+ *                   ARMv7-R, RISC-V with M).
+ *   STP_HAVE_DIV64  a 64-bit divide in one instruction (64-bit hosts only):
+ *                   elsewhere a 64-bit quotient is a library call of some
+ *                   hundreds of instructions, and the core divides through
+ *                   reciprocals (recip.c) or 32-bit quotients.
+ *
+ * Each is 0 or 1, found from the compiler's predefined macros and
+ * overridable with -D.  STP_WIDE_ARITH, the name the rasterizer and the
+ * shading test, is STP_HAVE_MUL64 && STP_HAVE_DIV64: "64-bit products and
+ * quotients are single instructions".  -DSTP_WIDE_ARITH=0 forces the 32-bit
+ * target arithmetic (all four capabilities 0 unless given too), so the
+ * host's tests check the code a Cortex-M0+ runs.
+ *
+ * The primitives below give the same values in every form.
+ */
+#ifndef STIPPLE_ARITH_PRIVATE_H
+#define STIPPLE_ARITH_PRIVATE_H
+
+#include <stdint.h>
+
+/* ---- capabilities ---- */
+
+#if defined(STP_WIDE_ARITH) && !STP_WIDE_ARITH
+/* forced 32-bit target arithmetic */
+#define STP_ARITH_DETECTED_ 0
+#endif
+
+#ifndef STP_HAVE_MUL64
+#if defined(STP_ARITH_DETECTED_)
+#define STP_HAVE_MUL64 0
+#elif defined(__x86_64__) || defined(_M_X64) || defined(__i386__) || defined(__aarch64__) ||       \
+    (defined(__riscv) && defined(__riscv_mul)) || defined(__ARM_ARCH_ISA_ARM) ||                \
+    (defined(__ARM_ARCH_ISA_THUMB) && __ARM_ARCH_ISA_THUMB >= 2)
+#define STP_HAVE_MUL64 1
+#elif defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
+#define STP_HAVE_MUL64 1 /* another 64-bit host */
+#else
+#define STP_HAVE_MUL64 0
+#endif
+#endif
+
+#ifndef STP_HAVE_CLZ
+#if defined(STP_ARITH_DETECTED_) || !defined(__GNUC__)
+#define STP_HAVE_CLZ 0
+#elif defined(__x86_64__) || defined(__aarch64__) || defined(__ARM_FEATURE_CLZ) ||              \
+    (defined(__riscv) && defined(__riscv_zbb))
+#define STP_HAVE_CLZ 1
+#else
+#define STP_HAVE_CLZ 0
+#endif
+#endif
+
+#ifndef STP_HAVE_DIV
+#if defined(STP_ARITH_DETECTED_)
+#define STP_HAVE_DIV 0
+#elif defined(__x86_64__) || defined(_M_X64) || defined(__i386__) || defined(__aarch64__) ||       \
+    defined(__ARM_FEATURE_IDIV) || (defined(__riscv) && defined(__riscv_div))
+#define STP_HAVE_DIV 1
+#else
+#define STP_HAVE_DIV 0
+#endif
+#endif
+
+#ifndef STP_HAVE_DIV64
+#if defined(STP_ARITH_DETECTED_)
+#define STP_HAVE_DIV64 0
+#elif defined(UINTPTR_MAX) && UINTPTR_MAX > 0xFFFFFFFFu
+#define STP_HAVE_DIV64 1
+#else
+#define STP_HAVE_DIV64 0
+#endif
+#endif
+
+#ifndef STP_WIDE_ARITH
+#define STP_WIDE_ARITH (STP_HAVE_MUL64 && STP_HAVE_DIV64)
+#endif
+
+/* ---- target helpers ---- */
+
+/* A small function forced inline where a call would cost as much as its
+ * body, except in builds for size (-Os), which keep it a call. */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define STP_HOT_INLINE static inline __attribute__((always_inline))
+#else
+#define STP_HOT_INLINE static inline
+#endif
+
+/* Constant tables of the core.  On AVR, const data is copied into RAM at
+ * start-up unless it is put in program memory and read with LPM; 384 bytes
+ * of square-root seeds are a twentieth of an ATmega2560's RAM. */
+#if defined(__AVR__)
+#include <avr/pgmspace.h>
+#define STP_TABLE PROGMEM
+#define STP_TABLE_U16(p) pgm_read_word(p)
+#else
+#define STP_TABLE
+#define STP_TABLE_U16(p) (*(p))
+#endif
+
+/* ---- products ---- */
+
+/* a b exactly for 32-bit a and b: one instruction (or two: RISC-V's MUL
+ * and MULHU) with STP_HAVE_MUL64, else four 32-bit products of 16-bit
+ * halves (ARMv6-M has no 32 x 32 -> 64 multiply; libgcc's 64-bit one costs
+ * ~40 instructions a call). */
+static inline uint64_t stp_umul32x32(uint32_t a, uint32_t b)
+{
+#if STP_HAVE_MUL64
+    return (uint64_t)a * b;
+#else
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
+    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    return ((uint64_t)(hh + (lh >> 16) + (hl >> 16) + (mid >> 16)) << 32) |
+           (uint64_t)((mid << 16) | (ll & 0xFFFFu));
+#endif
+}
+
+/* a b exactly for signed 32-bit a and b */
+static inline int64_t stp_smul32x32(int32_t a, int32_t b)
+{
+#if STP_HAVE_MUL64
+    return (int64_t)a * b;
+#else
+    uint64_t p = stp_umul32x32(a < 0 ? 0u - (uint32_t)a : (uint32_t)a,
+                               b < 0 ? 0u - (uint32_t)b : (uint32_t)b);
+    return (a < 0) != (b < 0) ? -(int64_t)p : (int64_t)p;
+#endif
+}
+
+/* floor(a b / 2^32) exactly: the high word of a 32 x 32-bit product,
+ * without the low word's 32-bit assembly where the product is formed from
+ * halves. */
+static inline uint32_t stp_umulhi32x32(uint32_t a, uint32_t b)
+{
+#if STP_HAVE_MUL64
+    return (uint32_t)(((uint64_t)a * b) >> 32);
+#else
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t lh = al * bh, hl = ah * bl;
+    uint32_t mid = ((al * bl) >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    return ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+#endif
+}
+
+/* The high word of a b for 32-bit a and b, short of floor(a b / 2^32) by
+ * at most 2 (the low halves' product and the carries out of the middle
+ * products' low halves are dropped): three 32-bit products without
+ * STP_HAVE_MUL64; exact with it.  For products whose last two units do not
+ * matter. */
+STP_HOT_INLINE uint32_t stp_umulhi32_approx(uint32_t a, uint32_t b)
+{
+#if STP_HAVE_MUL64
+    return (uint32_t)(((uint64_t)a * b) >> 32);
+#else
+    uint32_t ah = a >> 16, bh = b >> 16;
+    return ah * bh + ((ah * (b & 0xFFFFu)) >> 16) + (((a & 0xFFFFu) * bh) >> 16);
+#endif
+}
+
+/* ---- bit counts ---- */
+
+/* Significant bits of v (0 for 0, else floor(log2 v) + 1): one
+ * instruction with STP_HAVE_CLZ, else three halvings of the range and a
+ * 16-entry table (GCC's __builtin_clz would be a library call). */
+STP_HOT_INLINE int stp_bit_length32(uint32_t v)
+{
+#if STP_HAVE_CLZ
+    return v == 0 ? 0 : 32 - __builtin_clz(v);
+#else
+    static const uint16_t len4[16] STP_TABLE = {0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4};
+    int n = 0;
+    if (v >= 0x10000u) {
+        v >>= 16;
+        n = 16;
+    }
+    if (v >= 0x100u) {
+        v >>= 8;
+        n += 8;
+    }
+    if (v >= 0x10u) {
+        v >>= 4;
+        n += 4;
+    }
+    return n + (int)STP_TABLE_U16(&len4[v]);
+#endif
+}
+
+/* Number of significant bits of v (0 for 0). */
+static inline int stp_bit_length64(uint64_t v)
+{
+#if defined(__GNUC__)
+    return v == 0 ? 0 : 64 - __builtin_clzll(v);
+#else
+    uint32_t high = (uint32_t)(v >> 32);
+    return high != 0 ? 32 + stp_bit_length32(high) : stp_bit_length32((uint32_t)v);
+#endif
+}
+
+#endif
