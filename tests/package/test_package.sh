@@ -88,7 +88,7 @@ pkg-config)
         { cat "$work/log"; fail "configuring stipple with STP_CONFIG_DEFINITIONS"; }
     cmake --build "$work/configured" >"$work/log" 2>&1 || { cat "$work/log"; fail "building the configured stipple"; }
     cmake --install "$work/configured" --prefix "$work/prefix2" >"$work/log" 2>&1 || fail "installing the configured stipple"
-    nm "$work/prefix2/lib/libstipple.a" | grep -q " T stp_renderer_create_cfg_f16_v160_l2_s4_d8_q0_111111011$" ||
+    nm "$work/prefix2/lib/libstipple.a" | grep -q " T stp_renderer_create_cfg_f16_v160_l2_s4_c64_11010$" ||
         fail "the configured library is not built with STP_MAX_LIGHTS=2, STP_MAX_SEGMENTS=4, STP_WITH_SHADOWS=0"
     flags=$(PKG_CONFIG_PATH="$work/prefix2/lib/pkgconfig" pkg-config --cflags --libs stipple)
     for want in -DSTP_MAX_LIGHTS=2 -DSTP_WITH_SHADOWS=0 -DSTP_USER_CONFIG=1; do
