@@ -16,6 +16,7 @@ packages=(
     dpkg-dev                           # dpkg-deb, to unpack the test photo's package
     gnuplot-nox                        # the error-against-run-time plot
     valgrind                           # callgrind instruction counts of the torus bench
+    pmccabe                            # function length and complexity (scripts/check_shape.sh)
     clang libclang-rt-14-dev           # libFuzzer targets of the readers and the display file
     qemu-system-x86 busybox-static xz-utils gcc-12  # fbdev tests on Debian's kernel
     libusb-1.0-0-dev umockdev libumockdev-dev pkg-config  # the USB printer and its emulation
