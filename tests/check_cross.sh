@@ -13,6 +13,8 @@
 #    -mabi=ilp32): compiles, and no soft-float or hosted symbol.
 # 3. src/ and include/ mention no float, double, malloc & co. or stdio
 #    outside comments and strings.
+# 4. The shipped configurations (cmake/stipple_configurations.cmake) build
+#    for their chips: Cortex-M0+ full and minimal, ATmega2560 (avr-gcc).
 # A missing cross compiler is a failure, not a skip.  The symbol filter is
 # itself checked first on an object that uses float and malloc, so a broken
 # filter cannot pass everything.
@@ -94,6 +96,31 @@ check_target cortex-m0 arm-none-eabi-gcc arm-none-eabi-nm \
     -mcpu=cortex-m0 -mthumb -Os -ffreestanding -std=c99 -Wall -Wextra -Werror
 check_target rv32imac riscv64-unknown-elf-gcc riscv64-unknown-elf-nm \
     -march=rv32imac -mabi=ilp32 -Os -ffreestanding -std=c99 -Wall -Wextra -Werror
+
+# 4. the configurations the project ships (cmake/stipple_configurations.cmake,
+# read from there): Cortex-M0+ with every switch at its default and with
+# the least core, and the ATmega2560 (16-bit int, avr-gcc) with a compiled
+# scene's switches.  Their host libraries run the test suite on the 32-bit
+# arithmetic; here the core must build for the chip, warning-free, and need
+# no float, heap or stdio symbol.
+shipped_defines() { # NAME: the -D flags of STP_CONFIG_NAME
+    awk -v want="set(STP_CONFIG_$1" '
+        index($0, want " ") == 1 || $0 == want { on = 1 }
+        on { line = $0; sub(/^set\(STP_CONFIG_[a-z0-9_]+/, "", line); sub(/\).*/, "", line)
+             n = split(line, w, " "); for (i = 1; i <= n; i++) if (w[i] ~ /^STP_/) printf "-D%s ", w[i] }
+        on && /\)/ { exit }' "$root/cmake/stipple_configurations.cmake"
+}
+for config in m0plus_full m0plus_minimal; do
+    defs=$(shipped_defines $config)
+    [ -n "$defs" ] || fail "no STP_CONFIG_$config in cmake/stipple_configurations.cmake"
+    # shellcheck disable=SC2086 # defs: a list of -D flags
+    check_target "cortex-m0plus-$config" arm-none-eabi-gcc arm-none-eabi-nm \
+        -mcpu=cortex-m0plus -mthumb -Os -ffreestanding -std=c99 -Wall -Wextra -Werror $defs
+done
+defs=$(shipped_defines avr)
+[ -n "$defs" ] || fail "no STP_CONFIG_avr in cmake/stipple_configurations.cmake"
+# shellcheck disable=SC2086
+check_target atmega2560-avr avr-gcc avr-nm -mmcu=atmega2560 -Os -ffreestanding -std=c99 -Wall -Wextra -Werror $defs
 
 # 3. source text: strip comments and string/char literals with the
 # preprocessor's comment removal (no includes expanded), then look for words

@@ -59,5 +59,23 @@ for s in $switches; do
         passes=$((passes + 1))
     fi
 done
+# At most twelve user-facing switches (config.h's first part), each saying
+# what it removes and what that saves, with a figure in bytes.
+user=$(awk '/==== The user-facing switches/ { on = 1; next } /==== Internal switches/ { on = 0 }
+    on && /^\/\*/ { doc = "" } on { line = $0; sub(/^ *\*+ */, "", line); doc = doc " " line }
+    on && /^#ifndef STP_/ { print $2, (doc ~ /[0-9] bytes/ && doc ~ /(Saves|saves|Size)/) ? "documented" : "undocumented" }' \
+    "$src/include/stipple/config.h")
+count=$(printf '%s\n' "$user" | grep -c documented || true)
+if [ "$count" -lt 1 ] || [ "$count" -gt 12 ]; then
+    echo "FAIL: $count user-facing switches in config.h (1..12 allowed)"
+    failures=$((failures + 1))
+else
+    echo "ok: $count user-facing switches"
+    passes=$((passes + 1))
+fi
+for s in $(printf '%s\n' "$user" | awk '$2 == "undocumented" { print $1 }'); do
+    echo "FAIL: the user-facing switch $s does not give its size effect in bytes"
+    failures=$((failures + 1))
+done
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ] && [ "$passes" -gt 0 ]
