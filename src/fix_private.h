@@ -9,6 +9,22 @@
 #include "arith_private.h" /* STP_HOT_INLINE, STP_TABLE, products, bit counts */
 #include "recip_private.h" /* reciprocals and exact division */
 
+/* floor(sqrt(v)) for any 64-bit unsigned v (exact in both sqrt modes; the core's one
+ * square root, fix.c). */
+uint32_t stp_isqrt64(uint64_t v);
+
+/* Clamp a to [lo, hi]. */
+static inline stp_fix stp_fix_clamp(stp_fix a, stp_fix lo, stp_fix hi)
+{
+    return a < lo ? lo : (a > hi ? hi : a);
+}
+
+/* Saturate a 64-bit value to stp_fix's range. */
+static inline stp_fix stp_fix_sat64(int64_t v)
+{
+    return v > STP_FIX_MAX ? STP_FIX_MAX : (v < STP_FIX_MIN ? STP_FIX_MIN : (stp_fix)v);
+}
+
 /* Arithmetic shift right rounding toward minus infinity, for negative values
  * too (C99 leaves >> of a negative value to the implementation). */
 static inline int64_t stp_asr64(int64_t v, int s)

@@ -415,11 +415,93 @@ int stp_rt_cone(stp_raytracer *rt, stp_vec3 base, stp_fix base_radius, stp_vec3 
     return STP_OK;
 }
 
+/* Newell's normal (Algorithm 10.4) of a polygon as a Q30 unit vector in
+ * unit[]; 0 for a degenerate one.  In 64 bits: differences < 2^29 and sums
+ * < 2^29, so each term < 2^58 and n <= 4096 of them fit. */
+static int polygon_unit_normal(const stp_vec3 *vertices, int n, int32_t unit[3])
+{
+    int64_t nx = 0, ny = 0, nz = 0;
+    int k;
+    for (k = 0; k < n; k++) {
+        stp_vec3 p = vertices[k == 0 ? n - 1 : k - 1], v = vertices[k];
+        nx += ((int64_t)p.y - v.y) * ((int64_t)p.z + v.z);
+        ny += ((int64_t)p.z - v.z) * ((int64_t)p.x + v.x);
+        nz += ((int64_t)p.x - v.x) * ((int64_t)p.y + v.y);
+    }
+    return unit_q30(nx, ny, nz, unit);
+}
+
+/* The polygon's bounding box (one unit around its vertices) and dropped
+ * axis (the normal's largest component, for the inside test).  A polygon
+ * that is not quite planar is hit on its Newell plane inside its
+ * projection, which can lie off its vertices along the dropped axis: the
+ * box also holds each vertex moved onto the plane along that axis
+ * (|n_d| >= 1/sqrt(3), so the quotient is tame), within the coordinate
+ * limit that hit_polygon keeps to. */
+static void polygon_box(stp_rt_object *ob, const stp_vec3 *vertices, uint32_t n)
+{
+    const int32_t *unit = ob->a;
+    int64_t ax = abs64(unit[0]), ay = abs64(unit[1]), az = abs64(unit[2]);
+    uint32_t i;
+    int k, d, u, v;
+    for (k = 0; k < 3; k++) {
+        ob->lo[k] = STP_RT_COORD_LIMIT;
+        ob->hi[k] = -STP_RT_COORD_LIMIT;
+    }
+    for (i = 0; i < n; i++) {
+        const int32_t c[3] = {vertices[i].x, vertices[i].y, vertices[i].z};
+        for (k = 0; k < 3; k++) {
+            if (c[k] - 1 < ob->lo[k])
+                ob->lo[k] = c[k] - 1;
+            if (c[k] + 1 > ob->hi[k])
+                ob->hi[k] = c[k] + 1;
+        }
+    }
+    ob->flags = (uint8_t)(ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2));
+    d = ob->flags & FLAG_AXIS_MASK;
+    u = d == 0 ? 1 : 0;
+    v = d == 2 ? 1 : 2;
+    for (i = 0; i < n; i++) {
+        const int32_t c[3] = {vertices[i].x, vertices[i].y, vertices[i].z};
+        int64_t w = (ob->offset - (int64_t)unit[u] * c[u] - (int64_t)unit[v] * c[v]) / unit[d];
+        if (w < -STP_RT_COORD_LIMIT)
+            w = -STP_RT_COORD_LIMIT;
+        if (w > STP_RT_COORD_LIMIT)
+            w = STP_RT_COORD_LIMIT;
+        if (w - 1 < ob->lo[d])
+            ob->lo[d] = (int32_t)w - 1;
+        if (w + 1 > ob->hi[d])
+            ob->hi[d] = (int32_t)w + 1;
+    }
+}
+
+/* The vertex normals, as unit vectors, into out[0..n-1]: a zero normal
+ * takes the plane's, turned to the side the others point to. */
+static void polygon_vertex_normals(const int32_t unit[3], const stp_vec3 *normals, uint32_t n,
+                                   stp_vec3 *out)
+{
+    stp_vec3 plane = q30_to_vec(unit), u;
+    int64_t side = 0;
+    uint32_t i;
+    for (i = 0; i < n; i++)
+        if (stp_vec3_unity(normals[i], &u) != 0)
+            side += (int64_t)u.x * plane.x + (int64_t)u.y * plane.y + (int64_t)u.z * plane.z;
+    if (side < 0) {
+        plane.x = -plane.x;
+        plane.y = -plane.y;
+        plane.z = -plane.z;
+    }
+    for (i = 0; i < n; i++) {
+        if (stp_vec3_unity(normals[i], &u) == 0)
+            u = plane;
+        out[i] = u;
+    }
+}
+
 int stp_rt_polygon(stp_raytracer *rt, const stp_vec3 *vertices, const stp_vec3 *normals, int n,
                    uint32_t material)
 {
     stp_rt_object *ob;
-    int64_t nx = 0, ny = 0, nz = 0, ax, ay, az;
     int32_t unit[3];
     uint32_t need, i;
     int k;
@@ -430,15 +512,7 @@ int stp_rt_polygon(stp_raytracer *rt, const stp_vec3 *vertices, const stp_vec3 *
     for (k = 0; k < n; k++)
         if (!coord_ok(vertices[k]))
             return STP_ERR_ARG;
-    /* Newell (Algorithm 10.4) in 64 bits: differences < 2^29 and sums
-     * < 2^29, so each term < 2^58 and n <= 4096 of them fit */
-    for (k = 0; k < n; k++) {
-        stp_vec3 p = vertices[k == 0 ? n - 1 : k - 1], v = vertices[k];
-        nx += ((int64_t)p.y - v.y) * ((int64_t)p.z + v.z);
-        ny += ((int64_t)p.z - v.z) * ((int64_t)p.x + v.x);
-        nz += ((int64_t)p.x - v.x) * ((int64_t)p.y + v.y);
-    }
-    if (!unit_q30(nx, ny, nz, unit))
+    if (!polygon_unit_normal(vertices, n, unit))
         return STP_ERR_DEGENERATE;
     need = (uint32_t)n * (normals ? 2u : 1u);
     if (rt->points > rt->mem.point_capacity || need > rt->mem.point_capacity - rt->points)
@@ -448,70 +522,16 @@ int stp_rt_polygon(stp_raytracer *rt, const stp_vec3 *vertices, const stp_vec3 *
         return STP_ERR_FULL;
     ob->count = (uint16_t)n;
     ob->first = rt->points;
-    for (k = 0; k < 3; k++) {
+    for (k = 0; k < 3; k++)
         ob->a[k] = unit[k];
-        ob->lo[k] = STP_RT_COORD_LIMIT;
-        ob->hi[k] = -STP_RT_COORD_LIMIT;
-    }
-    for (i = 0; i < (uint32_t)n; i++) {
-        int32_t c[3];
-        c[0] = vertices[i].x;
-        c[1] = vertices[i].y;
-        c[2] = vertices[i].z;
+    for (i = 0; i < (uint32_t)n; i++)
         rt->mem.points[rt->points + i] = vertices[i];
-        for (k = 0; k < 3; k++) {
-            if (c[k] - 1 < ob->lo[k])
-                ob->lo[k] = c[k] - 1;
-            if (c[k] + 1 > ob->hi[k])
-                ob->hi[k] = c[k] + 1;
-        }
-    }
     ob->offset = (int64_t)unit[0] * vertices[0].x + (int64_t)unit[1] * vertices[0].y +
                  (int64_t)unit[2] * vertices[0].z;
-    /* the inside test drops the normal's largest axis */
-    ax = abs64(unit[0]);
-    ay = abs64(unit[1]);
-    az = abs64(unit[2]);
-    ob->flags = (uint8_t)(ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2));
-    {
-        /* A polygon that is not quite planar is hit on its Newell plane
-         * inside its projection, which can lie off its vertices along the
-         * dropped axis: the box also holds each vertex moved onto the plane
-         * along that axis (|n_d| >= 1/sqrt(3), so the quotient is tame),
-         * within the coordinate limit that hit_polygon keeps to. */
-        int d = ob->flags & FLAG_AXIS_MASK, u = d == 0 ? 1 : 0, v = d == 2 ? 1 : 2;
-        for (i = 0; i < (uint32_t)n; i++) {
-            const int32_t *c = (const int32_t *)&vertices[i];
-            int64_t w = (ob->offset - (int64_t)unit[u] * c[u] - (int64_t)unit[v] * c[v]) / unit[d];
-            if (w < -STP_RT_COORD_LIMIT)
-                w = -STP_RT_COORD_LIMIT;
-            if (w > STP_RT_COORD_LIMIT)
-                w = STP_RT_COORD_LIMIT;
-            if (w - 1 < ob->lo[d])
-                ob->lo[d] = (int32_t)w - 1;
-            if (w + 1 > ob->hi[d])
-                ob->hi[d] = (int32_t)w + 1;
-        }
-    }
+    polygon_box(ob, vertices, (uint32_t)n);
     if (normals) {
-        stp_vec3 plane = q30_to_vec(unit), u;
-        int64_t side = 0;
         ob->flags |= FLAG_NORMALS;
-        /* a zero normal takes the plane's, turned to the side the others
-         * point to */
-        for (i = 0; i < (uint32_t)n; i++)
-            if (stp_vec3_unity(normals[i], &u) != 0)
-                side += (int64_t)u.x * plane.x + (int64_t)u.y * plane.y + (int64_t)u.z * plane.z;
-        if (side < 0) {
-            plane.x = -plane.x;
-            plane.y = -plane.y;
-            plane.z = -plane.z;
-        }
-        for (i = 0; i < (uint32_t)n; i++) {
-            if (stp_vec3_unity(normals[i], &u) == 0)
-                u = plane;
-            rt->mem.points[rt->points + (uint32_t)n + i] = u;
-        }
+        polygon_vertex_normals(unit, normals, (uint32_t)n, rt->mem.points + rt->points + (uint32_t)n);
     }
     rt->points += need;
     commit_object(rt);
@@ -615,16 +635,16 @@ static int hit_polygon(const stp_raytracer *rt, const stp_rt_object *ob, const r
  *   C = |w_perp|^2 - R0^2,  R0 = r0 + k w.u,
  * its roots taken as q / A and C / q with q = -(B + sign(B) h), which
  * loses nothing when A is tiny (a ray along a cylinder's side). */
-static int hit_cone(const stp_rt_object *ob, const rt_ray *ray, int64_t tmin, int64_t *t)
+/* hit_cone's start: where the ray enters the cone's bounding sphere (*t0,
+ * not before 0) and the scale 2^-s of its lengths; 0 when the ray misses
+ * the sphere or leaves it before tmin. */
+static int cone_start(const stp_rt_object *ob, const rt_ray *ray, int64_t tmin, int64_t *t0,
+                      int *s)
 {
-    int64_t cen[3], oc[3], tc, pp = 0, bound = ob->bound, t0, w[3], wa, da, wp[3], dp[3];
-    int64_t r0, len, R0, kd, A, B, C, disc, h, q, roots[2];
-    int64_t dpp = 0, wpdp = 0, wpp = 0;
-    int i, s = 0, found = 0;
-    for (i = 0; i < 3; i++) {
-        cen[i] = ob->a[i] + round_shift((int64_t)ob->length * ob->b[i], 31);
-        oc[i] = cen[i] - ray->o[i];
-    }
+    int64_t oc[3], tc, pp = 0, bound = ob->bound, k1;
+    int i;
+    for (i = 0; i < 3; i++)
+        oc[i] = ob->a[i] + round_shift((int64_t)ob->length * ob->b[i], 31) - ray->o[i];
     tc = round_shift(dot_pd(oc, ray->d), 30);
     for (i = 0; i < 3; i++) {
         int64_t p = oc[i] - round_shift(tc * ray->d[i], 30);
@@ -632,13 +652,46 @@ static int hit_cone(const stp_rt_object *ob, const rt_ray *ray, int64_t tmin, in
     }
     if (pp > bound * bound || tc + bound <= tmin)
         return 0;
-    t0 = tc - bound > 0 ? tc - bound : 0;
-    {
-        /* size (1 + |k|)^2 below 2^20 bounds R0 |k| and B by 2^22 */
-        int64_t k1 = (abs64(ob->slope) >> 24) + 2;
-        while ((bound >> s) * k1 * k1 >= ((int64_t)1 << 20))
-            s++;
+    *t0 = tc - bound > 0 ? tc - bound : 0;
+    /* size (1 + |k|)^2 below 2^20 bounds R0 |k| and B by 2^22 */
+    k1 = (abs64(ob->slope) >> 24) + 2;
+    *s = 0;
+    while ((bound >> *s) * k1 * k1 >= ((int64_t)1 << 20))
+        (*s)++;
+    return 1;
+}
+
+/* The nearer of the quadratic's roots (scaled by 2^-s, from t0) beyond
+ * tmin whose point lies between the cone's ends (axial position wa + t da
+ * in [0, len]): 1 and *t, or 0. */
+static int cone_nearest_root(const int64_t roots[2], int64_t t0, int s, int64_t wa, int64_t da,
+                             int64_t len, int64_t tmin, int64_t *t)
+{
+    int i, found = 0;
+    for (i = 0; i < 2; i++) {
+        int64_t ts = roots[i], tt, axial;
+        if (ts < 0 || ts > (RT_FAR >> s))
+            continue;
+        tt = t0 + ts * ((int64_t)1 << s);
+        if (tt <= tmin || tt >= RT_FAR || (found && tt >= *t))
+            continue;
+        axial = wa + round_shift(ts * da, 30);
+        if (axial < 0 || axial > len)
+            continue;
+        *t = tt;
+        found = 1;
     }
+    return found;
+}
+
+static int hit_cone(const stp_rt_object *ob, const rt_ray *ray, int64_t tmin, int64_t *t)
+{
+    int64_t t0 = 0, w[3], wa, da, wp[3], dp[3];
+    int64_t r0, len, R0, kd, A, B, C, disc, h, q, roots[2];
+    int64_t dpp = 0, wpdp = 0, wpp = 0;
+    int i, s = 0;
+    if (!cone_start(ob, ray, tmin, &t0, &s))
+        return 0;
     for (i = 0; i < 3; i++)
         w[i] = (int64_t)ray->o[i] + round_shift(t0 * ray->d[i], 30) - ob->a[i];
     wa = round_shift(dot_pd(w, ob->b), 30);
@@ -667,20 +720,7 @@ static int hit_cone(const stp_rt_object *ob, const rt_ray *ray, int64_t tmin, in
         return 0;
     roots[0] = A != 0 ? (q * Q30_ONE) / A : RT_FAR;
     roots[1] = C / q;
-    for (i = 0; i < 2; i++) {
-        int64_t ts = roots[i], tt, axial;
-        if (ts < 0 || ts > (RT_FAR >> s))
-            continue;
-        tt = t0 + ts * ((int64_t)1 << s);
-        if (tt <= tmin || tt >= RT_FAR || (found && tt >= *t))
-            continue;
-        axial = wa + round_shift(ts * da, 30);
-        if (axial < 0 || axial > len)
-            continue;
-        *t = tt;
-        found = 1;
-    }
-    return found;
+    return cone_nearest_root(roots, t0, s, wa, da, len, tmin, t);
 }
 
 /* The object's outward (spheres, cones) or plane (polygons) unit normal at
@@ -962,12 +1002,6 @@ int stp_rt_build(stp_raytracer *rt)
     }
     rt->has_hierarchy = 1;
     return STP_OK;
-}
-
-void stp_rt_drop_hierarchy(stp_raytracer *rt)
-{
-    if (rt)
-        rt->has_hierarchy = 0;
 }
 
 /* ---- casting ------------------------------------------------------------ */
@@ -1268,30 +1302,18 @@ static void secondary(stp_raytracer *rt, const rt_hit *h, const int32_t n_out[3]
 }
 
 /* The light the surface hit by `ray` at h sends back along it. */
-static void shade_hit(stp_raytracer *rt, const rt_ray *ray, const rt_hit *h, int depth,
-                      stp_fix weight, int parallel_primary, const rt_colour *background,
-                      rt_colour *out)
+/* The normals at a hit: n_out the surface's outward (geometric) normal,
+ * n_geo the same turned to face the ray, n_shade the shading normal (a
+ * patch's interpolated one, else n_out) turned to face the ray; Q30. */
+static void hit_normals(const stp_raytracer *rt, const stp_rt_object *ob, const rt_ray *ray,
+                        const rt_hit *h, int32_t n_out[3], int32_t n_geo[3], int32_t n_shade[3])
 {
-    const stp_rt_object *ob = &rt->mem.objects[h->object];
-    const stp_rt_material *mat = &rt->materials[ob->material];
-    int32_t n_out[3], n_geo[3], n_shade[3];
-    stp_lighting lit = rt->lighting;
-    stp_vec3 point, normal, eye, back;
-    int j, c, channels = rt->colour ? 3 : 1;
-    int64_t cos_i;
-    stp_fix w_r = 0, w_t = 0, fres;
-    int patch = ob->kind == KIND_POLYGON && (ob->flags & FLAG_NORMALS);
+    int j;
     geometric_normal(ob, h->p, n_out);
-    n_geo[0] = n_out[0];
-    n_geo[1] = n_out[1];
-    n_geo[2] = n_out[2];
-    if (patch)
+    for (j = 0; j < 3; j++)
+        n_geo[j] = n_shade[j] = n_out[j];
+    if (ob->kind == KIND_POLYGON && (ob->flags & FLAG_NORMALS))
         patch_normal(rt, ob, h->p, n_shade);
-    else {
-        n_shade[0] = n_out[0];
-        n_shade[1] = n_out[1];
-        n_shade[2] = n_out[2];
-    }
     /* two-sided: both normals face the ray */
     if (dot_dd(n_geo, ray->d) > 0)
         for (j = 0; j < 3; j++)
@@ -1299,19 +1321,23 @@ static void shade_hit(stp_raytracer *rt, const rt_ray *ray, const rt_hit *h, int
     if (dot_dd(n_shade, ray->d) > 0)
         for (j = 0; j < 3; j++)
             n_shade[j] = -n_shade[j];
-    point.x = h->p[0];
-    point.y = h->p[1];
-    point.z = h->p[2];
-    normal = q30_to_vec(n_shade);
-    /* shadows: each light reaching the face is dimmed by what lies between */
-    for (j = 0; j < lit.count; j++) {
-        stp_light *L = &lit.lights[j];
+}
+
+/* Shadows: each light of *lit reaching the hit is dimmed by what lies
+ * between (its power times the visibility along a shadow ray). */
+static void dim_by_shadows(stp_raytracer *rt, const rt_hit *h, const int32_t n_out[3],
+                           const int32_t n_geo[3], const int32_t n_shade[3], int patch,
+                           stp_lighting *lit)
+{
+    int j;
+    for (j = 0; j < lit->count; j++) {
+        stp_light *L = &lit->lights[j];
         int64_t lv[3], dist2, dist;
         rt_ray sray;
         int32_t ld[3];
-        lv[0] = (int64_t)L->position.x - point.x;
-        lv[1] = (int64_t)L->position.y - point.y;
-        lv[2] = (int64_t)L->position.z - point.z;
+        lv[0] = (int64_t)L->position.x - h->p[0];
+        lv[1] = (int64_t)L->position.y - h->p[1];
+        lv[2] = (int64_t)L->position.z - h->p[2];
         if (dot_pd(lv, n_shade) <= 0 || !unit_q30(lv[0], lv[1], lv[2], ld))
             continue; /* no term from this light: nothing to test */
         /* a patch's ray leaves on the side its shading normal (which faces
@@ -1326,6 +1352,87 @@ static void shade_hit(stp_raytracer *rt, const rt_ray *ray, const rt_hit *h, int
         L->power = stp_fix_mul(L->power, visibility(rt, &sray, dist, skip_for(rt, h->object, n_out, ld),
                                              patch ? h->object : NO_SKIP));
     }
+}
+
+/* The refracted direction through a sphere's surface (Snell, 10.19) into
+ * tdir (Q30): 1; 0 for total internal reflection; -1 when it has no
+ * direction.  cos_i = -d.n_shade > 0; n the material's index. */
+static int refracted(const rt_ray *ray, const int32_t n_out[3], const int32_t n_shade[3],
+                     int64_t cos_i, stp_fix refraction, int32_t tdir[3])
+{
+    /* eta = n1 / n2; entering when the ray meets the outward normal head on */
+    int entering = dot_dd(ray->d, n_out) < 0;
+    int64_t n = refraction > 0 ? refraction : 1;
+    int64_t eta = entering ? ((int64_t)ONE << 30) / n : (n << 30) / ONE; /* Q30 */
+    int64_t sin2 = Q30_ONE - round_shift(cos_i * cos_i, 30);
+    int64_t k = Q30_ONE - mul_shift(mul_shift(eta, eta, 30), sin2, 30);
+    int64_t root, m, v[3];
+    int j;
+    if (k < 0)
+        return 0;
+    root = (int64_t)stp_isqrt64((uint64_t)k << 30); /* Q30 */
+    m = mul_shift(eta, cos_i, 30) - root;
+    for (j = 0; j < 3; j++)
+        v[j] = mul_shift(eta, ray->d[j], 30) + mul_shift(m, n_shade[j], 30);
+    return unit_q30(v[0], v[1], v[2], tdir) ? 1 : -1;
+}
+
+/* The reflected and transmitted rays of a hit, weighted by Fresnel's F
+ * with c = E.N (10.22), added to *out. */
+static void reflect_and_transmit(stp_raytracer *rt, const rt_ray *ray, const rt_hit *h,
+                                 const int32_t n_out[3], const int32_t n_geo[3],
+                                 const int32_t n_shade[3], int depth, stp_fix weight,
+                                 const rt_colour *background, rt_colour *out)
+{
+    const stp_rt_object *ob = &rt->mem.objects[h->object];
+    const stp_rt_material *mat = &rt->materials[ob->material];
+    int64_t cos_i = -dot_dd(ray->d, n_shade); /* > 0: N faces the ray */
+    stp_fix fres = stp_fresnel((stp_fix)round_shift(cos_i, 30 - F), mat->surface.refraction);
+    stp_fix w_r = mat->surface.specular > 0 ? stp_fix_mul(mat->surface.specular, fres) : 0;
+    stp_fix w_t = mat->transmission > 0 ? stp_fix_mul(mat->transmission, ONE - fres) : 0;
+    int32_t tdir[3] = {ray->d[0], ray->d[1], ray->d[2]};
+    int transmit = w_t > 0 && stp_fix_mul(weight, w_t) >= rt->min_weight;
+    if (transmit && ob->kind == KIND_SPHERE) {
+        int through = refracted(ray, n_out, n_shade, cos_i, mat->surface.refraction, tdir);
+        if (through == 0) {
+            /* total internal reflection: the share goes to the mirror */
+            w_r = stp_fix_add(w_r, w_t);
+            w_t = 0;
+        }
+        transmit = through > 0;
+    }
+    if (w_r > 0 && stp_fix_mul(weight, w_r) >= rt->min_weight) {
+        int64_t dn = dot_dd(ray->d, n_shade), vv[3];
+        int32_t rdir[3];
+        int j;
+        for (j = 0; j < 3; j++)
+            vv[j] = ray->d[j] - round_shift(2 * dn * n_shade[j], 30);
+        if (unit_q30(vv[0], vv[1], vv[2], rdir))
+            secondary(rt, h, n_out, n_geo, 1, rdir, depth, weight, w_r, mat->absorption, background,
+                      out);
+    }
+    if (transmit)
+        secondary(rt, h, n_out, n_geo, -1, tdir, depth, weight, w_t, mat->absorption, background,
+                  out);
+}
+
+static void shade_hit(stp_raytracer *rt, const rt_ray *ray, const rt_hit *h, int depth,
+                      stp_fix weight, int parallel_primary, const rt_colour *background,
+                      rt_colour *out)
+{
+    const stp_rt_object *ob = &rt->mem.objects[h->object];
+    const stp_rt_material *mat = &rt->materials[ob->material];
+    int32_t n_out[3], n_geo[3], n_shade[3];
+    stp_lighting lit = rt->lighting;
+    stp_vec3 point, normal, eye, back;
+    int c, channels = rt->colour ? 3 : 1;
+    hit_normals(rt, ob, ray, h, n_out, n_geo, n_shade);
+    dim_by_shadows(rt, h, n_out, n_geo, n_shade, ob->kind == KIND_POLYGON && (ob->flags & FLAG_NORMALS),
+                   &lit);
+    point.x = h->p[0];
+    point.y = h->p[1];
+    point.z = h->p[2];
+    normal = q30_to_vec(n_shade);
     if (parallel_primary) {
         eye = point;
         back.x = (stp_fix)-round_shift(ray->d[0], 30 - F);
@@ -1344,61 +1451,8 @@ static void shade_hit(stp_raytracer *rt, const rt_ray *ray, const rt_hit *h, int
     else
 #endif
         out->c[0] = stp_shade_point(&lit, &mat->surface, normal, point, eye, parallel_primary, back);
-
-    if (depth >= rt->max_depth)
-        goto done;
-    /* reflection and refraction weights: F with c = E.N (10.22) */
-    cos_i = -dot_dd(ray->d, n_shade); /* > 0: N faces the ray */
-    fres = stp_fresnel((stp_fix)round_shift(cos_i, 30 - F), mat->surface.refraction);
-    if (mat->surface.specular > 0)
-        w_r = stp_fix_mul(mat->surface.specular, fres);
-    if (mat->transmission > 0)
-        w_t = stp_fix_mul(mat->transmission, ONE - fres);
-    {
-        int32_t tdir[3];
-        int transmit = w_t > 0 && stp_fix_mul(weight, w_t) >= rt->min_weight;
-        if (transmit) {
-            tdir[0] = ray->d[0];
-            tdir[1] = ray->d[1];
-            tdir[2] = ray->d[2];
-            if (ob->kind == KIND_SPHERE) {
-                /* Snell (10.19): eta = n1 / n2; entering when the ray meets
-                 * the outward normal head on */
-                int entering = dot_dd(ray->d, n_out) < 0;
-                int64_t n = mat->surface.refraction > 0 ? mat->surface.refraction : 1;
-                int64_t eta = entering ? ((int64_t)ONE << 30) / n : (n << 30) / ONE; /* Q30 */
-                int64_t sin2 = Q30_ONE - round_shift(cos_i * cos_i, 30);
-                int64_t k = Q30_ONE - mul_shift(mul_shift(eta, eta, 30), sin2, 30);
-                if (k < 0) {
-                    /* total internal reflection: the share goes to the mirror */
-                    w_r = stp_fix_add(w_r, w_t);
-                    w_t = 0;
-                    transmit = 0;
-                } else {
-                    int64_t root = (int64_t)stp_isqrt64((uint64_t)k << 30); /* Q30 */
-                    int64_t m = mul_shift(eta, cos_i, 30) - root;
-                    int64_t v[3];
-                    for (j = 0; j < 3; j++)
-                        v[j] = mul_shift(eta, ray->d[j], 30) + mul_shift(m, n_shade[j], 30);
-                    if (!unit_q30(v[0], v[1], v[2], tdir))
-                        transmit = 0;
-                }
-            }
-        }
-        if (w_r > 0 && stp_fix_mul(weight, w_r) >= rt->min_weight) {
-            int64_t dn = dot_dd(ray->d, n_shade), vv[3];
-            int32_t rdir[3];
-            for (j = 0; j < 3; j++)
-                vv[j] = ray->d[j] - round_shift(2 * dn * n_shade[j], 30);
-            if (unit_q30(vv[0], vv[1], vv[2], rdir))
-                secondary(rt, h, n_out, n_geo, 1, rdir, depth, weight, w_r, mat->absorption,
-                          background, out);
-        }
-        if (transmit)
-            secondary(rt, h, n_out, n_geo, -1, tdir, depth, weight, w_t, mat->absorption,
-                      background, out);
-    }
-done:
+    if (depth < rt->max_depth)
+        reflect_and_transmit(rt, ray, h, n_out, n_geo, n_shade, depth, weight, background, out);
     for (c = 0; c < channels; c++)
         out->c[c] = stp_fix_clamp(out->c[c], 0, ONE);
 }
@@ -1510,36 +1564,72 @@ int stp_rt_trace_pixel(stp_raytracer *rt, uint32_t x, uint32_t y, const stp_fix 
     return STP_OK;
 }
 
+/* The checks of stp_rt_render's arguments; *drawn the format rows are
+ * traced in (GREY8 under error diffusion) and *stride its row bytes. */
+static int render_args(const stp_raytracer *rt, const stp_port *port, const stp_output *output,
+                       const uint8_t *band, size_t band_size, uint32_t band_rows,
+                       stp_pixel_format *drawn, size_t *stride)
+{
+    if (rt == 0 || port == 0 || output == 0 || band == 0 || port->flush == 0)
+        return STP_ERR_ARG;
+    if (port->width != rt->width || port->height != rt->height)
+        return STP_ERR_ARG;
+    *drawn = port->format;
+    if (output->diffusion && port->format == STP_PIXEL_MONO1) {
+        int status = stp_diffusion_check(output->diffusion, port->width);
+        if (status != STP_OK)
+            return status;
+        *drawn = STP_PIXEL_GREY8;
+    }
+    *stride = stp_row_bytes(*drawn, port->width);
+    if (*stride == 0 || band_rows < 1 || band_rows > rt->height)
+        return STP_ERR_ARG;
+    if (band_size < *stride * band_rows)
+        return STP_ERR_MEMORY;
+    if (port->format == STP_PIXEL_STYLE8 && output->styles == 0 && rt->levels > 255)
+        return STP_ERR_ARG;
+    return check_materials(rt) != STP_OK ? STP_ERR_ARG : STP_OK;
+}
+
+/* Trace row y into row (drawn format; the port's format says whether
+ * colour is kept) and diffuse it when drawn differs from the port's. */
+static void render_row(stp_raytracer *rt, const stp_port *port, const stp_output *output,
+                       const stp_cell *cell, const rt_colour *bg, stp_pixel_format drawn,
+                       size_t stride, uint32_t y, uint8_t *row)
+{
+    uint32_t x;
+    int c;
+    if (drawn == STP_PIXEL_MONO1)
+        row[stride - 1] = 0; /* padding bits past the width */
+    for (x = 0; x < rt->width; x++) {
+        rt_colour v;
+        trace_pixel(rt, x, y, bg, &v);
+        if (port->format == STP_PIXEL_RGB888 && rt->colour) {
+            for (c = 0; c < 3; c++)
+                row[3 * x + (uint32_t)c] =
+                    stp_output_level(output, rt->levels, stp_intensity_index(v.c[c], rt->levels));
+        } else {
+            stp_fix grey = rt->colour ? stp_shade_luminance(v.c) : v.c[0];
+            stp_output_put_shade(row, drawn, x, y, output, cell, rt->levels, grey);
+        }
+    }
+    if (drawn != port->format)
+        stp_diffuse_row(output->diffusion, row, rt->width, y);
+}
+
 int stp_rt_render(stp_raytracer *rt, stp_port *port, const stp_output *output, uint8_t *band,
                   size_t band_size, uint32_t band_rows)
 {
     stp_cell default_cell;
     const stp_cell *cell;
     rt_colour bg;
-    size_t stride;
+    size_t stride = 0;
     uint32_t y0;
     int c;
-    stp_pixel_format drawn; /* error diffusion: rows are traced as GREY8 */
-    if (rt == 0 || port == 0 || output == 0 || band == 0 || port->flush == 0)
-        return STP_ERR_ARG;
-    if (port->width != rt->width || port->height != rt->height)
-        return STP_ERR_ARG;
-    drawn = port->format;
-    if (output->diffusion && port->format == STP_PIXEL_MONO1) {
-        int status = stp_diffusion_check(output->diffusion, port->width);
-        if (status != STP_OK)
-            return status;
-        drawn = STP_PIXEL_GREY8;
-    }
-    stride = stp_row_bytes(drawn, port->width);
-    if (stride == 0 || band_rows < 1 || band_rows > rt->height)
-        return STP_ERR_ARG;
-    if (band_size < stride * band_rows)
-        return STP_ERR_MEMORY;
-    if (port->format == STP_PIXEL_STYLE8 && output->styles == 0 && rt->levels > 255)
-        return STP_ERR_ARG;
-    if (check_materials(rt) != STP_OK)
-        return STP_ERR_ARG;
+    stp_pixel_format drawn = STP_PIXEL_MONO1;
+    int status = render_args(rt, port, output, band, band_size, band_rows, &drawn, &stride);
+    if (status != STP_OK)
+        return status;
     if (output->cell) {
         cell = output->cell;
     } else {
@@ -1547,32 +1637,13 @@ int stp_rt_render(stp_raytracer *rt, stp_port *port, const stp_output *output, u
         cell = &default_cell;
     }
     for (c = 0; c < 3; c++)
-        bg.c[c] = stp_fix_clamp(output->background, 0, ONE);
-    if (rt->colour && output->background_colour)
-        for (c = 0; c < 3; c++)
-            bg.c[c] = stp_fix_clamp(output->background_colour[c], 0, ONE);
+        bg.c[c] = stp_fix_clamp(rt->colour && output->background_colour ? output->background_colour[c]
+                                                                          : output->background,
+                                0, ONE);
     for (y0 = 0; y0 < rt->height; y0 += band_rows) {
-        uint32_t rows = rt->height - y0 < band_rows ? rt->height - y0 : band_rows, y, x;
-        for (y = y0; y < y0 + rows; y++) {
-            uint8_t *row = band + (size_t)(y - y0) * stride;
-            if (drawn == STP_PIXEL_MONO1)
-                row[stride - 1] = 0; /* padding bits past the width */
-            for (x = 0; x < rt->width; x++) {
-                rt_colour v;
-                stp_fix grey;
-                trace_pixel(rt, x, y, &bg, &v);
-                grey = rt->colour ? stp_shade_luminance(v.c) : v.c[0];
-                if (port->format == STP_PIXEL_RGB888 && rt->colour) {
-                    for (c = 0; c < 3; c++)
-                        row[3 * x + (uint32_t)c] = stp_output_level(
-                            output, rt->levels, stp_intensity_index(v.c[c], rt->levels));
-                } else {
-                    stp_output_put_shade(row, drawn, x, y, output, cell, rt->levels, grey);
-                }
-            }
-            if (drawn != port->format)
-                stp_diffuse_row(output->diffusion, row, rt->width, y);
-        }
+        uint32_t rows = rt->height - y0 < band_rows ? rt->height - y0 : band_rows, y;
+        for (y = y0; y < y0 + rows; y++)
+            render_row(rt, port, output, cell, &bg, drawn, stride, y, band + (size_t)(y - y0) * stride);
         if (port->flush(port, y0, rows, band, stride) < 0)
             return STP_ERR_PORT;
     }

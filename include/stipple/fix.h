@@ -52,9 +52,6 @@ stp_fix stp_fix_div(stp_fix a, stp_fix b);
 /* Square root of a >= 0 (a < 0 gives 0).  Error: see the file comment. */
 stp_fix stp_fix_sqrt(stp_fix a);
 
-/* floor(sqrt(v)) for any 64-bit unsigned v (exact in both sqrt modes). */
-uint32_t stp_isqrt64(uint64_t v);
-
 /* Square root of a 64-bit value v holding a number with 2F fractional bits
  * (a product of two stp_fix), returned with F fractional bits, saturated. */
 stp_fix stp_fix_sqrt_wide(int64_t v);
@@ -71,18 +68,6 @@ stp_fix stp_fix_pow(stp_fix base, stp_fix e);
 /* sin and cos of an angle in degrees (any value), absolute error < 2^-14. */
 stp_fix stp_fix_sin_deg(stp_fix degrees);
 stp_fix stp_fix_cos_deg(stp_fix degrees);
-
-/* Clamp a to [lo, hi]. */
-static inline stp_fix stp_fix_clamp(stp_fix a, stp_fix lo, stp_fix hi)
-{
-    return a < lo ? lo : (a > hi ? hi : a);
-}
-
-/* Saturate a 64-bit value to stp_fix's range. */
-static inline stp_fix stp_fix_sat64(int64_t v)
-{
-    return v > STP_FIX_MAX ? STP_FIX_MAX : (v < STP_FIX_MIN ? STP_FIX_MIN : (stp_fix)v);
-}
 
 /* Three-component vector of stp_fix. */
 typedef struct stp_vec3 {

@@ -221,9 +221,8 @@ uint32_t stp_rt_object_count(const stp_raytracer *rt);
 /* Build the bounding-volume hierarchy over the objects (median split along
  * the longest axis, leaves of at most 4): O(n log n).  Without it every ray
  * tests every object.  STP_ERR_MEMORY when node_capacity < 2n - 1 or no
- * order array.  stp_rt_drop_hierarchy goes back to testing every object. */
+ * order array. */
 int stp_rt_build(stp_raytracer *rt);
-void stp_rt_drop_hierarchy(stp_raytracer *rt);
 
 /* Counters since creation or the last reset (for benchmarks). */
 typedef struct stp_rt_stats {
