@@ -175,6 +175,18 @@ STP_HOT_INLINE uint32_t stp_umulhi32_approx(uint32_t a, uint32_t b)
 #endif
 }
 
+/* a b for operands held in 64-bit (or narrower) variables whose values
+ * are known to fit 32 bits: on 64-bit hosts C's product of the variables
+ * as they are (no narrowing instruction), elsewhere stp_smul32x32 /
+ * stp_umul32x32 of their low words (one UMULL on a Cortex-M3). */
+#if STP_WIDE_ARITH
+#define STP_SMUL_FIT32(a, b) ((int64_t)(a) * (int64_t)(b))
+#define STP_UMUL_FIT32(a, b) ((uint64_t)(a) * (uint64_t)(b))
+#else
+#define STP_SMUL_FIT32(a, b) stp_smul32x32((int32_t)(a), (int32_t)(b))
+#define STP_UMUL_FIT32(a, b) stp_umul32x32((uint32_t)(a), (uint32_t)(b))
+#endif
+
 /* ---- bit counts ---- */
 
 /* Significant bits of v (0 for 0, else floor(log2 v) + 1): one

@@ -318,9 +318,9 @@ static inline uint64_t rsqrt_q30(uint32_t m)
 #if STP_HAVE_MUL64
     for (k = 0; k < 2; k++) {
         /* y < 2^31, y2 and my2 near 2^30: 32 x 32 -> 64 products */
-        uint32_t y2 = (uint32_t)(stp_umul32x32((uint32_t)y, (uint32_t)y) >> 30);
-        uint32_t my2 = (uint32_t)(stp_umul32x32(m, y2) >> 30);
-        y = stp_umul32x32((uint32_t)y, ((uint32_t)3 << 30) - my2) >> 31;
+        uint64_t y2 = STP_UMUL_FIT32(y, y) >> 30;
+        uint64_t my2 = STP_UMUL_FIT32(m, y2) >> 30;
+        y = STP_UMUL_FIT32(y, ((uint64_t)3 << 30) - my2) >> 31;
     }
 #else
     /* the same floors in 32-bit words: Newton approaches 1/sqrt from
@@ -413,8 +413,7 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
     }
     /* |x|, |y|, |z| <= 2^30 now: exact 32 x 32 products */
 #if STP_HAVE_MUL64
-    s = (uint64_t)stp_smul32x32((int32_t)x, (int32_t)x) + (uint64_t)stp_smul32x32((int32_t)y, (int32_t)y) +
-        (uint64_t)stp_smul32x32((int32_t)z, (int32_t)z);
+    s = (uint64_t)STP_SMUL_FIT32(x, x) + (uint64_t)STP_SMUL_FIT32(y, y) + (uint64_t)STP_SMUL_FIT32(z, z);
 #else
     s = square30(abs32((int32_t)x)) + square30(abs32((int32_t)y)) + square30(abs32((int32_t)z));
 #endif
@@ -427,12 +426,12 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
 #if STP_HAVE_MUL64
     {
         const int64_t half = (int64_t)1 << (e - 1);
-        out->x = (int32_t)floor_shift(stp_smul32x32((int32_t)x, (int32_t)inv) + half, e);
-        out->y = (int32_t)floor_shift(stp_smul32x32((int32_t)y, (int32_t)inv) + half, e);
-        out->z = (int32_t)floor_shift(stp_smul32x32((int32_t)z, (int32_t)inv) + half, e);
+        out->x = (int32_t)floor_shift(STP_SMUL_FIT32(x, inv) + half, e);
+        out->y = (int32_t)floor_shift(STP_SMUL_FIT32(y, inv) + half, e);
+        out->z = (int32_t)floor_shift(STP_SMUL_FIT32(z, inv) + half, e);
     }
     /* |v| scaled = s / sqrt(s): s >> 30 < 2^32 times inv < 2^31 */
-    len = stp_umul32x32((uint32_t)(s >> 30), (uint32_t)inv) >> e;
+    len = STP_UMUL_FIT32(s >> 30, inv) >> e;
 #else
     out->x = round_unit((int32_t)x, (uint32_t)inv, e);
     out->y = round_unit((int32_t)y, (uint32_t)inv, e);
@@ -459,6 +458,6 @@ uint32_t stp_sqrt64_fast(uint64_t v)
     inv = rsqrt64(v, &e); /* sets e: a statement of its own */
     /* sqrt(v) = v / sqrt(v) = m 2^sh inv 2^-e: m < 2^32, inv <= 2^30;
      * e - sh = 45 - sh/2 > 0 */
-    r = stp_umul32x32((uint32_t)m, (uint32_t)inv) >> (e - sh);
+    r = STP_UMUL_FIT32(m, inv) >> (e - sh);
     return r > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)r;
 }
