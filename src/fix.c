@@ -54,17 +54,21 @@ stp_fix stp_fix_div(stp_fix a, stp_fix b)
 
 uint32_t stp_isqrt64(uint64_t v)
 {
-    /* The core's one square root (stp_sqrt64_fast: a table seed and two
-     * Newton steps of the reciprocal root, no division) made the exact
-     * floor: its estimate is within 2^-29 relative, so a few units at most
-     * from floor(sqrt(v)), and each step up or down is checked with an
-     * exact 32 x 32 -> 64 product. */
-    uint32_t r = stp_sqrt64_fast(v);
-    while (r != 0 && stp_umul32x32(r, r) > v)
-        r--;
-    while (r != 0xFFFFFFFFu && stp_umul32x32(r + 1u, r + 1u) <= v)
-        r++;
-    return r;
+    /* Digit-by-digit (restoring) square root: exact floor, 32 steps, only
+     * shifts, adds and compares, so it costs the same on every core. */
+    uint64_t root = 0, bit = (uint64_t)1 << 62;
+    while (bit > v)
+        bit >>= 2;
+    while (bit != 0) {
+        if (v >= root + bit) {
+            v -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    return (uint32_t)root;
 }
 
 #if STP_SQRT_FAST

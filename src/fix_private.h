@@ -9,8 +9,7 @@
 #include "arith_private.h" /* STP_HOT_INLINE, STP_TABLE, products, bit counts */
 #include "recip_private.h" /* reciprocals and exact division */
 
-/* floor(sqrt(v)) for any 64-bit unsigned v (exact in both sqrt modes; the core's one
- * square root, fix.c). */
+/* floor(sqrt(v)) for any 64-bit unsigned v (exact in both sqrt modes). */
 uint32_t stp_isqrt64(uint64_t v);
 
 /* Clamp a to [lo, hi]. */
