@@ -8,6 +8,7 @@ packages=(
     libcmocka-dev                      # the test framework
     libpng-dev help2man                # PNG in and out; the man page from --help
     libgif-dev                         # animated GIF output (stipple animate; optional)
+    libjpeg62-turbo-dev                # JPEG input (stipple dither; optional)
     netpbm                             # pamvalidate and friends, for the outputs
     imagemagick                        # the reference for the Bayer cells
     gcc-arm-none-eabi binutils-arm-none-eabi  # the Cortex-M0 check of the core

@@ -203,7 +203,9 @@ int stp_tool_apply_option(int code, const char *arg, stp_tool_options *opt,
         break;
     case 'd':
         if (stp_tool_parse_dither(arg, opt))
-            what = "--dither";
+            what = "--dither (bayer2, bayer4, bayer8, bayer16, blue-noise, clustered:N, "
+                   "clustered45:N, seed2x2, pattern2x2, user:W:H:t,..., fs, atkinson, sierra-lite, "
+                   "jjn, stucki, burkes; NAME:raster)";
         opt->dither_given = 1;
         break;
     case STP_TOOL_OPT_SPACING:
