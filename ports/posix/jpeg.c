@@ -24,9 +24,13 @@ static void on_error(j_common_ptr info)
     longjmp(f->back, 1);
 }
 
-static void on_message(j_common_ptr info)
+/* A warning (level -1) is corrupt or missing data that libjpeg would fill
+ * in with grey: a failure here, never a wrong picture; trace messages
+ * (level >= 0) stay quiet. */
+static void on_emit(j_common_ptr info, int level)
 {
-    (void)info; /* warnings stay quiet */
+    if (level < 0)
+        on_error(info);
 }
 
 /* Decode from fp into img; returns 0, or -1 with f->message set. */
@@ -80,7 +84,7 @@ int stp_posix_read_jpeg(const char *path, stp_posix_image *img, int grey, char *
     memset(&f, 0, sizeof f);
     info.err = jpeg_std_error(&f.mgr);
     f.mgr.error_exit = on_error;
-    f.mgr.output_message = on_message;
+    f.mgr.emit_message = on_emit;
     jpeg_create_decompress(&info);
     if (setjmp(f.back) == 0)
         rc = decode(fp, img, grey, &info, &f);
