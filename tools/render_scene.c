@@ -145,6 +145,49 @@ static int compare_positions(const void *pa, const void *pb)
     return 0;
 }
 
+/* A polygon's vertex normals that turn further than STP_TOOL_SMOOTH_LIMIT
+ * from its own (Newell) normal, oriented as the vertex normals mostly are,
+ * are replaced by it: a coarse mesh's analytic normals (the SPD teapot's
+ * spout and rim) may point away from the face they sit on, and Gouraud
+ * would then shade its interior darker than any side of the surface is.
+ * Flat on those vertices, the face keeps the light flat shading gives it. */
+#define STP_TOOL_SMOOTH_LIMIT_COS 0.5 /* 60 degrees */
+static void keep_normals_near_faces(const stp_scene *scene, stp_scene_vec3 *normals)
+{
+    size_t p;
+    for (p = 0; p < scene->polygon_count; p++) {
+        const stp_scene_polygon *poly = &scene->polygons[p];
+        stp_scene_vec3 n = {0, 0, 0}, *vn = normals + poly->first;
+        double len, along = 0;
+        int k;
+        for (k = 0; k < poly->count; k++) {
+            const stp_scene_vec3 *a = &scene->vertices[poly->first + (size_t)(k == 0 ? poly->count - 1 : k - 1)];
+            const stp_scene_vec3 *b = &scene->vertices[poly->first + (size_t)k];
+            n.x += (a->y - b->y) * (a->z + b->z);
+            n.y += (a->z - b->z) * (a->x + b->x);
+            n.z += (a->x - b->x) * (a->y + b->y);
+        }
+        len = sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+        if (!(len > 0))
+            continue;
+        for (k = 0; k < poly->count; k++) {
+            double l = sqrt(vn[k].x * vn[k].x + vn[k].y * vn[k].y + vn[k].z * vn[k].z);
+            if (l > 0)
+                along += (vn[k].x * n.x + vn[k].y * n.y + vn[k].z * n.z) / l;
+        }
+        if (along < 0)
+            len = -len; /* the face normal the way the vertex normals point */
+        for (k = 0; k < poly->count; k++) {
+            double l = sqrt(vn[k].x * vn[k].x + vn[k].y * vn[k].y + vn[k].z * vn[k].z);
+            if (!(l > 0) || (vn[k].x * n.x + vn[k].y * n.y + vn[k].z * n.z) / (l * len) < STP_TOOL_SMOOTH_LIMIT_COS) {
+                vn[k].x = n.x / len;
+                vn[k].y = n.y / len;
+                vn[k].z = n.z / len;
+            }
+        }
+    }
+}
+
 /* Vertex normals for every vertex: the file's where a polygon has them,
  * else the area-weighted average of the Newell normals of the polygons
  * meeting at that position.  Returns a malloc'ed array or NULL. */
@@ -197,6 +240,7 @@ static stp_scene_vec3 *vertex_normals(const stp_scene *scene)
     }
     free(face);
     free(order);
+    keep_normals_near_faces(scene, out);
     return out;
 }
 
