@@ -4,6 +4,7 @@
 #include "animate_command.h"
 
 #include <getopt.h>
+#include <time.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -11,6 +12,7 @@
 
 #include "animate.h"
 #include "options.h"
+#include "progress.h"
 #include "scene.h"
 #include "stp_posix.h"
 #include "stp_posix_png.h"
@@ -73,6 +75,9 @@ typedef struct animation_output {
     size_t prefix_len;        /* numbered: path[0..prefix_len) before the %d */
     int digits;               /* the %0Nd's N (0: as many as needed) */
     const char *suffix;       /* after the %d */
+    int frame_count;          /* how many are drawn, for the progress line */
+    int show_progress;        /* a line "frame i/N, S s left" on stderr */
+    struct timespec start;
 #if STP_HAVE_GIF
     stp_posix_gif frames;
 #endif
@@ -116,9 +121,25 @@ static int write_numbered(const animation_output *o, const stp_posix_frame *fram
                   : stp_posix_write(frame, name, STP_POSIX_FILE_P4, err, err_size);
 }
 
+/* "frame i/N, S s left" over itself on stderr. */
+static void show_progress(animation_output *o, int index)
+{
+    struct timespec now;
+    double elapsed;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    elapsed = (double)(now.tv_sec - o->start.tv_sec) + (double)(now.tv_nsec - o->start.tv_nsec) * 1e-9;
+    fprintf(stderr, "\ranimating: frame %d/%d, %.0f s left   ", index + 1, o->frame_count,
+            elapsed * (o->frame_count - index - 1) / (index + 1));
+    if (index + 1 == o->frame_count)
+        fputc('\n', stderr);
+    fflush(stderr);
+}
+
 static int take_frame(const stp_posix_frame *frame, int index, void *ctx, char *err, size_t err_size)
 {
     animation_output *o = ctx;
+    if (o->show_progress)
+        show_progress(o, index);
 #if STP_HAVE_GIF
     if (o->gif)
         return stp_posix_gif_add(&o->frames, frame, err, err_size);
@@ -196,6 +217,9 @@ static int run(const char *scene_path, const char *scene_format, const stp_scene
         fprintf(stderr, "stipple: %s\n", err);
         return 1;
     }
+    o->frame_count = motion->frames;
+    o->show_progress = stp_progress_wanted();
+    clock_gettime(CLOCK_MONOTONIC, &o->start);
     rc = stp_tool_animate(&scene, opt, motion, take_frame, o, &stats, err, sizeof err);
     stp_scene_free(&scene);
 #if STP_HAVE_GIF

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "animate_command.h"
 #include "camera.h"
@@ -271,10 +272,11 @@ static void invert_frame(stp_posix_frame *f)
 }
 
 /* A note when the scene's file asks for another size (NFF "resolution")
- * than the one drawn because --size was not given. */
+ * than the one drawn because --size was not given; for a person at a
+ * terminal (scripts and logs that read stderr see only errors). */
 static void note_resolution(const char *path, const stp_scene *scene, const stp_tool_options *opt)
 {
-    if (scene->resolution[0] > 0 && scene->resolution[1] > 0 &&
+    if (isatty(STDERR_FILENO) && scene->resolution[0] > 0 && scene->resolution[1] > 0 &&
         (scene->resolution[0] != opt->width || scene->resolution[1] != opt->height))
         fprintf(stderr, "stipple: note: %s asks for %dx%d (its resolution line); drawing %dx%d, the "
                         "default: give --size to choose\n",

@@ -53,6 +53,11 @@ if "$stipple" animate "$scene" -o "$work/s%d.pbm" --frames 11 --orbit 11 --stats
     else bad "--stats: '$(cat "$work/stats")' (want a share in (0, 1] %)"; fi
 else bad "animate --stats failed"; fi
 
+# progress: a line per frame with the time left
+STIPPLE_PROGRESS=always "$stipple" animate "$scene" -o "$work/pg%d.pbm" --frames 3 2>"$work/err"
+if tr '\r' '\n' <"$work/err" | grep -q 'animating: frame 2/3, .* s left' && tr '\r' '\n' <"$work/err" | grep -q 'frame 3/3'; then ok
+else bad "animate progress: $(tr '\r' '\n' <"$work/err" | head -n 3)"; fi
+
 # --- 4. render from a camera = the animation's frame from there
 common=(-d blue-noise -l 256 --exposure off)
 if "$stipple" animate "$scene" "${common[@]}" --hold 0 --eye 4,0,0 --eye 0,4,2 --at 0,0,0.2 \

@@ -9,7 +9,7 @@
 #  3. dither --rotate/--flip equal ImageMagick's -rotate/-flop before the
 #     halftone; --size fit/fill/stretch exact pixels; --invert; JPEG input
 #     equals the same picture decoded to PGM by ImageMagick;
-#  4. NFF's resolution line: a note when --size is not given;
+#  4. NFF's resolution line: a note on a terminal when --size is not given;
 #  5. progress: the bar moves (percentages below 100 %, time left);
 #  6. errors list the choices; bad values exit 2.
 # Usage: test_cli_outputs.sh STIPPLE_BINARY SCENES_DIR
@@ -101,11 +101,13 @@ rc=$?
 [ $rc = 1 ] && grep -q "cut.jpg: not a readable JPEG" "$work/err" && [ ! -e "$work/cut.pbm" ] && ok ||
     bad "a truncated JPEG: exit $rc, '$(cat "$work/err")'"
 
-# --- 4. NFF resolution
+# --- 4. NFF resolution: a note on a terminal (script(1) gives it one)
+script -qec "'$stipple' render '$scene' -o '$work/r.pbm'" /dev/null >"$work/tty" </dev/null
+grep -q "asks for 512x512 (its resolution line); drawing 128x64" "$work/tty" && ok || bad "no note of the resolution line: $(cat "$work/tty")"
+script -qec "'$stipple' render '$scene' -s 64x32 -o '$work/r.pbm'" /dev/null >"$work/tty" </dev/null
+[ ! -s "$work/tty" ] && ok || bad "a note although --size was given: $(cat "$work/tty")"
 "$stipple" render "$scene" -o "$work/r.pbm" 2>"$work/err"
-grep -q "asks for 512x512 (its resolution line); drawing 128x64" "$work/err" && ok || bad "no note of the resolution line: $(cat "$work/err")"
-"$stipple" render "$scene" -s 64x32 -o "$work/r.pbm" 2>"$work/err"
-[ ! -s "$work/err" ] && ok || bad "a note although --size was given"
+[ ! -s "$work/err" ] && ok || bad "a note on stderr that is not a terminal"
 
 # --- 5. progress
 STIPPLE_PROGRESS=always "$stipple" render "$scene" -s 64x64 -o "$work/pr.pbm" 2>"$work/err"
