@@ -4,6 +4,8 @@
 #include "progress.h"
 
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -21,17 +23,33 @@ static int progress_flush(stp_port *port, uint32_t y0, uint32_t rows, const uint
 {
     stp_progress *pg = (stp_progress *)port->user;
     int status = pg->inner->flush(pg->inner, y0, rows, pixels, stride);
-    if (pg->enabled && (pg->shown || now() - pg->start > 1.0)) {
+    double elapsed = now() - pg->start;
+    if (pg->enabled && (pg->shown || elapsed > pg->delay)) {
         unsigned done = y0 + rows, total = port->height;
         int filled = (int)((unsigned long)done * BAR_WIDTH / total), k;
         fprintf(stderr, "\r%s [", pg->label);
         for (k = 0; k < BAR_WIDTH; k++)
             fputc(k < filled ? '#' : ' ', stderr);
         fprintf(stderr, "] %3u%%", (unsigned)((unsigned long)done * 100 / total));
+        if (done < total)
+            fprintf(stderr, " %4.0f s left", elapsed * (total - done) / done);
+        else
+            fprintf(stderr, " %4.1f s     ", elapsed);
         fflush(stderr);
         pg->shown = 1;
     }
     return status;
+}
+
+static int always(void)
+{
+    const char *v = getenv("STIPPLE_PROGRESS");
+    return v && !strcmp(v, "always");
+}
+
+int stp_progress_wanted(void)
+{
+    return isatty(STDERR_FILENO) || always();
 }
 
 stp_port *stp_progress_wrap(stp_progress *pg, stp_port *inner, const char *label)
@@ -39,7 +57,8 @@ stp_port *stp_progress_wrap(stp_progress *pg, stp_port *inner, const char *label
     pg->inner = inner;
     pg->label = label;
     pg->start = now();
-    pg->enabled = isatty(STDERR_FILENO);
+    pg->enabled = stp_progress_wanted();
+    pg->delay = always() ? 0.0 : 1.0;
     pg->shown = 0;
     pg->port = *inner;
     pg->port.flush = progress_flush;

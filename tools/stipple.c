@@ -8,7 +8,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
+#include "animate_command.h"
+#include "camera.h"
 #include "compile_scene.h"
 #include "options.h"
 #include "outlines.h"
@@ -23,6 +26,11 @@
 #include "scene.h"
 #include "scenegen.h"
 #include "stp_posix.h"
+#include "stp_posix_bitmap.h"
+#if STP_HAVE_JPEG
+#include "stp_posix_jpeg.h"
+#endif
+#include "image_ops.h"
 #include "stp_posix_png.h"
 
 static const char *program = "stipple";
@@ -35,6 +43,8 @@ static void usage_main(FILE *to)
             "commands:\n"
             "  render SCENE -o OUT   render an NFF, OBJ, OFF or PLY scene to PBM, PGM, PPM,\n"
             "                        PNG or text\n"
+            "  animate SCENE -o OUT.gif  a scene from a moving camera: an animated GIF or\n"
+            "                        numbered PBM/PNG frames (see 'stipple animate --help')\n"
             "  dither IMAGE -o OUT   halftone a PNG, PGM or PPM image to PBM or 1-bit PNG\n"
             "  compile SCENE -o OUT.c  write a scene as C source and a minimal configuration\n"
             "                        header for firmware (see 'stipple compile --help')\n"
@@ -59,7 +69,10 @@ static void usage_render(FILE *to)
             ".pbm (halftoned 1-bit), .pgm (grey), .ppm (colour file of the grey picture, or\n"
             "of the colour one with --color), .png (grey, or colour with --color or\n"
             "--palette; --format png1 for halftoned 1-bit), .txt (line-printer text, one\n"
-            "character per pixel); '-' writes to stdout in the --format given (default txt).\n"
+            "character per pixel), .xbm (1-bit X bitmap, u8g2 drawXBMP), .h (1-bit C array\n"
+            "of rows, Adafruit GFX drawBitmap; --format c-pages: SSD1306 pages); '-' writes\n"
+            "to stdout in the --format given (default txt).\n"
+            "PNG: -o X.png writes 8-bit grey; --format png1 the 1-bit picture a panel shows.\n"
             "Grey and colour pictures have 256 levels unless --levels says otherwise;\n"
             "1-bit pictures, text and --palette 16.  Options the chosen renderer or output\n"
             "does not use are refused.\n"
@@ -72,8 +85,10 @@ static void usage_render(FILE *to)
             "                           spi:/dev/spidevB.C,controller=ssd1306|sharp-ls013b7dh03|\n"
             "                           ssd1680|ssd1680-128x296,dc=LINE,reset=LINE,busy=LINE,...\n"
             "                           (see ports/linux-fb/stp_device.h)\n"
-            "      --format KIND        pbm, plain-pbm, pgm, ppm, png, png1 or txt (default:\n"
-            "                           from OUT)\n"
+            "      --format KIND        pbm, plain-pbm, pgm, ppm, png, png1, txt, xbm, c or\n"
+            "                           c-pages (default: from OUT)\n"
+            "      --invert             lit and unlit (grey: light and dark) swapped; text:\n"
+            "                           the background prints as blanks unless --invert\n"
             "  -b, --band ROWS          render in bands of ROWS rows (default: whole frame)\n"
             "      --stats              print display-file and memory figures on stderr\n"
             "      --palette grey|pseudo  .ppm/.png through a 256-entry colour table: the frame is\n"
@@ -93,6 +108,7 @@ static void usage_render(FILE *to)
             "                           a firmware would), not scaled into its range: a point\n"
             "                           beyond +-32767 units from the eye is refused\n"
             "  -h, --help               this help\n");
+    stp_tool_camera_help(to, 0);
     stp_tool_options_help(to);
 }
 
@@ -110,13 +126,23 @@ static void usage_dither(FILE *to)
             "usage: stipple dither IMAGE -o OUT.pbm [options]\n"
             "       stipple dither IMAGE -o OUT.png --palette PALETTE [--planes PREFIX]\n"
             "\n"
-            "Halftones a PNG, PGM or PPM image ('-' reads standard input; colour through\n"
-            "luminance, alpha ignored) with an ordered-dither cell or error diffusion\n"
-            "(-d fs, atkinson, ...).\n"
+            "Halftones a PNG, JPEG, PGM or PPM image ('-' reads standard input; colour\n"
+            "through luminance, alpha ignored) with an ordered-dither cell or error\n"
+            "diffusion (-d fs, atkinson, ...), after turning, mirroring and resizing it to\n"
+            "the panel (--rotate, --flip, --size: in that order), and --invert.\n"
             "With bayer2/4/8 the pixels equal ImageMagick's -ordered-dither o2x2/o4x4/o8x8.\n"
             "\n"
-            "  -o, --output FILE     where to write (.pbm, or .png for a 1-bit PNG; '-' for\n"
-            "                        PBM on stdout)\n"
+            "  -o, --output FILE     where to write: .pbm, .png (1-bit PNG), .xbm (X bitmap,\n"
+            "                        u8g2 drawXBMP), .h (C array of rows, Adafruit GFX\n"
+            "                        drawBitmap); '-' for PBM on stdout\n"
+            "      --format KIND     pbm, plain-pbm, png1, xbm, c (rows) or c-pages (SSD1306\n"
+            "                        pages: a byte a column of 8 rows) (default: from OUT)\n"
+            "  -s, --size WxH        resize to the panel first (area average), as --resize\n"
+            "      --resize MODE     fit (default: the whole image, black bars), fill (the\n"
+            "                        panel covered, the middle kept) or stretch\n"
+            "      --rotate DEG      turn clockwise first: 90, 180 or 270\n"
+            "      --flip            mirror left to right (upside down: --rotate 180 --flip)\n"
+            "      --invert          the negative: light pixels unlit (paper vs OLED)\n"
             "      --plain           write plain PBM (P1) instead of raw (P4)\n"
             "  -d, --dither CELL     as for render (default bayer4)\n"
             "      --spacing KIND    linear (default), exponential, cubic\n"
@@ -133,6 +159,22 @@ static void usage_dither(FILE *to)
             "  -h, --help            this help\n");
 }
 
+/* stp_tool_render, from the camera of --eye, --at and --up when given. */
+static int render_with_camera(const stp_scene *scene, const stp_tool_options *opt, stp_port *port,
+                              stp_tool_stats *stats, char *err, size_t err_size)
+{
+    stp_tool_camera_scene moved;
+    stp_tool_options still;
+    int rc;
+    if (!stp_tool_camera_wanted(opt))
+        return stp_tool_render(scene, opt, port, stats, err, err_size);
+    if (stp_tool_camera_apply(scene, opt, NULL, 0, &moved, &still, err, err_size) != 0)
+        return -1;
+    rc = stp_tool_render(&moved.scene, &still, port, stats, err, err_size);
+    stp_tool_camera_free(&moved);
+    return rc;
+}
+
 /* Print "stipple: <message>" on stderr; returns the exit status 1. */
 static int fail(const char *fmt, ...)
 {
@@ -147,10 +189,15 @@ static int fail(const char *fmt, ...)
 
 /* png: 1 for "png" (grey, or RGB with --color or --palette: *kind is
  * settled once the options are known), 2 for "png1" (1-bit), else 0. */
-static int parse_kind(const char *s, stp_posix_file_kind *kind, int *png)
+static int parse_kind(const char *s, stp_posix_file_kind *kind, int *png, int *bitmap)
 {
     *png = 0;
-    if (!strcmp(s, "png"))
+    *bitmap = 0;
+    if (!strcmp(s, "xbm") || !strcmp(s, "c") || !strcmp(s, "c-pages")) {
+        *bitmap = 1 + (s[0] == 'x' ? STP_POSIX_BITMAP_XBM
+                                   : s[1] ? STP_POSIX_BITMAP_PAGES : STP_POSIX_BITMAP_ROWS);
+        *kind = STP_POSIX_FILE_P4;
+    } else if (!strcmp(s, "png"))
         *png = 1;
     else if (!strcmp(s, "png1")) {
         *png = 2;
@@ -195,8 +242,46 @@ enum {
     OPT_OUTLINES,
     OPT_CREASE_ANGLE,
     OPT_OUTLINE_LEVEL,
-    OPT_NO_RESCALE
+    OPT_NO_RESCALE,
+    OPT_INVERT,
+    OPT_RESIZE,
+    OPT_ROTATE,
+    OPT_FLIP
 };
+
+/* The line printer's characters the other way round: light styles print
+ * dense characters, for a dark background printed as blanks. */
+static const uint8_t lineprinter_light[16] = {' ', '.', ':', '-', '+', '=', 'o', 'a',
+                                              'k', '#', '$', '%', 'B', '&', 'M', '@'};
+
+/* 1 when the picture's background (--background, else the scene's, else the
+ * core's black) is dark: luminance below one half. */
+static int dark_background(const stp_scene *scene, const stp_tool_options *opt)
+{
+    const double *b = opt->background_given ? opt->background_rgb
+                                            : scene->has_background ? scene->background : 0;
+    return !b || 0.30 * b[0] + 0.59 * b[1] + 0.11 * b[2] < 0.5;
+}
+
+/* --invert: lit and unlit swapped (MONO1), or each byte v made 255 - v. */
+static void invert_frame(stp_posix_frame *f)
+{
+    size_t i, n = f->stride * f->height;
+    for (i = 0; i < n; i++)
+        f->pixels[i] = (uint8_t)(255 - f->pixels[i]);
+}
+
+/* A note when the scene's file asks for another size (NFF "resolution")
+ * than the one drawn because --size was not given; for a person at a
+ * terminal (scripts and logs that read stderr see only errors). */
+static void note_resolution(const char *path, const stp_scene *scene, const stp_tool_options *opt)
+{
+    if (isatty(STDERR_FILENO) && scene->resolution[0] > 0 && scene->resolution[1] > 0 &&
+        (scene->resolution[0] != opt->width || scene->resolution[1] != opt->height))
+        fprintf(stderr, "stipple: note: %s asks for %dx%d (its resolution line); drawing %dx%d, the "
+                        "default: give --size to choose\n",
+                path, scene->resolution[0], scene->resolution[1], opt->width, opt->height);
+}
 
 /* Turn an indexed frame buffer (STYLE8: style index 1..levels per pixel)
  * into RGB through a 256-entry colour table, grey or pseudocolour, with the
@@ -265,7 +350,7 @@ static int render_to_device(const char *scene_path, const char *scene_format, co
     port = stp_device_port(dev);
     opt->width = (int)port->width;
     opt->height = (int)port->height;
-    rc = stp_tool_render(&scene, opt,
+    rc = render_with_camera(&scene, opt,
                          stp_progress_wrap(&progress, port, opt->raytrace ? "ray tracing" : "rendering"),
                          &stats, err, sizeof err);
     stp_progress_finish(&progress);
@@ -366,7 +451,7 @@ static int render_palette(const char *scene_path, const char *scene_format, cons
         stp_scene_free(&scene);
         return fail("out of memory for the frame");
     }
-    rc = stp_tool_render(&scene, opt, stp_posix_frame_port(&frame), 0, err, sizeof err);
+    rc = render_with_camera(&scene, opt, stp_posix_frame_port(&frame), 0, err, sizeof err);
     stp_scene_free(&scene);
     if (rc != 0) {
         stp_posix_frame_free(&frame);
@@ -391,6 +476,9 @@ static int cmd_render(int argc, char **argv)
         {"crease-angle", required_argument, 0, OPT_CREASE_ANGLE},
         {"outline-level", required_argument, 0, OPT_OUTLINE_LEVEL},
         {"no-rescale", no_argument, 0, OPT_NO_RESCALE},
+        {"eye", required_argument, 0, STP_TOOL_OPT_EYE}, {"at", required_argument, 0, STP_TOOL_OPT_AT},
+        {"up", required_argument, 0, STP_TOOL_OPT_UP},
+        {"invert", no_argument, 0, OPT_INVERT},
         {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     struct option longs[64];
     stp_tool_options opt;
@@ -405,6 +493,7 @@ static int cmd_render(int argc, char **argv)
     const char *new_palette = 0, *planes = 0;
     char err[512];
     int c, show_stats = 0, palette = 0, png = 0, format_given = 0, crease_given = 0, level_given = 0;
+    int bitmap = 0, invert = 0;
 
     stp_tool_options_default(&opt);
     stp_scene_options_default(&sopt);
@@ -415,6 +504,8 @@ static int cmd_render(int argc, char **argv)
     optind = 1;
     while ((c = getopt_long(argc, argv, ":" STP_TOOL_SHORT_OPTIONS "o:b:h", longs, 0)) != -1) {
         int applied = stp_tool_apply_option(c, optarg, &opt, &sopt, err, sizeof err);
+        if (applied == 0)
+            applied = stp_tool_apply_camera_option(c, optarg, 1, &opt, err, sizeof err);
         if (c > 0 && c < STP_TOOL_OPT_COMMAND)
             given.code[c] = 1;
         if (applied < 0)
@@ -424,9 +515,9 @@ static int cmd_render(int argc, char **argv)
         switch (c) {
         case 'o': out_path = optarg; break;
         case OPT_FORMAT:
-            if (parse_kind(optarg, &kind, &png))
+            if (parse_kind(optarg, &kind, &png, &bitmap))
                 return stp_tool_usage_error("render", "bad --format '%s' (pbm, plain-pbm, pgm, "
-                                                      "ppm, txt, png, png1)", optarg);
+                                                      "ppm, txt, png, png1, xbm, c, c-pages)", optarg);
             format_given = 1;
             break;
         case 'b':
@@ -479,6 +570,7 @@ static int cmd_render(int argc, char **argv)
             level_given = 1;
             break;
         case OPT_NO_RESCALE: opt.keep_units = 1; break;
+        case OPT_INVERT: invert = 1; break;
         case 'h': usage_render(stdout); return 0;
         default: return stp_tool_getopt_error("render", c, argv);
         }
@@ -519,6 +611,10 @@ static int cmd_render(int argc, char **argv)
                               &given, format_given);
     if (!format_given && stp_posix_png_path(out_path))
         png = 1;
+    if (!format_given && stp_posix_bitmap_layout_from_path(out_path) >= 0) {
+        bitmap = 1 + stp_posix_bitmap_layout_from_path(out_path);
+        kind = STP_POSIX_FILE_P4;
+    }
     if (png == 1)
         kind = opt.colour || palette ? STP_POSIX_FILE_P6 : STP_POSIX_FILE_P5;
     if (kind == STP_POSIX_FILE_UNKNOWN) {
@@ -526,7 +622,7 @@ static int cmd_render(int argc, char **argv)
         if (kind == STP_POSIX_FILE_UNKNOWN) {
             if (strcmp(out_path, "-") != 0)
                 return stp_tool_usage_error("render", "%s: unknown output extension (use .pbm "
-                                                      ".pgm .ppm .png .txt or --format)", out_path);
+                                                      ".pgm .ppm .png .txt .xbm .h or --format)", out_path);
             kind = STP_POSIX_FILE_ASCII;
         }
     }
@@ -537,11 +633,18 @@ static int cmd_render(int argc, char **argv)
         return stp_tool_usage_error("render", "%s", err);
     if (stp_scene_load_as(scene_path, scene_format, &sopt, &scene, err, sizeof err) != 0)
         return fail("%s", err);
+    if (!given.code['s'])
+        note_resolution(scene_path, &scene, &opt);
     if (kind == STP_POSIX_FILE_ASCII) {
-        /* the line printer has 16 characters: INTENSITY levels map onto them */
+        /* the line printer has 16 characters: INTENSITY levels map onto
+         * them, the background printed as blanks (--invert: the other way) */
         stp_posix_lineprinter_table(&lp);
+        if (dark_background(&scene, &opt) != invert)
+            lp.codes = lineprinter_light;
         opt.styles = &lp;
     }
+    if (!opt.band_rows && stp_progress_wanted())
+        opt.band_rows = (opt.height + 31) / 32; /* bands, so the bar moves */
     if (format_for_kind(kind) == STP_PIXEL_MONO1)
         stp_tool_still_defaults(&opt); /* a still 1-bit picture: diffusion */
     /* with a palette the frame is an indexed frame buffer: style indices */
@@ -555,7 +658,7 @@ static int cmd_render(int argc, char **argv)
         stp_progress progress;
         stp_port *port = stp_progress_wrap(&progress, stp_posix_frame_port(&frame),
                                            opt.raytrace ? "ray tracing" : "rendering");
-        int rc = stp_tool_render(&scene, &opt, port, &stats, err, sizeof err);
+        int rc = render_with_camera(&scene, &opt, port, &stats, err, sizeof err);
         stp_progress_finish(&progress);
         if (rc != 0) {
             char message[1024];
@@ -584,8 +687,11 @@ static int cmd_render(int argc, char **argv)
         stp_posix_frame_free(&frame);
         return fail("out of memory for the frame");
     }
-    if ((png ? stp_posix_write_png(&frame, out_path, err, sizeof err)
-             : stp_posix_write(&frame, out_path, kind, err, sizeof err)) != 0) {
+    if (invert && kind != STP_POSIX_FILE_ASCII)
+        invert_frame(&frame);
+    if ((bitmap ? stp_posix_write_bitmap(&frame, out_path, (stp_posix_bitmap_layout)(bitmap - 1), err, sizeof err)
+         : png  ? stp_posix_write_png(&frame, out_path, err, sizeof err)
+                : stp_posix_write(&frame, out_path, kind, err, sizeof err)) != 0) {
         stp_posix_frame_free(&frame);
         return fail("%s", err);
     }
@@ -626,8 +732,9 @@ static int palette_picture(const stp_palette *pal, const stp_tool_options *opt, 
     return rc;
 }
 
-/* Reads a PNG or PNM image keeping its colour (channels 1 or 3). */
-static int read_image_colour(const char *path, stp_posix_image *img, char *err, size_t err_size)
+/* Reads a PNG, JPEG or PNM image, told apart by their first bytes: as grey
+ * (channels 1) when grey is set, else keeping its colour (channels 1 or 3). */
+static int read_image(const char *path, int grey, stp_posix_image *img, char *err, size_t err_size)
 {
     int first = EOF;
     if (!strcmp(path, "-")) {
@@ -641,9 +748,185 @@ static int read_image_colour(const char *path, stp_posix_image *img, char *err, 
             fclose(fp);
         }
     }
+    if (first == 0xFF) {
+#if STP_HAVE_JPEG
+        return stp_posix_read_jpeg(path, img, grey, err, err_size);
+#else
+        snprintf(err, err_size, "%s: a JPEG file, and this build reads no JPEG (it needs libjpeg, "
+                                "Debian package libjpeg62-turbo-dev)", path);
+        return -1;
+#endif
+    }
     if (first == 0x89)
-        return stp_posix_read_png(path, img, 0, err, err_size);
-    return stp_posix_read_pnm(path, img, err, err_size);
+        return stp_posix_read_png(path, img, grey, err, err_size);
+    return grey ? stp_posix_read_grey(path, img, err, err_size) : stp_posix_read_pnm(path, img, err, err_size);
+}
+
+/* What stipple dither does to the image before the halftone. */
+typedef struct dither_shape {
+    int rotate, flip, invert, size_given;
+    uint32_t width, height;
+    stp_tool_resize resize;
+} dither_shape;
+
+/* Turn, mirror, resize and invert img as shape says.  Returns 0, or the
+ * exit status of the failure. */
+static int shape_image(stp_posix_image *img, const dither_shape *shape)
+{
+    if (stp_tool_image_rotate(img, shape->rotate) != 0)
+        return fail("out of memory");
+    if (shape->flip)
+        stp_tool_image_flip(img);
+    if (shape->size_given && stp_tool_image_resize(img, shape->width, shape->height, shape->resize) != 0)
+        return fail("out of memory");
+    if (shape->invert)
+        stp_tool_image_invert(img);
+    return 0;
+}
+
+/* A dither option of its own (not -d, --spacing, -g, --gamma-k): applied
+ * to shape, *format, *bitmap.  Returns 0, or the usage error's status. */
+static int dither_shape_option(int c, const char *arg, dither_shape *shape, stp_tool_options *opt)
+{
+    switch (c) {
+    case 's': {
+        stp_scene_options unused;
+        char err[128];
+        if (stp_tool_apply_option(c, arg, opt, &unused, err, sizeof err) < 0)
+            return stp_tool_usage_error("dither", "%s", err);
+        shape->width = (uint32_t)opt->width;
+        shape->height = (uint32_t)opt->height;
+        shape->size_given = 1;
+        return 0;
+    }
+    case OPT_RESIZE:
+        if (!strcmp(arg, "fit"))
+            shape->resize = STP_TOOL_RESIZE_FIT;
+        else if (!strcmp(arg, "fill"))
+            shape->resize = STP_TOOL_RESIZE_FILL;
+        else if (!strcmp(arg, "stretch"))
+            shape->resize = STP_TOOL_RESIZE_STRETCH;
+        else
+            return stp_tool_usage_error("dither", "bad --resize '%s' (fit, fill, stretch)", arg);
+        return 0;
+    case OPT_ROTATE:
+        if (stp_tool_parse_int(arg, 0, 270, &shape->rotate) || shape->rotate % 90)
+            return stp_tool_usage_error("dither", "bad --rotate '%s' (0, 90, 180, 270: degrees clockwise)",
+                                        arg);
+        return 0;
+    case OPT_FLIP: shape->flip = 1; return 0;
+    case OPT_INVERT: shape->invert = 1; return 0;
+    default: return -1;
+    }
+}
+
+/* The grey table of --gamma/--gamma-k or --linear into table; returns 1
+ * when there is one, 0 when none, -1 for a bad gamma. */
+static int dither_grey_table(const stp_tool_options *opt, int use_gamma, int linear, uint8_t table[256])
+{
+    int v;
+    if (use_gamma)
+        return stp_gamma_table(table, 256, stp_tool_fix(opt->gamma), stp_tool_fix(opt->gamma_k)) ? -1 : 1;
+    if (!linear)
+        return 0;
+    /* sRGB to linear light (IEC 61966-2-1): a panel's share of lit
+     * pixels is linear light */
+    for (v = 0; v < 256; v++) {
+        double e = v / 255.0, l = e <= 0.04045 ? e / 12.92 : pow((e + 0.055) / 1.055, 2.4);
+        table[v] = (uint8_t)lround(255.0 * l);
+    }
+    return 1;
+}
+
+/* Halftone the grey image img into the MONO1 frame (its size). */
+static int halftone_image(stp_posix_image *img, const stp_tool_options *opt, const uint8_t *table,
+                          stp_posix_frame *frame)
+{
+    stp_cell cell;
+    stp_diffusion diffusion;
+    uint32_t x, y;
+    if (stp_tool_cell(opt, &cell) != 0)
+        return fail("bad halftone cell");
+    if (stp_posix_frame_init(frame, img->width, img->height, STP_PIXEL_MONO1) != 0)
+        return fail("out of memory");
+    if (stp_tool_diffusion(opt, img->width, &diffusion) < 0) {
+        stp_posix_frame_free(frame);
+        return fail("out of memory");
+    }
+    for (y = 0; y < img->height; y++) {
+        uint8_t *grey = img->samples + (size_t)y * img->width;
+        if (table)
+            for (x = 0; x < img->width; x++)
+                grey[x] = table[grey[x]];
+        if (diffusion.errors) {
+            stp_diffuse_row(&diffusion, grey, img->width, y); /* packs in place */
+            memcpy(frame->pixels + (size_t)y * frame->stride, grey, frame->stride);
+        } else {
+            stp_halftone_row(frame->pixels + (size_t)y * frame->stride, grey, img->width, y, &cell);
+        }
+    }
+    free(diffusion.errors);
+    return 0;
+}
+
+/* The 1-bit output of dither: --format, else from the name.  *png 1 for
+ * PNG, *bitmap layout + 1 for XBM/C, *plain for plain PBM.  Returns 0, or
+ * the usage error's status. */
+static int dither_output_kind(const char *out_path, const char *format, int *png, int *bitmap, int *plain)
+{
+    stp_posix_file_kind kind = STP_POSIX_FILE_P4;
+    if (format) {
+        if (parse_kind(format, &kind, png, bitmap) != 0 ||
+            (kind != STP_POSIX_FILE_P4 && kind != STP_POSIX_FILE_P1) || *png == 1)
+            return stp_tool_usage_error("dither", "bad --format '%s' (pbm, plain-pbm, png1, xbm, c, "
+                                                  "c-pages)", format);
+        *png = *png == 2;
+        if (kind == STP_POSIX_FILE_P1)
+            *plain = 1;
+        return 0;
+    }
+    *png = stp_posix_png_path(out_path);
+    if (stp_posix_bitmap_layout_from_path(out_path) >= 0)
+        *bitmap = 1 + stp_posix_bitmap_layout_from_path(out_path);
+    else if (strcmp(out_path, "-") != 0 && !*png && stp_posix_kind_from_path(out_path) != STP_POSIX_FILE_P4)
+        return stp_tool_usage_error("dither", "%s: dither writes PBM, 1-bit PNG, XBM or a C array; give "
+                                              "a .pbm, .png, .xbm or .h name (or --format)", out_path);
+    return 0;
+}
+
+static int write_mono(const stp_posix_frame *frame, const char *out_path, int png, int bitmap, int plain)
+{
+    char err[512];
+    int rc = bitmap ? stp_posix_write_bitmap(frame, out_path, (stp_posix_bitmap_layout)(bitmap - 1), err,
+                                             sizeof err)
+             : png  ? stp_posix_write_png(frame, out_path, err, sizeof err)
+                    : stp_posix_write(frame, out_path, plain ? STP_POSIX_FILE_P1 : STP_POSIX_FILE_P4, err,
+                                      sizeof err);
+    return rc != 0 ? fail("%s", err) : 0;
+}
+
+/* stipple dither --palette: colour kept, dithered to the palette. */
+static int dither_palette(const char *in_path, const char *out_path, const char *spec, const char *planes,
+                          const stp_tool_options *opt, int linear, const dither_shape *shape)
+{
+    stp_palette pal;
+    stp_posix_image colour;
+    char err[512];
+    int rc;
+    if (stp_palette_load(spec, &pal, err, sizeof err) != 0)
+        return stp_tool_usage_error("dither", "--palette: %s", err);
+    if (planes && !pal.bwr)
+        return stp_tool_usage_error("dither", "--planes writes the planes of --palette bwr");
+    if (!stp_palette_output_accepts(&pal, out_path))
+        return stp_tool_usage_error("dither", "%s: a palette picture is written as .png, .ppm%s", out_path,
+                                    pal.grey ? " or .pgm" : "");
+    if (read_image(in_path, 0, &colour, err, sizeof err) != 0)
+        return fail("%s", err);
+    if ((rc = shape_image(&colour, shape)) == 0)
+        rc = palette_picture(&pal, opt, linear, colour.samples, colour.channels, colour.width, colour.height,
+                             out_path, planes);
+    stp_posix_image_free(&colour);
+    return rc;
 }
 
 static int cmd_dither(int argc, char **argv)
@@ -653,30 +936,31 @@ static int cmd_dither(int argc, char **argv)
         {"dither", required_argument, 0, 'd'}, {"spacing", required_argument, 0, STP_TOOL_OPT_SPACING},
         {"gamma", required_argument, 0, 'g'}, {"gamma-k", required_argument, 0, STP_TOOL_OPT_GAMMA_K},
         {"linear", no_argument, 0, OPT_LINEAR}, {"palette", required_argument, 0, OPT_PALETTE},
-        {"planes", required_argument, 0, OPT_PLANES}, {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
+        {"planes", required_argument, 0, OPT_PLANES}, {"size", required_argument, 0, 's'},
+        {"resize", required_argument, 0, OPT_RESIZE}, {"rotate", required_argument, 0, OPT_ROTATE},
+        {"flip", no_argument, 0, OPT_FLIP}, {"invert", no_argument, 0, OPT_INVERT},
+        {"format", required_argument, 0, OPT_FORMAT}, {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     stp_tool_options opt;
-    stp_palette pal;
-    const char *palette_spec = 0, *planes = 0;
+    dither_shape shape;
+    const char *palette_spec = 0, *planes = 0, *out_path = 0, *format = 0;
     stp_posix_image img;
     stp_posix_frame frame;
-    stp_cell cell;
-    stp_diffusion diffusion;
     uint8_t table[256];
-    const char *out_path = 0;
     char err[512];
-    int c, plain = 0, use_gamma = 0, png, linear = 0;
-    uint32_t y, x;
+    int c, plain = 0, use_gamma = 0, png = 0, bitmap = 0, linear = 0, has_table, rc;
 
     stp_tool_options_default(&opt);
+    memset(&shape, 0, sizeof shape);
     opterr = 0;
     optind = 1;
-    while ((c = getopt_long(argc, argv, ":o:d:g:h", longs, 0)) != -1) {
+    while ((c = getopt_long(argc, argv, ":o:d:g:s:h", longs, 0)) != -1) {
         switch (c) {
         case 'o': out_path = optarg; break;
         case OPT_PLAIN: plain = 1; break;
         case OPT_LINEAR: linear = 1; break;
         case OPT_PALETTE: palette_spec = optarg; break;
         case OPT_PLANES: planes = optarg; break;
+        case OPT_FORMAT: format = optarg; break;
         case 'd':
         case STP_TOOL_OPT_SPACING:
         case 'g':
@@ -688,7 +972,12 @@ static int cmd_dither(int argc, char **argv)
             break;
         }
         case 'h': usage_dither(stdout); return 0;
-        default: return stp_tool_getopt_error("dither", c, argv);
+        default:
+            rc = dither_shape_option(c, optarg, &shape, &opt);
+            if (rc < 0)
+                return stp_tool_getopt_error("dither", c, argv);
+            if (rc > 0)
+                return rc;
         }
     }
     if (optind >= argc)
@@ -700,80 +989,27 @@ static int cmd_dither(int argc, char **argv)
     if (planes && !palette_spec)
         return stp_tool_usage_error("dither", "--planes needs --palette bwr");
     if (palette_spec) {
-        stp_posix_image colour;
-        int rc;
-        if (stp_palette_load(palette_spec, &pal, err, sizeof err) != 0)
-            return stp_tool_usage_error("dither", "--palette: %s", err);
-        if (planes && !pal.bwr)
-            return stp_tool_usage_error("dither", "--planes writes the planes of --palette bwr");
-        if (!stp_palette_output_accepts(&pal, out_path))
-            return stp_tool_usage_error("dither", "%s: a palette picture is written as .png, .ppm%s",
-                                        out_path, pal.grey ? " or .pgm" : "");
-        if (plain || use_gamma)
-            return stp_tool_usage_error("dither", "--palette takes no --%s", plain ? "plain" : "gamma");
-        if (read_image_colour(argv[optind], &colour, err, sizeof err) != 0)
-            return fail("%s", err);
-        rc = palette_picture(&pal, &opt, linear, colour.samples, colour.channels, colour.width,
-                             colour.height, out_path, planes);
-        stp_posix_image_free(&colour);
-        return rc;
+        if (plain || use_gamma || format)
+            return stp_tool_usage_error("dither", "--palette takes no --%s",
+                                        plain ? "plain" : use_gamma ? "gamma" : "format");
+        return dither_palette(argv[optind], out_path, palette_spec, planes, &opt, linear, &shape);
     }
-    png = stp_posix_png_path(out_path);
-    if (strcmp(out_path, "-") != 0 && !png &&
-        stp_posix_kind_from_path(out_path) != STP_POSIX_FILE_P4)
-        return stp_tool_usage_error("dither", "%s: dither writes PBM or 1-bit PNG; give a .pbm "
-                                              "or .png name", out_path);
-    if (png && plain)
-        return stp_tool_usage_error("dither", "--plain is for PBM, not PNG");
-    if (stp_tool_cell(&opt, &cell) != 0)
-        return fail("bad halftone cell");
+    if ((rc = dither_output_kind(out_path, format, &png, &bitmap, &plain)) != 0)
+        return rc;
+    if ((png || bitmap) && plain)
+        return stp_tool_usage_error("dither", "--plain is for PBM");
     if (use_gamma && linear)
         return fail("dither: --linear and --gamma both map the grey: give one");
-    if (use_gamma && stp_gamma_table(table, 256, stp_tool_fix(opt.gamma), stp_tool_fix(opt.gamma_k)))
+    if ((has_table = dither_grey_table(&opt, use_gamma, linear, table)) < 0)
         return fail("bad gamma");
-    if (linear) {
-        /* sRGB to linear light (IEC 61966-2-1): a panel's share of lit
-         * pixels is linear light */
-        int v;
-        for (v = 0; v < 256; v++) {
-            double e = v / 255.0, l = e <= 0.04045 ? e / 12.92 : pow((e + 0.055) / 1.055, 2.4);
-            table[v] = (uint8_t)lround(255.0 * l);
-        }
-        use_gamma = 1;
-    }
-    if (stp_posix_read_image_grey(argv[optind], &img, err, sizeof err) != 0)
+    if (read_image(argv[optind], 1, &img, err, sizeof err) != 0)
         return fail("%s", err);
-    if (stp_posix_frame_init(&frame, img.width, img.height, STP_PIXEL_MONO1) != 0) {
-        stp_posix_image_free(&img);
-        return fail("out of memory");
-    }
-    if (stp_tool_diffusion(&opt, img.width, &diffusion) < 0) {
-        stp_posix_image_free(&img);
+    if ((rc = shape_image(&img, &shape)) == 0 && (rc = halftone_image(&img, &opt, has_table ? table : 0, &frame)) == 0) {
+        rc = write_mono(&frame, out_path, png, bitmap, plain);
         stp_posix_frame_free(&frame);
-        return fail("out of memory");
     }
-    for (y = 0; y < img.height; y++) {
-        uint8_t *grey = img.samples + (size_t)y * img.width;
-        if (use_gamma)
-            for (x = 0; x < img.width; x++)
-                grey[x] = table[grey[x]];
-        if (diffusion.errors) {
-            stp_diffuse_row(&diffusion, grey, img.width, y); /* packs in place */
-            memcpy(frame.pixels + (size_t)y * frame.stride, grey, frame.stride);
-        } else {
-            stp_halftone_row(frame.pixels + (size_t)y * frame.stride, grey, img.width, y, &cell);
-        }
-    }
-    free(diffusion.errors);
     stp_posix_image_free(&img);
-    if ((png ? stp_posix_write_png(&frame, out_path, err, sizeof err)
-             : stp_posix_write(&frame, out_path, plain ? STP_POSIX_FILE_P1 : STP_POSIX_FILE_P4,
-                               err, sizeof err)) != 0) {
-        stp_posix_frame_free(&frame);
-        return fail("%s", err);
-    }
-    stp_posix_frame_free(&frame);
-    return 0;
+    return rc;
 }
 
 static void usage_bench(FILE *to)
@@ -861,6 +1097,8 @@ static int cmd_help(int argc, char **argv)
         usage_render(stdout);
     else if (!strcmp(argv[2], "dither"))
         usage_dither(stdout);
+    else if (!strcmp(argv[2], "animate"))
+        stp_tool_animate_usage(stdout);
     else if (!strcmp(argv[2], "bench"))
         usage_bench(stdout);
     else if (!strcmp(argv[2], "compile"))
@@ -871,7 +1109,7 @@ static int cmd_help(int argc, char **argv)
     } else if (!strcmp(argv[2], "help") || !strcmp(argv[2], "--help") || !strcmp(argv[2], "-h"))
         usage_help(stdout);
     else
-        return stp_tool_usage_error(0, "no command '%s' (render, dither, scene, compile, bench, help)",
+        return stp_tool_usage_error(0, "no command '%s' (render, animate, dither, scene, compile, bench, help)",
                                     argv[2]);
     return 0;
 }
@@ -879,7 +1117,7 @@ static int cmd_help(int argc, char **argv)
 int main(int argc, char **argv)
 {
     if (argc < 2)
-        return stp_tool_usage_error(0, "no command given (render, dither, scene, compile, bench, help)");
+        return stp_tool_usage_error(0, "no command given (render, animate, dither, scene, compile, bench, help)");
     if (!strcmp(argv[1], "--version") || !strcmp(argv[1], "version")) {
         printf("stipple %s\n", stp_version());
         return 0;
@@ -888,6 +1126,8 @@ int main(int argc, char **argv)
         return cmd_render(argc - 1, argv + 1);
     if (!strcmp(argv[1], "dither"))
         return cmd_dither(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "animate"))
+        return stp_tool_animate_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "bench"))
         return cmd_bench(argc - 1, argv + 1);
     if (!strcmp(argv[1], "scene"))

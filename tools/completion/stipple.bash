@@ -6,7 +6,7 @@
 # bash-completion package.  tests/cli/test_completion.sh checks that the
 # option lists equal what each subcommand's --help prints.
 
-_stipple_commands="render dither scene compile bench help"
+_stipple_commands="render animate dither scene compile bench help"
 
 # the options every scene-rendering subcommand shares (tools/options.c)
 _stipple_shared="--size --levels --dither --spacing --gamma --gamma-k --hidden --backface
@@ -16,9 +16,10 @@ _stipple_shared="--size --levels --dither --spacing --gamma --gamma-k --hidden -
 
 _stipple_options() {
     case $1 in
-    render) echo "--output --scene-format --device --format --band --stats --palette --planes --outlines --crease-angle --outline-level --no-rescale --help $_stipple_shared" ;;
+    render) echo "--output --scene-format --device --format --band --stats --palette --planes --outlines --crease-angle --outline-level --no-rescale --eye --at --up --invert --help $_stipple_shared" ;;
+    animate) echo "--output --frames --orbit --elevation --hold --fps --stats --scene-format --eye --at --up --help $_stipple_shared" ;;
     compile) echo "--output --header --scene-format --static --spans --help $_stipple_shared" ;;
-    dither) echo "--output --plain --dither --spacing --gamma --gamma-k --linear --palette --planes --help" ;;
+    dither) echo "--output --plain --dither --spacing --gamma --gamma-k --linear --palette --planes --size --resize --rotate --flip --invert --format --help" ;;
     scene) echo "--size --output --list --help" ;;
     bench) echo "--scenes --size --depth --min-weight --budget --help" ;;
     help) echo "--help" ;;
@@ -49,7 +50,12 @@ _stipple() {
     fi
     # the value of the option before the cursor
     case $prev in
-    --format) COMPREPLY=($(compgen -W "pbm plain-pbm pgm ppm png png1 txt" -- "$cur")); return ;;
+    --format)
+        if [ "$cmd" = dither ]; then COMPREPLY=($(compgen -W "pbm plain-pbm png1 xbm c c-pages" -- "$cur"))
+        else COMPREPLY=($(compgen -W "pbm plain-pbm pgm ppm png png1 txt xbm c c-pages" -- "$cur")); fi
+        return ;;
+    --resize) COMPREPLY=($(compgen -W "fit fill stretch" -- "$cur")); return ;;
+    --rotate) COMPREPLY=($(compgen -W "90 180 270" -- "$cur")); return ;;
     --scene-format) COMPREPLY=($(compgen -W "nff obj off ply" -- "$cur")); return ;;
     --hidden) COMPREPLY=($(compgen -W "zbuffer painter none" -- "$cur")); return ;;
     -d | --dither) COMPREPLY=($(compgen -W "bayer2 bayer4 bayer8 bayer16 blue-noise clustered: clustered45: seed2x2 pattern2x2 user: fs atkinson sierra-lite jjn stucki burkes" -- "$cur")); return ;;
@@ -67,15 +73,17 @@ _stipple() {
         case $cmd in
         compile) _stipple_files '*.c' ;;
         scene) _stipple_files '*.nff' ;;
-        dither) _stipple_files '*.@(pbm|png|ppm|pgm)' ;;
-        *) _stipple_files '*.@(pbm|pgm|ppm|png|txt)' ;;
+        dither) _stipple_files '*.@(pbm|png|ppm|pgm|xbm|h)' ;;
+        animate) _stipple_files '*.gif' ;;
+        *) _stipple_files '*.@(pbm|pgm|ppm|png|txt|xbm|h)' ;;
         esac
         return ;;
     --header) _stipple_files '*.h'; return ;;
     --scenes) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     -s | --size | -l | --levels | -g | --gamma | --gamma-k | --light | --bright | --ambient | \
         --attenuation | --fov | --slices | --stacks | --shadows | --depth | --min-weight | \
-        -b | --band | --budget | --crease-angle)
+        -b | --band | --budget | --crease-angle | -n | --frames | --orbit | --elevation | --hold | \
+        --fps | --eye | --at | --up)
         return ;; # a number: nothing to offer
     esac
     if [[ $cur == -* ]]; then
@@ -83,8 +91,8 @@ _stipple() {
         return
     fi
     case $cmd in
-    render | compile) _stipple_files '*.@(nff|obj|off|ply|NFF|OBJ|OFF|PLY)' ;;
-    dither) _stipple_files '*.@(png|pgm|ppm|pbm|PNG)' ;;
+    render | compile | animate) _stipple_files '*.@(nff|obj|off|ply|NFF|OBJ|OFF|PLY)' ;;
+    dither) _stipple_files '*.@(png|pgm|ppm|pbm|PNG|jpg|jpeg|JPG|JPEG)' ;;
     bench) _stipple_files '*.nff' ;;
     scene) COMPREPLY=($(compgen -W "$(stipple scene --list 2>/dev/null)" -- "$cur")) ;;
     esac
