@@ -104,11 +104,32 @@ int stp_panel_send_mono_rows(const stp_panel_controller *c, const stp_panel_bus 
     return 0;
 }
 
+/* One 8x8 block at a time: each of the 8 row bytes shifted out MSB first
+ * into the column bytes' bit for that row; a row byte of 0 (background)
+ * costs one test. */
+void stp_panel_pack_page(const uint8_t *pixels, size_t stride, uint32_t width, uint8_t *out)
+{
+    uint32_t x0;
+    for (x0 = 0; x0 < width; x0 += 8u) {
+        uint8_t col[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+        unsigned row, c, n = width - x0 < 8u ? (unsigned)(width - x0) : 8u;
+        const uint8_t *p = pixels + (x0 >> 3);
+        for (row = 0; row < 8u; row++) {
+            unsigned b = p[(size_t)row * stride];
+            uint8_t bit = (uint8_t)(1u << row);
+            for (c = 0; c < 8u && b != 0; c++, b = (b << 1) & 0xFFu)
+                if (b & 0x80u)
+                    col[c] = (uint8_t)(col[c] | bit);
+        }
+        for (c = 0; c < n; c++)
+            out[x0 + c] = col[c];
+    }
+}
+
 int stp_panel_send_mono_page(const stp_panel_controller *c, const stp_panel_bus *bus,
                              uint32_t page, const uint8_t *pixels, size_t stride,
                              uint32_t width, uint8_t *scratch)
 {
-    uint32_t x, bit;
     int status;
     uint32_t col = c->column_offset;
     uint8_t cmd;
@@ -123,12 +144,7 @@ int stp_panel_send_mono_page(const stp_panel_controller *c, const stp_panel_bus 
     cmd = (uint8_t)(c->column_high_command | (col >> 4));
     if ((status = bus->command(bus->ctx, &cmd, 1)) != 0)
         return status;
-    for (x = 0; x < width; x++) {
-        unsigned byte = 0;
-        for (bit = 0; bit < 8; bit++)
-            byte |= mono_bit(pixels + (size_t)bit * stride, x) << bit;
-        scratch[x] = (uint8_t)byte;
-    }
+    stp_panel_pack_page(pixels, stride, width, scratch);
     return bus->data(bus->ctx, scratch, width);
 }
 

@@ -192,6 +192,12 @@ int stp_panel_send_mono_rows(const stp_panel_controller *c, const stp_panel_bus 
                              const uint8_t *pixels, size_t stride, uint32_t width,
                              uint32_t rows, uint8_t *scratch);
 
+/* Pack 8 MONO1 rows (pixels, rows stride bytes apart, width pixels) into
+ * width bytes of the SSD1306 page layout (STP_PANEL_MONO_COLUMN_LSB_TOP:
+ * out[x] holds column x, bit r row r), as u8g2's page buffers hold a tile
+ * row too. */
+void stp_panel_pack_page(const uint8_t *pixels, size_t stride, uint32_t width, uint8_t *out);
+
 /* PAGES controllers: send one 8-row page of a MONO1 picture (rows
  * 8*page .. 8*page+7 at pixels, stride apart), through scratch (width
  * bytes). */

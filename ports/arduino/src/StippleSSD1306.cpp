@@ -1,47 +1,72 @@
 /* SPDX-License-Identifier: MIT */
-/* SSD1306 over Arduino's SPI library (StippleSSD1306.h). */
+/* SSD1306 on Wire or SPI (StippleSSD1306.h). */
 #include <Arduino.h>
 #include <SPI.h>
+#include <Wire.h>
 
 #include "StippleSSD1306.h"
 
-StippleSSD1306::StippleSSD1306(uint8_t cs_pin, uint8_t dc_pin, uint8_t reset_pin)
-    : cs_(cs_pin), dc_(dc_pin), reset_(reset_pin)
+#include "stipple/render.h"
+#include "stipple_sim.h"
+
+/* A control byte and up to this many bytes per transmission: Wire's buffer
+ * (BUFFER_LENGTH, 32 on an AVR) less the control byte. */
+#if defined(BUFFER_LENGTH) && BUFFER_LENGTH > 1
+#define I2C_CHUNK (BUFFER_LENGTH - 1u)
+#else
+#define I2C_CHUNK 16u
+#endif
+#define NO_PIN 0xFFu
+
+StippleSSD1306::StippleSSD1306()
+    : address_(0x3C), cs_(NO_PIN), dc_(NO_PIN), reset_(NO_PIN), spi_(false)
 {
     bus_.command = command;
     bus_.data = data;
     bus_.ctx = this;
-    pages_.controller = &stp_panel_ssd1306;
-    pages_.bus = &bus_;
-    pages_.width = width;
-    pages_.height = height;
-    pages_.row_bytes = width / 8;
-    pages_.page_rows = page_rows_;
-    pages_.columns = columns_;
 }
 
-void StippleSSD1306::send(const uint8_t *bytes, size_t count, bool is_data)
+int StippleSSD1306::send(const uint8_t *bytes, size_t count, bool is_data)
 {
-    /* the datasheet's 100 ns clock cycle: 8 MHz is within it */
-    SPI.beginTransaction(SPISettings(8000000, MSBFIRST, SPI_MODE0));
-    digitalWrite(dc_, is_data ? HIGH : LOW);
-    digitalWrite(cs_, LOW);
-    while (count--)
-        SPI.transfer(*bytes++);
-    digitalWrite(cs_, HIGH);
-    SPI.endTransaction();
+    if (spi_) {
+        /* the datasheet's 100 ns clock cycle: 8 MHz is within it */
+        SPI.beginTransaction(SPISettings(8000000, MSBFIRST, SPI_MODE0));
+        digitalWrite(dc_, is_data ? HIGH : LOW);
+        digitalWrite(cs_, LOW);
+        STIPPLE_SIM_BUS(1); /* the bytes' transfer only */
+        while (count--)
+            SPI.transfer(*bytes++);
+        STIPPLE_SIM_BUS(0);
+        digitalWrite(cs_, HIGH);
+        SPI.endTransaction();
+    } else {
+        /* control byte: 0x00 commands follow, 0x40 data follow */
+        STIPPLE_SIM_BUS(1);
+        while (count > 0) {
+            size_t n = count < I2C_CHUNK ? count : I2C_CHUNK;
+            Wire.beginTransmission(address_);
+            Wire.write(is_data ? 0x40 : 0x00);
+            Wire.write(bytes, n);
+            if (Wire.endTransmission() != 0) {
+                STIPPLE_SIM_BUS(0);
+                return -1;
+            }
+            bytes += n;
+            count -= n;
+        }
+        STIPPLE_SIM_BUS(0);
+    }
+    return 0;
 }
 
 int StippleSSD1306::command(void *ctx, const uint8_t *bytes, size_t count)
 {
-    static_cast<StippleSSD1306 *>(ctx)->send(bytes, count, false);
-    return 0;
+    return static_cast<StippleSSD1306 *>(ctx)->send(bytes, count, false);
 }
 
 int StippleSSD1306::data(void *ctx, const uint8_t *bytes, size_t count)
 {
-    static_cast<StippleSSD1306 *>(ctx)->send(bytes, count, true);
-    return 0;
+    return static_cast<StippleSSD1306 *>(ctx)->send(bytes, count, true);
 }
 
 int StippleSSD1306::step(void *ctx, unsigned op, unsigned arg)
@@ -49,9 +74,11 @@ int StippleSSD1306::step(void *ctx, unsigned op, unsigned arg)
     StippleSSD1306 *self = static_cast<StippleSSD1306 *>(ctx);
     switch (op) {
     case STP_PANEL_STEP_RESET:
-        digitalWrite(self->reset_, LOW);
-        delay(arg);
-        digitalWrite(self->reset_, HIGH);
+        if (self->reset_ != NO_PIN) {
+            digitalWrite(self->reset_, LOW);
+            delay(arg);
+            digitalWrite(self->reset_, HIGH);
+        }
         return 0;
     case STP_PANEL_STEP_DELAY:
         delay(arg);
@@ -61,50 +88,75 @@ int StippleSSD1306::step(void *ctx, unsigned op, unsigned arg)
     }
 }
 
-int StippleSSD1306::flush(stp_port *port, uint32_t y0, uint32_t rows, const uint8_t *pixels,
-                          size_t stride)
-{
-    StippleSSD1306 *self = static_cast<StippleSSD1306 *>(port->user);
-    return stp_panel_pages_put(&self->pages_, y0, rows, pixels, stride) == 0 ? 0 : -1;
-}
-
 int StippleSSD1306::begin()
 {
-    pinMode(cs_, OUTPUT);
-    pinMode(dc_, OUTPUT);
-    pinMode(reset_, OUTPUT);
-    digitalWrite(cs_, HIGH);
-    digitalWrite(reset_, HIGH);
-    SPI.begin();
     return stp_panel_run(stp_panel_ssd1306.init, stp_panel_ssd1306.init_length, &bus_, step,
                          this) == 0
                ? STP_OK
                : STP_ERR_PORT;
 }
 
-int StippleSSD1306::draw(const stp_scene_data &scene)
+int StippleSSD1306::beginI2C(uint8_t address, uint32_t clock_hz)
 {
-    stp_renderer *r;
-    stp_port port;
-    stp_output out;
-    stp_frame_memory mem;
-    int status;
-    if (scene.width != width || scene.height != height)
-        return STP_ERR_ARG;
-    status = stp_scene_data_enter(&scene, &renderer_, sizeof renderer_, &r);
-    if (status != STP_OK)
-        return status;
-    stp_scene_data_output(&scene, &out);
-    stp_scene_frame_memory(&mem, band_, sizeof band_, STIPPLE_BAND_ROWS, scene.sort,
-                           scene.sort_count);
-#if STP_WITH_ZBUFFER
-    mem.zbuf = zbuf_;
-    mem.zbuf_count = sizeof zbuf_ / sizeof zbuf_[0];
-#endif
-    port.width = width;
-    port.height = height;
-    port.format = STP_PIXEL_MONO1;
-    port.flush = flush;
-    port.user = this;
-    return stp_renderer_render(r, &port, &out, &mem);
+    spi_ = false;
+    address_ = address;
+    Wire.begin();
+    Wire.setClock(clock_hz);
+    return begin();
+}
+
+int StippleSSD1306::beginSPI(uint8_t cs_pin, uint8_t dc_pin, uint8_t reset_pin)
+{
+    spi_ = true;
+    cs_ = cs_pin;
+    dc_ = dc_pin;
+    reset_ = reset_pin;
+    pinMode(cs_, OUTPUT);
+    pinMode(dc_, OUTPUT);
+    pinMode(reset_, OUTPUT);
+    digitalWrite(cs_, HIGH);
+    digitalWrite(reset_, HIGH);
+    SPI.begin();
+    return begin();
+}
+
+int StippleSSD1306::sendPage(uint8_t page, const uint8_t *rows, size_t stride)
+{
+    return stp_panel_send_mono_page(&stp_panel_ssd1306, &bus_, page, rows, stride, width, page_) == 0
+               ? STP_OK
+               : STP_ERR_PORT;
+}
+
+void StippleSSD1306::frameDone(int status)
+{
+    STIPPLE_SIM_FRAME(status);
+    (void)status;
+}
+
+int StippleSSD1306::drawFrame(const stp_direct_frame &frame)
+{
+    uint8_t page;
+    int status = STP_OK;
+    for (page = 0; page < height / 8 && status == STP_OK; page++) {
+        status = stp_direct_draw_band(&frame, band_, width / 8, (uint16_t)(page * 8u), 8);
+        if (status == STP_OK)
+            status = sendPage(page, band_, width / 8);
+    }
+    frameDone(status);
+    return status;
+}
+
+int StippleSSD1306::drawSpans(const stp_spans &spans)
+{
+    stp_spans_cursor cursor;
+    uint8_t page;
+    int status = STP_OK;
+    stp_spans_start(&spans, &cursor);
+    for (page = 0; page < height / 8 && status == STP_OK; page++) {
+        status = stp_spans_draw(&spans, &cursor, band_, width / 8, 8);
+        if (status == STP_OK)
+            status = sendPage(page, band_, width / 8);
+    }
+    frameDone(status);
+    return status;
 }

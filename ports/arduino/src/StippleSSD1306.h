@@ -1,57 +1,62 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * An SSD1306 128x64 OLED on Arduino's SPI library (4-wire: SCK, MOSI, and
- * the three pins given to begin: CS#, D/C#, RES#), drawing a compiled scene
- * band by band.
+ * An SSD1306 128x64 OLED for the Arduino library, on I2C (the Wire
+ * library, 400 kHz) or 4-wire SPI (the SPI library, at half the CPU clock
+ * up to 8 MHz: SCK, MOSI and the three pins given to beginSPI).  Pictures
+ * go out a page (8 rows) at a time from one 8-row band of 128 bytes and a
+ * 128-byte page of packed columns: 256 bytes in all.
  */
 #ifndef STIPPLE_ARDUINO_SSD1306_H
 #define STIPPLE_ARDUINO_SSD1306_H
 
+#include <stddef.h>
 #include <stdint.h>
 
-#include "stipple/stipple.h"
+#include "stipple/direct.h"
+#include "stipple/playback_spans.h"
 #include "stp_panel.h"
-#include "stp_scene_data.h"
-
-#ifndef STIPPLE_BAND_ROWS
-#define STIPPLE_BAND_ROWS 2 /* rows rendered at a time: RAM against passes (4 leaves the
-                              * teapot-s1 sketch too little stack on a Mega 2560) */
-#endif
 
 class StippleSSD1306 {
 public:
     static const uint8_t width = 128, height = 64;
 
-    /* Pins: chip select, data/command, reset (any digital pins). */
-    StippleSSD1306(uint8_t cs_pin, uint8_t dc_pin, uint8_t reset_pin);
+    StippleSSD1306();
 
-    /* SPI up, the panel reset and initialised.  Returns STP_OK, or
+    /* The panel on I2C at address (0x3C, or 0x3D with its SA0 high), the
+     * bus at clock_hz; reset and initialised.  Returns STP_OK or
+     * STP_ERR_PORT (no acknowledge). */
+    int beginI2C(uint8_t address = 0x3C, uint32_t clock_hz = 400000ul);
+
+    /* The panel on SPI: chip select, data/command and reset pins (any
+     * digital pins).  Returns STP_OK or STP_ERR_PORT. */
+    int beginSPI(uint8_t cs_pin, uint8_t dc_pin, uint8_t reset_pin);
+
+    /* Draw a direct-drawing frame (stp_direct_frame_project, 128x64) page by
+     * page.  Returns STP_OK, the error of stp_direct_draw_band, or
      * STP_ERR_PORT. */
-    int begin();
+    int drawFrame(const stp_direct_frame &frame);
 
-    /* Enter the scene (the renderer lives in this object) and draw it.
-     * Returns STP_OK or the core's error (stipple/render.h); the scene must
-     * be compiled for 128x64 (stipple compile -s 128x64). */
-    int draw(const stp_scene_data &scene);
+    /* Play a span picture (stipple compile --spans, 128x64) from the start.
+     * Returns STP_OK, the error of stp_spans_draw, or STP_ERR_PORT. */
+    int drawSpans(const stp_spans &spans);
+
+    /* Send one page (rows 8 page .. 8 page + 7) of a MONO1 picture, rows
+     * stride bytes apart.  Returns STP_OK or STP_ERR_PORT. */
+    int sendPage(uint8_t page, const uint8_t *rows, size_t stride);
 
 private:
-    uint8_t cs_, dc_, reset_;
+    uint8_t address_, cs_, dc_, reset_;
+    bool spi_;
     stp_panel_bus bus_;
-    stp_panel_pages pages_;
-    stp_renderer_storage renderer_;
-    uint8_t band_[STIPPLE_BAND_ROWS * (width / 8)];
-#if STP_WITH_ZBUFFER
-    uint16_t zbuf_[STIPPLE_BAND_ROWS * width];
-#endif
-    uint8_t page_rows_[8 * (width / 8)];
-    uint8_t columns_[width];
+    uint8_t band_[8 * (width / 8)];
+    uint8_t page_[width];
 
+    int begin();
+    void frameDone(int status);
     static int command(void *ctx, const uint8_t *bytes, size_t count);
     static int data(void *ctx, const uint8_t *bytes, size_t count);
     static int step(void *ctx, unsigned op, unsigned arg);
-    static int flush(stp_port *port, uint32_t y0, uint32_t rows, const uint8_t *pixels,
-                     size_t stride);
-    void send(const uint8_t *bytes, size_t count, bool is_data);
+    int send(const uint8_t *bytes, size_t count, bool is_data);
 };
 
 #endif
