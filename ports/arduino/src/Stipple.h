@@ -5,7 +5,9 @@
  *                             spun, shaded and drawn band by band
  *   stipple/playback_spans.h  pictures made on the host (stipple compile
  *                             --spans), played from flash
- *   StippleSSD1306.h          an SSD1306 128x64 OLED on I2C or SPI
+ *   StippleSSD1306.h          an SSD1306 128x64 OLED, drawn band by band;
+ *                             its bus: #include <StippleSSD1306I2C.h>
+ *                             (Wire) or <StippleSSD1306SPI.h> (SPI)
  *   StippleMesh.h             a mesh from `stipple compile --mesh`, out
  *                             of flash where the core reads it
  *   stipple_spin.h            the examples' camera, light and turn

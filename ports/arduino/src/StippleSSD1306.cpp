@@ -1,84 +1,32 @@
 /* SPDX-License-Identifier: MIT */
-/* SSD1306 on Wire or SPI (StippleSSD1306.h). */
+/* SSD1306 drawing, whatever the bus (StippleSSD1306.h). */
 #include <Arduino.h>
-#include <SPI.h>
-#include <Wire.h>
 
 #include "StippleSSD1306.h"
 
 #include "stipple/render.h"
 #include "stipple_sim.h"
+#include "stp_panel.h"
 
-/* A control byte and up to this many bytes per transmission: Wire's buffer
- * (BUFFER_LENGTH, 32 on an AVR) less the control byte. */
-#if defined(BUFFER_LENGTH) && BUFFER_LENGTH > 1
-#define I2C_CHUNK (BUFFER_LENGTH - 1u)
-#else
-#define I2C_CHUNK 16u
-#endif
-#define NO_PIN 0xFFu
-
-StippleSSD1306::StippleSSD1306()
-    : address_(0x3C), cs_(NO_PIN), dc_(NO_PIN), reset_(NO_PIN), spi_(false)
+int StippleSSD1306::busCommand(void *ctx, const uint8_t *bytes, size_t count)
 {
-    bus_.command = command;
-    bus_.data = data;
-    bus_.ctx = this;
+    return static_cast<StippleSSD1306 *>(ctx)->command(bytes, (uint8_t)count);
 }
 
-int StippleSSD1306::send(const uint8_t *bytes, size_t count, bool is_data)
+int StippleSSD1306::busData(void *ctx, const uint8_t *bytes, size_t count)
 {
-    if (spi_) {
-        /* the datasheet's 100 ns clock cycle: 8 MHz is within it */
-        SPI.beginTransaction(SPISettings(8000000, MSBFIRST, SPI_MODE0));
-        digitalWrite(dc_, is_data ? HIGH : LOW);
-        digitalWrite(cs_, LOW);
-        STIPPLE_SIM_BUS(1); /* the bytes' transfer only */
-        while (count--)
-            SPI.transfer(*bytes++);
-        STIPPLE_SIM_BUS(0);
-        digitalWrite(cs_, HIGH);
-        SPI.endTransaction();
-    } else {
-        /* control byte: 0x00 commands follow, 0x40 data follow */
-        STIPPLE_SIM_BUS(1);
-        while (count > 0) {
-            size_t n = count < I2C_CHUNK ? count : I2C_CHUNK;
-            Wire.beginTransmission(address_);
-            Wire.write(is_data ? 0x40 : 0x00);
-            Wire.write(bytes, n);
-            if (Wire.endTransmission() != 0) {
-                STIPPLE_SIM_BUS(0);
-                return -1;
-            }
-            bytes += n;
-            count -= n;
-        }
-        STIPPLE_SIM_BUS(0);
-    }
-    return 0;
-}
-
-int StippleSSD1306::command(void *ctx, const uint8_t *bytes, size_t count)
-{
-    return static_cast<StippleSSD1306 *>(ctx)->send(bytes, count, false);
-}
-
-int StippleSSD1306::data(void *ctx, const uint8_t *bytes, size_t count)
-{
-    return static_cast<StippleSSD1306 *>(ctx)->send(bytes, count, true);
+    StippleSSD1306 *self = static_cast<StippleSSD1306 *>(ctx);
+    int status;
+    self->dataStart();
+    status = self->dataPut(bytes, (uint8_t)count);
+    return self->dataEnd() != 0 ? -1 : status;
 }
 
 int StippleSSD1306::step(void *ctx, unsigned op, unsigned arg)
 {
-    StippleSSD1306 *self = static_cast<StippleSSD1306 *>(ctx);
     switch (op) {
     case STP_PANEL_STEP_RESET:
-        if (self->reset_ != NO_PIN) {
-            digitalWrite(self->reset_, LOW);
-            delay(arg);
-            digitalWrite(self->reset_, HIGH);
-        }
+        static_cast<StippleSSD1306 *>(ctx)->reset(arg);
         return 0;
     case STP_PANEL_STEP_DELAY:
         delay(arg);
@@ -88,75 +36,73 @@ int StippleSSD1306::step(void *ctx, unsigned op, unsigned arg)
     }
 }
 
-int StippleSSD1306::begin()
+int StippleSSD1306::initPanel()
 {
-    return stp_panel_run(stp_panel_ssd1306.init, stp_panel_ssd1306.init_length, &bus_, step,
-                         this) == 0
+    stp_panel_bus bus;
+    bus.command = busCommand;
+    bus.data = busData;
+    bus.ctx = this;
+    return stp_panel_run(stp_panel_ssd1306.init, stp_panel_ssd1306.init_length, &bus, step, this) == 0
                ? STP_OK
                : STP_ERR_PORT;
-}
-
-int StippleSSD1306::beginI2C(uint8_t address, uint32_t clock_hz)
-{
-    spi_ = false;
-    address_ = address;
-    Wire.begin();
-    Wire.setClock(clock_hz);
-    return begin();
-}
-
-int StippleSSD1306::beginSPI(uint8_t cs_pin, uint8_t dc_pin, uint8_t reset_pin)
-{
-    spi_ = true;
-    cs_ = cs_pin;
-    dc_ = dc_pin;
-    reset_ = reset_pin;
-    pinMode(cs_, OUTPUT);
-    pinMode(dc_, OUTPUT);
-    pinMode(reset_, OUTPUT);
-    digitalWrite(cs_, HIGH);
-    digitalWrite(reset_, HIGH);
-    SPI.begin();
-    return begin();
 }
 
 int StippleSSD1306::sendPage(uint8_t page, const uint8_t *rows, size_t stride)
 {
-    return stp_panel_send_mono_page(&stp_panel_ssd1306, &bus_, page, rows, stride, width, page_) == 0
-               ? STP_OK
-               : STP_ERR_PORT;
+    const stp_panel_controller *c = &stp_panel_ssd1306;
+    uint8_t cmd[3], block[8], b;
+    int status;
+    /* page, column low and high nibbles: one command transfer */
+    cmd[0] = (uint8_t)(c->page_command | page);
+    cmd[1] = (uint8_t)(c->column_low_command | (c->column_offset & 15u));
+    cmd[2] = (uint8_t)(c->column_high_command | (c->column_offset >> 4));
+    if (command(cmd, 3) != 0)
+        return STP_ERR_PORT;
+    dataStart();
+    status = 0;
+    for (b = 0; b < width / 8 && status == 0; b++) {
+        stp_panel_pack_block(rows + b, stride, block);
+        status = dataPut(block, 8);
+    }
+    if (dataEnd() != 0)
+        status = -1;
+    return status == 0 ? STP_OK : STP_ERR_PORT;
 }
 
-void StippleSSD1306::frameDone(int status)
+/* The picture band by band, each band's pages in turn, from a frame or a
+ * span picture. */
+int StippleSSD1306::drawBands(const void *source, bool spans)
 {
+    const size_t stride = width / 8;
+    stp_spans_cursor cursor;
+    uint8_t y, p;
+    int status = STP_OK;
+    if (spans)
+        stp_spans_start(static_cast<const stp_spans *>(source), &cursor);
+    for (y = 0; y < height && status == STP_OK; y = (uint8_t)(y + band_rows_)) {
+        if (spans)
+            status = stp_spans_draw(static_cast<const stp_spans *>(source), &cursor, band_, stride,
+                                    band_rows_);
+        else
+            status = stp_direct_draw_band(static_cast<const stp_direct_frame *>(source), band_,
+                                          stride, y, band_rows_);
+        for (p = 0; p < band_rows_ / 8u && status == STP_OK; p++)
+            status = sendPage((uint8_t)(y / 8u + p), band_ + 8u * p * stride, stride);
+    }
     STIPPLE_SIM_FRAME(status);
-    (void)status;
+    return status;
 }
 
 int StippleSSD1306::drawFrame(const stp_direct_frame &frame)
 {
-    uint8_t page;
-    int status = STP_OK;
-    for (page = 0; page < height / 8 && status == STP_OK; page++) {
-        status = stp_direct_draw_band(&frame, band_, width / 8, (uint16_t)(page * 8u), 8);
-        if (status == STP_OK)
-            status = sendPage(page, band_, width / 8);
-    }
-    frameDone(status);
-    return status;
+    if (frame.width != width || frame.height != height)
+        return STP_ERR_ARG;
+    return drawBands(&frame, false);
 }
 
 int StippleSSD1306::drawSpans(const stp_spans &spans)
 {
-    stp_spans_cursor cursor;
-    uint8_t page;
-    int status = STP_OK;
-    stp_spans_start(&spans, &cursor);
-    for (page = 0; page < height / 8 && status == STP_OK; page++) {
-        status = stp_spans_draw(&spans, &cursor, band_, width / 8, 8);
-        if (status == STP_OK)
-            status = sendPage(page, band_, width / 8);
-    }
-    frameDone(status);
-    return status;
+    if (spans.width != width || spans.height != height)
+        return STP_ERR_ARG;
+    return drawBands(&spans, true);
 }

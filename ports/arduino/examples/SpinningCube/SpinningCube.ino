@@ -5,10 +5,11 @@
 // runs at 400 kHz.  cube_mesh.h comes from `stipple compile cube.obj --mesh
 // --name cube`: another model, another header.
 #include <Stipple.h>
+#include <StippleSSD1306I2C.h>
 
 #include "cube_mesh.h"
 
-static StippleSSD1306 panel;
+static StippleSSD1306I2C panel;
 static StippleMesh<CUBE_VERTEX_COUNT, CUBE_TRIANGLE_COUNT> mesh;
 static stp_direct_point points[CUBE_VERTEX_COUNT];
 static uint16_t faces[CUBE_TRIANGLE_COUNT];
@@ -18,7 +19,7 @@ static uint16_t frame;
 void setup()
 {
     pinMode(LED_BUILTIN, OUTPUT);
-    if (panel.beginI2C(0x3C) != STP_OK ||
+    if (panel.begin(0x3C) != STP_OK ||
         stipple_spin_begin(&spin, mesh.load(&cube_mesh), STP_FIX_ONE, points, faces) != STP_OK)
         for (;;)
             digitalWrite(LED_BUILTIN, HIGH); // no panel: the LED says so

@@ -5,10 +5,11 @@
 // 8 MHz (half a 16 MHz clock).  cube_mesh.h comes from `stipple compile
 // cube.obj --mesh --name cube`.
 #include <Stipple.h>
+#include <StippleSSD1306SPI.h>
 
 #include "cube_mesh.h"
 
-static StippleSSD1306 panel;
+static StippleSSD1306SPI panel(10, 9, 8); // CS, DC, RES
 static StippleMesh<CUBE_VERTEX_COUNT, CUBE_TRIANGLE_COUNT> mesh;
 static stp_direct_point points[CUBE_VERTEX_COUNT];
 static uint16_t faces[CUBE_TRIANGLE_COUNT];
@@ -18,7 +19,7 @@ static uint16_t frame;
 void setup()
 {
     pinMode(LED_BUILTIN, OUTPUT);
-    if (panel.beginSPI(10, 9, 8) != STP_OK ||
+    if (panel.begin() != STP_OK ||
         stipple_spin_begin(&spin, mesh.load(&cube_mesh), STP_FIX_ONE, points, faces) != STP_OK)
         for (;;)
             digitalWrite(LED_BUILTIN, HIGH);

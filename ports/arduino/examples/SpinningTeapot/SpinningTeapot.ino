@@ -8,10 +8,11 @@
 // hidden face through a nearer one.  teapot_mesh.h comes from `stipple
 // compile teapot.nff --mesh --name teapot`.
 #include <Stipple.h>
+#include <StippleSSD1306I2C.h>
 
 #include "teapot_mesh.h"
 
-static StippleSSD1306 panel;
+static StippleSSD1306I2C panel;
 static StippleMesh<TEAPOT_VERTEX_COUNT, TEAPOT_TRIANGLE_COUNT> mesh;
 static stp_direct_point points[TEAPOT_VERTEX_COUNT];
 static uint16_t faces[TEAPOT_TRIANGLE_COUNT];
@@ -21,7 +22,7 @@ static uint16_t frame;
 void setup()
 {
     pinMode(LED_BUILTIN, OUTPUT);
-    if (panel.beginI2C(0x3C) != STP_OK ||
+    if (panel.begin(0x3C) != STP_OK ||
         stipple_spin_begin(&spin, mesh.load(&teapot_mesh), STP_FIX_ONE, points, faces) != STP_OK)
         for (;;)
             digitalWrite(LED_BUILTIN, HIGH);

@@ -8,15 +8,16 @@
 // (Uno, Nano: SDA A4, SCL A5).  Any scene, any board with the flash for
 // its runs (stipple compile prints nothing; the file's size tells).
 #include <Stipple.h>
+#include <StippleSSD1306I2C.h>
 
 extern "C" const stp_spans stp_compiled_spans;
 
-static StippleSSD1306 panel;
+static StippleSSD1306I2C panel;
 
 void setup()
 {
     pinMode(LED_BUILTIN, OUTPUT);
-    if (panel.beginI2C(0x3C) != STP_OK || panel.drawSpans(stp_compiled_spans) != STP_OK)
+    if (panel.begin(0x3C) != STP_OK || panel.drawSpans(stp_compiled_spans) != STP_OK)
         digitalWrite(LED_BUILTIN, HIGH);
 }
 
