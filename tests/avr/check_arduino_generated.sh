@@ -28,5 +28,23 @@ done
 check "$ex/SpinningTeapot/teapot_mesh.h" "$src/ports/arduino/models/teapot.nff" --mesh --name teapot
 check "$ex/StaticScene/scene_spans.c" "$scenes/teapot-s1.nff" -s 128x64 -d bayer4 -l 16 \
     --exposure off --spans --header "$work/spans_config.h"
+# refusals: a name that is not a C identifier, --mesh with --spans, a
+# model of degenerate polygons only
+refuse() { # WANT_STATUS, then the compile arguments
+    want=$1
+    shift
+    got=0
+    "$stipple" compile "$@" >"$work/log" 2>&1 || got=$?
+    if [ "$got" -ne "$want" ] || [ ! -s "$work/log" ] || [ -e "$work/refused.h" ]; then
+        echo "FAIL: 'stipple compile $*' exited $got (want $want, a message, no output):"
+        cat "$work/log"
+        status=1
+    fi
+}
+rm -f "$work/refused.h"
+refuse 1 "$src/ports/arduino/models/cube.obj" --mesh --name 9cube -o "$work/refused.h"
+refuse 2 "$src/ports/arduino/models/cube.obj" --mesh --spans -o "$work/refused.h"
+printf 'v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n' >"$work/flat.obj"
+refuse 1 "$work/flat.obj" --mesh -o "$work/refused.h"
 [ $status -eq 0 ] && echo "PASS: the examples' meshes and spans are up to date"
 exit $status

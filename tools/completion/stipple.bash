@@ -17,7 +17,7 @@ _stipple_shared="--size --levels --dither --spacing --gamma --gamma-k --hidden -
 _stipple_options() {
     case $1 in
     render) echo "--output --scene-format --device --format --band --stats --palette --planes --outlines --crease-angle --outline-level --no-rescale --help $_stipple_shared" ;;
-    compile) echo "--output --header --scene-format --static --spans --help $_stipple_shared" ;;
+    compile) echo "--output --header --scene-format --static --spans --mesh --name --help $_stipple_shared" ;;
     dither) echo "--output --plain --dither --spacing --gamma --gamma-k --linear --palette --planes --help" ;;
     scene) echo "--size --output --list --help" ;;
     bench) echo "--scenes --size --depth --min-weight --budget --help" ;;
