@@ -40,7 +40,7 @@ int main(int argc, char **argv)
     }
     mesh = !strcmp(argv[1], "cube") ? &cube_mesh : &teapot_mesh;
     n = (unsigned)strtoul(argv[2], 0, 10);
-    if (stipple_spin_begin(&spin, mesh, STP_FIX_ONE, points, faces) != STP_OK ||
+    if (stipple_spin_begin(&spin, mesh, points, faces) != STP_OK ||
         stipple_spin_frame(&spin, (uint16_t)n) != STP_OK) {
         fprintf(stderr, "spin_reference: frame %u of %s not drawn\n", n, argv[1]);
         return 1;

@@ -9,7 +9,8 @@
  * the Arduino examples, drawn in one band of 64 rows as MONO1 (pixel x of
  * a row in bit 7 - x % 8) for the reference; the u8g2 buffer is filled in
  * page mode (1 and 2 tile rows, every page in turn) and full-buffer mode
- * (8), over earlier content that must stay (u8g2 draws are OR'ed).
+ * (8), over earlier content that must stay (u8g2 draws are OR'ed).  Also
+ * the examples' view kept as data against stp_direct_view_look.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -38,7 +39,7 @@ static int mono_bit(const uint8_t *mono, unsigned x, unsigned y)
 static void cube_frame(stipple_spin *spin, stp_direct_point *points, uint16_t *faces, uint16_t n,
                        uint8_t *mono)
 {
-    assert_int_equal(stipple_spin_begin(spin, &cube_mesh, STP_FIX_ONE, points, faces), STP_OK);
+    assert_int_equal(stipple_spin_begin(spin, &cube_mesh, points, faces), STP_OK);
     assert_int_equal(stipple_spin_frame(spin, n), STP_OK);
     assert_int_equal(stp_direct_draw_band(&spin->frame, mono, STRIDE, 0, H), STP_OK);
 }
@@ -119,6 +120,34 @@ static void test_pack_block(void **state)
     }
 }
 
+/* The examples' view, kept as data (stipple_spin.h), is the one
+ * stp_direct_view_look makes today. */
+static void test_spin_view(void **state)
+{
+    static stp_direct_point points[CUBE_VERTEX_COUNT];
+    static uint16_t faces[CUBE_TRIANGLE_COUNT];
+    const stp_direct_view kept = STIPPLE_SPIN_VIEW;
+    stp_direct_view v;
+    stp_vec3 from = {0, STP_FIX_ONE, 27 * STP_FIX_ONE / 8}, at = {0, 0, 0}, up = {0, STP_FIX_ONE, 0};
+    stipple_spin spin;
+    int i, j;
+    (void)state;
+    assert_int_equal(stp_direct_view_look(&v, from, at, up, 6651316, 6554, W, H), STP_OK);
+    assert_int_equal(stipple_spin_begin(&spin, &cube_mesh, points, faces), STP_OK);
+    assert_int_equal(spin.view.from.x, v.from.x);
+    assert_int_equal(spin.view.from.y, v.from.y);
+    assert_int_equal(spin.view.from.z, v.from.z);
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) {
+            assert_int_equal(spin.view.axis[i][j], v.axis[i][j]);
+            assert_int_equal(kept.axis[i][j], v.axis[i][j]);
+        }
+    assert_int_equal(spin.view.focal, v.focal);
+    assert_int_equal(spin.view.hither, v.hither);
+    assert_int_equal(spin.view.width, v.width);
+    assert_int_equal(spin.view.height, v.height);
+}
+
 static void test_bad_arguments(void **state)
 {
     uint8_t buffer[W], band[8 * STRIDE], page[W];
@@ -141,6 +170,7 @@ int main(void)
         cmocka_unit_test(test_page_mode_two_tile_rows),
         cmocka_unit_test(test_full_buffer),
         cmocka_unit_test(test_pack_block),
+        cmocka_unit_test(test_spin_view),
         cmocka_unit_test(test_bad_arguments),
     };
     return cmocka_run_group_tests(tests, 0, 0);

@@ -10,11 +10,14 @@
 static const uint8_t bayer4[16] = {14, 134, 44, 164, 194, 74, 224, 104,
                                    59, 179, 29, 149, 239, 119, 209, 89};
 
-/* radius (< 16 units) times k / 16, k < 128: below 2^27 */
-static stp_fix radii16(stp_fix radius, int32_t k)
-{
-    return (stp_fix)((radius * k) >> 4);
-}
+#if defined(__AVR__)
+#include <avr/pgmspace.h>
+#define SPIN_ROM PROGMEM
+#else
+#define SPIN_ROM
+#endif
+
+static const stp_direct_view spin_view SPIN_ROM = STIPPLE_SPIN_VIEW;
 
 static stp_vec3 point(stp_fix x, stp_fix y, stp_fix z)
 {
@@ -25,24 +28,26 @@ static stp_vec3 point(stp_fix x, stp_fix y, stp_fix z)
     return p;
 }
 
-int stipple_spin_begin(stipple_spin *s, const stp_mesh *mesh, stp_fix radius,
-                       stp_direct_point *points, uint16_t *faces)
+int stipple_spin_begin(stipple_spin *s, const stp_mesh *mesh, stp_direct_point *points,
+                       uint16_t *faces)
 {
-    if (s == 0 || mesh == 0 || points == 0 || faces == 0 || radius <= 0 || radius >= 16 * ONE)
+    if (s == 0 || mesh == 0 || points == 0 || faces == 0)
         return STP_ERR_ARG;
     s->mesh = mesh;
     s->points = points;
     s->faces = faces;
-    s->light.position = point(radii16(radius, -64), radii16(radius, 96), radii16(radius, 80));
+    s->light.position = point(-4 * ONE, 6 * ONE, 5 * ONE);
     s->light.power = 640614; /* 9.775 */
     s->light.brightness = ONE;
     s->light.background = 13107; /* 0.2 */
     s->light.attenuation_c = ONE;
     s->light.reflectivity = 45875; /* 0.7 */
-    /* focal: 32 / tan(17.5 degrees) pixels; hither 0.1 */
-    return stp_direct_view_look(&s->view, point(0, radius, radii16(radius, 54)), point(0, 0, 0),
-                                point(0, ONE, 0), 6651316, 6554, (uint16_t)STIPPLE_SPIN_WIDTH,
-                                (uint16_t)STIPPLE_SPIN_HEIGHT);
+#if defined(__AVR__)
+    memcpy_P(&s->view, &spin_view, sizeof s->view);
+#else
+    s->view = spin_view;
+#endif
+    return STP_OK;
 }
 
 int stipple_spin_frame(stipple_spin *s, uint16_t n)

@@ -5,12 +5,14 @@
  * place, so a sketch and the host test that checks its pictures
  * (tests/avr/spin_reference.c) draw the same frames.
  *
- * The model (centred on the origin, with its bounding radius in stp_fix,
- * as `stipple compile --mesh` writes it) is seen from (0, radius,
- * 3.375 radius) looking at the origin, 35 degrees across the 64 rows of a
- * 128x64 panel (focal 101.49 pixels); one light at (-4, 6, 5) radii, power
- * 9.775, background 0.2, reflectivity 0.7, brightness 1; 16 levels,
- * Bayer 4x4.  Frame n turns the model by n/64 of a turn about y and by
+ * The model (centred on the origin with radius 1, as `stipple compile
+ * --mesh` writes it) is seen from (0, 1, 3.375) looking at the origin,
+ * 35 degrees across the 64 rows of a 128x64 panel (focal 101.49 pixels,
+ * hither 0.1): the view stp_direct_view_look makes, worked out on the host
+ * and kept as data (STIPPLE_SPIN_VIEW; tests/avr/test_u8g2_buffer.c checks
+ * it), so the look-at's code (1.5 KB on an AVR) stays off the chip.  One
+ * light at (-4, 6, 5), power 9.775, background 0.2, reflectivity 0.7,
+ * brightness 1; 16 levels, Bayer 4x4.  Frame n turns the model by n/64 of a turn about y and by
  * n 410/65536 of a turn about x.
  */
 #ifndef STIPPLE_SPIN_H
@@ -36,12 +38,17 @@ typedef struct stipple_spin {
     stp_direct_frame frame;    /* the last frame made by stipple_spin_frame */
 } stipple_spin;
 
-/* Set s up for mesh (prepared normals required), centred on the origin,
- * radius its bounding radius (stp_fix, in (0, 16) units).  points and
- * faces: caller memory as above.  Returns STP_OK, STP_ERR_ARG (a pointer
- * NULL, radius out of range) or the error of stp_direct_view_look. */
-int stipple_spin_begin(stipple_spin *s, const stp_mesh *mesh, stp_fix radius,
-                       stp_direct_point *points, uint16_t *faces);
+/* The view above, as stp_direct_view_look(from (0, 1, 3.375), at the
+ * origin, up (0, 1, 0), focal 6651316, hither 6554, 128, 64) returns it. */
+#define STIPPLE_SPIN_VIEW                                                                    \
+    {{0, 65536, 221184}, {{16384, 0, 0}, {0, 15709, -4655}, {0, -4655, -15709}}, 6651316, 6554, \
+     STIPPLE_SPIN_WIDTH, STIPPLE_SPIN_HEIGHT}
+
+/* Set s up for mesh (prepared normals required; centred, radius 1).
+ * points and faces: caller memory as above.  Returns STP_OK or
+ * STP_ERR_ARG (a pointer NULL). */
+int stipple_spin_begin(stipple_spin *s, const stp_mesh *mesh, stp_direct_point *points,
+                       uint16_t *faces);
 
 /* Frame n into s->frame (then drawn band by band by stp_direct_draw_band).
  * Returns STP_OK or the error of stp_direct_frame_project. */

@@ -20,7 +20,7 @@ void setup()
 {
     pinMode(LED_BUILTIN, OUTPUT);
     if (panel.begin() != STP_OK ||
-        stipple_spin_begin(&spin, mesh.load(&cube_mesh), STP_FIX_ONE, points, faces) != STP_OK)
+        stipple_spin_begin(&spin, mesh.load(&cube_mesh), points, faces) != STP_OK)
         for (;;)
             digitalWrite(LED_BUILTIN, HIGH);
 }

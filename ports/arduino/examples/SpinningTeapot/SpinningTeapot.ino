@@ -23,7 +23,7 @@ void setup()
 {
     pinMode(LED_BUILTIN, OUTPUT);
     if (panel.begin(0x3C) != STP_OK ||
-        stipple_spin_begin(&spin, mesh.load(&teapot_mesh), STP_FIX_ONE, points, faces) != STP_OK)
+        stipple_spin_begin(&spin, mesh.load(&teapot_mesh), points, faces) != STP_OK)
         for (;;)
             digitalWrite(LED_BUILTIN, HIGH);
 }

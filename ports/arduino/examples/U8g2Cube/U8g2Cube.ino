@@ -22,7 +22,7 @@ void setup()
 {
     u8g2.begin();
     u8g2.setFont(u8g2_font_6x10_tf);
-    stipple_spin_begin(&spin, mesh.load(&cube_mesh), STP_FIX_ONE, points, faces);
+    stipple_spin_begin(&spin, mesh.load(&cube_mesh), points, faces);
 }
 
 void loop()
