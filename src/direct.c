@@ -266,6 +266,7 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
     status = check_args(f, mesh, model, view, light, levels, cell, points, point_count, faces, face_count);
     if (status != STP_OK)
         return status;
+    f->layout = STP_BAND_ROWS;
     /* C = V R (shading.rot, for the normals) and M = C scale: scale in Q14,
      * below 2^15 */
     scale14 = F >= 14 ? stp_direct_asr(model->scale, F >= 14 ? F - 14 : 0) : model->scale * (1 << (F >= 14 ? 0 : 14 - F));

@@ -40,6 +40,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "stipple/dither.h"
 #include "stipple/mesh.h"
 
 #ifdef __cplusplus
@@ -120,6 +121,9 @@ typedef struct stp_direct_frame {
     const uint16_t *faces;    /* per triangle: 0 not drawn, else 256 + intensity */
     const uint8_t *cell;      /* 4 x 4 thresholds, row-major */
     uint16_t width, height;
+    uint16_t layout;          /* the bands' stp_band_layout: STP_BAND_ROWS after
+                                 stp_direct_frame_project; set STP_BAND_PAGES
+                                 before drawing for a page-layout panel */
 } stp_direct_frame;
 
 /* Transform, project and shade one frame of mesh (prepared normals
@@ -142,11 +146,18 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
                              const uint8_t cell[16], stp_direct_point *points, size_t point_count,
                              uint16_t *faces, size_t face_count);
 
-/* Draw rows y0 .. y0 + rows - 1 of frame f into band (rows x stride
- * bytes, 1 bit per pixel, most significant bit first, bit 1 = ON): the
- * band is cleared (OFF) first, then every drawn face is painted in mesh
- * order.  stride >= (width + 7) / 8.  Errors: STP_ERR_ARG (f, its arrays
- * or band NULL, stride too small, rows 0 or y0 + rows > height). */
+/* Draw rows y0 .. y0 + rows - 1 of frame f into band, 1 bit per pixel,
+ * bit 1 = ON, in f->layout:
+ *   STP_BAND_ROWS   rows x stride bytes, most significant bit first;
+ *                   stride >= (width + 7) / 8;
+ *   STP_BAND_PAGES  (rows + 7) / 8 pages of stride bytes, one byte a
+ *                   column, least significant bit the top row (the
+ *                   SSD1306 / SH1106 GDDRAM layout); stride >= width, y0 a
+ *                   multiple of 8 (bits of a last page below rows are 0).
+ * The band is cleared (OFF) first, then every drawn face is painted in
+ * mesh order; both layouts hold the same pixels.  Errors: STP_ERR_ARG (f,
+ * its arrays or band NULL, an unknown layout, stride too small, rows 0,
+ * y0 + rows > height, a page band's y0 not a multiple of 8). */
 int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0,
                          uint16_t rows);
 
