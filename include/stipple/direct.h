@@ -11,15 +11,17 @@
  *   1. stp_direct_frame_project: every vertex transformed (model, then
  *      view) and projected once into caller scratch (stp_direct_point),
  *      every front face shaded once (flat; one light; the seed's ambient +
- *      diffuse equation, docs/model.md section 2, shade_fast.c's 32-bit
+ *      diffuse equation, docs/model.md section 2, shade_fast.c's prepare and 32-bit
  *      arithmetic) into a per-face byte pair;
  *   2. stp_direct_draw_band for each band of rows (u8g2-style page mode:
  *      one band of caller memory), painting the faces that touch it with
  *      the full renderer's fill rule (pixel centres, top-left rule, Q27.4
  *      device coordinates) and its ordered-dither halftone, MSB first.
  *
- * 32-bit arithmetic only (no 64-bit product or division is formed, so no
- * libgcc helper is linked on a Cortex-M0+), no division in any loop over
+ * 32-bit arithmetic per vertex, face and pixel (the face shader's
+ * per-frame prepare, shade_fast.c's stp_shade_fast_prepare shared with the
+ * mesh route, forms a few 64-bit products: 204 B of libgcc on a
+ * Cortex-M0+), no division in any loop over
  * pixels.  Formats and ranges:
  *   Q1.14      int16_t, one = 16384 (STP_MESH_NORMAL_ONE): rotations, the
  *              view axes, normals.
