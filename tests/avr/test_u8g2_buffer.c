@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Drawing into a u8g2 page buffer (ports/arduino/src/stipple_u8g2.c) and
- * the page packer under it (ports/controllers/panel.c
- * stp_panel_pack_block, stp_panel_pack_page), against u8g2's documented
+ * Drawing into a u8g2 page buffer (ports/arduino/src/stipple_u8g2.c: page
+ * layout bands, STP_BAND_PAGES) and the page packer of span pictures
+ * (ports/controllers/panel.c stp_panel_pack_block), against u8g2's documented
  * buffer layout for the SSD1306 family (u8g2_ll_hvline_vertical_top_lsb):
  * pixel (x, y) of tile row t = y / 8 is bit y % 8 of byte
  * (t - first tile row) * width + x.  The picture is the spinning cube of
@@ -54,7 +54,7 @@ static void check_tile_rows(unsigned tile_rows)
 {
     static stp_direct_point points[CUBE_VERTEX_COUNT];
     static uint16_t faces[CUBE_TRIANGLE_COUNT];
-    uint8_t mono[H * STRIDE], buffer[8 * W], band[8 * STRIDE], page[W];
+    uint8_t mono[H * STRIDE], buffer[8 * W], scratch[W];
     stipple_spin spin;
     uint16_t n;
     unsigned first, x, y, lit = 0;
@@ -67,7 +67,7 @@ static void check_tile_rows(unsigned tile_rows)
                     if (earlier(x, y))
                         buffer[(y / 8u - first) * W + x] |= (uint8_t)(1u << (y % 8u));
             assert_int_equal(stipple_u8g2_draw(&spin.frame, buffer, (uint8_t)tile_rows, (uint8_t)first,
-                                               band, page),
+                                               scratch),
                              STP_OK);
             for (y = 8u * first; y < 8u * (first + tile_rows); y++)
                 for (x = 0; x < W; x++) {
@@ -150,17 +150,16 @@ static void test_spin_view(void **state)
 
 static void test_bad_arguments(void **state)
 {
-    uint8_t buffer[W], band[8 * STRIDE], page[W];
+    uint8_t buffer[W], scratch[W];
     stp_direct_frame f;
     (void)state;
     memset(&f, 0, sizeof f);
     f.width = W;
     f.height = H;
-    assert_int_equal(stipple_u8g2_draw(0, buffer, 1, 0, band, page), STP_ERR_ARG);
-    assert_int_equal(stipple_u8g2_draw(&f, 0, 1, 0, band, page), STP_ERR_ARG);
-    assert_int_equal(stipple_u8g2_draw(&f, buffer, 0, 0, band, page), STP_ERR_ARG);
-    assert_int_equal(stipple_u8g2_draw(&f, buffer, 1, 0, 0, page), STP_ERR_ARG);
-    assert_int_equal(stipple_u8g2_draw(&f, buffer, 1, 0, band, 0), STP_ERR_ARG);
+    assert_int_equal(stipple_u8g2_draw(0, buffer, 1, 0, scratch), STP_ERR_ARG);
+    assert_int_equal(stipple_u8g2_draw(&f, 0, 1, 0, scratch), STP_ERR_ARG);
+    assert_int_equal(stipple_u8g2_draw(&f, buffer, 0, 0, scratch), STP_ERR_ARG);
+    assert_int_equal(stipple_u8g2_draw(&f, buffer, 1, 0, 0), STP_ERR_ARG);
 }
 
 int main(void)

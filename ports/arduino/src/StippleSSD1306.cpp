@@ -47,16 +47,22 @@ int StippleSSD1306::initPanel()
                : STP_ERR_PORT;
 }
 
-int StippleSSD1306::sendPage(uint8_t page, const uint8_t *rows, size_t stride)
+/* page, column low and high nibbles: one command transfer */
+int StippleSSD1306::pageAddress(uint8_t page)
 {
     const stp_panel_controller *c = &stp_panel_ssd1306;
-    uint8_t cmd[3], block[8], b;
-    int status;
-    /* page, column low and high nibbles: one command transfer */
+    uint8_t cmd[3];
     cmd[0] = (uint8_t)(c->page_command | page);
     cmd[1] = (uint8_t)(c->column_low_command | (c->column_offset & 15u));
     cmd[2] = (uint8_t)(c->column_high_command | (c->column_offset >> 4));
-    if (command(cmd, 3) != 0)
+    return command(cmd, 3);
+}
+
+int StippleSSD1306::sendPage(uint8_t page, const uint8_t *rows, size_t stride)
+{
+    uint8_t block[8], b;
+    int status;
+    if (pageAddress(page) != 0)
         return STP_ERR_PORT;
     dataStart();
     status = 0;
@@ -69,40 +75,54 @@ int StippleSSD1306::sendPage(uint8_t page, const uint8_t *rows, size_t stride)
     return status == 0 ? STP_OK : STP_ERR_PORT;
 }
 
-/* The picture band by band, each band's pages in turn, from a frame or a
- * span picture. */
-int StippleSSD1306::drawBands(const void *source, bool spans)
+/* A page already in the panel's layout (width bytes). */
+int StippleSSD1306::sendPageBytes(uint8_t page, const uint8_t *columns)
 {
-    const size_t stride = width / 8;
-    stp_spans_cursor cursor;
+    int status;
+    if (pageAddress(page) != 0)
+        return STP_ERR_PORT;
+    dataStart();
+    status = dataPut(columns, width);
+    if (dataEnd() != 0)
+        status = -1;
+    return status == 0 ? STP_OK : STP_ERR_PORT;
+}
+
+/* A frame: bands drawn straight in the panel's page layout
+ * (STP_BAND_PAGES), each page sent as it is. */
+int StippleSSD1306::drawFrame(const stp_direct_frame &frame)
+{
+    stp_direct_frame pages = frame;
     uint8_t y, p;
     int status = STP_OK;
-    if (spans)
-        stp_spans_start(static_cast<const stp_spans *>(source), &cursor);
+    if (frame.width != width || frame.height != height)
+        return STP_ERR_ARG;
+    pages.layout = STP_BAND_PAGES;
     for (y = 0; y < height && status == STP_OK; y = (uint8_t)(y + band_rows_)) {
-        if (spans)
-            status = stp_spans_draw(static_cast<const stp_spans *>(source), &cursor, band_, stride,
-                                    band_rows_);
-        else
-            status = stp_direct_draw_band(static_cast<const stp_direct_frame *>(source), band_,
-                                          stride, y, band_rows_);
+        status = stp_direct_draw_band(&pages, band_, width, y, band_rows_);
         for (p = 0; p < band_rows_ / 8u && status == STP_OK; p++)
-            status = sendPage((uint8_t)(y / 8u + p), band_ + 8u * p * stride, stride);
+            status = sendPageBytes((uint8_t)(y / 8u + p), band_ + (size_t)p * width);
     }
     STIPPLE_SIM_FRAME(status);
     return status;
 }
 
-int StippleSSD1306::drawFrame(const stp_direct_frame &frame)
-{
-    if (frame.width != width || frame.height != height)
-        return STP_ERR_ARG;
-    return drawBands(&frame, false);
-}
-
+/* A span picture: the player writes rows, packed into pages on the way
+ * out. */
 int StippleSSD1306::drawSpans(const stp_spans &spans)
 {
+    const size_t stride = width / 8;
+    stp_spans_cursor cursor;
+    uint8_t y, p;
+    int status = STP_OK;
     if (spans.width != width || spans.height != height)
         return STP_ERR_ARG;
-    return drawBands(&spans, true);
+    stp_spans_start(&spans, &cursor);
+    for (y = 0; y < height && status == STP_OK; y = (uint8_t)(y + band_rows_)) {
+        status = stp_spans_draw(&spans, &cursor, band_, stride, band_rows_);
+        for (p = 0; p < band_rows_ / 8u && status == STP_OK; p++)
+            status = sendPage((uint8_t)(y / 8u + p), band_ + 8u * p * stride, stride);
+    }
+    STIPPLE_SIM_FRAME(status);
+    return status;
 }

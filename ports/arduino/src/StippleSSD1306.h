@@ -4,8 +4,9 @@
  * the bus.  Pictures are drawn into one band of rows (the only frame
  * memory: 16 rows, 256 bytes, on SPI; 8 rows, 128 bytes, on I2C, whose
  * bus takes longer than a band's drawing anyway) and go out a page (8 rows)
- * at a time, packed into the panel's columns 8x8 pixels at a time on their
- * way to the bus.  The bus is a subclass, header only, so a sketch links
+ * at a time: a direct-drawing frame is drawn straight in the panel's page
+ * layout (STP_BAND_PAGES) and sent as it is; a span picture's rows are
+ * packed into columns 8x8 pixels at a time on their way to the bus.  The bus is a subclass, header only, so a sketch links
  * only the Arduino library it uses: StippleSSD1306I2C.h (Wire) or
  * StippleSSD1306SPI.h (SPI).
  */
@@ -57,7 +58,8 @@ private:
     uint8_t *band_;
     uint8_t band_rows_;
 
-    int drawBands(const void *source, bool spans);
+    int pageAddress(uint8_t page);
+    int sendPageBytes(uint8_t page, const uint8_t *columns);
     static int busCommand(void *ctx, const uint8_t *bytes, size_t count);
     static int busData(void *ctx, const uint8_t *bytes, size_t count);
     static int step(void *ctx, unsigned op, unsigned arg);

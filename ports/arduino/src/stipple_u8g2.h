@@ -10,7 +10,7 @@
  *
  * In the page loop (u8g2.firstPage() / nextPage()), before the text:
  *   stipple_u8g2_draw(&frame, u8g2.getBufferPtr(), u8g2.getBufferTileHeight(),
- *                     u8g2.getBufferCurrTileRow(), band, page);
+ *                     u8g2.getBufferCurrTileRow(), scratch);
  */
 #ifndef STIPPLE_U8G2_H
 #define STIPPLE_U8G2_H
@@ -24,13 +24,13 @@ extern "C" {
 #endif
 
 /* The rows of frame f that the buffer holds (tile rows tile_row ..
- * tile_row + tile_rows - 1, cut at the frame's height), OR'ed into buffer
- * (frame width bytes per tile row: the buffer's width must be the
- * frame's).  band: 8 (width + 7) / 8 bytes of scratch; page: width bytes.
- * Returns STP_OK, STP_ERR_ARG (a pointer NULL, tile_rows 0) or the error
- * of stp_direct_draw_band. */
+ * tile_row + tile_rows - 1, cut at the frame's height), drawn a tile row
+ * at a time in the page layout (STP_BAND_PAGES) into scratch (width
+ * bytes) and OR'ed into buffer (width bytes per tile row: the buffer's
+ * width must be the frame's).  Returns STP_OK, STP_ERR_ARG (a pointer
+ * NULL, tile_rows 0) or the error of stp_direct_draw_band. */
 int stipple_u8g2_draw(const stp_direct_frame *f, uint8_t *buffer, uint8_t tile_rows,
-                      uint8_t tile_row, uint8_t *band, uint8_t *page);
+                      uint8_t tile_row, uint8_t *scratch);
 
 #ifdef __cplusplus
 }

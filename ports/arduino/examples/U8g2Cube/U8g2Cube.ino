@@ -15,7 +15,7 @@ static StippleMesh<CUBE_VERTEX_COUNT, CUBE_TRIANGLE_COUNT> mesh;
 static stp_direct_point points[CUBE_VERTEX_COUNT];
 static uint16_t faces[CUBE_TRIANGLE_COUNT];
 static stipple_spin spin;
-static uint8_t band[128], page[128];
+static uint8_t scratch[128]; // one tile row in the page layout
 static uint16_t frame;
 
 void setup()
@@ -32,7 +32,7 @@ void loop()
     u8g2.firstPage();
     do {
         stipple_u8g2_draw(&spin.frame, u8g2.getBufferPtr(), u8g2.getBufferTileHeight(),
-                          u8g2.getBufferCurrTileRow(), band, page);
+                          u8g2.getBufferCurrTileRow(), scratch);
         u8g2.drawStr(0, 10, "stipple");
     } while (u8g2.nextPage());
 }
