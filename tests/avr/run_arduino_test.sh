@@ -75,5 +75,26 @@ case $(basename "$1") in
     spin_reference) "$@" "$((frames - 1))" "$work/host.pbm" ;;
     *) "$@" -o "$work/host.pbm" ;;
 esac
-"$sim" -m "$mcu" -b "$bus" -p "$pins" -s "$heap" "$elf" "$work/panel.pbm" "$work/host.pbm"
+"$sim" -m "$mcu" -b "$bus" -p "$pins" -s "$heap" "$elf" "$work/panel.pbm" "$work/host.pbm" \
+    >"$work/sim.log" 2>&1 || { cat "$work/sim.log"; echo "FAIL: $example ($fqbn, $bus) in simavr"; exit 1; }
+cat "$work/sim.log"
+# one line for CI's log (scripts/test.sh prints these)
+flash=$(sed -n 's/^Sketch uses \([0-9]*\) bytes.*/\1/p' "$work/build.log")
+peak=$(sed -n 's/^RAM: \([0-9]*\) static.*, \([0-9]*\) at the peak.*/\1 B static, \2 B peak/p' "$work/sim.log")
+cycles=$(sed -n 's/^compute cycles per frame (bus left out): \(.*\)/, compute cycles a frame without the bus: \1/p' "$work/sim.log")
+# frames a second at 16 MHz: the worst frame's cycles without the bus plus
+# the transfer computed for a real part (SPI at f/2: 16 cycles a byte, 8
+# pages of 128 data and 3 command bytes; I2C at 400 kHz: per page one
+# transmission of 3 commands and 5 of up to 31 data bytes, 9 bits a byte
+# and 2 for START and STOP: 1 299 bits, 8 pages, 40 cycles a bit)
+worst=$(sed -n 's/^compute cycles per frame (bus left out): mean [0-9]*, max \([0-9]*\)/\1/p' "$work/sim.log")
+fps=
+if [ -n "$worst" ] && [ "$example" != StaticScene ]; then
+    case $bus in
+        spi) transfer=$((8 * (128 + 3) * 16)) ;;
+        i2c) transfer=$((8 * 1299 * 40)) ;;
+    esac
+    fps=$(awk -v w="$worst" -v t="$transfer" 'BEGIN { printf "; %.1f frames/s at 16 MHz (worst frame + %d transfer cycles)", 16e6 / (w + t), t }')
+fi
+echo "FIGURES $example $fqbn $bus: flash $flash B, RAM $peak$cycles$fps; panel equals the host's picture"
 echo "PASS: $example ($fqbn, $bus) draws on the simulated panel what the host draws"
