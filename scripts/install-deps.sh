@@ -13,7 +13,7 @@ packages=(
     imagemagick                        # the reference for the Bayer cells
     gcc-arm-none-eabi binutils-arm-none-eabi  # the Cortex-M0 check of the core
     gcc-riscv64-unknown-elf            # the RISC-V check of the core
-    gcc-avr avr-libc binutils-avr simavr libsimavr-dev arduino-core-avr  # ATmega2560 (16-bit int) and Arduino in simavr
+    gcc-avr avr-libc binutils-avr simavr libsimavr-dev arduino-core-avr arduino-builder zip  # AVR (16-bit int), the Arduino library and its sketches in simavr
     qemu-system-arm python3            # the firmware in an emulated Stellaris board (QMP client)
     dpkg-dev                           # dpkg-deb, to unpack the test photo's package
     gnuplot-nox                        # the error-against-run-time plot

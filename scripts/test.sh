@@ -17,6 +17,8 @@ for kind in plain sanitize; do
     cmake -S "$here" -B "$build" "${flags[@]}" >/dev/null
     cmake --build "$build" -j"$(nproc)"
     ctest --test-dir "$build" --output-on-failure -j"$(nproc)" || status=1
+    # the Arduino examples' flash, RAM and cycles (tests/avr/run_arduino_test.sh)
+    grep -h '^FIGURES ' "$build/Testing/Temporary/LastTest.log" 2>/dev/null | sort || true
 done
 # A short fuzzing run of every libFuzzer target (clang, ASan+UBSan), after
 # replaying the committed corpus and regressions.

@@ -17,8 +17,8 @@
  *              halves; relative error below 2^-14, so a device
  *              coordinate (below 2^13 in Q4) is within 1/2 of a Q4 unit of
  *              the full renderer's floor(focal x / z 2^-12)
- *   shading    shade_fast.c (its file comment), prepared here without
- *              64-bit arithmetic: B R BRIGHT from 16-bit halves. */
+ *   shading    shade_fast.c (its file comment): its prepare, the one the
+ *              mesh route uses, and its 32-bit face path. */
 #include "stipple/direct.h"
 
 #include "direct_private.h"
@@ -59,76 +59,30 @@ static void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out
         out[i] = vmul(d[0], view->axis[i][0]) + vmul(d[1], view->axis[i][1]) + vmul(d[2], view->axis[i][2]);
 }
 
-/* v 2^-e as shade_fast.c's stp_sf16 (its sf_make: truncated) */
-static stp_sf16 sf16_of(uint32_t v, int e)
-{
-    stp_sf16 r;
-    int n = stp_bit_length32(v) - 16;
-    r.m = v == 0 ? 0u : (n > 0 ? v >> n : v << -n);
-    r.e = v == 0 ? 0 : e - n;
-    return r;
-}
-
-/* a b as shade_fast.c's sf_mul (truncated): the mantissas' product is below
- * 2^32 */
-static stp_sf16 sf16_mul(stp_sf16 a, stp_sf16 b)
-{
-    uint32_t p = a.m * b.m;
-    stp_sf16 r;
-    int top = p >= 0x80000000u;
-    r.m = top ? p >> 16 : p >> 15;
-    r.e = a.e + b.e - (top ? 16 : 15);
-    return r;
-}
-
-/* stp_shade_fast_prepare for one light, eye at the view origin, no
- * highlight, in 32-bit arithmetic.  light_view: the light in view
- * coordinates. */
-/* The shifts between stp_fix (F fractional bits) and Q16 (both folded to
- * constants; the unused one is 0). */
-#define DOWN16 (F >= 16 ? F - 16 : 0)
-#define UP16 (F >= 16 ? 0 : 16 - F)
-
-/* v (stp_fix, 0 <= v < 2^(F + 8)) in Q16: below 2^24 */
-static uint32_t to_q16(stp_fix v)
-{
-    return ((uint32_t)v >> DOWN16) << UP16;
-}
-
-/* v in Q16 (<= 2^16) with F fractional bits, rounded */
-static stp_fix from_q16(uint32_t v)
-{
-    return (stp_fix)(((v << DOWN16) + ((1u << UP16) >> 1)) >> UP16);
-}
-
+/* The face shader's prepared form for one light (shade_fast.c's
+ * stp_shade_fast_prepare, the one every route uses), eye at the view
+ * origin, no highlight.  light_view: the light in view coordinates. */
 static void shade_prepare(stp_shade_fast *s, const stp_direct_light *l, const int32_t light_view[3])
 {
-    uint32_t b = to_q16(l->background), r = to_q16(l->reflectivity), bright16 = to_q16(l->brightness), br, p;
-    stp_sf16 bright = sf16_of((uint32_t)l->brightness, F), power = sf16_of((uint32_t)l->power, F);
-    /* B R in Q32: B, R <= 2^16, so at most 2^32 (taken as 2^32 - 1) */
-    br = b == 65536u ? (r == 65536u ? 0xFFFFFFFFu : r << 16) : b * r;
-    s->count = l->brightness > 0 ? 1 : 0;
-    s->parallel = 0;
-    s->specular = 0;
-    s->refl_negative = 0;
-    /* BRIGHT < 2^24 in Q16: round(B R BRIGHT) in Q16, capped at 1, then
-     * with F fractional bits */
-    p = mul_hi(br, bright16 << 1);
-    p = p >= 2u * 65536u ? 65536u : (p + 1u) >> 1;
-    s->ambient_shade = from_q16(p);
-    /* the same in Q26 (B R BRIGHT / 2^22), capped at 2^29 */
-    p = mul_hi(br, bright16);
-    s->ambient = p >= ((uint32_t)1 << 19) ? (int32_t)1 << 29 : (int32_t)(p << 10);
-    s->eye.x = s->eye.y = s->eye.z = 0;
-    s->eye_big = 0;
-    s->light[0].x = light_view[0];
-    s->light[0].y = light_view[1];
-    s->light[0].z = light_view[2];
-    s->light_big[0] = 0; /* below 2^26 */
-    /* BRIGHT P |R| as shade_fast.c's sf_mul twice, per raw unit of C + U */
-    s->power_refl[0] = sf16_mul(sf16_mul(bright, power), sf16_of(r, 16)); /* r in Q16 */
-    s->power_refl[0].e -= F;
-    s->attenuation_c = sf16_of(l->attenuation_c > 0 ? (uint32_t)l->attenuation_c : 1u, 0);
+    stp_lighting lighting;
+    stp_material material;
+    stp_vec3 origin = {0, 0, 0}, towards_eye = {0, 0, -ONE}; /* unused: perspective */
+    int i;
+    lighting.brightness = l->brightness;
+    lighting.background = l->background;
+    lighting.attenuation_c = l->attenuation_c;
+    lighting.count = 1;
+    lighting.lights[0].position.x = light_view[0];
+    lighting.lights[0].position.y = light_view[1];
+    lighting.lights[0].position.z = light_view[2];
+    lighting.lights[0].power = l->power;
+    material.reflectivity = l->reflectivity;
+    material.refraction = ONE / 2; /* below 1: no Fresnel table (no highlight) */
+    material.gloss = ONE;
+    material.specular = 0;
+    for (i = 0; i < 3; i++)
+        lighting.lights[0].colour[i] = material.colour[i] = ONE;
+    stp_shade_fast_prepare(s, &lighting, &material, origin, 0, towards_eye);
 #if STP_WIDE_ARITH
     s->wide_ready = 0; /* the 32-bit face path on hosts too: the chip's values */
 #endif
@@ -266,6 +220,7 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
     status = check_args(f, mesh, model, view, light, levels, cell, points, point_count, faces, face_count);
     if (status != STP_OK)
         return status;
+    f->layout = STP_BAND_ROWS;
     /* C = V R (shading.rot, for the normals) and M = C scale: scale in Q14,
      * below 2^15 */
     scale14 = F >= 14 ? stp_direct_asr(model->scale, F >= 14 ? F - 14 : 0) : model->scale * (1 << (F >= 14 ? 0 : 14 - F));

@@ -9,10 +9,12 @@
  * / (yb - ya)): the full renderer's value, which it accumulates row by row
  * in 64 bits; here it is formed afresh each row in 32: device coordinates
  * below 2^13 in magnitude keep xa 2^16 below 2^29 and (yc - ya) slope
- * below 2^16 |xb - xa| < 2^30. */
+ * below 2^16 |xb - xa| < 2^30.  Runs go through the one 1-bit run filler
+ * (dither.c), in rows or in the panel's pages (stp_band_layout). */
 #include "stipple/direct.h"
 
 #include "direct_private.h"
+#include "run_fill_private.h" /* stp_halftone_fill_bits, the one run filler */
 
 #define SUB 4
 #define HALF (1 << (SUB - 1))
@@ -49,21 +51,6 @@ static int edge_make(band_edge *e, const stp_direct_point *a, const stp_direct_p
     return 1;
 }
 
-/* Pixels x1..x2 of a 1-bit row set to pattern (MSB first). */
-static void fill_bits(uint8_t *row, uint32_t x1, uint32_t x2, uint8_t pattern)
-{
-    uint32_t first = x1 >> 3, last = x2 >> 3, b;
-    uint8_t head = (uint8_t)(0xFFu >> (x1 & 7u)), tail = (uint8_t)(0xFFu << (7u - (x2 & 7u)));
-    if (first == last)
-        head = (uint8_t)(head & tail);
-    row[first] = (uint8_t)((row[first] & ~head) | (pattern & head));
-    if (first == last)
-        return;
-    for (b = first + 1; b < last; b++)
-        row[b] = pattern;
-    row[last] = (uint8_t)((row[last] & ~tail) | (pattern & tail));
-}
-
 /* The byte of cell row (y mod 4) at intensity: bit 7 - x ON where
  * intensity > threshold (x mod 4), repeated. */
 static uint8_t pattern_of(const uint8_t *cell, uint32_t y, uint32_t intensity)
@@ -74,9 +61,12 @@ static uint8_t pattern_of(const uint8_t *cell, uint32_t y, uint32_t intensity)
     return (uint8_t)(p | p >> 4);
 }
 
-/* One face's rows within [y_top, y_bottom) (pixel rows of the band). */
+/* One face's rows within [y_top, y_bottom) (pixel rows of the band);
+ * page_shift 0: band row r is band + r stride (STP_BAND_ROWS); 3: its page
+ * starts at band + (r / 8) stride, its bit 1 << (r mod 8) (STP_BAND_PAGES,
+ * y_top a multiple of 8). */
 static void draw_face(const stp_direct_frame *f, const stp_direct_point *p[3], uint32_t intensity,
-                      uint8_t *band, size_t stride, int32_t y_top, int32_t y_bottom)
+                      uint8_t *band, size_t stride, int page_shift, int32_t y_top, int32_t y_bottom)
 {
     band_edge e[3];
     int32_t ymin = p[0]->dy, ymax = p[0]->dy, y, y_first, y_last;
@@ -110,19 +100,31 @@ static void draw_face(const stp_direct_frame *f, const stp_direct_point *p[3], u
         a = a < 0 ? 0 : a;
         b = b > (int32_t)f->width - 1 ? (int32_t)f->width - 1 : b;
         if (a <= b)
-            fill_bits(band + (size_t)(y - y_top) * stride, (uint32_t)a, (uint32_t)b,
-                      pattern_of(f->cell, (uint32_t)y, intensity));
+            stp_halftone_fill_bits(band + (size_t)((uint32_t)(y - y_top) >> page_shift) * stride,
+                                   (uint8_t)(page_shift ? 1u << (y & 7) : 0u), (uint32_t)a, (uint32_t)b,
+                                   pattern_of(f->cell, (uint32_t)y, intensity));
     }
 }
 
 int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0,
                          uint16_t rows)
 {
-    uint32_t i, t;
-    if (f == 0 || band == 0 || f->mesh == 0 || f->points == 0 || f->faces == 0 || f->cell == 0 ||
-        stride < ((uint32_t)f->width + 7u) / 8u || rows == 0 || (uint32_t)y0 + rows > f->height)
+    uint32_t i, t, lines;
+    int page_shift = 0;
+    if (f == 0 || band == 0 || f->mesh == 0 || f->points == 0 || f->faces == 0 || f->cell == 0 || rows == 0 ||
+        (uint32_t)y0 + rows > f->height)
         return STP_ERR_ARG;
-    for (i = 0; i < (uint32_t)rows * stride; i++)
+    if (f->layout == STP_BAND_PAGES) {
+        if (stride < f->width || (y0 & 7u) != 0)
+            return STP_ERR_ARG;
+        lines = ((uint32_t)rows + 7u) >> 3;
+        page_shift = 3;
+    } else {
+        if (f->layout != STP_BAND_ROWS || stride < ((uint32_t)f->width + 7u) / 8u)
+            return STP_ERR_ARG;
+        lines = rows;
+    }
+    for (i = 0; i < lines * stride; i++)
         band[i] = 0;
     for (t = 0; t < f->mesh->triangle_count; t++) {
         const uint16_t *k = &f->mesh->triangles[3 * t];
@@ -132,7 +134,7 @@ int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride
         p[0] = &f->points[k[0]];
         p[1] = &f->points[k[1]];
         p[2] = &f->points[k[2]];
-        draw_face(f, p, f->faces[t] & 0xFFu, band, stride, y0, (int32_t)y0 + rows);
+        draw_face(f, p, f->faces[t] & 0xFFu, band, stride, page_shift, y0, (int32_t)y0 + rows);
     }
     return STP_OK;
 }

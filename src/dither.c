@@ -237,22 +237,6 @@ uint8_t stp_halftone_pattern_byte(const stp_cell *cell, uint32_t y, uint8_t inte
     return (uint8_t)pattern;
 }
 
-void stp_halftone_fill_bits(uint8_t *row, uint32_t x1, uint32_t x2, uint8_t pattern)
-{
-    uint32_t first = x1 >> 3, last = x2 >> 3, b;
-    uint8_t head = (uint8_t)(0xFFu >> (x1 & 7u)), tail = (uint8_t)(0xFFu << (7u - (x2 & 7u)));
-    if (first == last) {
-        uint8_t mask = (uint8_t)(head & tail);
-        row[first] = (uint8_t)((row[first] & ~mask) | (pattern & mask));
-        return;
-    }
-    row[first] = (uint8_t)((row[first] & ~head) | (pattern & head));
-    /* whole bytes: a plain store loop (compilers turn it into memset) */
-    for (b = first + 1; b < last; b++)
-        row[b] = pattern;
-    row[last] = (uint8_t)((row[last] & ~tail) | (pattern & tail));
-}
-
 void stp_halftone_fillin(uint8_t *row, uint32_t x1, uint32_t x2, uint32_t y,
                          const stp_cell *cell, uint8_t intensity)
 {
@@ -261,7 +245,7 @@ void stp_halftone_fillin(uint8_t *row, uint32_t x1, uint32_t x2, uint32_t y,
     if (cell->kind != STP_CELL_PATTERN && (w & (w - 1u)) == 0 && w <= 8u) { /* w divides 8, no division */
         /* The cell's width divides 8, so every byte of the row sees the same
          * cell columns at the same bits: one pattern byte fills the span. */
-        stp_halftone_fill_bits(row, x1, x2, stp_halftone_pattern_byte(cell, y, intensity));
+        stp_halftone_fill_bits(row, 0, x1, x2, stp_halftone_pattern_byte(cell, y, intensity));
         return;
     }
     if (cell->kind == STP_CELL_PATTERN) {

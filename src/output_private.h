@@ -26,8 +26,7 @@ void stp_output_put_shade(uint8_t *row, stp_pixel_format format, uint32_t x, uin
  * for an intensity: bit 7 - b is ON when pixel b of any byte of the row is
  * (needs a threshold cell whose width divides 8). */
 uint8_t stp_halftone_pattern_byte(const stp_cell *cell, uint32_t y, uint8_t intensity);
-/* Pixels x1..x2 (x1 <= x2) of a MONO1 row from a pattern byte, a byte at a
- * time between the two partial end bytes. */
-void stp_halftone_fill_bits(uint8_t *row, uint32_t x1, uint32_t x2, uint8_t pattern);
+/* The one 1-bit run filler: stp_halftone_fill_bits (run_fill_private.h). */
+#include "run_fill_private.h"
 
 #endif

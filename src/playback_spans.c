@@ -1,7 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 /* The span player of playback_spans.h: each run is one masked byte fill
- * per 8 pixels; nothing is divided. */
+ * per 8 pixels; nothing is divided.  The data is read a byte at a time
+ * through read_byte (program memory on an AVR). */
 #include "stipple/playback_spans.h"
+
+#if defined(__AVR__)
+#define read_byte(p) pgm_read_byte(p)
+#else
+#define read_byte(p) (*(p))
+#endif
 
 void stp_spans_start(const stp_spans *spans, stp_spans_cursor *cursor)
 {
@@ -9,10 +16,10 @@ void stp_spans_start(const stp_spans *spans, stp_spans_cursor *cursor)
     cursor->y = 0;
 }
 
-/* Pixels x1..x2 (x1 <= x2) of a MONO1 row set from the pattern byte. */
-static void fill_run(uint8_t *row, uint32_t x1, uint32_t x2, uint8_t pattern)
+/* Pixels x1..x2 (x1 <= x2 < 256) of a MONO1 row set from the pattern byte. */
+static void fill_run(uint8_t *row, uint8_t x1, uint8_t x2, uint8_t pattern)
 {
-    uint32_t i = x1 >> 3, last = x2 >> 3;
+    uint8_t i = (uint8_t)(x1 >> 3), last = (uint8_t)(x2 >> 3);
     uint8_t mask = (uint8_t)(0xFFu >> (x1 & 7u));
     for (;; i++) {
         if (i == last)
@@ -24,23 +31,46 @@ static void fill_run(uint8_t *row, uint32_t x1, uint32_t x2, uint8_t pattern)
     }
 }
 
+static int spans_ok(const stp_spans *spans, const stp_spans_cursor *cursor, const uint8_t *band,
+                    size_t stride, uint32_t rows)
+{
+    uint8_t cell_mask;
+    if (spans == 0 || cursor == 0 || band == 0 || spans->patterns == 0 || spans->runs == 0 ||
+        cursor->next == 0)
+        return 0;
+    cell_mask = (uint8_t)(spans->cell_rows - 1u);
+    return rows > 0 && cursor->y <= spans->height && rows <= (uint32_t)spans->height - cursor->y &&
+           spans->width >= 1u && spans->width <= 256u && stride >= ((size_t)spans->width + 7u) / 8u &&
+           spans->cell_rows != 0 && cell_mask <= 7u && (spans->cell_rows & cell_mask) == 0 &&
+           cursor->next >= spans->runs && (size_t)(cursor->next - spans->runs) <= spans->run_bytes;
+}
+
 int stp_spans_draw(const stp_spans *spans, stp_spans_cursor *cursor, uint8_t *band, size_t stride,
                    uint32_t rows)
 {
-    const uint8_t *p = cursor->next;
-    uint32_t cell_mask = (uint32_t)spans->cell_rows - 1u, right = (uint32_t)spans->width - 1u;
-    if (rows > (uint32_t)spans->height - cursor->y || cell_mask > 7u ||
-        (spans->cell_rows & cell_mask) != 0)
+    const uint8_t *p, *end;
+    uint8_t cell_mask, right;
+    if (!spans_ok(spans, cursor, band, stride, rows))
         return STP_ERR_ARG;
+    p = cursor->next;
+    end = spans->runs + spans->run_bytes;
+    cell_mask = (uint8_t)(spans->cell_rows - 1u);
+    right = (uint8_t)(spans->width - 1u);
     for (; rows > 0; rows--, band += stride) {
-        uint32_t x = 0, last;
+        uint16_t x = 0; /* the row's next pixel: up to 256 */
+        uint8_t last;
         const uint8_t *pattern_row = spans->patterns + (cursor->y & cell_mask);
         do {
-            last = p[0];
-            if (last < x || last > right || p[1] >= spans->shade_count)
+            uint8_t shade;
+            if (end - p < 2)
+                return STP_ERR_ARG; /* the data ends inside the row */
+            last = read_byte(p);
+            shade = read_byte(p + 1);
+            if (last < x || last > right || shade >= spans->shade_count)
                 return STP_ERR_ARG;
-            fill_run(band, x, last, pattern_row[(uint32_t)p[1] * spans->cell_rows]);
-            x = last + 1u;
+            fill_run(band, (uint8_t)x, last,
+                     read_byte(pattern_row + (uint16_t)shade * spans->cell_rows));
+            x = (uint16_t)(last + 1u);
             p += 2;
         } while (last != right);
         cursor->y++;

@@ -145,6 +145,7 @@ int stp_tool_static_spans(const stp_instr *df, uint32_t used, uint32_t width, ui
         sp.shade_count = (uint8_t)s->shade_count;
         sp.patterns = s->patterns;
         sp.runs = s->runs;
+        sp.run_bytes = (uint32_t)s->run_bytes;
         stp_spans_start(&sp, &cur);
         if (s->shade_count > 255 ||
             stp_spans_draw(&sp, &cur, again, mono_bytes, height) != STP_OK ||

@@ -11,15 +11,17 @@
  *   1. stp_direct_frame_project: every vertex transformed (model, then
  *      view) and projected once into caller scratch (stp_direct_point),
  *      every front face shaded once (flat; one light; the seed's ambient +
- *      diffuse equation, docs/model.md section 2, shade_fast.c's 32-bit
+ *      diffuse equation, docs/model.md section 2, shade_fast.c's prepare and 32-bit
  *      arithmetic) into a per-face byte pair;
  *   2. stp_direct_draw_band for each band of rows (u8g2-style page mode:
  *      one band of caller memory), painting the faces that touch it with
  *      the full renderer's fill rule (pixel centres, top-left rule, Q27.4
  *      device coordinates) and its ordered-dither halftone, MSB first.
  *
- * 32-bit arithmetic only (no 64-bit product or division is formed, so no
- * libgcc helper is linked on a Cortex-M0+), no division in any loop over
+ * 32-bit arithmetic per vertex, face and pixel (the face shader's
+ * per-frame prepare, shade_fast.c's stp_shade_fast_prepare shared with the
+ * mesh route, forms a few 64-bit products: 204 B of libgcc on a
+ * Cortex-M0+), no division in any loop over
  * pixels.  Formats and ranges:
  *   Q1.14      int16_t, one = 16384 (STP_MESH_NORMAL_ONE): rotations, the
  *              view axes, normals.
@@ -40,6 +42,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "stipple/dither.h"
 #include "stipple/mesh.h"
 
 #ifdef __cplusplus
@@ -120,6 +123,9 @@ typedef struct stp_direct_frame {
     const uint16_t *faces;    /* per triangle: 0 not drawn, else 256 + intensity */
     const uint8_t *cell;      /* 4 x 4 thresholds, row-major */
     uint16_t width, height;
+    uint16_t layout;          /* the bands' stp_band_layout: STP_BAND_ROWS after
+                                 stp_direct_frame_project; set STP_BAND_PAGES
+                                 before drawing for a page-layout panel */
 } stp_direct_frame;
 
 /* Transform, project and shade one frame of mesh (prepared normals
@@ -142,11 +148,18 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
                              const uint8_t cell[16], stp_direct_point *points, size_t point_count,
                              uint16_t *faces, size_t face_count);
 
-/* Draw rows y0 .. y0 + rows - 1 of frame f into band (rows x stride
- * bytes, 1 bit per pixel, most significant bit first, bit 1 = ON): the
- * band is cleared (OFF) first, then every drawn face is painted in mesh
- * order.  stride >= (width + 7) / 8.  Errors: STP_ERR_ARG (f, its arrays
- * or band NULL, stride too small, rows 0 or y0 + rows > height). */
+/* Draw rows y0 .. y0 + rows - 1 of frame f into band, 1 bit per pixel,
+ * bit 1 = ON, in f->layout:
+ *   STP_BAND_ROWS   rows x stride bytes, most significant bit first;
+ *                   stride >= (width + 7) / 8;
+ *   STP_BAND_PAGES  (rows + 7) / 8 pages of stride bytes, one byte a
+ *                   column, least significant bit the top row (the
+ *                   SSD1306 / SH1106 GDDRAM layout); stride >= width, y0 a
+ *                   multiple of 8 (bits of a last page below rows are 0).
+ * The band is cleared (OFF) first, then every drawn face is painted in
+ * mesh order; both layouts hold the same pixels.  Errors: STP_ERR_ARG (f,
+ * its arrays or band NULL, an unknown layout, stride too small, rows 0,
+ * y0 + rows > height, a page band's y0 not a multiple of 8). */
 int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0,
                          uint16_t rows);
 

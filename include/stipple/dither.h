@@ -22,6 +22,17 @@ typedef enum stp_cell_kind {
     STP_CELL_PATTERN = 1    /* pattern cell: the level picks a whole pattern */
 } stp_cell_kind;
 
+/* How a 1-bit band's bytes hold its pixels (bit 1 = ON in both). */
+typedef enum stp_band_layout {
+    /* rows of (width + 7) / 8 bytes, most significant bit first: pixel
+     * (x, y) is bit 7 - x mod 8 of byte y stride + x / 8 (STP_PIXEL_MONO1) */
+    STP_BAND_ROWS = 0,
+    /* the SSD1306 / SH1106 page layout: 8 rows a page, one byte a column,
+     * least significant bit on top: pixel (x, y) is bit y mod 8 of byte
+     * (y / 8) stride + x, so a page goes to the panel as it is */
+    STP_BAND_PAGES = 1
+} stp_band_layout;
+
 /* A halftone cell, held by value so it can be copied and stored in ROM.
  * Threshold cells: thresholds[y*width + x], 0..255, or, for cells larger
  * than STP_CELL_MAX (blue noise, stp_cell_mask), the same in mask: const

@@ -6,8 +6,8 @@
  * each run from that shade's halftone pattern rows.  Nothing is divided,
  * sorted or depth-tested on the chip, and the only frame memory is the band.
  *
- * Data (const, read in place; on an AVR without PROGMEM it is copied to
- * SRAM at start-up like any const data):
+ * Data (const, read in place; on an AVR both arrays are in program memory,
+ * STP_SPANS_ROM, and read with pgm_read_byte, so a picture takes no RAM):
  *   runs      rows top to bottom; a row is runs left to right, each two
  *             bytes {last x of the run, shade index}; a row ends with the
  *             run whose last x is width - 1.
@@ -27,12 +27,23 @@
 extern "C" {
 #endif
 
+/* Where the arrays live: program memory on an AVR (avr-gcc would copy
+ * plain const data into RAM at start-up), ordinary const data elsewhere.
+ * `stipple compile --spans` writes its arrays with STP_SPANS_ROM. */
+#if defined(__AVR__)
+#include <avr/pgmspace.h>
+#define STP_SPANS_ROM PROGMEM
+#else
+#define STP_SPANS_ROM
+#endif
+
 typedef struct stp_spans {
     uint16_t width, height; /* the picture, 1..256 wide, 1..32767 high */
     uint8_t cell_rows;      /* pattern rows per shade: 1, 2, 4 or 8 */
     uint8_t shade_count;    /* entries of patterns: shade_count * cell_rows */
-    const uint8_t *patterns;
-    const uint8_t *runs;
+    const uint8_t *patterns; /* STP_SPANS_ROM */
+    const uint8_t *runs;     /* STP_SPANS_ROM, run_bytes bytes */
+    uint32_t run_bytes;      /* bytes of runs (twice the number of runs) */
 } stp_spans;
 
 /* Where playback has got to: the next row and its first run. */
@@ -48,10 +59,12 @@ void stp_spans_start(const stp_spans *spans, stp_spans_cursor *cursor);
 /* Draw the cursor's next `rows` rows (1..height - cursor row) as MONO1 into
  * band (row r at band + r * stride, stride >= (width + 7) / 8 bytes; every
  * pixel of the rows is written) and move the cursor past them.  Returns
- * STP_OK, or STP_ERR_ARG for rows beyond the picture, a cell_rows that is
- * not 1, 2, 4 or 8, a run that goes backwards or past the row, or a shade
- * index of shade_count or more (the band is then partly drawn).  width must
- * be 1..256 (not checked: `stipple compile --spans` refuses other sizes). */
+ * STP_OK, or STP_ERR_ARG for a NULL spans, cursor, band or array, rows 0
+ * or beyond the picture, width not in 1..256, stride too small, a cell_rows
+ * that is not 1, 2, 4 or 8, a run that goes backwards or past the row, a
+ * row whose runs end before its last column (the data runs out: a run is
+ * read only below run_bytes), or a shade index of shade_count or more (the
+ * band is then partly drawn and the cursor stays at the bad row). */
 int stp_spans_draw(const stp_spans *spans, stp_spans_cursor *cursor, uint8_t *band, size_t stride,
                    uint32_t rows);
 

@@ -6,19 +6,27 @@
 
 /* The one walker over records and steps: init sequences, refresh and sleep
  * sequences alike. */
+/* A sequence's byte: program memory on an AVR (STP_PANEL_ROM) */
+#if defined(__AVR__)
+#define SEQ_BYTE(p) pgm_read_byte(p)
+#define SEQ_RECORD_MAX 16u
+#else
+#define SEQ_BYTE(p) (*(p))
+#endif
+
 int stp_panel_run(const uint8_t *seq, uint16_t length, const stp_panel_bus *bus,
                   stp_panel_step_fn step, void *step_ctx)
 {
     size_t at = 0;
     while (at < length) {
-        size_t n = seq[at];
+        size_t n = SEQ_BYTE(seq + at);
         int status;
         if (n == 0) {
             /* a step: 0, op, arg low, arg high */
             if (length - at < 4u || !step)
                 return -1;
-            status = step(step_ctx, seq[at + 1],
-                          (unsigned)seq[at + 2] | (unsigned)seq[at + 3] << 8);
+            status = step(step_ctx, SEQ_BYTE(seq + at + 1),
+                          (unsigned)SEQ_BYTE(seq + at + 2) | (unsigned)SEQ_BYTE(seq + at + 3) << 8);
             if (status != 0)
                 return status;
             at += 4u;
@@ -26,7 +34,18 @@ int stp_panel_run(const uint8_t *seq, uint16_t length, const stp_panel_bus *bus,
         }
         if (n > length - at - 1u)
             return -1;
-        if ((status = bus->command(bus->ctx, seq + at + 1, n)) != 0)
+#if defined(__AVR__)
+        {
+            uint8_t record[SEQ_RECORD_MAX];
+            if (n > SEQ_RECORD_MAX)
+                return -1;
+            memcpy_P(record, seq + at + 1, n);
+            status = bus->command(bus->ctx, record, n);
+        }
+#else
+        status = bus->command(bus->ctx, seq + at + 1, n);
+#endif
+        if (status != 0)
             return status;
         at += 1u + n;
     }
@@ -104,11 +123,57 @@ int stp_panel_send_mono_rows(const stp_panel_controller *c, const stp_panel_bus 
     return 0;
 }
 
+/* Column k's byte gathers bit 7 - k of each row byte, row r into bit r:
+ * each row byte shifted left once per column, its top bit shifted into
+ * the column bytes from the top (after 8 rows, row 0 is in bit 0).  Eight
+ * byte variables, no indexing: on an 8-bit CPU they stay in registers. */
+#define STP_PACK_COLUMN(c, b) c = (uint8_t)((c >> 1) | (b & 0x80u)), b = (uint8_t)(b << 1)
+
+void stp_panel_pack_block(const uint8_t *rows, size_t stride, uint8_t out[8])
+{
+    uint8_t c0 = 0, c1 = 0, c2 = 0, c3 = 0, c4 = 0, c5 = 0, c6 = 0, c7 = 0, any = 0;
+    unsigned r;
+    for (r = 0; r < 8u; r++)
+        any = (uint8_t)(any | rows[(size_t)r * stride]);
+    if (any) {
+        for (r = 0; r < 8u; r++) {
+            uint8_t b = rows[(size_t)r * stride];
+            STP_PACK_COLUMN(c0, b);
+            STP_PACK_COLUMN(c1, b);
+            STP_PACK_COLUMN(c2, b);
+            STP_PACK_COLUMN(c3, b);
+            STP_PACK_COLUMN(c4, b);
+            STP_PACK_COLUMN(c5, b);
+            STP_PACK_COLUMN(c6, b);
+            STP_PACK_COLUMN(c7, b);
+        }
+    }
+    out[0] = c0;
+    out[1] = c1;
+    out[2] = c2;
+    out[3] = c3;
+    out[4] = c4;
+    out[5] = c5;
+    out[6] = c6;
+    out[7] = c7;
+}
+
+void stp_panel_pack_page(const uint8_t *pixels, size_t stride, uint32_t width, uint8_t *out)
+{
+    uint32_t x0;
+    for (x0 = 0; x0 < width; x0 += 8u) {
+        uint8_t col[8];
+        unsigned c, n = width - x0 < 8u ? (unsigned)(width - x0) : 8u;
+        stp_panel_pack_block(pixels + (x0 >> 3), stride, col);
+        for (c = 0; c < n; c++)
+            out[x0 + c] = col[c];
+    }
+}
+
 int stp_panel_send_mono_page(const stp_panel_controller *c, const stp_panel_bus *bus,
                              uint32_t page, const uint8_t *pixels, size_t stride,
                              uint32_t width, uint8_t *scratch)
 {
-    uint32_t x, bit;
     int status;
     uint32_t col = c->column_offset;
     uint8_t cmd;
@@ -123,12 +188,7 @@ int stp_panel_send_mono_page(const stp_panel_controller *c, const stp_panel_bus 
     cmd = (uint8_t)(c->column_high_command | (col >> 4));
     if ((status = bus->command(bus->ctx, &cmd, 1)) != 0)
         return status;
-    for (x = 0; x < width; x++) {
-        unsigned byte = 0;
-        for (bit = 0; bit < 8; bit++)
-            byte |= mono_bit(pixels + (size_t)bit * stride, x) << bit;
-        scratch[x] = (uint8_t)byte;
-    }
+    stp_panel_pack_page(pixels, stride, width, scratch);
     return bus->data(bus->ctx, scratch, width);
 }
 

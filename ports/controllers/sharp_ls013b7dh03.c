@@ -27,7 +27,7 @@
 #include "stp_panel.h"
 
 /* records: a count, then the bytes of one SCS frame */
-static const uint8_t init_sequence[] = {
+static const uint8_t init_sequence[] STP_PANEL_ROM = {
     STP_PANEL_CMD(0x20, 0x00) /* all clear (M2), VCOM low: the panel starts white */
 };
 

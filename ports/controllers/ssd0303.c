@@ -11,7 +11,7 @@
 #include "stp_panel.h"
 
 /* records: a count, then a command and its parameters (stp_panel.h) */
-static const uint8_t init_sequence[] = {
+static const uint8_t init_sequence[] STP_PANEL_ROM = {
     STP_PANEL_CMD(0xAE),       /* display off while setting up */
     STP_PANEL_CMD(0x81, 0x2B), /* contrast */
     STP_PANEL_CMD(0xA1),       /* segment re-map, as the EVB wires the panel */

@@ -6,7 +6,7 @@
 #include "stp_panel.h"
 
 /* records: a count, then a command and its parameters (stp_panel.h) */
-static const uint8_t init_sequence[] = {
+static const uint8_t init_sequence[] STP_PANEL_ROM = {
     STP_PANEL_CMD(0xAE),       /* display off while setting up */
     STP_PANEL_CMD(0xA0, 0x52), /* re-map: column address and COM scan as the EVB wires them */
     STP_PANEL_CMD(0xA1, 0x00), /* display start line 0 */

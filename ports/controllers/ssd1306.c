@@ -16,7 +16,7 @@
  * the datasheet's example for the internal charge pump. */
 #include "stp_panel.h"
 
-static const uint8_t init_sequence[] = {
+static const uint8_t init_sequence[] STP_PANEL_ROM = {
     STP_PANEL_RESET(1),        /* RES# low (datasheet: at least 3 us) */
     STP_PANEL_DELAY(1),        /* then released before the first command */
     STP_PANEL_CMD(0xAE),       /* display off while setting up */

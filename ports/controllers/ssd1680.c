@@ -23,7 +23,7 @@
  * A 122-pixel row fills 16 RAM bytes; the 6 pad bits are sent white. */
 #include "stp_panel.h"
 
-static const uint8_t init_122x250[] = {
+static const uint8_t init_122x250[] STP_PANEL_ROM = {
     STP_PANEL_RESET(10),                 /* RES# low 10 ms */
     STP_PANEL_DELAY(10),
     STP_PANEL_WAIT_READY(2000),
@@ -37,7 +37,7 @@ static const uint8_t init_122x250[] = {
     STP_PANEL_WAIT_READY(2000)
 };
 
-static const uint8_t init_128x296[] = {
+static const uint8_t init_128x296[] STP_PANEL_ROM = {
     STP_PANEL_RESET(10),
     STP_PANEL_DELAY(10),
     STP_PANEL_WAIT_READY(2000),
@@ -51,13 +51,13 @@ static const uint8_t init_128x296[] = {
     STP_PANEL_WAIT_READY(2000)
 };
 
-static const uint8_t refresh_sequence[] = {
+static const uint8_t refresh_sequence[] STP_PANEL_ROM = {
     STP_PANEL_CMD(0x22, 0xF7),           /* display update control 2: full update */
     STP_PANEL_CMD(0x20),                 /* master activation */
     STP_PANEL_WAIT_READY(15000)          /* BUSY high while the waveform runs */
 };
 
-static const uint8_t sleep_sequence[] = {
+static const uint8_t sleep_sequence[] STP_PANEL_ROM = {
     STP_PANEL_WAIT_READY(2000),          /* never a command while BUSY (after a failed refresh) */
     STP_PANEL_CMD(0x10, 0x01)            /* deep sleep mode 1 (RAM kept) */
 };

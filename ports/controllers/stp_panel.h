@@ -19,6 +19,16 @@
 extern "C" {
 #endif
 
+/* Where the sequences (init, refresh, sleep) live: program memory on an
+ * AVR (avr-gcc would copy plain const data into RAM at start-up), plain
+ * const data elsewhere.  stp_panel_run reads them accordingly. */
+#if defined(__AVR__)
+#include <avr/pgmspace.h>
+#define STP_PANEL_ROM PROGMEM
+#else
+#define STP_PANEL_ROM
+#endif
+
 typedef enum stp_panel_addressing {
     /* A column window and a row window, each set by a command with start
      * and end; data then fills the window row by row (SSD0323). */
@@ -161,9 +171,11 @@ int stp_panel_init(const stp_panel_controller *c, const stp_panel_bus *bus);
  * it does not know). */
 typedef int (*stp_panel_step_fn)(void *ctx, unsigned op, unsigned arg);
 
-/* Runs a sequence of length bytes: records go to bus->command as in
- * stp_panel_init, steps (count 0) to step(step_ctx, op, arg).  Returns 0,
- * the bus or step error, or -1 for a record or step running past the end. */
+/* Runs a sequence of length bytes (STP_PANEL_ROM): records go to
+ * bus->command as in stp_panel_init, steps (count 0) to step(step_ctx, op,
+ * arg).  Returns 0, the bus or step error, or -1 for a record or step
+ * running past the end (on an AVR also for a record of more than 16
+ * bytes: each is copied out of program memory into 16 bytes of stack). */
 int stp_panel_run(const uint8_t *seq, uint16_t length, const stp_panel_bus *bus,
                   stp_panel_step_fn step, void *step_ctx);
 
@@ -191,6 +203,17 @@ int stp_panel_window_all(const stp_panel_controller *c, const stp_panel_bus *bus
 int stp_panel_send_mono_rows(const stp_panel_controller *c, const stp_panel_bus *bus,
                              const uint8_t *pixels, size_t stride, uint32_t width,
                              uint32_t rows, uint8_t *scratch);
+
+/* Pack 8 MONO1 rows (pixels, rows stride bytes apart, width pixels) into
+ * width bytes of the SSD1306 page layout (STP_PANEL_MONO_COLUMN_LSB_TOP:
+ * out[x] holds column x, bit r row r), as u8g2's page buffers hold a tile
+ * row too. */
+void stp_panel_pack_page(const uint8_t *pixels, size_t stride, uint32_t width, uint8_t *out);
+
+/* The same for one 8x8 block: rows[r * stride] (r = 0..7) are the 8 row
+ * bytes of 8 columns; out[k] gets column k (bit r: row r).  A sender that
+ * streams a page packs it a block at a time, with no page buffer. */
+void stp_panel_pack_block(const uint8_t *rows, size_t stride, uint8_t out[8]);
 
 /* PAGES controllers: send one 8-row page of a MONO1 picture (rows
  * 8*page .. 8*page+7 at pixels, stride apart), through scratch (width

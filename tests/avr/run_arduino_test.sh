@@ -1,39 +1,43 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# The Arduino library: assemble it (scripts/arduino_library.sh) with SCENE
-# in its example sketch, build the sketch for the Mega 2560 against Debian's
-# arduino-core-avr the way arduino-builder would (its platform.txt recipes:
-# the same flags, LTO, the core as an archive), run the image under simavr
-# with an SSD1306 (avr_ssd1306_sim) and compare the panel pixel for pixel
-# with `stipple render SCENE -s 128x64`.
+# An example of the Arduino library, as a user builds it: the release
+# archive made by scripts/arduino_library.sh and unzipped, the example built
+# by Debian's arduino-builder for the board FQBN, run in simavr (MCU at
+# 16 MHz) with an SSD1306 on BUS (spi: CS 10, DC 9, RES 8 as the example
+# wires them; i2c: address 0x3C), and the panel compared pixel for pixel
+# with the host's picture made by REFERENCE (spin_reference MODEL: the same
+# frame drawn by the host core; or a `stipple render ...` command line).
+# Prints the builder's flash and RAM figures, the peak RAM with the stack
+# and the cycles of each frame with the bus left out (simavr's SPI takes
+# ~1600 cycles a byte, a real one 16 at f/2: add the real transfer time).
 #
-# Debian 12's arduino-core-avr does not compile with its gcc-avr 5.4
-# (WString.cpp: "size of array 'buf' is not an integral constant-
-# expression"), so arduino-builder cannot be used as is: the core is
-# compiled here with WString.cpp left out.
+# Debian 12's arduino-core-avr does not build with its gcc-avr 5.4
+# (WString.cpp: DECIMAL_DIG undeclared); the one preference
+# compiler.cpp.extra_flags=-DDECIMAL_DIG=17 makes arduino-builder build the
+# core as it is.  STIPPLE_SIM_FRAMES (ports/arduino/src/stipple_sim.h)
+# stops the sketch after its frames, for the simulator.
 #
-# run_arduino_test.sh SOURCE_DIR WORK_DIR STIPPLE SIM SCENE
+# run_arduino_test.sh SOURCE_DIR WORK_DIR SIM EXAMPLE FQBN MCU BUS REFERENCE...
 # Exit status: 0 pass, 1 fail, 77 tools missing (skipped).
 set -eu
-if [ $# -ne 5 ]; then
-    echo "usage: $0 SOURCE_DIR WORK_DIR STIPPLE SIM SCENE" >&2
+if [ $# -lt 8 ]; then
+    echo "usage: $0 SOURCE_DIR WORK_DIR SIM EXAMPLE FQBN MCU BUS REFERENCE..." >&2
     exit 2
 fi
 src=$(cd "$1" && pwd)
 mkdir -p "$2"
 work=$(cd "$2" && pwd)
-stipple=$3
-sim=$4
-scene=$5
-hw=/usr/share/arduino/hardware/arduino/avr
-for tool in avr-gcc avr-g++ avr-gcc-ar avr-size; do
+sim=$3 example=$4 fqbn=$5 mcu=$6 bus=$7
+shift 7
+for tool in arduino-builder avr-nm unzip; do
     if ! command -v "$tool" >/dev/null 2>&1; then
-        echo "skipped: $tool not installed (Debian: gcc-avr avr-libc binutils-avr)"
+        echo "skipped: $tool not installed (Debian: arduino-builder gcc-avr binutils-avr unzip)"
         exit 77
     fi
 done
-if [ ! -f "$hw/platform.txt" ]; then
-    echo "skipped: $hw missing (Debian: arduino-core-avr)"
+hw=/usr/share/arduino/hardware
+if [ ! -f "$hw/arduino/avr/platform.txt" ]; then
+    echo "skipped: $hw/arduino/avr missing (Debian: arduino-core-avr)"
     exit 77
 fi
 if [ ! -x "$sim" ]; then
@@ -41,61 +45,56 @@ if [ ! -x "$sim" ]; then
     exit 77
 fi
 
-lib=$("$src/scripts/arduino_library.sh" "$work/libraries" "$stipple" "$scene")
-sketch="$lib/examples/StippleScene"
-out="$work/out"
-rm -rf "$out"
-mkdir -p "$out/core" "$out/lib" "$out/sketch"
+# the release archive, unzipped where the IDE would put it
+rm -rf "$work/dist" "$work/libraries" "$work/out"
+zip=$("$src/scripts/arduino_library.sh" "$work/dist")
+mkdir -p "$work/libraries" "$work/out"
+unzip -q "$zip" -d "$work/libraries"
 
-# platform.txt: compiler.c.flags, compiler.cpp.flags, compiler.S.flags (warnings "default":
-# none added), -mmcu={build.mcu} -DF_CPU={build.f_cpu} -DARDUINO=... for
-# board mega, cpu atmega2560
-defs="-mmcu=atmega2560 -DF_CPU=16000000L -DARDUINO=10819 -DARDUINO_AVR_MEGA2560 -DARDUINO_ARCH_AVR"
-cflags="-c -g -Os -std=gnu11 -ffunction-sections -fdata-sections -MMD -flto -fno-fat-lto-objects $defs"
-cxxflags="-c -g -Os -std=gnu++11 -fpermissive -fno-exceptions -ffunction-sections -fdata-sections -fno-threadsafe-statics -Wno-error=narrowing -MMD -flto $defs"
-includes="-I$hw/cores/arduino -I$hw/variants/mega -I$hw/libraries/SPI/src -I$lib/src"
+case $example in
+    StaticScene) frames=1 ;;
+    *) frames=8 ;;
+esac
+arduino-builder -compile -hardware "$hw" -hardware /usr/share/arduino-builder \
+    -tools /usr/share/arduino-builder -libraries "$work/libraries" -fqbn "$fqbn" \
+    -build-path "$work/out" \
+    "-prefs=compiler.cpp.extra_flags=-DDECIMAL_DIG=17 -DSTIPPLE_SIM_FRAMES=$frames" \
+    "$work/libraries/Stipple/examples/$example/$example.ino" >"$work/build.log" 2>&1 ||
+    { cat "$work/build.log"; echo "FAIL: arduino-builder $fqbn $example"; exit 1; }
+grep -E "^(Sketch uses|Global variables)" "$work/build.log"
+elf="$work/out/$example.ino.elf"
+avr-size "$elf"
+heap=$(avr-nm "$elf" | sed -n 's/^\([0-9a-f]*\) . __bss_end$/0x\1/p')
 
-sflags="-c -g -x assembler-with-cpp -flto -MMD $defs"
-cc() { avr-gcc $cflags $includes "$1" -o "$2"; }
-as() { avr-gcc $sflags $includes "$1" -o "$2"; }
-cxx() { avr-g++ $cxxflags $includes "$1" -o "$2"; }
-
-# the sketch: arduino-builder's preprocessing of a .ino is Arduino.h first
-{
-    echo '#include <Arduino.h>'
-    echo "#line 1 \"$sketch/StippleScene.ino\""
-    cat "$sketch/StippleScene.ino"
-} >"$out/sketch/StippleScene.ino.cpp"
-objects=
-cxx "$out/sketch/StippleScene.ino.cpp" "$out/sketch/StippleScene.ino.cpp.o"
-cc "$sketch/scene.c" "$out/sketch/scene.c.o"
-objects="$out/sketch/StippleScene.ino.cpp.o $out/sketch/scene.c.o"
-# the libraries: every source under src/, recursively
-for f in $(cd "$lib/src" && find . -name '*.c' -o -name '*.cpp' | sort); do
-    o="$out/lib/$(echo "$f" | tr / _).o"
-    case $f in
-        *.c) cc "$lib/src/$f" "$o" ;;
-        *.cpp) cxx "$lib/src/$f" "$o" ;;
+case $mcu in
+    atmega328p) pins=B2,B1,B0 ;;  # Uno, Nano: 10, 9, 8
+    atmega2560) pins=B4,H6,H5 ;;  # Mega: 10, 9, 8
+    *) echo "$0: no pins for $mcu" >&2; exit 2 ;;
+esac
+case $(basename "$1") in
+    spin_reference) "$@" "$((frames - 1))" "$work/host.pbm" ;;
+    *) "$@" -o "$work/host.pbm" ;;
+esac
+"$sim" -m "$mcu" -b "$bus" -p "$pins" -s "$heap" "$elf" "$work/panel.pbm" "$work/host.pbm" \
+    >"$work/sim.log" 2>&1 || { cat "$work/sim.log"; echo "FAIL: $example ($fqbn, $bus) in simavr"; exit 1; }
+cat "$work/sim.log"
+# one line for CI's log (scripts/test.sh prints these)
+flash=$(sed -n 's/^Sketch uses \([0-9]*\) bytes.*/\1/p' "$work/build.log")
+peak=$(sed -n 's/^RAM: \([0-9]*\) static.*, \([0-9]*\) at the peak.*/\1 B static, \2 B peak/p' "$work/sim.log")
+cycles=$(sed -n 's/^compute cycles per frame (bus left out): \(.*\)/, compute cycles a frame without the bus: \1/p' "$work/sim.log")
+# frames a second at 16 MHz: the worst frame's cycles without the bus plus
+# the transfer computed for a real part (SPI at f/2: 16 cycles a byte, 8
+# pages of 128 data and 3 command bytes; I2C at 400 kHz: per page one
+# transmission of 3 commands and 5 of up to 31 data bytes, 9 bits a byte
+# and 2 for START and STOP: 1 299 bits, 8 pages, 40 cycles a bit)
+worst=$(sed -n 's/^compute cycles per frame (bus left out): mean [0-9]*, max \([0-9]*\)/\1/p' "$work/sim.log")
+fps=
+if [ -n "$worst" ] && [ "$example" != StaticScene ]; then
+    case $bus in
+        spi) transfer=$((8 * (128 + 3) * 16)) ;;
+        i2c) transfer=$((8 * 1299 * 40)) ;;
     esac
-    objects="$objects $o"
-done
-cxx "$hw/libraries/SPI/src/SPI.cpp" "$out/lib/SPI.cpp.o"
-objects="$objects $out/lib/SPI.cpp.o"
-# the core, as core.a: every file of it but WString.cpp (which does not
-# compile, see above); the linker takes from the archive what is called
-for f in $(cd "$hw/cores/arduino" && ls *.c *.cpp *.S); do
-    case $f in
-        WString.cpp) continue ;;
-        *.c) cc "$hw/cores/arduino/$f" "$out/core/$f.o" ;;
-        *.S) as "$hw/cores/arduino/$f" "$out/core/$f.o" ;;
-        *.cpp) cxx "$hw/cores/arduino/$f" "$out/core/$f.o" ;;
-    esac
-    avr-gcc-ar rcs "$out/core/core.a" "$out/core/$f.o"
-done
-# recipe.c.combine.pattern
-avr-gcc -Os -g -flto -fuse-linker-plugin -Wl,--gc-sections -mmcu=atmega2560 \
-    -o "$out/StippleScene.ino.elf" $objects "$out/core/core.a" "-L$out" -lm
-avr-size "$out/StippleScene.ino.elf"
-"$stipple" render "$scene" -s 128x64 -d bayer4 -l 16 --exposure off -o "$work/host.pbm"
-"$sim" "$out/StippleScene.ino.elf" "$work/arduino.pbm" "$work/host.pbm"
-echo "PASS: the Arduino sketch draws $(basename "$scene" .nff) as the host renders it"
+    fps=$(awk -v w="$worst" -v t="$transfer" 'BEGIN { printf "; %.1f frames/s at 16 MHz (worst frame + %d transfer cycles)", 16e6 / (w + t), t }')
+fi
+echo "FIGURES $example $fqbn $bus: flash $flash B, RAM $peak$cycles$fps; panel equals the host's picture"
+echo "PASS: $example ($fqbn, $bus) draws on the simulated panel what the host draws"

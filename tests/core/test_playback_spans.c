@@ -35,6 +35,7 @@ static stp_spans make(void)
     s.shade_count = 3;
     s.patterns = patterns;
     s.runs = runs;
+    s.run_bytes = sizeof runs;
     return s;
 }
 
@@ -109,12 +110,15 @@ static void test_bad_data_refused(void **state)
     uint8_t band[H * STRIDE];
     (void)state;
     s.runs = backwards;
+    s.run_bytes = sizeof backwards;
     stp_spans_start(&s, &c);
     assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 1), STP_ERR_ARG);
     s.runs = past_row;
+    s.run_bytes = sizeof past_row;
     stp_spans_start(&s, &c);
     assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 1), STP_ERR_ARG);
     s.runs = bad_shade;
+    s.run_bytes = sizeof bad_shade;
     stp_spans_start(&s, &c);
     assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 1), STP_ERR_ARG);
     s = make();
@@ -130,12 +134,87 @@ static void test_bad_data_refused(void **state)
     assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, H + 1u), STP_ERR_ARG);
 }
 
+/* A NULL band, spans, cursor or array is refused, not read or written. */
+static void test_null_refused(void **state)
+{
+    stp_spans s = make();
+    stp_spans_cursor c;
+    uint8_t band[H * STRIDE];
+    (void)state;
+    stp_spans_start(&s, &c);
+    assert_int_equal(stp_spans_draw(&s, &c, 0, STRIDE, 1), STP_ERR_ARG);
+    assert_int_equal(stp_spans_draw(0, &c, band, STRIDE, 1), STP_ERR_ARG);
+    assert_int_equal(stp_spans_draw(&s, 0, band, STRIDE, 1), STP_ERR_ARG);
+    s.patterns = 0;
+    assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 1), STP_ERR_ARG);
+    s = make();
+    s.runs = 0;
+    stp_spans_start(&s, &c);
+    assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 1), STP_ERR_ARG);
+}
+
+/* Width 0 (whose last column would be 255 after the wrap) and widths past
+ * 256 are refused; so are rows 0 and a stride narrower than a row. */
+static void test_sizes_refused(void **state)
+{
+    stp_spans s = make();
+    stp_spans_cursor c;
+    uint8_t band[H * STRIDE];
+    (void)state;
+    s.width = 0;
+    stp_spans_start(&s, &c);
+    assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 1), STP_ERR_ARG);
+    s.width = 257;
+    assert_int_equal(stp_spans_draw(&s, &c, band, 64, 1), STP_ERR_ARG);
+    s = make();
+    assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 0), STP_ERR_ARG);
+    assert_int_equal(stp_spans_draw(&s, &c, band, 2, 1), STP_ERR_ARG);
+}
+
+/* Runs that never reach the last column: the player stops at run_bytes
+ * (the copies below are exactly that long, so under ASan a read past them
+ * is caught) with STP_ERR_ARG. */
+static void test_short_runs_refused(void **state)
+{
+    static const uint8_t short_row[] = {3, 0, 9, 1};       /* row 0 ends at x 9 of 20 */
+    static const uint8_t short_rows[] = {20, 0, 20, 1, 5, 2}; /* row 2 cut short */
+    uint8_t *copy;
+    stp_spans s = make();
+    stp_spans_cursor c;
+    uint8_t band[H * STRIDE];
+    (void)state;
+    copy = test_malloc(sizeof short_row);
+    memcpy(copy, short_row, sizeof short_row);
+    s.runs = copy;
+    s.run_bytes = sizeof short_row;
+    stp_spans_start(&s, &c);
+    assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 1), STP_ERR_ARG);
+    test_free(copy);
+    copy = test_malloc(sizeof short_rows);
+    memcpy(copy, short_rows, sizeof short_rows);
+    s.runs = copy;
+    s.run_bytes = sizeof short_rows;
+    stp_spans_start(&s, &c);
+    assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 2), STP_OK);
+    assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 1), STP_ERR_ARG);
+    assert_int_equal(c.y, 2);
+    test_free(copy);
+    /* the whole picture with one byte too few */
+    s = make();
+    s.run_bytes = sizeof runs - 1u;
+    stp_spans_start(&s, &c);
+    assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, H), STP_ERR_ARG);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_whole_picture),
         cmocka_unit_test(test_bands_of_one_row),
         cmocka_unit_test(test_bad_data_refused),
+        cmocka_unit_test(test_null_refused),
+        cmocka_unit_test(test_sizes_refused),
+        cmocka_unit_test(test_short_runs_refused),
     };
     return cmocka_run_group_tests(tests, 0, 0);
 }

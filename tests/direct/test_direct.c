@@ -8,7 +8,8 @@
  * lies within one pixel of a drawn edge, or inside a face whose style the
  * two paths chose differently; each front face's shade within 1/30 of the
  * double reference; bands of any height give the whole frame exactly;
- * bad arguments.
+ * the panel's page layout holds the row-major frame transposed; bad
+ * arguments.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -489,6 +490,83 @@ static void test_bands(void **state)
     free(w);
 }
 
+/* A cube of side 1.6 about the origin: 12 triangles. */
+static void make_cube(model *m)
+{
+    static const uint8_t quads[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                        {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
+    int i;
+    memset(m, 0, sizeof *m);
+    for (i = 0; i < 8; i++)
+        m->v[i] = vec(i & 1 ? 0.8 : -0.8, i & 2 ? 0.8 : -0.8, i & 4 ? 0.8 : -0.8);
+    m->mesh.vertex_count = 8;
+    for (i = 0; i < 6; i++) {
+        add_tri(m, quads[i][0], quads[i][1], quads[i][2], 0, 0, 0);
+        add_tri(m, quads[i][0], quads[i][2], quads[i][3], 0, 0, 0);
+    }
+    finish(m);
+}
+
+/* Page layout (STP_BAND_PAGES): every band of 8, 16, 24 and 64 rows, at
+ * strides W and W + 5, holds the row-major frame transposed into pages,
+ * pixel for pixel (bit y mod 8 of byte (y / 8) stride + x), for the torus
+ * and a cube in several poses; a last band shorter than its page leaves
+ * the page's lower bits 0. */
+static void pages_match(work *w, uint16_t yaw, uint16_t pitch)
+{
+    static const uint16_t heights[] = {8, 16, 24, 64};
+    static uint8_t pages[(H / 8) * (W + 5)];
+    size_t strides[2] = {W, W + 5};
+    scene s;
+    stp_direct_frame fr;
+    size_t i, k;
+    int lit = 0;
+    scene_make(&s, yaw, pitch);
+    assert_int_equal(stp_direct_frame_project(&fr, &w->m.mesh, &s.pose, &s.dview, &s.light, LEVELS, s.cell, w->pts,
+                                              MAX_V, w->faces, MAX_T),
+                     STP_OK);
+    assert_int_equal(stp_direct_draw_band(&fr, w->frame, STRIDE, 0, H), STP_OK);
+    fr.layout = STP_BAND_PAGES;
+    for (k = 0; k < 2; k++)
+        for (i = 0; i < sizeof heights / sizeof heights[0]; i++) {
+            uint16_t y0;
+            for (y0 = 0; y0 < H; y0 = (uint16_t)(y0 + heights[i])) {
+                uint16_t rows = (uint16_t)(y0 + heights[i] > H ? H - y0 : heights[i]);
+                int x, y;
+                memset(pages, 0xA5, sizeof pages);
+                assert_int_equal(stp_direct_draw_band(&fr, pages, strides[k], y0, rows), STP_OK);
+                for (y = 0; y < rows; y++)
+                    for (x = 0; x < W; x++) {
+                        int got = (pages[(size_t)(y / 8) * strides[k] + (size_t)x] >> (y % 8)) & 1;
+                        assert_int_equal(got, bit_at(w->frame, x, y0 + y));
+                        lit += got;
+                    }
+            }
+        }
+    /* a 5-row band: the page's rows 5..7 stay 0 */
+    memset(pages, 0xFF, sizeof pages);
+    assert_int_equal(stp_direct_draw_band(&fr, pages, W, 0, 5), STP_OK);
+    for (i = 0; i < W; i++)
+        assert_int_equal(pages[i] & 0xE0, 0);
+    assert_true(lit > 100);
+}
+
+static void test_pages(void **state)
+{
+    work *w = calloc(1, sizeof *w);
+    static const uint16_t angles[][2] = {{0, 0}, {3000, 2000}, {11000, 60000}, {40000, 30000}};
+    size_t a;
+    (void)state;
+    assert_non_null(w);
+    make_torus(&w->m);
+    for (a = 0; a < sizeof angles / sizeof angles[0]; a++)
+        pages_match(w, angles[a][0], angles[a][1]);
+    make_cube(&w->m);
+    for (a = 0; a < sizeof angles / sizeof angles[0]; a++)
+        pages_match(w, angles[a][0], angles[a][1]);
+    free(w);
+}
+
 static void test_sine(void **state)
 {
     uint32_t a;
@@ -591,6 +669,11 @@ static void test_bad_arguments(void **state)
     assert_int_equal(stp_direct_draw_band(&fr, band, STRIDE, 0, 0), STP_ERR_ARG);
     assert_int_equal(stp_direct_draw_band(&fr, band, STRIDE, H - 1, 2), STP_ERR_ARG);
     assert_int_equal(stp_direct_draw_band(&fr, NULL, STRIDE, 0, 1), STP_ERR_ARG);
+    fr.layout = STP_BAND_PAGES; /* stride below the width, y0 within a page */
+    assert_int_equal(stp_direct_draw_band(&fr, w->frame, W - 1, 0, 8), STP_ERR_ARG);
+    assert_int_equal(stp_direct_draw_band(&fr, w->frame, W, 4, 8), STP_ERR_ARG);
+    fr.layout = 2;
+    assert_int_equal(stp_direct_draw_band(&fr, w->frame, W, 0, 8), STP_ERR_ARG);
     free(w);
 }
 
@@ -599,6 +682,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sine),         cmocka_unit_test(test_tetra), cmocka_unit_test(test_sphere),
         cmocka_unit_test(test_torus),        cmocka_unit_test(test_bands), cmocka_unit_test(test_normals),
+        cmocka_unit_test(test_pages),
         cmocka_unit_test(test_bad_arguments),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

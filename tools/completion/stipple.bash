@@ -18,7 +18,7 @@ _stipple_options() {
     case $1 in
     render) echo "--output --scene-format --device --format --band --stats --palette --planes --outlines --crease-angle --outline-level --no-rescale --eye --at --up --invert --help $_stipple_shared" ;;
     animate) echo "--output --frames --orbit --elevation --hold --fps --stats --scene-format --eye --at --up --help $_stipple_shared" ;;
-    compile) echo "--output --header --scene-format --static --spans --help $_stipple_shared" ;;
+    compile) echo "--output --header --scene-format --static --spans --mesh --name --help $_stipple_shared" ;;
     dither) echo "--output --plain --dither --spacing --gamma --gamma-k --linear --palette --planes --size --resize --rotate --flip --invert --format --help" ;;
     scene) echo "--size --output --list --help" ;;
     bench) echo "--scenes --size --depth --min-weight --budget --help" ;;

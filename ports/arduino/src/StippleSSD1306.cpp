@@ -1,57 +1,32 @@
 /* SPDX-License-Identifier: MIT */
-/* SSD1306 over Arduino's SPI library (StippleSSD1306.h). */
+/* SSD1306 drawing, whatever the bus (StippleSSD1306.h). */
 #include <Arduino.h>
-#include <SPI.h>
 
 #include "StippleSSD1306.h"
 
-StippleSSD1306::StippleSSD1306(uint8_t cs_pin, uint8_t dc_pin, uint8_t reset_pin)
-    : cs_(cs_pin), dc_(dc_pin), reset_(reset_pin)
+#include "stipple/render.h"
+#include "stipple_sim.h"
+#include "stp_panel.h"
+
+int StippleSSD1306::busCommand(void *ctx, const uint8_t *bytes, size_t count)
 {
-    bus_.command = command;
-    bus_.data = data;
-    bus_.ctx = this;
-    pages_.controller = &stp_panel_ssd1306;
-    pages_.bus = &bus_;
-    pages_.width = width;
-    pages_.height = height;
-    pages_.row_bytes = width / 8;
-    pages_.page_rows = page_rows_;
-    pages_.columns = columns_;
+    return static_cast<StippleSSD1306 *>(ctx)->command(bytes, (uint8_t)count);
 }
 
-void StippleSSD1306::send(const uint8_t *bytes, size_t count, bool is_data)
+int StippleSSD1306::busData(void *ctx, const uint8_t *bytes, size_t count)
 {
-    /* the datasheet's 100 ns clock cycle: 8 MHz is within it */
-    SPI.beginTransaction(SPISettings(8000000, MSBFIRST, SPI_MODE0));
-    digitalWrite(dc_, is_data ? HIGH : LOW);
-    digitalWrite(cs_, LOW);
-    while (count--)
-        SPI.transfer(*bytes++);
-    digitalWrite(cs_, HIGH);
-    SPI.endTransaction();
-}
-
-int StippleSSD1306::command(void *ctx, const uint8_t *bytes, size_t count)
-{
-    static_cast<StippleSSD1306 *>(ctx)->send(bytes, count, false);
-    return 0;
-}
-
-int StippleSSD1306::data(void *ctx, const uint8_t *bytes, size_t count)
-{
-    static_cast<StippleSSD1306 *>(ctx)->send(bytes, count, true);
-    return 0;
+    StippleSSD1306 *self = static_cast<StippleSSD1306 *>(ctx);
+    int status;
+    self->dataStart();
+    status = self->dataPut(bytes, (uint8_t)count);
+    return self->dataEnd() != 0 ? -1 : status;
 }
 
 int StippleSSD1306::step(void *ctx, unsigned op, unsigned arg)
 {
-    StippleSSD1306 *self = static_cast<StippleSSD1306 *>(ctx);
     switch (op) {
     case STP_PANEL_STEP_RESET:
-        digitalWrite(self->reset_, LOW);
-        delay(arg);
-        digitalWrite(self->reset_, HIGH);
+        static_cast<StippleSSD1306 *>(ctx)->reset(arg);
         return 0;
     case STP_PANEL_STEP_DELAY:
         delay(arg);
@@ -61,50 +36,93 @@ int StippleSSD1306::step(void *ctx, unsigned op, unsigned arg)
     }
 }
 
-int StippleSSD1306::flush(stp_port *port, uint32_t y0, uint32_t rows, const uint8_t *pixels,
-                          size_t stride)
+int StippleSSD1306::initPanel()
 {
-    StippleSSD1306 *self = static_cast<StippleSSD1306 *>(port->user);
-    return stp_panel_pages_put(&self->pages_, y0, rows, pixels, stride) == 0 ? 0 : -1;
-}
-
-int StippleSSD1306::begin()
-{
-    pinMode(cs_, OUTPUT);
-    pinMode(dc_, OUTPUT);
-    pinMode(reset_, OUTPUT);
-    digitalWrite(cs_, HIGH);
-    digitalWrite(reset_, HIGH);
-    SPI.begin();
-    return stp_panel_run(stp_panel_ssd1306.init, stp_panel_ssd1306.init_length, &bus_, step,
-                         this) == 0
+    stp_panel_bus bus;
+    bus.command = busCommand;
+    bus.data = busData;
+    bus.ctx = this;
+    return stp_panel_run(stp_panel_ssd1306.init, stp_panel_ssd1306.init_length, &bus, step, this) == 0
                ? STP_OK
                : STP_ERR_PORT;
 }
 
-int StippleSSD1306::draw(const stp_scene_data &scene)
+/* page, column low and high nibbles: one command transfer */
+int StippleSSD1306::pageAddress(uint8_t page)
 {
-    stp_renderer *r;
-    stp_port port;
-    stp_output out;
-    stp_frame_memory mem;
+    const stp_panel_controller *c = &stp_panel_ssd1306;
+    uint8_t cmd[3];
+    cmd[0] = (uint8_t)(c->page_command | page);
+    cmd[1] = (uint8_t)(c->column_low_command | (c->column_offset & 15u));
+    cmd[2] = (uint8_t)(c->column_high_command | (c->column_offset >> 4));
+    return command(cmd, 3);
+}
+
+int StippleSSD1306::sendPage(uint8_t page, const uint8_t *rows, size_t stride)
+{
+    uint8_t block[8], b;
     int status;
-    if (scene.width != width || scene.height != height)
+    if (pageAddress(page) != 0)
+        return STP_ERR_PORT;
+    dataStart();
+    status = 0;
+    for (b = 0; b < width / 8 && status == 0; b++) {
+        stp_panel_pack_block(rows + b, stride, block);
+        status = dataPut(block, 8);
+    }
+    if (dataEnd() != 0)
+        status = -1;
+    return status == 0 ? STP_OK : STP_ERR_PORT;
+}
+
+/* A page already in the panel's layout (width bytes). */
+int StippleSSD1306::sendPageBytes(uint8_t page, const uint8_t *columns)
+{
+    int status;
+    if (pageAddress(page) != 0)
+        return STP_ERR_PORT;
+    dataStart();
+    status = dataPut(columns, width);
+    if (dataEnd() != 0)
+        status = -1;
+    return status == 0 ? STP_OK : STP_ERR_PORT;
+}
+
+/* A frame: bands drawn straight in the panel's page layout
+ * (STP_BAND_PAGES), each page sent as it is. */
+int StippleSSD1306::drawFrame(const stp_direct_frame &frame)
+{
+    stp_direct_frame pages = frame;
+    uint8_t y, p;
+    int status = STP_OK;
+    if (frame.width != width || frame.height != height)
         return STP_ERR_ARG;
-    status = stp_scene_data_enter(&scene, &renderer_, sizeof renderer_, &r);
-    if (status != STP_OK)
-        return status;
-    stp_scene_data_output(&scene, &out);
-    stp_scene_frame_memory(&mem, band_, sizeof band_, STIPPLE_BAND_ROWS, scene.sort,
-                           scene.sort_count);
-#if STP_WITH_ZBUFFER
-    mem.zbuf = zbuf_;
-    mem.zbuf_count = sizeof zbuf_ / sizeof zbuf_[0];
-#endif
-    port.width = width;
-    port.height = height;
-    port.format = STP_PIXEL_MONO1;
-    port.flush = flush;
-    port.user = this;
-    return stp_renderer_render(r, &port, &out, &mem);
+    pages.layout = STP_BAND_PAGES;
+    for (y = 0; y < height && status == STP_OK; y = (uint8_t)(y + band_rows_)) {
+        status = stp_direct_draw_band(&pages, band_, width, y, band_rows_);
+        for (p = 0; p < band_rows_ / 8u && status == STP_OK; p++)
+            status = sendPageBytes((uint8_t)(y / 8u + p), band_ + (size_t)p * width);
+    }
+    STIPPLE_SIM_FRAME(status);
+    return status;
+}
+
+/* A span picture: the player writes rows, packed into pages on the way
+ * out. */
+int StippleSSD1306::drawSpans(const stp_spans &spans)
+{
+    const size_t stride = width / 8;
+    stp_spans_cursor cursor;
+    uint8_t y, p;
+    int status = STP_OK;
+    if (spans.width != width || spans.height != height)
+        return STP_ERR_ARG;
+    stp_spans_start(&spans, &cursor);
+    for (y = 0; y < height && status == STP_OK; y = (uint8_t)(y + band_rows_)) {
+        status = stp_spans_draw(&spans, &cursor, band_, stride, band_rows_);
+        for (p = 0; p < band_rows_ / 8u && status == STP_OK; p++)
+            status = sendPage((uint8_t)(y / 8u + p), band_ + 8u * p * stride, stride);
+    }
+    STIPPLE_SIM_FRAME(status);
+    return status;
 }

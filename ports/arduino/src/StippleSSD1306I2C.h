@@ -1,0 +1,93 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * An SSD1306 128x64 on I2C through the Wire library (header only: a
+ * sketch that includes it links Wire, others do not).  SDA and SCL of the
+ * board (Uno, Nano: A4, A5; Mega: 20, 21); address 0x3C (0x3D with SA0
+ * high); the bus at 400 kHz.  Each transmission is a control byte (0x00
+ * commands, 0x40 data) and up to Wire's buffer less one byte (31 on an
+ * AVR).  8-row band: 128 bytes.
+ */
+#ifndef STIPPLE_ARDUINO_SSD1306_I2C_H
+#define STIPPLE_ARDUINO_SSD1306_I2C_H
+
+#include <Arduino.h>
+#include <Wire.h>
+
+#include "StippleSSD1306.h"
+#include "stipple/render.h"
+#include "stipple_sim.h"
+
+class StippleSSD1306I2C : public StippleSSD1306 {
+public:
+    StippleSSD1306I2C() : StippleSSD1306(band_, 8), address_(0x3C), count_(0) {}
+
+    /* Wire up, the panel initialised.  Returns STP_OK or STP_ERR_PORT (no
+     * acknowledge). */
+    int begin(uint8_t address = 0x3C, uint32_t clock_hz = 400000ul)
+    {
+        address_ = address;
+        Wire.begin();
+        Wire.setClock(clock_hz);
+        return initPanel();
+    }
+
+protected:
+#if defined(BUFFER_LENGTH) && BUFFER_LENGTH > 1
+    static const uint8_t chunk = BUFFER_LENGTH - 1;
+#else
+    static const uint8_t chunk = 16;
+#endif
+
+    int command(const uint8_t *bytes, uint8_t count)
+    {
+        int status;
+        STIPPLE_SIM_BUS(1);
+        Wire.beginTransmission(address_);
+        Wire.write(0x00); /* Co 0, D/C# 0: the rest are commands */
+        Wire.write(bytes, count);
+        status = Wire.endTransmission() == 0 ? 0 : -1;
+        STIPPLE_SIM_BUS(0);
+        return status;
+    }
+
+    void dataStart() { count_ = 0; }
+
+    int dataPut(const uint8_t *bytes, uint8_t count)
+    {
+        int status = 0;
+        STIPPLE_SIM_BUS(1);
+        while (count-- && status == 0) {
+            if (count_ == 0) {
+                Wire.beginTransmission(address_);
+                Wire.write(0x40); /* Co 0, D/C# 1: the rest are data */
+            }
+            Wire.write(*bytes++);
+            if (++count_ == chunk) {
+                count_ = 0;
+                status = Wire.endTransmission() == 0 ? 0 : -1;
+            }
+        }
+        STIPPLE_SIM_BUS(0);
+        return status;
+    }
+
+    int dataEnd()
+    {
+        int status = 0;
+        if (count_ != 0) {
+            STIPPLE_SIM_BUS(1);
+            status = Wire.endTransmission() == 0 ? 0 : -1;
+            STIPPLE_SIM_BUS(0);
+            count_ = 0;
+        }
+        return status;
+    }
+
+    void reset(unsigned ms) { (void)ms; /* I2C modules tie RES# to a power-on reset */ }
+
+private:
+    uint8_t band_[8 * (width / 8)];
+    uint8_t address_, count_;
+};
+
+#endif

@@ -1,0 +1,89 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * An SSD1306 128x64 on 4-wire SPI through the SPI library (header only: a
+ * sketch that includes it links SPI, others do not).  SCK and MOSI of the
+ * board (Uno, Nano: 13, 11; Mega: 52, 51) and any three pins for CS#, D/C#
+ * and RES#; the clock at 8 MHz (half a 16 MHz AVR's: the datasheet's
+ * 100 ns cycle).  16-row band: 256 bytes.
+ */
+#ifndef STIPPLE_ARDUINO_SSD1306_SPI_H
+#define STIPPLE_ARDUINO_SSD1306_SPI_H
+
+#include <Arduino.h>
+#include <SPI.h>
+
+#include "StippleSSD1306.h"
+#include "stipple/render.h"
+#include "stipple_sim.h"
+
+class StippleSSD1306SPI : public StippleSSD1306 {
+public:
+    StippleSSD1306SPI(uint8_t cs_pin, uint8_t dc_pin, uint8_t reset_pin)
+        : StippleSSD1306(band_, 16), cs_(cs_pin), dc_(dc_pin), reset_(reset_pin)
+    {
+    }
+
+    /* SPI up, the panel reset and initialised.  Returns STP_OK or
+     * STP_ERR_PORT. */
+    int begin()
+    {
+        pinMode(cs_, OUTPUT);
+        pinMode(dc_, OUTPUT);
+        pinMode(reset_, OUTPUT);
+        digitalWrite(cs_, HIGH);
+        digitalWrite(reset_, HIGH);
+        SPI.begin();
+        return initPanel();
+    }
+
+protected:
+    int command(const uint8_t *bytes, uint8_t count)
+    {
+        start(LOW);
+        put(bytes, count);
+        return dataEnd();
+    }
+
+    void dataStart() { start(HIGH); }
+
+    int dataPut(const uint8_t *bytes, uint8_t count)
+    {
+        put(bytes, count);
+        return 0;
+    }
+
+    int dataEnd()
+    {
+        digitalWrite(cs_, HIGH);
+        SPI.endTransaction();
+        return 0;
+    }
+
+    void reset(unsigned ms)
+    {
+        digitalWrite(reset_, LOW);
+        delay(ms);
+        digitalWrite(reset_, HIGH);
+    }
+
+private:
+    uint8_t band_[16 * (width / 8)];
+    uint8_t cs_, dc_, reset_;
+
+    void start(uint8_t dc)
+    {
+        SPI.beginTransaction(SPISettings(8000000, MSBFIRST, SPI_MODE0));
+        digitalWrite(dc_, dc);
+        digitalWrite(cs_, LOW);
+    }
+
+    void put(const uint8_t *bytes, uint8_t count)
+    {
+        STIPPLE_SIM_BUS(1); /* the bytes' transfer only */
+        while (count--)
+            SPI.transfer(*bytes++);
+        STIPPLE_SIM_BUS(0);
+    }
+};
+
+#endif
