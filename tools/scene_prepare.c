@@ -112,11 +112,16 @@ static int copy_scene(const stp_scene *in, stp_tool_prepared *out)
  * their mean distance, with their mean colour and their summed weight.
  * Seen from the scene, a pair of lights in nearly one direction lights it
  * nearly as one light of their summed power does. */
-static void gather_lights(const stp_scene *in, const stp_tool_options *opt, stp_scene_vec3 centre,
-                          stp_tool_prepared *out, double *weight)
+static int gather_lights(const stp_scene *in, const stp_tool_options *opt, stp_scene_vec3 centre,
+                         stp_tool_prepared *out)
 {
     stp_scene *s = &out->scene;
     size_t n, i, j;
+    /* one weight per light in use: the file may have any number of them */
+    size_t given = opt->light_count > 0 ? (size_t)opt->light_count : in->light_count;
+    double *weight = malloc(sizeof *weight * (given > 0 ? given : 1));
+    if (!weight)
+        return -1;
     if (opt->light_count > 0) {
         for (i = 0; i < (size_t)opt->light_count; i++) {
             s->lights[i].position = opt->lights[i];
@@ -181,6 +186,11 @@ static void gather_lights(const stp_scene *in, const stp_tool_options *opt, stp_
         n--;
     }
     s->light_count = n;
+    /* no light at all: the fallback light (stp_tool_setup) stands for one */
+    for (i = 0; i < STP_MAX_LIGHTS; i++)
+        out->light_weight[i] = i < n ? weight[i] : 1.0;
+    free(weight);
+    return 0;
 }
 
 /* ---- units ------------------------------------------------------------ */
@@ -397,7 +407,11 @@ int stp_tool_prepare(const stp_scene *scene, const stp_tool_options *opt, stp_to
         return -1;
     }
     centre = v3((lo.x + hi.x) / 2, (lo.y + hi.y) / 2, (lo.z + hi.z) / 2);
-    gather_lights(scene, opt, centre, out, out->light_weight);
+    if (gather_lights(scene, opt, centre, out) != 0) {
+        stp_tool_prepared_free(out);
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
     for (i = 0; i < STP_MAX_LIGHTS; i++)
         out->power_factor[i] = 1;
     extent = scene_extent(scene, lo, hi, centre);

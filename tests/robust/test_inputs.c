@@ -1,0 +1,187 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Inputs real users give (mesh files without lights, scenes with many
+ * lights, one huge object beside small ones, degenerate and self-crossing
+ * polygons, very long polygons), through the path of `stipple render`:
+ * stp_scene_parse, then stp_tool_render (polygon renderer) and
+ * stp_tool_raytrace (ray tracer).
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "render_scene.h"
+#include "scene.h"
+#include "scene_prepare.h"
+#include "stp_posix.h"
+
+#define W 96
+#define H 72
+
+/* Grey render (raytrace: ray-traced) of a scene text; 0, or -1 with err. */
+static int render_text(const char *format, const char *text, int raytrace, stp_posix_frame *f,
+                       char *err, size_t err_size)
+{
+    stp_scene s;
+    stp_tool_options opt;
+    int rc;
+    stp_tool_options_default(&opt);
+    opt.width = W;
+    opt.height = H;
+    if (stp_scene_parse(text, strlen(text), format, "t", NULL, &s, err, err_size) != 0)
+        return -1;
+    if (stp_posix_frame_init(f, W, H, STP_PIXEL_GREY8) != 0) {
+        stp_scene_free(&s);
+        return -1;
+    }
+    rc = raytrace ? stp_tool_raytrace(&s, &opt, stp_posix_frame_port(f), NULL, err, err_size)
+                  : stp_tool_render(&s, &opt, stp_posix_frame_port(f), NULL, err, err_size);
+    stp_scene_free(&s);
+    if (rc != 0)
+        stp_posix_frame_free(f);
+    return rc;
+}
+
+static void render_ok(const char *format, const char *text, int raytrace, stp_posix_frame *f)
+{
+    char err[512] = "";
+    if (render_text(format, text, raytrace, f, err, sizeof err) != 0)
+        fail_msg("%s render of a %s file failed: %s", raytrace ? "ray-traced" : "polygon",
+                 format, err);
+}
+
+/* How many grey levels cover at least `share` of the object's pixels
+ * (pixels other than the black background). */
+static int greys_covering(const stp_posix_frame *f, double share, int *object_pixels)
+{
+    int count[256] = {0}, n = 0, levels = 0, i;
+    uint32_t x, y;
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            uint8_t v = f->pixels[y * f->stride + x];
+            if (v) {
+                count[v]++;
+                n++;
+            }
+        }
+    for (i = 1; i < 256; i++)
+        levels += n > 0 && count[i] >= share * n;
+    if (object_pixels)
+        *object_pixels = n;
+    return levels;
+}
+
+/* ---- mesh files carry no lights ----------------------------------------- */
+
+/* A unit cube in every format, without a light: the default light above
+ * and left of the eye shades its three visible faces differently (they
+ * used to come out one flat grey, the ambient share). */
+static void test_meshes_without_lights_are_shaded(void **state)
+{
+    static const char *const cube[][2] = {
+        {"obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n"},
+        {"off", "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n"},
+        {"ply", "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
+                "property float z\nelement face 6\nproperty list uchar int vertex_indices\n"
+                "end_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n"},
+        {"nff", "f 1 1 1 1 0 0 0 1\n"
+                "p 4\n0 0 0\n0 1 0\n1 1 0\n1 0 0\np 4\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                "p 4\n0 0 0\n1 0 0\n1 0 1\n0 0 1\np 4\n1 0 0\n1 1 0\n1 1 1\n1 0 1\n"
+                "p 4\n1 1 0\n0 1 0\n0 1 1\n1 1 1\np 4\n0 1 0\n0 0 0\n0 0 1\n0 1 1\n"},
+    };
+    size_t i;
+    int rt;
+    (void)state;
+    for (i = 0; i < sizeof cube / sizeof cube[0]; i++)
+        for (rt = 0; rt < 2; rt++) {
+            stp_posix_frame f;
+            int pixels, greys;
+            render_ok(cube[i][0], cube[i][1], rt, &f);
+            greys = greys_covering(&f, 0.05, &pixels);
+            stp_posix_frame_free(&f);
+            if (pixels < W * H / 20 || greys < 3)
+                fail_msg("%s cube, %s: %d pixels drawn, %d greys over 5%% of them (want 3 faces)",
+                         cube[i][0], rt ? "ray-traced" : "rasterised", pixels, greys);
+        }
+}
+
+/* ---- any number of lights ------------------------------------------------ */
+
+/* An NFF floor under n lights in a ring above it (n = 0: none). */
+static char *floor_with_lights(int n)
+{
+    size_t size = 512 + (size_t)n * 64, used;
+    char *t = malloc(size);
+    int j;
+    used = (size_t)snprintf(t, size, "f 1 1 1 1 0 0 0 1\np 4\n-4 -4 0\n4 -4 0\n4 4 0\n-4 4 0\n"
+                                     "p 3\n-3 -2 0\n3 -2 0\n0 1 3\n");
+    for (j = 0; j < n; j++)
+        used += (size_t)snprintf(t + used, size - used, "l %.6f %.6f 6\n",
+                                 5 * cos(j * 2.399963), 5 * sin(j * 2.399963));
+    return t;
+}
+
+/* 0, 1, 4, 5, 17 and 200 lights: prepared into at most STP_MAX_LIGHTS
+ * whose weights add up to the file's count (none: the default light,
+ * weight 1), and rendered (shaded up to 5) by both renderers (more lights than the
+ * build holds used to overwrite the preparation's fields, or its stack). */
+static void test_any_number_of_lights(void **state)
+{
+    static const int counts[] = {0, 1, 4, 5, 17, 200};
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof counts / sizeof counts[0]; i++) {
+        char *t = floor_with_lights(counts[i]), err[512] = "";
+        int expect = counts[i] < STP_MAX_LIGHTS ? counts[i] : STP_MAX_LIGHTS, rt, j;
+        stp_tool_options opt;
+        stp_tool_prepared prep;
+        stp_scene s;
+        double total = 0;
+        stp_tool_options_default(&opt);
+        assert_int_equal(stp_scene_parse(t, strlen(t), "nff", "t", NULL, &s, err, sizeof err), 0);
+        assert_int_equal(stp_tool_prepare(&s, &opt, &prep, err, sizeof err), 0);
+        assert_int_equal((int)prep.scene.light_count, expect);
+        assert_int_equal((int)prep.lights_in, counts[i]);
+        for (j = 0; j < STP_MAX_LIGHTS; j++) {
+            if (j < expect)
+                total += prep.light_weight[j];
+            else
+                assert_true(prep.light_weight[j] == 1.0);
+            assert_true(prep.power_factor[j] == 1.0);
+        }
+        assert_true(fabs(total - counts[i]) < 1e-9);
+        assert_true(prep.scale == 1.0);
+        stp_tool_prepared_free(&prep);
+        stp_scene_free(&s);
+        for (rt = 0; rt < 2; rt++) {
+            stp_posix_frame f;
+            int pixels;
+            render_ok("nff", t, rt, &f);
+            /* many lights from all round saturate the floor (auto power
+             * gives n lights sqrt(n) times one light's): drawn, not black */
+            if ((greys_covering(&f, 0.02, &pixels) < 2 && counts[i] <= 5) || pixels < W * H / 10)
+                fail_msg("%d lights, %s: %d pixels, not shaded", counts[i],
+                         rt ? "ray-traced" : "rasterised", pixels);
+            stp_posix_frame_free(&f);
+        }
+        free(t);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_meshes_without_lights_are_shaded),
+        cmocka_unit_test(test_any_number_of_lights),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
