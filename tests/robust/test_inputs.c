@@ -362,6 +362,54 @@ static void test_bow_tie_as_two_triangles(void **state)
     }
 }
 
+/* ---- messages that name the real fault ----------------------------------- */
+
+static void parse_fails(const char *format, const char *text, size_t size, const char *want)
+{
+    stp_scene s;
+    if (size == 0)
+        size = strlen(text);
+    char err[512] = "";
+    if (stp_scene_parse(text, size, format, "t", NULL, &s, err, sizeof err) == 0) {
+        stp_scene_free(&s);
+        fail_msg("%s parsed, want '%s'", format, want);
+    }
+    if (strncmp(err, want, strlen(want)) != 0)
+        fail_msg("%s: message '%s', want '%s...'", format, err, want);
+}
+
+/* Line ends of CR alone (classic Mac OS) are line ends (the files were "an
+ * empty file" or "not a PLY file"); a PLY header without end_header, a
+ * binary OFF, an OBJ given as PLY are named as such, at the right line. */
+static void test_reader_messages(void **state)
+{
+    static const char obj[] = "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r";
+    static const char ply[] = "ply\rformat ascii 1.0\relement vertex 3\rproperty float x\r"
+                              "property float y\rproperty float z\relement face 1\r"
+                              "property list uchar int vertex_indices\rend_header\r"
+                              "0 0 0\r1 0 0\r0 1 0\r3 0 1 2\r";
+    static const char binary_off[] = "OFF BINARY\n\0\0\0\x08\0\0\0\x06";
+    stp_scene s;
+    char err[512] = "";
+    (void)state;
+    assert_int_equal(stp_scene_parse(obj, strlen(obj), "obj", "t", NULL, &s, err, sizeof err), 0);
+    assert_int_equal((int)s.polygon_count, 1);
+    assert_int_equal(s.polygons[0].source_line, 4);
+    stp_scene_free(&s);
+    assert_int_equal(stp_scene_parse(ply, strlen(ply), "ply", "t", NULL, &s, err, sizeof err), 0);
+    assert_int_equal((int)s.polygon_count, 1);
+    assert_int_equal((int)s.vertex_count, 3);
+    stp_scene_free(&s);
+    parse_fails("ply",
+                "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                "-1 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                0, "t:9: data before 'end_header'");
+    parse_fails("off", binary_off, sizeof binary_off - 1, "t:1: binary OFF is not read");
+    parse_fails("ply", "# Blender OBJ\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 0,
+                "t:1: not a PLY file");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -372,6 +420,7 @@ int main(void)
         cmocka_unit_test(test_small_beside_huge_refused),
         cmocka_unit_test(test_degenerate_scenes_refused),
         cmocka_unit_test(test_bow_tie_as_two_triangles),
+        cmocka_unit_test(test_reader_messages),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -38,6 +38,13 @@ static int read_header(stp_parser *ps, off_state *st, stp_line *ln)
         return stp_fail(ps, ln->number, "expected an OFF header, found '%s'",
                         stp_token_show(&tok, show, sizeof show));
     }
+    {
+        /* "OFF BINARY": the binary variant, whose counts and data are not text */
+        stp_line rest = *ln;
+        if (stp_next_token(&rest, &tok) && stp_token_is(&tok, "BINARY"))
+            return stp_fail(ps, ln->number, "binary OFF is not read (only ASCII OFF): convert "
+                                            "the file to ASCII");
+    }
     return 0;
 }
 
