@@ -406,6 +406,7 @@ static void test_reader_messages(void **state)
                 "-1 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
                 0, "t:9: data before 'end_header'");
     parse_fails("off", binary_off, sizeof binary_off - 1, "t:1: binary OFF is not read");
+    parse_fails("off", "4OFF\n1 0 0\n0 0 0 0\n", 0, "t:1: '4OFF' is not read: only OFF");
     parse_fails("ply", "# Blender OBJ\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 0,
                 "t:1: not a PLY file");
 }
