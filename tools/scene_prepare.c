@@ -258,6 +258,17 @@ static stp_scene_vec3 to_units(stp_scene_vec3 v, stp_scene_vec3 off, double k)
     return v3((v.x - off.x) * k, (v.y - off.y) * k, (v.z - off.z) * k);
 }
 
+/* The number of polygon i among the file's own polygons (those of NFF's
+ * spheres and cones are not counted: messages name those by the sphere or
+ * cone), from 1. */
+static size_t file_polygon_number(const stp_scene *s, size_t i)
+{
+    size_t j, n = 1;
+    for (j = 0; j < i; j++)
+        n += s->polygons[j].prim < 0;
+    return n;
+}
+
 /* "L: ", the start of a message about line L (render_scene.h), or "" when
  * the line is not known (0). */
 static const char *line_prefix(char buf[16], int line)
@@ -300,7 +311,7 @@ static int check_units_kept(const stp_scene *s, char *err, size_t err_size)
             stp_scene_vec3 v = s->vertices[p->first + (size_t)k];
             if (outside_fix(v)) {
                 snprintf(err, err_size, "%d: coordinate (%g, %g, %g) of polygon %zu %s",
-                         p->source_line, v.x, v.y, v.z, i + 1, range);
+                         p->source_line, v.x, v.y, v.z, file_polygon_number(s, i), range);
                 return -1;
             }
         }
@@ -357,7 +368,7 @@ static int check_resolution(const stp_tool_prepared *out, const stp_scene *in, c
                      "%d: polygon %zu: %g units across in a scene %g units across: "
                      "beyond the core's range of coordinates (2^15 units in steps of 2^-16, "
                      "after rescaling); remove the far-off or the tiny objects",
-                     p->source_line, i + 1, size, STP_TOOL_EXTENT_TARGET / k);
+                     p->source_line, file_polygon_number(in, i), size, STP_TOOL_EXTENT_TARGET / k);
             return -1;
         }
     }
@@ -400,7 +411,7 @@ static int check_polygon_sizes(const stp_scene *in, char *err, size_t err_size)
                      "%d: polygon %zu has %d vertices; at most %d are taken (splitting longer "
                      "ones into pieces the core takes can last minutes): cut it into smaller "
                      "polygons",
-                     p->source_line, i + 1, p->count, STP_TOOL_MAX_POLYGON_VERTICES);
+                     p->source_line, file_polygon_number(in, i), p->count, STP_TOOL_MAX_POLYGON_VERTICES);
             return -1;
         }
     }

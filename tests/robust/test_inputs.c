@@ -318,6 +318,9 @@ static void test_small_beside_huge_refused(void **state)
             "v\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\nresolution 8 8\n"
             "p 3\n1e30 0 0\n0 1e30 0\n0 0 1e30\n",
             "the view's from (0, 0, -5) and at (0, 0, 0) lie 5 units apart in a scene ");
+    /* the file's polygon 1, not the 129th of the scene (128 pieces of the sphere first) */
+    refused("nff", "s 0 0 0 1e30\np 3\n0 0 0\n1 0 0\n0 1 0\n",
+            "2: polygon 1: 1 units across in a scene ");
 }
 
 /* Polygons that all lack an area (points, or vertices on a line) are
