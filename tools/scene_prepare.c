@@ -38,6 +38,41 @@ void stp_tool_prepared_free(stp_tool_prepared *p)
 
 /* ---- copying, with big polygons split ----------------------------------- */
 
+static stp_scene_vec3 lerp(stp_scene_vec3 a, stp_scene_vec3 b, double t)
+{
+    return v3(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t);
+}
+
+/* A bow tie p (vertices pv, normals pn) appended to s as its two triangles
+ * either side of the crossing X: edges v0-v1 and v2-v3 crossing give
+ * (X, v1, v2) and (X, v3, v0); v1-v2 and v3-v0 give (X, v2, v3) and
+ * (X, v0, v1).  Returns 0 (nothing appended) for a simple quad. */
+static int split_bow_tie(const stp_scene_polygon *p, const stp_scene_vec3 *pv,
+                         const stp_scene_vec3 *pn, stp_scene *s)
+{
+    int edge, half, k;
+    double t;
+    stp_scene_vec3 x, xn;
+    if (!stp_tool_bow_tie(pv, &edge, &t))
+        return 0;
+    x = lerp(pv[edge], pv[edge + 1], t);
+    xn = lerp(pn[edge], pn[edge + 1], t);
+    for (half = 0; half < 2; half++) {
+        stp_scene_polygon *q = &s->polygons[s->polygon_count++];
+        int first = (edge + 1 + 2 * half) % 4;
+        *q = *p;
+        q->first = s->vertex_count;
+        q->count = 3;
+        s->vertices[s->vertex_count] = x;
+        s->normals[s->vertex_count++] = xn;
+        for (k = 0; k < 2; k++) {
+            s->vertices[s->vertex_count] = pv[(first + k) % 4];
+            s->normals[s->vertex_count++] = pn[(first + k) % 4];
+        }
+    }
+    return 1;
+}
+
 static int copy_scene(const stp_scene *in, stp_tool_prepared *out)
 {
     stp_scene *s = &out->scene;
@@ -48,8 +83,8 @@ static int copy_scene(const stp_scene *in, stp_tool_prepared *out)
      * at most 3 (ears) or max (fan) vertices, at most 3n vertex copies */
     for (i = 0; i < in->polygon_count; i++) {
         size_t n = (size_t)in->polygons[i].count;
-        nv += n > (size_t)max ? 3 * n : n;
-        np += n > (size_t)max ? n : 1;
+        nv += n > (size_t)max ? 3 * n : n == 4 ? 6 : n;
+        np += n > (size_t)max ? n : n == 4 ? 2 : 1;
     }
     *s = *in;
     s->lights = 0;
@@ -73,6 +108,10 @@ static int copy_scene(const stp_scene *in, stp_tool_prepared *out)
         const stp_scene_polygon *p = &in->polygons[i];
         const stp_scene_vec3 *pv = &in->vertices[p->first], *pn = &in->normals[p->first];
         int *idx = 0, *cnt = 0, pieces, k, used = 0;
+        if (p->count == 4 && split_bow_tie(p, pv, pn, s)) {
+            out->polygons_split++;
+            continue;
+        }
         if (p->count <= max) {
             memcpy(&s->vertices[s->vertex_count], pv, sizeof *pv * (size_t)p->count);
             memcpy(&s->normals[s->vertex_count], pn, sizeof *pn * (size_t)p->count);
@@ -112,11 +151,16 @@ static int copy_scene(const stp_scene *in, stp_tool_prepared *out)
  * their mean distance, with their mean colour and their summed weight.
  * Seen from the scene, a pair of lights in nearly one direction lights it
  * nearly as one light of their summed power does. */
-static void gather_lights(const stp_scene *in, const stp_tool_options *opt, stp_scene_vec3 centre,
-                          stp_tool_prepared *out, double *weight)
+static int gather_lights(const stp_scene *in, const stp_tool_options *opt, stp_scene_vec3 centre,
+                         stp_tool_prepared *out)
 {
     stp_scene *s = &out->scene;
     size_t n, i, j;
+    /* one weight per light in use: the file may have any number of them */
+    size_t given = opt->light_count > 0 ? (size_t)opt->light_count : in->light_count;
+    double *weight = malloc(sizeof *weight * (given > 0 ? given : 1));
+    if (!weight)
+        return -1;
     if (opt->light_count > 0) {
         for (i = 0; i < (size_t)opt->light_count; i++) {
             s->lights[i].position = opt->lights[i];
@@ -181,6 +225,11 @@ static void gather_lights(const stp_scene *in, const stp_tool_options *opt, stp_
         n--;
     }
     s->light_count = n;
+    /* no light at all: the fallback light (stp_tool_setup) stands for one */
+    for (i = 0; i < STP_MAX_LIGHTS; i++)
+        out->light_weight[i] = i < n ? weight[i] : 1.0;
+    free(weight);
+    return 0;
 }
 
 /* ---- units ------------------------------------------------------------ */
@@ -207,6 +256,17 @@ static int needs_rescale(const stp_scene *s, stp_scene_vec3 lo, stp_scene_vec3 h
 static stp_scene_vec3 to_units(stp_scene_vec3 v, stp_scene_vec3 off, double k)
 {
     return v3((v.x - off.x) * k, (v.y - off.y) * k, (v.z - off.z) * k);
+}
+
+/* The number of polygon i among the file's own polygons (those of NFF's
+ * spheres and cones are not counted: messages name those by the sphere or
+ * cone), from 1. */
+static size_t file_polygon_number(const stp_scene *s, size_t i)
+{
+    size_t j, n = 1;
+    for (j = 0; j < i; j++)
+        n += s->polygons[j].prim < 0;
+    return n;
 }
 
 /* "L: ", the start of a message about line L (render_scene.h), or "" when
@@ -251,7 +311,7 @@ static int check_units_kept(const stp_scene *s, char *err, size_t err_size)
             stp_scene_vec3 v = s->vertices[p->first + (size_t)k];
             if (outside_fix(v)) {
                 snprintf(err, err_size, "%d: coordinate (%g, %g, %g) of polygon %zu %s",
-                         p->source_line, v.x, v.y, v.z, i + 1, range);
+                         p->source_line, v.x, v.y, v.z, file_polygon_number(s, i), range);
                 return -1;
             }
         }
@@ -274,50 +334,143 @@ static int check_units_kept(const stp_scene *s, char *err, size_t err_size)
     return 0;
 }
 
+/* A polygon's size in the file's units: its farthest vertex from its
+ * first along any axis. */
+static double polygon_size(const stp_scene *s, const stp_scene_polygon *p)
+{
+    stp_scene_vec3 a = s->vertices[p->first];
+    double size = 0;
+    int k;
+    for (k = 1; k < p->count; k++)
+        size = fmax(size, max_abs(to_units(s->vertices[p->first + (size_t)k], a, 1.0)));
+    return size;
+}
+
 /* The smallest object's size against the core's step: an object that the
- * rescaling leaves under a few steps would vanish or turn to a point. */
+ * rescaling leaves under a few steps would vanish or turn to a point.
+ * Sizes are taken in the file's units (in) and scaled: the rescaled copy
+ * of an object far smaller than the scene has already lost it (1 + 1e30
+ * is 1e30 in double). */
 static int check_resolution(const stp_tool_prepared *out, const stp_scene *in, char *err,
                             size_t err_size)
 {
     const stp_scene *s = &out->scene;
-    const double step = 1.0 / STP_FIX_ONE, extent_limit = 4 * step;
+    const double step = 1.0 / STP_FIX_ONE, extent_limit = 4 * step, k = out->scale;
     size_t i;
-    for (i = 0; i < s->polygon_count; i++) {
-        const stp_scene_polygon *p = &s->polygons[i];
-        stp_scene_vec3 a = s->vertices[p->first];
-        double size = 0;
-        int k;
+    for (i = 0; i < in->polygon_count; i++) {
+        const stp_scene_polygon *p = &in->polygons[i];
+        double size;
         if (p->prim >= 0)
             continue; /* checked with its prim */
-        for (k = 1; k < p->count; k++)
-            size = fmax(size, max_abs(to_units(s->vertices[p->first + (size_t)k], a, 1.0)));
-        if (size > 0 && size < extent_limit) {
+        size = polygon_size(in, p);
+        if (size > 0 && size * k < extent_limit) {
             snprintf(err, err_size,
                      "%d: polygon %zu: %g units across in a scene %g units across: "
                      "beyond the core's range of coordinates (2^15 units in steps of 2^-16, "
                      "after rescaling); remove the far-off or the tiny objects",
-                     p->source_line, i + 1, size / out->scale,
-                     STP_TOOL_EXTENT_TARGET / out->scale);
+                     p->source_line, file_polygon_number(in, i), size, STP_TOOL_EXTENT_TARGET / k);
             return -1;
         }
     }
-    for (i = 0; i < s->prim_count; i++) {
-        const stp_scene_prim *p = &s->prims[i];
+    for (i = 0; i < in->prim_count; i++) {
+        const stp_scene_prim *p = &in->prims[i];
         double size = fmax(fabs(p->base_radius), fabs(p->apex_radius));
         if (p->kind == STP_SCENE_CONE)
             size = fmax(size, dist(p->base, p->apex));
-        if (size < extent_limit) {
+        if (size * k < extent_limit) {
             char at[16];
             snprintf(err, err_size,
                      "%s%s %zu: %g units across in a scene %g units across: beyond the core's "
                      "range of coordinates (2^15 units in steps of 2^-16, after rescaling)",
                      line_prefix(at, prim_line(s, i)), p->kind == STP_SCENE_SPHERE ? "sphere" : "cone", i + 1,
-                     size / out->scale, STP_TOOL_EXTENT_TARGET / out->scale);
+                     size, STP_TOOL_EXTENT_TARGET / k);
             return -1;
         }
     }
-    (void)in;
+    if (in->has_view && dist(in->from, in->at) * k < extent_limit) {
+        snprintf(err, err_size,
+                 "the view's from (%g, %g, %g) and at (%g, %g, %g) lie %g units apart in a scene "
+                 "%g units across: beyond the core's range of coordinates (2^15 units in steps "
+                 "of 2^-16, after rescaling); remove the far-off objects",
+                 in->from.x, in->from.y, in->from.z, in->at.x, in->at.y, in->at.z,
+                 dist(in->from, in->at), STP_TOOL_EXTENT_TARGET / k);
+        return -1;
+    }
     return 0;
+}
+
+/* Polygons beyond STP_TOOL_MAX_POLYGON_VERTICES are refused: splitting
+ * one can take minutes (ear clipping is quadratic at worst). */
+static int check_polygon_sizes(const stp_scene *in, char *err, size_t err_size)
+{
+    size_t i;
+    for (i = 0; i < in->polygon_count; i++) {
+        const stp_scene_polygon *p = &in->polygons[i];
+        if (p->count > STP_TOOL_MAX_POLYGON_VERTICES) {
+            snprintf(err, err_size,
+                     "%d: polygon %zu has %d vertices; at most %d are taken (splitting longer "
+                     "ones into pieces the core takes can last minutes): cut it into smaller "
+                     "polygons",
+                     p->source_line, file_polygon_number(in, i), p->count, STP_TOOL_MAX_POLYGON_VERTICES);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* The area of polygon p (half its Newell normal's length). */
+static double polygon_area(const stp_scene *s, const stp_scene_polygon *p)
+{
+    double nx = 0, ny = 0, nz = 0;
+    int k;
+    for (k = 0; k < p->count; k++) {
+        stp_scene_vec3 a = s->vertices[p->first + (size_t)k];
+        stp_scene_vec3 b = s->vertices[p->first + (size_t)((k + 1) % p->count)];
+        nx += (a.y - b.y) * (a.z + b.z);
+        ny += (a.z - b.z) * (a.x + b.x);
+        nz += (a.x - b.x) * (a.y + b.y);
+    }
+    return hypot(hypot(nx, ny), nz) / 2;
+}
+
+/* A scene with polygons but none with an area (every one a point, or its
+ * vertices on a line) draws nothing: refused like a file without geometry.
+ * Area in the file's units, against the square of the polygon's size
+ * (rounding of collinear vertices leaves a trace of area).  A self-crossing
+ * outline whose parts cancel (a symmetric bow tie) has area here too: its
+ * parts are counted without their sign. */
+static int check_some_area(const stp_scene *in, char *err, size_t err_size)
+{
+    size_t i;
+    if (in->prim_count > 0)
+        return 0;
+    for (i = 0; i < in->polygon_count; i++) {
+        const stp_scene_polygon *p = &in->polygons[i];
+        double size = polygon_size(in, p), area = polygon_area(in, p);
+        int k;
+        if (size > 0 && area > 1e-12 * size * size)
+            return 0;
+        for (k = 1; size > 0 && k + 1 < p->count; k++) {
+            /* the fan's triangles, each without its sign */
+            stp_scene_polygon t = *p;
+            stp_scene_vec3 tri[3];
+            stp_scene tmp;
+            tri[0] = in->vertices[p->first];
+            tri[1] = in->vertices[p->first + (size_t)k];
+            tri[2] = in->vertices[p->first + (size_t)k + 1];
+            memset(&tmp, 0, sizeof tmp);
+            tmp.vertices = tri;
+            t.first = 0;
+            t.count = 3;
+            if (polygon_area(&tmp, &t) > 1e-12 * size * size)
+                return 0;
+        }
+    }
+    snprintf(err, err_size,
+             "no geometry: none of the %zu polygons has an area (each a point or a line; the "
+             "first on line %d)",
+             in->polygon_count, in->polygon_count ? in->polygons[0].source_line : 0);
+    return -1;
 }
 
 static void rescale(stp_tool_prepared *out, const stp_tool_options *opt, stp_scene_vec3 off,
@@ -391,13 +544,19 @@ int stp_tool_prepare(const stp_scene *scene, const stp_tool_options *opt, stp_to
         snprintf(err, err_size, "the scene has no polygons to render");
         return -1;
     }
+    if (check_polygon_sizes(scene, err, err_size) != 0 || check_some_area(scene, err, err_size) != 0)
+        return -1;
     if (copy_scene(scene, out) != 0) {
         stp_tool_prepared_free(out);
         snprintf(err, err_size, "out of memory");
         return -1;
     }
     centre = v3((lo.x + hi.x) / 2, (lo.y + hi.y) / 2, (lo.z + hi.z) / 2);
-    gather_lights(scene, opt, centre, out, out->light_weight);
+    if (gather_lights(scene, opt, centre, out) != 0) {
+        stp_tool_prepared_free(out);
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
     for (i = 0; i < STP_MAX_LIGHTS; i++)
         out->power_factor[i] = 1;
     extent = scene_extent(scene, lo, hi, centre);

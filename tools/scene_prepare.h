@@ -9,7 +9,9 @@
  *   - lights beyond the build's STP_MAX_LIGHTS are merged, the closest in
  *     direction first;
  *   - polygons above STP_MAX_POLYGON_VERTICES are split: a fan of pieces
- *     when convex, ear clipping into triangles otherwise.
+ *     when convex, ear clipping into triangles otherwise; a quad whose
+ *     outline crosses itself (a bow tie) becomes its two triangles;
+ *   - a scene none of whose polygons has an area is refused.
  * See docs/robust-inputs.md.
  */
 #ifndef STIPPLE_TOOLS_SCENE_PREPARE_H
@@ -38,6 +40,12 @@
 #define STP_TOOL_COORD_LIMIT 1024.0
 #define STP_TOOL_EXTENT_MIN 0.125
 #define STP_TOOL_EXTENT_TARGET 8.0
+
+/* The most vertices one polygon may have: longer ones are refused ("L:
+ * polygon N has V vertices; at most ...").  Splitting a polygon of this
+ * many vertices takes under a second at worst (docs/robust-inputs.md,
+ * "Long polygons"); the readers take up to 2^20. */
+#define STP_TOOL_MAX_POLYGON_VERTICES 16384
 
 typedef struct stp_tool_prepared {
     stp_scene scene;           /* the prepared copy (owned) */
@@ -73,6 +81,14 @@ void stp_tool_prepared_free(stp_tool_prepared *p);
  * be found: then the fan is used). */
 int stp_tool_split_polygon(const stp_scene_vec3 *v, int count, int max, int **piece_index,
                            int **piece_count);
+
+/* A bow tie: a quad v[0..3] whose outline crosses itself, seen in the
+ * plane of its largest corner triangle.  Returns 1 with *edge the first of
+ * the two crossing edges (0: v0-v1 with v2-v3; 1: v1-v2 with v3-v0) and *t
+ * the crossing's place along it (0..1); 0 for a simple quad.  Preparation
+ * draws a bow tie as its two triangles either side of the crossing (the
+ * parts an even-odd fill of its outline covers). */
+int stp_tool_bow_tie(const stp_scene_vec3 *v, int *edge, double *t);
 
 /* stp_tool_setup for a prepared scene: the light powers take the weights
  * and factors of p into account. */

@@ -1084,6 +1084,21 @@ static int cmd_bench(int argc, char **argv)
     return stp_rt_bench(stdout, dir, default_names, 2, &opt, budget) == 0 ? 0 : 1;
 }
 
+static int dispatch(int argc, char **argv);
+
+/* Every command, then standard output flushed: a help text, version or
+ * scene that could not be written (a closed or full stdout) is an error. */
+int main(int argc, char **argv)
+{
+    int rc = dispatch(argc, argv);
+    /* a command that failed has said why */
+    if (rc == 0 && (fflush(stdout) != 0 || ferror(stdout))) {
+        fprintf(stderr, "stipple: writing to standard output: %s\n", strerror(errno));
+        return 1;
+    }
+    return rc;
+}
+
 /* stipple help [COMMAND] */
 static int cmd_help(int argc, char **argv)
 {
@@ -1114,7 +1129,7 @@ static int cmd_help(int argc, char **argv)
     return 0;
 }
 
-int main(int argc, char **argv)
+static int dispatch(int argc, char **argv)
 {
     if (argc < 2)
         return stp_tool_usage_error(0, "no command given (render, animate, dither, scene, compile, bench, help)");

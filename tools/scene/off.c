@@ -34,9 +34,21 @@ static int read_header(stp_parser *ps, off_state *st, stp_line *ln)
     } else if (stp_token_is(&tok, "CNOFF")) {
         st->has_color = 1;
         st->has_normals = 1;
+    } else if (tok.n > 3 && memcmp(tok.s + tok.n - 3, "OFF", 3) == 0) {
+        /* geomview's other variants: 4OFF, nOFF, STOFF, ... */
+        return stp_fail(ps, ln->number, "'%s' is not read: only OFF, COFF, NOFF and CNOFF "
+                                        "(3 dimensions, no texture coordinates)",
+                        stp_token_show(&tok, show, sizeof show));
     } else {
         return stp_fail(ps, ln->number, "expected an OFF header, found '%s'",
                         stp_token_show(&tok, show, sizeof show));
+    }
+    {
+        /* "OFF BINARY": the binary variant, whose counts and data are not text */
+        stp_line rest = *ln;
+        if (stp_next_token(&rest, &tok) && stp_token_is(&tok, "BINARY"))
+            return stp_fail(ps, ln->number, "binary OFF is not read (only ASCII OFF): convert "
+                                            "the file to ASCII");
     }
     return 0;
 }

@@ -315,8 +315,9 @@ static int read_header(stp_parser *ps, ply_state *st)
     if (r <= 0) /* the caller refuses empty text */
         return r < 0 ? -1 : stp_fail(ps, 0, "empty file");
     stp_next_token(&ln, &tok);
-    if (!stp_token_is(&tok, "ply") || stp_next_token(&ln, &tok))
-        return stp_fail(ps, ln.number, "not a PLY file (the first line must be 'ply')");
+    /* the file's very first line: a blank or '#' line before it is no PLY */
+    if (ln.number != 1 || !stp_token_is(&tok, "ply") || stp_next_token(&ln, &tok))
+        return stp_fail(ps, 1, "not a PLY file (the first line must be 'ply')");
     for (;;) {
         r = stp_next_line(ps, &ln);
         if (r < 0)
@@ -350,6 +351,10 @@ static int read_header(stp_parser *ps, ply_state *st)
         } else if (stp_token_is(&tok, "property")) {
             if (header_property(ps, st, &ln) != 0)
                 return -1;
+        } else if (tok.n > 0 && (strchr("+-.", tok.s[0]) || (tok.s[0] >= '0' && tok.s[0] <= '9'))) {
+            /* numbers: the data, with no end_header line before it */
+            return stp_fail(ps, ln.number, "data before 'end_header' (the header must end with "
+                                           "a line 'end_header')");
         } else {
             return stp_fail(ps, ln.number, "unknown header keyword '%s'",
                             stp_token_show(&tok, show, sizeof show));

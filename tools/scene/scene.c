@@ -134,12 +134,19 @@ int stp_next_line(stp_parser *ps, stp_line *ln)
         const char *start = ps->text + ps->pos;
         size_t rest = ps->size - ps->pos;
         const char *nl = memchr(start, '\n', rest);
-        size_t len = nl ? (size_t)(nl - start) : rest;
+        size_t len = nl ? (size_t)(nl - start) : rest, skip = nl ? 1 : 0;
+        /* a CR not followed by LF ends a line too (classic Mac OS files);
+         * one before LF stays in the line, as blank */
+        const char *cr = memchr(start, '\r', len);
         long number = ps->line;
         stp_line probe;
         stp_token tok;
 
-        ps->pos += len + (nl ? 1 : 0);
+        if (cr && !(cr + 1 == nl)) {
+            len = (size_t)(cr - start);
+            skip = 1;
+        }
+        ps->pos += len + skip;
         if (ps->line < LONG_MAX)
             ps->line++;
         /* Text never legitimately holds NUL; refusing it keeps every later
