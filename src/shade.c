@@ -194,9 +194,9 @@ static xf xf_div(xf a, xf b)
 static uint64_t xf_bits(xf a, int e)
 {
     int d = e - a.e;
-    if (a.m == 0 || d >= 95)
+    if (a.m == 0 || d >= 63)
         return 0;
-    return d <= 31 ? (uint64_t)a.m << (31 - d) : (uint64_t)(a.m >> (d - 31));
+    return d <= 31 ? (uint64_t)a.m << (31 - d) : (uint64_t)a.m >> (d - 31);
 }
 
 /* a + b for a, b >= 0 */
