@@ -28,9 +28,9 @@ SHADE-CHECK | Newell's sums collected while a polygon is entered, its shade comp
 (10.1) | ambient light alone: v = B R | shade_parts | test_shade_back_face_is_ambient_only
 (10.3) | one diffuse point light: v = B R + P R (L.N) | shade_parts | test_shade_grid_against_reference
 (10.4) | facet distribution D = (k/(k+1-N.H))^2 | stp_specular | test_specular_terms_against_reference test_specular_terms_known_values
-(10.6)-(10.8) | Fresnel reflection F from c = E.H and the index of refraction n | src/shade.c:fresnel stp_fresnel | test_specular_terms_against_reference test_property_specular_terms
+(10.6)-(10.8) | Fresnel reflection F from c = E.H and the index of refraction n | src/shade.c:fresnel stp_fresnel fresnel_xf | test_specular_terms_against_reference test_property_specular_terms tests/shade_accuracy/test_shade_accuracy.c:test_host
 (10.9)-(10.11) | blocking and shadowing of facets: G = min(1, 2(N.H)(N.E)/(E.H), 2(N.H)(N.L)/(E.H)) | stp_specular | test_specular_terms_against_reference test_specular_terms_zero_for_nonpositive_cosines
-(10.12) | the specular share D G F/(E.N) | specular_share_unit | test_shade_highlight_sweep test_property_shade_point
+(10.12) | the specular share D G F/(E.N) | specular_xf | test_shade_highlight_sweep test_property_shade_point tests/shade_accuracy/test_shade_accuracy.c:test_host
 (10.14) | attenuation with distance 1/(C+U) | shade_parts | test_shade_light_at_point_is_head_on test_shade_grid_against_reference
 (10.16) | the whole model: background share plus each light's diffuse and specular terms over C+U | stp_shade_point shade_parts stp_shade_combine | test_shade_grid_against_reference test_property_shade_point tests/stiff/test_stiff.c:test_case
 MAKE-SHADE (Algorithm 10.5) | the shade of a face: background only when the light is behind it, capped at 1 and scaled by the brightness | shade_parts | test_shade_no_lights_and_caps test_shade_back_face_is_ambient_only

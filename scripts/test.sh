@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # The tests on a fresh machine: install, then build and run the whole suite
-# twice, plainly and under AddressSanitizer + UndefinedBehaviorSanitizer.
+# three times: plainly, under AddressSanitizer + UndefinedBehaviorSanitizer,
+# and with the 32-bit target arithmetic on the host (STP_ARITH32) under the
+# same sanitizers.
 # Usage: scripts/test.sh
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -9,10 +11,11 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 # The Linux kernel test must not skip itself in CI for want of a download.
 export STP_LINUX_TEST_REQUIRED=${STP_LINUX_TEST_REQUIRED:-1}
 status=0
-for kind in plain sanitize; do
+for kind in plain sanitize arith32; do
     build="$here/build-test-$kind"
     flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo)
     [ "$kind" = sanitize ] && flags=(-DCMAKE_BUILD_TYPE=Debug -DSTP_SANITIZE=ON)
+    [ "$kind" = arith32 ] && flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTP_SANITIZE=ON -DSTP_ARITH32=ON)
     echo "=== $kind build"
     cmake -S "$here" -B "$build" "${flags[@]}" >/dev/null
     cmake --build "$build" -j"$(nproc)"

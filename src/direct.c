@@ -86,6 +86,7 @@ static void shade_prepare(stp_shade_fast *s, const stp_direct_light *l, const in
 #if STP_WIDE_ARITH
     s->wide_ready = 0; /* the 32-bit face path on hosts too: the chip's values */
 #endif
+    s->exact = 0; /* shade_fast.c: no exact route (its values are not filled here) */
 }
 
 int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_view *view,

@@ -124,54 +124,210 @@ stp_specular_terms stp_specular(stp_fix n_dot_h, stp_fix n_dot_e, stp_fix n_dot_
     return out;
 }
 
-#if STP_WITH_SPECULAR
-/* Ks D F G/(N.E) of one light in STP_UNIT (Q30) from the cosines (each in
- * (0, 2^30], STP_UNIT), saturated at 2^45 (32768, beyond any shade).
- *   D = (k/(k + 1 - N.H))^2 = (1 - (1 - N.H)/(k + 1 - N.H))^2: the quotient
- *     (1 - N.H) 2^30 / (k + 1 - N.H) has a numerator below 2^61 for any k;
- *   G/(N.E) = min(1/(N.E), 2 (N.H) (min(N.E, N.L)/(N.E))/(E.H)), formed
- *     directly so a grazing eye keeps its bits (the tiny G is never divided
- *     by the tiny N.E): 2 (N.H) min/(N.E) <= 2^31, shifted by 30 < 2^61;
- *   F from stp_fresnel's arithmetic at E.H rounded to stp_fix. */
-static int64_t specular_share_unit(const stp_material *material, int64_t n_dot_h,
-                                   int64_t n_dot_e, int64_t n_dot_l, int64_t e_dot_h)
+/* ---- xf: a 32-bit-mantissa floating number, m 2^e with m = 0 (the
+ * number 0) or m in [2^31, 2^32), any exponent an int holds.  Every
+ * operation truncates: relative error below 2^-31 each (sqrt 2^-29), so a
+ * chain of twenty stays below 1e-8, and no range can overflow.  The
+ * shading's factors are formed in it so that none is rounded to an
+ * absolute step before BRIGHT, the powers and 1/(C + U) multiply it. */
+typedef struct xf {
+    uint32_t m;
+    int e;
+} xf;
+
+static xf xf_u64(uint64_t v, int e)
 {
-    const int64_t one = STP_UNIT_ONE;
-    int64_t k = (int64_t)(material->gloss < 1 ? 1 : material->gloss) << (STP_UNIT_BITS - F);
-    int64_t m = n_dot_l < n_dot_e ? n_dot_l : n_dot_e, q, d, g_ne, cap, df, ec;
-    stp_fix f;
-    if (n_dot_h > one)
-        n_dot_h = one;
-    q = one - stp_div64_fast((one - n_dot_h) << STP_UNIT_BITS, k + one - n_dot_h);
-    d = MUL_U32(q, q) >> STP_UNIT_BITS; /* q in [0, 2^30] */
-#if STP_WIDE_ARITH
-    /* one instruction a quotient: dividing is cheaper than the tests below */
-    g_ne = stp_div64_fast(stp_div64_fast(2 * m * n_dot_h, n_dot_e) << STP_UNIT_BITS, e_dot_h);
-    cap = stp_div64_fast(one << STP_UNIT_BITS, n_dot_e);
-    if (cap < g_ne)
-        g_ne = cap;
-#else
-    /* the same values with fewer quotients: (2 m N.H)/(N.E) is 2 N.H
-     * exactly when m = N.E (the eye no higher than the light), and the cap
-     * floor(2^60/(N.E)) is below g_ne exactly when g_ne N.E > 2^60 (g_ne
-     * an integer; below 2^32 the product fits) */
-    g_ne = m == n_dot_e ? 2 * n_dot_h
-                        : stp_div64_fast(MUL_U32(2 * m, n_dot_h), n_dot_e);
-    g_ne = stp_div64_fast(g_ne << STP_UNIT_BITS, e_dot_h);
-    if (g_ne >= ((int64_t)1 << 32) ||
-        MUL_U32(g_ne, n_dot_e) > (one << STP_UNIT_BITS)) {
-        cap = stp_div64_fast(one << STP_UNIT_BITS, n_dot_e);
-        if (cap < g_ne)
-            g_ne = cap;
+    xf r;
+    int n = stp_bit_length64(v) - 32;
+    if (v == 0) {
+        r.m = 0;
+        r.e = 0;
+        return r;
     }
+    r.m = (uint32_t)(n >= 0 ? v >> n : v << -n);
+    r.e = e + n;
+    return r;
+}
+
+/* a b: the mantissas' product is in [2^62, 2^64), one test normalises it */
+static xf xf_mul(xf a, xf b)
+{
+    uint64_t p;
+    xf r;
+    if (a.m == 0 || b.m == 0)
+        return xf_u64(0, 0);
+    p = stp_umul32x32(a.m, b.m); /* unsigned: may reach 2^64 - 1 */
+    if (p >> 63) {
+        r.m = (uint32_t)(p >> 32);
+        r.e = a.e + b.e + 32;
+    } else {
+        r.m = (uint32_t)(p >> 31);
+        r.e = a.e + b.e + 31;
+    }
+    return r;
+}
+
+/* a / b for b != 0: (a.m 2^32) / b.m in (2^31, 2^33), one test normalises it */
+static xf xf_div(xf a, xf b)
+{
+    uint64_t q;
+    xf r;
+    if (a.m == 0)
+        return a;
+#if STP_WIDE_ARITH
+    q = ((uint64_t)a.m << 32) / b.m;
+#else
+    q = stp_udiv64_recip((uint64_t)a.m << 32, b.m);
 #endif
-    ec = (e_dot_h + ((int64_t)1 << (STP_UNIT_BITS - F - 1))) >> (STP_UNIT_BITS - F);
-    f = fresnel(ec < 1 ? 1 : (ec > ONE ? ONE : (stp_fix)ec),
-                material->refraction <= 0 ? 1 : material->refraction);
-    df = MUL_U32(d, f) >> F; /* D, F in [0, 1]: STP_UNIT */
-    df = mul_shift_sat(df, g_ne, STP_UNIT_BITS);
-    df = mul_shift_sat(df, material->specular < 0 ? 0 : material->specular, F);
-    return df > ((int64_t)1 << 45) ? (int64_t)1 << 45 : df;
+    if (q >> 32) {
+        r.m = (uint32_t)(q >> 1);
+        r.e = a.e - b.e - 31;
+    } else {
+        r.m = (uint32_t)q;
+        r.e = a.e - b.e - 32;
+    }
+    return r;
+}
+
+/* a in units of 2^(e - 31) for e >= a.e: exact while e - a.e <= 31,
+ * below 2^63 */
+static uint64_t xf_bits(xf a, int e)
+{
+    int d = e - a.e;
+    if (a.m == 0 || d >= 63)
+        return 0;
+    return d <= 31 ? (uint64_t)a.m << (31 - d) : (uint64_t)a.m >> (d - 31);
+}
+
+/* a + b for a, b >= 0 */
+static xf xf_add(xf a, xf b)
+{
+    int e = a.e > b.e ? a.e : b.e;
+    return xf_u64(xf_bits(a, e) + xf_bits(b, e), e - 31);
+}
+
+/* sqrt(a) for a >= 0: a = (m 2^sh) 2^(e - sh) with e - sh even */
+static xf xf_sqrt(xf a)
+{
+    int sh = (a.e & 1) ? 31 : 32;
+    if (a.m == 0)
+        return a;
+    return xf_u64(stp_sqrt64_fast((uint64_t)a.m << sh), (a.e - sh) / 2);
+}
+
+/* a in STP_UNIT (2^30) as int64, truncated, saturated at 2^45 */
+static int64_t xf_unit(xf a)
+{
+    int sh = a.e + STP_UNIT_BITS;
+    if (a.m == 0 || sh <= -32)
+        return 0;
+    if (sh >= 14)
+        return (int64_t)1 << 45;
+    return sh >= 0 ? (int64_t)a.m << sh : (int64_t)(a.m >> -sh);
+}
+
+#if STP_WITH_SPECULAR
+/* |a - b| (and *negative = a < b) for a, b >= 0: exact before the one
+ * truncation where the exponents differ by at most 31 */
+static xf xf_sub(xf a, xf b, int *negative)
+{
+    int e = a.e > b.e ? a.e : b.e;
+    uint64_t x = xf_bits(a, e), y = xf_bits(b, e);
+    *negative = x < y;
+    return xf_u64(x < y ? y - x : x - y, e - 31);
+}
+
+static int xf_less(xf a, xf b)
+{
+    if (a.m == 0 || b.m == 0)
+        return b.m != 0;
+    return a.e != b.e ? a.e < b.e : a.m < b.m;
+}
+
+/* Fresnel (10.6)-(10.8) without cancellation, from c = E.H and
+ * u = 1 - c^2 = |L - E|^2/4 (each formed from the vectors, not from c) and
+ * n2m1 = n^2 - 1 (exact, with its sign):
+ *   g^2 = n^2 - 1 + c^2,  r = (g - c)/(g + c) = (n^2 - 1)/(g + c)^2,
+ *   t = (c g - u)/(c g + u) (the listing's (c(g + c) - 1)/(c(g - c) + 1)),
+ *   F = r^2 (1 + t^2)/2, at most 1; 1 where g is imaginary. */
+static xf fresnel_xf(xf c, xf c2, xf u, xf n2m1, int n_below_1)
+{
+    xf g2, g, gc, r, p, num, den, t, one = xf_u64(1, 0), f;
+    int neg;
+    if (n_below_1) {
+        g2 = xf_sub(c2, n2m1, &neg);
+        if (neg || g2.m == 0)
+            return one; /* beyond the critical angle */
+    } else {
+        g2 = xf_add(n2m1, c2);
+    }
+    g = xf_sqrt(g2);
+    gc = xf_add(g, c);
+    r = xf_div(n2m1, xf_mul(gc, gc));
+    p = xf_mul(c, g);
+    num = xf_sub(p, u, &neg);
+    den = xf_add(p, u);
+    if (den.m == 0)
+        return one;
+    t = xf_div(num, den);
+    f = xf_mul(xf_mul(r, r), xf_add(one, xf_mul(t, t)));
+    f.e--;
+    return xf_less(one, f) ? one : f;
+}
+
+/* Ks D F G/(N.E) of one light from the STP_UNIT vectors n, l, e and the
+ * cosines N.L, N.E (> 0), in xf; 0 where H is undefined (L = -E).  H is
+ * never formed and no quantity is a difference of two nearly equal ones:
+ *   S = (L + E)/2, c = E.H = |S|, 1 - c^2 = |(L - E)/2|^2,
+ *   1 - N.H = |N x (L + E)|^2/(|L + E|(|L + E| + N.(L + E)))
+ *           = 2 |N x S|^2/(c (2c + N.L + N.E)),
+ *   N.H/E.H = (N.L + N.E)/(2 c^2),
+ *   D = (k/(k + 1 - N.H))^2,
+ *   G/(N.E) = min(1/(N.E), 2 (N.H/E.H) min(N.E, N.L)/(N.E)).
+ * Components: S, (L - E)/2 and N x S each below 2^31 in magnitude (unit
+ * vectors within 2^30 + 2), their squares' sums below 3 2^62, exact. */
+static xf specular_xf(const stp_material *material, stp_unit3 n, stp_unit3 l, stp_unit3 e,
+                      int32_t n_dot_l, int32_t n_dot_e)
+{
+    int32_t s0 = (int32_t)(((int64_t)l.x + e.x) >> 1), s1 = (int32_t)(((int64_t)l.y + e.y) >> 1),
+            s2 = (int32_t)(((int64_t)l.z + e.z) >> 1);
+    int32_t d0 = (int32_t)(((int64_t)l.x - e.x) >> 1), d1 = (int32_t)(((int64_t)l.y - e.y) >> 1),
+            d2 = (int32_t)(((int64_t)l.z - e.z) >> 1);
+    /* N x S in 2^60, to 2^30 (below 2^31 in magnitude) */
+    int64_t x0 = stp_asr64(MUL_S32(n.y, s2) - MUL_S32(n.z, s1), 30);
+    int64_t x1 = stp_asr64(MUL_S32(n.z, s0) - MUL_S32(n.x, s2), 30);
+    int64_t x2 = stp_asr64(MUL_S32(n.x, s1) - MUL_S32(n.y, s0), 30);
+    xf c2 = xf_u64((uint64_t)MUL_S32(s0, s0) + (uint64_t)MUL_S32(s1, s1) + (uint64_t)MUL_S32(s2, s2), -60);
+    xf u = xf_u64((uint64_t)MUL_S32(d0, d0) + (uint64_t)MUL_S32(d1, d1) + (uint64_t)MUL_S32(d2, d2), -60);
+    xf t = xf_u64((uint64_t)MUL_S32(x0, x0) + (uint64_t)MUL_S32(x1, x1) + (uint64_t)MUL_S32(x2, x2), -60);
+    xf c, ns, nl, ne, omx, k, d, f, g, cap, n2m1;
+    int64_t nv = material->refraction <= 0 ? 1 : material->refraction, n2;
+    if (c2.m == 0)
+        return c2; /* L = -E: H undefined */
+    c = xf_sqrt(c2);
+    nl = xf_u64((uint64_t)n_dot_l, -STP_UNIT_BITS);
+    ne = xf_u64((uint64_t)n_dot_e, -STP_UNIT_BITS);
+    ns = xf_add(nl, ne);
+    /* 1 - N.H = 2 |N x S|^2/(c (2c + N.L + N.E)) */
+    omx = xf_add(c, c);
+    omx = xf_div(t, xf_mul(c, xf_add(omx, ns)));
+    omx.e++;
+    k = xf_u64((uint64_t)(material->gloss < 1 ? 1 : material->gloss), -F);
+    d = xf_div(k, xf_add(k, omx));
+    d = xf_mul(d, d);
+    /* n^2 - 1 exactly (2F fractional bits) */
+    n2 = MUL_U32(nv, nv) - ((int64_t)1 << (2 * F));
+    n2m1 = xf_u64((uint64_t)(n2 < 0 ? -n2 : n2), -2 * F);
+    f = fresnel_xf(c, c2, u, n2m1, n2 < 0);
+    /* G/(N.E): 2 (N.H/E.H) min(N.E, N.L)/(N.E) = (N.L + N.E) min/(c^2 N.E) */
+    cap = xf_div(xf_u64(1, 0), ne);
+    g = xf_div(ns, c2);
+    if (n_dot_l < n_dot_e)
+        g = xf_mul(g, xf_div(nl, ne));
+    if (xf_less(cap, g))
+        g = cap;
+    return xf_mul(xf_mul(xf_mul(d, f), g),
+                  xf_u64((uint64_t)(material->specular < 0 ? 0 : material->specular), -F));
 }
 #endif
 
@@ -183,97 +339,105 @@ static inline int32_t unit_dot(stp_unit3 a, stp_unit3 b)
     return (int32_t)stp_asr64(s + ((int64_t)1 << (STP_UNIT_BITS - 1)), STP_UNIT_BITS);
 }
 
+/* The distance from the point to the light, v = light - point (|v_i| <
+ * 2^32 raw units), in xf: the squares' sum formed exactly (v halved first
+ * when a component reaches 2^31), then its root: no rounding to a raw
+ * unit, so a light a few units away keeps its distance. */
+static xf distance_xf(int64_t v0, int64_t v1, int64_t v2)
+{
+    uint64_t a0 = (uint64_t)(v0 < 0 ? -v0 : v0), a1 = (uint64_t)(v1 < 0 ? -v1 : v1),
+             a2 = (uint64_t)(v2 < 0 ? -v2 : v2);
+    int e = -2 * F;
+    if (((a0 | a1 | a2) >> 31) != 0) {
+        a0 >>= 1;
+        a1 >>= 1;
+        a2 >>= 1;
+        e += 2;
+    }
+    return xf_sqrt(xf_u64((uint64_t)MUL_U32(a0, a0) + (uint64_t)MUL_U32(a1, a1) + (uint64_t)MUL_U32(a2, a2), e));
+}
+
+/* One light's share P_j (R (N.L) + Ks D G F/(N.E))/(C + U) times BRIGHT, in
+ * STP_UNIT saturated at 2^45 (at least 0), or -1 when the light does not
+ * reach the point (N.L <= 0).  Each factor is an xf, so nothing is rounded
+ * to an absolute step before the products: the error does not grow with
+ * BRIGHT, the powers, a small C or a small N.E. */
+static int64_t light_share(const stp_lighting *lighting, const stp_material *material, int j, stp_unit3 normal,
+                           stp_vec3 point, stp_unit3 e, int32_t n_dot_e)
+{
+    const stp_light *light = &lighting->lights[j];
+    int64_t v0 = (int64_t)light->position.x - point.x, v1 = (int64_t)light->position.y - point.y,
+            v2 = (int64_t)light->position.z - point.z, diffuse, specular = 0;
+    stp_unit3 l;
+    int32_t n_dot_l;
+    xf gain, u = xf_u64(0, 0);
+    if (stp_unit_from64(v0, v1, v2, &l) == 0)
+        l = normal; /* light on the surface: lit head-on, 1/(C + 0) */
+    else
+        u = distance_xf(v0, v1, v2);
+    n_dot_l = unit_dot(normal, l);
+    if (n_dot_l <= 0)
+        return -1;
+    /* BRIGHT P_j/(C + U) */
+    gain = xf_mul(xf_u64((uint64_t)(light->power < 0 ? 0 : light->power), -F),
+                  xf_u64((uint64_t)(lighting->brightness < 0 ? 0 : lighting->brightness), -F));
+    gain = xf_div(gain, xf_add(xf_u64((uint64_t)(lighting->attenuation_c > 0 ? lighting->attenuation_c : 1), -F), u));
+    diffuse = xf_unit(xf_mul(xf_mul(gain, xf_u64((uint64_t)n_dot_l, -STP_UNIT_BITS)),
+                             xf_u64((uint64_t)(material->reflectivity < 0 ? -(int64_t)material->reflectivity
+                                                                        : material->reflectivity), -F)));
+    if (material->reflectivity < 0)
+        diffuse = -diffuse;
+#if STP_WITH_SPECULAR
+    if (material->specular > 0)
+        specular = xf_unit(xf_mul(gain, specular_xf(material, normal, l, e, n_dot_l, n_dot_e)));
+#else
+    (void)e;
+    (void)n_dot_e;
+#endif
+    diffuse += specular;
+    return diffuse < 0 ? 0 : (diffuse > ((int64_t)1 << 45) ? (int64_t)1 << 45 : diffuse);
+}
+
 /* MAKE-SHADE on STP_UNIT directions: the shade of a point with unit normal
- * n seen along unit e (towards the eye; n_dot_e = N.E, STP_UNIT).  The
- * lights' terms are formed in STP_UNIT and 64 bits, summed with the ambient
- * part B R, multiplied by BRIGHT and only then rounded to stp_fix, so the
- * error does not grow with BRIGHT (each term keeps 2^-30, not 2^-16).
- * Per light, when terms is not NULL, terms[j] gets its term rounded to
- * stp_fix (saturated; 0 for a light that does not reach the face) and
- * *ambient_out B R, for stp_shade_point_terms. */
+ * n seen along unit e (towards the eye; n_dot_e = N.E, STP_UNIT).  Each
+ * light's share is formed with BRIGHT in it (light_share), the ambient part
+ * BRIGHT B R in 64 bits, summed in STP_UNIT and rounded once to stp_fix.
+ * Per light, when terms is not NULL, terms[j] gets its term without BRIGHT
+ * rounded to stp_fix (saturated; 0 for a light that does not reach the
+ * face) and *ambient_out B R, for stp_shade_point_terms. */
 static stp_fix shade_unit(const stp_lighting *lighting, const stp_material *material,
                           stp_unit3 normal, stp_vec3 point, stp_unit3 e, int32_t n_dot_e,
                           stp_fix *ambient_out, stp_fix *terms)
 {
     const int up = STP_UNIT_BITS - F; /* stp_fix to STP_UNIT */
-    const int64_t term_cap = (int64_t)1 << 45;
     stp_fix background = stp_fix_clamp(lighting->background, 0, ONE);
-    stp_fix refl = material->reflectivity;
-    int64_t c = lighting->attenuation_c > 0 ? lighting->attenuation_c : 1;
-    /* B R: both stp_fix, so the product has 2F fractional bits (24..40),
-     * brought to STP_UNIT's 30; |B R| <= |R| < 2^(31-F), so < 2^61 either way */
-    int64_t ambient = 2 * F >= STP_UNIT_BITS
-                          ? stp_asr64((int64_t)background * refl, 2 * F - STP_UNIT_BITS)
-                          : (int64_t)background * refl * ((int64_t)1 << (STP_UNIT_BITS - 2 * F));
-    int64_t sum = 0; /* STP_UNIT; each term is capped at 2^45 */
+    stp_fix refl = material->reflectivity, bright = lighting->brightness;
+    /* B R (2F fractional bits, |.| < 2^(31 + F)) times BRIGHT in STP_UNIT */
+    int64_t br = (int64_t)background * refl, sum;
     int j, count;
-
-#if !STP_WITH_SPECULAR
-    (void)e;
-#endif
-    count = lighting->count < 0 ? 0 : (lighting->count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : lighting->count);
-    if (n_dot_e <= 0)
-        count = 0; /* a back face (or the eye on the point): ambient share only */
     if (terms) {
         *ambient_out = stp_fix_mul(background, refl);
         for (j = 0; j < STP_MAX_LIGHTS; j++)
             terms[j] = 0;
     }
-    for (j = 0; j < count; j++) {
-        const stp_light *light = &lighting->lights[j];
-        stp_unit3 l;
-        int64_t u, term, power;
-        int32_t n_dot_l;
-        u = stp_unit_from64((int64_t)light->position.x - point.x,
-                            (int64_t)light->position.y - point.y,
-                            (int64_t)light->position.z - point.z, &l);
-        if (u == 0)
-            l = normal; /* light on the surface: lit head-on, 1/(C + 0) */
-        n_dot_l = unit_dot(normal, l);
-        if (n_dot_l <= 0)
-            continue;
-        /* R (N.L): stp_fix times STP_UNIT, back to STP_UNIT; |.| < 2^61 */
-        term = stp_asr64(MUL_S32(refl, n_dot_l), F);
-#if STP_WITH_SPECULAR
-        if (material->specular != 0) {
-            /* H = (L + E)/|L + E| is never formed: N.H = (N.L + N.E)/|L + E|
-             * and E.H = (1 + E.L)/|L + E| with |L + E|^2 = 2 (1 + E.L), so
-             * one reciprocal square root of a scalar serves both */
-            int64_t one_el = (int64_t)STP_UNIT_ONE + unit_dot(e, l); /* in [0, 2^31] */
-            if (one_el > 0) { /* L + E = 0: H undefined, no highlight */
-                int ex;
-                int64_t inv = (int64_t)stp_rsqrt64((uint64_t)one_el << 1, &ex);
-                /* 1/|L + E| = inv 2^-ex 2^15 (the argument is STP_UNIT) */
-                /* N.L, N.E > 0 here: the sums are in (0, 2^31 + 4], inv <= 2^30 */
-                int64_t n_dot_h = MUL_U32((int64_t)n_dot_l + n_dot_e, inv),
-                        e_dot_h = MUL_U32(one_el, inv);
-                n_dot_h = stp_asr64(n_dot_h + ((int64_t)1 << (ex - 16)), ex - 15);
-                e_dot_h = stp_asr64(e_dot_h + ((int64_t)1 << (ex - 16)), ex - 15);
-                /* the share DGF/(E.N) explodes as E.N -> 0: it saturates,
-                 * and the min(1, ...) below caps the shade */
-                if (n_dot_h > 0 && e_dot_h > 0)
-                    term += specular_share_unit(material, n_dot_h, n_dot_e, n_dot_l, e_dot_h);
-            }
-        }
-#endif
-        /* P_j term / (C + U_j): the product (STP_UNIT + F bits) saturates at
-         * 2^62, far above any shade; C + U < 2^34 */
-        power = light->power < 0 ? 0 : light->power;
-        if (term < 0)
-            term = 0;
-        term = stp_div64_fast(mul_shift_sat(term, power, 0), c + u);
-        if (term > term_cap)
-            term = term_cap;
-        if (terms)
-            terms[j] = stp_fix_sat64((term + ((int64_t)1 << (up - 1))) >> up);
-        sum += term;
-    }
-    sum += ambient;
-    if (lighting->brightness <= 0 || sum <= 0)
+    if (bright <= 0)
         return 0;
-    /* BRIGHT times the sum, still in STP_UNIT, then min(1, .) and one
-     * rounding to stp_fix */
-    sum = mul_shift_sat(sum, lighting->brightness, F);
+    sum = mul_shift_sat(br < 0 ? -br : br, bright, 3 * F - STP_UNIT_BITS);
+    if (br < 0)
+        sum = -sum;
+    count = lighting->count < 0 ? 0 : (lighting->count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : lighting->count);
+    if (n_dot_e <= 0)
+        count = 0; /* a back face (or the eye on the point): ambient share only */
+    for (j = 0; j < count; j++) {
+        int64_t share = light_share(lighting, material, j, normal, point, e, n_dot_e);
+        if (share < 0)
+            continue;
+        if (terms) /* without BRIGHT: share 2^F/bright in STP_UNIT, to stp_fix */
+            terms[j] = stp_fix_sat64(stp_div64_fast(share << 16, bright) >> (46 - 2 * F));
+        sum += share;
+    }
+    if (sum <= 0)
+        return 0;
     if (sum >= STP_UNIT_ONE)
         return ONE;
     return (stp_fix)((sum + ((int64_t)1 << (up - 1))) >> up);

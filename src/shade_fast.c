@@ -31,6 +31,7 @@
 #include "shade_fast_private.h"
 
 #include "fix_private.h" /* STP_TABLE */
+#include "shade_private.h" /* stp_shade_unit: the exact route */
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -253,6 +254,8 @@ static uint32_t sf_to_fixed(stp_sf16 a, int q, uint32_t cap)
 /* p 2^sh in Q26 for the sums, saturated at SHARE_CAP */
 STP_HOT_INLINE int32_t share_of(uint32_t p, int sh)
 {
+    if (p == 0)
+        return 0; /* a zero product (a light of power 0) has any exponent */
     if (sh >= 0)
         return sh >= 31 || p > (SHARE_CAP >> sh) ? (int32_t)SHARE_CAP : (int32_t)(p << sh);
     return sh <= -32 ? 0 : (int32_t)(p >> -sh);
@@ -793,6 +796,8 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
                           nlen28);
         if (ne <= 0)
             return s->ambient_shade;
+        if (ne < s->fast_min_cos)
+            return s->exact(s, normal, point);
         inv_ne = ((uint64_t)1 << 56) / (uint64_t)ne;
     }
 #endif
@@ -906,6 +911,90 @@ static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const 
 }
 #endif
 
+/* The exact route: stp_shade_unit (shade.c) with the prepared lighting and
+ * material, the Q1.14 normal and E as STP_UNIT vectors. */
+static stp_fix face_exact(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+{
+    stp_lighting lighting;
+    stp_material material;
+    stp_unit3 n, e;
+    int j;
+    (void)stp_unit_from64(normal[0], normal[1], normal[2], &n);
+    if (s->parallel)
+        (void)stp_unit_from64(s->x_dir.x, s->x_dir.y, s->x_dir.z, &e);
+    else if (stp_unit_from64((int64_t)s->eye.x - point.x, (int64_t)s->eye.y - point.y,
+                             (int64_t)s->eye.z - point.z, &e) == 0)
+        return s->ambient_shade; /* the eye on the face */
+    lighting.brightness = s->x_bright;
+    lighting.background = s->x_background;
+    lighting.attenuation_c = s->x_c;
+    lighting.count = s->count;
+    for (j = 0; j < s->count; j++) {
+        lighting.lights[j].position = s->light[j];
+        lighting.lights[j].power = s->x_power[j];
+    }
+    material.reflectivity = s->x_refl;
+    material.refraction = s->x_refraction;
+    material.gloss = s->x_gloss;
+    material.specular = s->specular ? s->x_ks : 0;
+    return stp_shade_unit(&lighting, &material, n, point, e, stp_unit_dot(n, e));
+}
+
+/* Where the fast route keeps its error within the bound (about 6e-4
+ * measured, tests/shade_accuracy; the exact route everywhere else):
+ *   the gain BRIGHT max_j P_j max(|R|, Ks)/C at most FAST_MAX_GAIN, so the
+ *     directions' 2^-15 and the Q16/Q30 steps of F and D are not
+ *     multiplied up by a bright light, a small C or a large power;
+ *   with the highlight: k >= FAST_MIN_GLOSS (a sharp highlight moves by
+ *     more than the scaled directions resolve), n >= FAST_MIN_REFRACTION
+ *     (near 1 the Fresnel table's interpolation and Q16 steps lose F's
+ *     relative precision) and, per face, N.E >= FAST_MIN_COS (1/(N.E)
+ *     multiplies the cosines' absolute error). */
+#define FAST_MAX_GAIN 16
+#define FAST_MIN_GLOSS (ONE / 20)
+#define FAST_MIN_REFRACTION (ONE + ONE / 4)
+#define FAST_MIN_COS (Q30 / 20)
+
+static int fast_keeps_bound(const stp_shade_fast *s, const stp_lighting *lighting, const stp_material *material)
+{
+    stp_fix r = material->reflectivity < 0 ? -material->reflectivity : material->reflectivity, p = 0;
+    int64_t gain;
+    int j;
+    if (s->specular && (material->gloss < FAST_MIN_GLOSS || material->refraction < FAST_MIN_REFRACTION))
+        return 0;
+    if (s->specular && material->specular > r)
+        r = material->specular;
+    for (j = 0; j < s->count; j++)
+        if (lighting->lights[j].power > p)
+            p = lighting->lights[j].power;
+    /* BRIGHT P (2F bits, < 2^62) to F bits, times max(|R|, Ks): F bits,
+     * saturated at 2^62; C >= 1 raw unit */
+    gain = stp_mul_shift_sat(stp_mul_shift_sat(lighting->brightness, p, F), r, F);
+    return gain <= (int64_t)FAST_MAX_GAIN * (lighting->attenuation_c > 0 ? lighting->attenuation_c : 1);
+}
+
+/* The exact route's values, and where the fast route keeps the error bound */
+static void exact_prepare(stp_shade_fast *s, const stp_lighting *lighting, const stp_material *material,
+                          int parallel, stp_vec3 parallel_dir)
+{
+    int j;
+    s->exact = face_exact;
+    s->x_bright = lighting->brightness;
+    s->x_background = lighting->background;
+    s->x_c = lighting->attenuation_c;
+    s->x_refl = material->reflectivity;
+    s->x_refraction = material->refraction;
+    s->x_gloss = material->gloss;
+    s->x_ks = material->specular;
+    for (j = 0; j < STP_MAX_LIGHTS; j++)
+        s->x_power[j] = j < s->count ? lighting->lights[j].power : 0;
+    s->x_dir = parallel_dir;
+    if (parallel && parallel_dir.x == 0 && parallel_dir.y == 0 && parallel_dir.z == 0)
+        s->x_dir.z = -ONE;
+    s->exact_always = (uint8_t)!fast_keeps_bound(s, lighting, material);
+    s->fast_min_cos = s->specular ? FAST_MIN_COS : 0;
+}
+
 void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
                             const stp_material *material, stp_vec3 eye, int parallel,
                             stp_vec3 parallel_dir)
@@ -1000,6 +1089,7 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
 #if STP_WIDE_ARITH
     wide_prepare(s, lighting, material, parallel, parallel_dir);
 #endif
+    exact_prepare(s, lighting, material, parallel, parallel_dir);
 }
 
 stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
@@ -1014,6 +1104,8 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     stp_sf16 inv_ne = {0, 0};
     uint32_t inv_ne_q26 = 0;
 #endif
+    if (s->exact && s->exact_always && s->count != 0)
+        return s->exact(s, normal, point);
 #if STP_WIDE_ARITH
     /* the host path; the code below is the 32-bit targets' (kept compiled
      * on the host: its helpers serve prepare and the Fresnel) */
@@ -1045,6 +1137,8 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
         n_dot_e = cos_n(dot_e, e, nd);
         if (n_dot_e <= 0)
             return s->ambient_shade;
+        if (s->exact && n_dot_e < s->fast_min_cos)
+            return s->exact(s, normal, point);
         inv_ne = sf_recip(sf_make((uint32_t)n_dot_e, 30));
         inv_ne_q26 = sf_to_fixed(inv_ne, 26, 0x7FFFFFFFu);
     }

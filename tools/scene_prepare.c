@@ -292,11 +292,11 @@ static int prim_line(const stp_scene *s, size_t prim)
 
 /* --no-rescale: the coordinates go to the core as they are, so each must
  * be an stp_fix (the core then refuses, with STP_ERR_RANGE, a point too far
- * from the eye).  Beyond +-32767 stp_tool_fix would saturate it into a
- * point elsewhere. */
+ * from the eye).  Within +-32767 (inclusive, as render.h states) each is
+ * one; beyond, stp_tool_fix would saturate it into a point elsewhere. */
 static int outside_fix(stp_scene_vec3 v)
 {
-    return !(max_abs(v) < 32767.0);
+    return !(max_abs(v) <= 32767.0);
 }
 
 static int check_units_kept(const stp_scene *s, char *err, size_t err_size)
@@ -318,8 +318,8 @@ static int check_units_kept(const stp_scene *s, char *err, size_t err_size)
     }
     for (i = 0; i < s->prim_count; i++) {
         const stp_scene_prim *p = &s->prims[i];
-        if (outside_fix(p->base) || outside_fix(p->apex) || !(fabs(p->base_radius) < 32767.0) ||
-            !(fabs(p->apex_radius) < 32767.0)) {
+        if (outside_fix(p->base) || outside_fix(p->apex) || !(fabs(p->base_radius) <= 32767.0) ||
+            !(fabs(p->apex_radius) <= 32767.0)) {
             char at[16];
             snprintf(err, err_size, "%s%s %zu %s", line_prefix(at, prim_line(s, i)),
                      p->kind == STP_SCENE_SPHERE ? "sphere" : "cone", i + 1, range);

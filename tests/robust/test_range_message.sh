@@ -49,6 +49,12 @@ expect 1 "stipple: far.nff:10: coordinate (-10000, -10000, 20000) of polygon 1 $
 expect 1 "stipple: big.obj:4: coordinate (40000, 0, 0) of polygon 1 beyond the core's range (+-32767 units); without --no-rescale the scene is scaled into it" -- \
     render big.obj --no-rescale -o old.pgm
 [ "$(cat old.pgm)" = "old picture" ] || fail "old.pgm changed"
+# exactly +-32767 units is within the range (render.h): a vertex there renders
+printf 'v\nfrom 0 0 0\nat 0 0 1\nup 0 1 0\nangle 45\nhither 1\nresolution 64 64\nl 0 5 -10\n%s\n' \
+    'f 1 1 1 1 0 0 0 1' > edge.nff
+printf 'p 3\n32767 0 32767\n-100 100 32767\n-100 -32767 32767\n' >> edge.nff
+expect 0 "" -- render edge.nff --no-rescale -o edge.pgm
+rm -f edge.nff edge.pgm
 # the ray tracer always rescales
 expect 2 "stipple render: --no-rescale is for the polygon renderer (the ray tracer takes the scene scaled into its range)
 Try 'stipple render --help'" -- render far.nff --no-rescale --raytrace -o x.pgm
