@@ -3,11 +3,8 @@
 # The README's pictures, from the real renderer, as a 128x64 OLED shows them
 # (lit pixels light on a dark panel): the Utah teapot, a torus and a
 # Sierpinski tetrahedron from 'stipple scene', their floors left out (a
-# mid-grey floor swallows a model at 128x64), each at 1:1 and 4x enlarged,
-# and docs/spin-128x64.gif, the teapot turning once (36 frames, an ordered
-# dither and one fixed exposure, so pixels do not shimmer from frame to
-# frame: 'stipple animate' when the command has it, else one render per
-# frame with the eye moved around the teapot).
+# mid-grey floor swallows a model at 128x64), each at 1:1 and 4x enlarged.
+# The animation (docs/spin-128x64.gif) comes from scripts/pictures.sh.
 # Needs the stipple command and ImageMagick's convert (Debian: imagemagick).
 # Usage: scripts/readme-pictures.sh [STIPPLE]   (default build/tools/stipple)
 set -eu
@@ -35,7 +32,7 @@ scene teapot 2 2 "3 9 3.5" "0.3 0 1.4" 26
 scene torus 2 1
 scene tetra 3 0
 
-panel() { # IN OUT SCALE: a dark bezel around the picture, enlarged SCALE times
+panel() { # IN OUT SCALE BORDER: enlarged SCALE, in a dark bezel BORDER pixels wide
     convert "$1" -scale "$3" -bordercolor '#303030' -border "$4" "$2"
 }
 for name in teapot torus tetra; do
@@ -45,24 +42,4 @@ for name in teapot torus tetra; do
     panel "$out/$name-128x64.png" "$out/$name-128x64-x4.png" 400% 8
 done
 
-# the teapot turning: 36 frames, 10 degrees each
-frames=36
-if "$stipple" help 2>&1 | grep -q '^ *animate'; then
-    "$stipple" animate "$work/teapot.nff" -s 128x64 --background 0 --frames $frames --orbit 360 \
-        -o "$work/spin.gif"
-    convert "$work/spin.gif" -coalesce -scale 200% -bordercolor '#303030' -border 4 \
-        -layers optimize "$here/docs/spin-128x64.gif"
-else
-    for i in $(seq 0 $((frames - 1))); do
-        awk -v i="$i" -v n="$frames" '
-            /^from / { a = 2 * 3.14159265358979 * i / n; dx = 3 - 0.3; dy = 9
-                       printf "from %.4f %.4f 3.5\n", 0.3 + dx * cos(a) - dy * sin(a), dx * sin(a) + dy * cos(a); next }
-            { print }' "$work/teapot.nff" >"$work/frame.nff"
-        "$stipple" render "$work/frame.nff" -s 128x64 --background 0 --exposure off --bright 1.3 -d blue-noise \
-            -o "$work/frame-$(printf %03d "$i").pbm"
-    done
-    # PBM's 0 is a lit (white) pixel: as on the OLED
-    convert -delay 8 -loop 0 "$work"/frame-*.pbm -scale 200% -bordercolor '#303030' -border 4 \
-        -layers optimize "$here/docs/spin-128x64.gif"
-fi
-echo "wrote docs/readme/{teapot,torus,tetra}-128x64{,-x4}.png and docs/spin-128x64.gif"
+echo "wrote docs/readme/{teapot,torus,tetra}-128x64{,-x4}.png"
