@@ -1,7 +1,9 @@
 # SPDX-License-Identifier: MIT
 # cmake --install: the libraries with an export set (imported as stipple::core
 # and stipple::posix by find_package(stipple); stipple::posix_png, which needs
-# libpng, in an export set of its own loaded only for the component "png"),
+# libpng, and stipple::posix_gif, which needs giflib, in export sets of their
+# own loaded only for the components "png" and "gif" or when the library is
+# found),
 # the public headers, the CMake package files and stipple.pc /
 # stipple-posix.pc / stipple-posix-png.pc for pkg-config.  Every library of
 # the installed API that is built is installed; the other archives in the
@@ -42,6 +44,14 @@ if(TARGET stipple_posix_png)
           PUBLIC_HEADER DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/stipple/posix
           INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   install(EXPORT stipplePngTargets NAMESPACE stipple:: FILE stipplePngTargets.cmake
+          DESTINATION ${STP_INSTALL_CMAKEDIR})
+endif()
+if(TARGET stipple_posix_gif)
+  install(TARGETS stipple_posix_gif EXPORT stippleGifTargets
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          PUBLIC_HEADER DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/stipple/posix
+          INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(EXPORT stippleGifTargets NAMESPACE stipple:: FILE stippleGifTargets.cmake
           DESTINATION ${STP_INSTALL_CMAKEDIR})
 endif()
 configure_package_config_file("${PROJECT_SOURCE_DIR}/cmake/stippleConfig.cmake.in"

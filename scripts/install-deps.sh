@@ -7,6 +7,7 @@ packages=(
     cmake make gcc g++ libc6-dev       # the build (g++: the C++ consumer tests)
     libcmocka-dev                      # the test framework
     libpng-dev help2man                # PNG in and out; the man page from --help
+    libgif-dev                         # animated GIF output (stipple animate; optional)
     netpbm                             # pamvalidate and friends, for the outputs
     imagemagick                        # the reference for the Bayer cells
     gcc-arm-none-eabi binutils-arm-none-eabi  # the Cortex-M0 check of the core

@@ -2,6 +2,7 @@
 /* Shared render options: see options.h. */
 #define _POSIX_C_SOURCE 200809L
 #include "options.h"
+#include "camera.h"
 
 #include <errno.h>
 #include <math.h>
@@ -482,4 +483,52 @@ const char *stp_tool_parse_scene_format(const char *s)
         if (!strcmp(s, formats[i]))
             return formats[i];
     return 0;
+}
+
+const struct option stp_tool_camera_options[4] = {{"eye", required_argument, 0, STP_TOOL_OPT_EYE},
+                                                  {"at", required_argument, 0, STP_TOOL_OPT_AT},
+                                                  {"up", required_argument, 0, STP_TOOL_OPT_UP},
+                                                  {0, 0, 0, 0}};
+
+int stp_tool_apply_camera_option(int code, const char *arg, int max_keys, stp_tool_options *opt,
+                                 char *err, size_t err_size)
+{
+    const char *name = code == STP_TOOL_OPT_EYE ? "--eye" : code == STP_TOOL_OPT_AT ? "--at" : "--up";
+    stp_scene_vec3 p;
+    int *count = code == STP_TOOL_OPT_EYE ? &opt->eye_count : &opt->at_count;
+    if (code != STP_TOOL_OPT_EYE && code != STP_TOOL_OPT_AT && code != STP_TOOL_OPT_UP)
+        return 0;
+    if (stp_tool_parse_point(arg, &p) != 0) {
+        snprintf(err, err_size, "bad %s '%s' (want X,Y,Z in the scene's units)", name, arg);
+        return -1;
+    }
+    if (code == STP_TOOL_OPT_UP) {
+        if (p.x == 0 && p.y == 0 && p.z == 0) {
+            snprintf(err, err_size, "bad --up '%s' (a direction: not 0,0,0)", arg);
+            return -1;
+        }
+        opt->up = p;
+        opt->up_given = 1;
+        return 1;
+    }
+    if (*count >= max_keys) {
+        if (max_keys == 1)
+            snprintf(err, err_size, "%s given twice (several are keys of 'stipple animate')", name);
+        else
+            snprintf(err, err_size, "more than %d %s keys", max_keys, name);
+        return -1;
+    }
+    (code == STP_TOOL_OPT_EYE ? opt->eye : opt->at)[(*count)++] = p;
+    return 1;
+}
+
+void stp_tool_camera_help(FILE *to, int animation)
+{
+    fprintf(to, "      --eye X,Y,Z          the eye's position, in the scene's units (default:\n"
+                "                           the scene's view, or one framing a mesh)%s\n"
+                "      --at X,Y,Z           the point looked at%s\n"
+                "      --up X,Y,Z           the direction that is up in the picture\n",
+            animation ? ";\n                           repeated: keys of a path spread evenly over the\n"
+                        "                           frames" : "",
+            animation ? " (repeated: keys, as --eye)" : "");
 }

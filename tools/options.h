@@ -43,6 +43,9 @@ enum {
     STP_TOOL_OPT_GREY,
     STP_TOOL_OPT_BACKGROUND,
     STP_TOOL_OPT_EDGE_AA,
+    STP_TOOL_OPT_EYE, /* the camera options: in the tables of render and */
+    STP_TOOL_OPT_AT,  /* animate only (stp_tool_camera_options) */
+    STP_TOOL_OPT_UP,
     STP_TOOL_OPT_COMMAND = 512
 };
 
@@ -88,6 +91,20 @@ int stp_tool_usage_error(const char *command, const char *fmt, ...)
 /* The usage error for getopt_long's return c ('?' unknown option, ':' a
  * missing value; the optstring must start with ':' and opterr be 0). */
 int stp_tool_getopt_error(const char *command, int c, char *const argv[]);
+
+/* The camera options --eye, --at, --up as getopt_long entries (zero
+ * entry last), for the commands that take them (render, animate). */
+extern const struct option stp_tool_camera_options[4];
+
+/* Apply camera option `code` (STP_TOOL_OPT_EYE, _AT, _UP) with argument
+ * arg: --eye and --at add a key (at most max_keys each: 1 for a still, up
+ * to STP_TOOL_CAMERA_KEYS for an animation's path), --up sets up.  Returns
+ * 1 when applied, 0 when code is not a camera option, -1 with a message. */
+int stp_tool_apply_camera_option(int code, const char *arg, int max_keys, stp_tool_options *opt,
+                                 char *err, size_t err_size);
+
+/* The camera options' help lines. */
+void stp_tool_camera_help(FILE *to, int animation);
 
 /* The shared options' help lines. */
 void stp_tool_options_help(FILE *to);

@@ -206,6 +206,41 @@ static double dist3(stp_scene_vec3 a, stp_scene_vec3 b)
     return sqrt(dx * dx + dy * dy + dz * dz);
 }
 
+int stp_tool_view_of(const stp_scene *scene, const stp_tool_options *opt, stp_tool_view *v)
+{
+    stp_scene_vec3 lo, hi, centre;
+    double radius;
+    if (stp_scene_bounds(scene, &lo, &hi) != 0)
+        return -1;
+    centre.x = (lo.x + hi.x) / 2;
+    centre.y = (lo.y + hi.y) / 2;
+    centre.z = (lo.z + hi.z) / 2;
+    radius = dist3(lo, hi) / 2;
+    if (radius <= 0)
+        radius = 1;
+    if (scene->has_view) {
+        v->from = scene->from;
+        v->at = scene->at;
+        v->up = scene->up;
+        v->fov_degrees = opt->fov > 0 ? opt->fov : scene->angle;
+        v->hither = scene->hither > 0 ? scene->hither : 1e-3;
+    } else {
+        /* a mesh with no view: look at its centre from the +x+y+z octant
+         * (y up, as OBJ files usually are), far enough for 45 degrees */
+        double fov = opt->fov > 0 ? opt->fov : 45.0;
+        double d = radius / sin(fov * 0.5 * 3.14159265358979323846 / 180.0) * 1.05;
+        v->from.x = centre.x + d * 0.48;
+        v->from.y = centre.y + d * 0.40;
+        v->from.z = centre.z + d * 0.78;
+        v->at = centre;
+        v->up.x = v->up.z = 0;
+        v->up.y = 1;
+        v->fov_degrees = fov;
+        v->hither = d * 1e-3;
+    }
+    return 0;
+}
+
 /* weight[j]: how many lights light j stands for (NULL: 1 each); factor[j]:
  * a factor on its power (NULL: 1). */
 static int setup_lights(const stp_scene *scene, const stp_tool_options *opt, const double *weight,
@@ -215,6 +250,7 @@ static int setup_lights(const stp_scene *scene, const stp_tool_options *opt, con
     stp_scene_vec3 lo, hi, centre;
     double radius;
     stp_view view;
+    stp_tool_view dv;
     stp_lighting lighting;
     stp_scene_vec3 light_pos[STP_MAX_LIGHTS];
     double light_total;
@@ -231,29 +267,13 @@ static int setup_lights(const stp_scene *scene, const stp_tool_options *opt, con
     if (radius <= 0)
         radius = 1;
 
+    stp_tool_view_of(scene, opt, &dv);
     memset(&view, 0, sizeof view);
-    if (scene->has_view) {
-        view.from = stp_tool_vec3(scene->from);
-        view.at = stp_tool_vec3(scene->at);
-        view.up = stp_tool_vec3(scene->up);
-        view.fov_degrees = stp_tool_fix(opt->fov > 0 ? opt->fov : scene->angle);
-        view.hither = stp_tool_fix(scene->hither > 0 ? scene->hither : 1e-3);
-    } else {
-        /* a mesh with no view: look at its centre from the +x+y+z octant
-         * (y up, as OBJ files usually are), far enough for 45 degrees */
-        double fov = opt->fov > 0 ? opt->fov : 45.0;
-        double d = radius / sin(fov * 0.5 * 3.14159265358979323846 / 180.0) * 1.05;
-        stp_scene_vec3 from;
-        from.x = centre.x + d * 0.48;
-        from.y = centre.y + d * 0.40;
-        from.z = centre.z + d * 0.78;
-        view.from = stp_tool_vec3(from);
-        view.at = stp_tool_vec3(centre);
-        view.up.x = view.up.z = 0;
-        view.up.y = STP_FIX_ONE;
-        view.fov_degrees = stp_tool_fix(fov);
-        view.hither = stp_tool_fix(d * 1e-3);
-    }
+    view.from = stp_tool_vec3(dv.from);
+    view.at = stp_tool_vec3(dv.at);
+    view.up = stp_tool_vec3(dv.up);
+    view.fov_degrees = stp_tool_fix(dv.fov_degrees);
+    view.hither = stp_tool_fix(dv.hither);
     if (view.hither <= 0)
         view.hither = 1;
     view.projection = opt->perspective ? STP_PERSPECTIVE : STP_PARALLEL;

@@ -23,6 +23,9 @@ typedef enum stp_tool_dither {
     STP_TOOL_DITHER_CLUSTERED   /* clustered dots: clustered_n, clustered_angle */
 } stp_tool_dither;
 
+/* Most --eye or --at keys of an animation's camera path. */
+#define STP_TOOL_CAMERA_KEYS 16
+
 typedef struct stp_tool_options {
     int width, height;       /* device pixels (default 128 x 64) */
     int levels;              /* INTENSITY levels (16) */
@@ -78,6 +81,12 @@ typedef struct stp_tool_options {
     double crease_angle;     /* degrees between normals that make a crease (40) */
     double outline_level;    /* the lines' shade 0..1 (0, black); < 0: black,
                                 or white on a dark background */
+    /* camera (camera.h): --eye/--at keys (several for an animation's
+     * path), --up; a camera given replaces the scene's view */
+    int eye_count, at_count, up_given;
+    stp_scene_vec3 eye[STP_TOOL_CAMERA_KEYS], at[STP_TOOL_CAMERA_KEYS], up;
+    int hold, hold_given;    /* animation: grey steps a pixel's grey must move
+                                past its threshold to flip (animate.h) (0) */
     int keep_units;          /* 1: the scene's coordinates go to the core as
                                 they are, not moved and scaled into its range
                                 (--no-rescale; polygon renderer only): what a
@@ -166,6 +175,19 @@ void stp_tool_scene_message(char *out, size_t size, const char *name, const char
  * with a message (an empty scene). */
 int stp_tool_setup(const stp_scene *scene, const stp_tool_options *opt, stp_view *view,
                    stp_lighting *lighting, char *err, size_t err_size);
+
+/* A view in the scene's units (doubles): eye, look-at point, up, the
+ * field of view in degrees and the hither distance. */
+typedef struct stp_tool_view {
+    stp_scene_vec3 from, at, up;
+    double fov_degrees, hither;
+} stp_tool_view;
+
+/* The view stp_tool_setup starts from, in the scene's units: the scene's
+ * own (its fov unless opt->fov > 0), else one that frames its bounds from
+ * the +x+y+z octant with y up.  Returns 0, or -1 for a scene with nothing
+ * in it. */
+int stp_tool_view_of(const stp_scene *scene, const stp_tool_options *opt, stp_tool_view *v);
 
 /* The seed's material parameters for an NFF material (README). */
 void stp_tool_material(const stp_scene_material *m, int colour, stp_material *out);

@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "animate_command.h"
+#include "camera.h"
 #include "compile_scene.h"
 #include "options.h"
 #include "outlines.h"
@@ -35,6 +37,8 @@ static void usage_main(FILE *to)
             "commands:\n"
             "  render SCENE -o OUT   render an NFF, OBJ, OFF or PLY scene to PBM, PGM, PPM,\n"
             "                        PNG or text\n"
+            "  animate SCENE -o OUT.gif  a scene from a moving camera: an animated GIF or\n"
+            "                        numbered PBM/PNG frames (see 'stipple animate --help')\n"
             "  dither IMAGE -o OUT   halftone a PNG, PGM or PPM image to PBM or 1-bit PNG\n"
             "  compile SCENE -o OUT.c  write a scene as C source and a minimal configuration\n"
             "                        header for firmware (see 'stipple compile --help')\n"
@@ -93,6 +97,7 @@ static void usage_render(FILE *to)
             "                           a firmware would), not scaled into its range: a point\n"
             "                           beyond +-32767 units from the eye is refused\n"
             "  -h, --help               this help\n");
+    stp_tool_camera_help(to, 0);
     stp_tool_options_help(to);
 }
 
@@ -131,6 +136,22 @@ static void usage_dither(FILE *to)
             "      --planes PREFIX   with --palette bwr: also PREFIX.bw and PREFIX.red, the\n"
             "                        SSD1680's two RAM planes (docs/palettes.md)\n"
             "  -h, --help            this help\n");
+}
+
+/* stp_tool_render, from the camera of --eye, --at and --up when given. */
+static int render_with_camera(const stp_scene *scene, const stp_tool_options *opt, stp_port *port,
+                              stp_tool_stats *stats, char *err, size_t err_size)
+{
+    stp_tool_camera_scene moved;
+    stp_tool_options still;
+    int rc;
+    if (!stp_tool_camera_wanted(opt))
+        return stp_tool_render(scene, opt, port, stats, err, err_size);
+    if (stp_tool_camera_apply(scene, opt, NULL, 0, &moved, &still, err, err_size) != 0)
+        return -1;
+    rc = stp_tool_render(&moved.scene, &still, port, stats, err, err_size);
+    stp_tool_camera_free(&moved);
+    return rc;
 }
 
 /* Print "stipple: <message>" on stderr; returns the exit status 1. */
@@ -265,7 +286,7 @@ static int render_to_device(const char *scene_path, const char *scene_format, co
     port = stp_device_port(dev);
     opt->width = (int)port->width;
     opt->height = (int)port->height;
-    rc = stp_tool_render(&scene, opt,
+    rc = render_with_camera(&scene, opt,
                          stp_progress_wrap(&progress, port, opt->raytrace ? "ray tracing" : "rendering"),
                          &stats, err, sizeof err);
     stp_progress_finish(&progress);
@@ -366,7 +387,7 @@ static int render_palette(const char *scene_path, const char *scene_format, cons
         stp_scene_free(&scene);
         return fail("out of memory for the frame");
     }
-    rc = stp_tool_render(&scene, opt, stp_posix_frame_port(&frame), 0, err, sizeof err);
+    rc = render_with_camera(&scene, opt, stp_posix_frame_port(&frame), 0, err, sizeof err);
     stp_scene_free(&scene);
     if (rc != 0) {
         stp_posix_frame_free(&frame);
@@ -391,6 +412,8 @@ static int cmd_render(int argc, char **argv)
         {"crease-angle", required_argument, 0, OPT_CREASE_ANGLE},
         {"outline-level", required_argument, 0, OPT_OUTLINE_LEVEL},
         {"no-rescale", no_argument, 0, OPT_NO_RESCALE},
+        {"eye", required_argument, 0, STP_TOOL_OPT_EYE}, {"at", required_argument, 0, STP_TOOL_OPT_AT},
+        {"up", required_argument, 0, STP_TOOL_OPT_UP},
         {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     struct option longs[64];
     stp_tool_options opt;
@@ -415,6 +438,8 @@ static int cmd_render(int argc, char **argv)
     optind = 1;
     while ((c = getopt_long(argc, argv, ":" STP_TOOL_SHORT_OPTIONS "o:b:h", longs, 0)) != -1) {
         int applied = stp_tool_apply_option(c, optarg, &opt, &sopt, err, sizeof err);
+        if (applied == 0)
+            applied = stp_tool_apply_camera_option(c, optarg, 1, &opt, err, sizeof err);
         if (c > 0 && c < STP_TOOL_OPT_COMMAND)
             given.code[c] = 1;
         if (applied < 0)
@@ -555,7 +580,7 @@ static int cmd_render(int argc, char **argv)
         stp_progress progress;
         stp_port *port = stp_progress_wrap(&progress, stp_posix_frame_port(&frame),
                                            opt.raytrace ? "ray tracing" : "rendering");
-        int rc = stp_tool_render(&scene, &opt, port, &stats, err, sizeof err);
+        int rc = render_with_camera(&scene, &opt, port, &stats, err, sizeof err);
         stp_progress_finish(&progress);
         if (rc != 0) {
             char message[1024];
@@ -861,6 +886,8 @@ static int cmd_help(int argc, char **argv)
         usage_render(stdout);
     else if (!strcmp(argv[2], "dither"))
         usage_dither(stdout);
+    else if (!strcmp(argv[2], "animate"))
+        stp_tool_animate_usage(stdout);
     else if (!strcmp(argv[2], "bench"))
         usage_bench(stdout);
     else if (!strcmp(argv[2], "compile"))
@@ -871,7 +898,7 @@ static int cmd_help(int argc, char **argv)
     } else if (!strcmp(argv[2], "help") || !strcmp(argv[2], "--help") || !strcmp(argv[2], "-h"))
         usage_help(stdout);
     else
-        return stp_tool_usage_error(0, "no command '%s' (render, dither, scene, compile, bench, help)",
+        return stp_tool_usage_error(0, "no command '%s' (render, animate, dither, scene, compile, bench, help)",
                                     argv[2]);
     return 0;
 }
@@ -879,7 +906,7 @@ static int cmd_help(int argc, char **argv)
 int main(int argc, char **argv)
 {
     if (argc < 2)
-        return stp_tool_usage_error(0, "no command given (render, dither, scene, compile, bench, help)");
+        return stp_tool_usage_error(0, "no command given (render, animate, dither, scene, compile, bench, help)");
     if (!strcmp(argv[1], "--version") || !strcmp(argv[1], "version")) {
         printf("stipple %s\n", stp_version());
         return 0;
@@ -888,6 +915,8 @@ int main(int argc, char **argv)
         return cmd_render(argc - 1, argv + 1);
     if (!strcmp(argv[1], "dither"))
         return cmd_dither(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "animate"))
+        return stp_tool_animate_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "bench"))
         return cmd_bench(argc - 1, argv + 1);
     if (!strcmp(argv[1], "scene"))

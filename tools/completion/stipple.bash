@@ -6,7 +6,7 @@
 # bash-completion package.  tests/cli/test_completion.sh checks that the
 # option lists equal what each subcommand's --help prints.
 
-_stipple_commands="render dither scene compile bench help"
+_stipple_commands="render animate dither scene compile bench help"
 
 # the options every scene-rendering subcommand shares (tools/options.c)
 _stipple_shared="--size --levels --dither --spacing --gamma --gamma-k --hidden --backface
@@ -16,7 +16,8 @@ _stipple_shared="--size --levels --dither --spacing --gamma --gamma-k --hidden -
 
 _stipple_options() {
     case $1 in
-    render) echo "--output --scene-format --device --format --band --stats --palette --planes --outlines --crease-angle --outline-level --no-rescale --help $_stipple_shared" ;;
+    render) echo "--output --scene-format --device --format --band --stats --palette --planes --outlines --crease-angle --outline-level --no-rescale --eye --at --up --help $_stipple_shared" ;;
+    animate) echo "--output --frames --orbit --elevation --hold --fps --stats --scene-format --eye --at --up --help $_stipple_shared" ;;
     compile) echo "--output --header --scene-format --static --spans --help $_stipple_shared" ;;
     dither) echo "--output --plain --dither --spacing --gamma --gamma-k --linear --palette --planes --help" ;;
     scene) echo "--size --output --list --help" ;;
@@ -68,6 +69,7 @@ _stipple() {
         compile) _stipple_files '*.c' ;;
         scene) _stipple_files '*.nff' ;;
         dither) _stipple_files '*.@(pbm|png|ppm|pgm)' ;;
+        animate) _stipple_files '*.gif' ;;
         *) _stipple_files '*.@(pbm|pgm|ppm|png|txt)' ;;
         esac
         return ;;
@@ -75,7 +77,8 @@ _stipple() {
     --scenes) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     -s | --size | -l | --levels | -g | --gamma | --gamma-k | --light | --bright | --ambient | \
         --attenuation | --fov | --slices | --stacks | --shadows | --depth | --min-weight | \
-        -b | --band | --budget | --crease-angle)
+        -b | --band | --budget | --crease-angle | -n | --frames | --orbit | --elevation | --hold | \
+        --fps | --eye | --at | --up)
         return ;; # a number: nothing to offer
     esac
     if [[ $cur == -* ]]; then
@@ -83,7 +86,7 @@ _stipple() {
         return
     fi
     case $cmd in
-    render | compile) _stipple_files '*.@(nff|obj|off|ply|NFF|OBJ|OFF|PLY)' ;;
+    render | compile | animate) _stipple_files '*.@(nff|obj|off|ply|NFF|OBJ|OFF|PLY)' ;;
     dither) _stipple_files '*.@(png|pgm|ppm|pbm|PNG)' ;;
     bench) _stipple_files '*.nff' ;;
     scene) COMPREPLY=($(compgen -W "$(stipple scene --list 2>/dev/null)" -- "$cur")) ;;
