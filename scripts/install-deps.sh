@@ -7,6 +7,7 @@ packages=(
     cmake make gcc g++ libc6-dev       # the build (g++: the C++ consumer tests)
     libcmocka-dev                      # the test framework
     libpng-dev help2man                # PNG in and out; the man page from --help
+    man-db groff-base bsdextrautils    # the man page's checks (man, groff, col)
     libgif-dev                         # animated GIF output (stipple animate; optional)
     netpbm                             # pamvalidate and friends, for the outputs
     imagemagick                        # the reference for the Bayer cells
