@@ -3,7 +3,7 @@
 # The stipple command runs on a plain Debian 12: every shared library it
 # needs (ELF NEEDED) is one that Debian 12's main archive has at the version
 # the command was linked against — libc, libm, libpng16, libz, libusb-1.0,
-# libgif —
+# libgif, libjpeg (libjpeg62-turbo) —
 # and never libgpiod (libgpiod 2 is only in bookworm-backports; the GPIO
 # control lines load it when a device spec names a line).  When the GPIO
 # lines are built, a spec naming a line on a chip that does not exist must
@@ -17,7 +17,7 @@ needed=$(readelf -d "$stipple" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p')
 [ -n "$needed" ] || fail "readelf found no NEEDED entries in $stipple"
 for lib in $needed; do
     case $lib in
-    libc.so.6 | libm.so.6 | libpng16.so.16 | libz.so.1 | libusb-1.0.so.0 | libgif.so.7) echo "ok: needs $lib" ;;
+    libc.so.6 | libm.so.6 | libpng16.so.16 | libz.so.1 | libusb-1.0.so.0 | libgif.so.7 | libjpeg.so.62) echo "ok: needs $lib" ;;
     libasan.so.* | libubsan.so.* | libgcc_s.so.1) echo "ok: needs $lib (compiler runtime)" ;;
     *) fail "the stipple command needs $lib, which plain Debian 12 may not have" ;;
     esac
