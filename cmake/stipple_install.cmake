@@ -1,7 +1,14 @@
 # SPDX-License-Identifier: MIT
 # cmake --install: the libraries with an export set (imported as stipple::core
-# and stipple::posix by find_package(stipple)), the public headers, the CMake
-# package files and stipple.pc / stipple-posix.pc for pkg-config.  Paths are
+# and stipple::posix by find_package(stipple); stipple::posix_png, which needs
+# libpng, and stipple::posix_gif, which needs giflib, in export sets of their
+# own loaded only for the components "png" and "gif" or when the library is
+# found),
+# the public headers, the CMake package files and stipple.pc /
+# stipple-posix.pc / stipple-posix-png.pc for pkg-config.  Every library of
+# the installed API that is built is installed; the other archives in the
+# build tree (the command's own parts: scene readers, Linux device ports) are
+# pieces of the stipple command, not a library interface.  Paths are
 # GNUInstallDirs'; other install rules (the stipple command below, man pages,
 # completions) use the same variables, so there is one layout.
 include(CMakePackageConfigHelpers)
@@ -31,6 +38,22 @@ endif()
 
 install(EXPORT stippleTargets NAMESPACE stipple:: FILE stippleTargets.cmake
         DESTINATION ${STP_INSTALL_CMAKEDIR})
+if(TARGET stipple_posix_png)
+  install(TARGETS stipple_posix_png EXPORT stipplePngTargets
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          PUBLIC_HEADER DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/stipple/posix
+          INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(EXPORT stipplePngTargets NAMESPACE stipple:: FILE stipplePngTargets.cmake
+          DESTINATION ${STP_INSTALL_CMAKEDIR})
+endif()
+if(TARGET stipple_posix_gif)
+  install(TARGETS stipple_posix_gif EXPORT stippleGifTargets
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          PUBLIC_HEADER DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/stipple/posix
+          INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(EXPORT stippleGifTargets NAMESPACE stipple:: FILE stippleGifTargets.cmake
+          DESTINATION ${STP_INSTALL_CMAKEDIR})
+endif()
 configure_package_config_file("${PROJECT_SOURCE_DIR}/cmake/stippleConfig.cmake.in"
                               "${PROJECT_BINARY_DIR}/stippleConfig.cmake"
                               INSTALL_DESTINATION ${STP_INSTALL_CMAKEDIR})
@@ -55,4 +78,8 @@ install(FILES "${PROJECT_BINARY_DIR}/stipple.pc" DESTINATION ${STP_PC_DIR})
 if(TARGET stipple_posix)
   configure_file("${PROJECT_SOURCE_DIR}/cmake/stipple-posix.pc.in" "${PROJECT_BINARY_DIR}/stipple-posix.pc" @ONLY)
   install(FILES "${PROJECT_BINARY_DIR}/stipple-posix.pc" DESTINATION ${STP_PC_DIR})
+endif()
+if(TARGET stipple_posix_png)
+  configure_file("${PROJECT_SOURCE_DIR}/cmake/stipple-posix-png.pc.in" "${PROJECT_BINARY_DIR}/stipple-posix-png.pc" @ONLY)
+  install(FILES "${PROJECT_BINARY_DIR}/stipple-posix-png.pc" DESTINATION ${STP_PC_DIR})
 endif()

@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 # The first picture on a fresh Debian 12 machine, from a bare clone with
 # nothing beside it: install only what building and rendering need (cmake,
-# make, gcc, libc6-dev, and libpng-dev for PNG), build the stipple command, write the Utah teapot
+# make, gcc, libc6-dev, libpng-dev for PNG and libgif-dev for animated GIFs),
+# build the stipple command, write the Utah teapot
 # with 'stipple scene', render it to out/teapot.pbm (128x64) and
 # out/teapot-512.pbm, and print it on the terminal as text.
 # Usage: scripts/demo.sh [SCENE.nff|.obj|.off]   (another scene instead)
@@ -16,7 +17,7 @@ as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
 
 if [ "${STP_DEMO_SKIP_INSTALL:-0}" != 1 ]; then
     missing=()
-    for p in cmake make gcc libc6-dev libpng-dev; do
+    for p in cmake make gcc libc6-dev libpng-dev libgif-dev; do
         dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
     done
     if [ "${#missing[@]}" -gt 0 ]; then

@@ -73,7 +73,7 @@ clipping and projection | against the hither plane and the window, then perspect
 back-face removal | faces with N.E <= 0 dropped | enter_polygon_df | test_backface_removal_keeps_faces_towards_viewer test_backface_removal_single_polygon
 painter's algorithm | polygons drawn far to near | sort_entries | test_hidden_surfaces_nearer_square_wins
 Z buffer | the nearest surface per pixel | put_span_z | test_zbuffer_interpenetrating_polygons
-direct drawing (issue 15) | no display file: a mesh transformed, projected and shaded once per frame (32-bit), back faces by winding, painted in mesh order straight into bands with the same fill rule | stp_direct_frame_project project_point stp_direct_draw_band | tests/direct/test_direct.c:test_torus tests/direct/test_direct.c:test_bands
+direct drawing | no display file: a mesh transformed, projected and shaded once per frame (32-bit), back faces by winding, painted in mesh order straight into bands with the same fill rule | stp_direct_frame_project project_point stp_direct_draw_band | tests/direct/test_direct.c:test_torus tests/direct/test_direct.c:test_bands
 TABLE
 }
 

@@ -7,6 +7,7 @@ packages=(
     cmake make gcc g++ libc6-dev       # the build (g++: the C++ consumer tests)
     libcmocka-dev                      # the test framework
     libpng-dev help2man                # PNG in and out; the man page from --help
+    man-db groff-base bsdextrautils    # the man page's checks (man, groff, col)
     libgif-dev                         # animated GIF output (stipple animate; optional)
     libjpeg62-turbo-dev                # JPEG input (stipple dither; optional)
     netpbm                             # pamvalidate and friends, for the outputs
@@ -28,19 +29,30 @@ missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-# libgpiod v2 is in bookworm-backports on Debian 12: add that suite to the
-# machine's existing Debian source entry (no new URL).
-sources=/etc/apt/sources.list.d/debian.sources
-if [ -f "$sources" ] && grep -q '^Suites:.*\bbookworm\b' "$sources" && ! grep -q 'bookworm-backports' "$sources"; then
-    as_root sed -i '0,/^Suites:.*\bbookworm\b.*/s//& bookworm-backports/' "$sources"
-fi
 # The package lists are refreshed every time: the tests fetch packages
 # (python3-skimage for its photo, Debian's kernel) with apt-get download too.
 as_root apt-get update -q >/dev/null
 if [ "${#missing[@]}" -gt 0 ]; then
     as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
-if apt-cache policy libgpiod-dev 2>/dev/null | grep -q 'bookworm-backports' &&
-    ! dpkg-query -W -f='${Version}' libgpiod-dev 2>/dev/null | grep -q '^2'; then
-    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends -t bookworm-backports libgpiod-dev
+# libgpiod 2 (the GPIO control lines of SPI panels) only when the machine's
+# own apt sources offer it (Debian 13, or Debian 12 with bookworm-backports
+# already enabled by its owner): this script never edits apt sources.
+# Without it the GPIO lines are not built and test_linux_fb says it skipped
+# their checks; everything else builds and runs.
+gpiod_candidate() { apt-cache policy "$1" 2>/dev/null | sed -n 's/^ *Candidate: *//p'; }
+gpiod_backports() { apt-cache policy libgpiod-dev 2>/dev/null | grep -q -- '-backports'; }
+if ! dpkg-query -W -f='${Version}' libgpiod-dev 2>/dev/null | grep -q '^2'; then
+    case $(gpiod_candidate libgpiod-dev) in
+    2*) as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends libgpiod-dev ;;
+    *)
+        if gpiod_backports; then
+            as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends \
+                -t "$(. /etc/os-release && echo "$VERSION_CODENAME")-backports" libgpiod-dev
+        else
+            echo "install-deps.sh: libgpiod 2 is not in this machine's apt sources: the GPIO" \
+                "control lines are left out (their tests say so)" >&2
+        fi
+        ;;
+    esac
 fi

@@ -15,6 +15,10 @@
 
 #include <gpiod.h>
 
+#ifdef STP_GPIO_LOAD
+#include "stp_gpiod_load.h"
+#endif
+
 enum { L_RESET, L_DC, L_BUSY, L_ENABLE, L_BACKLIGHT, L_VCOM, L_COUNT };
 
 static const char *const line_role[L_COUNT] = {"reset", "dc", "busy", "enable", "backlight",
@@ -231,6 +235,10 @@ stp_gpio_panel *stp_gpio_panel_open(const stp_gpio_panel_config *cfg, char *err,
         stp_error_set(err, errlen, "no GPIO configuration");
         return NULL;
     }
+#ifdef STP_GPIO_LOAD
+    if (stp_gpiod_load(err, errlen) != 0)
+        return NULL;
+#endif
     specs[L_RESET] = cfg->reset;
     specs[L_DC] = cfg->dc;
     specs[L_BUSY] = cfg->busy;

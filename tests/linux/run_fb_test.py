@@ -736,6 +736,9 @@ def main():
             ok = False
         else:
             log("gpio-sim not available, GPIO checks skipped: %s" % why)
+    elif not args.gpiotest:
+        log("GPIO checks skipped: built without libgpiod 2 (libgpiod-dev >= 2 and libgpiod.a "
+            "not found; Debian 12: bookworm-backports)")
     runs = []
     if args.only in (None, "std"):
         wanted = ["bochs", "vfb"] + (["configfs", "gpio_sim"] if gpio else [])

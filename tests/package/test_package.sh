@@ -11,7 +11,14 @@
 #                   the libraries are configured (no cmocka, no tools), its
 #                   own files are compiled without -Werror, and a
 #                   configuration given to stipple reaches them
-#   (pkg-config also builds a library with STP_CONFIG_DEFINITIONS and
+#   without-png     the consumer's build line of docs/packaging.md (no tools,
+#                   tests or bench) as on a machine without libpng-dev
+#                   (CMAKE_DISABLE_FIND_PACKAGE_PNG): every archive it builds
+#                   is installed, and a project linking stipple::core alone
+#                   configures and builds through find_package and through
+#                   add_subdirectory
+#   (find_package also asks for the component png and writes a PNG;
+#   pkg-config also builds a library with STP_CONFIG_DEFINITIONS and
 #   STP_CONFIG_HEADER and compiles a consumer with nothing but its flags)
 # Each consumer renders a square and checks pixels (exit 1 when wrong).
 # Usage: test_package.sh MODE BUILD_DIR SOURCE_DIR CC CXX
@@ -28,21 +35,22 @@ fail() { echo "FAIL: $*"; exit 1; }
 install_tree() {
     cmake --install "$build" --prefix "$work/prefix" >"$work/install.log" 2>&1 ||
         { cat "$work/install.log"; fail "cmake --install"; }
-    for f in include/stipple/stipple.h lib/libstipple.a lib/cmake/stipple/stippleConfig.cmake \
+    for f in include/stipple/stipple.h lib/libstipple.a lib/cmake/stipple/stippleConfig.cmake "$@" \
              lib/cmake/stipple/stippleConfigVersion.cmake lib/pkgconfig/stipple.pc; do
         [ -f "$work/prefix/$f" ] || fail "the install has no $f"
     done
 }
 
-run() { # NAME PROGRAM
-    local out
-    out=$("$2" 2>&1) || { echo "$out"; fail "$1: the consumer's picture is wrong"; }
-    echo "ok: $1: $out"
+run() { # NAME PROGRAM [ARGUMENTS]
+    local out name=$1
+    shift
+    out=$("$@" 2>&1) || { echo "$out"; fail "$name: the consumer's picture is wrong"; }
+    echo "ok: $name: $out"
 }
 
 case $mode in
 find_package)
-    install_tree
+    install_tree lib/libstipple_posix_png.a lib/cmake/stipple/stipplePngTargets.cmake
     cmake -S "$src/tests/package/consumer" -B "$work/consumer" -DCMAKE_C_COMPILER="$cc" \
           -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_PREFIX_PATH="$work/prefix" >"$work/log" 2>&1 ||
         { cat "$work/log"; fail "configuring the find_package consumer"; }
@@ -57,11 +65,46 @@ find_package)
         fail "find_package(stipple 99.0) was satisfied"
     fi
     echo "ok: find_package(stipple 99.0) refused"
+    # the PNG component: stipple::posix_png, with libpng found for the consumer
+    cmake -S "$src/tests/package/png" -B "$work/png" -DCMAKE_C_COMPILER="$cc" \
+          -DCMAKE_PREFIX_PATH="$work/prefix" >"$work/log" 2>&1 ||
+        { cat "$work/log"; fail "configuring the COMPONENTS png consumer"; }
+    cmake --build "$work/png" >"$work/log" 2>&1 || { cat "$work/log"; fail "building the COMPONENTS png consumer"; }
+    "$work/png/consumer_png" "$work/out.png" || fail "the PNG consumer"
+    ;;
+without-png)
+    # the consumer's build line, as a top-level build of the libraries alone
+    cmake -S "$src" -B "$work/lib" -DCMAKE_C_COMPILER="$cc" -DCMAKE_BUILD_TYPE=Release \
+          -DSTP_BUILD_TOOLS=OFF -DSTP_BUILD_TESTS=OFF -DSTP_WITH_LINUX=OFF \
+          -DCMAKE_DISABLE_FIND_PACKAGE_PNG=ON >"$work/log" 2>&1 ||
+        { cat "$work/log"; fail "configuring the libraries with -DSTP_BUILD_TOOLS=OFF and no libpng"; }
+    cmake --build "$work/lib" >"$work/log" 2>&1 || { cat "$work/log"; fail "building the libraries"; }
+    cmake --install "$work/lib" --prefix "$work/prefix" >"$work/log" 2>&1 || { cat "$work/log"; fail "installing"; }
+    built=$(find "$work/lib" -name '*.a' -printf '%f\n' | sort | tr '\n' ' ')
+    installed=$(find "$work/prefix" -name '*.a' -printf '%f\n' | sort | tr '\n' ' ')
+    [ "$built" = "$installed" ] || fail "built archives ($built) are not the installed ones ($installed)"
+    echo "ok: built and installed: $built"
+    execs=$(find "$work/lib" -type f -perm -u+x ! -path '*/CMakeFiles/*' -printf '%f ')
+    [ -z "$execs" ] || fail "the libraries' build built programs: $execs"
+    [ -e "$work/prefix/lib/cmake/stipple/stipplePngTargets.cmake" ] && fail "a PNG export without libpng"
+    for how in find_package subdirectory; do
+        args=(-DCMAKE_PREFIX_PATH="$work/prefix")
+        [ $how = subdirectory ] && args=(-DSTIPPLE_SOURCE_DIR="$src")
+        cmake -S "$src/tests/package/core_only" -B "$work/core_$how" -DCMAKE_C_COMPILER="$cc" \
+              -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_DISABLE_FIND_PACKAGE_PNG=ON "${args[@]}" >"$work/log" 2>&1 ||
+            { cat "$work/log"; fail "configuring a stipple::core consumer ($how) without libpng"; }
+        cmake --build "$work/core_$how" >"$work/log" 2>&1 || { cat "$work/log"; fail "building it ($how)"; }
+        run "stipple::core without libpng, $how" "$work/core_$how/consumer_cxx"
+    done
     ;;
 pkg-config)
-    install_tree
+    install_tree lib/libstipple_posix_png.a lib/pkgconfig/stipple-posix-png.pc
     export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig"
-    pkg-config --exists stipple stipple-posix || fail "pkg-config does not find stipple"
+    pkg-config --exists stipple stipple-posix stipple-posix-png || fail "pkg-config does not find stipple"
+    # shellcheck disable=SC2046,SC2086 # the flags are words
+    "$cc" -std=c99 -Wall -Wextra -Werror $CFLAGS $LDFLAGS -o "$work/consumer_png" "$src/tests/package/png/consumer_png.c" \
+        $(pkg-config --cflags --libs stipple-posix-png) || fail "compiling the PNG consumer with pkg-config"
+    run "pkg-config PNG" "$work/consumer_png" "$work/out.png"
     # shellcheck disable=SC2046,SC2086 # the flags are words
     "$cc" -std=c99 -Wall -Wextra -Werror $CFLAGS $LDFLAGS -o "$work/consumer_c" "$src/tests/package/consumer/consumer.c" \
         $(pkg-config --cflags --libs stipple-posix) || fail "compiling the C consumer with pkg-config"

@@ -4,7 +4,10 @@
 # the line "<!-- readme-example: program -->"), compile it as a user would
 # (-std=c99, warnings as errors) against the built library, run it, and
 # compare what it prints with the README's ```text block after
-# "<!-- readme-example: output -->" (trailing blanks ignored).
+# "<!-- readme-example: output -->" (trailing blanks ignored).  Then the
+# firmware example (the ```c block after "<!-- readme-example: firmware -->")
+# the same way, run by firmware_harness.c against a model of the SSD1306's
+# pages.
 # Usage: test_readme_example.sh SOURCE_DIR CC LIBRARY [DEFINITIONS] [INCLUDE_DIR]
 #   DEFINITIONS: the library's configuration, NAME=VALUE separated by ':'
 # CFLAGS and LDFLAGS from the environment are passed on (sanitizer builds).
@@ -41,3 +44,12 @@ if ! diff -u "$work/expected.trimmed" "$work/actual.trimmed"; then
     fail "the README's example prints something else than the README shows"
 fi
 echo "ok: the README's example compiles, runs and prints the README's picture ($(wc -l <"$work/actual.txt") lines)"
+
+block firmware c >"$work/readme_firmware.c"
+[ -s "$work/readme_firmware.c" ] || fail "README.md has no C block after <!-- readme-example: firmware -->"
+# shellcheck disable=SC2086 # CFLAGS and LDFLAGS are lists of words
+"$cc" -std=c99 -Wall -Wextra -Wpedantic -Werror ${CFLAGS:-} "${flags[@]}" -I "$src/include" -I "$work" \
+    "$src/tests/readme/firmware_harness.c" "$lib" -lm ${LDFLAGS:-} -o "$work/firmware" 2>"$work/cc.log" ||
+    { cat "$work/cc.log"; fail "the README's firmware example does not compile"; }
+"$work/firmware" >"$work/firmware.txt" || { cat "$work/firmware.txt"; fail "the README's firmware example draws a wrong picture"; }
+echo "ok: the README's firmware example compiles and spins: $(tail -n 1 "$work/firmware.txt")"

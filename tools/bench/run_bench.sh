@@ -143,39 +143,12 @@ if [ -n "$firmware" ]; then
 fi
 
 if command -v gnuplot > /dev/null; then
-    term=png
-    gnuplot -e "set terminal" 2>&1 | grep -q pngcairo && term=pngcairo
-    gnuplot <<EOF || { echo "run_bench.sh: gnuplot failed; no plot" >&2; status=1; }
-set terminal $term size 1200,520 font ",10"
-set output "$out_dir/bench.png"
-set datafile separator ","
-set logscale xy
-set grid
-set key bottom left box opaque
-set termoption noenhanced
-set multiplot layout 1,2 title "stipple: error against run time per numeric configuration"
-set title "shading"
-set xlabel "ns per shade (stp_shade_point)"
-set ylabel "absolute shade error vs double reference"
-set yrange [1e-7:1]
-set xrange [50:5000]
-set samples 200
-plot "$csv" using "ns_per_shade":"scene_max" with points pt 7 ps 1.2 title "scene polygons, max", \
-     "$csv" using "ns_per_shade":"scene_mean" with points pt 5 ps 1.2 title "scene polygons, mean", \
-     "$csv" using "ns_per_shade":"rand_mean" with points pt 9 ps 1.2 title "random geometry, mean", \
-     "$csv" using "ns_per_shade":"scene_max":"config" with labels offset 0,1 font ",8" notitle, \
-     1.0/30 with lines dt 2 lc rgb "gray40" title "half an INTENSITY step (16 levels)"
-set title "pictures"
-set xlabel "us per torus frame at 400x240 (1000 triangles)"
-set ylabel "share of pixels / blurred mean abs difference"
-set yrange [1e-6:1]
-set xrange [100:20000]
-plot "$csv" using "us_frame_400x240":(column("img_diff_pct")/100) with points pt 7 ps 1.2 title "differing pixels", \
-     "$csv" using "us_frame_400x240":"img_blur_mad" with points pt 5 ps 1.2 title "3x3-blurred mean abs difference", \
-     "$csv" using "us_frame_400x240":(column("img_diff_pct")/100):"config" with labels offset 0,1 font ",8" notitle
-unset multiplot
-EOF
-    [ -s "$out_dir/bench.png" ] && echo "wrote $csv and $out_dir/bench.png" >&2
+    if "$(dirname "$0")/plot_bench.sh" "$csv" "$out_dir/bench.png"; then
+        echo "wrote $csv and $out_dir/bench.png" >&2
+    else
+        echo "run_bench.sh: gnuplot failed; no plot" >&2
+        status=1
+    fi
 else
     echo "run_bench.sh: gnuplot not found (Debian: apt-get install gnuplot-nox); no plot" >&2
     echo "wrote $csv" >&2
