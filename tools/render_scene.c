@@ -543,7 +543,7 @@ static void range_message(const stp_tool_prepared *prep, const stp_view *view, s
              "%d: coordinate (%g, %g, %g) of polygon %zu beyond the core's range "
              "(+-32767 units from the eye along each view axis)%s",
              p->source_line, v.x / prep->scale + prep->offset.x, v.y / prep->scale + prep->offset.y,
-             v.z / prep->scale + prep->offset.z, i + 1,
+             v.z / prep->scale + prep->offset.z, stp_tool_prepared_polygon_number(prep, i),
              prep->opt.keep_units ? "; without --no-rescale the scene is scaled into it" : "");
 }
 
@@ -718,7 +718,8 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
             goto done;
         }
         if (status != STP_OK) {
-            snprintf(err, err_size, "%d: polygon %zu: %s", p->source_line, i + 1,
+            snprintf(err, err_size, "%d: polygon %zu: %s", p->source_line,
+                     stp_tool_prepared_polygon_number(prep, i),
                      stp_status_text(status));
             goto done;
         }

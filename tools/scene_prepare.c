@@ -33,7 +33,22 @@ void stp_tool_prepared_free(stp_tool_prepared *p)
     if (!p)
         return;
     stp_scene_free(&p->scene);
+    free(p->polygon_number);
     memset(p, 0, sizeof *p);
+}
+
+size_t stp_tool_prepared_polygon_number(const stp_tool_prepared *p, size_t i)
+{
+    return p->polygon_number != NULL && i < p->scene.polygon_count ? p->polygon_number[i] : i + 1;
+}
+
+/* Number the copy's polygons from first on as coming from the file's
+ * polygon p (number file_no among the file's own, 0 for a prim's). */
+static void number_pieces(stp_tool_prepared *out, size_t first, const stp_scene_polygon *p,
+                          size_t file_no)
+{
+    for (; first < out->scene.polygon_count; first++)
+        out->polygon_number[first] = p->prim < 0 ? file_no : 0;
 }
 
 /* ---- copying, with big polygons split ----------------------------------- */
@@ -76,7 +91,7 @@ static int split_bow_tie(const stp_scene_polygon *p, const stp_scene_vec3 *pv,
 static int copy_scene(const stp_scene *in, stp_tool_prepared *out)
 {
     stp_scene *s = &out->scene;
-    size_t nv = 0, np = 0, i;
+    size_t nv = 0, np = 0, i, file_no = 0;
     const int max = STP_MAX_POLYGON_VERTICES;
 
     /* sizes first: a split polygon of n vertices gives at most n pieces of
@@ -93,10 +108,12 @@ static int copy_scene(const stp_scene *in, stp_tool_prepared *out)
     s->vertices = malloc(sizeof *s->vertices * (nv ? nv : 1));
     s->normals = malloc(sizeof *s->normals * (nv ? nv : 1));
     s->polygons = malloc(sizeof *s->polygons * (np ? np : 1));
+    out->polygon_number = malloc(sizeof *out->polygon_number * (np ? np : 1));
     s->prims = malloc(sizeof *s->prims * (in->prim_count ? in->prim_count : 1));
     s->lights = malloc(sizeof *s->lights * (in->light_count > STP_MAX_LIGHTS ? in->light_count
                                                                               : STP_MAX_LIGHTS));
-    if (!s->materials || !s->vertices || !s->normals || !s->polygons || !s->prims || !s->lights)
+    if (!s->materials || !s->vertices || !s->normals || !s->polygons || !s->prims || !s->lights ||
+        !out->polygon_number)
         return -1;
     if (in->material_count)
         memcpy(s->materials, in->materials, sizeof *s->materials * in->material_count);
@@ -108,7 +125,10 @@ static int copy_scene(const stp_scene *in, stp_tool_prepared *out)
         const stp_scene_polygon *p = &in->polygons[i];
         const stp_scene_vec3 *pv = &in->vertices[p->first], *pn = &in->normals[p->first];
         int *idx = 0, *cnt = 0, pieces, k, used = 0;
+        size_t first_piece = s->polygon_count;
+        file_no += p->prim < 0;
         if (p->count == 4 && split_bow_tie(p, pv, pn, s)) {
+            number_pieces(out, first_piece, p, file_no);
             out->polygons_split++;
             continue;
         }
@@ -118,6 +138,7 @@ static int copy_scene(const stp_scene *in, stp_tool_prepared *out)
             s->polygons[s->polygon_count] = *p;
             s->polygons[s->polygon_count++].first = s->vertex_count;
             s->vertex_count += (size_t)p->count;
+            number_pieces(out, first_piece, p, file_no);
             continue;
         }
         pieces = stp_tool_split_polygon(pv, p->count, max, &idx, &cnt);
@@ -137,6 +158,7 @@ static int copy_scene(const stp_scene *in, stp_tool_prepared *out)
         }
         free(idx);
         free(cnt);
+        number_pieces(out, first_piece, p, file_no);
         out->polygons_split++;
     }
     return 0;

@@ -59,6 +59,8 @@ typedef struct stp_tool_prepared {
     stp_scene_vec3 offset;
     size_t lights_in;          /* lights before merging */
     size_t polygons_split;     /* polygons of the file split into pieces */
+    size_t *polygon_number;    /* per polygon of scene: see
+                                  stp_tool_prepared_polygon_number (owned) */
 } stp_tool_prepared;
 
 /* Prepare scene for opt into *out.  Returns 0, or -1 with a message:
@@ -70,6 +72,13 @@ typedef struct stp_tool_prepared {
 int stp_tool_prepare(const stp_scene *scene, const stp_tool_options *opt, stp_tool_prepared *out,
                      char *err, size_t err_size);
 void stp_tool_prepared_free(stp_tool_prepared *p);
+
+/* The number, from 1, of the file's polygon that polygon i of the prepared
+ * copy comes from (pieces of a split polygon and a bow tie's two triangles
+ * give their polygon's number; the polygons tessellating NFF's spheres and
+ * cones are not counted among the file's), so a message's "polygon N" is
+ * the file's N; 0 for a sphere's or cone's polygon. */
+size_t stp_tool_prepared_polygon_number(const stp_tool_prepared *p, size_t i);
 
 /* Split the polygon v[0..count-1] (count > max >= 3) into pieces of at most
  * max vertices that cover it exactly: a fan of pieces sharing v[0] when it

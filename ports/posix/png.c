@@ -14,22 +14,32 @@
 
 #define PNG_MAX_SIDE 32767u
 
-/* libpng's error message, kept for ours; warnings are not errors. */
+/* libpng's error message, kept for ours; warnings are not errors, but the
+ * first one is kept: libpng gives the reason for a refused header (a side
+ * over the limit) only as a warning before its error "Invalid IHDR data". */
 typedef struct png_context {
     char message[200];
+    char warning[120];
 } png_context;
 
 static void on_error(png_structp png, png_const_charp msg)
 {
     png_context *ctx = (png_context *)png_get_error_ptr(png);
-    snprintf(ctx->message, sizeof ctx->message, "%s", msg);
+    if (strstr(ctx->warning, "exceeds user limit") != NULL)
+        snprintf(ctx->message, sizeof ctx->message,
+                 "wider or taller than %u pixels, the most read (%s)", PNG_MAX_SIDE, ctx->warning);
+    else if (ctx->warning[0] != 0)
+        snprintf(ctx->message, sizeof ctx->message, "%s (%s)", msg, ctx->warning);
+    else
+        snprintf(ctx->message, sizeof ctx->message, "%s", msg);
     png_longjmp(png, 1);
 }
 
 static void on_warning(png_structp png, png_const_charp msg)
 {
-    (void)png;
-    (void)msg;
+    png_context *ctx = (png_context *)png_get_error_ptr(png);
+    if (ctx->warning[0] == 0)
+        snprintf(ctx->warning, sizeof ctx->warning, "%s", msg);
 }
 
 int stp_posix_png_path(const char *path)

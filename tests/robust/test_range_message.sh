@@ -45,6 +45,16 @@ expect 1 "stipple: far.nff:10: coordinate (-10000, -10000, 20000) of polygon 1 $
 expect 1 "stipple: far.nff:10: coordinate (-10000, -10000, 20000) of polygon 1 $range" -- \
     render far.nff --no-rescale --smooth --shadows 64 --color -o old.ppm
 [ ! -e old.ppm ] || fail "old.ppm written"
+# "polygon N" is the file's N: a sphere's tessellation and split pieces
+# before it are not counted (the far polygon is the file's second)
+{ printf 'v\nfrom 0 0 -20000\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\nresolution 64 64\nl 0 5 -10\n%s\n' \
+    'f 1 1 1 1 0 0 0 1'
+  printf 's 0 0 0 100\np 3\n-100 -100 0\n100 -100 0\n0 100 0\n'
+  printf 'p 3\n-10000 -10000 20000\n10000 -10000 20000\n0 10000 20000\n'; } > counted.nff
+expect 1 "stipple: counted.nff:15: coordinate (-10000, -10000, 20000) of polygon 2 $range" -- \
+    render counted.nff --no-rescale -o counted.pgm
+[ ! -e counted.pgm ] || fail "counted.pgm written"
+rm -f counted.nff
 # beyond stp_fix: the host refuses it before the core would get it moved
 expect 1 "stipple: big.obj:4: coordinate (40000, 0, 0) of polygon 1 beyond the core's range (+-32767 units); without --no-rescale the scene is scaled into it" -- \
     render big.obj --no-rescale -o old.pgm
