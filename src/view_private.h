@@ -53,33 +53,8 @@ void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 
  * and from `from` of 2^29 raw units or more; see view.c). */
 int stp_view_triangle_side(stp_vec3 from, stp_vec3 forward, int parallel, const stp_vec3 *v);
 
-/* The one perspective projection (polygon entry, mesh entry, shadow maps,
- * direct drawing) of view point p, its z raised to hither when nearer:
- *   *x = floor(trunc(focal p.x / z) / 2^(F - STP_SUBPIXEL_BITS)), *y the
- *   same of p.y: the device offsets from the picture's centre in Q27.4,
- *   y up (callers add width 2^3 and subtract from height 2^3 and clamp);
- *   *key = trunc(hither 2^30 / z), the depth key (key NULL: not formed).
- * focal > 0, hither > 0 (stp_fix); |*x|, |*y| < 2^(63 - F).  Every form
- * gives the same values: 64-bit quotients where they are one instruction
- * (STP_WIDE_ARITH); else one 32-bit reciprocal of z and exact 32-bit
- * quotients when z < 2^29 and each quotient is below 2^31, and the 64-bit
- * quotient by that reciprocal (recip.c) otherwise. */
-void stp_view_perspective(stp_fix focal, stp_fix hither, stp_vec3 p, int64_t *x, int64_t *y, int32_t *key);
-
-/* A perspective projection's constants: focal, hither (stp_fix, > 0), and
- * the picture's half width and height in Q27.4 (width 2^3, height 2^3). */
-typedef struct stp_view_lens {
-    stp_fix focal, hither;
-    int32_t half_width, half_height;
-} stp_view_lens;
-
-/* The device position of view point p (perspective, clipped: inside up to
- * rounding), Q27.4, and its depth key: out[0] = half_width + the offset,
- * out[1] = half_height - the offset, clamped to [0, 2 half_width] and [0,
- * 2 half_height] (the clipper keeps points inside up to rounding: the
- * clamp takes its last bit), out[2] the key: stp_view_perspective's
- * values. */
-void stp_view_perspective_device(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3]);
+/* The one perspective projection: project_private.h. */
+#include "project_private.h"
 
 /* a x b with F fractional bits, each component saturated. */
 stp_vec3 stp_vec3_cross(stp_vec3 a, stp_vec3 b);
