@@ -1706,6 +1706,7 @@ static void render_band_threshold(frame *fr, const stp_output *output)
 {
 #if STP_WITH_DIFFUSION || STP_WITH_EDGE_AA
     uint32_t y;
+    (void)output; /* read only with diffusion */
     for (y = fr->y0; y < fr->y0 + fr->rows; y++) {
         uint8_t *row = fr->band + (size_t)(y - fr->y0) * fr->stride;
 #if STP_WITH_DIFFUSION
