@@ -11,33 +11,23 @@
  *              products below 2^24 and 2^29
  *   view       M v + V (t - from): three vmul below 2^24 each plus one
  *              below 2^24: |.| < 2^26
- *   projection 1/z from a 16-bit mantissa of z (z in [hither, 2^26)):
- *              r = floor(2^31 / m) in (2^15, 2^16]; g = focal's 16-bit
- *              mantissa times r, below 2^32; x g / 2^32 from 16-bit
- *              halves; relative error below 2^-14, so a device
- *              coordinate (below 2^13 in Q4) is within 1/2 of a Q4 unit of
- *              the full renderer's floor(focal x / z 2^-12)
+ *   projection the one perspective projection (view.c's
+ *              stp_view_perspective, the renderer's): floor(trunc(focal x
+ *              / z) 2^-12) in Q4 exactly, from one 32-bit reciprocal of z
+ *              (z in [hither, 2^26) is below 2^29: the 32-bit form)
  *   shading    shade_fast.c (its file comment): its prepare, the one the
  *              mesh route uses, and its 32-bit face path. */
 #include "stipple/direct.h"
 
 #include "direct_private.h"
 #include "shade_fast_private.h"
+#include "view_private.h" /* stp_view_perspective */
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
 #define Q14 14
 #define COORD_LIMIT ((int32_t)1 << 23)
 #define DEVICE_LIMIT 8192
-
-/* floor(a b / 2^32) for a, b < 2^32, from four 16 x 16-bit products */
-static uint32_t mul_hi(uint32_t a, uint32_t b)
-{
-    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-    uint32_t lh = al * bh, hl = ah * bl;
-    uint32_t mid = ((al * bl) >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
-    return ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
-}
 
 /* v m / 2^14 (file comment: vmul) */
 static int32_t vmul(int32_t v, int32_t m)
@@ -86,7 +76,6 @@ static void shade_prepare(stp_shade_fast *s, const stp_direct_light *l, const in
 #if STP_WIDE_ARITH
     s->wide_ready = 0; /* the 32-bit face path on hosts too: the chip's values */
 #endif
-    s->exact = 0; /* shade_fast.c: no exact route (its values are not filled here) */
 }
 
 int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_view *view,
@@ -119,35 +108,19 @@ static int light_ok(const stp_direct_light *l)
            l->reflectivity >= 0 && l->reflectivity <= ONE;
 }
 
-/* Device position (Q4) of view point p with p[2] >= hither > 0; 0 when it
- * falls outside the device range.  fm, fe: focal = fm 2^fe, fm in
- * [2^15, 2^16). */
-static int project_point(const stp_direct_view *view, uint32_t fm, int fe, stp_direct_point *pt)
+/* Device position (Q4) of view point p with p[2] >= hither > 0 by the one
+ * perspective projection (view.c, the renderer's); 0 when it falls
+ * outside the device range. */
+static int project_point(const stp_direct_view *view, stp_direct_point *pt)
 {
-    uint32_t z = (uint32_t)pt->z, m, g;
-    int n = stp_bit_length32(z), i, sh;
-    int32_t c[2];
-    m = n > 16 ? z >> (n - 16) : z << (16 - n);
-    g = fm * stp_direct_udiv(0x80000000u, m); /* focal / z 2^(15 + n - fe) */
-    /* focal x / z in Q4 (focal with F fractional bits): x g 2^(fe - 11 - n -
-     * F) = mul_hi(x, g) 2^(fe + 21 - F - n) */
-    sh = fe + 21 - F - n;
-    for (i = 0; i < 2; i++) {
-        int32_t v = i == 0 ? pt->x : pt->y;
-        uint32_t h = mul_hi(stp_direct_abs(v), g); /* < 2^26 */
-        if (sh >= 0) { /* sh > 4: z below 2^(fe + 16 - F) raw, refused */
-            if (sh > 4 || h >= ((uint32_t)DEVICE_LIMIT >> sh))
-                return 0;
-            h <<= sh;
-        } else {
-            h = sh <= -32 ? 0u : h >> -sh;
-        }
-        if (h >= (uint32_t)DEVICE_LIMIT * 2u)
-            return 0;
-        c[i] = v < 0 ? -(int32_t)h : (int32_t)h;
-    }
-    c[0] = (int32_t)view->width * 8 + c[0];
-    c[1] = (int32_t)view->height * 8 - c[1];
+    stp_vec3 p;
+    int64_t c[2];
+    p.x = pt->x;
+    p.y = pt->y;
+    p.z = pt->z;
+    stp_view_perspective(view->focal, view->hither, p, &c[0], &c[1], 0);
+    c[0] = (int64_t)view->width * 8 + c[0];
+    c[1] = (int64_t)view->height * 8 - c[1];
     if (c[0] < -DEVICE_LIMIT || c[0] >= DEVICE_LIMIT || c[1] < -DEVICE_LIMIT || c[1] >= DEVICE_LIMIT)
         return 0;
     pt->dx = (int16_t)c[0];
@@ -215,8 +188,7 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
 {
     int32_t m[3][3], t[3], d[3], scale14;
     stp_direct_shading shading;
-    uint32_t fm;
-    int i, j, fe, status;
+    int i, j, status;
     uint16_t k;
     status = check_args(f, mesh, model, view, light, levels, cell, points, point_count, faces, face_count);
     if (status != STP_OK)
@@ -237,9 +209,6 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
         if (outside(d[i]))
             return STP_ERR_RANGE;
     to_view(view, d, t);
-    fm = (uint32_t)view->focal;
-    fe = stp_bit_length32(fm) - 16;
-    fm = fe > 0 ? fm >> fe : fm << -fe;
     for (k = 0; k < mesh->vertex_count; k++) {
         const stp_vec3 *v = &mesh->vertices[k];
         stp_direct_point *p = &points[k];
@@ -251,7 +220,7 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
         p->x = c[0];
         p->y = c[1];
         p->z = c[2];
-        if (c[2] < view->hither || !project_point(view, fm, fe, p))
+        if (c[2] < view->hither || !project_point(view, p))
             return STP_ERR_RANGE;
     }
     for (k = 0; k < mesh->triangle_count; k++) {

@@ -162,40 +162,5 @@ void stp_direct_model_turn(stp_direct_model *m, uint16_t yaw, uint16_t pitch, st
 
 int stp_direct_mesh_normals(const stp_mesh *mesh, int16_t *normals)
 {
-    uint32_t t;
-    if (mesh == 0 || normals == 0 || (mesh->triangle_count > 0 && (mesh->vertices == 0 || mesh->triangles == 0)))
-        return STP_ERR_ARG;
-    for (t = 0; t < mesh->triangle_count; t++) {
-        const uint16_t *k = &mesh->triangles[3 * t];
-        const stp_vec3 *a, *b, *c;
-        int32_t e[6], n[3];
-        uint32_t big = 0;
-        int i, s;
-        if (k[0] >= mesh->vertex_count || k[1] >= mesh->vertex_count || k[2] >= mesh->vertex_count)
-            return STP_ERR_ARG;
-        a = &mesh->vertices[k[0]];
-        b = &mesh->vertices[k[1]];
-        c = &mesh->vertices[k[2]];
-        e[0] = b->x - a->x;
-        e[1] = b->y - a->y;
-        e[2] = b->z - a->z;
-        e[3] = c->x - a->x;
-        e[4] = c->y - a->y;
-        e[5] = c->z - a->z;
-        for (i = 0; i < 6; i++) {
-            if (e[i] >= 2 * COORD_LIMIT || e[i] <= -2 * COORD_LIMIT)
-                return STP_ERR_RANGE;
-            big |= stp_direct_abs(e[i]);
-        }
-        /* the edges cut to 15 bits together: products below 2^30 */
-        s = stp_bit_length32(big) - 15;
-        for (i = 0; s > 0 && i < 6; i++)
-            e[i] = stp_direct_asr(e[i], s);
-        n[0] = e[1] * e[5] - e[2] * e[4];
-        n[1] = e[2] * e[3] - e[0] * e[5];
-        n[2] = e[0] * e[4] - e[1] * e[3];
-        if (unit14(n, &normals[3 * t]) == 0)
-            return STP_ERR_DEGENERATE;
-    }
-    return STP_OK;
+    return stp_mesh_prepare_normals(mesh, normals, 0); /* the one normals function */
 }

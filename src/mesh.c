@@ -36,7 +36,7 @@ typedef struct mesh_context {
     int shift;
     int inside; /* 1: every vertex is inside the view volume (no outcodes)
                    and its view coordinates are below 2^29 in magnitude */
-    int exact_projection; /* project_inside applies: 0 < focal, hither */
+    stp_view_lens lens; /* the projection's constants (view.c) */
     const stp_shade_fast *shade; /* the prepared shading (prepare_shading) */
 #if !STP_VERTEX_CACHE
     stp_shade_fast shade_here; /* prepared per call (render_private.h) */
@@ -286,7 +286,10 @@ static int prepare_call(mesh_context *c)
     big |= magnitude(lo.x) | magnitude(lo.y) | magnitude(lo.z) | magnitude(hi.x) |
            magnitude(hi.y) | magnitude(hi.z);
     c->inside = box_inside(r, lo, hi, s2);
-    c->exact_projection = r->focal > 0 && r->hither > 0;
+    c->lens.focal = r->focal;
+    c->lens.hither = r->hither;
+    c->lens.half_width = (int32_t)r->width << (STP_SUBPIXEL_BITS - 1);
+    c->lens.half_height = (int32_t)r->height << (STP_SUBPIXEL_BITS - 1);
     k = stp_bit_length32(big) - 14;
     c->shift = k > 0 ? k : 0;
     for (j = 0; j < 3; j++)
@@ -326,100 +329,17 @@ static inline int32_t vertex_code(mesh_context *c, uint16_t i)
     return s->state & (CODE_RANGE | 31);
 }
 
-/* One vertex's 1/z, for the quotients of a numerator f m (f per view,
- * 0 < f < 2^31): z = dn 2^-s with dn in [2^31, 2^32) and 2^32 + v =
- * floor((2^64 - 1) / dn) (stp_recip32), so P = f (2^32 + v) < 2^64
- * approximates f 2^64 / dn from below within f + 1 (relative 2^-31); w =
- * P's top 32 bits (P >> t, w >= 2^31) and sh = 64 - t - s: f / z ~ w 2^-sh. */
-static void scale_reciprocal(uint32_t f, uint32_t v, int s, uint32_t *w, int *sh)
-{
-    uint64_t p = ((uint64_t)f << 32) + stp_umul32x32(f, v);
-    uint32_t ph = (uint32_t)(p >> 32), pl = (uint32_t)p; /* ph >= f >= 1 */
-    int t = stp_bit_length32(ph);
-    *w = t == 32 ? ph : (ph << (32 - t)) | (pl >> t);
-    *sh = 64 - t - s;
-}
-
-/* floor(f m / z) exactly, for m < 2^31 (n_low = f m mod 2^32) and z <
- * 2^29, from the estimate e = floor(m w / 2^sh): every step rounds down, so
- * e <= the quotient Q, and Q - e <= 6 Q 2^-32 + 1 (w 2^-sh is below f / z
- * by at most (2 f + 2^t) 2^(s - 64) <= 6 f 2^(s - 64), and m f 2^(s - 64)
- * <= Q 2^-32), below 5 for Q < 2^31: the remainder f m - e z is in
- * [0, 5 z), below 2^32, so taken mod 2^32 it corrects e.  0 when the
- * quotient is 2^31 or more. */
-static int exact_quotient(uint32_t m, uint32_t w, int sh, uint32_t n_low, uint32_t z,
-                          uint32_t *q)
-{
-    uint64_t prod = stp_umul32x32(m, w);
-    uint32_t hi = (uint32_t)(prod >> 32), lo = (uint32_t)prod, e, rem;
-    if (sh >= 32) {
-        e = sh - 32 >= 32 ? 0u : hi >> (sh - 32);
-    } else {
-        if ((hi >> sh) != 0)
-            return 0;
-        e = (hi << (32 - sh)) | (lo >> sh);
-    }
-    if (e >= 0x80000000u)
-        return 0;
-    rem = n_low - e * z; /* in [0, 5 z): below 2^32 */
-    while (rem >= z) {
-        e++;
-        rem -= z;
-    }
-    *q = e;
-    return e < 0x80000000u;
-}
-
-/* A device coordinate from the quotient q = floor(f |c| / z): floor of the
- * signed quotient truncated toward zero, at STP_SUBPIXEL_BITS (as
- * stp_asr64 of stp_div64_by's in render.c's project). */
-static int32_t subpixel(int negative, uint32_t q)
-{
-    const int shift = F - STP_SUBPIXEL_BITS;
-    return negative ? -(int32_t)((q + ((1u << shift) - 1u)) >> shift) : (int32_t)(q >> shift);
-}
-
-/* The device position of an inside vertex (view coordinates below 2^28,
- * z >= hither), the same values as stp_render_project (perspective) but
- * with 32-bit products and one reciprocal: 1 on success, 0 when a
- * quotient is out of this form's range (then stp_render_project). */
-static int project_inside(const stp_renderer *r, stp_vec3 p, stp_mesh_vertex *s)
-{
-    uint32_t z = (uint32_t)(p.z < r->hither ? r->hither : p.z), f = (uint32_t)r->focal;
-    uint32_t h = (uint32_t)r->hither, mx = magnitude(p.x), my = magnitude(p.y), qx, qy, qk, w, wh;
-    int sz = 32 - stp_bit_length32(z), sh, shh;
-    int32_t wq = (int32_t)r->width << STP_SUBPIXEL_BITS, hq = (int32_t)r->height << STP_SUBPIXEL_BITS;
-    int32_t x, y;
-    uint32_t v = stp_recip32(z << sz);
-    scale_reciprocal(f, v, sz, &w, &sh);
-    scale_reciprocal(h, v, sz, &wh, &shh);
-    if (!exact_quotient(mx, w, sh, f * mx, z, &qx) || !exact_quotient(my, w, sh, f * my, z, &qy) ||
-        !exact_quotient((uint32_t)1 << 30, wh, shh, h << 30, z, &qk))
-        return 0;
-    x = wq / 2 + subpixel(p.x < 0, qx);
-    y = hq / 2 - subpixel(p.y < 0, qy);
-    s->dx = x < 0 ? 0 : (x > wq ? wq : x);
-    s->dy = y < 0 ? 0 : (y > hq ? hq : y);
-    s->dz = (int32_t)qk;
-    return 1;
-}
-
 /* Vertex i's device position, projected once per call (it is inside the
  * view volume: its outcode is 0). */
 static void vertex_project(mesh_context *c, uint16_t i)
 {
     stp_mesh_vertex *s = &c->scratch[i];
     if ((s->state & PROJECTED) == 0) {
-        /* where 64-bit quotients are one instruction, render.c's form is
-         * cheaper (the values are the same) */
-        if (STP_WIDE_ARITH || !c->inside || !c->exact_projection ||
-            !project_inside(c->r, s->view, s)) {
-            stp_instr out;
-            stp_render_project(c->r, s->view, &out);
-            s->dx = out.x;
-            s->dy = out.y;
-            s->dz = out.z;
-        }
+        int32_t d[3];
+        stp_view_perspective_device(&c->lens, &s->view, d); /* perspective (fast_state) */
+        s->dx = d[0];
+        s->dy = d[1];
+        s->dz = d[2];
         s->state |= PROJECTED;
     }
 }

@@ -1490,37 +1490,30 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
     return count;
 }
 
-int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *output,
-               const stp_frame_memory *mem)
+/* Whether stp_renderer_render's pointers are there and the port is the
+ * renderer's size. */
+static int render_args_ok(const stp_renderer *r, const stp_port *port, const stp_frame_memory *mem)
 {
-    frame fr;
-#if STP_WITH_SHADOWS
-    stp_shadow_poly shadow_poly;
-#endif
-#if STP_WITH_DIFFUSION || STP_WITH_EDGE_AA
-    stp_port grey_port; /* error diffusion, edge anti-aliasing: the band is drawn as GREY8 */
-#endif
-    const stp_port *drawn = port;
-    uint32_t y0, polygons = 0;
-    paint background_style;
-    stp_hidden hidden;
-    stp_output default_output;
-    if (output == 0) {
-        (void)stp_output_default(&default_output);
-        output = &default_output;
-    }
-    if (r == 0 || port == 0 || mem == 0 || port->flush == 0 || mem->band == 0)
-        return STP_ERR_ARG;
-    if (port->width != r->width || port->height != r->height)
-        return STP_ERR_ARG;
+    return r != 0 && port != 0 && mem != 0 && port->flush != 0 && mem->band != 0 && port->width == r->width &&
+           port->height == r->height;
+}
+
+/* The port the bands are drawn for: port itself, or a GREY8 copy of a
+ * MONO1 port in *grey when the output diffuses errors or anti-aliases
+ * edges (the band is thresholded at flush).  STP_OK or the error. */
+static int render_drawn_port(frame *fr, const stp_port *port, const stp_output *output, stp_port *grey,
+                             const stp_port **drawn)
+{
+    *drawn = port;
 #if STP_WITH_EDGE_AA
-    fr.aa.out = 0;
+    fr->aa.out = 0;
     if (output->edge_aa && port->format == STP_PIXEL_MONO1) {
-        grey_port = *port; /* drawn grey, thresholded by the cell at flush */
-        grey_port.format = STP_PIXEL_GREY8;
-        drawn = &grey_port;
+        *grey = *port; /* drawn grey, thresholded by the cell at flush */
+        grey->format = STP_PIXEL_GREY8;
+        *drawn = grey;
     }
 #else
+    (void)fr;
     if (output->edge_aa)
         return STP_ERR_UNSUPPORTED;
 #endif
@@ -1529,39 +1522,233 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
         int status = stp_diffusion_check(output->diffusion, port->width);
         if (status != STP_OK)
             return status;
-        grey_port = *port;
-        grey_port.format = STP_PIXEL_GREY8;
-        drawn = &grey_port;
+        *grey = *port;
+        grey->format = STP_PIXEL_GREY8;
+        *drawn = grey;
 #else
         return STP_ERR_UNSUPPORTED;
 #endif
     }
-    fr.stride = stp_row_bytes(drawn->format, port->width);
-    if (fr.stride == 0 || mem->band_rows < 1 || mem->band_rows > r->height)
+#if !STP_WITH_DIFFUSION && !STP_WITH_EDGE_AA
+    (void)grey;
+#endif
+    return STP_OK;
+}
+
+/* The caller's frame memory against what the hidden-surface method and
+ * the drawn format need: STP_OK, STP_ERR_MEMORY, STP_ERR_ARG or
+ * STP_ERR_UNSUPPORTED (a method compiled out). */
+static int render_check_memory(const stp_renderer *r, const stp_port *port, const stp_output *output,
+                               const stp_frame_memory *mem, size_t stride)
+{
+    if (stride == 0 || mem->band_rows < 1 || mem->band_rows > r->height)
         return STP_ERR_ARG;
-    if (mem->band_size < fr.stride * mem->band_rows)
+    if (mem->band_size < stride * mem->band_rows)
         return STP_ERR_MEMORY;
     /* STYLE8 without a table stores the index in a byte: 1..255 */
     if (port->format == STP_PIXEL_STYLE8 && output->styles == 0 && r->levels > 255)
         return STP_ERR_ARG;
-    hidden = output->hidden;
-    if (hidden == STP_HIDDEN_ZBUFFER) {
+    if (output->hidden == STP_HIDDEN_ZBUFFER) {
 #if STP_WITH_ZBUFFER
         if (mem->zbuf == 0 || mem->zbuf_count < (size_t)r->width * mem->band_rows)
             return STP_ERR_MEMORY;
 #else
         return STP_ERR_UNSUPPORTED;
 #endif
-    } else if (hidden == STP_HIDDEN_PAINTER) {
+    } else if (output->hidden == STP_HIDDEN_PAINTER) {
 #if STP_WITH_PAINTER
         if (mem->sort == 0 || mem->sort_count < stp_renderer_polygon_count(r))
             return STP_ERR_MEMORY;
 #else
         return STP_ERR_UNSUPPORTED;
 #endif
-    } else if (hidden != STP_HIDDEN_NONE) {
+    } else if (output->hidden != STP_HIDDEN_NONE) {
         return STP_ERR_ARG;
     }
+    return STP_OK;
+}
+
+/* The frame's cell (the output's, else Bayer 4 x 4) and background style
+ * into fr->cell and *background.  STP_OK, or STP_ERR_UNSUPPORTED when no
+ * cell is given and the default one is compiled out. */
+static int render_cell_and_background(frame *fr, const stp_port *port, const stp_output *output,
+                                      paint *background)
+{
+    const stp_renderer *r = fr->r;
+    if (output->cell) {
+        fr->cell = output->cell;
+    } else {
+#if STP_WITH_DEFAULT_CELL
+        (void)stp_cell_bayer(&fr->default_cell, 4);
+        fr->cell = &fr->default_cell;
+#else
+        return STP_ERR_UNSUPPORTED;
+#endif
+    }
+    *background = stp_intensity_index(output->background, r->levels);
+    if (port->format == STP_PIXEL_RGB888 && output->background_colour) {
+        int c;
+        *background = STP_COLOUR_FLAG;
+        for (c = 0; c < 3; c++)
+            *background |= (paint)(stp_intensity_index(output->background_colour[c], r->levels) - 1)
+                           << (16 - 8 * c);
+    }
+    /* port.h: STYLE8 without a table holds 0 where nothing is drawn and the
+     * background is 0 (style_code passes 0 through) */
+    if (port->format == STP_PIXEL_STYLE8 && output->styles == 0 && output->background <= 0)
+        *background = 0;
+    return STP_OK;
+}
+
+/* The depth keys' range and scale, the caches and the span fill's state,
+ * once the polygons are scanned. */
+static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port *drawn, const stp_output *output,
+                                paint background)
+{
+    uint32_t i;
+    fr->key_range = 0;
+    fr->depth_scale = 0;
+    fr->depth_shift = 0;
+    if (fr->key_max > fr->key_min) {
+        fr->key_range = (uint32_t)fr->key_max - (uint32_t)fr->key_min;
+#if !STP_WIDE_ARITH
+        while (((uint64_t)1 << fr->depth_shift) <= fr->key_range)
+            fr->depth_shift++;
+        fr->depth_scale = (uint32_t)STP_DIV64(((uint64_t)65534 << 12) << fr->depth_shift, fr->key_range);
+#endif
+    }
+#if KEY_CACHE > 0
+    for (i = 0; i < KEY_CACHE; i++)
+        fr->cached[i].q12 = 0;
+#endif
+    fr->mono_fill = port->format == STP_PIXEL_MONO1 && fr->cell->kind == STP_CELL_THRESHOLD &&
+                    fr->cell->width > 0 && 8u % fr->cell->width == 0 && fr->cell->height > 0 &&
+                    fr->cell->height <= STP_CELL_MAX; /* patterns[] holds a row each */
+    fr->pattern_port = drawn->format == STP_PIXEL_MONO1 && fr->mono_fill;
+    fr->cell_mask = (fr->cell->height & (fr->cell->height - 1u)) == 0 ? fr->cell->height - 1u : 0;
+    fr->pattern_style = -1;
+#if STP_PATTERN_CACHE > 0
+    for (i = 0; i < STP_PATTERN_CACHE; i++)
+        fr->cached_style[i] = -1;
+#endif
+    (void)i;
+    use_style(fr, background);
+#if STP_WITH_EDGE_AA
+    if (output->edge_aa) {
+        fr->aa.out = output;
+        fr->aa.format = drawn->format;
+        fr->aa.levels = fr->r->levels;
+        fr->aa.width = fr->r->width;
+    }
+#else
+    (void)output;
+#endif
+}
+
+/* Band y0's rows cleared to the background and, with the Z buffer, its
+ * entries where a polygon can reach set farther than any polygon. */
+static void render_band_clear(frame *fr, const stp_port *drawn, stp_hidden hidden, paint background)
+{
+    const stp_renderer *r = fr->r;
+    uint32_t y, y0 = fr->y0;
+    for (y = y0; y < y0 + fr->rows; y++) {
+        /* MONO1 padding bits past the width reach the port too: make
+         * them 0 rather than whatever the caller's buffer held */
+        if (drawn->format == STP_PIXEL_MONO1)
+            fr->band[(size_t)(y - y0) * fr->stride + fr->stride - 1] = 0;
+        put_span(fr, y, 0, r->width - 1, background);
+    }
+#if STP_WITH_ZBUFFER
+    if (hidden == STP_HIDDEN_ZBUFFER && fr->x_min <= fr->x_max) {
+        /* farther than any polygon (they map to >= 1), where one can
+         * reach: a Z test reads no other entry */
+        uint32_t y_end = y0 + fr->rows - 1 < fr->y_max ? y0 + fr->rows - 1 : fr->y_max;
+        size_t i, count = (size_t)(fr->x_max - fr->x_min) + 1u;
+        for (y = y0 > fr->y_min ? y0 : fr->y_min; y <= y_end; y++) {
+            uint16_t *z = fr->zbuf + (size_t)(y - y0) * r->width + fr->x_min;
+            for (i = 0; i < count; i++) /* a counted loop: compilers make it memset */
+                z[i] = 0;
+        }
+    }
+#else
+    (void)hidden;
+#endif
+}
+
+/* The band's polygons and lines by the hidden-surface method. */
+static void render_band_draw(frame *fr, stp_hidden hidden, const stp_frame_memory *mem, uint32_t polygons)
+{
+#if STP_WITH_PAINTER
+    if (hidden == STP_HIDDEN_PAINTER) {
+        uint32_t i;
+        for (i = 0; i < polygons; i++)
+            draw_polygon(fr, mem->sort[i].index, mem->sort[i].style, 0, mem->sort[i].transmission, UINT32_MAX);
+        replay(fr, 1, 0, 0); /* lines on top, in display order */
+        return;
+    }
+#else
+    (void)mem;
+    (void)polygons;
+#endif
+    if (hidden == STP_HIDDEN_ZBUFFER) {
+        /* opaque first, then the transparent ones over them */
+        replay(fr, 0, 1, 1);
+        if (fr->second_pass)
+            replay(fr, 0, 1, 2);
+    } else {
+        replay(fr, 0, 0, 0);
+    }
+}
+
+/* A grey band for a MONO1 port made MONO1 in place, row by row, by error
+ * diffusion or the cell. */
+static void render_band_threshold(frame *fr, const stp_output *output)
+{
+#if STP_WITH_DIFFUSION || STP_WITH_EDGE_AA
+    uint32_t y;
+    (void)output; /* read only with diffusion */
+    for (y = fr->y0; y < fr->y0 + fr->rows; y++) {
+        uint8_t *row = fr->band + (size_t)(y - fr->y0) * fr->stride;
+#if STP_WITH_DIFFUSION
+        if (output->diffusion) {
+            stp_diffuse_row(output->diffusion, row, fr->r->width, y);
+            continue;
+        }
+#endif
+#if STP_WITH_EDGE_AA
+        stp_edge_aa_threshold_row(row, fr->r->width, y, fr->cell);
+#endif
+    }
+#else
+    (void)fr;
+    (void)output;
+#endif
+}
+
+int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *output,
+               const stp_frame_memory *mem)
+{
+    frame fr;
+#if STP_WITH_SHADOWS
+    stp_shadow_poly shadow_poly;
+#endif
+    stp_port grey_port; /* error diffusion, edge anti-aliasing: the band is drawn as GREY8 */
+    const stp_port *drawn;
+    uint32_t y0, polygons;
+    paint background_style;
+    stp_output default_output;
+    int status;
+    if (output == 0) {
+        (void)stp_output_default(&default_output);
+        output = &default_output;
+    }
+    if (!render_args_ok(r, port, mem))
+        return STP_ERR_ARG;
+    if ((status = render_drawn_port(&fr, port, output, &grey_port, &drawn)) != STP_OK)
+        return status;
+    fr.stride = stp_row_bytes(drawn->format, port->width);
+    if ((status = render_check_memory(r, port, output, mem, fr.stride)) != STP_OK)
+        return status;
     fr.r = r;
     fr.port = drawn;
     fr.out = output;
@@ -1571,139 +1758,31 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
     shadow_poly.count = 0;
     fr.shadow = stp_shadow_any(r) ? &shadow_poly : 0;
 #endif
-    if (output->cell) {
-        fr.cell = output->cell;
-    } else {
-#if STP_WITH_DEFAULT_CELL
-        (void)stp_cell_bayer(&fr.default_cell, 4);
-        fr.cell = &fr.default_cell;
-#else
-        return STP_ERR_UNSUPPORTED;
-#endif
-    }
-    background_style = stp_intensity_index(output->background, r->levels);
-    if (port->format == STP_PIXEL_RGB888 && output->background_colour) {
-        int c;
-        background_style = STP_COLOUR_FLAG;
-        for (c = 0; c < 3; c++)
-            background_style |= (paint)(stp_intensity_index(output->background_colour[c], r->levels) - 1)
-                                << (16 - 8 * c);
-    }
-    /* port.h: STYLE8 without a table holds 0 where nothing is drawn and the
-     * background is 0 (style_code passes 0 through) */
-    if (port->format == STP_PIXEL_STYLE8 && output->styles == 0 && output->background <= 0)
-        background_style = 0;
-
-    polygons = scan_polygons(&fr, hidden == STP_HIDDEN_PAINTER ? mem->sort : 0);
+    if ((status = render_cell_and_background(&fr, port, output, &background_style)) != STP_OK)
+        return status;
+    polygons = scan_polygons(&fr, output->hidden == STP_HIDDEN_PAINTER ? mem->sort : 0);
     fr.setup = 0;
 #if STP_WITH_ZBUFFER
-    if (hidden == STP_HIDDEN_ZBUFFER && mem->setup) {
+    if (output->hidden == STP_HIDDEN_ZBUFFER && mem->setup) {
         if (mem->setup_count < polygons)
             return STP_ERR_MEMORY;
         fr.setup = mem->setup;
     }
 #endif
-    fr.key_range = 0;
-    fr.depth_scale = 0;
-    fr.depth_shift = 0;
-    if (fr.key_max > fr.key_min) {
-        fr.key_range = (uint32_t)fr.key_max - (uint32_t)fr.key_min;
-#if !STP_WIDE_ARITH
-        while (((uint64_t)1 << fr.depth_shift) <= fr.key_range)
-            fr.depth_shift++;
-        fr.depth_scale = (uint32_t)STP_DIV64(((uint64_t)65534 << 12) << fr.depth_shift, fr.key_range);
-#endif
-    }
-#if KEY_CACHE > 0
-    for (y0 = 0; y0 < KEY_CACHE; y0++)
-        fr.cached[y0].q12 = 0;
-#endif
-    fr.mono_fill = port->format == STP_PIXEL_MONO1 && fr.cell->kind == STP_CELL_THRESHOLD &&
-                   fr.cell->width > 0 && 8u % fr.cell->width == 0 && fr.cell->height > 0 &&
-                   fr.cell->height <= STP_CELL_MAX; /* patterns[] holds a row each */
-    fr.pattern_port = drawn->format == STP_PIXEL_MONO1 && fr.mono_fill;
-    fr.cell_mask = (fr.cell->height & (fr.cell->height - 1u)) == 0 ? fr.cell->height - 1u : 0;
-    fr.pattern_style = -1;
-#if STP_PATTERN_CACHE > 0
-    for (y0 = 0; y0 < STP_PATTERN_CACHE; y0++)
-        fr.cached_style[y0] = -1;
-#endif
-    use_style(&fr, background_style);
-#if STP_WITH_EDGE_AA
-    if (output->edge_aa) {
-        fr.aa.out = output;
-        fr.aa.format = drawn->format;
-        fr.aa.levels = r->levels;
-        fr.aa.width = r->width;
-    }
-#endif
-    (void)polygons; /* read only by the painter's sort */
+    render_prepare_fill(&fr, port, drawn, output, background_style);
 #if STP_WITH_PAINTER
-    if (hidden == STP_HIDDEN_PAINTER)
+    if (output->hidden == STP_HIDDEN_PAINTER)
         sort_entries(mem->sort, (size_t)polygons);
 #endif
-
     for (y0 = 0; y0 < r->height; y0 += mem->band_rows) {
-        uint32_t y;
         fr.y0 = y0;
         fr.rows = r->height - y0 < mem->band_rows ? r->height - y0 : mem->band_rows;
         fr.band_top = (int32_t)(y0 << SUB); /* heights below 2^15: no overflow */
         fr.band_end = (int32_t)((y0 + fr.rows) << SUB);
-        for (y = y0; y < y0 + fr.rows; y++) {
-            /* MONO1 padding bits past the width reach the port too: make
-             * them 0 rather than whatever the caller's buffer held */
-            if (drawn->format == STP_PIXEL_MONO1)
-                fr.band[(size_t)(y - y0) * fr.stride + fr.stride - 1] = 0;
-            put_span(&fr, y, 0, r->width - 1, background_style);
-        }
-#if STP_WITH_ZBUFFER
-        if (hidden == STP_HIDDEN_ZBUFFER && fr.x_min <= fr.x_max) {
-            /* farther than any polygon (they map to >= 1), where one can
-             * reach: a Z test reads no other entry */
-            uint32_t y_end = y0 + fr.rows - 1 < fr.y_max ? y0 + fr.rows - 1 : fr.y_max;
-            size_t i, count = (size_t)(fr.x_max - fr.x_min) + 1u;
-            for (y = y0 > fr.y_min ? y0 : fr.y_min; y <= y_end; y++) {
-                uint16_t *z = fr.zbuf + (size_t)(y - y0) * r->width + fr.x_min;
-                for (i = 0; i < count; i++) /* a counted loop: compilers make it memset */
-                    z[i] = 0;
-            }
-        }
-#endif
-#if STP_WITH_PAINTER
-        if (hidden == STP_HIDDEN_PAINTER) {
-            uint32_t i;
-            for (i = 0; i < polygons; i++)
-                draw_polygon(&fr, mem->sort[i].index, mem->sort[i].style, 0, mem->sort[i].transmission,
-                             UINT32_MAX);
-            replay(&fr, 1, 0, 0); /* lines on top, in display order */
-        } else
-#endif
-        {
-            if (hidden == STP_HIDDEN_ZBUFFER) {
-                /* opaque first, then the transparent ones over them */
-                replay(&fr, 0, 1, 1);
-                if (fr.second_pass)
-                    replay(&fr, 0, 1, 2);
-            } else {
-                replay(&fr, 0, 0, 0);
-            }
-        }
-#if STP_WITH_DIFFUSION || STP_WITH_EDGE_AA
-        /* a grey band for a MONO1 port: each row becomes a MONO1 row in
-         * place, by error diffusion or the cell */
-        for (y = y0; drawn == &grey_port && y < y0 + fr.rows; y++) {
-            uint8_t *row = fr.band + (size_t)(y - y0) * fr.stride;
-#if STP_WITH_DIFFUSION
-            if (output->diffusion) {
-                stp_diffuse_row(output->diffusion, row, r->width, y);
-                continue;
-            }
-#endif
-#if STP_WITH_EDGE_AA
-            stp_edge_aa_threshold_row(row, r->width, y, fr.cell);
-#endif
-        }
-#endif
+        render_band_clear(&fr, drawn, output->hidden, background_style);
+        render_band_draw(&fr, output->hidden, mem, polygons);
+        if (drawn == &grey_port)
+            render_band_threshold(&fr, output);
         if (port->flush(port, y0, fr.rows, fr.band, fr.stride) < 0)
             return STP_ERR_PORT;
     }

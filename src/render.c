@@ -581,35 +581,28 @@ static int clip_polygon(stp_renderer *r, int n, int smooth, stp_vec3 **result, s
                             shades);
 }
 
-/* Device coordinates (Q27.4) and depth key of a clipped view point. */
+/* Device coordinates (Q27.4) and depth key of a clipped view point: the
+ * one perspective projection (view.c), or the parallel one. */
 static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
 {
     int64_t x, y;
     int64_t wq = (int64_t)r->width << STP_SUBPIXEL_BITS, hq = (int64_t)r->height << STP_SUBPIXEL_BITS;
     if (r->projection == STP_PERSPECTIVE) {
-        int64_t z = p.z < r->hither ? r->hither : p.z; /* > 0 */
-        /* focal * x / z has F fractional bits; keep SUBPIXEL of them */
-        /* stp_div64_fast: the same quotients as C's operator, without a
-         * library call where 64-bit division is one (recip.c) */
-#if STP_WIDE_ARITH
-        x = stp_asr64(stp_div64_fast((int64_t)r->focal * p.x, z), F - STP_SUBPIXEL_BITS);
-        y = stp_asr64(stp_div64_fast((int64_t)r->focal * p.y, z), F - STP_SUBPIXEL_BITS);
-        out->z = (int32_t)stp_div64_fast(((int64_t)r->hither) << 30, z);
-#else
-        /* one reciprocal of z for the three quotients (z < 2^31) */
-        stp_recip_divisor dz;
-        stp_recip_divisor_init(&dz, (uint32_t)z);
-        x = stp_asr64(stp_div64_by(&dz, (int64_t)r->focal * p.x), F - STP_SUBPIXEL_BITS);
-        y = stp_asr64(stp_div64_by(&dz, (int64_t)r->focal * p.y), F - STP_SUBPIXEL_BITS);
-        out->z = (int32_t)stp_div64_by(&dz, ((int64_t)r->hither) << 30);
-#endif
-    } else {
-        x = stp_asr64((int64_t)r->focal * p.x, 2 * F - STP_SUBPIXEL_BITS);
-        y = stp_asr64((int64_t)r->focal * p.y, 2 * F - STP_SUBPIXEL_BITS);
-        out->z = -p.z;
+        stp_view_lens lens;
+        int32_t d[3];
+        lens.focal = r->focal;
+        lens.hither = r->hither;
+        lens.half_width = (int32_t)(wq / 2);
+        lens.half_height = (int32_t)(hq / 2);
+        stp_view_perspective_device(&lens, &p, d);
+        out->x = d[0];
+        out->y = d[1];
+        out->z = d[2];
+        return;
     }
-    x = wq / 2 + x;
-    y = hq / 2 - y;
+    x = wq / 2 + stp_asr64((int64_t)r->focal * p.x, 2 * F - STP_SUBPIXEL_BITS);
+    y = hq / 2 - stp_asr64((int64_t)r->focal * p.y, 2 * F - STP_SUBPIXEL_BITS);
+    out->z = -p.z;
     /* the clipper keeps points inside up to rounding: clamp the last bit */
     out->x = (int32_t)(x < 0 ? 0 : (x > wq ? wq : x));
     out->y = (int32_t)(y < 0 ? 0 : (y > hq ? hq : y));

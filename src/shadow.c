@@ -252,14 +252,16 @@ int stp_shadow_records(const stp_renderer *r, stp_vec3 normal, stp_vec3 centre, 
 /* ---- at entry: depth into the maps ---- */
 
 /* Map coordinates (Q27.4) and depth (12 fractional bits) of a clipped
- * light-frame point (z >= near > 0), as render.c's project(). */
+ * light-frame point (z >= near > 0): the one perspective projection
+ * (view.c), the map's own depth. */
 static stp_vec3 project_map(const stp_shadow_map *sm, stp_vec3 p)
 {
-    int64_t wq = (int64_t)sm->width << SUB, hq = (int64_t)sm->height << SUB;
+    int64_t wq = (int64_t)sm->width << SUB, hq = (int64_t)sm->height << SUB, u, v;
     int64_t z = p.z < sm->near ? sm->near : p.z;
-    int64_t u = wq / 2 + stp_asr64(((int64_t)sm->focal * p.x) / z, F - SUB);
-    int64_t v = hq / 2 - stp_asr64(((int64_t)sm->focal * p.y) / z, F - SUB);
     stp_vec3 out;
+    stp_view_perspective(sm->focal, sm->near, p, &u, &v, 0); /* the one projection */
+    u = wq / 2 + u;
+    v = hq / 2 - v;
     out.x = (int32_t)clamp64(u, 0, wq);
     out.y = (int32_t)clamp64(v, 0, hq);
     out.z = (int32_t)((((int64_t)sm->near * 65535) << 12) / z); /* <= 65535 << 12 */

@@ -3,6 +3,7 @@
 #include "view_private.h"
 #include "fix_private.h"
 #include "recip_private.h" /* STP_WIDE_ARITH */
+#include "project_private.h"
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -224,4 +225,26 @@ int stp_view_triangle_side(stp_vec3 from, stp_vec3 forward, int parallel, const 
         return 0; /* degenerate: the full path reports it */
     side = cx * ex + cy * ey + cz * ez;
     return side > 0 ? 1 : -1;
+}
+
+/* ---- the perspective projection (project_private.h) ---- */
+
+/* project_private.h: the 64-bit quotients, by one reciprocal of z for the
+ * three (z < 2^31) where 64-bit division is a library call, else C's
+ * operator (the header's inline form, here for files built otherwise). */
+void stp_view_perspective_wide(stp_fix focal, stp_fix hither, const stp_vec3 *pp, int64_t *x, int64_t *y,
+                               int32_t *key)
+{
+#if STP_WIDE_ARITH
+    stp_project_wide(focal, hither, pp, x, y, key);
+#else
+    stp_vec3 p = *pp;
+    int64_t z = p.z < hither ? hither : p.z; /* > 0 */
+    stp_recip_divisor dz;
+    stp_recip_divisor_init(&dz, (uint32_t)z);
+    *x = stp_asr64(stp_div64_by(&dz, (int64_t)focal * p.x), F - STP_SUBPIXEL_BITS);
+    *y = stp_asr64(stp_div64_by(&dz, (int64_t)focal * p.y), F - STP_SUBPIXEL_BITS);
+    if (key)
+        *key = (int32_t)stp_div64_by(&dz, ((int64_t)hither) << 30);
+#endif
 }

@@ -53,6 +53,9 @@ void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 
  * and from `from` of 2^29 raw units or more; see view.c). */
 int stp_view_triangle_side(stp_vec3 from, stp_vec3 forward, int parallel, const stp_vec3 *v);
 
+/* The one perspective projection: project_private.h. */
+#include "project_private.h"
+
 /* a x b with F fractional bits, each component saturated. */
 stp_vec3 stp_vec3_cross(stp_vec3 a, stp_vec3 b);
 

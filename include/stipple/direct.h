@@ -98,16 +98,9 @@ typedef struct stp_direct_light {
     stp_fix reflectivity;
 } stp_direct_light;
 
-/* The unit outward normal of every triangle of mesh into normals[3 t ..
- * 3 t + 2], Q1.14, as stp_mesh_prepare_normals but in 32-bit arithmetic
- * (its normals field is ignored): the two edge vectors cut to 15
- * significant bits together, their cross product normalised; within
- * 2^-12 of the exact unit normal while the edges keep 10 or more bits
- * after the cut (a triangle not much thinner than 1/32 of its longest
- * side).  Errors: STP_ERR_ARG (NULL, an index not below vertex_count),
- * STP_ERR_RANGE (an edge component not below 2^24 raw),
- * STP_ERR_DEGENERATE (a zero cross product after the cut).  normals[] is
- * written up to the bad triangle. */
+/* Deprecated: stp_mesh_prepare_normals(mesh, normals, NULL), the one
+ * function for mesh normals (mesh.h), which it calls: the same normals,
+ * the same errors. */
 int stp_direct_mesh_normals(const stp_mesh *mesh, int16_t *normals);
 
 /* Per-vertex scratch (caller memory, one per mesh vertex; 16 bytes). */

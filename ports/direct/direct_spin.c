@@ -58,7 +58,7 @@ int direct_spin_init(direct_spin *s)
     s->mesh.normals = s->normals;
     s->mesh.vertex_count = (uint16_t)SPIN_VERTICES;
     s->mesh.triangle_count = (uint16_t)SPIN_TRIANGLES;
-    status = stp_direct_mesh_normals(&s->mesh, s->normals);
+    status = stp_mesh_prepare_normals(&s->mesh, s->normals, 0);
     if (status != STP_OK)
         return status;
     s->light.position = point(-4 * ONE, 6 * ONE, 5 * ONE);

@@ -3,7 +3,7 @@
  * integer only, so the host and the Cortex-M firmware build the same model
  * and draw the same pictures: the torus of issue 11's bench (major radius
  * 1, minor 0.4, 25 x 20 quads split into 1000 triangles) built from
- * stp_direct_sin, normals by stp_direct_mesh_normals; eye at (0, 3, 5.2)
+ * stp_direct_sin, normals by stp_mesh_prepare_normals; eye at (0, 3, 5.2)
  * looking at the centre, 35 degrees across the 64 rows; one light at
  * (-4, 6, 5), power 9.775 (its attenuation at the centre cancelled),
  * background 0.2, R 0.7; 16 levels, Bayer 4x4; 128 x 64, 1 bit.  Frame n

@@ -5,7 +5,8 @@
  * (fallback on).  A triangle inside the view enters as with the fallback;
  * one that needs clipping, or a state only stp_renderer_polygon handles, is
  * STP_ERR_UNSUPPORTED.  Also mesh.c's vertex average and division by 3
- * against C's operators, its projection against render.c's.
+ * against C's operators (the projection is view.c's, tested by
+ * test_view_narrow).
  */
 #define STP_WITH_MESH_FALLBACK 0
 #define stp_renderer_mesh stp_renderer_mesh_nofallback
@@ -121,48 +122,10 @@ static void test_average_exact(void **state)
     }
 }
 
-/* project_inside against render.c's projection (stp_render_project) for
- * random view points: z from the hither plane to 2^28, x and y up to
- * the width of the view volume there and beyond it (clamped alike) */
-static void test_projection_exact(void **state)
-{
-    static torus_bench b;
-    char err[256];
-    uint32_t x = 987654321u;
-    long n, fast = 0;
-    (void)state;
-    assert_int_equal(torus_bench_init(&b, 400, 240, err, sizeof err), 0);
-    for (n = 0; n < 2000000; n++) {
-        stp_vec3 p;
-        stp_instr ref;
-        stp_mesh_vertex mine;
-        int32_t reach;
-        x = x * 1664525u + 1013904223u;
-        p.z = (int32_t)(x >> (4 + (x & 15u))); /* magnitudes of every size */
-        if (p.z < b.r->hither)
-            p.z = b.r->hither + (int32_t)(x & 255u);
-        reach = p.z < (1 << 27) ? 2 * p.z : (1 << 28) - 1; /* beyond the volume's side */
-        x = x * 1664525u + 1013904223u;
-        p.x = (int32_t)(x % (2u * (uint32_t)reach + 1u)) - reach;
-        x = x * 1664525u + 1013904223u;
-        p.y = (int32_t)(x % (2u * (uint32_t)reach + 1u)) - reach;
-        if (!project_inside(b.r, p, &mine))
-            continue;
-        fast++;
-        stp_render_project(b.r, p, &ref);
-        assert_int_equal(mine.dx, ref.x);
-        assert_int_equal(mine.dy, ref.y);
-        assert_int_equal(mine.dz, ref.z);
-    }
-    assert_true(fast > 1900000);
-    torus_bench_free(&b);
-}
-
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_average_exact),
-        cmocka_unit_test(test_projection_exact),
         cmocka_unit_test(test_inside_view_enters),
         cmocka_unit_test(test_fallback_refused),
     };

@@ -5,7 +5,8 @@
  * against the plain 64-bit formula, floor((p . axis - from . axis) / 2^16)
  * saturated to stp_fix: the same value for random points over the whole
  * int32 range (both of view.c's cases: every |coordinate| below 2^28, and
- * not), unit axes (exactly +-1 among them) and eyes.
+ * not), unit axes (exactly +-1 among them) and eyes; the one perspective
+ * projection's 32-bit form against C's 64-bit division.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -89,10 +90,50 @@ static void test_exact(void **state)
     assert_true(small > 100000 && small < 1900000);
 }
 
+/* floor(v / 2^s) of a 64-bit value, by plain division (no shift of a
+ * negative value) */
+static int64_t floor_div_pow2(int64_t v, int s)
+{
+    int64_t d = (int64_t)1 << s, q = v / d;
+    return (v % d != 0 && v < 0) ? q - 1 : q;
+}
+
+/* stp_view_perspective's 32-bit form (the exact 32-bit quotients and the
+ * 64-bit fallback by a reciprocal) against C's 64-bit division: the same
+ * offsets and depth key for random points, near and far, focal lengths and
+ * hither distances, and z below hither raised to it. */
+static void test_perspective(void **state)
+{
+    int i;
+    (void)state;
+    for (i = 0; i < 400000; i++) {
+        stp_fix focal = (stp_fix)(1 + next_random() % (1u << (i % 4 == 0 ? 30 : 24)));
+        stp_fix hither = (stp_fix)(1 + next_random() % (1u << (8 + i % 16)));
+        int zbits = 1 + (int)(next_random() % 31), xbits = 1 + (int)(next_random() % 31);
+        stp_vec3 p;
+        int64_t x, y, z, wx, wy;
+        int32_t key;
+        p.x = (int32_t)(next_random() & (0xFFFFFFFFu >> (32 - xbits)));
+        p.x = (next_random() & 1) ? p.x : -p.x;
+        p.y = (int32_t)next_random() >> (next_random() % 32);
+        p.z = (int32_t)(next_random() >> (32 - zbits)) & 0x7FFFFFFF;
+        if (i % 7 == 0)
+            p.z = -(int32_t)(next_random() >> 8); /* behind: raised to hither */
+        stp_view_perspective(focal, hither, p, &x, &y, &key);
+        z = p.z < hither ? hither : p.z;
+        wx = floor_div_pow2(((int64_t)focal * p.x) / z, STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
+        wy = floor_div_pow2(((int64_t)focal * p.y) / z, STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
+        assert_true(x == wx);
+        assert_true(y == wy);
+        assert_true(key == (int32_t)((((int64_t)hither) << 30) / z));
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_exact),
+        cmocka_unit_test(test_perspective),
     };
     return cmocka_run_group_tests(tests, 0, 0);
 }

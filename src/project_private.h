@@ -1,0 +1,173 @@
+/* SPDX-License-Identifier: MIT */
+/* Private: the one perspective projection, used by polygon entry
+ * (render.c), mesh entry (mesh.c), shadow maps (shadow.c) and direct
+ * drawing (direct.c).  Inline: it runs once per vertex, and the 32-bit
+ * form's common case is a few products; the 64-bit quotients are view.c's
+ * stp_view_perspective_wide. */
+#ifndef STIPPLE_PROJECT_PRIVATE_H
+#define STIPPLE_PROJECT_PRIVATE_H
+
+#include <stdint.h>
+
+#include "stipple/render.h" /* stp_vec3, STP_SUBPIXEL_BITS */
+#include "fix_private.h"    /* stp_bit_length32 */
+#include "recip_private.h"  /* STP_WIDE_ARITH, stp_umul32x32, stp_recip32 */
+
+/* A perspective projection's constants: focal, hither (stp_fix, > 0), and
+ * the picture's half width and height in Q27.4 (width 2^3, height 2^3). */
+typedef struct stp_view_lens {
+    stp_fix focal, hither;
+    int32_t half_width, half_height;
+} stp_view_lens;
+
+/* The projection of view point *p, its z raised to hither when nearer:
+ *   *x = floor(trunc(focal p.x / z) / 2^(F - STP_SUBPIXEL_BITS)), *y the
+ *   same of p.y: the device offsets from the picture's centre in Q27.4,
+ *   y up; *key = trunc(hither 2^30 / z), the depth key (key NULL: not
+ *   formed).
+ * focal > 0, hither > 0 (stp_fix); |*x|, |*y| < 2^(63 - F).  By 64-bit
+ * quotients (one reciprocal of z on targets without STP_WIDE_ARITH). */
+void stp_view_perspective_wide(stp_fix focal, stp_fix hither, const stp_vec3 *p, int64_t *x, int64_t *y,
+                               int32_t *key);
+
+#if !STP_WIDE_ARITH
+/* The reciprocal of z, scaled by f (f / z as w 2^-sh, 2^31 <= w < 2^32, 0
+ * < f < 2^31): z = dn 2^-s with dn in [2^31, 2^32) and 2^32 + v =
+ * floor((2^64 - 1) / dn) (stp_recip32), so P = f (2^32 + v) < 2^64
+ * approximates f 2^64 / dn from below within f + 1 (relative 2^-31); w =
+ * P's top 32 bits (P >> t, w >= 2^31) and sh = 64 - t - s. */
+static inline void stp_project_scale(uint32_t f, uint32_t v, int s, uint32_t *w, int *sh)
+{
+    uint64_t p = ((uint64_t)f << 32) + stp_umul32x32(f, v);
+    uint32_t ph = (uint32_t)(p >> 32), pl = (uint32_t)p; /* ph >= f >= 1 */
+    int t = stp_bit_length32(ph);
+    *w = t == 32 ? ph : (ph << (32 - t)) | (pl >> t);
+    *sh = 64 - t - s;
+}
+
+/* floor(f m / z) exactly, for m < 2^31 (n_low = f m mod 2^32) and z <
+ * 2^29, from the estimate e = floor(m w / 2^sh): every step rounds down, so
+ * e <= the quotient Q, and Q - e <= 6 Q 2^-32 + 1 (w 2^-sh is below f / z
+ * by at most (2 f + 2^t) 2^(s - 64) <= 6 f 2^(s - 64), and m f 2^(s - 64)
+ * <= Q 2^-32), below 5 for Q < 2^31: the remainder f m - e z is in
+ * [0, 5 z), below 2^32, so taken mod 2^32 it corrects e.  0 when the
+ * quotient is 2^31 or more. */
+static inline int stp_project_quotient(uint32_t m, uint32_t w, int sh, uint32_t n_low, uint32_t z, uint32_t *q)
+{
+    uint64_t prod = stp_umul32x32(m, w);
+    uint32_t hi = (uint32_t)(prod >> 32), lo = (uint32_t)prod, e, rem;
+    if (sh >= 32) {
+        e = sh - 32 >= 32 ? 0u : hi >> (sh - 32);
+    } else {
+        if ((hi >> sh) != 0)
+            return 0;
+        e = (hi << (32 - sh)) | (lo >> sh);
+    }
+    if (e >= 0x80000000u)
+        return 0;
+    rem = n_low - e * z; /* in [0, 5 z): below 2^32 */
+    while (rem >= z) {
+        e++;
+        rem -= z;
+    }
+    *q = e;
+    return e < 0x80000000u;
+}
+
+/* The offset from the quotient q = floor(f |c| / z): floor of the signed
+ * quotient truncated toward zero, at STP_SUBPIXEL_BITS. */
+static inline int32_t stp_project_subpixel(int negative, uint32_t q)
+{
+    const int shift = STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS;
+    return negative ? -(int32_t)((q + ((1u << shift) - 1u)) >> shift) : (int32_t)(q >> shift);
+}
+
+/* The 32-bit form (z already raised to hither): 1 on success, 0 when z or
+ * a quotient is out of its range (then the 64-bit quotients). */
+static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, const stp_vec3 *p, int32_t *x, int32_t *y,
+                                    int32_t *key)
+{
+    uint32_t mx = p->x < 0 ? 0u - (uint32_t)p->x : (uint32_t)p->x;
+    uint32_t my = p->y < 0 ? 0u - (uint32_t)p->y : (uint32_t)p->y, qx, qy, qk, w, wh, v;
+    int sz, sh, shh;
+    if (z >= ((uint32_t)1 << 29) || mx >= 0x80000000u || my >= 0x80000000u || f >= 0x80000000u ||
+        h >= 0x80000000u)
+        return 0;
+    sz = 32 - stp_bit_length32(z);
+    v = stp_recip32(z << sz);
+    stp_project_scale(f, v, sz, &w, &sh);
+    if (!stp_project_quotient(mx, w, sh, f * mx, z, &qx) || !stp_project_quotient(my, w, sh, f * my, z, &qy))
+        return 0;
+    if (key) {
+        stp_project_scale(h, v, sz, &wh, &shh);
+        if (!stp_project_quotient((uint32_t)1 << 30, wh, shh, h << 30, z, &qk))
+            return 0;
+        *key = (int32_t)qk;
+    }
+    *x = stp_project_subpixel(p->x < 0, qx);
+    *y = stp_project_subpixel(p->y < 0, qy);
+    return 1;
+}
+#endif
+
+#if STP_WIDE_ARITH
+/* stp_view_perspective_wide where 64-bit division is one instruction:
+ * inline, C's quotients (stp_div64_fast). */
+static inline void stp_project_wide(stp_fix focal, stp_fix hither, const stp_vec3 *p, int64_t *x, int64_t *y,
+                                    int32_t *key)
+{
+    int64_t z = p->z < hither ? hither : p->z; /* > 0 */
+    *x = stp_asr64(stp_div64_fast((int64_t)focal * p->x, z), STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
+    *y = stp_asr64(stp_div64_fast((int64_t)focal * p->y, z), STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
+    if (key)
+        *key = (int32_t)stp_div64_fast(((int64_t)hither) << 30, z);
+}
+#define STP_PROJECT_WIDE stp_project_wide /* inline here */
+#else
+#define STP_PROJECT_WIDE stp_view_perspective_wide
+#endif
+
+/* The projection of p (stp_view_perspective_wide's values, every form). */
+static inline void stp_view_perspective(stp_fix focal, stp_fix hither, stp_vec3 p, int64_t *x, int64_t *y,
+                                        int32_t *key)
+{
+#if !STP_WIDE_ARITH
+    int32_t x32, y32;
+    if (stp_project_exact((uint32_t)focal, (uint32_t)hither, (uint32_t)(p.z < hither ? hither : p.z), &p, &x32,
+                          &y32, key)) {
+        *x = x32;
+        *y = y32;
+        return;
+    }
+#endif
+    STP_PROJECT_WIDE(focal, hither, &p, x, y, key);
+}
+
+/* The device position of view point *p (perspective, clipped: inside up
+ * to rounding), Q27.4, and its depth key: out[0] = half_width + the
+ * offset, out[1] = half_height - the offset, clamped to [0, 2 half_width]
+ * and [0, 2 half_height] (the clipper keeps points inside up to rounding:
+ * the clamp takes its last bit), out[2] the key. */
+static inline void stp_view_perspective_device(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3])
+{
+    int64_t dx, dy;
+#if !STP_WIDE_ARITH
+    int32_t x32, y32;
+    if (stp_project_exact((uint32_t)lens->focal, (uint32_t)lens->hither,
+                          (uint32_t)(p->z < lens->hither ? lens->hither : p->z), p, &x32, &y32, &out[2])) {
+        /* |offset| < 2^(31 - 12): the sums fit int32 */
+        x32 = lens->half_width + x32;
+        y32 = lens->half_height - y32;
+        out[0] = x32 < 0 ? 0 : (x32 > 2 * lens->half_width ? 2 * lens->half_width : x32);
+        out[1] = y32 < 0 ? 0 : (y32 > 2 * lens->half_height ? 2 * lens->half_height : y32);
+        return;
+    }
+#endif
+    STP_PROJECT_WIDE(lens->focal, lens->hither, p, &dx, &dy, &out[2]);
+    dx = lens->half_width + dx;
+    dy = lens->half_height - dy;
+    out[0] = (int32_t)(dx < 0 ? 0 : (dx > 2 * lens->half_width ? 2 * lens->half_width : dx));
+    out[1] = (int32_t)(dy < 0 ? 0 : (dy > 2 * lens->half_height ? 2 * lens->half_height : dy));
+}
+
+#endif
