@@ -25,7 +25,7 @@ cpu="-mcpu=cortex-m0plus -mthumb -mfloat-abi=soft"
 defs="-DSTP_WITH_SPECULAR=0 -DSTP_MAX_LIGHTS=1"
 cflags="-std=c99 $cpu -Os -ffreestanding -ffunction-sections -fdata-sections -Wall -Wextra -Werror"
 inc="-I $src/include -I $src/src -I $src/ports/direct -I $src/ports/stellaris -I $src/ports/controllers"
-core="direct direct_band direct_view shade_fast view recip mesh fix"
+core="direct direct_band direct_view shade_fast shade view recip mesh fix"
 rm -rf "$work/obj" && mkdir -p "$work/obj"
 
 # ---- 1. the core alone, per object
@@ -93,7 +93,7 @@ arm-none-eabi-gcc $cflags $defs $inc -flto -nostdlib -Wl,--gc-sections -T "$st/l
     "$st/main_direct.c" "$src/ports/direct/direct_spin.c" "$st/startup.c" "$st/semihost.c" \
     "$st/lm3s6965_oled.c" "$st/board_lm3s6965.c" "$src/ports/controllers/panel.c" \
     "$src/ports/controllers/ssd0323.c" "$src/src/direct.c" "$src/src/direct_band.c" \
-    "$src/src/direct_view.c" "$src/src/shade_fast.c" "$src/src/view.c" "$src/src/recip.c" "$src/src/mesh.c" "$src/src/fix.c" "$work/obj/libc_min.x" -lgcc \
+    "$src/src/direct_view.c" "$src/src/shade_fast.c" "$src/src/shade.c" "$src/src/view.c" "$src/src/recip.c" "$src/src/mesh.c" "$src/src/fix.c" "$work/obj/libc_min.x" -lgcc \
     -Wl,-Map="$work/lm3s6965.map" -o "$work/stipple_fw_lm3s6965evb_direct.elf"
 echo "== whole lm3s6965evb image (LTO, --gc-sections)"
 arm-none-eabi-size "$work/stipple_fw_lm3s6965evb_direct.elf"
