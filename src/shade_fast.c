@@ -911,8 +911,15 @@ static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const 
 }
 #endif
 
+#if STP_WITH_SPECULAR
 /* The exact route: stp_shade_unit (shade.c) with the prepared lighting and
- * material, the Q1.14 normal and E as STP_UNIT vectors. */
+ * material, the Q1.14 normal and E as STP_UNIT vectors.  Builds without the
+ * highlight (STP_WITH_SPECULAR 0: the lean microcontroller configuration)
+ * leave it out, and with it shade.c (about 1.7 KB on a Cortex-M0+, over
+ * 5 KB on AVR): there it would serve only lights whose gain
+ * BRIGHT P |R| / C exceeds FAST_MAX_GAIN, which keep the fast route's
+ * error (not bounded by tests/shade_accuracy, which runs with the
+ * highlight). */
 static stp_fix face_exact(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
 {
     stp_lighting lighting;
@@ -939,6 +946,7 @@ static stp_fix face_exact(const stp_shade_fast *s, const int16_t normal[3], stp_
     material.specular = s->specular ? s->x_ks : 0;
     return stp_shade_unit(&lighting, &material, n, point, e, stp_unit_dot(n, e));
 }
+#endif
 
 /* Where the fast route keeps its error within the bound (about 6e-4
  * measured, tests/shade_accuracy; the exact route everywhere else):
@@ -978,7 +986,11 @@ static void exact_prepare(stp_shade_fast *s, const stp_lighting *lighting, const
                           int parallel, stp_vec3 parallel_dir)
 {
     int j;
+#if STP_WITH_SPECULAR
     s->exact = face_exact;
+#else
+    s->exact = 0;
+#endif
     s->x_bright = lighting->brightness;
     s->x_background = lighting->background;
     s->x_c = lighting->attenuation_c;

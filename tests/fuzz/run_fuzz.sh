@@ -16,7 +16,7 @@
 #                   its files do not (-set_cover_merge=1); its files stay
 #   -- ARGS...      further libFuzzer flags for the fuzzing runs
 # TARGET: fuzz_nff fuzz_obj fuzz_off fuzz_ply fuzz_pnm fuzz_display_file fuzz_raytrace
-#         fuzz_playback fuzz_frame (default all).
+#         fuzz_playback fuzz_spans fuzz_frame (default all).
 #
 # New inputs found while fuzzing go to <bin-dir>/work/<target>/, never into
 # the committed corpus.  A target that crashes, leaks, times out or runs out
@@ -27,7 +27,7 @@ set -u
 
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
-all_targets=(fuzz_nff fuzz_obj fuzz_off fuzz_ply fuzz_pnm fuzz_display_file fuzz_raytrace fuzz_playback fuzz_frame)
+all_targets=(fuzz_nff fuzz_obj fuzz_off fuzz_ply fuzz_pnm fuzz_display_file fuzz_raytrace fuzz_playback fuzz_spans fuzz_frame)
 
 seconds=${STP_FUZZ_SECONDS:-20}
 build="$root/build-fuzz"
