@@ -34,13 +34,15 @@ static int shades_ok(const stp_instr *v, int32_t n)
 }
 #endif
 
-/* The polygon whose header is df[k]: its size, its vertices inside the
- * data and on the device. */
+/* The polygon whose header is df[k]: its size (clipping may add up to 5
+ * vertices to an entered polygon: STP_CLIP_VERTICES, what the scan
+ * converter's arrays hold), its vertices inside the data and on the
+ * device. */
 static int polygon_ok(const stp_instr *df, uint32_t k, uint32_t used, uint32_t width,
                       uint32_t height)
 {
     int32_t n = df[k].op, i;
-    if (n > STP_MAX_POLYGON_VERTICES || (uint32_t)n > used - k)
+    if (n > STP_CLIP_VERTICES || (uint32_t)n > used - k)
         return 0;
     for (i = 0; i < n; i++)
         if ((i > 0 && df[k + (uint32_t)i].op != STP_OP_LINE) ||
