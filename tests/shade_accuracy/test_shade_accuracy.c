@@ -32,7 +32,7 @@
 #include <cmocka.h>
 
 #include "cases.h"
-#include "reference/shade_ref.h"
+#include "case_reference.h"
 #include "shade_fast_private.h"
 #include "recip_private.h"
 
@@ -55,39 +55,6 @@ typedef struct acc_stats {
 static double fixd(stp_fix v)
 {
     return (double)v / STP_FIX_ONE;
-}
-
-static ref_vec3 vecd(stp_vec3 v)
-{
-    return ref_v3(fixd(v.x), fixd(v.y), fixd(v.z));
-}
-
-/* the reference shade, and its value before min(1, .) in *raw */
-static double reference(const acc_case *c, double *raw)
-{
-    ref_lighting lg;
-    ref_material m;
-    ref_vec3 n, dir;
-    int j;
-    double s;
-    lg.brightness = fixd(c->lighting.brightness);
-    lg.background = fixd(c->lighting.background);
-    lg.c = fixd(c->lighting.attenuation_c);
-    lg.count = c->lighting.count;
-    for (j = 0; j < c->lighting.count; j++) {
-        lg.lights[j].position = vecd(c->lighting.lights[j].position);
-        lg.lights[j].power = fixd(c->lighting.lights[j].power);
-    }
-    m.reflectivity = fixd(c->material.reflectivity);
-    m.refraction = fixd(c->material.refraction);
-    m.gloss = fixd(c->material.gloss);
-    m.specular = fixd(c->material.specular);
-    (void)ref_unit(ref_v3(c->normal[0], c->normal[1], c->normal[2]), &n);
-    (void)ref_unit(vecd(c->parallel_dir), &dir);
-    s = ref_shade_point(&lg, &m, n, vecd(c->point), vecd(c->eye), c->parallel, dir);
-    lg.brightness *= 0x1p-40; /* the same sum, far below the cap */
-    *raw = ref_shade_point(&lg, &m, n, vecd(c->point), vecd(c->eye), c->parallel, dir) * 0x1p40;
-    return s;
 }
 
 static void account(acc_stats *st, uint32_t index, stp_fix got, double ref, double raw, int verbose)
@@ -152,7 +119,7 @@ static void test_host(void **state)
         stp_shade_fast fast;
         double raw, ref;
         acc_case_make(&c, i);
-        ref = reference(&c, &raw);
+        ref = acc_reference(&c, &raw);
         account(&classic, i,
                 stp_shade_point(&c.lighting, &c.material, normal_fix(c.normal), c.point, c.eye, c.parallel,
                                 c.parallel_dir),
@@ -186,7 +153,7 @@ static void test_m0_log(void **state)
             double raw, ref;
             acc_case_make(&c, (uint32_t)index);
             assert_int_equal(acc_case_digest(&c), digest); /* the same case on both sides */
-            ref = reference(&c, &raw);
+            ref = acc_reference(&c, &raw);
             account(&face, (uint32_t)index, (stp_fix)fs, ref, raw, 1);
             account(&classic, (uint32_t)index, (stp_fix)cs, ref, raw, 1);
             done++;

@@ -59,39 +59,11 @@ static int typical(const acc_case *c)
 #include <stdlib.h>
 #include <string.h>
 
-#include "reference/shade_ref.h"
+#include "case_reference.h"
 
 static double fixd(stp_fix v)
 {
     return (double)v / STP_FIX_ONE;
-}
-
-static ref_vec3 vecd(stp_vec3 v)
-{
-    return ref_v3(fixd(v.x), fixd(v.y), fixd(v.z));
-}
-
-static double reference(const acc_case *c)
-{
-    ref_lighting lg;
-    ref_material m;
-    ref_vec3 n, dir;
-    int j;
-    lg.brightness = fixd(c->lighting.brightness);
-    lg.background = fixd(c->lighting.background);
-    lg.c = fixd(c->lighting.attenuation_c);
-    lg.count = c->lighting.count;
-    for (j = 0; j < c->lighting.count; j++) {
-        lg.lights[j].position = vecd(c->lighting.lights[j].position);
-        lg.lights[j].power = fixd(c->lighting.lights[j].power);
-    }
-    m.reflectivity = fixd(c->material.reflectivity);
-    m.refraction = fixd(c->material.refraction);
-    m.gloss = fixd(c->material.gloss);
-    m.specular = fixd(c->material.specular);
-    (void)ref_unit(ref_v3(c->normal[0], c->normal[1], c->normal[2]), &n);
-    (void)ref_unit(vecd(c->parallel_dir), &dir);
-    return ref_shade_point(&lg, &m, n, vecd(c->point), vecd(c->eye), c->parallel, dir);
 }
 
 int main(int argc, char **argv)
@@ -111,7 +83,7 @@ int main(int argc, char **argv)
             if (only >= 0 && !typical(&c))
                 continue;
             prepare_cfg(&f, &c, k);
-            err = fabs(fixd(stp_shade_fast_face(&f, c.normal, c.point)) - (only >= 0 ? 0.0 : reference(&c)));
+            err = fabs(fixd(stp_shade_fast_face(&f, c.normal, c.point)) - (only >= 0 ? 0.0 : acc_reference(&c, NULL)));
             if (err > max_all)
                 max_all = err;
             if (!typical(&c))

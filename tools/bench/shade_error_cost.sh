@@ -18,7 +18,7 @@ for tool in cc qemu-system-arm arm-none-eabi-gcc valgrind callgrind_annotate gnu
 done
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-src=(tools/bench/shade_error_cost.c tests/shade_accuracy/cases.c tests/reference/shade_ref.c src/shade.c
+src=(tools/bench/shade_error_cost.c tests/shade_accuracy/cases.c tests/shade_accuracy/case_reference.c tests/reference/shade_ref.c src/shade.c
      src/shade_fast.c src/fix.c src/recip.c src/div64.c)
 inc=(-I include -I src -I tests -I tests/shade_accuracy)
 cd "$here"
