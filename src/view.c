@@ -130,7 +130,7 @@ typedef struct point_halves {
     uint32_t l[3];
 } point_halves;
 
-/* floor((p . a - from) / 2^16) saturated (from = from_high 2^16 +
+/* floor((p . a - from) / 2^F) saturated (from = from_high 2^16 +
  * from_low), the same value as the 64-bit formula's, for an axis a
  * (|a_i| < 2^17), from 32-bit products of 16-bit halves (ARMv6-M has no
  * 32 x 32 -> 64 multiply; the library's costs ~40 instructions a call).
@@ -143,7 +143,12 @@ typedef struct point_halves {
  * with |pl ah| < 2^17, pl al < 2^32 (unsigned), |small| < 2^19.  small:
  * every |p_i| < 2^28 (|ph| < 2^12): |ph a_i| < 2^29, the sum below
  * 1.5 2^30, all in 32 bits; else ph a_i = 2^16 ph ah + ph al, |ph ah| <=
- * 2^16, |ph al| < 2^31, summed in 64 bits. */
+ * 2^16, |ph al| < 2^31, summed in 64 bits.  That is floor(S / 2^16) for
+ * the exact S = p . a - from; F != 16: F > 16 shifts it further (a floor
+ * of a floor), F < 16 appends the top 16 - F bits of S mod 2^16, the low
+ * sum's (r & 0xFFFF).  (Till this was written for any F, the 32-bit form
+ * divided by 2^16 at every precision: at F = 12 every view coordinate
+ * came out 16 times too small, the light's included.) */
 static stp_fix axis_coordinate(const point_halves *p, int small_point, stp_vec3 a,
                                int64_t from_high, int32_t from_low)
 {
@@ -151,10 +156,10 @@ static stp_fix axis_coordinate(const point_halves *p, int small_point, stp_vec3 
     uint32_t al0 = (uint32_t)a.x & 0xFFFFu, al1 = (uint32_t)a.y & 0xFFFFu,
              al2 = (uint32_t)a.z & 0xFFFFu;
     uint32_t l0 = p->l[0] * al0, l1 = p->l[1] * al1, l2 = p->l[2] * al2;
+    /* r in (-2^16, 3 2^16): S mod 2^16 = r mod 2^16 */
+    int32_t r = (int32_t)(l0 & 0xFFFFu) + (int32_t)(l1 & 0xFFFFu) + (int32_t)(l2 & 0xFFFFu) - from_low;
     int32_t small = (int32_t)p->l[0] * ah0 + (int32_t)p->l[1] * ah1 + (int32_t)p->l[2] * ah2 +
-                    (int32_t)(l0 >> 16) + (int32_t)(l1 >> 16) + (int32_t)(l2 >> 16) +
-                    high16((int32_t)(l0 & 0xFFFFu) + (int32_t)(l1 & 0xFFFFu) +
-                           (int32_t)(l2 & 0xFFFFu) - from_low);
+                    (int32_t)(l0 >> 16) + (int32_t)(l1 >> 16) + (int32_t)(l2 >> 16) + high16(r);
     int64_t v;
     if (small_point) {
         v = (int64_t)(p->h[0] * a.x + p->h[1] * a.y + p->h[2] * a.z + small) - from_high;
@@ -164,6 +169,12 @@ static stp_fix axis_coordinate(const point_halves *p, int small_point, stp_vec3 
             (int64_t)(p->h[1] * (int32_t)al1) + (int64_t)(p->h[2] * (int32_t)al2) +
             ((int64_t)small - from_high);
     }
+#if F > 16
+    v = stp_asr64(v, F > 16 ? F - 16 : 0);
+#elif F < 16
+    /* |v| < 2^35 (|S| < 2^51): times 2^(16 - F) well inside 64 bits */
+    v = v * ((int64_t)1 << (F < 16 ? 16 - F : 0)) + (int64_t)(((uint32_t)r & 0xFFFFu) >> (F < 16 ? F : 0));
+#endif
     return stp_fix_sat64(v);
 }
 
