@@ -14,7 +14,10 @@
  *   projection the one perspective projection (view.c's
  *              stp_view_perspective, the renderer's): floor(trunc(focal x
  *              / z) 2^-12) in Q4 exactly, from one 32-bit reciprocal of z
- *              (z in [hither, 2^26) is below 2^29: the 32-bit form)
+ *              (z in [hither, 2^26) is below 2^29: the 32-bit form,
+ *              project_private.h's stp_project_exact, alone on targets
+ *              without STP_WIDE_ARITH: its 64-bit fallback could only
+ *              give points beyond the device range)
  *   shading    shade_fast.c (its file comment): its prepare, the one the
  *              mesh route uses, and its 32-bit face path. */
 #include "stipple/direct.h"
@@ -114,13 +117,30 @@ static int light_ok(const stp_direct_light *l)
 static int project_point(const stp_direct_view *view, stp_direct_point *pt)
 {
     stp_vec3 p;
-    int64_t c[2];
+    int32_t c[2];
     p.x = pt->x;
     p.y = pt->y;
     p.z = pt->z;
-    stp_view_perspective(view->focal, view->hither, p, &c[0], &c[1], 0);
-    c[0] = (int64_t)view->width * 8 + c[0];
-    c[1] = (int64_t)view->height * 8 - c[1];
+#if STP_WIDE_ARITH
+    {
+        int64_t w[2];
+        stp_view_perspective(view->focal, view->hither, p, &w[0], &w[1], 0);
+        /* beyond 2^20 (Q4) an offset lands outside the device range */
+        if (w[0] <= -((int64_t)1 << 20) || w[0] >= (int64_t)1 << 20 || w[1] <= -((int64_t)1 << 20) ||
+            w[1] >= (int64_t)1 << 20)
+            return 0;
+        c[0] = (int32_t)w[0];
+        c[1] = (int32_t)w[1];
+    }
+#else
+    /* the projection's 32-bit form alone: it declines (z >= 2^29, a
+     * quotient of 2^31 or more) only where the 64-bit one would land
+     * beyond the device range (|offset| >= 2^(31 - F) pixels > 512) */
+    if (!stp_project_exact((uint32_t)view->focal, (uint32_t)view->hither, (uint32_t)p.z, &p, &c[0], &c[1], 0))
+        return 0;
+#endif
+    c[0] = (int32_t)view->width * 8 + c[0];
+    c[1] = (int32_t)view->height * 8 - c[1];
     if (c[0] < -DEVICE_LIMIT || c[0] >= DEVICE_LIMIT || c[1] < -DEVICE_LIMIT || c[1] >= DEVICE_LIMIT)
         return 0;
     pt->dx = (int16_t)c[0];

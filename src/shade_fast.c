@@ -946,7 +946,6 @@ static stp_fix face_exact(const stp_shade_fast *s, const int16_t normal[3], stp_
     material.specular = s->specular ? s->x_ks : 0;
     return stp_shade_unit(&lighting, &material, n, point, e, stp_unit_dot(n, e));
 }
-#endif
 
 /* Where the fast route keeps its error within the bound (about 6e-4
  * measured, tests/shade_accuracy; the exact route everywhere else):
@@ -986,11 +985,7 @@ static void exact_prepare(stp_shade_fast *s, const stp_lighting *lighting, const
                           int parallel, stp_vec3 parallel_dir)
 {
     int j;
-#if STP_WITH_SPECULAR
     s->exact = face_exact;
-#else
-    s->exact = 0;
-#endif
     s->x_bright = lighting->brightness;
     s->x_background = lighting->background;
     s->x_c = lighting->attenuation_c;
@@ -1006,6 +1001,7 @@ static void exact_prepare(stp_shade_fast *s, const stp_lighting *lighting, const
     s->exact_always = (uint8_t)!fast_keeps_bound(s, lighting, material);
     s->fast_min_cos = s->specular ? FAST_MIN_COS : 0;
 }
+#endif
 
 void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
                             const stp_material *material, stp_vec3 eye, int parallel,
@@ -1101,7 +1097,9 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
 #if STP_WIDE_ARITH
     wide_prepare(s, lighting, material, parallel, parallel_dir);
 #endif
+#if STP_WITH_SPECULAR
     exact_prepare(s, lighting, material, parallel, parallel_dir);
+#endif
 }
 
 stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
@@ -1116,8 +1114,10 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     stp_sf16 inv_ne = {0, 0};
     uint32_t inv_ne_q26 = 0;
 #endif
+#if STP_WITH_SPECULAR
     if (s->exact && s->exact_always && s->count != 0)
         return s->exact(s, normal, point);
+#endif
 #if STP_WIDE_ARITH
     /* the host path; the code below is the 32-bit targets' (kept compiled
      * on the host: its helpers serve prepare and the Fresnel) */

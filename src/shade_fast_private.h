@@ -73,9 +73,13 @@ typedef struct stp_shade_fast {
      * (E.H = c; below 1/4, and for n < 1, F is computed exactly) */
     uint16_t fresnel[STP_SHADE_FAST_FRESNEL_NODES];
 #endif
+#if STP_WITH_SPECULAR
     /* The exact route (stp_shade_unit, shade.c) for the faces where the
      * fast formats cannot promise the error bound (stp_shade_fast_face):
-     * the lighting's and the material's values as given. */
+     * the lighting's and the material's values as given.  Builds without
+     * the highlight (STP_WITH_SPECULAR 0, the lean microcontroller
+     * configuration) have no exact route: neither these fields nor the
+     * code that fills and reads them (shade_fast.c). */
     /* the exact route, set by stp_shade_fast_prepare (NULL in a struct
      * filled by hand: the fast route always, and no link to shade.c) */
     stp_fix (*exact)(const struct stp_shade_fast *s, const int16_t normal[3], stp_vec3 point);
@@ -86,6 +90,7 @@ typedef struct stp_shade_fast {
     stp_fix x_bright, x_background, x_c, x_refl, x_refraction, x_gloss, x_ks;
     stp_fix x_power[STP_MAX_LIGHTS];
     stp_vec3 x_dir;       /* parallel: the direction towards the eye */
+#endif
 #if STP_WIDE_ARITH /* the 64-bit host path (shade_fast.c "wide"); parallel
                       projection there keeps the direction towards the eye
                       (not 0) in eye */

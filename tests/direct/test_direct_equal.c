@@ -1,0 +1,237 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Direct drawing against the renderer's mesh entry, picture for picture
+ * (issue 20): the benchmark torus (tools/bench/torus.c, 1000 triangles,
+ * vertices merged as torus_bench_use_mesh merges them) still and in 8
+ * poses, at 128 x 64 and 400 x 240, drawn by stp_direct_* and by
+ * stp_renderer_mesh + stp_renderer_render (the same view, focal length,
+ * light, material without highlight, 16 levels, Bayer 4 x 4 cell, back
+ * faces removed, display-file order: direct drawing has no Z buffer, so
+ * the Z-buffer case is not one it can draw).  Each pair is compared with
+ * memcmp; the count of differing pixels is printed either way.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "stipple/direct.h"
+#include "stipple/stipple.h"
+#include "torus.h"
+
+#define MAX_W 400
+#define MAX_H 240
+#define LEVELS 16
+
+typedef struct work {
+    torus_bench bench;
+    stp_renderer_storage storage;
+    stp_instr df[5 * TORUS_TRIANGLES];
+    stp_mesh_vertex scratch[3 * TORUS_TRIANGLES];
+    stp_direct_point pts[3 * TORUS_TRIANGLES];
+    uint16_t faces[TORUS_TRIANGLES];
+    uint8_t direct[MAX_H * MAX_W / 8];
+    uint8_t full[MAX_H * MAX_W / 8];
+    uint8_t band[MAX_H * MAX_W / 8];
+    int width, height;
+} work;
+
+static stp_fix fx(double v)
+{
+    return (stp_fix)(v * STP_FIX_ONE + (v < 0 ? -0.5 : 0.5));
+}
+
+static stp_vec3 vec(double x, double y, double z)
+{
+    stp_vec3 p;
+    p.x = fx(x);
+    p.y = fx(y);
+    p.z = fx(z);
+    return p;
+}
+
+static int copy_flush(stp_port *port, uint32_t y0, uint32_t rows, const uint8_t *px, size_t stride)
+{
+    work *w = port->user;
+    memcpy(w->full + (size_t)y0 * stride, px, rows * stride);
+    return 0;
+}
+
+/* The scene: torus.h's eye, light and field of view; direct drawing's one
+ * light (power 9, background 0.2, C 1, reflectivity 0.7). */
+static void scene_view(stp_view *v)
+{
+    memset(v, 0, sizeof *v);
+    v->from = vec(0, 3, 5.2);
+    v->at = vec(0, 0, 0);
+    v->up = vec(0, 1, 0);
+    v->fov_degrees = fx(35);
+    v->hither = fx(0.1);
+    v->projection = STP_PERSPECTIVE;
+}
+
+static stp_direct_light scene_light(void)
+{
+    stp_direct_light l;
+    l.position = vec(-4, 6, 5);
+    l.power = fx(9);
+    l.brightness = fx(1);
+    l.background = fx(0.2);
+    l.attenuation_c = fx(1);
+    l.reflectivity = fx(0.7);
+    return l;
+}
+
+static void draw_full(work *w, const stp_view *view, const stp_direct_light *dl, const stp_direct_model *pose,
+                      const stp_cell *cell)
+{
+    stp_renderer *r = stp_renderer_create(&w->storage, sizeof w->storage, w->df, 5 * TORUS_TRIANGLES,
+                                          (uint32_t)w->width, (uint32_t)w->height);
+    stp_lighting l;
+    stp_material mat;
+    stp_transform t;
+    stp_port port;
+    stp_output out;
+    stp_frame_memory mem;
+    int i, j;
+    assert_non_null(r);
+    assert_int_equal(stp_renderer_set_view(r, view), STP_OK);
+    stp_lighting_default(&l);
+    l.brightness = dl->brightness;
+    l.background = dl->background;
+    l.attenuation_c = dl->attenuation_c;
+    l.count = 1;
+    l.lights[0].position = dl->position;
+    l.lights[0].power = dl->power;
+    assert_int_equal(stp_renderer_set_lighting(r, &l), STP_OK);
+    stp_material_default(&mat);
+    mat.reflectivity = dl->reflectivity;
+    mat.specular = 0;
+    assert_int_equal(stp_renderer_set_object_shade(r, &mat), STP_OK);
+    assert_int_equal(stp_renderer_set_shading(r, 1), STP_OK);
+    assert_int_equal(stp_renderer_set_levels(r, LEVELS), STP_OK);
+    assert_int_equal(stp_renderer_set_backface_removal(r, 1), STP_OK);
+    assert_int_equal(stp_segment_create(r, 1), STP_OK);
+    /* the pose's rotation (Q1.14) times its scale, in stp_fix */
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            t.m[i][j] = (stp_fix)(((int64_t)pose->rot[i][j] * pose->scale) >> 14);
+    t.t = pose->translate;
+    assert_int_equal(stp_renderer_set_transform(r, &t), STP_OK);
+    assert_int_equal(stp_renderer_mesh(r, &w->bench.mesh, w->scratch, 3 * TORUS_TRIANGLES), STP_OK);
+    assert_int_equal(stp_segment_close(r), STP_OK);
+    memset(&port, 0, sizeof port);
+    port.width = (uint32_t)w->width;
+    port.height = (uint32_t)w->height;
+    port.format = STP_PIXEL_MONO1;
+    port.flush = copy_flush;
+    port.user = w;
+    stp_output_default(&out);
+    out.hidden = STP_HIDDEN_NONE;
+    out.cell = cell;
+    memset(&mem, 0, sizeof mem);
+    mem.band = w->band;
+    mem.band_size = sizeof w->band;
+    mem.band_rows = (uint32_t)w->height;
+    assert_int_equal(stp_renderer_render(r, &port, &out, &mem), STP_OK);
+}
+
+/* Both pictures of one pose; returns the differing pixels. */
+static int compare(work *w, uint16_t yaw, uint16_t pitch, stp_vec3 shift)
+{
+    stp_view view;
+    stp_direct_view dv;
+    stp_direct_light light = scene_light();
+    stp_direct_model pose;
+    stp_direct_frame fr;
+    stp_cell cell;
+    stp_fix half, focal;
+    size_t stride = (size_t)w->width / 8, i;
+    int diff = 0, lit = 0, b;
+    scene_view(&view);
+    half = view.fov_degrees / 2;
+    /* the renderer's focal length (view.c) */
+    focal = (stp_fix)(((int64_t)(w->width < w->height ? w->width : w->height) * stp_fix_cos_deg(half) *
+                       (STP_FIX_ONE / 2)) /
+                      stp_fix_sin_deg(half));
+    assert_int_equal(stp_direct_view_look(&dv, view.from, view.at, view.up, focal, view.hither, (uint16_t)w->width,
+                                          (uint16_t)w->height),
+                     STP_OK);
+    stp_direct_model_turn(&pose, yaw, pitch, STP_FIX_ONE, shift);
+    assert_int_equal(stp_cell_bayer(&cell, 4), 0);
+    assert_int_equal(stp_direct_frame_project(&fr, &w->bench.mesh, &pose, &dv, &light, LEVELS, cell.thresholds,
+                                              w->pts, 3 * TORUS_TRIANGLES, w->faces, TORUS_TRIANGLES),
+                     STP_OK);
+    assert_int_equal(stp_direct_draw_band(&fr, w->direct, stride, 0, (uint16_t)w->height), STP_OK);
+    draw_full(w, &view, &light, &pose, &cell);
+    for (i = 0; i < stride * (size_t)w->height; i++)
+        for (b = 0; b < 8; b++) {
+            diff += ((w->direct[i] ^ w->full[i]) >> b) & 1;
+            lit += (w->full[i] >> b) & 1;
+        }
+    {
+        /* where the two entries' device positions differ (renderer: projected
+         * vertices only) */
+        int moved = 0, view_moved = 0;
+        for (i = 0; i < w->bench.mesh.vertex_count; i++)
+            if ((w->scratch[i].state & 64) != 0) {
+                moved += w->pts[i].dx != w->scratch[i].dx || w->pts[i].dy != w->scratch[i].dy;
+                view_moved += w->pts[i].x != w->scratch[i].view.x || w->pts[i].y != w->scratch[i].view.y ||
+                              w->pts[i].z != w->scratch[i].view.z;
+            }
+        printf("torus %dx%d yaw %5u pitch %5u: %d pixels ON, %d differ; %d vertices at other view "
+               "coordinates, %d at other device positions\n",
+               w->width, w->height, yaw, pitch, lit, diff, view_moved, moved);
+    }
+    assert_true(lit > 100);
+    return diff;
+}
+
+static void run_size(int width, int height)
+{
+    static const uint16_t poses[9][2] = {{0, 0},         {3000, 2000},   {11000, 60000}, {25000, 9000},
+                                         {40000, 30000}, {52000, 47000}, {7000, 5000},   {33000, 61000},
+                                         {60000, 16000}};
+    work *w = calloc(1, sizeof *w);
+    char err[200];
+    size_t p;
+    int differ = 0;
+    assert_non_null(w);
+    assert_int_equal(torus_bench_init(&w->bench, width, height, err, sizeof err), 0);
+    assert_int_equal(torus_bench_use_mesh(&w->bench, err, sizeof err), 0);
+    w->width = width;
+    w->height = height;
+    for (p = 0; p < 9; p++) {
+        /* every pose printed before the verdict */
+        differ += compare(w, poses[p][0], poses[p][1], vec(0, 0, 0)) != 0 ||
+                  memcmp(w->direct, w->full, (size_t)width / 8 * (size_t)height) != 0;
+    }
+    assert_int_equal(differ, 0);
+    torus_bench_free(&w->bench);
+    free(w);
+}
+
+static void test_torus_128x64(void **state)
+{
+    (void)state;
+    run_size(128, 64);
+}
+
+static void test_torus_400x240(void **state)
+{
+    (void)state;
+    run_size(400, 240);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_torus_128x64),
+        cmocka_unit_test(test_torus_400x240),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
