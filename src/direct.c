@@ -18,8 +18,9 @@
  *              project_private.h's stp_project_exact, alone on targets
  *              without STP_WIDE_ARITH: its 64-bit fallback could only
  *              give points beyond the device range)
- *   shading    shade_fast.c (its file comment): its prepare, the one the
- *              mesh route uses, and its 32-bit face path. */
+ *   shading    shade_fast.c (its file comment): its prepare and its face
+ *              path, the ones the mesh route uses (the 64-bit host path
+ *              where prepare chooses it, as for the mesh route). */
 #include "stipple/direct.h"
 
 #include "direct_private.h"
@@ -76,9 +77,6 @@ static void shade_prepare(stp_shade_fast *s, const stp_direct_light *l, const in
     for (i = 0; i < 3; i++)
         lighting.lights[0].colour[i] = material.colour[i] = ONE;
     stp_shade_fast_prepare(s, &lighting, &material, origin, 0, towards_eye);
-#if STP_WIDE_ARITH
-    s->wide_ready = 0; /* the 32-bit face path on hosts too: the chip's values */
-#endif
 }
 
 int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_view *view,
@@ -174,14 +172,18 @@ stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal
 }
 
 /* The intensity byte of a front face: the shade, INTENSITY, the linear
- * drive value. */
+ * drive value floor((k 255 + d / 2) / d) of index k + 1, d = levels - 1
+ * (output.c's stp_output_level), as (n m) >> 24 with m = ceil(2^24 / d)
+ * (drive_m, once per frame): n = k 255 + d / 2 <= 255.5 d, so n m <
+ * 255.5 2^24 + n < 2^32, and the excess n (m d - 2^24) / (d 2^24) stays
+ * below 1 / d (n (m d - 2^24) < 255.5 d^2 <= 255.5 254^2 < 2^24): the
+ * quotient exactly, without a division per face. */
 static uint16_t face_intensity(const stp_direct_shading *s, const int16_t *normal,
-                               const stp_direct_point *const p[3], int levels)
+                               const stp_direct_point *const p[3], int levels, uint32_t drive_m)
 {
     stp_fix shade = stp_direct_face_shade(s, normal, p);
     uint32_t index = ((uint32_t)shade * (uint32_t)(levels - 1)) >> F; /* index - 1 */
-    return (uint16_t)(256u + stp_direct_udiv(index * 255u + (uint32_t)(levels - 1) / 2u,
-                                             (uint32_t)(levels - 1)));
+    return (uint16_t)(256u + (((index * 255u + (uint32_t)(levels - 1) / 2u) * drive_m) >> 24));
 }
 
 static int check_args(const stp_direct_frame *f, const stp_mesh *mesh, const stp_direct_model *model,
@@ -207,6 +209,7 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
                              uint16_t *faces, size_t face_count)
 {
     int32_t m[3][3], t[3], d[3], scale14;
+    uint32_t drive_m;
     stp_direct_shading shading;
     int i, j, status;
     uint16_t k;
@@ -214,6 +217,8 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
     if (status != STP_OK)
         return status;
     f->layout = STP_BAND_ROWS;
+    /* ceil(2^24 / (levels - 1)), face_intensity's reciprocal */
+    drive_m = stp_direct_udiv(((uint32_t)1 << 24) + (uint32_t)levels - 2u, (uint32_t)levels - 1u);
     /* C = V R (shading.rot, for the normals) and M = C scale: scale in Q14,
      * below 2^15 */
     scale14 = F >= 14 ? stp_direct_asr(model->scale, F >= 14 ? F - 14 : 0) : model->scale * (1 << (F >= 14 ? 0 : 14 - F));
@@ -255,7 +260,7 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
          * from the eye, clockwise in device coordinates */
         area = ((int32_t)p[1]->dx - p[0]->dx) * ((int32_t)p[2]->dy - p[0]->dy) -
                ((int32_t)p[1]->dy - p[0]->dy) * ((int32_t)p[2]->dx - p[0]->dx);
-        faces[k] = area < 0 ? face_intensity(&shading, &mesh->normals[3 * (uint32_t)k], p, levels) : 0;
+        faces[k] = area < 0 ? face_intensity(&shading, &mesh->normals[3 * (uint32_t)k], p, levels, drive_m) : 0;
     }
     f->mesh = mesh;
     f->points = points;

@@ -30,42 +30,18 @@ uint32_t stp_direct_udiv(uint32_t n, uint32_t d)
     return q;
 }
 
-/* floor(sqrt(v)) bit by bit */
-static uint32_t isqrt32(uint32_t v)
+/* v scaled to unit length in Q1.14: the core's one unit vector
+ * (fix.c's stp_unit_from64, Q30), rounded to Q14 as mesh.c rounds the
+ * normals (<= 2^14: fits int16).  0 for a zero vector (out untouched). */
+static int unit14(const int32_t v[3], int16_t out[3])
 {
-    uint32_t root = 0, bit = (uint32_t)1 << 30;
-    while (bit > v)
-        bit >>= 2;
-    while (bit != 0) {
-        if (v >= root + bit) {
-            v -= root + bit;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
-    return root;
-}
-
-/* v scaled to unit length in Q1.14 (|v_i| < 2^31); returns its length
- * after v was cut to 15 bits (0: a zero vector, out untouched). */
-static uint32_t unit14(const int32_t v[3], int16_t out[3])
-{
-    uint32_t big = stp_direct_abs(v[0]) | stp_direct_abs(v[1]) | stp_direct_abs(v[2]), len;
-    int32_t w[3];
-    int i, s = stp_bit_length32(big) - 15;
-    if (big == 0)
+    stp_unit3 u;
+    if (stp_unit_from64(v[0], v[1], v[2], &u) == 0)
         return 0;
-    for (i = 0; i < 3; i++)
-        w[i] = s > 0 ? stp_direct_asr(v[i], s) : v[i] * ((int32_t)1 << -s); /* |w| < 2^15 */
-    /* each square below 2^30: the sum below 3 2^30 < 2^32 */
-    len = isqrt32((uint32_t)(w[0] * w[0]) + (uint32_t)(w[1] * w[1]) + (uint32_t)(w[2] * w[2]));
-    for (i = 0; i < 3; i++) {
-        uint32_t q = stp_direct_udiv((stp_direct_abs(w[i]) << Q14) + len / 2u, len); /* <= 2^14 */
-        out[i] = (int16_t)(w[i] < 0 ? -(int32_t)q : (int32_t)q);
-    }
-    return len;
+    out[0] = (int16_t)stp_direct_asr(u.x + ((int32_t)1 << 15), 16);
+    out[1] = (int16_t)stp_direct_asr(u.y + ((int32_t)1 << 15), 16);
+    out[2] = (int16_t)stp_direct_asr(u.z + ((int32_t)1 << 15), 16);
+    return 1;
 }
 
 /* a x b of Q1.14 vectors: Q2.28, each component below 2^29 */

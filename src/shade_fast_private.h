@@ -96,8 +96,7 @@ typedef struct stp_shade_fast {
                       (not 0) in eye */
     uint8_t wide_ready;  /* 1: set by stp_shade_fast_prepare (the wide
                             fields below hold); 0: a caller that filled the
-                            32-bit fields itself (direct.c) gets the 32-bit
-                            path, the chip's values */
+                            32-bit fields itself gets the 32-bit path */
     uint32_t wide_c;     /* C in raw stp_fix units, >= 1 */
     uint32_t wide_refl;  /* |R| in raw units */
     /* BRIGHT P_j as m 2^-e = b p 2^-16 (b, p raw), m in [2^23, 2^24) or 0,

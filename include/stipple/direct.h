@@ -18,10 +18,11 @@
  *      the full renderer's fill rule (pixel centres, top-left rule, Q27.4
  *      device coordinates) and its ordered-dither halftone, MSB first.
  *
- * 32-bit arithmetic per vertex, face and pixel (the face shader's
- * per-frame prepare, shade_fast.c's stp_shade_fast_prepare shared with the
- * mesh route, forms a few 64-bit products: 204 B of libgcc on a
- * Cortex-M0+), no division in any loop over
+ * 32-bit arithmetic per vertex, face and pixel on 32-bit targets (the
+ * face shader's per-frame prepare, shade_fast.c's stp_shade_fast_prepare
+ * shared with the mesh route, forms a few 64-bit products; the face shader
+ * takes the path its prepare chooses for every route: on 64-bit hosts its
+ * 64-bit form, as the mesh route there), no division in any loop over
  * pixels.  Formats and ranges:
  *   Q1.14      int16_t, one = 16384 (STP_MESH_NORMAL_ONE): rotations, the
  *              view axes, normals.

@@ -490,6 +490,46 @@ static void test_bands(void **state)
     free(w);
 }
 
+/* The drive value of every drawn face at levels 2..255 (a multiply by a
+ * per-frame reciprocal in direct.c): output.c's division,
+ * floor(((index - 1) 255 + (levels - 1) / 2) / (levels - 1)), with the
+ * index from the face's shade (stp_direct_face_shade) as
+ * stp_intensity_index forms it. */
+static void test_levels(void **state)
+{
+    work *w = calloc(1, sizeof *w);
+    stp_direct_shading sh;
+    scene s;
+    stp_direct_frame fr;
+    int levels, checked = 0;
+    (void)state;
+    assert_non_null(w);
+    make_sphere(&w->m);
+    scene_make(&s, 7000, 5000);
+    assert_true(stp_direct_shading_prepare(&sh, &s.dview, &s.pose, &s.light));
+    for (levels = 2; levels <= 255; levels++) {
+        uint16_t t;
+        assert_int_equal(stp_direct_frame_project(&fr, &w->m.mesh, &s.pose, &s.dview, &s.light, levels, s.cell,
+                                                  w->pts, MAX_V, w->faces, MAX_T),
+                         STP_OK);
+        for (t = 0; t < w->m.mesh.triangle_count; t++) {
+            const uint16_t *k = &w->m.mesh.triangles[3 * t];
+            const stp_direct_point *p[3];
+            int index;
+            if (w->faces[t] == 0)
+                continue;
+            p[0] = &w->pts[k[0]];
+            p[1] = &w->pts[k[1]];
+            p[2] = &w->pts[k[2]];
+            index = stp_intensity_index(stp_direct_face_shade(&sh, &w->m.mesh.normals[3 * t], p), levels);
+            assert_int_equal(w->faces[t], 256 + ((index - 1) * 255 + (levels - 1) / 2) / (levels - 1));
+            checked++;
+        }
+    }
+    assert_true(checked > 254 * 50);
+    free(w);
+}
+
 /* A cube of side 1.6 about the origin: 12 triangles. */
 static void make_cube(model *m)
 {
@@ -678,7 +718,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sine),         cmocka_unit_test(test_tetra), cmocka_unit_test(test_sphere),
         cmocka_unit_test(test_torus),        cmocka_unit_test(test_bands), cmocka_unit_test(test_normals),
-        cmocka_unit_test(test_pages),
+        cmocka_unit_test(test_pages),        cmocka_unit_test(test_levels),
         cmocka_unit_test(test_bad_arguments),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
