@@ -88,6 +88,17 @@
 #endif
 #endif
 
+/* A 32 x 32 -> 32-bit multiply instruction: every 32-bit CPU; not an 8- or
+ * 16-bit one (AVR, MSP430), where a 32-bit product is a library call of
+ * about 50 cycles, so loops step sums instead of forming products. */
+#ifndef STP_HAVE_MUL32
+#if defined(__AVR__) || defined(__MSP430__)
+#define STP_HAVE_MUL32 0
+#else
+#define STP_HAVE_MUL32 1
+#endif
+#endif
+
 #ifndef STP_WIDE_ARITH
 #define STP_WIDE_ARITH (STP_HAVE_MUL64 && STP_HAVE_DIV64)
 #endif

@@ -7,9 +7,9 @@
  * oriented downwards, crosses row centre yc (ya <= yc < yb) at
  * floor((xa 2^16 + (yc - ya) slope) / 2^16), slope = trunc(2^16 (xb - xa)
  * / (yb - ya)): the full renderer's value, which it accumulates row by row
- * in 64 bits; here it is formed afresh each row in 32: device coordinates
- * below 2^13 in magnitude keep xa 2^16 below 2^29 and (yc - ya) slope
- * below 2^16 |xb - xa| < 2^30.  Runs go through the one 1-bit run filler
+ * in 64 bits; here in 32 (edge_x): device coordinates below 2^13 in
+ * magnitude keep xa 2^16 below 2^29 and (yc - ya) slope below
+ * 2^16 |xb - xa| < 2^30.  Runs go through the one 1-bit run filler
  * (dither.c), in rows or in the panel's pages (stp_band_layout). */
 #include "stipple/direct.h"
 
@@ -25,9 +25,37 @@ static int32_t floor16(int32_t v)
     return stp_direct_asr(v, SUB);
 }
 
+/* The crossing at row y (centre yc = 16 y + 8) is
+ * floor((xa 2^16 + (yc - ya) slope) / 2^16).  With a multiply instruction
+ * (arith_private.h, STP_HAVE_MUL32) it is formed each row; without one
+ * (AVR: a 32-bit product is a library call) acc holds the sum at row
+ * acc_row, formed once when the face's loop first meets the edge and then
+ * stepped by 16 slope a row: the same integer, so the same crossings. */
 typedef struct band_edge {
     int32_t xa, ya, yb, slope;
+#if !STP_HAVE_MUL32
+    int32_t acc_row;
+    uint32_t acc, step; /* unsigned: the step past an edge's last row may wrap, unused */
+#endif
 } band_edge;
+
+/* e's crossing of row y (its centre yc inside [ya, yb)); rows asked in
+ * increasing order.  Below 2^30 in magnitude. */
+static int32_t edge_x(band_edge *e, int32_t y, int32_t yc)
+{
+#if STP_HAVE_MUL32
+    (void)y;
+    return stp_direct_asr(e->xa * 65536 + (yc - e->ya) * e->slope, 16);
+#else
+    int32_t x;
+    if (e->acc_row != y)
+        e->acc = (uint32_t)(e->xa * 65536 + (yc - e->ya) * e->slope);
+    x = stp_direct_asr((int32_t)e->acc, 16);
+    e->acc += e->step;
+    e->acc_row = y + 1;
+    return x;
+#endif
+}
 
 /* Edge a - b oriented downwards into *e; 0 when no row centre crosses it. */
 static int edge_make(band_edge *e, const stp_direct_point *a, const stp_direct_point *b)
@@ -48,6 +76,10 @@ static int edge_make(band_edge *e, const stp_direct_point *a, const stp_direct_p
     e->ya = ya;
     e->yb = yb;
     e->slope = dx < 0 ? -(int32_t)q : (int32_t)q;
+#if !STP_HAVE_MUL32
+    e->step = (uint32_t)e->slope << SUB;
+    e->acc_row = INT32_MIN; /* no row yet */
+#endif
     return 1;
 }
 
@@ -86,7 +118,7 @@ static void draw_face(const stp_direct_frame *f, const stp_direct_point *p[3], u
         int c = 0;
         for (i = 0; i < n && c < 2; i++)
             if (e[i].ya <= yc && yc < e[i].yb)
-                x[c++] = stp_direct_asr(e[i].xa * 65536 + (yc - e[i].ya) * e[i].slope, 16);
+                x[c++] = edge_x(&e[i], y, yc);
         if (c < 2)
             continue;
         if (x[0] > x[1]) {

@@ -47,7 +47,7 @@ int StippleSSD1306::initPanel()
                : STP_ERR_PORT;
 }
 
-/* page, column low and high nibbles: one command transfer */
+/* page, column low and high nibbles, then the page's data may follow */
 int StippleSSD1306::pageAddress(uint8_t page)
 {
     const stp_panel_controller *c = &stp_panel_ssd1306;
@@ -55,7 +55,15 @@ int StippleSSD1306::pageAddress(uint8_t page)
     cmd[0] = (uint8_t)(c->page_command | page);
     cmd[1] = (uint8_t)(c->column_low_command | (c->column_offset & 15u));
     cmd[2] = (uint8_t)(c->column_high_command | (c->column_offset >> 4));
-    return command(cmd, 3);
+    return pageStart(cmd, 3);
+}
+
+int StippleSSD1306::pageStart(const uint8_t *address, uint8_t count)
+{
+    if (command(address, count) != 0)
+        return -1;
+    dataStart();
+    return 0;
 }
 
 int StippleSSD1306::sendPage(uint8_t page, const uint8_t *rows, size_t stride)
@@ -64,7 +72,6 @@ int StippleSSD1306::sendPage(uint8_t page, const uint8_t *rows, size_t stride)
     int status;
     if (pageAddress(page) != 0)
         return STP_ERR_PORT;
-    dataStart();
     status = 0;
     for (b = 0; b < width / 8 && status == 0; b++) {
         stp_panel_pack_block(rows + b, stride, block);
@@ -81,7 +88,6 @@ int StippleSSD1306::sendPageBytes(uint8_t page, const uint8_t *columns)
     int status;
     if (pageAddress(page) != 0)
         return STP_ERR_PORT;
-    dataStart();
     status = dataPut(columns, width);
     if (dataEnd() != 0)
         status = -1;

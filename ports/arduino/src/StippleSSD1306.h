@@ -53,6 +53,9 @@ protected:
     virtual int dataPut(const uint8_t *bytes, uint8_t count) = 0;
     virtual int dataEnd() = 0;
     virtual void reset(unsigned ms) = 0;
+    /* The page address commands, then dataStart; a bus that can switch
+     * from commands to data within one transfer overrides it. */
+    virtual int pageStart(const uint8_t *address, uint8_t count);
 
 private:
     uint8_t *band_;
