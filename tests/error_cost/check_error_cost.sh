@@ -31,7 +31,7 @@ function at(name, f) { if (!(name in row)) { fail("no row " name); return -1 } s
 }
 /^Cases: / { cases = $0 }
 END {
-    if (rows != 18) fail(rows " configurations, not 18")
+    if (rows != 20) fail(rows " configurations, not 20")
     if (cases !~ /^Cases: [0-9]+ typical, [0-9]+ stiff/) fail("no case counts")
     # the exact route: its error on ordinary faces is the final rounding to F bits, half a step
     for (F = 12; F <= 20; F += 4) {
@@ -46,7 +46,8 @@ END {
     if (!(at("F16-exact", 8) > at("F20-exact", 8))) fail("the exact route stiff error does not fall from F16 to F20")
     # the same arithmetic gives the same figures
     for (f = 6; f <= 9; f++) {
-        if (at("F16-point", f) != at("F16-exact", f)) fail("F16-point and F16-exact differ (field " f ")")
+        for (F = 12; F <= 20; F += 4)
+            if (at("F" F "-point", f) != at("F" F "-exact", f)) fail("F" F "-point and F" F "-exact differ (field " f ")")
         if (at("F16-sqrtfast", f) != at("F16", f)) fail("STP_SQRT_FAST changed the face shader (field " f ")")
         if (at("F16-q14normal", f) < at("F16", f) && f == 8) fail("a coarser normal came out more exact")
     }
