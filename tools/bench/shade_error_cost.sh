@@ -6,8 +6,9 @@
 # over the accuracy cases (computed on the host with the 32-bit target
 # arithmetic, the Cortex-M0+'s values; typical = the non-extreme cases,
 # stiff = the extreme ones), Cortex-M0+ instructions per shade (QEMU
-# mps2-an385, -icount shift=0) and host instructions per shade (callgrind,
-# gcc -O2, the host's 64-bit arithmetic).  Writes OUT_DIR/error-cost.md (the
+# mps2-an385, -icount shift=0), host instructions per shade (callgrind,
+# gcc -O2, the host's 64-bit arithmetic) and AVR cycles per shade
+# (ATmega2560 under simavr).  Writes OUT_DIR/error-cost.md (the
 # table, naming the dominated configurations) and OUT_DIR/error-cost.svg
 # (max error against M0+ instructions, the Pareto front drawn), and prints
 # the table.
@@ -17,7 +18,7 @@
 #   --cases N      accuracy cases for the errors (default 30000: all of them)
 #   --cost-cases N accuracy cases for the costs (default 3000: 903 typical)
 #   --fast         errors only (host compiler alone: no QEMU, no callgrind,
-#                  no plot); writes OUT_DIR/error-cost.md (tests/error_cost)
+#                  no simavr, no plot); writes OUT_DIR/error-cost.md (tests/error_cost)
 # Exit status 77: a tool is missing.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
@@ -35,7 +36,7 @@ done
 out=$(mkdir -p "${out:-$here/docs}" && cd "${out:-$here/docs}" && pwd)
 cc=${CC:-cc}
 tools=("$cc")
-[ "$fast" = 1 ] || tools+=(qemu-system-arm arm-none-eabi-gcc valgrind callgrind_annotate gnuplot cmake)
+[ "$fast" = 1 ] || tools+=(qemu-system-arm arm-none-eabi-gcc valgrind callgrind_annotate gnuplot cmake avr-gcc simavr)
 for tool in "${tools[@]}"; do
     command -v "$tool" >/dev/null 2>&1 || { echo "$0: $tool not found" >&2; exit 77; }
 done
@@ -81,11 +82,25 @@ for spec in "${variants[@]}"; do
         timeout -k 5 900 qemu-system-arm -M mps2-an385 -kernel "$d/shade_cost_m0.elf" -display none -serial null \
             -monitor none -semihosting-config enable=on,target=native -icount shift=0 >"$d.txt" 2>&1 ||
             { cat "$d.txt" >&2; exit 1; }
+        # AVR (ATmega2560, simavr): the first 140 typical cases from this variant's host build
+        # (avr-gcc's double is 32 bits), the shades checked against the host's 32-bit arithmetic
+        "$work/err$v" --emit-avr 140 >"$work/avr$v.h"
+        avr-gcc -mmcu=atmega2560 -O2 -std=c99 -Wall -Wextra -Werror -ffp-contract=off -DSTP_WIDE_ARITH=0 "-D$defs" \
+            -DSHADE_COST_AVR_CASES="\"$work/avr$v.h\"" -I include -I src -I tests/shade_accuracy \
+            tools/bench/shade_error_cost.c src/shade_fast.c src/shade.c src/fix.c src/recip.c src/div64.c \
+            -o "$work/avr$v.elf"
+        timeout -k 5 900 simavr -m atmega2560 -f 16000000 "$work/avr$v.elf" 2>&1 |
+            sed 's/\x1b\[[0-9;]*m//g; s/\.$//' | grep '^stipple: ' >"$work/avr$v.txt" || true
+        "$work/err$v" --avr-digest 140 >"$work/avr$v.want"
+        grep '^stipple: digest' "$work/avr$v.txt" | cmp -s - "$work/avr$v.want" ||
+            { echo "$0: $name: the AVR's shades differ from the host's 32-bit arithmetic" >&2; cat "$work/avr$v.txt" >&2; exit 1; }
     fi
     for mode in $modes; do
         read -r _ n max mean sn smax smean d16 d256 < <(grep "^$mode " "$work/err$v.txt")
-        m0=- ir=-
+        m0=- ir=- avr=-
         if [ "$fast" = 0 ]; then
+            avr=$(sed -n "s/^stipple: cost $mode \([0-9]*\) .*/\1/p" "$work/avr$v.txt")
+            avr=${avr:--}
             read -r m0 cn < <(sed -n "s/^stipple: cost $mode \([0-9]*\) \([0-9]*\).*/\1 \2/p" "$d.txt")
             valgrind --tool=callgrind --toggle-collect=shade_one --callgrind-out-file="$work/cg" \
                 "$work/host$v" --cases "$cost_cases" --only "$mode" >/dev/null 2>&1
@@ -93,12 +108,12 @@ for spec in "${variants[@]}"; do
             ir=$(((ir + cn / 2) / cn))
         fi
         case $mode in levels*) d16=- d256=- ;; esac
-        echo "$(label "$name" "$mode") $defs $m0 $ir $n $max $mean $sn $smax $smean $d16 $d256" >>"$work/rows.txt"
+        echo "$(label "$name" "$mode") $defs $m0 $ir $n $max $mean $sn $smax $smean $d16 $d256 $avr" >>"$work/rows.txt"
     done
 done
 
-# rows.txt: label switches m0 host n max mean stiff_n stiff_max stiff_mean d16 d256; add the worst
-# error over all cases (field 13), then the Pareto verdict (field 14) on M0+ instructions against
+# rows.txt: label switches m0 host n max mean stiff_n stiff_max stiff_mean d16 d256 avr; add the
+# worst error over all cases (field 14), then the Pareto verdict (field 15) on M0+ instructions against
 # that worst error: a configuration is dominated when another costs at most 1 % more and errs at
 # most 10 % more, and is clearly better in one of the two (over 1 % cheaper or over 10 % more
 # exact); within both margins they are "equal" (the M0+ counts of one code differ by a few
@@ -122,18 +137,20 @@ awk -v fast="$fast" '{ w = ($6 + 0 > $9 + 0) ? $6 : $9; row[NR] = $0 " " w; name
     echo
     echo "Errors against the double reference over $cases accuracy cases (the Cortex-M0+'s 32-bit arithmetic, run"
     echo "on the host): typical = the non-extreme cases, stiff = the extreme ones; instructions per shade over the"
-    echo "typical cases among the first $cost_cases.  Generated by \`tools/bench/shade_error_cost.sh$([ "$fast" = 1 ] && echo " --fast")\`."
+    echo "typical cases among the first $cost_cases (Cortex-M0+, host), CPU cycles per shade over the first 140 typical"
+    echo "cases (AVR: ATmega2560 under simavr, avr-gcc -O2, its shades checked equal to the host's 32-bit"
+    echo "arithmetic).  Generated by \`tools/bench/shade_error_cost.sh$([ "$fast" = 1 ] && echo " --fast")\`."
     echo
-    echo "| configuration | switches | M0+ instr/shade | host instr/shade | typical max | typical mean | stiff max | stiff mean | worst | level ≠ reference at 16 / 256 levels (% typical) | Pareto (M0+ against worst) |"
-    echo "|---|---|---|---|---|---|---|---|---|---|---|"
-    awk '{ p = $14
+    echo "| configuration | switches | M0+ instr/shade | host instr/shade | AVR cycles/shade | typical max | typical mean | stiff max | stiff mean | worst | level ≠ reference at 16 / 256 levels (% typical) | Pareto (M0+ against worst) |"
+    echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+    awk '{ p = $15
            if (p == "front") p = "**front**"
            else if (p ~ /^front=/) p = "**front** (equal: " substr(p, 7) ")"
            else if (p ~ /^dominated:/) p = "dominated by " substr(p, 11)
            else if (p == "subset") p = "other cases (the pair)"
            gsub(/,/, ", ", p)
-           printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s / %s | %s |\n",
-                  $1, $2, $3, $4, $6, $7, $9, $10, $13, $11, $12, p }' "$work/table.txt"
+           printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s / %s | %s |\n",
+                  $1, $2, $3, $4, $13, $6, $7, $9, $10, $14, $11, $12, p }' "$work/table.txt"
     echo
     echo "Cases: $(awk 'NR == 1 { print $5 " typical, " $8 " stiff" }' "$work/table.txt"); the Fresnel pair:"
     echo "$(awk '$1 ~ /fresnel-table/ { print $5 " typical, " $8 " stiff" }' "$work/table.txt") (1 <= n < 2, highlight on)."
@@ -175,9 +192,9 @@ if [ "$fast" = 0 ]; then
     # a label runs rightwards from its point, level with it beyond 10 000 instructions, else
     # below it (a front label above), then further down while it would overlap one placed
     # before (taken from the top down)
-    awk '$14 != "subset" { for (h = 1; h <= n; h++)
-               if ($3 <= 1.01 * m0[h] && m0[h] <= 1.01 * $3 && $13 <= 1.1 * e[h] && e[h] <= 1.1 * $13) break
-           if (h > n) { n++; m0[n] = $3; e[n] = $13; lab[n] = $1; front[n] = ($14 ~ /^front/) }
+    awk '$15 != "subset" { for (h = 1; h <= n; h++)
+               if ($3 <= 1.01 * m0[h] && m0[h] <= 1.01 * $3 && $14 <= 1.1 * e[h] && e[h] <= 1.1 * $14) break
+           if (h > n) { n++; m0[n] = $3; e[n] = $14; lab[n] = $1; front[n] = ($15 ~ /^front/) }
            else lab[h] = lab[h] " = " $1 }
          function lg(v) { return log(v) / log(10) }
          END { for (h = 1; h <= n; h++) order[h] = h
@@ -194,8 +211,8 @@ if [ "$fast" = 0 ]; then
                                ly[h] = ly[k] / 1.4; moved = 1 } } } }
                for (h = 1; h <= n; h++) print m0[h], e[h], "\"" lab[h] "\"", front[h], ly[h] }' \
         "$work/table.txt" >"$work/labels.txt"
-    sort -k3,3n "$work/table.txt" | awk '$14 ~ /^front/' >"$work/front.txt"
-    awk '$14 ~ /^dominated/' "$work/table.txt" >"$work/dominated.txt"
+    sort -k3,3n "$work/table.txt" | awk '$15 ~ /^front/' >"$work/front.txt"
+    awk '$15 ~ /^dominated/' "$work/table.txt" >"$work/dominated.txt"
     gnuplot <<GP
 set terminal svg size 960,600 dynamic font "sans,12"
 set output "$out/error-cost.svg"
@@ -208,8 +225,8 @@ set key top right
 set grid
 set xrange [500:300000]
 set yrange [3e-5:5]
-plot "$work/front.txt" using 3:13 with linespoints lw 2 pt 7 ps 1.2 lc rgb "#1060c0" title "Pareto front", \
-     "$work/dominated.txt" using 3:13 with points pt 6 ps 1.2 lc rgb "#c03020" title "dominated", \
+plot "$work/front.txt" using 3:14 with linespoints lw 2 pt 7 ps 1.2 lc rgb "#1060c0" title "Pareto front", \
+     "$work/dominated.txt" using 3:14 with points pt 6 ps 1.2 lc rgb "#c03020" title "dominated", \
      "$work/labels.txt" using 1:(\$4 > 0.5 ? \$5 : 1/0):3 with labels left offset 0.8,0 font "sans,10" notitle, \
      "$work/labels.txt" using 1:(\$4 > 0.5 ? 1/0 : \$5):3 with labels left offset 0.8,0 font "sans,10" tc rgb "#c03020" notitle
 GP
