@@ -108,13 +108,14 @@ static int applies(const acc_case *c, int k)
 static void prepare_mode(stp_shade_fast *f, const acc_case *c, int k)
 {
     stp_shade_fast_prepare(f, &c->lighting, &c->material, c->eye, c->parallel, c->parallel_dir);
+    (void)k;
+#if STP_WITH_SPECULAR /* (a build without the highlight has no exact route) */
     if (k == M_FAST) {
         f->exact_always = 0;
         f->fast_min_cos = 0;
     } else if (k == M_EXACT && f->exact != 0) {
-        f->exact_always = 1; /* (no exact route without the highlight) */
+        f->exact_always = 1;
     }
-#if STP_WITH_SPECULAR
     if (k == M_FFORMULA && f->refraction_ge_1) {
         /* Fresnel by its formula on the fast route: the face shader has no
          * switch for it, so the table's flag is cleared, which sends F
