@@ -64,6 +64,22 @@ static int32_t quantised_error(int32_t v, int on, int32_t divisor, int32_t recip
     return e;
 }
 
+/* Whether a pixel of drive level p (0..255) and value v (in 1/(4 divisor)
+ * levels) is ON under mask value m (diffuse.h): its threshold midpoint
+ * moves by (2m - 255) scale w / 1024, scale = amplitude divisor <= 12240,
+ * w = the band's weight 0..8, exactly in int32_t: |1024 v| < 2^27 (|v| <=
+ * 1020 divisor + 24576), |(2m - 255) scale w| <= 255 * 12240 * 8 < 2^25. */
+static int modulated_on(int32_t v, int32_t midpoint, int32_t scale, int32_t band2, uint32_t p,
+                        uint32_t m)
+{
+    int32_t distance = (int32_t)(2u * p) - 255, w;
+    if (distance < 0)
+        distance = -distance;
+    w = band2 + 8 - distance;
+    w = w < 0 ? 0 : (w > 8 ? 8 : w);
+    return v * 1024 >= midpoint * 1024 + ((int32_t)(2u * m) - 255) * scale * w;
+}
+
 void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, uint32_t y)
 {
     const kernel_def *k = &kernels[d->kernel];
@@ -72,6 +88,9 @@ void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, ui
     int16_t *target[12];
     int32_t weight[12];
     int32_t divisor = k->divisor, midpoint = (int32_t)255 * (QUARTERS / 2) * divisor;
+    /* threshold modulation (diffuse.h): NULL row, or row y mod 64 of the mask */
+    const uint8_t *noise_row = d->noise ? d->noise + (y & 63u) * 64u : 0;
+    int32_t scale = (int32_t)d->noise_amplitude * divisor, band2 = 2 * (int32_t)d->noise_band;
     int32_t reciprocal;
     int shift = 16;
     int backwards = d->serpentine && (y & 1u), dir = backwards ? -1 : 1, t;
@@ -92,7 +111,8 @@ void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, ui
     for (i = 0; i < width; i++) {
         uint32_t x = backwards ? width - 1u - i : i;
         int32_t v = (int32_t)pixels[x] * QUARTERS * divisor + rows[0][x];
-        int on = v >= midpoint;
+        int on = noise_row ? modulated_on(v, midpoint, scale, band2, pixels[x], noise_row[x & 63u])
+                           : v >= midpoint;
         int32_t e = quantised_error(v, on, divisor, reciprocal, shift);
         pixels[x] = (uint8_t)on;
         /* exact shares e w: the entries hold sums of them, read over

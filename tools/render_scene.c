@@ -83,6 +83,7 @@ void stp_tool_still_defaults(stp_tool_options *opt)
         opt->dither = STP_TOOL_DITHER_DIFFUSE;
         opt->diffuse_kernel = STP_DIFFUSE_FLOYD_STEINBERG;
         opt->diffuse_raster = 1;
+        opt->diffuse_noise = 1;
     }
     if (!opt->levels_given)
         opt->levels = 256;
@@ -97,6 +98,11 @@ int stp_tool_diffusion(const stp_tool_options *opt, uint32_t width, stp_diffusio
         return 0;
     d->kernel = (uint8_t)opt->diffuse_kernel;
     d->serpentine = (uint8_t)!opt->diffuse_raster;
+    if (opt->diffuse_noise) {
+        d->noise = stp_cell_blue_noise_64;
+        d->noise_amplitude = STP_DIFFUSE_NOISE_AMPLITUDE;
+        d->noise_band = STP_DIFFUSE_NOISE_BAND;
+    }
     d->error_count = stp_diffusion_error_count(opt->diffuse_kernel, width);
     d->errors = malloc(sizeof *d->errors * (d->error_count ? d->error_count : 1));
     return d->errors ? 1 : -1;

@@ -33,6 +33,8 @@ typedef struct stp_tool_options {
     stp_spacing spacing;     /* threshold spacing of Bayer cells (linear) */
     int diffuse_kernel;      /* STP_TOOL_DITHER_DIFFUSE: stp_diffusion_kernel */
     int diffuse_raster;      /* 1: every row left to right (0: serpentine) */
+    int diffuse_noise;       /* 1: thresholds modulated by the blue-noise mask
+                                (STP_DIFFUSE_NOISE_AMPLITUDE, _BAND; diffuse.h) */
     int dither_given, levels_given; /* the option parser saw -d / -l */
     int clustered_n, clustered_angle; /* STP_TOOL_DITHER_CLUSTERED: side, 0 or 45 */
     /* tone (tone.h): */
@@ -202,8 +204,10 @@ int stp_tool_diffusion(const stp_tool_options *opt, uint32_t width, stp_diffusio
 
 /* The defaults for a still 1-bit picture (stipple render to a PBM file),
  * where options did not say otherwise: Floyd-Steinberg diffusion, rows
- * left to right, 256 levels (the best figure of tools/bench/quality.c;
- * moving pictures keep the ordered cell, which does not flicker). */
+ * left to right, thresholds of mid-greys modulated by the blue-noise mask
+ * (-d fs:blue: no worms on flat mid-greys, docs/dithering.md), 256 levels,
+ * automatic exposure (moving pictures keep an ordered cell, which does
+ * not flicker). */
 void stp_tool_still_defaults(stp_tool_options *opt);
 
 /* Build the halftone cell the options name (Bayer 4x4 for diffusion, whose
