@@ -108,15 +108,23 @@ void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, ui
         target[t] = rows[k->taps[t].dy] + dir * k->taps[t].dx;
         weight[t] = k->taps[t].weight;
     }
-    for (i = 0; i < width; i++) {
+    /* two loops, so plain diffusion tests no mask per pixel; exact shares
+     * e w: the entries hold sums of them, read over divisor above; |entry|
+     * <= 512 divisor <= 24576 */
+    for (i = 0; i < width && !noise_row; i++) {
         uint32_t x = backwards ? width - 1u - i : i;
         int32_t v = (int32_t)pixels[x] * QUARTERS * divisor + rows[0][x];
-        int on = noise_row ? modulated_on(v, midpoint, scale, band2, pixels[x], noise_row[x & 63u])
-                           : v >= midpoint;
+        int32_t e = quantised_error(v, v >= midpoint, divisor, reciprocal, shift);
+        pixels[x] = (uint8_t)(v >= midpoint);
+        for (t = 0; t < k->count; t++)
+            target[t][x] = (int16_t)(target[t][x] + e * weight[t]);
+    }
+    for (i = 0; i < width && noise_row; i++) {
+        uint32_t x = backwards ? width - 1u - i : i;
+        int32_t v = (int32_t)pixels[x] * QUARTERS * divisor + rows[0][x];
+        int on = modulated_on(v, midpoint, scale, band2, pixels[x], noise_row[x & 63u]);
         int32_t e = quantised_error(v, on, divisor, reciprocal, shift);
         pixels[x] = (uint8_t)on;
-        /* exact shares e w: the entries hold sums of them, read over
-         * divisor above; |entry| <= 512 divisor <= 24576 */
         for (t = 0; t < k->count; t++)
             target[t][x] = (int16_t)(target[t][x] + e * weight[t]);
     }
