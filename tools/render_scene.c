@@ -90,7 +90,9 @@ void stp_tool_still_defaults(stp_tool_options *opt)
         opt->levels = 256;
     if (!opt->exposure_given)
         opt->exposure_auto = 1;
-    if (!opt->outlines_given && !opt->raytrace)
+    /* with the default dither only: scripts that name a dither (the
+     * goldens, the firmware comparisons) keep their pictures */
+    if (!opt->dither_given && !opt->outlines_given && !opt->raytrace)
         opt->outlines_auto = 1;
 }
 

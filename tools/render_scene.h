@@ -82,7 +82,8 @@ typedef struct stp_tool_options {
     int outlines;            /* mask of STP_OUTLINE_SILHOUETTE, _CREASE (0) */
     int outlines_auto;       /* 1: silhouettes when the objects would not be
                                 told from their background (readable.h; 0;
-                                1 for a still 1-bit picture without --outlines) */
+                                1 for a still 1-bit picture without -d or
+                                --outlines) */
     int outlines_given;      /* the option parser saw --outlines */
     double crease_angle;     /* degrees between normals that make a crease (40) */
     double outline_level;    /* the lines' shade 0..1 (0, black); < 0: black,
@@ -219,7 +220,7 @@ int stp_tool_outline_pixels(const stp_scene *scene, const stp_tool_options *opt,
  * left to right, thresholds of mid-greys modulated by the blue-noise mask
  * (-d fs:blue: no worms on flat mid-greys, docs/dither.md), 256 levels,
  * automatic exposure, and silhouettes where the objects would not be told
- * from their background (readable.h; not with --outlines or --raytrace)
+ * from their background (readable.h; not with -d, --outlines or --raytrace)
  * (moving pictures keep an ordered cell, which does not flicker). */
 void stp_tool_still_defaults(stp_tool_options *opt);
 
