@@ -8,7 +8,6 @@
 #include <string.h>
 
 #include "outlines.h"
-#include "stp_posix.h"
 
 typedef struct side_sums {
     double sum[3];
@@ -96,36 +95,49 @@ double stp_tool_readability_lit(const unsigned char *bits, int w, int h, const d
     return counted ? (double)read / (double)counted : 1.0;
 }
 
+/* A port that unpacks the MONO1 rows it is sent into bits (0/1). */
+typedef struct bits_port {
+    stp_port port;
+    unsigned char *bits;
+} bits_port;
+
+static int bits_flush(stp_port *port, uint32_t y0, uint32_t rows, const uint8_t *pixels, size_t stride)
+{
+    bits_port *b = (bits_port *)port->user;
+    uint32_t r, x, w = port->width;
+    for (r = 0; r < rows; r++)
+        for (x = 0; x < w; x++)
+            b->bits[(size_t)(y0 + r) * w + x] =
+                (unsigned char)((pixels[(size_t)r * stride + (x >> 3)] >> (7 - (x & 7))) & 1);
+    return 0;
+}
+
 int stp_tool_picture_readability(const stp_scene *scene, const stp_tool_options *opt, double *r,
                                  double *lit, char *err, size_t err_size)
 {
     stp_tool_options plain = *opt;
-    stp_posix_frame f;
-    unsigned char *bits;
+    bits_port b;
     double *xy = 0;
     size_t count = 0;
-    int x, y, rc = -1;
+    int rc = -1;
     plain.outlines = 0;
     plain.outlines_auto = 0;
-    if (stp_posix_frame_init(&f, (uint32_t)opt->width, (uint32_t)opt->height, STP_PIXEL_MONO1) != 0) {
+    memset(&b, 0, sizeof b);
+    b.port.width = (uint32_t)opt->width;
+    b.port.height = (uint32_t)opt->height;
+    b.port.format = STP_PIXEL_MONO1;
+    b.port.flush = bits_flush;
+    b.port.user = &b;
+    b.bits = calloc((size_t)opt->width * (size_t)opt->height, 1);
+    if (!b.bits)
         snprintf(err, err_size, "out of memory");
-        return -1;
-    }
-    bits = malloc((size_t)opt->width * (size_t)opt->height);
-    if (!bits)
-        snprintf(err, err_size, "out of memory");
-    else if (stp_tool_render(scene, &plain, &f.port, 0, err, err_size) == 0 &&
+    else if (stp_tool_render(scene, &plain, &b.port, 0, err, err_size) == 0 &&
              stp_tool_outline_pixels(scene, &plain, STP_OUTLINE_SILHOUETTE, &xy, &count, err, err_size) == 0) {
-        for (y = 0; y < opt->height; y++)
-            for (x = 0; x < opt->width; x++)
-                bits[(size_t)y * (size_t)opt->width + (size_t)x] =
-                    (unsigned char)((f.pixels[(size_t)y * f.stride + (size_t)(x >> 3)] >> (7 - (x & 7))) & 1);
-        *r = stp_tool_readability_lit(bits, opt->width, opt->height, xy, count, 0, lit);
+        *r = stp_tool_readability_lit(b.bits, opt->width, opt->height, xy, count, 0, lit);
         rc = 0;
     }
     free(xy);
-    free(bits);
-    stp_posix_frame_free(&f);
+    free(b.bits);
     return rc;
 }
 
