@@ -80,6 +80,22 @@ static int modulated_on(int32_t v, int32_t midpoint, int32_t scale, int32_t band
     return v * 1024 >= midpoint * 1024 + ((int32_t)(2u * m) - 255) * scale * w;
 }
 
+/* Pack a row of 0/1 bytes in place, most significant bit first: byte x/8
+ * is written after pixel x has been read, and x/8 <= x. */
+static void pack_row(uint8_t *pixels, uint32_t width)
+{
+    uint32_t i;
+    uint8_t byte = 0;
+    for (i = 0; i < width; i++) {
+        if (pixels[i])
+            byte = (uint8_t)(byte | (0x80u >> (i & 7u)));
+        if ((i & 7u) == 7u || i == width - 1u) {
+            pixels[i >> 3] = byte;
+            byte = 0;
+        }
+    }
+}
+
 void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, uint32_t y)
 {
     const kernel_def *k = &kernels[d->kernel];
@@ -94,7 +110,6 @@ void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, ui
     int32_t reciprocal;
     int shift = 16;
     int backwards = d->serpentine && (y & 1u), dir = backwards ? -1 : 1, t;
-    uint8_t byte = 0;
     while ((((int32_t)2 << shift) + divisor / 2) / divisor < 29204)
         shift++;
     reciprocal = (((int32_t)1 << shift) + divisor / 2) / divisor;
@@ -131,14 +146,5 @@ void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, ui
     /* this row's entries become those of row y + rows */
     for (i = 0; i < span; i++)
         rows[0][(int32_t)i - MARGIN] = 0;
-    /* pack in place: byte x/8 is written after pixel x has been read, and
-     * x/8 <= x */
-    for (i = 0; i < width; i++) {
-        if (pixels[i])
-            byte = (uint8_t)(byte | (0x80u >> (i & 7u)));
-        if ((i & 7u) == 7u || i == width - 1u) {
-            pixels[i >> 3] = byte;
-            byte = 0;
-        }
-    }
+    pack_row(pixels, width);
 }
