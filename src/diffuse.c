@@ -64,6 +64,38 @@ static int32_t quantised_error(int32_t v, int on, int32_t divisor, int32_t recip
     return e;
 }
 
+/* Whether a pixel of drive level p (0..255) and value v (in 1/(4 divisor)
+ * levels) is ON under mask value m (diffuse.h): its threshold midpoint
+ * moves by (2m - 255) scale w / 1024, scale = amplitude divisor <= 12240,
+ * w = the band's weight 0..8, exactly in int32_t: |1024 v| < 2^27 (|v| <=
+ * 1020 divisor + 24576), |(2m - 255) scale w| <= 255 * 12240 * 8 < 2^25. */
+static int modulated_on(int32_t v, int32_t midpoint, int32_t scale, int32_t band2, uint32_t p,
+                        uint32_t m)
+{
+    int32_t distance = (int32_t)(2u * p) - 255, w;
+    if (distance < 0)
+        distance = -distance;
+    w = band2 + 8 - distance;
+    w = w < 0 ? 0 : (w > 8 ? 8 : w);
+    return v * 1024 >= midpoint * 1024 + ((int32_t)(2u * m) - 255) * scale * w;
+}
+
+/* Pack a row of 0/1 bytes in place, most significant bit first: byte x/8
+ * is written after pixel x has been read, and x/8 <= x. */
+static void pack_row(uint8_t *pixels, uint32_t width)
+{
+    uint32_t i;
+    uint8_t byte = 0;
+    for (i = 0; i < width; i++) {
+        if (pixels[i])
+            byte = (uint8_t)(byte | (0x80u >> (i & 7u)));
+        if ((i & 7u) == 7u || i == width - 1u) {
+            pixels[i >> 3] = byte;
+            byte = 0;
+        }
+    }
+}
+
 void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, uint32_t y)
 {
     const kernel_def *k = &kernels[d->kernel];
@@ -72,10 +104,12 @@ void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, ui
     int16_t *target[12];
     int32_t weight[12];
     int32_t divisor = k->divisor, midpoint = (int32_t)255 * (QUARTERS / 2) * divisor;
+    /* threshold modulation (diffuse.h): NULL row, or row y mod 64 of the mask */
+    const uint8_t *noise_row = d->noise ? d->noise + (y & 63u) * 64u : 0;
+    int32_t scale = (int32_t)d->noise_amplitude * divisor, band2 = 2 * (int32_t)d->noise_band;
     int32_t reciprocal;
     int shift = 16;
     int backwards = d->serpentine && (y & 1u), dir = backwards ? -1 : 1, t;
-    uint8_t byte = 0;
     while ((((int32_t)2 << shift) + divisor / 2) / divisor < 29204)
         shift++;
     reciprocal = (((int32_t)1 << shift) + divisor / 2) / divisor;
@@ -89,28 +123,28 @@ void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, ui
         target[t] = rows[k->taps[t].dy] + dir * k->taps[t].dx;
         weight[t] = k->taps[t].weight;
     }
-    for (i = 0; i < width; i++) {
+    /* two loops, so plain diffusion tests no mask per pixel; exact shares
+     * e w: the entries hold sums of them, read over divisor above; |entry|
+     * <= 512 divisor <= 24576 */
+    for (i = 0; i < width && !noise_row; i++) {
         uint32_t x = backwards ? width - 1u - i : i;
         int32_t v = (int32_t)pixels[x] * QUARTERS * divisor + rows[0][x];
-        int on = v >= midpoint;
+        int32_t e = quantised_error(v, v >= midpoint, divisor, reciprocal, shift);
+        pixels[x] = (uint8_t)(v >= midpoint);
+        for (t = 0; t < k->count; t++)
+            target[t][x] = (int16_t)(target[t][x] + e * weight[t]);
+    }
+    for (i = 0; i < width && noise_row; i++) {
+        uint32_t x = backwards ? width - 1u - i : i;
+        int32_t v = (int32_t)pixels[x] * QUARTERS * divisor + rows[0][x];
+        int on = modulated_on(v, midpoint, scale, band2, pixels[x], noise_row[x & 63u]);
         int32_t e = quantised_error(v, on, divisor, reciprocal, shift);
         pixels[x] = (uint8_t)on;
-        /* exact shares e w: the entries hold sums of them, read over
-         * divisor above; |entry| <= 512 divisor <= 24576 */
         for (t = 0; t < k->count; t++)
             target[t][x] = (int16_t)(target[t][x] + e * weight[t]);
     }
     /* this row's entries become those of row y + rows */
     for (i = 0; i < span; i++)
         rows[0][(int32_t)i - MARGIN] = 0;
-    /* pack in place: byte x/8 is written after pixel x has been read, and
-     * x/8 <= x */
-    for (i = 0; i < width; i++) {
-        if (pixels[i])
-            byte = (uint8_t)(byte | (0x80u >> (i & 7u)));
-        if ((i & 7u) == 7u || i == width - 1u) {
-            pixels[i >> 3] = byte;
-            byte = 0;
-        }
-    }
+    pack_row(pixels, width);
 }

@@ -331,8 +331,14 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
         /* error diffusion: its error rows (diffuse.h), the band is GREY8 */
         size_t n = stp_diffusion_error_count(opt->diffuse_kernel, (uint32_t)opt->width);
         out(w, "static int16_t diffusion_errors[%lu];\n", (unsigned long)n);
-        out(w, "static const stp_diffusion diffusion = {%d, %d, diffusion_errors, %lu};\n",
-            opt->diffuse_kernel, opt->diffuse_raster ? 0 : 1, (unsigned long)n);
+        if (opt->diffuse_noise)
+            out(w, "static const stp_diffusion diffusion = {%d, %d, diffusion_errors, %lu, "
+                   "stp_cell_blue_noise_64, %d, %d};\n",
+                opt->diffuse_kernel, opt->diffuse_raster ? 0 : 1, (unsigned long)n,
+                STP_DIFFUSE_NOISE_AMPLITUDE, STP_DIFFUSE_NOISE_BAND);
+        else
+            out(w, "static const stp_diffusion diffusion = {%d, %d, diffusion_errors, %lu, 0, 0, 0};\n",
+                opt->diffuse_kernel, opt->diffuse_raster ? 0 : 1, (unsigned long)n);
     }
     if (opt->hidden == STP_HIDDEN_PAINTER)
         out(w, "static stp_sort_entry sort[%lu];\n", (unsigned long)(sort_count ? sort_count : 1));

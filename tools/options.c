@@ -90,7 +90,8 @@ int stp_tool_parse_dither(const char *s, stp_tool_options *opt)
                  {"bayer8", STP_TOOL_DITHER_BAYER8},   {"seed2x2", STP_TOOL_DITHER_SEED2X2},
                  {"pattern2x2", STP_TOOL_DITHER_PATTERN2X2}, {"bayer16", STP_TOOL_DITHER_BAYER16},
                  {"blue-noise", STP_TOOL_DITHER_BLUE_NOISE}};
-    /* error diffusion: NAME, or NAME:raster for rows all left to right */
+    /* error diffusion: NAME, NAME:raster for rows all left to right, or
+     * NAME:blue for rows left to right with blue-noise-modulated thresholds */
     static const struct {
         const char *name;
         stp_diffusion_kernel kernel;
@@ -108,10 +109,12 @@ int stp_tool_parse_dither(const char *s, stp_tool_options *opt)
         }
     for (i = 0; i < sizeof kernels / sizeof kernels[0]; i++) {
         size_t len = strlen(kernels[i].name);
-        if (!strncmp(s, kernels[i].name, len) && (!s[len] || !strcmp(s + len, ":raster"))) {
+        int blue = !strncmp(s, kernels[i].name, len) && !strcmp(s + len, ":blue");
+        if (!strncmp(s, kernels[i].name, len) && (!s[len] || !strcmp(s + len, ":raster") || blue)) {
             opt->dither = STP_TOOL_DITHER_DIFFUSE;
             opt->diffuse_kernel = kernels[i].kernel;
             opt->diffuse_raster = s[len] != 0;
+            opt->diffuse_noise = blue;
             return 0;
         }
     }
@@ -205,7 +208,7 @@ int stp_tool_apply_option(int code, const char *arg, stp_tool_options *opt,
         if (stp_tool_parse_dither(arg, opt))
             what = "--dither (bayer2, bayer4, bayer8, bayer16, blue-noise, clustered:N, "
                    "clustered45:N, seed2x2, pattern2x2, user:W:H:t,..., fs, atkinson, sierra-lite, "
-                   "jjn, stucki, burkes; NAME:raster)";
+                   "jjn, stucki, burkes; NAME:raster, NAME:blue)";
         opt->dither_given = 1;
         break;
     case STP_TOOL_OPT_SPACING:
@@ -350,14 +353,14 @@ void stp_tool_options_help(FILE *to)
             "  -s, --size WxH           device size in pixels (default 128x64)\n"
             "  -l, --levels N           INTENSITY levels, 2..256 (default 16; render: 256\n"
             "                           for grey and colour pictures and 1-bit picture files)\n"
-            "  -d, --dither CELL        bayer2, bayer4 (default; fs:raster for a 1-bit\n"
+            "  -d, --dither CELL        bayer2, bayer4 (default; fs:blue for a 1-bit\n"
             "                           picture file), bayer8, bayer16, blue-noise (64x64),\n"
             "                           clustered:N (dots, N 2..16), clustered45:N (45\n"
             "                           degrees, N even 4..16), seed2x2, pattern2x2,\n"
             "                           or user:W:H:t,t,... (thresholds 0..255, row-major);\n"
             "                           or error diffusion of 1-bit output: fs, atkinson,\n"
             "                           sierra-lite, jjn, stucki, burkes (serpentine; NAME:raster\n"
-            "                           for every row left to right)\n"
+            "                           rows left to right, NAME:blue also no worms)\n"
             "      --spacing KIND       threshold spacing of Bayer cells: linear (default),\n"
             "                           exponential, cubic\n"
             "  -g, --gamma G            gamma of the device table V = (I/k)^(1/G) (default 1)\n"

@@ -2,6 +2,7 @@
 /* Host side: a stp_scene through the core.  See render_scene.h. */
 #include "render_scene.h"
 #include "outlines.h"
+#include "readable.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -83,11 +84,16 @@ void stp_tool_still_defaults(stp_tool_options *opt)
         opt->dither = STP_TOOL_DITHER_DIFFUSE;
         opt->diffuse_kernel = STP_DIFFUSE_FLOYD_STEINBERG;
         opt->diffuse_raster = 1;
+        opt->diffuse_noise = 1;
     }
     if (!opt->levels_given)
         opt->levels = 256;
     if (!opt->exposure_given)
         opt->exposure_auto = 1;
+    /* with the default dither only: scripts that name a dither (the
+     * goldens, the firmware comparisons) keep their pictures */
+    if (!opt->dither_given && !opt->outlines_given && !opt->raytrace)
+        opt->outlines_auto = 1;
 }
 
 int stp_tool_diffusion(const stp_tool_options *opt, uint32_t width, stp_diffusion *d)
@@ -97,6 +103,11 @@ int stp_tool_diffusion(const stp_tool_options *opt, uint32_t width, stp_diffusio
         return 0;
     d->kernel = (uint8_t)opt->diffuse_kernel;
     d->serpentine = (uint8_t)!opt->diffuse_raster;
+    if (opt->diffuse_noise) {
+        d->noise = stp_cell_blue_noise_64;
+        d->noise_amplitude = STP_DIFFUSE_NOISE_AMPLITUDE;
+        d->noise_band = STP_DIFFUSE_NOISE_BAND;
+    }
     d->error_count = stp_diffusion_error_count(opt->diffuse_kernel, width);
     d->errors = malloc(sizeof *d->errors * (d->error_count ? d->error_count : 1));
     return d->errors ? 1 : -1;
@@ -428,6 +439,20 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
 {
     stp_tool_prepared prep;
     int rc;
+    if (opt->outlines_auto && !opt->outlines && !opt->raytrace && port->format == STP_PIXEL_MONO1) {
+        /* silhouettes when the picture would not show its objects (readable.h) */
+        stp_tool_options o = *opt;
+        int silhouettes = 0;
+        double level = 0;
+        o.outlines_auto = 0;
+        if (stp_tool_auto_outlines(scene, &o, &silhouettes, &level, err, err_size) != 0)
+            return -1;
+        if (silhouettes) {
+            o.outlines = STP_OUTLINE_SILHOUETTE;
+            o.outline_level = level;
+        }
+        return stp_tool_render(scene, &o, port, stats, err, err_size);
+    }
     if (stp_tool_tone_wanted(opt))
         return stp_tool_render_toned(scene, opt, port, stats, err, err_size);
     if (opt->smooth && !opt->raytrace && !opt->subdivided) {
@@ -465,9 +490,8 @@ static double fix_to_double(stp_fix v)
     return (double)v / STP_FIX_ONE;
 }
 
-/* The outline pieces of the prepared scene for the core's view. */
-static int find_outlines(const stp_tool_prepared *prep, const stp_view *view, stp_outline_segment **seg,
-                         size_t *count)
+/* The outline view of the core's view of a prepared scene. */
+static void outline_view(const stp_tool_prepared *prep, const stp_view *view, stp_outline_view *out)
 {
     stp_outline_view ov;
     ov.perspective = view->projection == STP_PERSPECTIVE;
@@ -484,7 +508,56 @@ static int find_outlines(const stp_tool_prepared *prep, const stp_view *view, st
     ov.window_half = fix_to_double(view->window_half);
     ov.width = prep->opt.width;
     ov.height = prep->opt.height;
+    *out = ov;
+}
+
+/* The outline pieces of the prepared scene for the core's view. */
+static int find_outlines(const stp_tool_prepared *prep, const stp_view *view, stp_outline_segment **seg,
+                         size_t *count)
+{
+    stp_outline_view ov;
+    outline_view(prep, view, &ov);
     return stp_outlines_find(&prep->scene, &ov, prep->opt.outlines, prep->opt.crease_angle, seg, count);
+}
+
+int stp_tool_outline_pixels(const stp_scene *scene, const stp_tool_options *opt, int kinds, double **xy,
+                            size_t *count, char *err, size_t err_size)
+{
+    stp_tool_prepared prep;
+    stp_view view;
+    stp_lighting lighting;
+    stp_outline_view ov;
+    stp_outline_segment *seg = 0;
+    size_t n = 0, i;
+    int rc = -1;
+    *xy = 0;
+    *count = 0;
+    if (stp_tool_prepare(scene, opt, &prep, err, err_size) != 0)
+        return -1;
+    if (stp_tool_setup_prepared(&prep, &view, &lighting, err, err_size) != 0)
+        goto done;
+    outline_view(&prep, &view, &ov);
+    if (stp_outlines_find(&prep.scene, &ov, kinds, prep.opt.crease_angle, &seg, &n) != 0) {
+        snprintf(err, err_size, "outlines: out of memory, or a view with from = at or up along the "
+                                "line of sight");
+        goto done;
+    }
+    *xy = malloc(sizeof **xy * 4 * (n ? n : 1));
+    if (!*xy) {
+        snprintf(err, err_size, "out of memory");
+        goto done;
+    }
+    for (i = 0; i < n; i++) {
+        double *q = *xy + 4 * *count;
+        if (stp_outline_project(&ov, seg[i].a, &q[0], &q[1]) == 0 &&
+            stp_outline_project(&ov, seg[i].b, &q[2], &q[3]) == 0)
+            ++*count;
+    }
+    rc = 0;
+done:
+    free(seg);
+    stp_tool_prepared_free(&prep);
+    return rc;
 }
 
 /* The lines' shade: the option's, or for "auto" black unless the

@@ -33,6 +33,8 @@ typedef struct stp_tool_options {
     stp_spacing spacing;     /* threshold spacing of Bayer cells (linear) */
     int diffuse_kernel;      /* STP_TOOL_DITHER_DIFFUSE: stp_diffusion_kernel */
     int diffuse_raster;      /* 1: every row left to right (0: serpentine) */
+    int diffuse_noise;       /* 1: thresholds modulated by the blue-noise mask
+                                (STP_DIFFUSE_NOISE_AMPLITUDE, _BAND; diffuse.h) */
     int dither_given, levels_given; /* the option parser saw -d / -l */
     int clustered_n, clustered_angle; /* STP_TOOL_DITHER_CLUSTERED: side, 0 or 45 */
     /* tone (tone.h): */
@@ -78,6 +80,11 @@ typedef struct stp_tool_options {
     int rt_hierarchy;        /* ray tracer: bounding-volume hierarchy (1) */
     /* outlines (outlines.h, docs/outlines.md): lines over the polygons */
     int outlines;            /* mask of STP_OUTLINE_SILHOUETTE, _CREASE (0) */
+    int outlines_auto;       /* 1: silhouettes when the objects would not be
+                                told from their background (readable.h; 0;
+                                1 for a still 1-bit picture without -d or
+                                --outlines) */
+    int outlines_given;      /* the option parser saw --outlines */
     double crease_angle;     /* degrees between normals that make a crease (40) */
     double outline_level;    /* the lines' shade 0..1 (0, black); < 0: black,
                                 or white on a dark background */
@@ -200,10 +207,21 @@ stp_fix stp_tool_fix(double v);
  * options dither with a cell (d->errors NULL), -1 out of memory. */
 int stp_tool_diffusion(const stp_tool_options *opt, uint32_t width, stp_diffusion *d);
 
+/* The visible pieces of the scene's edges of the kinds asked for (a mask of
+ * STP_OUTLINE_*, outlines.h) as the options draw the scene, in device
+ * pixels (x right, y down, (0, 0) the picture's top left corner): *xy holds
+ * x0 y0 x1 y1 per piece, malloc'ed (the caller frees it).  Returns 0, or -1
+ * with a message. */
+int stp_tool_outline_pixels(const stp_scene *scene, const stp_tool_options *opt, int kinds, double **xy,
+                            size_t *count, char *err, size_t err_size);
+
 /* The defaults for a still 1-bit picture (stipple render to a PBM file),
  * where options did not say otherwise: Floyd-Steinberg diffusion, rows
- * left to right, 256 levels (the best figure of tools/bench/quality.c;
- * moving pictures keep the ordered cell, which does not flicker). */
+ * left to right, thresholds of mid-greys modulated by the blue-noise mask
+ * (-d fs:blue: no worms on flat mid-greys, docs/dither.md), 256 levels,
+ * automatic exposure, and silhouettes where the objects would not be told
+ * from their background (readable.h; not with -d, --outlines or --raytrace)
+ * (moving pictures keep an ordered cell, which does not flicker). */
 void stp_tool_still_defaults(stp_tool_options *opt);
 
 /* Build the halftone cell the options name (Bayer 4x4 for diffusion, whose

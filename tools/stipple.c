@@ -100,7 +100,9 @@ static void usage_render(FILE *to)
             "      --planes PREFIX      with --palette bwr: also PREFIX.bw, PREFIX.red, the\n"
             "                           SSD1680's RAM planes (docs/palettes.md)\n"
             "      --outlines KIND      draw silhouette, crease or both edges as lines over\n"
-            "                           the polygons, where visible (docs/outlines.md)\n"
+            "                           the polygons, where visible (docs/outlines.md), or\n"
+            "                           none; default for a 1-bit picture file without -d:\n"
+            "                           silhouettes when the objects would not stand out\n"
             "      --crease-angle DEG   normals further apart make a crease (default 40)\n"
             "      --outline-level L    the lines' shade 0..1 (default 0, black), or auto:\n"
             "                           white on a dark background\n"
@@ -541,6 +543,7 @@ static int cmd_render(int argc, char **argv)
             break;
         case OPT_PLANES: planes = optarg; break;
         case OPT_OUTLINES:
+            opt.outlines_given = 1;
             if (!strcmp(optarg, "silhouette"))
                 opt.outlines = STP_OUTLINE_SILHOUETTE;
             else if (!strcmp(optarg, "crease"))

@@ -10,16 +10,17 @@
  * outside the frame are lost).  Serpentine: odd rows (y odd) run right to
  * left with the kernel mirrored.
  *
- * Number format: an error is rounded to whole quarter levels (|e| <= 512:
- * in exact arithmetic an error never exceeds 127.5 levels when the
- * kernel's weights sum to at most 1, since an incoming error is a mean of
- * earlier ones and a value beyond the midpoint is quantised towards it;
- * it is saturated at 128 levels all the same).  An error-row entry holds
- * the exact sum of the shares e * weight it has received, in 1/(4 divisor)
- * levels: |entry| <= 512 divisor <= 24576, so int16_t storage; a pixel's
- * value 4 divisor level + entry is computed in int32_t.  So the shares of
- * a pixel add up exactly to its (rounded) error: rounding loses at most
- * 1/8 level per pixel, and no division is made per share.
+ * Threshold modulation (noise, noise_amplitude, noise_band): the midpoint
+ * 127.5 of pixel (x, y), whose drive level is p, moves by
+ *     (mask[(y mod 64) 64 + x mod 64] - 127.5) amplitude / 256 * w(p)
+ * levels, mask a 64x64 threshold mask such as stp_cell_blue_noise_64
+ * (dither.h), w(p) = clamp((2 band + 8 - |2p - 255|) / 8, 0, 1): 1 for
+ * levels within band of mid-grey, 0 from band + 4 levels on (band >= 124:
+ * every level).  The error is still v - output, so the mean grey is kept;
+ * a blue-noise mask breaks up the regular "worms" plain diffusion draws
+ * on flat greys (docs/dithering.md).  The comparison is exact in int32_t:
+ * 1024 v >= 1024 midpoint + (2 mask - 255) amplitude divisor 8 w(p), both
+ * sides below 2^27 in magnitude.
  */
 #ifndef STIPPLE_DIFFUSE_H
 #define STIPPLE_DIFFUSE_H
@@ -50,15 +51,30 @@ typedef enum stp_diffusion_kernel {
 
 #define STP_DIFFUSE_KERNELS 6
 
-/* An error diffusion: the kernel, the scan order and the caller's error
+/* An error diffusion: the kernel, the scan order, the caller's error
  * rows (stp_diffusion_error_count(kernel, width) entries, contents
- * undefined between frames: row 0 clears them). */
+ * undefined between frames: row 0 clears them) and the threshold
+ * modulation (the last two members: an initialiser that leaves them out
+ * gives plain diffusion). */
 typedef struct stp_diffusion {
     uint8_t kernel;      /* stp_diffusion_kernel */
     uint8_t serpentine;  /* 1: odd rows right to left */
     int16_t *errors;
     size_t error_count;
+    const uint8_t *noise;    /* NULL: threshold 127.5 everywhere; else a
+                                64x64 row-major mask, 0..255, that moves it */
+    uint8_t noise_amplitude; /* 0..255: the threshold moves by up to (mask -
+                                127.5) amplitude / 256 levels (0: not at all) */
+    uint8_t noise_band;      /* 0..255: for drive levels within band of 127.5
+                                (tapering over 4 more levels; >= 124: all) */
 } stp_diffusion;
+
+/* The still picture's diffusion (what `stipple render` uses for a 1-bit
+ * picture file): Floyd-Steinberg, rows left to right, thresholds
+ * modulated by the blue-noise mask with this amplitude within this band
+ * of mid-grey (docs/dithering.md gives the measures that chose them). */
+#define STP_DIFFUSE_NOISE_AMPLITUDE 96
+#define STP_DIFFUSE_NOISE_BAND 42
 
 /* Error entries (int16_t) a kernel needs for rows of width pixels: one row
  * per row the kernel reaches (2 or 3) of width + 4 entries.  0 for an

@@ -173,19 +173,23 @@ else
 fi
 
 # --- 4. error diffusion: a still PBM defaults to Floyd-Steinberg at 256
-# levels; `stipple dither -d KERNEL` keeps the ramp's mean (FS loses no
-# error but the shares past the edges: ON pixels = sum of grey / 255 within 32)
-"$stipple" render "$scenes/tetra-s1.nff" -o "$work/still.pbm" &&
-    "$stipple" render "$scenes/tetra-s1.nff" -d fs:raster -l 256 -o "$work/fs.pbm" &&
-    "$stipple" render "$scenes/tetra-s1.nff" -d bayer4 -l 16 -o "$work/bayer.pbm" || bad "diffusion renders ran"
-if cmp -s "$work/still.pbm" "$work/fs.pbm" && ! cmp -s "$work/still.pbm" "$work/bayer.pbm"; then ok
-else bad "the default still PBM is not -d fs:raster -l 256"; fi
+# levels with blue-noise thresholds on mid-greys (fs:blue; teapot-s1's floor
+# is mid-grey, so plain fs:raster differs); `stipple dither -d KERNEL` keeps
+# the ramp's mean (FS loses no error but the shares past the edges: ON
+# pixels = sum of grey / 255 within 32)
+"$stipple" render "$scenes/teapot-s1.nff" -o "$work/still.pbm" &&
+    "$stipple" render "$scenes/teapot-s1.nff" -d fs:blue -l 256 -o "$work/fs.pbm" &&
+    "$stipple" render "$scenes/teapot-s1.nff" -d fs:raster -l 256 -o "$work/fsr.pbm" &&
+    "$stipple" render "$scenes/teapot-s1.nff" -d bayer4 -l 16 -o "$work/bayer.pbm" || bad "diffusion renders ran"
+if cmp -s "$work/still.pbm" "$work/fs.pbm" && ! cmp -s "$work/still.pbm" "$work/bayer.pbm" &&
+    ! cmp -s "$work/still.pbm" "$work/fsr.pbm"; then ok
+else bad "the default still PBM is not -d fs:blue -l 256"; fi
 "$stipple" render "$scenes/tetra-s1.nff" -o "$work/still.pgm" -l 256 &&
     "$stipple" render "$scenes/tetra-s1.nff" -o "$work/still2.pgm" && cmp -s "$work/still.pgm" "$work/still2.pgm" &&
     ok || bad "grey pictures changed defaults"
 expected_on=$(pnmtoplainpnm "$work/ramp.pgm" | tail -n +4 | tr -s ' \n' '\n' | grep . |
     awk '{s += $1} END {printf "%d", s / 255 + 0.5}')
-for kernel in fs fs:raster sierra-lite jjn stucki burkes; do
+for kernel in fs fs:raster fs:blue sierra-lite jjn stucki burkes; do
     if "$stipple" dither "$work/ramp.pgm" -d "$kernel" -o "$work/d.pbm"; then
         on=$(pnmtoplainpnm "$work/d.pbm" | tail -n +3 | tr -d ' \n' | tr -d 1 | wc -c)
         if [ $((on - expected_on)) -le 32 ] && [ $((expected_on - on)) -le 32 ]; then ok

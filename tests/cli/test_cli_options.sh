@@ -125,7 +125,7 @@ done
 greys=$(pnmtoplainpnm "$work/def.pgm" | tail -n +4 | tr -s ' \n' '\n' | grep . | sort -u | wc -l)
 if [ "$greys" -gt 16 ]; then ok; else bad ".pgm default has only $greys greys"; fi
 # a still 1-bit picture file is diffused at 256 levels (README, Dithering)
-r -o "$work/def.pbm" && r -d fs:raster -l 256 -o "$work/fs256.pbm" && r -d bayer4 -l 16 -o "$work/b16.pbm" ||
+r -o "$work/def.pbm" && r -d fs:blue -l 256 -o "$work/fs256.pbm" && r -d bayer4 -l 16 -o "$work/b16.pbm" ||
     bad ".pbm renders"
 if cmp -s "$work/def.pbm" "$work/fs256.pbm" && ! cmp -s "$work/def.pbm" "$work/b16.pbm"; then ok
 else bad ".pbm: default is not Floyd-Steinberg at 256 levels"; fi

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Error diffusion while rendering (render.h stp_output.diffusion, raytrace.h
- * stp_rt_render) on the shared scenes, every kernel, serpentine or not:
+ * stp_rt_render) on the shared scenes, every kernel, serpentine or not, and
+ * with blue-noise threshold modulation (fs:blue, the still default):
  *  - the 1-bit picture equals the same scene rendered to 8-bit grey and
  *    then diffused row by row (stp_diffuse_row), pixel for pixel: so the
  *    diffusion sees exactly the shades the other formats show, flat,
@@ -37,7 +38,8 @@ static void options_for(stp_tool_options *opt, variant v, int kernel, int serpen
     opt->levels = 256;
     opt->dither = STP_TOOL_DITHER_DIFFUSE;
     opt->diffuse_kernel = kernel;
-    opt->diffuse_raster = !serpentine;
+    opt->diffuse_raster = serpentine != 1;
+    opt->diffuse_noise = serpentine == 2; /* 2: rows left to right, blue-noise thresholds */
     switch (v) {
     case SMOOTH: opt->smooth = 1; break;
     case TRANSPARENT_ZBUFFER: opt->transparency = 1; break;
@@ -65,7 +67,7 @@ static void check_scene(const char *name, variant v)
     int kernel, serpentine;
     stp_test_load_scene(name, &scene);
     for (kernel = 0; kernel < STP_DIFFUSE_KERNELS; kernel++)
-        for (serpentine = 0; serpentine < 2; serpentine++) {
+        for (serpentine = 0; serpentine < 3; serpentine++) {
             stp_tool_options opt;
             stp_posix_frame whole, grey, banded;
             stp_diffusion d;
@@ -156,6 +158,7 @@ static void test_memory_checked(void **state)
     assert_int_equal(stp_posix_frame_init(&f, 16, 4, STP_PIXEL_MONO1), 0);
     memset(&out, 0, sizeof out);
     memset(&mem, 0, sizeof mem);
+    memset(&d, 0, sizeof d);
     d.kernel = STP_DIFFUSE_FLOYD_STEINBERG;
     d.serpentine = 0;
     d.errors = errs;

@@ -30,6 +30,22 @@ p=$(white "$work/plain.pgm") s=$(white "$work/sil.pgm") b=$(white "$work/both.pg
 [ "$b" -gt "$s" ] || bad "both ($b white) not more than silhouettes ($s)"
 [ "$n" = "$p" ] || bad "no crease at 180 degrees, yet $((n - p)) white pixels more"
 
+# a still 1-bit picture without -d or --outlines draws silhouettes where
+# its objects would not stand out (tools/readable.h): balls-s1 at 128x64
+# (a mid-grey object on a mid-grey floor, black lines on the lit floor),
+# not tetra-s1; --outlines none and a dither named with -d keep no lines
+scenes_dir=$(dirname "$scene")
+balls="$scenes_dir/balls-s1.nff"
+"$stipple" render "$balls" -o "$work/auto.pbm" && "$stipple" render "$balls" --outlines none -o "$work/off.pbm" &&
+    "$stipple" render "$balls" --outlines silhouette -o "$work/sil.pbm" &&
+    "$stipple" render "$balls" -d fs:blue -o "$work/named.pbm" || bad "balls renders"
+cmp -s "$work/auto.pbm" "$work/sil.pbm" || bad "balls-s1: the default is not the picture with silhouettes"
+cmp -s "$work/off.pbm" "$work/named.pbm" || bad "balls-s1: -d fs:blue drew lines by itself"
+! cmp -s "$work/auto.pbm" "$work/off.pbm" || bad "balls-s1: --outlines none drew lines"
+"$stipple" render "$scenes_dir/tetra-s1.nff" -o "$work/t1.pbm" &&
+    "$stipple" render "$scenes_dir/tetra-s1.nff" --outlines none -o "$work/t2.pbm" || bad "tetra renders"
+cmp -s "$work/t1.pbm" "$work/t2.pbm" || bad "tetra-s1: lines drawn though it reads without them"
+
 expect2() { "$stipple" "$@" >/dev/null 2>&1; [ $? = 2 ] || bad "'$*' not refused"; }
 expect2 render "$scene" --outlines all -o "$work/x.pbm"
 expect2 render "$scene" --outlines both --crease-angle 200 -o "$work/x.pbm"

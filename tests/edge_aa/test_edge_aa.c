@@ -531,6 +531,7 @@ static void test_bands_equal_frame(void **state)
                 size_t bytes = stp_row_bytes(formats[fm], 67) * 29;
                 s.format = formats[fm];
                 s.background = ONE / 5;
+                memset(&d, 0, sizeof d);
                 d.kernel = STP_DIFFUSE_FLOYD_STEINBERG;
                 d.serpentine = 1;
                 d.errors = errors;

@@ -2,6 +2,7 @@
 /* Double-precision dithering references: see diffuse_ref.h. */
 #include "diffuse_ref.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -30,6 +31,20 @@ static const kernel_def kernels[REF_KERNEL_COUNT] = {
 void ref_diffuse(const double *grey, int w, int h, ref_kernel kernel, int serpentine,
                  unsigned char *bits)
 {
+    ref_diffuse_noise(grey, w, h, kernel, serpentine, 0, 0, 0, bits);
+}
+
+/* The share 0..1 of the modulation at 8-bit level p: 1 within band levels
+ * of 127.5, falling to 0 over the next 4. */
+static double band_weight(double p, int band)
+{
+    double w = (2.0 * band + 8.0 - fabs(2.0 * p - 255.0)) / 8.0;
+    return w < 0 ? 0 : (w > 1 ? 1 : w);
+}
+
+void ref_diffuse_noise(const double *grey, int w, int h, ref_kernel kernel, int serpentine,
+                       const unsigned char *mask, double amplitude, int band, unsigned char *bits)
+{
     const kernel_def *k = &kernels[kernel];
     double *v = malloc(sizeof *v * (size_t)w * (size_t)h);
     int x, y, i;
@@ -42,7 +57,11 @@ void ref_diffuse(const double *grey, int w, int h, ref_kernel kernel, int serpen
             double e;
             int t;
             x = backwards ? w - 1 - i : i;
-            bits[y * w + x] = (unsigned char)(v[y * w + x] >= 0.5);
+            double threshold = 0.5;
+            if (mask)
+                threshold += (mask[(y % 64) * 64 + x % 64] - 127.5) * amplitude / (256.0 * 255.0) *
+                             band_weight(floor(grey[y * w + x] * 255.0 + 0.5), band);
+            bits[y * w + x] = (unsigned char)(v[y * w + x] >= threshold);
             e = v[y * w + x] - bits[y * w + x];
             for (t = 0; t < k->count; t++) {
                 int tx = x + dir * k->taps[t].dx, ty = y + k->taps[t].dy;

@@ -26,6 +26,14 @@ typedef enum ref_kernel {
 void ref_diffuse(const double *grey, int w, int h, ref_kernel kernel, int serpentine,
                  unsigned char *bits);
 
+/* As ref_diffuse with the threshold of pixel (x, y) moved by
+ * (mask[(y mod 64) 64 + x mod 64] - 127.5) amplitude / 256 levels (of 255)
+ * times clamp((2 band + 8 - |2p - 255|) / 8, 0, 1), p the pixel's grey in
+ * levels rounded to an integer, mask a 64x64 threshold mask (NULL: not
+ * moved): stp_diffusion's noise, noise_amplitude, noise_band. */
+void ref_diffuse_noise(const double *grey, int w, int h, ref_kernel kernel, int serpentine,
+                       const unsigned char *mask, double amplitude, int band, unsigned char *bits);
+
 /* Ordered dither with thresholds t[th*tw] (0..255, ON when 255 grey > t). */
 void ref_ordered(const double *grey, int w, int h, const unsigned char *t, int tw, int th,
                  unsigned char *bits);

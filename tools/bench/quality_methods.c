@@ -47,6 +47,12 @@ static void still(stp_tool_options *opt)
 {
     stp_tool_still_defaults(opt);
 }
+/* the still default without its automatic silhouettes (readable.h) */
+static void still_no_lines(stp_tool_options *opt)
+{
+    stp_tool_still_defaults(opt);
+    opt->outlines_auto = 0;
+}
 /* the still default with outlines (outlines.h) */
 static void still_silhouette(stp_tool_options *opt)
 {
@@ -146,6 +152,7 @@ static const qm_method methods[] = {
     {"fs", fs, 0},
     {"fs:raster", fs_raster, 0},
     {QM_STILL_DEFAULT, still, 0},
+    {QM_STILL_NO_LINES, still_no_lines, 0},
     {"still, --grey contrast", still_contrast, 0},
     {"still, --outlines silhouette", still_silhouette, 0},
     {"still, --outlines both", still_outlines, 0},

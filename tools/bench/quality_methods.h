@@ -20,6 +20,10 @@ typedef struct qm_method {
  * the ideal of the same tone, which the bench compares. */
 #define QM_STILL_DEFAULT "still default"
 #define QM_IDEAL_FS "still ideal + fs"
+/* The still default without its automatic silhouettes (readable.h): the
+ * diffusion the ratio "still / ideal+fs" holds to Floyd-Steinberg on the
+ * ideal (lines are drawn for the eye and are not in the ideal). */
+#define QM_STILL_NO_LINES "still, no auto lines"
 
 /* Method 0 is the default render (the cost ratios' base). */
 size_t qm_method_count(void);

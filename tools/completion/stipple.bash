@@ -58,7 +58,7 @@ _stipple() {
     --rotate) COMPREPLY=($(compgen -W "90 180 270" -- "$cur")); return ;;
     --scene-format) COMPREPLY=($(compgen -W "nff obj off ply" -- "$cur")); return ;;
     --hidden) COMPREPLY=($(compgen -W "zbuffer painter none" -- "$cur")); return ;;
-    -d | --dither) COMPREPLY=($(compgen -W "bayer2 bayer4 bayer8 bayer16 blue-noise clustered: clustered45: seed2x2 pattern2x2 user: fs atkinson sierra-lite jjn stucki burkes" -- "$cur")); return ;;
+    -d | --dither) COMPREPLY=($(compgen -W "bayer2 bayer4 bayer8 bayer16 blue-noise clustered: clustered45: seed2x2 pattern2x2 user: fs fs:raster fs:blue atkinson sierra-lite jjn stucki burkes" -- "$cur")); return ;;
     --exposure) COMPREPLY=($(compgen -W "auto off" -- "$cur")); return ;;
     --spacing) COMPREPLY=($(compgen -W "linear exponential cubic" -- "$cur")); return ;;
     --palette)
