@@ -107,6 +107,23 @@ typedef struct stp_vertex_entry {
 #define STP_CACHE_NONE 0xFFFFu /* cached[i] of a vertex kept outside the cache */
 #endif
 
+#if !STP_PLAYBACK_ONLY
+/* The face stage's model frame (render.c, stp_render_model_frame): what
+ * lets a face be tested and shaded from its Q1.14 model normal (a mesh's
+ * prepared one, or stp_render_model_normal of an entered polygon) without
+ * forming a normal from its view coordinates.  usable: perspective, and
+ * the model transform (identity when off) a rotation times a uniform
+ * scale of at least 2^-6 and below 256 with a positive determinant, and
+ * the eye in model coordinates below 2^30 in each coordinate. */
+typedef struct stp_model_frame {
+    int32_t rot[3][3]; /* model normal to view normal: the view rotation
+                          times the model's, normalised rows, Q15 */
+    int32_t eye[3];    /* the eye in model coordinates (stp_fix, |.| < 2^30) */
+    int64_t scale2;    /* the model's scale squared, 2F fractional bits */
+    int usable;
+} stp_model_frame;
+#endif
+
 struct stp_renderer {
     stp_instr *df;
     uint32_t capacity, used;
@@ -143,18 +160,22 @@ struct stp_renderer {
     stp_fix current_transmission; /* t last entered in the open segment */
     int32_t current_colour; /* colour last entered with current_style */
     stp_fix last_shade;
-#if STP_VERTEX_CACHE
-    /* the mesh path's shading constants (mesh.c: stp_shade_fast_prepare of
-     * segment_lighting, material and the eye at the view origin), prepared
-     * on the first shaded mesh after they change: open_segment clears
-     * fast_shade_valid when the copied lighting differs from the last
-     * segment's, set_object_shade when the material differs.  Kept, like
-     * the vertex cache, only where scenes are re-entered (STP_VERTEX_CACHE
-     * > 0): with 0 (a scene entered once, RAM tight) mesh.c prepares them
-     * per call on the stack */
+    /* the face stage's shading constants (stp_render_face_shader:
+     * stp_shade_fast_prepare of segment_lighting, material and the eye at
+     * the view origin, or the direction towards the eye of a parallel
+     * view), prepared on the first shaded face after they change:
+     * open_segment clears fast_shade_valid when the copied lighting differs
+     * from the last segment's, set_object_shade when the material differs,
+     * set_view when the projection changes; fast_shade_parallel: the
+     * projection they were prepared for */
     stp_shade_fast fast_shade;
     int fast_shade_valid;
-#endif
+    int fast_shade_parallel;
+    /* the face stage's model frame (stp_render_model_frame), for the view
+     * and model transform in force; frame_valid cleared with the vertex
+     * cache (cache_forget) */
+    stp_model_frame frame;
+    int frame_valid;
 
     int pen_valid;
     stp_vec3 pen; /* view coordinates */
@@ -197,6 +218,35 @@ struct stp_renderer {
  * stp_renderer_polygon stores it. */
 int stp_render_check_open(stp_renderer *r);
 void stp_render_project(const stp_renderer *r, stp_vec3 p, stp_instr *out);
+
+/* The face stage (render.c), shared by stp_renderer_polygon and
+ * stp_renderer_mesh: a flat face's normal, side and shade are formed by
+ * these functions on either route, so both enter a face alike.
+ *
+ * stp_render_model_normal: the unit normal of polygon v (n >= 3 points in
+ * model coordinates, wound counter-clockwise seen from the side it points
+ * to) as Q1.14 in out[]: a triangle's exact cross product, a longer
+ * polygon's Newell sum, normalised once and rounded.  Returns 0 (out
+ * unset) for a zero normal.  stp_mesh_prepare_normals is this for each
+ * triangle. */
+int stp_render_model_normal(const stp_vec3 *v, int n, int16_t out[3]);
+/* The model frame of the view and model transform in force (prepared once
+ * after either changes), or NULL when it is not usable (see above). */
+const stp_model_frame *stp_render_model_frame(stp_renderer *r);
+/* The exact sign (-1, 0, 1) of N.(eye - v0) in model coordinates: which
+ * side of a face with Q1.14 model normal n through model point v0 the eye
+ * sees (1: the side n points to). */
+int stp_render_face_side(const stp_model_frame *f, const int16_t n[3], stp_vec3 v0);
+/* The model normal n in view coordinates (Q1.14, rounded), turned to the
+ * eye when side <= 0 (the other side of an open surface shows). */
+void stp_render_view_normal(const stp_model_frame *f, const int16_t n[3], int side, int16_t nv[3]);
+/* The face shader of the segment's lighting and the material
+ * (stp_shade_fast_prepare), prepared when out of date. */
+const stp_shade_fast *stp_render_face_shader(stp_renderer *r);
+/* A flat face's INTENSITY style (1..levels) with shading on (its shade by
+ * the face shader s from view normal nv and vertex average centre) or off
+ * (the fill style); r->last_shade set to its shade. */
+int stp_render_face_style(stp_renderer *r, const stp_shade_fast *s, const int16_t nv[3], stp_vec3 centre);
 #endif
 
 #if STP_WITH_SHADOWS
