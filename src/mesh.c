@@ -71,7 +71,7 @@ int stp_mesh_prepare_normals(const stp_mesh *mesh, int16_t *normals, uint16_t *b
         v[0] = mesh->vertices[k[0]];
         v[1] = mesh->vertices[k[1]];
         v[2] = mesh->vertices[k[2]];
-        if (!stp_render_model_normal(v, 3, &normals[3 * (uint32_t)t])) {
+        if (!stp_render_triangle_normal(v, &normals[3 * (uint32_t)t])) {
             if (bad_triangle)
                 *bad_triangle = t;
             return STP_ERR_DEGENERATE;

@@ -640,52 +640,15 @@ static uint32_t magnitude(int32_t v)
     return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
 }
 
-/* (a, b, c) (|.| < 2^62) as a Q1.14 unit vector in out[]: STP_UNIT (Q30)
- * rounded to nearest; 0 for a zero vector. */
-static int unit_q14(int64_t a, int64_t b, int64_t c, int16_t *out)
-{
-    stp_unit3 u;
-    if (stp_unit_from64(a, b, c, &u) == 0)
-        return 0;
-    out[0] = (int16_t)stp_asr64((int64_t)u.x + ((int64_t)1 << 15), 16);
-    out[1] = (int16_t)stp_asr64((int64_t)u.y + ((int64_t)1 << 15), 16);
-    out[2] = (int16_t)stp_asr64((int64_t)u.z + ((int64_t)1 << 15), 16);
-    return 1;
-}
-
-/* The normal of triangle v: the edge vectors (below 2^33) are cut to 30
- * bits together, so each cross-product term is below 2^61 and their
- * difference below 2^62. */
-static int triangle_normal(const stp_vec3 *v, int16_t *out)
-{
-    int64_t e[6];
-    uint64_t spread = 0;
-    int i, bits;
-    e[0] = (int64_t)v[1].x - v[0].x;
-    e[1] = (int64_t)v[1].y - v[0].y;
-    e[2] = (int64_t)v[1].z - v[0].z;
-    e[3] = (int64_t)v[2].x - v[0].x;
-    e[4] = (int64_t)v[2].y - v[0].y;
-    e[5] = (int64_t)v[2].z - v[0].z;
-    for (i = 0; i < 6; i++)
-        spread |= (uint64_t)(e[i] < 0 ? -e[i] : e[i]);
-    bits = stp_bit_length64(spread) - 30;
-    if (bits > 0)
-        for (i = 0; i < 6; i++)
-            e[i] = stp_asr64(e[i], bits);
-    return unit_q14(e[1] * e[5] - e[2] * e[4], e[2] * e[3] - e[0] * e[5],
-                    e[0] * e[4] - e[1] * e[3], out);
-}
-
 static void newell_sum(const stp_vec3 *v, int n, int64_t *na, int64_t *nb, int64_t *nc);
 
 int stp_render_model_normal(const stp_vec3 *v, int n, int16_t out[3])
 {
     int64_t a, b, c;
     if (n == 3)
-        return triangle_normal(v, out);
+        return stp_render_triangle_normal(v, out);
     newell_sum(v, n, &a, &b, &c);
-    return unit_q14(a, b, c, out);
+    return stp_render_unit_q14(a, b, c, out);
 }
 
 /* The model transform's matrix m (identity when off), and whether it is a
@@ -784,27 +747,6 @@ const stp_model_frame *stp_render_model_frame(stp_renderer *r)
     return r->frame.usable ? &r->frame : 0;
 }
 
-int stp_render_face_side(const stp_model_frame *f, const int16_t n[3], stp_vec3 v0)
-{
-    /* |eye - v0| < 2^30 + 2^31 per coordinate: each product below 2^46 */
-    int64_t side = (int64_t)n[0] * ((int64_t)f->eye[0] - v0.x) +
-                   (int64_t)n[1] * ((int64_t)f->eye[1] - v0.y) +
-                   (int64_t)n[2] * ((int64_t)f->eye[2] - v0.z);
-    return side > 0 ? 1 : (side < 0 ? -1 : 0);
-}
-
-void stp_render_view_normal(const stp_model_frame *f, const int16_t n[3], int side, int16_t nv[3])
-{
-    int i;
-    for (i = 0; i < 3; i++) {
-        int32_t s = f->rot[i][0] * n[0] + f->rot[i][1] * n[1] + f->rot[i][2] * n[2];
-        /* Q15 x Q14, below 2^29 (1 + rounding): to Q14, rounded; the back
-         * side of an open surface shows its other side */
-        s = asr32(s + ((int32_t)1 << 14), 15);
-        nv[i] = (int16_t)(side > 0 ? s : -s);
-    }
-}
-
 const stp_shade_fast *stp_render_face_shader(stp_renderer *r)
 {
     int parallel = r->projection == STP_PARALLEL;
@@ -817,18 +759,6 @@ const stp_shade_fast *stp_render_face_shader(stp_renderer *r)
         r->fast_shade_parallel = parallel;
     }
     return &r->fast_shade;
-}
-
-int stp_render_face_style(stp_renderer *r, const stp_shade_fast *s, const int16_t nv[3], stp_vec3 centre)
-{
-    int style;
-    if (r->shading) {
-        r->last_shade = stp_shade_fast_face(s, nv, centre);
-        return stp_intensity_index_inline(r->last_shade, r->levels);
-    }
-    style = r->fill_style;
-    r->last_shade = stp_intensity_shade(style, r->levels);
-    return style;
 }
 
 static void append(stp_renderer *r, int32_t op, int32_t x, int32_t y, int32_t z, int32_t shade)
@@ -1276,7 +1206,7 @@ static int enter_shade(stp_renderer *r, stp_entry *e)
             /* the face stage's shader, on the unit normal (turned to the
              * eye) as Q1.14 */
             int16_t nv[3];
-            (void)unit_q14(e->normal.x, e->normal.y, e->normal.z, nv);
+            (void)stp_render_unit_q14(e->normal.x, e->normal.y, e->normal.z, nv);
             e->style = stp_render_face_style(r, stp_render_face_shader(r), nv, e->centre);
         }
     } else {
