@@ -299,8 +299,15 @@ int stp_renderer_line(stp_renderer *r, stp_vec3 p);
 /* An n-sided polygon (3 <= n <= STP_MAX_POLYGON_VERTICES) in world units.
  * With shading on, it is shaded at its vertex average with its Newell
  * normal (SHADE-CHECK) and a STP_OP_SHADE instruction is entered before
- * it when the style changes.  A polygon wholly clipped away, or a back face
- * with back-face removal on, enters nothing and returns STP_OK.
+ * it when the style changes.  A monochrome polygon is shaded by the face
+ * shader every flat face takes (a triangle of stp_renderer_mesh too, on
+ * the same normal: perspective, a model transform that is a rotation times
+ * a uniform scale, no transparency or shadow map: then the Newell normal
+ * of its points in model coordinates as Q1.14, and its back-face test on
+ * that normal, and a triangle enters exactly as in a mesh, mesh.h); colour
+ * shading takes the per-point shader.  A polygon wholly clipped away, or
+ * a back face with back-face removal on, enters nothing and returns
+ * STP_OK.
  * Errors: STP_ERR_ARG, STP_ERR_TOO_MANY_VERTICES, STP_ERR_DEGENERATE (zero
  * Newell normal: repeated/collinear vertices, no area), STP_ERR_FULL
  * (nothing of the polygon is left in the display file; or no segment slot
