@@ -1460,7 +1460,7 @@ static int enter_model_face(stp_renderer *r, const stp_vec3 *vertices, stp_entry
 /* DISPLAY-FILE-ENTER of a polygon: the steps above in order. */
 static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
                             stp_enter_shading shading, const stp_vec3 *normals,
-                            const stp_fix *shades, stp_face face)
+                            const stp_fix *shades)
 {
     stp_entry e;
     const stp_model_frame *frame;
@@ -1476,10 +1476,15 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     e.shading = shading;
     e.normals = normals;
     e.shades = shades;
-    e.face = face;
     r->last_shade = -1;
     if (shading == STP_ENTER_FLAT && (frame = model_route(r)) != 0)
         return enter_model_face(r, vertices, &e, frame);
+    /* off the model route, a triangle's side is known before the transform
+     * when back faces are removed and there is no model transform */
+    e.face = n == 3 && r->backface_removal && !r->model_on ? world_facing(r, vertices)
+                                                           : STP_FACE_UNKNOWN;
+    if (e.face == STP_FACE_BACK)
+        return STP_OK;
     enter_transform(r, vertices, &e);
     if (e.range)
         return STP_ERR_RANGE;
@@ -1493,38 +1498,10 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     return enter_store(r, &e);
 }
 
-/* Which side of a polygon the eye sees when it is known before the
- * transform (a triangle with back-face removal on, no model transform, a
- * segment open: entering would otherwise open one), off the model route
- * (which decides the side itself, as for a mesh's triangle). */
-static stp_face early_facing(stp_renderer *r, const stp_vec3 *vertices, int n)
-{
-    if (r != 0 && vertices != 0 && n == 3 && r->backface_removal && !r->model_on &&
-        r->open_segment >= 0 && model_route(r) == 0)
-        return world_facing(r, vertices);
-    return STP_FACE_UNKNOWN;
-}
-
-/* A back face removed before the costly steps (and their stack frame):
- * what entering leaves of it. */
-static int removed_early(stp_renderer *r, const stp_vec3 *vertices, int n)
-{
-    r->last_shade = -1;
-#if STP_WITH_SHADOWS
-    if (shadows_on(r))
-        stp_shadow_enter(r, vertices, n); /* it still casts (render.h) */
-#else
-    (void)vertices;
-    (void)n;
-#endif
-    return STP_OK;
-}
-
 static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,
-                         stp_enter_shading shading, const stp_vec3 *normals, const stp_fix *shades,
-                         stp_face face)
+                         stp_enter_shading shading, const stp_vec3 *normals, const stp_fix *shades)
 {
-    int status = enter_polygon_df(r, vertices, n, shading, normals, shades, face);
+    int status = enter_polygon_df(r, vertices, n, shading, normals, shades);
 #if STP_WITH_SHADOWS
     /* every polygon entered casts into the maps, in view or not, back face
      * or not (render.h) */
@@ -1536,31 +1513,20 @@ static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,
 
 int stp_renderer_polygon(stp_renderer *r, const stp_vec3 *vertices, int n)
 {
-    stp_face face = early_facing(r, vertices, n);
-    if (face == STP_FACE_BACK)
-        return removed_early(r, vertices, n);
-    return enter_polygon(r, vertices, n, STP_ENTER_FLAT, 0, 0, face);
+    return enter_polygon(r, vertices, n, STP_ENTER_FLAT, 0, 0);
 }
 
 int stp_renderer_polygon_smooth(stp_renderer *r, const stp_vec3 *vertices, const stp_vec3 *normals, int n)
 {
-    stp_face face;
     if (normals == 0)
         return STP_ERR_ARG;
-    face = early_facing(r, vertices, n);
-    if (face == STP_FACE_BACK)
-        return removed_early(r, vertices, n);
-    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_NORMALS, normals, 0, face);
+    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_NORMALS, normals, 0);
 }
 
 int stp_renderer_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const stp_fix *shades,
                               int n)
 {
-    stp_face face;
     if (shades == 0)
         return STP_ERR_ARG;
-    face = early_facing(r, vertices, n);
-    if (face == STP_FACE_BACK)
-        return removed_early(r, vertices, n);
-    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_SHADES, 0, shades, face);
+    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_SHADES, 0, shades);
 }
