@@ -328,14 +328,14 @@ static int store_face(mesh_context *c, const uint16_t *k, int style)
  * sum below 2^31 (|N| <= 1, |eye - v0| < 2^15 sqrt 3), off the exact sum
  * over 2^shift by less than |n0| + |n1| + |n2| < 2^15 (each floor less
  * than 1), so a larger estimate has the exact sign. */
-static int32_t face_side(const mesh_context *c, const int16_t *n, const stp_vec3 *a)
+static int face_side(const mesh_context *c, const int16_t *n, const stp_vec3 *a)
 {
 #if !STP_WIDE_ARITH
     int32_t side = (int32_t)n[0] * (c->eye[0] - asr32(a->x, c->shift)) +
                    (int32_t)n[1] * (c->eye[1] - asr32(a->y, c->shift)) +
                    (int32_t)n[2] * (c->eye[2] - asr32(a->z, c->shift));
     if (side >= ((int32_t)1 << 15) || side <= -((int32_t)1 << 15))
-        return side;
+        return side > 0 ? 1 : -1;
 #endif
     return stp_render_face_side(c->frame, n, *a);
 }
@@ -349,10 +349,9 @@ static int enter_face(mesh_context *c, uint16_t t)
     const stp_vec3 *a = &c->mesh->vertices[k[0]];
     const stp_vec3 *v[3];
     int16_t nv[3];
-    int32_t side, all, any;
+    int32_t all, any;
     stp_vec3 centre;
-    int i, style;
-    side = face_side(c, n, a);
+    int i, style, side = face_side(c, n, a);
     r->last_shade = -1;
     if (side <= 0 && r->backface_removal)
         return STP_OK; /* a back face (or edge-on): removed */

@@ -157,14 +157,14 @@ size_t stp_renderer_size(void);
  * exact size for its target and configuration defines it first (the
  * firmware build measures it: firmware/renderer_bytes.cmake).  The terms:
  * fixed fields, segments, lights (the lighting twice, shadow maps), the
- * vertex cache, the per-vertex scratch, and the mesh path's prepared
- * shading, kept with the vertex cache (128 + 24 per light: 216 + 4 bytes
- * with 4 lights on 32- and 64-bit targets). */
+ * vertex cache, the per-vertex scratch, and the face stage's prepared
+ * shading (128 + 24 per light: 216 + 4 bytes with 4 lights on 32- and
+ * 64-bit targets) and model frame (80). */
 #ifndef STP_RENDERER_BYTES
 #define STP_RENDERER_BYTES                                                                      \
     (1024u + 32u * STP_MAX_SEGMENTS + (48u + 112u * STP_WITH_SHADOWS) * STP_MAX_LIGHTS + 64u + 44u * STP_VERTEX_CACHE +          \
      (96u + 32u * STP_WITH_EDGE_AA) * (STP_MAX_POLYGON_VERTICES + 5u) +                      \
-     (STP_VERTEX_CACHE > 0 ? 128u + 24u * STP_MAX_LIGHTS : 0u))
+     128u + 24u * STP_MAX_LIGHTS + 80u)
 #endif
 typedef union stp_renderer_storage {
     int64_t align_integer;
