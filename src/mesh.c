@@ -374,7 +374,7 @@ static int enter_face(mesh_context *c, uint16_t t)
     centre.x = average3(c->inside, v[0]->x, v[1]->x, v[2]->x);
     centre.y = average3(c->inside, v[0]->y, v[1]->y, v[2]->y);
     centre.z = average3(c->inside, v[0]->z, v[1]->z, v[2]->z);
-    style = stp_render_face_style(r, c->shade, nv, centre);
+    style = stp_render_face_style(r, c->shade, nv, centre, side);
     return store_face(c, k, style);
 }
 

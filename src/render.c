@@ -1207,10 +1207,10 @@ static int enter_shade(stp_renderer *r, stp_entry *e)
              * eye) as Q1.14 */
             int16_t nv[3];
             (void)stp_render_unit_q14(e->normal.x, e->normal.y, e->normal.z, nv);
-            e->style = stp_render_face_style(r, stp_render_face_shader(r), nv, e->centre);
+            e->style = stp_render_face_style(r, stp_render_face_shader(r), nv, e->centre, e->facing);
         }
     } else {
-        e->style = stp_render_face_style(r, 0, 0, e->centre);
+        e->style = stp_render_face_style(r, 0, 0, e->centre, 1);
     }
     if (e->shading != STP_ENTER_FLAT) {
 #if STP_WITH_GOURAUD
@@ -1451,7 +1451,7 @@ static int enter_model_face(stp_renderer *r, const stp_vec3 *vertices, stp_entry
 #endif
     stp_render_view_normal(f, n, side, nv);
     e->style = stp_render_face_style(r, r->shading ? stp_render_face_shader(r) : 0, nv,
-                                     vertex_average(r->clip_a, e->n));
+                                     vertex_average(r->clip_a, e->n), side);
     e->colour = 0;
     e->transmission = 0;
     return enter_store(r, e);

@@ -308,14 +308,16 @@ STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16
 }
 
 /* A flat face's INTENSITY style (1..levels) with shading on (its shade by
- * the face shader s from view normal nv and vertex average centre) or off
- * (the fill style); r->last_shade set to its shade. */
+ * the face shader s from view normal nv and vertex average centre; the
+ * ambient share only, as for N.E = 0, when side is 0: its plane passes
+ * through the eye) or off (the fill style); r->last_shade set to its
+ * shade. */
 STP_HOT_INLINE int stp_render_face_style(stp_renderer *r, const stp_shade_fast *s, const int16_t nv[3],
-                                         stp_vec3 centre)
+                                         stp_vec3 centre, int side)
 {
     int style;
     if (r->shading) {
-        r->last_shade = stp_shade_fast_face(s, nv, centre);
+        r->last_shade = side != 0 ? stp_shade_fast_face(s, nv, centre) : s->ambient_shade;
         return stp_intensity_index_inline(r->last_shade, r->levels);
     }
     style = r->fill_style;
