@@ -27,20 +27,16 @@ typedef struct mesh_context {
     stp_renderer *r;
     const stp_mesh *mesh;
     stp_mesh_vertex *scratch;
-    /* model normal to view normal: the view rotation times the model
-     * transform's rotation, Q15 (|entry| <= 2^15 plus rounding) */
-    int32_t rot[3][3];
+    const stp_model_frame *frame; /* the face stage's (render_private.h) */
     /* the eye in model coordinates, floor-shifted right by `shift`, so
-     * that it and every shifted vertex are within 2^14 in magnitude */
+     * that it and every shifted vertex are within 2^14 in magnitude (the
+     * back-face test's first, 32-bit estimate) */
     int32_t eye[3];
     int shift;
     int inside; /* 1: every vertex is inside the view volume (no outcodes)
                    and its view coordinates are below 2^29 in magnitude */
     stp_view_lens lens; /* the projection's constants (view.c) */
-    const stp_shade_fast *shade; /* the prepared shading (prepare_shading) */
-#if !STP_VERTEX_CACHE
-    stp_shade_fast shade_here; /* prepared per call (render_private.h) */
-#endif
+    const stp_shade_fast *shade; /* the face stage's shader (stp_render_face_shader) */
 } mesh_context;
 
 /* floor(v / 2^s) for any int32 v, 0 <= s <= 31 (>> of a negative value is
@@ -57,40 +53,6 @@ static uint32_t magnitude(int32_t v)
 
 /* ---- normals, once ---- */
 
-/* The unit outward normal of triangle v as Q1.14 in out[]; 0 for a zero
- * normal.  The edge vectors (below 2^33) are cut to 30 bits together, so
- * each cross-product term is below 2^61 and their difference below 2^62. */
-static int triangle_normal(stp_vec3 a, stp_vec3 b, stp_vec3 c, int16_t *out)
-{
-    int64_t e[6];
-    int64_t nx, ny, nz;
-    uint64_t spread = 0;
-    stp_unit3 u;
-    int i, bits;
-    e[0] = (int64_t)b.x - a.x;
-    e[1] = (int64_t)b.y - a.y;
-    e[2] = (int64_t)b.z - a.z;
-    e[3] = (int64_t)c.x - a.x;
-    e[4] = (int64_t)c.y - a.y;
-    e[5] = (int64_t)c.z - a.z;
-    for (i = 0; i < 6; i++)
-        spread |= (uint64_t)(e[i] < 0 ? -e[i] : e[i]);
-    bits = stp_bit_length64(spread) - 30;
-    if (bits > 0)
-        for (i = 0; i < 6; i++)
-            e[i] = stp_asr64(e[i], bits);
-    nx = e[1] * e[5] - e[2] * e[4];
-    ny = e[2] * e[3] - e[0] * e[5];
-    nz = e[0] * e[4] - e[1] * e[3];
-    if (stp_unit_from64(nx, ny, nz, &u) == 0)
-        return 0;
-    /* STP_UNIT (Q30) to Q14, rounded to nearest */
-    out[0] = (int16_t)stp_asr64((int64_t)u.x + ((int64_t)1 << 15), 16);
-    out[1] = (int16_t)stp_asr64((int64_t)u.y + ((int64_t)1 << 15), 16);
-    out[2] = (int16_t)stp_asr64((int64_t)u.z + ((int64_t)1 << 15), 16);
-    return 1;
-}
-
 int stp_mesh_prepare_normals(const stp_mesh *mesh, int16_t *normals, uint16_t *bad_triangle)
 {
     uint16_t t;
@@ -105,8 +67,11 @@ int stp_mesh_prepare_normals(const stp_mesh *mesh, int16_t *normals, uint16_t *b
                 *bad_triangle = t;
             return STP_ERR_ARG;
         }
-        if (!triangle_normal(mesh->vertices[k[0]], mesh->vertices[k[1]], mesh->vertices[k[2]],
-                             &normals[3 * (uint32_t)t])) {
+        stp_vec3 v[3];
+        v[0] = mesh->vertices[k[0]];
+        v[1] = mesh->vertices[k[1]];
+        v[2] = mesh->vertices[k[2]];
+        if (!stp_render_triangle_normal(v, &normals[3 * (uint32_t)t])) {
             if (bad_triangle)
                 *bad_triangle = t;
             return STP_ERR_DEGENERATE;
@@ -133,48 +98,6 @@ static int fast_state(const stp_renderer *r, const stp_mesh *mesh)
         return 0;
 #endif
     return 1;
-}
-
-/* The model transform's matrix m (identity when off), and whether it is a
- * rotation times a uniform scale: columns of equal squared length and
- * pairwise orthogonal, each within 1/1024 of the squared length (the
- * rounding of composed stp_fix rotations), a positive determinant (a
- * reflection turns the winding), a scale of at least 2^-6 (enough bits for
- * the normals).  Tested on m cut to 14 significant bits (mq = m / 2^shift):
- * products below 2^28, sums of three below 2^30, all in 32 bits. */
-static int similarity(const stp_renderer *r, int32_t m[3][3], int32_t mq[3][3])
-{
-    int32_t len[3], dot[3], cross[3], tol, det;
-    uint32_t big = 0;
-    int i, j, shift;
-    for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++) {
-            m[i][j] = r->model_on ? r->model.m[i][j] : (i == j ? ONE : 0);
-            big |= magnitude(m[i][j]);
-        }
-    if (big < ((uint32_t)1 << (F - 6)) || big >= ((uint32_t)1 << 24))
-        return 0; /* scale below 2^-6 or 256 and more */
-    shift = stp_bit_length32(big) - 14;
-    for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++)
-            mq[i][j] = shift > 0 ? asr32(m[i][j], shift) : m[i][j] * ((int32_t)1 << -shift);
-    for (j = 0; j < 3; j++)
-        len[j] = mq[0][j] * mq[0][j] + mq[1][j] * mq[1][j] + mq[2][j] * mq[2][j];
-    dot[0] = mq[0][0] * mq[0][1] + mq[1][0] * mq[1][1] + mq[2][0] * mq[2][1];
-    dot[1] = mq[0][0] * mq[0][2] + mq[1][0] * mq[1][2] + mq[2][0] * mq[2][2];
-    dot[2] = mq[0][1] * mq[0][2] + mq[1][1] * mq[1][2] + mq[2][1] * mq[2][2];
-    tol = len[0] >> 10;
-    for (j = 0; j < 3; j++) {
-        int32_t d = len[j] - len[0];
-        if (d > tol || -d > tol || dot[j] > tol || -dot[j] > tol)
-            return 0;
-    }
-    /* c1 x c2 (below 2^29) cut to 15 bits, dotted with c0 (below 2^14) */
-    cross[0] = asr32(mq[1][1] * mq[2][2] - mq[2][1] * mq[1][2], 14);
-    cross[1] = asr32(mq[2][1] * mq[0][2] - mq[0][1] * mq[2][2], 14);
-    cross[2] = asr32(mq[0][1] * mq[1][2] - mq[1][1] * mq[0][2], 14);
-    det = mq[0][0] * cross[0] + mq[1][0] * cross[1] + mq[2][0] * cross[2];
-    return det > 0;
 }
 
 /* Whether a view coordinate saturated (as render.c's test). */
@@ -223,53 +146,21 @@ static int box_inside(const stp_renderer *r, stp_vec3 lo, stp_vec3 hi, int64_t s
 }
 
 /* The per-call values of the fast path (mesh_context); 0 when the model
- * transform or the eye's place rules it out. */
+ * frame (render_private.h: the model transform, the eye's place) rules it
+ * out. */
 static int prepare_call(mesh_context *c)
 {
     const stp_renderer *r = c->r;
-    int32_t m[3][3], mq[3][3];
-    int64_t s2, d[3];
-    const stp_vec3 *axis[3];
+    const stp_model_frame *f = stp_render_model_frame(c->r);
     uint32_t big = 0;
     stp_vec3 lo, hi;
     uint16_t v;
-    int i, j, k;
-    if (!similarity(r, m, mq))
+    int j, k;
+    if (f == 0)
         return 0;
-    s2 = (int64_t)m[0][0] * m[0][0] + (int64_t)m[1][0] * m[1][0] + (int64_t)m[2][0] * m[2][0];
-    axis[0] = &r->right;
-    axis[1] = &r->up;
-    axis[2] = &r->forward;
-    /* rows of V M (V: the view axes as rows, Q15 here), normalised: each
-     * product below 2^15 2^14, the sums below 2^31 (|V_i| = 1,
-     * |mq column| < 2^14 sqrt 3) */
-    for (i = 0; i < 3; i++) {
-        int32_t row[3];
-        int32_t ax = asr32(axis[i]->x, 1), ay = asr32(axis[i]->y, 1), az = asr32(axis[i]->z, 1);
-        stp_unit3 u;
-        for (j = 0; j < 3; j++)
-            row[j] = ax * mq[0][j] + ay * mq[1][j] + az * mq[2][j];
-        if (stp_unit_from64(row[0], row[1], row[2], &u) == 0)
-            return 0;
-        /* Q30 to Q15, rounded */
-        c->rot[i][0] = (int32_t)stp_asr64((int64_t)u.x + ((int64_t)1 << 14), 15);
-        c->rot[i][1] = (int32_t)stp_asr64((int64_t)u.y + ((int64_t)1 << 14), 15);
-        c->rot[i][2] = (int32_t)stp_asr64((int64_t)u.z + ((int64_t)1 << 14), 15);
-    }
-    /* eye in model coordinates: M^-1 (from - t) = M^T (from - t) / s^2 */
-    d[0] = (int64_t)r->from.x - (r->model_on ? r->model.t.x : 0);
-    d[1] = (int64_t)r->from.y - (r->model_on ? r->model.t.y : 0);
-    d[2] = (int64_t)r->from.z - (r->model_on ? r->model.t.z : 0);
-    for (j = 0; j < 3; j++) {
-        int64_t sum = m[0][j] * d[0] + m[1][j] * d[1] + m[2][j] * d[2], e;
-        if (sum >= ((int64_t)1 << 46) || sum <= -((int64_t)1 << 46))
-            return 0;
-        e = (sum * ONE) / s2; /* |sum| < 2^46: the product fits */
-        if (e >= ((int64_t)1 << 30) || e <= -((int64_t)1 << 30))
-            return 0;
-        c->eye[j] = (int32_t)e;
-        big |= magnitude(c->eye[j]);
-    }
+    c->frame = f;
+    for (j = 0; j < 3; j++)
+        big |= magnitude(f->eye[j]);
     /* the scale of the back-face test (every coordinate below 2^14) and
      * the model's bounding box */
     lo = hi = c->mesh->vertices[0];
@@ -285,7 +176,7 @@ static int prepare_call(mesh_context *c)
     /* the box's corners bound every coordinate's magnitude */
     big |= magnitude(lo.x) | magnitude(lo.y) | magnitude(lo.z) | magnitude(hi.x) |
            magnitude(hi.y) | magnitude(hi.z);
-    c->inside = box_inside(r, lo, hi, s2);
+    c->inside = box_inside(r, lo, hi, f->scale2);
     c->lens.focal = r->focal;
     c->lens.hither = r->hither;
     c->lens.half_width = (int32_t)r->width << (STP_SUBPIXEL_BITS - 1);
@@ -293,7 +184,7 @@ static int prepare_call(mesh_context *c)
     k = stp_bit_length32(big) - 14;
     c->shift = k > 0 ? k : 0;
     for (j = 0; j < 3; j++)
-        c->eye[j] = asr32(c->eye[j], c->shift);
+        c->eye[j] = asr32(f->eye[j], c->shift);
     return 1;
 }
 
@@ -342,39 +233,6 @@ static void vertex_project(mesh_context *c, uint16_t i)
         s->dz = d[2];
         s->state |= PROJECTED;
     }
-}
-
-/* The shade of a face from its unit normal (Q1.14, view coordinates,
- * turned to the eye) and its vertex average (view coordinates): the seed's
- * shading in 32-bit arithmetic (shade_fast.c), the same on every target. */
-static stp_fix shade_face(const mesh_context *c, const int16_t normal[3], stp_vec3 centre)
-{
-    return stp_shade_fast_face(c->shade, normal, centre);
-}
-
-/* The prepared shading of the segment's lighting, the material and the eye
- * at the view's origin (the fast path is perspective only): the
- * renderer's, made again only after they changed (render_private.h:
- * fast_shade), or with STP_VERTEX_CACHE 0 made for this call. */
-static void prepare_shading(mesh_context *c)
-{
-    stp_renderer *r = c->r;
-    stp_shade_fast *s;
-    stp_vec3 origin, towards_eye;
-#if STP_VERTEX_CACHE
-    s = &r->fast_shade;
-    c->shade = s;
-    if (r->fast_shade_valid)
-        return;
-    r->fast_shade_valid = 1;
-#else
-    s = &c->shade_here;
-    c->shade = s;
-#endif
-    origin.x = origin.y = origin.z = 0;
-    towards_eye.x = towards_eye.y = 0;
-    towards_eye.z = -ONE; /* unused: perspective */
-    stp_shade_fast_prepare(s, &r->segment_lighting, &r->material, origin, 0, towards_eye);
 }
 
 /* The vertex average, truncated toward zero as render.c's Newell step
@@ -464,6 +322,24 @@ static int store_face(mesh_context *c, const uint16_t *k, int style)
     return STP_OK;
 }
 
+/* The face stage's side of triangle t (stp_render_face_side: the exact
+ * sign of N.(eye - v0)); where 64-bit products are library calls, first
+ * estimated in 32 bits on the shifted eye and v0: products below 2^29, the
+ * sum below 2^31 (|N| <= 1, |eye - v0| < 2^15 sqrt 3), off the exact sum
+ * over 2^shift by less than |n0| + |n1| + |n2| < 2^15 (each floor less
+ * than 1), so a larger estimate has the exact sign. */
+static int face_side(const mesh_context *c, const int16_t *n, const stp_vec3 *a)
+{
+#if !STP_WIDE_ARITH
+    int32_t side = (int32_t)n[0] * (c->eye[0] - asr32(a->x, c->shift)) +
+                   (int32_t)n[1] * (c->eye[1] - asr32(a->y, c->shift)) +
+                   (int32_t)n[2] * (c->eye[2] - asr32(a->z, c->shift));
+    if (side >= ((int32_t)1 << 15) || side <= -((int32_t)1 << 15))
+        return side > 0 ? 1 : -1;
+#endif
+    return stp_render_face_side(c->frame, n, *a);
+}
+
 /* Triangle t on the fast path. */
 static int enter_face(mesh_context *c, uint16_t t)
 {
@@ -473,19 +349,12 @@ static int enter_face(mesh_context *c, uint16_t t)
     const stp_vec3 *a = &c->mesh->vertices[k[0]];
     const stp_vec3 *v[3];
     int16_t nv[3];
-    int32_t side, all, any;
+    int32_t all, any;
     stp_vec3 centre;
-    int i, style;
-    /* N.(eye - v0) in model coordinates: products below 2^29, the sum
-     * below 2^30 (|N| <= 1, |eye - v0| < 2^15 sqrt 3) */
-    side = (int32_t)n[0] * (c->eye[0] - asr32(a->x, c->shift)) +
-           (int32_t)n[1] * (c->eye[1] - asr32(a->y, c->shift)) +
-           (int32_t)n[2] * (c->eye[2] - asr32(a->z, c->shift));
+    int i, style, side = face_side(c, n, a);
     r->last_shade = -1;
     if (side <= 0 && r->backface_removal)
         return STP_OK; /* a back face (or edge-on): removed */
-    if (side == 0)
-        return enter_fallback(c, t); /* edge-on, shown: the general path decides */
     all = vertex_code(c, k[0]);
     any = all;
     for (i = 1; i < 3; i++) {
@@ -499,25 +368,13 @@ static int enter_face(mesh_context *c, uint16_t t)
         return STP_OK; /* wholly outside one plane */
     if (any != 0)
         return enter_fallback(c, t); /* crosses a plane: to be clipped */
-    for (i = 0; i < 3; i++) {
-        int32_t s = c->rot[i][0] * n[0] + c->rot[i][1] * n[1] + c->rot[i][2] * n[2];
-        /* Q15 x Q14, below 2^29 (1 + rounding): to Q14, rounded; the back
-         * side of an open surface shows its other side */
-        s = asr32(s + ((int32_t)1 << 14), 15);
-        nv[i] = (int16_t)(side > 0 ? s : -s);
-    }
+    stp_render_view_normal(c->frame, n, side, nv);
     for (i = 0; i < 3; i++)
         v[i] = &c->scratch[k[i]].view;
     centre.x = average3(c->inside, v[0]->x, v[1]->x, v[2]->x);
     centre.y = average3(c->inside, v[0]->y, v[1]->y, v[2]->y);
     centre.z = average3(c->inside, v[0]->z, v[1]->z, v[2]->z);
-    if (r->shading) {
-        r->last_shade = shade_face(c, nv, centre);
-        style = stp_intensity_index_inline(r->last_shade, r->levels);
-    } else {
-        style = r->fill_style;
-        r->last_shade = stp_intensity_shade(style, r->levels);
-    }
+    style = stp_render_face_style(r, c->shade, nv, centre, side);
     return store_face(c, k, style);
 }
 
@@ -558,8 +415,7 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
     c.mesh = mesh;
     c.scratch = scratch;
     fast = fast_state(r, mesh) && prepare_call(&c);
-    if (fast && r->shading)
-        prepare_shading(&c);
+    c.shade = fast && r->shading ? stp_render_face_shader(r) : 0;
 #if !STP_WITH_MESH_FALLBACK
     if (!fast)
         return STP_ERR_UNSUPPORTED;

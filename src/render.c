@@ -27,14 +27,10 @@ size_t stp_renderer_size(void)
 
 static void world_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out);
 
-/* The mesh path's prepared shading (render_private.h) is out of date. */
+/* The face stage's prepared shading (render_private.h) is out of date. */
 static void forget_fast_shade(stp_renderer *r)
 {
-#if STP_VERTEX_CACHE
     r->fast_shade_valid = 0;
-#else
-    (void)r;
-#endif
 }
 static void close_implicit_segment(stp_renderer *r);
 
@@ -75,6 +71,8 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     r->segment_lighting = r->user_lighting;
     stp_material_default(&r->material);
     forget_fast_shade(r);
+    r->fast_shade_parallel = 0;
+    r->frame_valid = 0;
     r->shading = 0;
     r->levels = 16;
     r->fill_style = 16;
@@ -130,6 +128,8 @@ int stp_renderer_set_view(stp_renderer *r, const stp_view *v)
     if (status != STP_OK)
         return status;
     close_implicit_segment(r);
+    if ((vf.projection == STP_PARALLEL) != r->fast_shade_parallel)
+        forget_fast_shade(r); /* the face shader's eye changes */
     r->focal = vf.focal;
     r->from = vf.from;
     r->near_ok = vf.from.x > -(1L << 30) && vf.from.x < (1L << 30) && vf.from.y > -(1L << 30) &&
@@ -209,7 +209,7 @@ int stp_renderer_set_object_shade(stp_renderer *r, const stp_material *material)
         if (material->colour[c] < 0 || material->colour[c] > ONE)
             return STP_ERR_ARG;
     if (!material_equal(&r->material, material))
-        forget_fast_shade(r); /* mesh.c prepares its shading again */
+        forget_fast_shade(r); /* the face stage prepares its shading again */
     r->material = *material;
     return STP_OK;
 }
@@ -491,14 +491,15 @@ static void cache_forget(stp_renderer *r)
 {
 #if STP_VERTEX_CACHE
     int i;
+#endif
+    r->frame_valid = 0; /* the model frame too */
+#if STP_VERTEX_CACHE
     if (++r->cache_stamp == 0) {
         /* wrapped: clear the entries so an old stamp cannot match */
         for (i = 0; i < STP_VERTEX_CACHE; i++)
             r->cache[i].stamp = 0;
         r->cache_stamp = 1;
     }
-#else
-    (void)r;
 #endif
 }
 
@@ -623,6 +624,141 @@ int stp_render_check_open(stp_renderer *r)
 void stp_render_project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
 {
     project(r, p, out);
+}
+
+/* ---- the face stage (render_private.h): shared with mesh.c ---- */
+
+/* floor(v / 2^s) for any int32 v, 0 <= s <= 31 (>> of a negative value is
+ * implementation-defined in C). */
+static int32_t asr32(int32_t v, int s)
+{
+    return v >= 0 ? v >> s : -1 - ((-1 - v) >> s);
+}
+
+static uint32_t magnitude(int32_t v)
+{
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+}
+
+static void newell_sum(const stp_vec3 *v, int n, int64_t *na, int64_t *nb, int64_t *nc);
+
+int stp_render_model_normal(const stp_vec3 *v, int n, int16_t out[3])
+{
+    int64_t a, b, c;
+    if (n == 3)
+        return stp_render_triangle_normal(v, out);
+    newell_sum(v, n, &a, &b, &c);
+    return stp_render_unit_q14(a, b, c, out);
+}
+
+/* The model transform's matrix m (identity when off), and whether it is a
+ * rotation times a uniform scale: columns of equal squared length and
+ * pairwise orthogonal, each within 1/1024 of the squared length (the
+ * rounding of composed stp_fix rotations), a positive determinant (a
+ * reflection turns the winding), a scale of at least 2^-6 (enough bits for
+ * the normals).  Tested on m cut to 14 significant bits (mq = m / 2^shift):
+ * products below 2^28, sums of three below 2^30, all in 32 bits. */
+static int similarity(const stp_renderer *r, int32_t m[3][3], int32_t mq[3][3])
+{
+    int32_t len[3], dot[3], cross[3], tol, det;
+    uint32_t big = 0;
+    int i, j, shift;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) {
+            m[i][j] = r->model_on ? r->model.m[i][j] : (i == j ? ONE : 0);
+            big |= magnitude(m[i][j]);
+        }
+    if (big < ((uint32_t)1 << (F - 6)) || big >= ((uint32_t)1 << 24))
+        return 0; /* scale below 2^-6 or 256 and more */
+    shift = stp_bit_length32(big) - 14;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            mq[i][j] = shift > 0 ? asr32(m[i][j], shift) : m[i][j] * ((int32_t)1 << -shift);
+    for (j = 0; j < 3; j++)
+        len[j] = mq[0][j] * mq[0][j] + mq[1][j] * mq[1][j] + mq[2][j] * mq[2][j];
+    dot[0] = mq[0][0] * mq[0][1] + mq[1][0] * mq[1][1] + mq[2][0] * mq[2][1];
+    dot[1] = mq[0][0] * mq[0][2] + mq[1][0] * mq[1][2] + mq[2][0] * mq[2][2];
+    dot[2] = mq[0][1] * mq[0][2] + mq[1][1] * mq[1][2] + mq[2][1] * mq[2][2];
+    tol = len[0] >> 10;
+    for (j = 0; j < 3; j++) {
+        int32_t d = len[j] - len[0];
+        if (d > tol || -d > tol || dot[j] > tol || -dot[j] > tol)
+            return 0;
+    }
+    /* c1 x c2 (below 2^29) cut to 15 bits, dotted with c0 (below 2^14) */
+    cross[0] = asr32(mq[1][1] * mq[2][2] - mq[2][1] * mq[1][2], 14);
+    cross[1] = asr32(mq[2][1] * mq[0][2] - mq[0][1] * mq[2][2], 14);
+    cross[2] = asr32(mq[0][1] * mq[1][2] - mq[1][1] * mq[0][2], 14);
+    det = mq[0][0] * cross[0] + mq[1][0] * cross[1] + mq[2][0] * cross[2];
+    return det > 0;
+}
+
+/* The model frame (render_private.h); 0 when it is not usable. */
+static int model_frame_prepare(const stp_renderer *r, stp_model_frame *f)
+{
+    int32_t m[3][3], mq[3][3];
+    int64_t d[3];
+    const stp_vec3 *axis[3];
+    int i, j;
+    if (r->projection != STP_PERSPECTIVE || !similarity(r, m, mq))
+        return 0;
+    f->scale2 = (int64_t)m[0][0] * m[0][0] + (int64_t)m[1][0] * m[1][0] + (int64_t)m[2][0] * m[2][0];
+    axis[0] = &r->right;
+    axis[1] = &r->up;
+    axis[2] = &r->forward;
+    /* rows of V M (V: the view axes as rows, Q15 here), normalised: each
+     * product below 2^15 2^14, the sums below 2^31 (|V_i| = 1,
+     * |mq column| < 2^14 sqrt 3) */
+    for (i = 0; i < 3; i++) {
+        int32_t row[3];
+        int32_t ax = asr32(axis[i]->x, 1), ay = asr32(axis[i]->y, 1), az = asr32(axis[i]->z, 1);
+        stp_unit3 u;
+        for (j = 0; j < 3; j++)
+            row[j] = ax * mq[0][j] + ay * mq[1][j] + az * mq[2][j];
+        if (stp_unit_from64(row[0], row[1], row[2], &u) == 0)
+            return 0;
+        /* Q30 to Q15, rounded */
+        f->rot[i][0] = (int32_t)stp_asr64((int64_t)u.x + ((int64_t)1 << 14), 15);
+        f->rot[i][1] = (int32_t)stp_asr64((int64_t)u.y + ((int64_t)1 << 14), 15);
+        f->rot[i][2] = (int32_t)stp_asr64((int64_t)u.z + ((int64_t)1 << 14), 15);
+    }
+    /* eye in model coordinates: M^-1 (from - t) = M^T (from - t) / s^2 */
+    d[0] = (int64_t)r->from.x - (r->model_on ? r->model.t.x : 0);
+    d[1] = (int64_t)r->from.y - (r->model_on ? r->model.t.y : 0);
+    d[2] = (int64_t)r->from.z - (r->model_on ? r->model.t.z : 0);
+    for (j = 0; j < 3; j++) {
+        int64_t sum = m[0][j] * d[0] + m[1][j] * d[1] + m[2][j] * d[2], e;
+        if (sum >= ((int64_t)1 << 46) || sum <= -((int64_t)1 << 46))
+            return 0;
+        e = (sum * ONE) / f->scale2; /* |sum| < 2^46: the product fits */
+        if (e >= ((int64_t)1 << 30) || e <= -((int64_t)1 << 30))
+            return 0;
+        f->eye[j] = (int32_t)e;
+    }
+    return 1;
+}
+
+const stp_model_frame *stp_render_model_frame(stp_renderer *r)
+{
+    if (!r->frame_valid) {
+        r->frame.usable = model_frame_prepare(r, &r->frame);
+        r->frame_valid = 1;
+    }
+    return r->frame.usable ? &r->frame : 0;
+}
+
+const stp_shade_fast *stp_render_face_shader(stp_renderer *r)
+{
+    int parallel = r->projection == STP_PARALLEL;
+    if (!r->fast_shade_valid || r->fast_shade_parallel != parallel) {
+        /* the eye at the view's origin; parallel: towards it along -z */
+        stp_vec3 origin = {0, 0, 0}, towards_eye = {0, 0, -ONE};
+        stp_shade_fast_prepare(&r->fast_shade, &r->segment_lighting, &r->material, origin,
+                               parallel, towards_eye);
+        r->fast_shade_valid = 1;
+        r->fast_shade_parallel = parallel;
+    }
+    return &r->fast_shade;
 }
 
 static void append(stp_renderer *r, int32_t op, int32_t x, int32_t y, int32_t z, int32_t shade)
@@ -812,6 +948,69 @@ static void enter_outcodes(stp_renderer *r, stp_entry *e)
 }
 #endif
 
+/* Newell's sum (Algorithm 10.4) of polygon v (n points; right-handed: the
+ * normal a counter-clockwise polygon shows), not normalised: relative
+ * coordinates cut to 24 bits keep every product < 2^50 and the sum of up
+ * to 4096 of them < 2^62; smaller polygons keep all their bits (the shift
+ * is that of the largest magnitude, counted up to 2^32). */
+static void newell_sum(const stp_vec3 *v, int n, int64_t *na, int64_t *nb, int64_t *nc)
+{
+    int64_t a = 0, b = 0, c = 0, div;
+    uint64_t spread = 0;
+    int i, bits, shift;
+    for (i = 1; i < n; i++) {
+        int64_t dx = (int64_t)v[i].x - v[0].x, dy = (int64_t)v[i].y - v[0].y,
+                dz = (int64_t)v[i].z - v[0].z;
+        spread |= (uint64_t)(dx < 0 ? -dx : dx) | (uint64_t)(dy < 0 ? -dy : dy) |
+                  (uint64_t)(dz < 0 ? -dz : dz);
+    }
+    bits = stp_bit_length64(spread);
+    shift = (bits > 32 ? 32 : bits) - 24;
+    if (shift < 0)
+        shift = 0;
+    div = (int64_t)1 << shift;
+    for (i = 0; i < n; i++) {
+        int p = i == 0 ? n - 1 : i - 1;
+        int64_t xp = ((int64_t)v[p].x - v[0].x) / div, yp = ((int64_t)v[p].y - v[0].y) / div,
+                zp = ((int64_t)v[p].z - v[0].z) / div;
+        int64_t x = ((int64_t)v[i].x - v[0].x) / div, y = ((int64_t)v[i].y - v[0].y) / div,
+                z = ((int64_t)v[i].z - v[0].z) / div;
+        a += (yp - y) * (zp + z);
+        b += (zp - z) * (xp + x);
+        c += (xp - x) * (yp + y);
+    }
+    *na = a;
+    *nb = b;
+    *nc = c;
+}
+
+/* The vertex average of polygon v (n points), each coordinate's sum
+ * divided by n truncated toward zero (both routes' face centre). */
+static stp_vec3 vertex_average(const stp_vec3 *v, int n)
+{
+    int64_t sx = 0, sy = 0, sz = 0;
+    stp_vec3 out;
+    int i;
+    for (i = 0; i < n; i++) {
+        sx += v[i].x;
+        sy += v[i].y;
+        sz += v[i].z;
+    }
+    if (!WIDE_DIVISION && n == 3 && sx >= INT32_MIN && sx <= INT32_MAX && sy >= INT32_MIN &&
+        sy <= INT32_MAX && sz >= INT32_MIN && sz <= INT32_MAX) {
+        /* the same truncated quotients without a division (a library
+         * call per coordinate where 32-bit division is one) */
+        out.x = (stp_fix)stp_div3_toward_zero((int32_t)sx);
+        out.y = (stp_fix)stp_div3_toward_zero((int32_t)sy);
+        out.z = (stp_fix)stp_div3_toward_zero((int32_t)sz);
+    } else {
+        out.x = (stp_fix)(sx / n);
+        out.y = (stp_fix)(sy / n);
+        out.z = (stp_fix)(sz / n);
+    }
+    return out;
+}
+
 /* Newell normal (Algorithm 10.4) of the view-space vertices in clip_a,
  * not normalised (components below 2^62), and their average.  Returns 0 for
  * a zero normal.  For a triangle Newell's sum is the cross product
@@ -820,9 +1019,9 @@ static int newell(const stp_renderer *r, stp_entry *e)
 {
     const stp_vec3 *v = r->clip_a;
     const int n = e->n;
-    int64_t a = 0, b = 0, c = 0, sx, sy, sz, div;
+    int64_t a = 0, b = 0, c = 0, div;
     uint64_t spread = 0; /* the relative coordinates' magnitudes ORed */
-    int i, bits, shift;
+    int bits;
     if (n == 3) {
         int64_t x1 = (int64_t)v[1].x - v[0].x, y1 = (int64_t)v[1].y - v[0].y,
                 z1 = (int64_t)v[1].z - v[0].z;
@@ -857,41 +1056,8 @@ static int newell(const stp_renderer *r, stp_entry *e)
             b = z1 * x2 - x1 * z2;
             c = x1 * y2 - y1 * x2;
         }
-        sx = (int64_t)v[0].x + v[1].x + v[2].x;
-        sy = (int64_t)v[0].y + v[1].y + v[2].y;
-        sz = (int64_t)v[0].z + v[1].z + v[2].z;
     } else {
-        sx = sy = sz = 0;
-        for (i = 1; i < n; i++) {
-            int64_t dx = (int64_t)v[i].x - v[0].x, dy = (int64_t)v[i].y - v[0].y,
-                    dz = (int64_t)v[i].z - v[0].z;
-            spread |= (uint64_t)(dx < 0 ? -dx : dx) | (uint64_t)(dy < 0 ? -dy : dy) |
-                      (uint64_t)(dz < 0 ? -dz : dz);
-        }
-        for (i = 0; i < n; i++) {
-            sx += v[i].x;
-            sy += v[i].y;
-            sz += v[i].z;
-        }
-        /* relative coordinates below 2^24 keep every product < 2^50 and the
-         * sum of up to 4096 of them < 2^62; smaller polygons keep all their
-         * bits (the shift is that of the largest magnitude, counted up to
-         * 2^32) */
-        bits = stp_bit_length64(spread);
-        shift = (bits > 32 ? 32 : bits) - 24;
-        if (shift < 0)
-            shift = 0;
-        div = (int64_t)1 << shift;
-        for (i = 0; i < n; i++) {
-            int p = i == 0 ? n - 1 : i - 1;
-            int64_t xp = ((int64_t)v[p].x - v[0].x) / div, yp = ((int64_t)v[p].y - v[0].y) / div,
-                    zp = ((int64_t)v[p].z - v[0].z) / div;
-            int64_t x = ((int64_t)v[i].x - v[0].x) / div, y = ((int64_t)v[i].y - v[0].y) / div,
-                    z = ((int64_t)v[i].z - v[0].z) / div;
-            a += (yp - y) * (zp + z);
-            b += (zp - z) * (xp + x);
-            c += (xp - x) * (yp + y);
-        }
+        newell_sum(v, n, &a, &b, &c);
     }
     /* the view system is left-handed: Newell's sum, written for right-handed
      * coordinates, points the other way there */
@@ -900,18 +1066,7 @@ static int newell(const stp_renderer *r, stp_entry *e)
     e->nz = -c;
     if (a == 0 && b == 0 && c == 0)
         return 0;
-    if (!WIDE_DIVISION && n == 3 && sx >= INT32_MIN && sx <= INT32_MAX && sy >= INT32_MIN && sy <= INT32_MAX &&
-        sz >= INT32_MIN && sz <= INT32_MAX) {
-        /* the same truncated quotients without a division (a library
-         * call per coordinate where 32-bit division is one) */
-        e->centre.x = (stp_fix)stp_div3_toward_zero((int32_t)sx);
-        e->centre.y = (stp_fix)stp_div3_toward_zero((int32_t)sy);
-        e->centre.z = (stp_fix)stp_div3_toward_zero((int32_t)sz);
-    } else {
-        e->centre.x = (stp_fix)(sx / n);
-        e->centre.y = (stp_fix)(sy / n);
-        e->centre.z = (stp_fix)(sz / n);
-    }
+    e->centre = vertex_average(v, n);
     return 1;
 }
 
@@ -1044,14 +1199,18 @@ static int enter_shade(stp_renderer *r, stp_entry *e)
             e->colour = STP_COLOUR_FLAG;
             for (c = 0; c < 3; c++)
                 e->colour |= (int32_t)(stp_intensity_index(rgb[c], r->levels) - 1) << (16 - 8 * c);
+            e->style = stp_intensity_index(r->last_shade, r->levels);
         } else
 #endif
-            r->last_shade = stp_shade_unit(&r->segment_lighting, &r->material, e->normal,
-                                           e->centre, e->eye_dir, e->n_dot_e);
-        e->style = stp_intensity_index(r->last_shade, r->levels);
+        {
+            /* the face stage's shader, on the unit normal (turned to the
+             * eye) as Q1.14 */
+            int16_t nv[3];
+            (void)stp_render_unit_q14(e->normal.x, e->normal.y, e->normal.z, nv);
+            e->style = stp_render_face_style(r, stp_render_face_shader(r), nv, e->centre, e->facing);
+        }
     } else {
-        e->style = r->fill_style;
-        r->last_shade = stp_intensity_shade(e->style, r->levels);
+        e->style = stp_render_face_style(r, 0, 0, e->centre, 1);
     }
     if (e->shading != STP_ENTER_FLAT) {
 #if STP_WITH_GOURAUD
@@ -1250,12 +1409,61 @@ static stp_face world_facing(const stp_renderer *r, const stp_vec3 *v)
     return side > 0 ? STP_FACE_FRONT : (side < 0 ? STP_FACE_BACK : STP_FACE_UNKNOWN);
 }
 
+/* The model frame when a flat polygon takes the face stage's model route
+ * (the route of every face stp_renderer_mesh enters without the fallback:
+ * a usable model frame, monochrome, no transparency, no shadow map), or
+ * NULL. */
+static const stp_model_frame *model_route(stp_renderer *r)
+{
+#if STP_WITH_TRANSPARENCY
+    if (r->t_max > 0 || r->t_min > 0)
+        return 0;
+#endif
+#if STP_WITH_SHADOWS
+    if (shadows_on(r))
+        return 0;
+#endif
+    if (r->colour)
+        return 0;
+    return stp_render_model_frame(r);
+}
+
+/* DISPLAY-FILE-ENTER of a flat polygon on the model route: the face
+ * stage's normal (of the entered points), side, view normal and shade, as
+ * stp_renderer_mesh enters a triangle; then clip, project and store.  A
+ * back face removed is not transformed. */
+static int enter_model_face(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e,
+                            const stp_model_frame *f)
+{
+    int16_t n[3], nv[3];
+    int side;
+    if (!stp_render_model_normal(vertices, e->n, n))
+        return STP_ERR_DEGENERATE;
+    side = stp_render_face_side(f, n, vertices[0]);
+    if (side <= 0 && r->backface_removal)
+        return STP_OK;
+    enter_transform(r, vertices, e);
+    if (e->range)
+        return STP_ERR_RANGE;
+#if STP_VERTEX_CACHE
+    if (e->outside_all != 0)
+        return STP_OK; /* wholly outside one plane: not shaded */
+#endif
+    stp_render_view_normal(f, n, side, nv);
+    e->style = stp_render_face_style(r, r->shading ? stp_render_face_shader(r) : 0, nv,
+                                     vertex_average(r->clip_a, e->n), side);
+    e->colour = 0;
+    e->transmission = 0;
+    return enter_store(r, e);
+}
+
 /* DISPLAY-FILE-ENTER of a polygon: the steps above in order. */
 static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
                             stp_enter_shading shading, const stp_vec3 *normals,
-                            const stp_fix *shades, stp_face face)
+                            const stp_fix *shades)
 {
     stp_entry e;
+    const stp_model_frame *frame;
     int status;
     if (r == 0 || vertices == 0 || n < 3)
         return n < 3 && n >= 0 && r != 0 ? STP_ERR_DEGENERATE : STP_ERR_ARG;
@@ -1268,8 +1476,15 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     e.shading = shading;
     e.normals = normals;
     e.shades = shades;
-    e.face = face;
     r->last_shade = -1;
+    if (shading == STP_ENTER_FLAT && (frame = model_route(r)) != 0)
+        return enter_model_face(r, vertices, &e, frame);
+    /* off the model route, a triangle's side is known before the transform
+     * when back faces are removed and there is no model transform */
+    e.face = n == 3 && r->backface_removal && !r->model_on ? world_facing(r, vertices)
+                                                           : STP_FACE_UNKNOWN;
+    if (e.face == STP_FACE_BACK)
+        return STP_OK;
     enter_transform(r, vertices, &e);
     if (e.range)
         return STP_ERR_RANGE;
@@ -1283,37 +1498,10 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     return enter_store(r, &e);
 }
 
-/* Which side of a polygon the eye sees when it is known before the
- * transform (a triangle with back-face removal on, no model transform, a
- * segment open: entering would otherwise open one). */
-static stp_face early_facing(const stp_renderer *r, const stp_vec3 *vertices, int n)
-{
-    if (r != 0 && vertices != 0 && n == 3 && r->backface_removal && !r->model_on &&
-        r->open_segment >= 0)
-        return world_facing(r, vertices);
-    return STP_FACE_UNKNOWN;
-}
-
-/* A back face removed before the costly steps (and their stack frame):
- * what entering leaves of it. */
-static int removed_early(stp_renderer *r, const stp_vec3 *vertices, int n)
-{
-    r->last_shade = -1;
-#if STP_WITH_SHADOWS
-    if (shadows_on(r))
-        stp_shadow_enter(r, vertices, n); /* it still casts (render.h) */
-#else
-    (void)vertices;
-    (void)n;
-#endif
-    return STP_OK;
-}
-
 static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,
-                         stp_enter_shading shading, const stp_vec3 *normals, const stp_fix *shades,
-                         stp_face face)
+                         stp_enter_shading shading, const stp_vec3 *normals, const stp_fix *shades)
 {
-    int status = enter_polygon_df(r, vertices, n, shading, normals, shades, face);
+    int status = enter_polygon_df(r, vertices, n, shading, normals, shades);
 #if STP_WITH_SHADOWS
     /* every polygon entered casts into the maps, in view or not, back face
      * or not (render.h) */
@@ -1325,31 +1513,20 @@ static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,
 
 int stp_renderer_polygon(stp_renderer *r, const stp_vec3 *vertices, int n)
 {
-    stp_face face = early_facing(r, vertices, n);
-    if (face == STP_FACE_BACK)
-        return removed_early(r, vertices, n);
-    return enter_polygon(r, vertices, n, STP_ENTER_FLAT, 0, 0, face);
+    return enter_polygon(r, vertices, n, STP_ENTER_FLAT, 0, 0);
 }
 
 int stp_renderer_polygon_smooth(stp_renderer *r, const stp_vec3 *vertices, const stp_vec3 *normals, int n)
 {
-    stp_face face;
     if (normals == 0)
         return STP_ERR_ARG;
-    face = early_facing(r, vertices, n);
-    if (face == STP_FACE_BACK)
-        return removed_early(r, vertices, n);
-    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_NORMALS, normals, 0, face);
+    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_NORMALS, normals, 0);
 }
 
 int stp_renderer_polygon_vertex_shades(stp_renderer *r, const stp_vec3 *vertices, const stp_fix *shades,
                               int n)
 {
-    stp_face face;
     if (shades == 0)
         return STP_ERR_ARG;
-    face = early_facing(r, vertices, n);
-    if (face == STP_FACE_BACK)
-        return removed_early(r, vertices, n);
-    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_SHADES, 0, shades, face);
+    return enter_polygon(r, vertices, n, STP_ENTER_SMOOTH_SHADES, 0, shades);
 }

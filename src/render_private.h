@@ -8,6 +8,7 @@
 #include "clip_private.h"
 #include "view_private.h"
 #include "shade_fast_private.h"
+#include "shade_private.h"
 
 #define STP_CLIP_VERTICES (STP_MAX_POLYGON_VERTICES + 5)
 
@@ -107,6 +108,23 @@ typedef struct stp_vertex_entry {
 #define STP_CACHE_NONE 0xFFFFu /* cached[i] of a vertex kept outside the cache */
 #endif
 
+#if !STP_PLAYBACK_ONLY
+/* The face stage's model frame (render.c, stp_render_model_frame): what
+ * lets a face be tested and shaded from its Q1.14 model normal (a mesh's
+ * prepared one, or stp_render_model_normal of an entered polygon) without
+ * forming a normal from its view coordinates.  usable: perspective, and
+ * the model transform (identity when off) a rotation times a uniform
+ * scale of at least 2^-6 and below 256 with a positive determinant, and
+ * the eye in model coordinates below 2^30 in each coordinate. */
+typedef struct stp_model_frame {
+    int32_t rot[3][3]; /* model normal to view normal: the view rotation
+                          times the model's, normalised rows, Q15 */
+    int32_t eye[3];    /* the eye in model coordinates (stp_fix, |.| < 2^30) */
+    int64_t scale2;    /* the model's scale squared, 2F fractional bits */
+    int usable;
+} stp_model_frame;
+#endif
+
 struct stp_renderer {
     stp_instr *df;
     uint32_t capacity, used;
@@ -143,18 +161,22 @@ struct stp_renderer {
     stp_fix current_transmission; /* t last entered in the open segment */
     int32_t current_colour; /* colour last entered with current_style */
     stp_fix last_shade;
-#if STP_VERTEX_CACHE
-    /* the mesh path's shading constants (mesh.c: stp_shade_fast_prepare of
-     * segment_lighting, material and the eye at the view origin), prepared
-     * on the first shaded mesh after they change: open_segment clears
-     * fast_shade_valid when the copied lighting differs from the last
-     * segment's, set_object_shade when the material differs.  Kept, like
-     * the vertex cache, only where scenes are re-entered (STP_VERTEX_CACHE
-     * > 0): with 0 (a scene entered once, RAM tight) mesh.c prepares them
-     * per call on the stack */
+    /* the face stage's shading constants (stp_render_face_shader:
+     * stp_shade_fast_prepare of segment_lighting, material and the eye at
+     * the view origin, or the direction towards the eye of a parallel
+     * view), prepared on the first shaded face after they change:
+     * open_segment clears fast_shade_valid when the copied lighting differs
+     * from the last segment's, set_object_shade when the material differs,
+     * set_view when the projection changes; fast_shade_parallel: the
+     * projection they were prepared for */
     stp_shade_fast fast_shade;
     int fast_shade_valid;
-#endif
+    int fast_shade_parallel;
+    /* the face stage's model frame (stp_render_model_frame), for the view
+     * and model transform in force; frame_valid cleared with the vertex
+     * cache (cache_forget) */
+    stp_model_frame frame;
+    int frame_valid;
 
     int pen_valid;
     stp_vec3 pen; /* view coordinates */
@@ -197,6 +219,111 @@ struct stp_renderer {
  * stp_renderer_polygon stores it. */
 int stp_render_check_open(stp_renderer *r);
 void stp_render_project(const stp_renderer *r, stp_vec3 p, stp_instr *out);
+
+/* The face stage (render.c), shared by stp_renderer_polygon and
+ * stp_renderer_mesh: a flat face's normal, side and shade are formed by
+ * these functions on either route, so both enter a face alike.
+ *
+ * stp_render_model_normal: the unit normal of polygon v (n >= 3 points in
+ * model coordinates, wound counter-clockwise seen from the side it points
+ * to) as Q1.14 in out[]: a triangle's exact cross product, a longer
+ * polygon's Newell sum, normalised once and rounded.  Returns 0 (out
+ * unset) for a zero normal.  stp_mesh_prepare_normals is this for each
+ * triangle. */
+int stp_render_model_normal(const stp_vec3 *v, int n, int16_t out[3]);
+/* Here, for render.c and mesh.c (direct drawing links mesh.c's
+ * stp_mesh_prepare_normals without render.c): (a, b, c) (|.| < 2^62) as a
+ * Q1.14 unit vector in out[] (STP_UNIT, Q30, rounded to nearest), 0 for a
+ * zero vector; */
+static inline int stp_render_unit_q14(int64_t a, int64_t b, int64_t c, int16_t out[3])
+{
+    stp_unit3 u;
+    if (stp_unit_from64(a, b, c, &u) == 0)
+        return 0;
+    out[0] = (int16_t)stp_asr64((int64_t)u.x + ((int64_t)1 << 15), 16);
+    out[1] = (int16_t)stp_asr64((int64_t)u.y + ((int64_t)1 << 15), 16);
+    out[2] = (int16_t)stp_asr64((int64_t)u.z + ((int64_t)1 << 15), 16);
+    return 1;
+}
+
+/* a triangle's normal (stp_render_model_normal for n = 3): the edge
+ * vectors (below 2^33) cut to 30 bits together, so each cross-product term
+ * is below 2^61 and their difference below 2^62. */
+static inline int stp_render_triangle_normal(const stp_vec3 *v, int16_t out[3])
+{
+    int64_t e[6];
+    uint64_t spread = 0;
+    int i, bits;
+    e[0] = (int64_t)v[1].x - v[0].x;
+    e[1] = (int64_t)v[1].y - v[0].y;
+    e[2] = (int64_t)v[1].z - v[0].z;
+    e[3] = (int64_t)v[2].x - v[0].x;
+    e[4] = (int64_t)v[2].y - v[0].y;
+    e[5] = (int64_t)v[2].z - v[0].z;
+    for (i = 0; i < 6; i++)
+        spread |= (uint64_t)(e[i] < 0 ? -e[i] : e[i]);
+    bits = stp_bit_length64(spread) - 30;
+    if (bits > 0)
+        for (i = 0; i < 6; i++)
+            e[i] = stp_asr64(e[i], bits);
+    return stp_render_unit_q14(e[1] * e[5] - e[2] * e[4], e[2] * e[3] - e[0] * e[5],
+                               e[0] * e[4] - e[1] * e[3], out);
+}
+
+
+/* The model frame of the view and model transform in force (prepared once
+ * after either changes), or NULL when it is not usable (see above). */
+const stp_model_frame *stp_render_model_frame(stp_renderer *r);
+/* The face shader of the segment's lighting and the material
+ * (stp_shade_fast_prepare), prepared when out of date. */
+const stp_shade_fast *stp_render_face_shader(stp_renderer *r);
+
+/* The exact sign (-1, 0, 1) of N.(eye - v0) in model coordinates: which
+ * side of a face with Q1.14 model normal n through model point v0 the eye
+ * sees (1: the side n points to).  |eye - v0| < 2^30 + 2^31 per
+ * coordinate: each product below 2^46, the sum below 2^48. */
+STP_HOT_INLINE int stp_render_face_side(const stp_model_frame *f, const int16_t n[3], stp_vec3 v0)
+{
+    int64_t side = (int64_t)n[0] * ((int64_t)f->eye[0] - v0.x) +
+                   (int64_t)n[1] * ((int64_t)f->eye[1] - v0.y) +
+                   (int64_t)n[2] * ((int64_t)f->eye[2] - v0.z);
+    return side > 0 ? 1 : (side < 0 ? -1 : 0);
+}
+
+/* The model normal n in view coordinates (Q1.14, rounded), turned to the
+ * eye when side <= 0 (the other side of an open surface shows): each row
+ * product Q15 x Q14, the sum below 2^29 (1 + rounding), to Q14 rounded
+ * (floor of the sum plus a half: >> of a negative value is
+ * implementation-defined, so the shift is taken on a value made positive). */
+STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16_t n[3], int side,
+                                           int16_t nv[3])
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        int32_t s = f->rot[i][0] * n[0] + f->rot[i][1] * n[1] + f->rot[i][2] * n[2] +
+                    ((int32_t)1 << 14);
+        s = (int32_t)(((uint32_t)s + ((uint32_t)1 << 30)) >> 15) - ((int32_t)1 << 15);
+        nv[i] = (int16_t)(side > 0 ? s : -s);
+    }
+}
+
+/* A flat face's INTENSITY style (1..levels) with shading on (its shade by
+ * the face shader s from view normal nv and vertex average centre; the
+ * ambient share only, as for N.E = 0, when side is 0: its plane passes
+ * through the eye) or off (the fill style); r->last_shade set to its
+ * shade. */
+STP_HOT_INLINE int stp_render_face_style(stp_renderer *r, const stp_shade_fast *s, const int16_t nv[3],
+                                         stp_vec3 centre, int side)
+{
+    int style;
+    if (r->shading) {
+        r->last_shade = side != 0 ? stp_shade_fast_face(s, nv, centre) : s->ambient_shade;
+        return stp_intensity_index_inline(r->last_shade, r->levels);
+    }
+    style = r->fill_style;
+    r->last_shade = stp_intensity_shade(style, r->levels);
+    return style;
+}
 #endif
 
 #if STP_WITH_SHADOWS

@@ -155,9 +155,9 @@
  * to 4096): the view coordinates, outcode and device position of recently
  * entered points, keyed by their exact coordinates, so a vertex a mesh
  * enters several times is transformed and projected once.  44 bytes of RAM
- * an entry plus 2 per STP_MAX_POLYGON_VERTICES; 0 takes it out, and with
- * it the mesh path's shading kept across calls (`stipple compile` does: a
- * compiled scene is entered once).  64 -> 0 saves 920 bytes of code. */
+ * an entry plus 2 per STP_MAX_POLYGON_VERTICES; 0 takes it out
+ * (`stipple compile` does: a compiled scene is entered once; the face
+ * stage's prepared shading stays in the renderer either way).  64 -> 0 saves 920 bytes of code. */
 #ifndef STP_VERTEX_CACHE
 #define STP_VERTEX_CACHE 64
 #endif

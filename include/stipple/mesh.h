@@ -7,19 +7,21 @@
  * no per-face normal construction or normalisation.
  *
  * The mesh lives in the caller's memory (all of it may be const, in flash).
- * stp_renderer_mesh enters every triangle into the open segment as
- * stp_renderer_polygon would enter its three vertices: the same display-file
- * records (STP_OP_SHADE when the style changes, device coordinates, depth
- * keys), the segment's model transform applied, back-face removal honoured,
- * shaded with the segment's lighting and material.  The shade is the
- * seed's equation in 32-bit arithmetic (the same on every target; within
- * 0.0025 of a double-precision reference on the tests' torus: tests/mesh),
- * prepared once and kept in the renderer until the segment's lighting (in
- * view coordinates) or the material changes.  Pictures differ from
- * triangle-by-triangle entry only where a face's shade differs (that
- * arithmetic, and the prepared Q1.14 normal against the exact normal of
- * the transformed vertices) or where a face within a hair of edge-on is
- * decided the other way.
+ * stp_renderer_mesh enters every triangle into the open segment exactly as
+ * stp_renderer_polygon enters its three vertices: both go through one face
+ * stage (src/render_private.h) - the back-face test on the Q1.14 model
+ * normal (stp_mesh_prepare_normals' arithmetic, which stp_renderer_polygon
+ * applies to the points it is given), the normal turned into view
+ * coordinates, the face shader (the seed's equation in 32-bit arithmetic,
+ * the same on every target; within 0.0025 of a double-precision reference
+ * on the tests' torus: tests/mesh), the same display-file records
+ * (STP_OP_SHADE when the style changes, device coordinates, depth keys),
+ * the segment's model transform applied, back-face removal honoured.  With
+ * normals from stp_mesh_prepare_normals the display file and the picture
+ * are identical to triangle-by-triangle entry (tests/mesh/
+ * test_entry_identical).  The shader is prepared once and kept in the
+ * renderer until the segment's lighting (in view coordinates), the
+ * material or the projection changes.
  *
  * What the fast path does not handle goes, triangle by triangle, through
  * stp_renderer_polygon (the fallback): a triangle that crosses or touches

@@ -157,14 +157,14 @@ size_t stp_renderer_size(void);
  * exact size for its target and configuration defines it first (the
  * firmware build measures it: firmware/renderer_bytes.cmake).  The terms:
  * fixed fields, segments, lights (the lighting twice, shadow maps), the
- * vertex cache, the per-vertex scratch, and the mesh path's prepared
- * shading, kept with the vertex cache (128 + 24 per light: 216 + 4 bytes
- * with 4 lights on 32- and 64-bit targets). */
+ * vertex cache, the per-vertex scratch, and the face stage's prepared
+ * shading (128 + 24 per light: 216 + 4 bytes with 4 lights on 32- and
+ * 64-bit targets) and model frame (80). */
 #ifndef STP_RENDERER_BYTES
 #define STP_RENDERER_BYTES                                                                      \
     (1024u + 32u * STP_MAX_SEGMENTS + (48u + 112u * STP_WITH_SHADOWS) * STP_MAX_LIGHTS + 64u + 44u * STP_VERTEX_CACHE +          \
      (96u + 32u * STP_WITH_EDGE_AA) * (STP_MAX_POLYGON_VERTICES + 5u) +                      \
-     (STP_VERTEX_CACHE > 0 ? 128u + 24u * STP_MAX_LIGHTS : 0u))
+     128u + 24u * STP_MAX_LIGHTS + 80u)
 #endif
 typedef union stp_renderer_storage {
     int64_t align_integer;
@@ -299,8 +299,15 @@ int stp_renderer_line(stp_renderer *r, stp_vec3 p);
 /* An n-sided polygon (3 <= n <= STP_MAX_POLYGON_VERTICES) in world units.
  * With shading on, it is shaded at its vertex average with its Newell
  * normal (SHADE-CHECK) and a STP_OP_SHADE instruction is entered before
- * it when the style changes.  A polygon wholly clipped away, or a back face
- * with back-face removal on, enters nothing and returns STP_OK.
+ * it when the style changes.  A monochrome polygon is shaded by the face
+ * shader every flat face takes (a triangle of stp_renderer_mesh too, on
+ * the same normal: perspective, a model transform that is a rotation times
+ * a uniform scale, no transparency or shadow map: then the Newell normal
+ * of its points in model coordinates as Q1.14, and its back-face test on
+ * that normal, and a triangle enters exactly as in a mesh, mesh.h); colour
+ * shading takes the per-point shader.  A polygon wholly clipped away, or
+ * a back face with back-face removal on, enters nothing and returns
+ * STP_OK.
  * Errors: STP_ERR_ARG, STP_ERR_TOO_MANY_VERTICES, STP_ERR_DEGENERATE (zero
  * Newell normal: repeated/collinear vertices, no area), STP_ERR_FULL
  * (nothing of the polygon is left in the display file; or no segment slot
