@@ -163,7 +163,7 @@ Rows (tools/bench/shade_error_cost.c):
 - **-fast**: the fast route on every face (16-bit scaled directions, table-seeded approximate
   reciprocal square roots and reciprocals, the 49-node Fresnel table, Q30 D, Q16 F).
   **-exact**: the exact route on every face (exact roots and quotients, Fresnel by its formula,
-  32-bit mantissas).  **-point**: `stp_shade_point`, the polygon path's per-point shader.
+  32-bit mantissas).  **-point**: `stp_shade_point`, the per-point shader (smooth and colour shading, the ray tracer).
 - **-sqrtfast**: `STP_SQRT_FAST=1`.  **-lambert**: `STP_WITH_SPECULAR=0` (ambient and
   diffuse only), judged against the full equation: its error is the highlight it leaves out.
 - **-16levels, -256levels**: the F16 shade through INTENSITY (`stp_intensity_index`): the error
