@@ -30,12 +30,8 @@ public:
         pinMode(cs_, OUTPUT);
         pinMode(dc_, OUTPUT);
         pinMode(reset_, OUTPUT);
-#ifdef __AVR__
-        cs_port_ = portOutputRegister(digitalPinToPort(cs_));
-        cs_mask_ = digitalPinToBitMask(cs_);
-        dc_port_ = portOutputRegister(digitalPinToPort(dc_));
-        dc_mask_ = digitalPinToBitMask(dc_);
-#endif
+        cs_bit_.attach(cs_);
+        dc_bit_.attach(dc_);
         digitalWrite(cs_, HIGH);
         digitalWrite(reset_, HIGH);
         SPI.begin();
@@ -60,7 +56,7 @@ protected:
 
     int dataEnd()
     {
-        pinWrite(cs_, HIGH);
+        cs_bit_.write(cs_, HIGH);
         SPI.endTransaction();
         return 0;
     }
@@ -71,7 +67,7 @@ protected:
     {
         start(LOW);
         put(address, count);
-        pinWrite(dc_, HIGH);
+        dc_bit_.write(dc_, HIGH);
         return 0;
     }
 
@@ -85,35 +81,45 @@ protected:
 private:
     uint8_t band_[16 * (width / 8)];
     uint8_t cs_, dc_, reset_;
+    /* CS# and D/C#: on an AVR written as port bits (digitalWrite's table
+     * lookups cost about 60 cycles a call, 6 calls a page: about 3 k cycles
+     * a frame), elsewhere through digitalWrite */
+    struct PinBit {
 #ifdef __AVR__
-    /* CS# and D/C# as port bits: digitalWrite's table lookups cost about
-     * 60 cycles a call, 6 calls a page (about 3 k cycles a frame) */
-    volatile uint8_t *cs_port_, *dc_port_;
-    uint8_t cs_mask_, dc_mask_;
+        volatile uint8_t *port;
+        uint8_t mask;
 #endif
-
-    void pinWrite(uint8_t pin, uint8_t level)
-    {
+        void attach(uint8_t pin)
+        {
 #ifdef __AVR__
-        volatile uint8_t *port = pin == cs_ ? cs_port_ : dc_port_;
-        uint8_t mask = pin == cs_ ? cs_mask_ : dc_mask_;
-        uint8_t sreg = SREG; /* the port may be shared with an interrupt's pins */
-        cli();
-        if (level)
-            *port |= mask;
-        else
-            *port &= (uint8_t)~mask;
-        SREG = sreg;
+            port = portOutputRegister(digitalPinToPort(pin));
+            mask = digitalPinToBitMask(pin);
 #else
-        digitalWrite(pin, level);
+            (void)pin;
 #endif
-    }
+        }
+        void write(uint8_t pin, uint8_t level)
+        {
+#ifdef __AVR__
+            uint8_t sreg = SREG; /* the port may hold an interrupt's pins */
+            (void)pin;
+            cli();
+            if (level)
+                *port |= mask;
+            else
+                *port &= (uint8_t)~mask;
+            SREG = sreg;
+#else
+            digitalWrite(pin, level);
+#endif
+        }
+    } cs_bit_, dc_bit_;
 
     void start(uint8_t dc)
     {
         SPI.beginTransaction(SPISettings(8000000, MSBFIRST, SPI_MODE0));
-        pinWrite(dc_, dc);
-        pinWrite(cs_, LOW);
+        dc_bit_.write(dc_, dc);
+        cs_bit_.write(cs_, LOW);
     }
 
     void put(const uint8_t *bytes, uint8_t count)
