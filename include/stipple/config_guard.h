@@ -34,6 +34,11 @@
 
 #include "stipple/config.h"
 
+/* Macros only; the guard keeps the rule every public header follows. */
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define STP_CONFIG_PASTE_(name, f, v, l, s, c, w1, w2, w3, w4, w5)                                  \
     name##_cfg_f##f##_v##v##_l##l##_s##s##_c##c##_##w1##w2##w3##w4##w5
 #define STP_CONFIG_PASTE(name, f, v, l, s, c, w1, w2, w3, w4, w5)                                   \
@@ -56,5 +61,9 @@
 #define stp_spans_start STP_CONFIG_SYMBOL(stp_spans_start)
 #define stp_rt_create STP_CONFIG_SYMBOL(stp_rt_create)
 #define stp_direct_frame_project STP_CONFIG_SYMBOL(stp_direct_frame_project)
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
