@@ -1,8 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* The span player of playback_spans.h: each run is one masked byte fill
- * per 8 pixels; nothing is divided.  The data is read a byte at a time
+ * per 8 pixels (the one 1-bit run filler, run_fill_private.h); nothing
+ * is divided.  The data is read a byte at a time
  * through read_byte (program memory on an AVR). */
 #include "stipple/playback_spans.h"
+
+#include "run_fill_private.h" /* stp_halftone_fill_bits, the one run filler */
 
 #if defined(__AVR__)
 #define read_byte(p) pgm_read_byte(p)
@@ -14,21 +17,6 @@ void stp_spans_start(const stp_spans *spans, stp_spans_cursor *cursor)
 {
     cursor->next = spans->runs;
     cursor->y = 0;
-}
-
-/* Pixels x1..x2 (x1 <= x2 < 256) of a MONO1 row set from the pattern byte. */
-static void fill_run(uint8_t *row, uint8_t x1, uint8_t x2, uint8_t pattern)
-{
-    uint8_t i = (uint8_t)(x1 >> 3), last = (uint8_t)(x2 >> 3);
-    uint8_t mask = (uint8_t)(0xFFu >> (x1 & 7u));
-    for (;; i++) {
-        if (i == last)
-            mask = (uint8_t)(mask & (0xFF00u >> ((x2 & 7u) + 1u)));
-        row[i] = (uint8_t)((row[i] & ~mask) | (pattern & mask));
-        if (i == last)
-            return;
-        mask = 0xFFu;
-    }
 }
 
 static int spans_ok(const stp_spans *spans, const stp_spans_cursor *cursor, const uint8_t *band,
@@ -68,8 +56,8 @@ int stp_spans_draw(const stp_spans *spans, stp_spans_cursor *cursor, uint8_t *ba
             shade = read_byte(p + 1);
             if (last < x || last > right || shade >= spans->shade_count)
                 return STP_ERR_ARG;
-            fill_run(band, (uint8_t)x, last,
-                     read_byte(pattern_row + (uint16_t)shade * spans->cell_rows));
+            stp_halftone_fill_bits(band, 0, x, last,
+                                   read_byte(pattern_row + (uint16_t)shade * spans->cell_rows));
             x = (uint16_t)(last + 1u);
             p += 2;
         } while (last != right);
