@@ -4,6 +4,33 @@
 #include "arith_private.h" /* STP_TABLE, products, bit counts */
 #include "recip_private.h"
 
+#if !STP_HAVE_MUL32
+/* Without a 32-bit multiply (AVR, MSP430) the same floor by restoring
+ * division of 2^64 - 1 by d, one quotient bit a step: about 60 bytes of
+ * code and no 64-bit products, against the seed table and two Newton
+ * steps' library multiplies.  The high word 2^32 - 1 >= d gives quotient
+ * bit 32 (the implicit 2^32); r stays below d, and when 2 r + 1 reaches
+ * 2^32 (r's top bit set) it exceeds d, so the subtraction is taken and
+ * wraps back below d. */
+uint32_t stp_recip32(uint32_t d)
+{
+    uint32_t r, v = 0;
+    uint8_t i;
+    if (d < 0x80000000u)
+        return 0;
+    r = 0xFFFFFFFFu - d;
+    for (i = 0; i < 32u; i++) {
+        uint32_t top = r & 0x80000000u;
+        r = (r << 1) | 1u;
+        v <<= 1;
+        if (top != 0 || r >= d) {
+            r -= d;
+            v |= 1u;
+        }
+    }
+    return v;
+}
+#else
 /* RECIP_SEED[i] = round(2^24 / (257 + 2 i)): 2^47 / m at the middle of the
  * i-th of 128 equal intervals of m in [2^31, 2^32) (m's bits 30..24 are i).
  * Relative error against 2^47 / m anywhere in the interval: below
@@ -80,6 +107,7 @@ uint32_t stp_recip32(uint32_t d)
     }
     return v;
 }
+#endif
 
 /* (u1 2^32 + u0) / d for a normalised d (top bit set), its reciprocal v
  * (stp_recip32) and u1 < d: the quotient (below 2^32), *rem the
