@@ -133,7 +133,10 @@
  * ~40 instructions a call). */
 static inline uint64_t stp_umul32x32(uint32_t a, uint32_t b)
 {
-#if STP_HAVE_MUL64
+#if STP_HAVE_MUL64 || !STP_HAVE_MUL32
+    /* without even a 32-bit multiply (AVR) the halves below are four
+     * library products; the C library's widening one (AVR: __umulsidi3,
+     * on the 8 x 8 MUL) is smaller and faster, and exact the same */
     return (uint64_t)a * b;
 #else
     uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
@@ -147,7 +150,7 @@ static inline uint64_t stp_umul32x32(uint32_t a, uint32_t b)
 /* a b exactly for signed 32-bit a and b */
 static inline int64_t stp_smul32x32(int32_t a, int32_t b)
 {
-#if STP_HAVE_MUL64
+#if STP_HAVE_MUL64 || !STP_HAVE_MUL32 /* as stp_umul32x32 */
     return (int64_t)a * b;
 #else
     uint64_t p = stp_umul32x32(a < 0 ? 0u - (uint32_t)a : (uint32_t)a,
@@ -161,7 +164,7 @@ static inline int64_t stp_smul32x32(int32_t a, int32_t b)
  * halves. */
 static inline uint32_t stp_umulhi32x32(uint32_t a, uint32_t b)
 {
-#if STP_HAVE_MUL64
+#if STP_HAVE_MUL64 || !STP_HAVE_MUL32 /* as stp_umul32x32 */
     return (uint32_t)(((uint64_t)a * b) >> 32);
 #else
     uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
