@@ -157,9 +157,19 @@
  * enters several times is transformed and projected once.  44 bytes of RAM
  * an entry plus 2 per STP_MAX_POLYGON_VERTICES; 0 takes it out
  * (`stipple compile` does: a compiled scene is entered once; the face
- * stage's prepared shading stays in the renderer either way).  64 -> 0 saves 920 bytes of code. */
+ * stage's prepared shading stays in the renderer either way).  64 -> 0 saves 920 bytes of code.
+ * The default is 64, or 32 in builds of triangles and quadrilaterals
+ * (STP_MAX_POLYGON_VERTICES <= 4), the small targets' builds, whose
+ * meshes go through mesh entry and its own scratch: a triangle-only
+ * Cortex-M0+ renderer object is 3 144 B instead of 4 552 B; with 32
+ * entries the bench torus entered polygon by polygon costs 1.2 % more
+ * instructions (tools/bench/torus_bench.sh, 128x64). */
 #ifndef STP_VERTEX_CACHE
+#if STP_MAX_POLYGON_VERTICES <= 4
+#define STP_VERTEX_CACHE 32
+#else
 #define STP_VERTEX_CACHE 64
+#endif
 #endif
 
 /* Styles whose 1-bit pattern rows a frame keeps (a power of two; 8 bytes
