@@ -95,11 +95,18 @@ void torus_bench_free(torus_bench *b)
     free(b->mesh_triangles);
     free(b->mesh_normals);
     free(b->mesh_scratch);
+    free(b->fine_parts);
     stp_scene_free(&b->scene);
     memset(b, 0, sizeof *b);
 }
 
 int torus_bench_init(torus_bench *b, int width, int height, char *err, size_t err_size)
+{
+    return torus_bench_init_for(b, width, height, TORUS_TRIANGLES, err, err_size);
+}
+
+int torus_bench_init_for(torus_bench *b, int width, int height, size_t triangles, char *err,
+                         size_t err_size)
 {
     stp_tool_options opt;
     stp_view view;
@@ -125,7 +132,12 @@ int torus_bench_init(torus_bench *b, int width, int height, char *err, size_t er
     stp_tool_material(&b->scene.materials[0], 0, &b->material);
     /* a triangle clipped by the five planes has at most 8 vertices, and
      * one shade instruction may precede it */
-    b->capacity = TORUS_TRIANGLES * 9 + 16;
+    if (triangles < 1 || triangles > (0xFFFFFFFFu - 16) / 9) {
+        snprintf(err, err_size, "bad triangle count %lu", (unsigned long)triangles);
+        torus_bench_free(b);
+        return -1;
+    }
+    b->capacity = (uint32_t)(triangles * 9 + 16);
     b->stride = stp_row_bytes(STP_PIXEL_MONO1, (uint32_t)width);
     b->renderer_mem = malloc(stp_renderer_size());
     b->df = malloc(sizeof *b->df * b->capacity);
@@ -216,21 +228,121 @@ int torus_bench_use_mesh(torus_bench *b, char *err, size_t err_size)
         snprintf(err, err_size, "out of memory");
         return -1;
     }
+    b->scratch_count = count;
+    b->parts = &b->mesh;
+    b->part_count = 1;
+    b->use_mesh = 1;
+    return 0;
+}
+
+/* Vertex (i, j) of the around x tube torus (theta step i, phi step j). */
+static stp_vec3 fine_vertex(int i, int j, int around, int tube)
+{
+    const double major = 1.0, minor = 0.4, pi = 3.14159265358979323846;
+    double th = 2 * pi * i / around, ph = 2 * pi * j / tube;
+    stp_vec3 v;
+    v.x = stp_tool_fix((major + minor * cos(ph)) * cos(th));
+    v.y = stp_tool_fix(minor * sin(ph));
+    v.z = stp_tool_fix((major + minor * cos(ph)) * sin(th));
+    return v;
+}
+
+/* Part p's rings [i0, i0 + rings) into the arrays at v, t, n: rings + 1
+ * rings of tube vertices, 2 x rings x tube triangles wound as
+ * torus_scene_build winds them. */
+static int fine_part(stp_mesh *m, int i0, int rings, int around, int tube, stp_vec3 *v,
+                     uint16_t *t, int16_t *n, char *err, size_t err_size)
+{
+    int i, j, k = 0;
+    uint16_t bad = 0;
+    int status;
+    for (i = 0; i <= rings; i++)
+        for (j = 0; j < tube; j++)
+            v[i * tube + j] = fine_vertex(i0 + i, j, around, tube);
+    for (i = 0; i < rings; i++) {
+        for (j = 0; j < tube; j++) {
+            uint16_t q0 = (uint16_t)(i * tube + j), q1 = (uint16_t)((i + 1) * tube + j);
+            uint16_t q2 = (uint16_t)((i + 1) * tube + (j + 1) % tube);
+            uint16_t q3 = (uint16_t)(i * tube + (j + 1) % tube);
+            t[k++] = q0, t[k++] = q2, t[k++] = q1;
+            t[k++] = q0, t[k++] = q3, t[k++] = q2;
+        }
+    }
+    m->vertices = v;
+    m->vertex_count = (uint16_t)((rings + 1) * tube);
+    m->triangles = t;
+    m->triangle_count = (uint16_t)(2 * rings * tube);
+    status = stp_mesh_prepare_normals(m, n, &bad);
+    if (status != STP_OK) {
+        snprintf(err, err_size, "fine torus, ring %d, triangle %u: %s", i0, (unsigned)bad,
+                 stp_status_text(status));
+        return -1;
+    }
+    m->normals = n;
+    return 0;
+}
+
+int torus_bench_use_fine_mesh(torus_bench *b, int around, int tube, unsigned part_max, char *err,
+                              size_t err_size)
+{
+    int max_rings, parts, p, i0 = 0;
+    size_t vertices, triangles, vi = 0, ti = 0;
+    if (part_max == 0 || part_max > TORUS_PART_MAX)
+        part_max = TORUS_PART_MAX;
+    if (around < 3 || tube < 3 || (size_t)tube * 2 > part_max) {
+        snprintf(err, err_size, "bad fine torus %d x %d in parts of %u", around, tube, part_max);
+        return -1;
+    }
+    /* whole rings: 2 x rings x tube triangles and (rings + 1) x tube
+     * vertices, both at most part_max */
+    max_rings = (int)(part_max / (2u * (unsigned)tube));
+    parts = (around + max_rings - 1) / max_rings;
+    triangles = 2 * (size_t)around * (size_t)tube;
+    vertices = ((size_t)around + (size_t)parts) * (size_t)tube;
+    if (triangles * 9 + 16 > b->capacity) {
+        snprintf(err, err_size, "the display file holds fewer than %lu triangles",
+                 (unsigned long)triangles);
+        return -1;
+    }
+    b->mesh_vertices = malloc(sizeof *b->mesh_vertices * vertices);
+    b->mesh_triangles = malloc(sizeof *b->mesh_triangles * 3 * triangles);
+    b->mesh_normals = malloc(sizeof *b->mesh_normals * 3 * triangles);
+    b->fine_parts = calloc((size_t)parts, sizeof *b->fine_parts);
+    b->scratch_count = ((size_t)max_rings + 1) * (size_t)tube;
+    b->mesh_scratch = malloc(sizeof *b->mesh_scratch * b->scratch_count);
+    if (!b->mesh_vertices || !b->mesh_triangles || !b->mesh_normals || !b->fine_parts ||
+        !b->mesh_scratch) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    for (p = 0; p < parts; p++) {
+        /* rings shared out evenly, the first parts one more */
+        int rings = around / parts + (p < around % parts);
+        if (fine_part(&b->fine_parts[p], i0, rings, around, tube, b->mesh_vertices + vi,
+                      b->mesh_triangles + ti, b->mesh_normals + ti, err, err_size) != 0)
+            return -1;
+        vi += (size_t)(rings + 1) * (size_t)tube;
+        ti += 6 * (size_t)rings * (size_t)tube;
+        i0 += rings;
+    }
+    b->parts = b->fine_parts;
+    b->part_count = parts;
     b->use_mesh = 1;
     return 0;
 }
 
 int torus_frame(torus_bench *b)
 {
-    int t;
+    int t, p;
     (void)stp_segment_delete(b->r, 1);
     if (stp_segment_create(b->r, 1) != STP_OK)
         return -1;
     if (b->posed && stp_renderer_set_transform(b->r, &b->pose) != STP_OK)
         return -1;
     stp_renderer_set_object_shade(b->r, &b->material);
-    if (b->use_mesh && stp_renderer_mesh(b->r, &b->mesh, b->mesh_scratch, b->mesh.vertex_count) != STP_OK)
-        return -1;
+    for (p = 0; b->use_mesh && p < b->part_count; p++)
+        if (stp_renderer_mesh(b->r, &b->parts[p], b->mesh_scratch, b->scratch_count) != STP_OK)
+            return -1;
     for (t = 0; !b->use_mesh && t < TORUS_TRIANGLES; t++) {
         if (stp_renderer_polygon(b->r, b->vertices + 3 * t, 3) != STP_OK)
             return -1;

@@ -67,7 +67,17 @@ typedef struct torus_bench {
     uint16_t *mesh_triangles;
     int16_t *mesh_normals;
     stp_mesh_vertex *mesh_scratch;
+    /* the meshes torus_frame enters, in order (torus_bench_use_mesh: the
+     * one above; torus_bench_use_fine_mesh: a finer torus in parts) */
+    const stp_mesh *parts;
+    int part_count;
+    size_t scratch_count;           /* entries of mesh_scratch */
+    stp_mesh *fine_parts;
 } torus_bench;
+
+/* The most triangles (and vertices) one stp_mesh holds: a finer torus is
+ * entered in parts of at most this many. */
+#define TORUS_PART_MAX 65535u
 
 /* Pose the model for the next frames: tilt about x, then spin about y (the
  * torus's axis), then move by (dx, dy, dz), through the core's model
@@ -78,6 +88,10 @@ void torus_bench_pose(torus_bench *b, double tilt_degrees, double spin_degrees, 
 /* Set up a width x height bench (the scene, renderer, memory).  Returns 0,
  * or -1 with a message in err. */
 int torus_bench_init(torus_bench *b, int width, int height, char *err, size_t err_size);
+/* The same with a display file for `triangles` triangles (>= 1; the
+ * default above is TORUS_TRIANGLES), for torus_bench_use_fine_mesh. */
+int torus_bench_init_for(torus_bench *b, int width, int height, size_t triangles, char *err,
+                         size_t err_size);
 void torus_bench_free(torus_bench *b);
 
 /* Enter the next frames through stp_renderer_mesh instead of one
@@ -86,6 +100,18 @@ void torus_bench_free(torus_bench *b);
  * polygon path enters), normals prepared here.  Returns 0, or -1 with a
  * message in err. */
 int torus_bench_use_mesh(torus_bench *b, char *err, size_t err_size);
+
+/* Enter the next frames through stp_renderer_mesh as a finer torus of the
+ * same shape: around x tube quads (2 x around x tube triangles in
+ * torus_scene_build's order and winding, each vertex computed once), in
+ * parts of whole rings of at most part_max triangles and vertices (0 or
+ * above TORUS_PART_MAX: TORUS_PART_MAX, as an stp_mesh counts them in 16
+ * bits; at least 2 x tube), the rings shared out evenly, normals prepared
+ * here, one stp_renderer_mesh call per part.  The bench must come from
+ * torus_bench_init_for with at least that many triangles.  Returns 0, or
+ * -1 with a message in err. */
+int torus_bench_use_fine_mesh(torus_bench *b, int around, int tube, unsigned part_max, char *err,
+                              size_t err_size);
 
 /* One frame, as described above.  Returns 0, or -1 when the core refused
  * something (a bug: the workload fits by construction). */
