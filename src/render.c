@@ -88,7 +88,6 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     r->last_shade = -1;
     r->pen_valid = 0;
     r->model_on = 0;
-    r->geometry = STP_GEOMETRY_VIEW;
     stp_transform_identity(&r->model);
 #if STP_VERTEX_CACHE
     for (i = 0; i < STP_VERTEX_CACHE; i++) {
@@ -361,7 +360,7 @@ static int open_segment(stp_renderer *r, int id)
     if (r->model_on)
         cache_forget(r);
     r->model_on = 0;
-    r->geometry = STP_GEOMETRY_VIEW;
+    stp_render_geometry_update(r);
     /* COPY-LIGHT: the lighting belongs to the view; fix it for this segment
      * with the lights in view coordinates */
     copy_light(r);
@@ -524,14 +523,23 @@ static void vertex_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
         out->x = STP_FIX_MAX;
 }
 
+int stp_render_point_two_steps(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
+{
+    p = stp_transform_point(&r->model, p);
+    stp_view_transform_point(&r->to_view, p, out);
+    return saturated(p);
+}
+
 void stp_render_geometry_update(stp_renderer *r)
 {
-    if (!r->model_on)
+    if (!r->model_on) {
         r->geometry = STP_GEOMETRY_VIEW;
-    else if (stp_view_transform_compose(&r->to_view, &r->model, &r->model_view))
+        r->point_view = r->to_view;
+    } else if (stp_view_transform_compose(&r->to_view, &r->model, &r->point_view)) {
         r->geometry = STP_GEOMETRY_COMPOSED;
-    else
+    } else {
         r->geometry = STP_GEOMETRY_TWO_STEPS;
+    }
 }
 
 
@@ -545,7 +553,7 @@ int stp_renderer_set_transform(stp_renderer *r, const stp_transform *t)
     cache_forget(r);
     if (t == 0) {
         r->model_on = 0;
-        r->geometry = STP_GEOMETRY_VIEW;
+        stp_render_geometry_update(r);
         return STP_OK;
     }
     for (i = 0; i < 3; i++)

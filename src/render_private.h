@@ -167,12 +167,12 @@ struct stp_renderer {
     stp_transform model; /* of the open segment's points (stp_renderer_set_transform) */
     int model_on;        /* 0: the identity, skipped */
     /* the geometry stage (view_private.h) for the open segment's points:
-     * STP_GEOMETRY_VIEW (no model transform: to_view alone),
-     * STP_GEOMETRY_COMPOSED (model_view: model then view, composed) or
+     * STP_GEOMETRY_VIEW (no model transform: point_view is to_view),
+     * STP_GEOMETRY_COMPOSED (point_view: model then view, composed) or
      * STP_GEOMETRY_TWO_STEPS (model, then to_view); set with the view and
      * the model transform (stp_render_geometry_update) */
     int geometry;
-    stp_view_transform model_view;
+    stp_view_transform point_view;
 
     /* scratch: the clipper's two vertex lists and the scan converter's
      * edges; here rather than on the stack so a small MCU stack suffices */
@@ -266,23 +266,21 @@ static inline int stp_render_triangle_normal(const stp_vec3 *v, int16_t out[3])
 #define STP_GEOMETRY_COMPOSED 1
 #define STP_GEOMETRY_TWO_STEPS 2
 
-/* render.c: r->geometry (and r->model_view) for the view and model
+/* render.c: r->geometry (and r->point_view) for the view and model
  * transform in force. */
 void stp_render_geometry_update(stp_renderer *r);
 
 /* The geometry stage for an entered point p (model coordinates): its view
  * coordinates in *out, each saturated; returns 1 when the model transform
- * (two steps) saturated it: the point lies beyond what the coordinates
- * hold (the caller reports STP_ERR_RANGE), else 0. */
+ * (two steps: stp_render_point_two_steps, render.c) saturated it: the
+ * point lies beyond what the coordinates hold (the caller reports
+ * STP_ERR_RANGE), else 0. */
+int stp_render_point_two_steps(const stp_renderer *r, stp_vec3 p, stp_vec3 *out); /* render.c */
 STP_HOT_INLINE int stp_render_point_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
 {
-    if (r->geometry == STP_GEOMETRY_TWO_STEPS) {
-        p = stp_transform_point(&r->model, p);
-        stp_view_transform_point(&r->to_view, p, out);
-        return p.x >= STP_FIX_MAX || p.x <= STP_FIX_MIN || p.y >= STP_FIX_MAX || p.y <= STP_FIX_MIN ||
-               p.z >= STP_FIX_MAX || p.z <= STP_FIX_MIN;
-    }
-    stp_view_transform_point(r->geometry == STP_GEOMETRY_COMPOSED ? &r->model_view : &r->to_view, p, out);
+    if (r->geometry == STP_GEOMETRY_TWO_STEPS)
+        return stp_render_point_two_steps(r, p, out);
+    stp_view_transform_point(&r->point_view, p, out);
     return 0;
 }
 
