@@ -132,13 +132,7 @@ static int box_inside(const stp_renderer *r, stp_vec3 lo, stp_vec3 hi, int64_t s
         p.x = (stp_fix)x;
         p.y = (stp_fix)y;
         p.z = (stp_fix)z;
-        if (r->model_on) {
-            p = stp_transform_point(&r->model, p);
-            if (saturated(p))
-                return 0;
-        }
-        stp_view_transform_point(&r->to_view, p, &view);
-        if (saturated(view) || stp_clip_outcode(&r->clip_volume, view) != 0 ||
+        if (stp_render_point_to_view(r, p, &view) || saturated(view) || stp_clip_outcode(&r->clip_volume, view) != 0 ||
             (magnitude(view.x) | magnitude(view.y) | magnitude(view.z)) >= ((uint32_t)1 << 28))
             return 0;
     }
@@ -191,18 +185,12 @@ static int prepare_call(mesh_context *c)
 /* ---- per vertex and per face ---- */
 
 /* Vertex i (not transformed yet) in view coordinates with its outcode (or
- * CODE_RANGE): the same transforms as stp_renderer_polygon's. */
+ * CODE_RANGE): the geometry stage, as stp_renderer_polygon's. */
 static void vertex_transform(mesh_context *c, uint16_t i)
 {
     stp_mesh_vertex *s = &c->scratch[i];
     const stp_renderer *r = c->r;
-    stp_vec3 p = c->mesh->vertices[i];
-    int range = 0;
-    if (r->model_on) {
-        p = stp_transform_point(&r->model, p);
-        range = saturated(p);
-    }
-    stp_view_transform_point(&r->to_view, p, &s->view);
+    int range = stp_render_point_to_view(r, c->mesh->vertices[i], &s->view);
     if (c->inside)
         s->state = 0; /* box_inside: no vertex is outside or saturated */
     else

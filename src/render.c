@@ -148,6 +148,7 @@ int stp_renderer_set_view(stp_renderer *r, const stp_view *v)
     r->clip_volume.height = r->height;
     r->clip_volume.parallel = vf.projection == STP_PARALLEL;
     stp_view_transform_make(&vf, &r->to_view);
+    stp_render_geometry_update(r);
     r->pen_valid = 0;
     cache_forget(r);
 #if STP_WITH_SHADOWS
@@ -359,6 +360,7 @@ static int open_segment(stp_renderer *r, int id)
     if (r->model_on)
         cache_forget(r);
     r->model_on = 0;
+    stp_render_geometry_update(r);
     /* COPY-LIGHT: the lighting belongs to the view; fix it for this segment
      * with the lights in view coordinates */
     copy_light(r);
@@ -512,15 +514,32 @@ static int saturated(stp_vec3 p)
            p.z >= STP_FIX_MAX || p.z <= STP_FIX_MIN;
 }
 
-/* An entered point (model coordinates) to view coordinates; a point the
- * model transform saturated comes out saturated too (see saturated). */
+/* An entered point (model coordinates) to view coordinates by the
+ * geometry stage; a point the model transform saturated comes out
+ * saturated too (see saturated). */
 static void vertex_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
 {
-    if (r->model_on)
-        p = stp_transform_point(&r->model, p);
-    world_to_view(r, p, out);
-    if (r->model_on && saturated(p))
+    if (stp_render_point_to_view(r, p, out))
         out->x = STP_FIX_MAX;
+}
+
+int stp_render_point_two_steps(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
+{
+    p = stp_transform_point(&r->model, p);
+    stp_view_transform_point(&r->to_view, p, out);
+    return saturated(p);
+}
+
+void stp_render_geometry_update(stp_renderer *r)
+{
+    if (!r->model_on) {
+        r->geometry = STP_GEOMETRY_VIEW;
+        r->point_view = r->to_view;
+    } else if (stp_view_transform_compose(&r->to_view, &r->model, &r->point_view)) {
+        r->geometry = STP_GEOMETRY_COMPOSED;
+    } else {
+        r->geometry = STP_GEOMETRY_TWO_STEPS;
+    }
 }
 
 
@@ -534,6 +553,7 @@ int stp_renderer_set_transform(stp_renderer *r, const stp_transform *t)
     cache_forget(r);
     if (t == 0) {
         r->model_on = 0;
+        stp_render_geometry_update(r);
         return STP_OK;
     }
     for (i = 0; i < 3; i++)
@@ -541,6 +561,7 @@ int stp_renderer_set_transform(stp_renderer *r, const stp_transform *t)
             identity &= t->m[i][j] == (i == j ? ONE : 0);
     r->model = *t;
     r->model_on = !(identity && t->t.x == 0 && t->t.y == 0 && t->t.z == 0);
+    stp_render_geometry_update(r);
     return STP_OK;
 }
 
@@ -628,18 +649,6 @@ void stp_render_project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
 
 /* ---- the face stage (render_private.h): shared with mesh.c ---- */
 
-/* floor(v / 2^s) for any int32 v, 0 <= s <= 31 (>> of a negative value is
- * implementation-defined in C). */
-static int32_t asr32(int32_t v, int s)
-{
-    return v >= 0 ? v >> s : -1 - ((-1 - v) >> s);
-}
-
-static uint32_t magnitude(int32_t v)
-{
-    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
-}
-
 static void newell_sum(const stp_vec3 *v, int n, int64_t *na, int64_t *nb, int64_t *nc);
 
 int stp_render_model_normal(const stp_vec3 *v, int n, int16_t out[3])
@@ -651,97 +660,13 @@ int stp_render_model_normal(const stp_vec3 *v, int n, int16_t out[3])
     return stp_render_unit_q14(a, b, c, out);
 }
 
-/* The model transform's matrix m (identity when off), and whether it is a
- * rotation times a uniform scale: columns of equal squared length and
- * pairwise orthogonal, each within 1/1024 of the squared length (the
- * rounding of composed stp_fix rotations), a positive determinant (a
- * reflection turns the winding), a scale of at least 2^-6 (enough bits for
- * the normals).  Tested on m cut to 14 significant bits (mq = m / 2^shift):
- * products below 2^28, sums of three below 2^30, all in 32 bits. */
-static int similarity(const stp_renderer *r, int32_t m[3][3], int32_t mq[3][3])
-{
-    int32_t len[3], dot[3], cross[3], tol, det;
-    uint32_t big = 0;
-    int i, j, shift;
-    for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++) {
-            m[i][j] = r->model_on ? r->model.m[i][j] : (i == j ? ONE : 0);
-            big |= magnitude(m[i][j]);
-        }
-    if (big < ((uint32_t)1 << (F - 6)) || big >= ((uint32_t)1 << 24))
-        return 0; /* scale below 2^-6 or 256 and more */
-    shift = stp_bit_length32(big) - 14;
-    for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++)
-            mq[i][j] = shift > 0 ? asr32(m[i][j], shift) : m[i][j] * ((int32_t)1 << -shift);
-    for (j = 0; j < 3; j++)
-        len[j] = mq[0][j] * mq[0][j] + mq[1][j] * mq[1][j] + mq[2][j] * mq[2][j];
-    dot[0] = mq[0][0] * mq[0][1] + mq[1][0] * mq[1][1] + mq[2][0] * mq[2][1];
-    dot[1] = mq[0][0] * mq[0][2] + mq[1][0] * mq[1][2] + mq[2][0] * mq[2][2];
-    dot[2] = mq[0][1] * mq[0][2] + mq[1][1] * mq[1][2] + mq[2][1] * mq[2][2];
-    tol = len[0] >> 10;
-    for (j = 0; j < 3; j++) {
-        int32_t d = len[j] - len[0];
-        if (d > tol || -d > tol || dot[j] > tol || -dot[j] > tol)
-            return 0;
-    }
-    /* c1 x c2 (below 2^29) cut to 15 bits, dotted with c0 (below 2^14) */
-    cross[0] = asr32(mq[1][1] * mq[2][2] - mq[2][1] * mq[1][2], 14);
-    cross[1] = asr32(mq[2][1] * mq[0][2] - mq[0][1] * mq[2][2], 14);
-    cross[2] = asr32(mq[0][1] * mq[1][2] - mq[1][1] * mq[0][2], 14);
-    det = mq[0][0] * cross[0] + mq[1][0] * cross[1] + mq[2][0] * cross[2];
-    return det > 0;
-}
-
-/* The model frame (render_private.h); 0 when it is not usable. */
-static int model_frame_prepare(const stp_renderer *r, stp_model_frame *f)
-{
-    int32_t m[3][3], mq[3][3];
-    int64_t d[3];
-    const stp_vec3 *axis[3];
-    int i, j;
-    if (r->projection != STP_PERSPECTIVE || !similarity(r, m, mq))
-        return 0;
-    f->scale2 = (int64_t)m[0][0] * m[0][0] + (int64_t)m[1][0] * m[1][0] + (int64_t)m[2][0] * m[2][0];
-    axis[0] = &r->right;
-    axis[1] = &r->up;
-    axis[2] = &r->forward;
-    /* rows of V M (V: the view axes as rows, Q15 here), normalised: each
-     * product below 2^15 2^14, the sums below 2^31 (|V_i| = 1,
-     * |mq column| < 2^14 sqrt 3) */
-    for (i = 0; i < 3; i++) {
-        int32_t row[3];
-        int32_t ax = asr32(axis[i]->x, 1), ay = asr32(axis[i]->y, 1), az = asr32(axis[i]->z, 1);
-        stp_unit3 u;
-        for (j = 0; j < 3; j++)
-            row[j] = ax * mq[0][j] + ay * mq[1][j] + az * mq[2][j];
-        if (stp_unit_from64(row[0], row[1], row[2], &u) == 0)
-            return 0;
-        /* Q30 to Q15, rounded */
-        f->rot[i][0] = (int32_t)stp_asr64((int64_t)u.x + ((int64_t)1 << 14), 15);
-        f->rot[i][1] = (int32_t)stp_asr64((int64_t)u.y + ((int64_t)1 << 14), 15);
-        f->rot[i][2] = (int32_t)stp_asr64((int64_t)u.z + ((int64_t)1 << 14), 15);
-    }
-    /* eye in model coordinates: M^-1 (from - t) = M^T (from - t) / s^2 */
-    d[0] = (int64_t)r->from.x - (r->model_on ? r->model.t.x : 0);
-    d[1] = (int64_t)r->from.y - (r->model_on ? r->model.t.y : 0);
-    d[2] = (int64_t)r->from.z - (r->model_on ? r->model.t.z : 0);
-    for (j = 0; j < 3; j++) {
-        int64_t sum = m[0][j] * d[0] + m[1][j] * d[1] + m[2][j] * d[2], e;
-        if (sum >= ((int64_t)1 << 46) || sum <= -((int64_t)1 << 46))
-            return 0;
-        e = (sum * ONE) / f->scale2; /* |sum| < 2^46: the product fits */
-        if (e >= ((int64_t)1 << 30) || e <= -((int64_t)1 << 30))
-            return 0;
-        f->eye[j] = (int32_t)e;
-    }
-    return 1;
-}
-
 const stp_model_frame *stp_render_model_frame(stp_renderer *r)
 {
     if (!r->frame_valid) {
-        r->frame.usable = model_frame_prepare(r, &r->frame);
+        if (r->projection != STP_PERSPECTIVE)
+            r->frame.usable = 0;
+        else
+            (void)stp_model_frame_make(&r->to_view, r->from, r->model_on ? &r->model : 0, &r->frame);
         r->frame_valid = 1;
     }
     return r->frame.usable ? &r->frame : 0;

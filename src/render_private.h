@@ -108,22 +108,6 @@ typedef struct stp_vertex_entry {
 #define STP_CACHE_NONE 0xFFFFu /* cached[i] of a vertex kept outside the cache */
 #endif
 
-#if !STP_PLAYBACK_ONLY
-/* The face stage's model frame (render.c, stp_render_model_frame): what
- * lets a face be tested and shaded from its Q1.14 model normal (a mesh's
- * prepared one, or stp_render_model_normal of an entered polygon) without
- * forming a normal from its view coordinates.  usable: perspective, and
- * the model transform (identity when off) a rotation times a uniform
- * scale of at least 2^-6 and below 256 with a positive determinant, and
- * the eye in model coordinates below 2^30 in each coordinate. */
-typedef struct stp_model_frame {
-    int32_t rot[3][3]; /* model normal to view normal: the view rotation
-                          times the model's, normalised rows, Q15 */
-    int32_t eye[3];    /* the eye in model coordinates (stp_fix, |.| < 2^30) */
-    int64_t scale2;    /* the model's scale squared, 2F fractional bits */
-    int usable;
-} stp_model_frame;
-#endif
 
 struct stp_renderer {
     stp_instr *df;
@@ -182,6 +166,13 @@ struct stp_renderer {
     stp_vec3 pen; /* view coordinates */
     stp_transform model; /* of the open segment's points (stp_renderer_set_transform) */
     int model_on;        /* 0: the identity, skipped */
+    /* the geometry stage (view_private.h) for the open segment's points:
+     * STP_GEOMETRY_VIEW (no model transform: point_view is to_view),
+     * STP_GEOMETRY_COMPOSED (point_view: model then view, composed) or
+     * STP_GEOMETRY_TWO_STEPS (model, then to_view); set with the view and
+     * the model transform (stp_render_geometry_update) */
+    int geometry;
+    stp_view_transform point_view;
 
     /* scratch: the clipper's two vertex lists and the scan converter's
      * edges; here rather than on the stack so a small MCU stack suffices */
@@ -270,6 +261,28 @@ static inline int stp_render_triangle_normal(const stp_vec3 *v, int16_t out[3])
                                e[0] * e[4] - e[1] * e[3], out);
 }
 
+
+#define STP_GEOMETRY_VIEW 0
+#define STP_GEOMETRY_COMPOSED 1
+#define STP_GEOMETRY_TWO_STEPS 2
+
+/* render.c: r->geometry (and r->point_view) for the view and model
+ * transform in force. */
+void stp_render_geometry_update(stp_renderer *r);
+
+/* The geometry stage for an entered point p (model coordinates): its view
+ * coordinates in *out, each saturated; returns 1 when the model transform
+ * (two steps: stp_render_point_two_steps, render.c) saturated it: the
+ * point lies beyond what the coordinates hold (the caller reports
+ * STP_ERR_RANGE), else 0. */
+int stp_render_point_two_steps(const stp_renderer *r, stp_vec3 p, stp_vec3 *out); /* render.c */
+STP_HOT_INLINE int stp_render_point_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
+{
+    if (r->geometry == STP_GEOMETRY_TWO_STEPS)
+        return stp_render_point_two_steps(r, p, out);
+    stp_view_transform_point(&r->point_view, p, out);
+    return 0;
+}
 
 /* The model frame of the view and model transform in force (prepared once
  * after either changes), or NULL when it is not usable (see above). */

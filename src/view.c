@@ -17,25 +17,37 @@ stp_vec3 stp_vec3_cross(stp_vec3 a, stp_vec3 b)
     return c;
 }
 
-int stp_view_frame_make(const stp_view *v, uint32_t width, uint32_t height, stp_view_frame *out)
+int stp_view_axes(stp_vec3 from, stp_vec3 at, stp_vec3 up, stp_vec3 *right_out, stp_vec3 *up_out,
+                  stp_vec3 *forward_out)
 {
-    stp_vec3 dir, right, up, upn;
-    stp_fix focal;
-    uint32_t short_side;
-    dir.x = stp_fix_sub(v->at.x, v->from.x);
-    dir.y = stp_fix_sub(v->at.y, v->from.y);
-    dir.z = stp_fix_sub(v->at.z, v->from.z);
+    stp_vec3 dir, right, upv, upn;
+    dir.x = stp_fix_sub(at.x, from.x);
+    dir.y = stp_fix_sub(at.y, from.y);
+    dir.z = stp_fix_sub(at.z, from.z);
     if (stp_vec3_unity(dir, &dir) == 0)
         return STP_ERR_VIEW;
-    if (stp_vec3_unity(v->up, &upn) == 0)
+    if (stp_vec3_unity(up, &upn) == 0)
         return STP_ERR_VIEW;
     /* right = dir x up; a short cross product means up is (nearly) along
      * the line of sight: no roll can be derived */
     right = stp_vec3_cross(dir, upn);
     if (stp_vec3_unity(right, &right) < (ONE >> 10))
         return STP_ERR_VIEW;
-    up = stp_vec3_cross(right, dir);
-    (void)stp_vec3_unity(up, &up);
+    upv = stp_vec3_cross(right, dir);
+    (void)stp_vec3_unity(upv, &upv);
+    *right_out = right;
+    *up_out = upv;
+    *forward_out = dir;
+    return STP_OK;
+}
+
+int stp_view_frame_make(const stp_view *v, uint32_t width, uint32_t height, stp_view_frame *out)
+{
+    stp_vec3 dir, right, up;
+    stp_fix focal;
+    uint32_t short_side;
+    if (stp_view_axes(v->from, v->at, v->up, &right, &up, &dir) != STP_OK)
+        return STP_ERR_VIEW;
     if (v->hither <= 0)
         return STP_ERR_VIEW;
     short_side = width < height ? width : height;
@@ -66,18 +78,12 @@ int stp_view_frame_make(const stp_view *v, uint32_t width, uint32_t height, stp_
     return STP_OK;
 }
 
-void stp_view_transform_of_axes(stp_vec3 right, stp_vec3 up, stp_vec3 forward, stp_vec3 from,
-                                stp_view_transform *out)
+/* from . axis (2F fractional bits) split as from_high 2^16 + from_low for
+ * the 32-bit form */
+static void split_from(stp_view_transform *out)
 {
     const int64_t *d[3];
     int k;
-    out->right = right;
-    out->up = up;
-    out->forward = forward;
-    out->from_right = (int64_t)from.x * right.x + (int64_t)from.y * right.y + (int64_t)from.z * right.z;
-    out->from_up = (int64_t)from.x * up.x + (int64_t)from.y * up.y + (int64_t)from.z * up.z;
-    out->from_forward =
-        (int64_t)from.x * forward.x + (int64_t)from.y * forward.y + (int64_t)from.z * forward.z;
     d[0] = &out->from_right;
     d[1] = &out->from_up;
     d[2] = &out->from_forward;
@@ -87,9 +93,170 @@ void stp_view_transform_of_axes(stp_vec3 right, stp_vec3 up, stp_vec3 forward, s
     }
 }
 
+static int64_t dot64(stp_vec3 a, stp_vec3 b)
+{
+    return (int64_t)a.x * b.x + (int64_t)a.y * b.y + (int64_t)a.z * b.z;
+}
+
+void stp_view_transform_of_axes(stp_vec3 right, stp_vec3 up, stp_vec3 forward, stp_vec3 from,
+                                stp_view_transform *out)
+{
+    out->right = right;
+    out->up = up;
+    out->forward = forward;
+    out->from_right = dot64(from, right);
+    out->from_up = dot64(from, up);
+    out->from_forward = dot64(from, forward);
+    split_from(out);
+}
+
 void stp_view_transform_make(const stp_view_frame *vf, stp_view_transform *out)
 {
     stp_view_transform_of_axes(vf->right, vf->up, vf->forward, vf->from, out);
+}
+
+/* ---- the geometry stage (view_private.h) ---- */
+
+/* floor(v / 2^s) for any int32 v, 0 <= s <= 31 (>> of a negative value is
+ * implementation-defined in C). */
+static int32_t asr32(int32_t v, int s)
+{
+    return v >= 0 ? v >> s : -1 - ((-1 - v) >> s);
+}
+
+static uint32_t magnitude(int32_t v)
+{
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+}
+
+/* model's matrix m (the identity for NULL) and whether it is a similarity
+ * (stp_view_similar).  Tested on m cut to 14 significant bits (mq = m /
+ * 2^shift): products below 2^28, sums of three below 2^30, all in 32
+ * bits. */
+static int similarity(const stp_transform *model, int32_t m[3][3], int32_t mq[3][3])
+{
+    int32_t len[3], dot[3], cross[3], tol, det;
+    uint32_t big = 0;
+    int i, j, shift;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) {
+            m[i][j] = model ? model->m[i][j] : (i == j ? ONE : 0);
+            big |= magnitude(m[i][j]);
+        }
+    if (big < ((uint32_t)1 << (F - 6)) || big >= ((uint32_t)1 << 24))
+        return 0; /* scale below 2^-6 or 256 and more */
+    shift = stp_bit_length32(big) - 14;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            mq[i][j] = shift > 0 ? asr32(m[i][j], shift) : m[i][j] * ((int32_t)1 << -shift);
+    for (j = 0; j < 3; j++)
+        len[j] = mq[0][j] * mq[0][j] + mq[1][j] * mq[1][j] + mq[2][j] * mq[2][j];
+    dot[0] = mq[0][0] * mq[0][1] + mq[1][0] * mq[1][1] + mq[2][0] * mq[2][1];
+    dot[1] = mq[0][0] * mq[0][2] + mq[1][0] * mq[1][2] + mq[2][0] * mq[2][2];
+    dot[2] = mq[0][1] * mq[0][2] + mq[1][1] * mq[1][2] + mq[2][1] * mq[2][2];
+    tol = len[0] >> 10;
+    for (j = 0; j < 3; j++) {
+        int32_t d = len[j] - len[0];
+        if (d > tol || -d > tol || dot[j] > tol || -dot[j] > tol)
+            return 0;
+    }
+    /* c1 x c2 (below 2^29) cut to 15 bits, dotted with c0 (below 2^14) */
+    cross[0] = asr32(mq[1][1] * mq[2][2] - mq[2][1] * mq[1][2], 14);
+    cross[1] = asr32(mq[2][1] * mq[0][2] - mq[0][1] * mq[2][2], 14);
+    cross[2] = asr32(mq[0][1] * mq[1][2] - mq[1][1] * mq[0][2], 14);
+    det = mq[0][0] * cross[0] + mq[1][0] * cross[1] + mq[2][0] * cross[2];
+    return det > 0;
+}
+
+int stp_view_similar(const stp_transform *model)
+{
+    int32_t m[3][3], mq[3][3];
+    return similarity(model, m, mq);
+}
+
+int stp_view_transform_compose(const stp_view_transform *t, const stp_transform *model,
+                               stp_view_transform *out)
+{
+    int32_t m[3][3], mq[3][3], c[3][3];
+    const stp_vec3 *axis[3];
+    int i, j;
+    if (!similarity(model, m, mq))
+        return 0;
+    axis[0] = &t->right;
+    axis[1] = &t->up;
+    axis[2] = &t->forward;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) {
+            /* |axis| < 2^17, |m| < 2^24 (similarity): below 3 2^41 */
+            int64_t s = (int64_t)axis[i]->x * m[0][j] + (int64_t)axis[i]->y * m[1][j] +
+                        (int64_t)axis[i]->z * m[2][j];
+            s = stp_asr64(s + ((int64_t)1 << (F - 1)), F);
+            if (s >= ((int64_t)1 << 17) || s <= -((int64_t)1 << 17))
+                return 0;
+            c[i][j] = (int32_t)s;
+        }
+    out->right.x = c[0][0];
+    out->right.y = c[0][1];
+    out->right.z = c[0][2];
+    out->up.x = c[1][0];
+    out->up.y = c[1][1];
+    out->up.z = c[1][2];
+    out->forward.x = c[2][0];
+    out->forward.y = c[2][1];
+    out->forward.z = c[2][2];
+    /* V_i . (from - t) = from . V_i - t . V_i, exact */
+    out->from_right = t->from_right - dot64(model->t, t->right);
+    out->from_up = t->from_up - dot64(model->t, t->up);
+    out->from_forward = t->from_forward - dot64(model->t, t->forward);
+    split_from(out);
+    return 1;
+}
+
+int stp_model_frame_make(const stp_view_transform *t, stp_vec3 from, const stp_transform *model,
+                         stp_model_frame *f)
+{
+    int32_t m[3][3], mq[3][3];
+    int64_t d[3];
+    const stp_vec3 *axis[3];
+    int i, j;
+    f->usable = 0;
+    if (!similarity(model, m, mq))
+        return 0;
+    f->scale2 = (int64_t)m[0][0] * m[0][0] + (int64_t)m[1][0] * m[1][0] + (int64_t)m[2][0] * m[2][0];
+    axis[0] = &t->right;
+    axis[1] = &t->up;
+    axis[2] = &t->forward;
+    /* rows of V M (V: the view axes as rows, Q15 here), normalised: each
+     * product below 2^15 2^14, the sums below 2^31 (|V_i| = 1,
+     * |mq column| < 2^14 sqrt 3) */
+    for (i = 0; i < 3; i++) {
+        int32_t row[3];
+        int32_t ax = asr32(axis[i]->x, 1), ay = asr32(axis[i]->y, 1), az = asr32(axis[i]->z, 1);
+        stp_unit3 u;
+        for (j = 0; j < 3; j++)
+            row[j] = ax * mq[0][j] + ay * mq[1][j] + az * mq[2][j];
+        if (stp_unit_from64(row[0], row[1], row[2], &u) == 0)
+            return 0;
+        /* Q30 to Q15, rounded */
+        f->rot[i][0] = (int32_t)stp_asr64((int64_t)u.x + ((int64_t)1 << 14), 15);
+        f->rot[i][1] = (int32_t)stp_asr64((int64_t)u.y + ((int64_t)1 << 14), 15);
+        f->rot[i][2] = (int32_t)stp_asr64((int64_t)u.z + ((int64_t)1 << 14), 15);
+    }
+    /* eye in model coordinates: M^-1 (from - t) = M^T (from - t) / s^2 */
+    d[0] = (int64_t)from.x - (model ? model->t.x : 0);
+    d[1] = (int64_t)from.y - (model ? model->t.y : 0);
+    d[2] = (int64_t)from.z - (model ? model->t.z : 0);
+    for (j = 0; j < 3; j++) {
+        int64_t sum = m[0][j] * d[0] + m[1][j] * d[1] + m[2][j] * d[2], e;
+        if (sum >= ((int64_t)1 << 46) || sum <= -((int64_t)1 << 46))
+            return 0;
+        e = (sum * ONE) / f->scale2; /* |sum| < 2^46: the product fits */
+        if (e >= ((int64_t)1 << 30) || e <= -((int64_t)1 << 30))
+            return 0;
+        f->eye[j] = (int32_t)e;
+    }
+    f->usable = 1;
+    return 1;
 }
 
 #if STP_WIDE_ARITH

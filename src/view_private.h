@@ -5,6 +5,7 @@
 #define STIPPLE_VIEW_PRIVATE_H
 
 #include "stipple/render.h"
+#include "stipple/transform.h"
 
 /* A view turned into what both renderers use: an orthonormal left-handed
  * basis (unit stp_vec3: x right, y up, z forward along the line of sight),
@@ -34,6 +35,14 @@ typedef struct stp_view_transform {
     int32_t from_low[3];
 } stp_view_transform;
 
+/* The view's axes (view_frame_make's, the one place they are formed):
+ * forward the unit vector from `from` towards `at`, right = forward x up
+ * and up = right x forward normalised (unit stp_vec3, F fractional bits).
+ * Returns STP_OK, or STP_ERR_VIEW (from == at, up zero or along the line
+ * of sight); the axes are written only on success. */
+int stp_view_axes(stp_vec3 from, stp_vec3 at, stp_vec3 up, stp_vec3 *right_out, stp_vec3 *up_out,
+                  stp_vec3 *forward_out);
+
 void stp_view_transform_make(const stp_view_frame *vf, stp_view_transform *out);
 /* The transform of axes right, up, forward (unit: |component| < 2^17) and
  * eye from, as stp_view_transform_make forms it from a frame. */
@@ -42,6 +51,61 @@ void stp_view_transform_of_axes(stp_vec3 right, stp_vec3 up, stp_vec3 forward, s
 
 /* p (world) in view coordinates, each floor((p - from) . axis), saturated. */
 void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out);
+
+/* ---- the geometry stage: model coordinates to view coordinates ----
+ *
+ * A model transform m (stp_transform: p -> M p + t) that is a rotation
+ * times a uniform scale (stp_view_similar) is composed with the view
+ * transform into one stp_view_transform (stp_view_transform_compose), so
+ * a model point costs one stp_view_transform_point: the composite axes
+ * C_i = V_i M (V_i the view axis, F bits; each sum of three products below
+ * 3 2^41) rounded once to F fractional bits and required below 2^17 in
+ * magnitude (the axis range stp_view_transform_point takes: a scale below
+ * about 2), and the eye's terms V_i . (from - t) exact (2F fractional
+ * bits: from . V_i below 2^49 less t . V_i below 3 2^48).  Each view
+ * coordinate is then floor(C_i . p - V_i . (from - t)), within a few raw
+ * units of the two steps' floor(V_i . (round(M p) + t - from)).  A model
+ * point whose M p + t leaves stp_fix's range but whose view coordinates do
+ * not is drawn, where the two steps saturated it (STP_ERR_RANGE).  Any
+ * other model transform takes the two steps (stp_transform_point, then
+ * stp_view_transform_point); the identity (no model transform) takes the
+ * view transform alone. */
+
+/* The face stage's model frame (render.c's stp_render_model_frame, direct
+ * drawing's frame): what lets a face be tested and shaded from its Q1.14
+ * model normal (a mesh's prepared one, or stp_render_model_normal of an
+ * entered polygon) without forming a normal from its view coordinates.
+ * usable: the model transform (identity when off) a rotation times a
+ * uniform scale of at least 2^-6 and below 256 with a positive
+ * determinant (stp_view_similar), and the eye in model coordinates below
+ * 2^30 in each coordinate. */
+typedef struct stp_model_frame {
+    int32_t rot[3][3]; /* model normal to view normal: the view rotation
+                          times the model's, normalised rows, Q15 */
+    int32_t eye[3];    /* the eye in model coordinates (stp_fix, |.| < 2^30) */
+    int64_t scale2;    /* the model's scale squared, 2F fractional bits */
+    int usable;
+} stp_model_frame;
+
+/* Whether model (NULL: the identity) is a rotation times a uniform scale:
+ * columns of equal squared length and pairwise orthogonal, each within
+ * 1/1024 of the squared length (the rounding of composed stp_fix
+ * rotations), a positive determinant (a reflection turns the winding), a
+ * scale of at least 2^-6 (enough bits for the normals) and below 256. */
+int stp_view_similar(const stp_transform *model);
+
+/* *out = the view transform t after model (a similarity, stp_view_similar)
+ * as one transform (see above).  Returns 1, or 0 (out unset) when model is
+ * not a similarity or a composite axis component reaches 2^17 in
+ * magnitude: then the two steps apply.  out must not be t. */
+int stp_view_transform_compose(const stp_view_transform *t, const stp_transform *model,
+                               stp_view_transform *out);
+
+/* The model frame of view transform t (its axes), eye from (world) and
+ * model (NULL: the identity); returns f->usable (1, or 0 when model is no
+ * similarity or the eye in model coordinates is not below 2^30). */
+int stp_model_frame_make(const stp_view_transform *t, stp_vec3 from, const stp_transform *model,
+                         stp_model_frame *f);
 
 /* Which side of triangle v (world coordinates) an eye at from (perspective)
  * or looking along forward (parallel: unit, F fractional bits) sees, by the
