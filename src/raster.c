@@ -105,17 +105,6 @@ static uint32_t div_count(uint32_t s, uint32_t n)
 }
 #endif
 
-size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
-{
-    switch (fmt) {
-    case STP_PIXEL_MONO1: return ((size_t)width + 7u) / 8u;
-    case STP_PIXEL_GREY8:
-    case STP_PIXEL_STYLE8: return (size_t)width;
-    case STP_PIXEL_RGB888: return (size_t)width * 3u;
-    default: return 0;
-    }
-}
-
 /* Where depth_q12 is three 32 x 32-bit products from 16-bit halves
  * (32-bit targets without wide arithmetic) it keeps its last results: 64
  * (512 bytes of the frame on the stack) hold a mesh's vertex until the
