@@ -1155,13 +1155,6 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
 #endif
 }
 
-/* The eye's terms of the highlight on a face (stp_shade_fast_face): N.E
- * in Q30, 1/(N.E) and the same in Q26. */
-typedef struct eye_terms {
-    int32_t n_dot_e;
-    stp_sf16 inv_ne;
-    uint32_t inv_ne_q26;
-} eye_terms;
 
 /* |N|^2 - 1 in Q28 (each n_i^2 <= 2^30, so the sum fits unsigned),
  * clamped to +-2^17. */
@@ -1191,10 +1184,11 @@ STP_HOT_INLINE int faces_eye(const stp_shade_fast *s, const int16_t normal[3], s
 
 /* Light j's share of the shade in Q26 (stp_shade_fast_face): BRIGHT P_j
  * |R| (N.L)/(C + U), signed as R, plus the highlight; 0 when the light is
- * behind the face.  nd: normal_deviation; e, et: the eye's direction and
- * terms. */
-STP_HOT_INLINE int32_t light_share(const stp_shade_fast *s, int j, const int16_t normal[3], stp_vec3 point,
-                                   int point_big, int32_t nd, const stp_shade_fast_dir *e, const eye_terms *et)
+ * behind the face.  nd: normal_deviation; e the eye's direction, n_dot_e
+ * N.E (Q30), inv_ne 1/(N.E) and inv_ne_q26 the same in Q26. */
+static inline int32_t light_share(const stp_shade_fast *s, int j, const int16_t normal[3], stp_vec3 point,
+                                   int point_big, int32_t nd, const stp_shade_fast_dir *e, int32_t n_dot_e,
+                                   stp_sf16 inv_ne, uint32_t inv_ne_q26)
 {
     stp_shade_fast_dir l;
     int32_t n_dot_l, share;
@@ -1214,13 +1208,14 @@ STP_HOT_INLINE int32_t light_share(const stp_shade_fast *s, int j, const int16_t
         share = -share;
 #if STP_WITH_SPECULAR
     if (s->specular) {
-        int32_t e_dot_l = at_point ? et->n_dot_e : cos_dirs(e, &l);
-        share += specular_share(s, n_dot_l, et->n_dot_e, e_dot_l, et->inv_ne, et->inv_ne_q26,
-                                sf_mul(w, s->power_ks[j]));
+        int32_t e_dot_l = at_point ? n_dot_e : cos_dirs(e, &l);
+        share += specular_share(s, n_dot_l, n_dot_e, e_dot_l, inv_ne, inv_ne_q26, sf_mul(w, s->power_ks[j]));
     }
 #else
     (void)e;
-    (void)et;
+    (void)n_dot_e;
+    (void)inv_ne;
+    (void)inv_ne_q26;
 #endif
     return share;
 }
@@ -1231,7 +1226,9 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     const stp_shade_fast_dir *e = &s->e;
     int32_t nd, dot_e = 0, sum = s->ambient;
     int j, lit = 0, point_big = is_big(point);
-    eye_terms et = {0, {0, 0}, 0};
+    int32_t n_dot_e = 0;
+    stp_sf16 inv_ne = {0, 0};
+    uint32_t inv_ne_q26 = 0;
 #if STP_WITH_SPECULAR
     if (s->exact && s->exact_always && s->count != 0)
         return s->exact(s, normal, point);
@@ -1247,17 +1244,17 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     nd = normal_deviation(normal);
 #if STP_WITH_SPECULAR
     if (s->specular) {
-        et.n_dot_e = cos_n(dot_e, e, nd);
-        if (et.n_dot_e <= 0)
+        n_dot_e = cos_n(dot_e, e, nd);
+        if (n_dot_e <= 0)
             return s->ambient_shade;
-        if (s->exact && et.n_dot_e < s->fast_min_cos)
+        if (s->exact && n_dot_e < s->fast_min_cos)
             return s->exact(s, normal, point);
-        et.inv_ne = sf_recip(sf_make((uint32_t)et.n_dot_e, 30));
-        et.inv_ne_q26 = sf_to_fixed(et.inv_ne, 26, 0x7FFFFFFFu);
+        inv_ne = sf_recip(sf_make((uint32_t)n_dot_e, 30));
+        inv_ne_q26 = sf_to_fixed(inv_ne, 26, 0x7FFFFFFFu);
     }
 #endif
     for (j = 0; j < s->count; j++) {
-        int32_t share = light_share(s, j, normal, point, point_big, nd, e, &et);
+        int32_t share = light_share(s, j, normal, point, point_big, nd, e, n_dot_e, inv_ne, inv_ne_q26);
         if (share > 0) {
             lit = 1;
             sum += share;
