@@ -1063,22 +1063,10 @@ STP_HOT_INLINE void tri_sort(const stp_instr *v, const stp_instr **top, const st
     *bot = b;
 }
 
-/* The rows of a triangle with vertices at top_y <= mid_y <= bot_y that
- * draw_triangle paints: those whose centre 16 r + 8 lies in [top_y,
- * bot_y), in the band, *r_first to the row returned (none when that is
- * above *r_first); *r_mid the first row below mid_y. */
-STP_HOT_INLINE int32_t tri_rows(const frame *fr, int32_t top_y, int32_t mid_y, int32_t bot_y, int32_t *r_first,
-                                int32_t *r_mid)
+/* The first row whose centre 16 r + 8 lies at or below y (Q27.4, y >= 0). */
+STP_HOT_INLINE int32_t row_below(int32_t y)
 {
-    int32_t first = (int32_t)((uint32_t)(top_y + HALF_PIXEL - 1) >> SUB);
-    int32_t last = (int32_t)((uint32_t)(bot_y + HALF_PIXEL - 1) >> SUB) - 1;
-    *r_mid = (int32_t)((uint32_t)(mid_y + HALF_PIXEL - 1) >> SUB);
-    if (first < (int32_t)fr->y0)
-        first = (int32_t)fr->y0;
-    if (last > (int32_t)(fr->y0 + fr->rows) - 1)
-        last = (int32_t)(fr->y0 + fr->rows) - 1;
-    *r_first = first;
-    return last;
+    return (int32_t)((uint32_t)(y + HALF_PIXEL - 1) >> SUB);
 }
 
 #if STP_WITH_ZBUFFER
@@ -1091,6 +1079,17 @@ typedef struct tri_depth {
     uint32_t d_row32, gx, gy_row;
     int short_depth;
 } tri_depth;
+
+/* No depths yet (the plane made at the first span with pixels); field by
+ * field: ARMv6-M's GCC clears a whole struct by memset. */
+STP_HOT_INLINE void tri_depth_clear(tri_depth *td, depth_plane *pl)
+{
+    pl->ddx = pl->ddy = pl->dc = 0;
+    pl->xc = pl->yc = 0;
+    td->d_row = 0;
+    td->d_row32 = td->gx = td->gy_row = 0;
+    td->short_depth = 0;
+}
 
 /* The depths of the triangle v (plane pl, y_extent high) from row centre
  * yc down. */
@@ -1163,13 +1162,9 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
     int ready = 0, direct = 0;
     tri_edge lng, sht;
 #if STP_WITH_ZBUFFER
-    depth_plane pl; /* field by field: ARMv6-M's GCC clears a whole struct by memset */
+    depth_plane pl;
     tri_depth td;
-    pl.ddx = pl.ddy = pl.dc = 0;
-    pl.xc = pl.yc = 0;
-    td.d_row = 0;
-    td.d_row32 = td.gx = td.gy_row = 0;
-    td.short_depth = 0;
+    tri_depth_clear(&td, &pl);
 #endif
     tri_sort(v, &top, &mid, &bot);
     if (bot->y <= fr->band_top || top->y >= fr->band_end)
@@ -1181,7 +1176,14 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
     (void)use_z;
     (void)ordinal;
 #endif
-    r_last = tri_rows(fr, top->y, mid->y, bot->y, &r_first, &r_mid);
+    /* rows whose centre lies in [top, bottom), in the band */
+    r_first = row_below(top->y);
+    r_last = row_below(bot->y) - 1;
+    r_mid = row_below(mid->y); /* the first row below mid's y */
+    if (r_first < (int32_t)fr->y0)
+        r_first = (int32_t)fr->y0;
+    if (r_last > (int32_t)(fr->y0 + fr->rows) - 1)
+        r_last = (int32_t)(fr->y0 + fr->rows) - 1;
     if (r_first > r_last)
         return;
     yc = r_first * (1 << SUB) + HALF_PIXEL;
