@@ -1,8 +1,23 @@
 /* SPDX-License-Identifier: MIT */
 /* Defaults for stp_renderer_render: the output and the frame memory carved from one
- * caller buffer (render.h, stp_output_default and stp_frame_memory_*). */
+ * caller buffer (render.h, stp_output_default and stp_frame_memory_*), and
+ * the bytes of a pixel row (port.h, stp_row_bytes).  This module owns the
+ * layout of the caller's memory; the rasteriser (raster.c) and the ray
+ * tracer use it, and it uses neither (no import circle). */
 #include "align_private.h"
 #include "stipple/render.h"
+
+/* The bytes of one row of width pixels of format fmt (port.h). */
+size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
+{
+    switch (fmt) {
+    case STP_PIXEL_MONO1: return ((size_t)width + 7u) / 8u;
+    case STP_PIXEL_GREY8:
+    case STP_PIXEL_STYLE8: return (size_t)width;
+    case STP_PIXEL_RGB888: return (size_t)width * 3u;
+    default: return 0;
+    }
+}
 
 /* C99 has no alignof: a type's alignment is its offset after a char. */
 struct sort_alignment {

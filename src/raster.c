@@ -105,17 +105,6 @@ static uint32_t div_count(uint32_t s, uint32_t n)
 }
 #endif
 
-size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width)
-{
-    switch (fmt) {
-    case STP_PIXEL_MONO1: return ((size_t)width + 7u) / 8u;
-    case STP_PIXEL_GREY8:
-    case STP_PIXEL_STYLE8: return (size_t)width;
-    case STP_PIXEL_RGB888: return (size_t)width * 3u;
-    default: return 0;
-    }
-}
-
 /* Where depth_q12 is three 32 x 32-bit products from 16-bit halves
  * (32-bit targets without wide arithmetic) it keeps its last results: 64
  * (512 bytes of the frame on the stack) hold a mesh's vertex until the
@@ -599,6 +588,79 @@ static void put_span_z_direct(const frame *fr, uint32_t y, uint32_t x1, uint32_t
     span_z_direct(z_row(fr, y), band_row(fr, y), pattern_of_row(fr, y), x1, x2, di, dstep);
 }
 
+/* put_span_z's opaque span whose depths fit 32 bits (di at x1's centre,
+ * dstep per pixel, every pixel's 1..65535): alternately skip the hidden
+ * pixels and take a run of the visible ones, writing their depth. */
+static void span_z_opaque(const span_paint *sp, uint16_t *z, uint32_t x1, uint32_t x2, int32_t di, int32_t dstep)
+{
+    uint32_t x = x1, run;
+    for (;;) {
+        while (x <= x2 && (uint16_t)((uint32_t)di >> 12) <= z[x]) {
+            x++;
+            di += dstep;
+        }
+        if (x > x2)
+            return;
+        run = x;
+        do {
+            z[x] = (uint16_t)((uint32_t)di >> 12);
+            x++;
+            di += dstep;
+        } while (x <= x2 && (uint16_t)((uint32_t)di >> 12) > z[x]);
+        span_paint_run(sp, run, x - 1);
+    }
+}
+
+/* put_span_z's transparent span whose depths fit 32 bits (as
+ * span_z_opaque): the runs of visible pixels, whose depths stay (a
+ * transparent polygon does not hide what is behind it). */
+static void span_z_transparent(const span_paint *sp, const uint16_t *z, uint32_t x1, uint32_t x2, int32_t di,
+                               int32_t dstep)
+{
+    uint32_t x, run = 0;
+    int in_run = 0;
+    for (x = x1; x <= x2; x++, di += dstep) {
+        uint16_t depth = (uint16_t)((uint32_t)di >> 12);
+        if (depth > z[x]) {
+            if (!in_run) {
+                run = x;
+                in_run = 1;
+            }
+        } else if (in_run) {
+            span_paint_run(sp, run, x - 1);
+            in_run = 0;
+        }
+    }
+    if (in_run)
+        span_paint_run(sp, run, x2);
+}
+
+/* put_span_z's span whose depths may leave 1..65535 (d at x1's centre,
+ * ddx per pixel, Q12): each pixel's depth clamped (depth_of); an opaque
+ * polygon (t 0) writes the depths of its visible pixels. */
+static void span_z_clamped(const span_paint *sp, uint16_t *z, uint32_t x1, uint32_t x2, int64_t d, int64_t ddx,
+                           stp_fix t)
+{
+    uint32_t x, run = 0;
+    int in_run = 0;
+    for (x = x1; x <= x2; x++, d += ddx) {
+        uint16_t depth = depth_of(d);
+        if (depth > z[x]) {
+            if (t == 0)
+                z[x] = depth;
+            if (!in_run) {
+                run = x;
+                in_run = 1;
+            }
+        } else if (in_run) {
+            span_paint_run(sp, run, x - 1);
+            in_run = 0;
+        }
+    }
+    if (in_run)
+        span_paint_run(sp, run, x2);
+}
+
 /* Depth-tested span: runs of pixels that pass are painted whole, so the
  * halftone inner loop stays the same as without a Z buffer.  d: the depth
  * at x1's centre, ddx its change per pixel, both Q12. */
@@ -606,8 +668,6 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
                        int64_t d, int64_t ddx, int smooth, int64_t s0, int64_t sstep, stp_fix t, int direct)
 {
     uint16_t *z = fr->zbuf + (size_t)(y - fr->y0) * fr->r->width;
-    uint32_t x, run = 0;
-    int in_run = 0;
     int64_t d_end = d + ddx * (int64_t)(x2 - x1);
     const int64_t lo = DEPTH_Q12_MIN, hi = DEPTH_Q12_END;
     span_paint sp;
@@ -620,58 +680,14 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
             return;
         }
         span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t, direct);
-        if (t == 0) {
-            /* opaque: alternately skip the hidden pixels and take a run of
-             * the visible ones, writing their depth */
-            x = x1;
-            for (;;) {
-                while (x <= x2 && (uint16_t)((uint32_t)di >> 12) <= z[x]) {
-                    x++;
-                    di += dstep;
-                }
-                if (x > x2)
-                    break;
-                run = x;
-                do {
-                    z[x] = (uint16_t)((uint32_t)di >> 12);
-                    x++;
-                    di += dstep;
-                } while (x <= x2 && (uint16_t)((uint32_t)di >> 12) > z[x]);
-                span_paint_run(&sp, run, x - 1);
-            }
-            return;
-        }
-        for (x = x1; x <= x2; x++, di += dstep) {
-            uint16_t depth = (uint16_t)((uint32_t)di >> 12);
-            if (depth > z[x]) {
-                if (!in_run) { /* transparent polygons do not write depth */
-                    run = x;
-                    in_run = 1;
-                }
-            } else if (in_run) {
-                span_paint_run(&sp, run, x - 1);
-                in_run = 0;
-            }
-        }
-    } else {
-        span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t, direct);
-        for (x = x1; x <= x2; x++, d += ddx) {
-            uint16_t depth = depth_of(d);
-            if (depth > z[x]) {
-                if (t == 0)
-                    z[x] = depth;
-                if (!in_run) {
-                    run = x;
-                    in_run = 1;
-                }
-            } else if (in_run) {
-                span_paint_run(&sp, run, x - 1);
-                in_run = 0;
-            }
-        }
+        if (t == 0)
+            span_z_opaque(&sp, z, x1, x2, di, dstep);
+        else
+            span_z_transparent(&sp, z, x1, x2, di, dstep);
+        return;
     }
-    if (in_run)
-        span_paint_run(&sp, run, x2);
+    span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t, direct);
+    span_z_clamped(&sp, z, x1, x2, d, ddx, t);
 }
 
 /* Depth key mapped to the Z buffer's 1..65535 with 12 fractional bits:
@@ -1023,6 +1039,114 @@ static int depth_terms_short(const depth_plane *pl, const stp_instr *v, int32_t 
 }
 #endif
 
+/* The vertices v[0..2] sorted by y: *top, *mid, *bot. */
+STP_HOT_INLINE void tri_sort(const stp_instr *v, const stp_instr **top, const stp_instr **mid, const stp_instr **bot)
+{
+    const stp_instr *t = &v[0], *m = &v[1], *b = &v[2], *swap;
+    if (m->y < t->y) {
+        swap = t;
+        t = m;
+        m = swap;
+    }
+    if (b->y < m->y) {
+        swap = m;
+        m = b;
+        b = swap;
+        if (m->y < t->y) {
+            swap = t;
+            t = m;
+            m = swap;
+        }
+    }
+    *top = t;
+    *mid = m;
+    *bot = b;
+}
+
+/* The first row whose centre 16 r + 8 lies at or below y (Q27.4, y >= 0). */
+STP_HOT_INLINE int32_t row_below(int32_t y)
+{
+    return (int32_t)((uint32_t)(y + HALF_PIXEL - 1) >> SUB);
+}
+
+#if STP_WITH_ZBUFFER
+/* A flat triangle's depths down its rows (draw_triangle): short ones
+ * (depth_terms_short) modulo 2^32 at device x = 0 of the row centre
+ * (d_row32), per subpixel in x (gx) and per row (gy_row); else general Q12
+ * ones at device x = 0 of the row centre (d_row). */
+typedef struct tri_depth {
+    int64_t d_row;
+    uint32_t d_row32, gx, gy_row;
+    int short_depth;
+} tri_depth;
+
+/* No depths yet (the plane made at the first span with pixels); field by
+ * field: ARMv6-M's GCC clears a whole struct by memset. */
+STP_HOT_INLINE void tri_depth_clear(tri_depth *td, depth_plane *pl)
+{
+    pl->ddx = pl->ddy = pl->dc = 0;
+    pl->xc = pl->yc = 0;
+    td->d_row = 0;
+    td->d_row32 = td->gx = td->gy_row = 0;
+    td->short_depth = 0;
+}
+
+/* The depths of the triangle v (plane pl, y_extent high) from row centre
+ * yc down. */
+STP_HOT_INLINE void tri_depth_start(tri_depth *td, const depth_plane *pl, const stp_instr *v, int32_t y_extent,
+                                   int32_t yc)
+{
+    /* (64-bit hosts: 64-bit depths cost what 32-bit ones do) */
+    td->short_depth = !STP_WIDE_ARITH && depth_terms_short(pl, v, y_extent);
+    if (td->short_depth) {
+        td->gx = (uint32_t)pl->ddx;
+        td->gy_row = (uint32_t)pl->ddy << SUB;
+        td->d_row32 = (uint32_t)pl->dc - td->gx * (uint32_t)pl->xc + (uint32_t)pl->ddy * (uint32_t)(yc - pl->yc);
+    } else {
+        td->d_row = pl->dc - mul_wide(pl->ddx, pl->xc) + mul_wide(pl->ddy, yc - pl->yc);
+    }
+}
+
+/* The next row's depths. */
+STP_HOT_INLINE void tri_depth_step(tri_depth *td, const depth_plane *pl)
+{
+    if (td->short_depth)
+        td->d_row32 += td->gy_row;
+    else
+        td->d_row += pl->ddy * (1 << SUB);
+}
+
+/* The depth-tested span p1..p2 of a triangle's row: straight to the band
+ * (span_z_direct) when direct and its depths are 1..65535 at both ends,
+ * else through put_span_z. */
+STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint32_t p2, paint style, stp_fix t,
+                               int direct, const tri_depth *td, const depth_plane *pl)
+{
+    if (td->short_depth) {
+        /* the depths at the span's first and last pixel centres, modulo 2^32 */
+        uint32_t d = td->d_row32 + td->gx * ((p1 << SUB) + HALF_PIXEL), d_end = d + (td->gx << SUB) * (p2 - p1);
+        const uint32_t depths = (uint32_t)(DEPTH_Q12_END - DEPTH_Q12_MIN);
+        if (direct && d - (uint32_t)DEPTH_Q12_MIN < depths && d_end - (uint32_t)DEPTH_Q12_MIN < depths)
+            /* 1..65535 at both ends; two pixel centres 16 apart lie
+             * within the x extent: 16 |ddx| < 2^29 */
+            span_z_direct(z_row(fr, row), band_row(fr, row), pattern_of_row(fr, row), p1, p2, (int32_t)d,
+                          p2 > p1 ? from_twos(td->gx << SUB) : 0);
+        else
+            put_span_z(fr, row, p1, p2, style, from_twos(d), pl->ddx * (1 << SUB), 0, 0, 0, t, direct);
+    } else {
+        int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
+        int64_t d = td->d_row + mul_wide(pl->ddx, xq);
+        int64_t ddx = pl->ddx * (1 << SUB), d_end = d + mul_wide(ddx, (int32_t)(p2 - p1));
+        if (direct && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
+            d_end < DEPTH_Q12_END) /* as put_span_z would, without its call */
+            span_z_direct(z_row(fr, row), band_row(fr, row), pattern_of_row(fr, row), p1, p2, (int32_t)d,
+                          p2 > p1 ? (int32_t)ddx : 0);
+        else
+            put_span_z(fr, row, p1, p2, style, d, ddx, 0, 0, 0, t, direct);
+    }
+}
+#endif
+
 /* A flat triangle (df[at], vertices v) in the current band: the general
  * path's fill rule and depths, set up for what the triangle needs.  Its
  * vertices sorted by y (top, mid, bottom), each row centre is crossed by
@@ -1033,35 +1157,16 @@ static int depth_terms_short(const depth_plane *pl, const stp_instr *v, int32_t 
 static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint style, int use_z, stp_fix t,
                           uint32_t ordinal)
 {
-    const stp_instr *top = &v[0], *mid = &v[1], *bot = &v[2], *swap;
+    const stp_instr *top, *mid, *bot;
     int32_t r_first, r_last, r_mid, row, yc;
     int ready = 0, direct = 0;
     tri_edge lng, sht;
 #if STP_WITH_ZBUFFER
-    depth_plane pl; /* field by field: ARMv6-M's GCC clears a whole struct by memset */
-    int64_t d_row = 0; /* general depths: at device x = 0 of the row centre, Q12 */
-    /* short depths (depth_terms_short) modulo 2^32: at device x = 0 of
-     * the row centre, per subpixel in x, per row */
-    uint32_t d_row32 = 0, gx = 0, gy_row = 0;
-    int short_depth = 0;
-    pl.ddx = pl.ddy = pl.dc = 0;
-    pl.xc = pl.yc = 0;
+    depth_plane pl;
+    tri_depth td;
+    tri_depth_clear(&td, &pl);
 #endif
-    if (mid->y < top->y) {
-        swap = top;
-        top = mid;
-        mid = swap;
-    }
-    if (bot->y < mid->y) {
-        swap = mid;
-        mid = bot;
-        bot = swap;
-        if (mid->y < top->y) {
-            swap = top;
-            top = mid;
-            mid = swap;
-        }
-    }
+    tri_sort(v, &top, &mid, &bot);
     if (bot->y <= fr->band_top || top->y >= fr->band_end)
         return; /* not in the band */
 #if STP_WITH_ZBUFFER
@@ -1071,10 +1176,10 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
     (void)use_z;
     (void)ordinal;
 #endif
-    /* rows whose centre 16 r + 8 lies in [top, bottom), in the band */
-    r_first = (int32_t)((uint32_t)(top->y + HALF_PIXEL - 1) >> SUB);
-    r_last = (int32_t)((uint32_t)(bot->y + HALF_PIXEL - 1) >> SUB) - 1;
-    r_mid = (int32_t)((uint32_t)(mid->y + HALF_PIXEL - 1) >> SUB); /* the first row below mid's y */
+    /* rows whose centre lies in [top, bottom), in the band */
+    r_first = row_below(top->y);
+    r_last = row_below(bot->y) - 1;
+    r_mid = row_below(mid->y); /* the first row below mid's y */
     if (r_first < (int32_t)fr->y0)
         r_first = (int32_t)fr->y0;
     if (r_last > (int32_t)(fr->y0 + fr->rows) - 1)
@@ -1101,15 +1206,7 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
                 if (use_z) {
                     if (!depth_plane_for(fr, v, 3, ordinal, top->y, &pl))
                         return; /* edge-on: no area on screen */
-                    /* (64-bit hosts: 64-bit depths cost what 32-bit ones do) */
-                    short_depth = !STP_WIDE_ARITH && depth_terms_short(&pl, v, bot->y - top->y);
-                    if (short_depth) {
-                        gx = (uint32_t)pl.ddx;
-                        gy_row = (uint32_t)pl.ddy << SUB;
-                        d_row32 = (uint32_t)pl.dc - gx * (uint32_t)pl.xc + (uint32_t)pl.ddy * (uint32_t)(yc - pl.yc);
-                    } else {
-                        d_row = pl.dc - mul_wide(pl.ddx, pl.xc) + mul_wide(pl.ddy, yc - pl.yc);
-                    }
+                    tri_depth_start(&td, &pl, v, bot->y - top->y, yc);
                 }
 #endif
                 direct = paint_setup(fr, at, style, 0, t);
@@ -1117,33 +1214,11 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
                 ready = 1;
             }
 #if STP_WITH_ZBUFFER
-            if (use_z && short_depth) {
-                /* the depths at the span's first and last pixel centres,
-                 * modulo 2^32 */
-                uint32_t d = d_row32 + gx * ((p1 << SUB) + HALF_PIXEL), d_end = d + (gx << SUB) * (p2 - p1);
-                const uint32_t depths = (uint32_t)(DEPTH_Q12_END - DEPTH_Q12_MIN);
-                if (direct && d - (uint32_t)DEPTH_Q12_MIN < depths && d_end - (uint32_t)DEPTH_Q12_MIN < depths)
-                    /* 1..65535 at both ends; two pixel centres 16 apart
-                     * lie within the x extent: 16 |ddx| < 2^29 */
-                    span_z_direct(z_row(fr, (uint32_t)row), band_row(fr, (uint32_t)row), pattern_of_row(fr, (uint32_t)row),
-                                  p1, p2, (int32_t)d, p2 > p1 ? from_twos(gx << SUB) : 0);
-                else
-                    put_span_z(fr, (uint32_t)row, p1, p2, style, from_twos(d), pl.ddx * (1 << SUB), 0, 0, 0, t, direct);
-            } else if (use_z) {
-                int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
-                int64_t d = d_row + mul_wide(pl.ddx, xq);
-                int64_t ddx = pl.ddx * (1 << SUB), d_end = d + mul_wide(ddx, (int32_t)(p2 - p1));
-                if (direct && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
-                    d_end < DEPTH_Q12_END) /* as put_span_z would, without its call */
-                    span_z_direct(z_row(fr, (uint32_t)row), band_row(fr, (uint32_t)row), pattern_of_row(fr, (uint32_t)row),
-                                  p1, p2, (int32_t)d, p2 > p1 ? (int32_t)ddx : 0);
-                else
-                    put_span_z(fr, (uint32_t)row, p1, p2, style, d, ddx, 0, 0, 0, t, direct);
-            } else
+            if (use_z)
+                tri_span_z(fr, (uint32_t)row, p1, p2, style, t, direct, &td, &pl);
+            else
 #endif
-            {
                 paint_run(fr, (uint32_t)row, p1, p2, style, 0, 0, 0, t);
-            }
         }
         if (row == r_last)
             return;
@@ -1154,10 +1229,7 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
         else
             sht.acc += sht.step;
 #if STP_WITH_ZBUFFER
-        if (short_depth)
-            d_row32 += gy_row;
-        else
-            d_row += pl.ddy * (1 << SUB);
+        tri_depth_step(&td, &pl);
 #endif
     }
 }
@@ -1187,51 +1259,27 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
 #endif
 #endif
 
-/* Scan-convert the polygon whose header is df[at] into the current band;
- * ordinal: its place among the visible polygons in display order
- * (UINT32_MAX: no kept setup). */
-static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix t, uint32_t ordinal)
+/* The lowest and highest y of the polygon v[0..n-1]. */
+STP_HOT_INLINE void polygon_y_extent(const stp_instr *v, int n, int32_t *ymin, int32_t *ymax)
 {
-    stp_renderer *r = fr->r;
-    const stp_instr *v = &r->df[at];
-    int n = (int)v[0].op, i, ne = 0; /* a vertex count, <= STP_MAX_POLYGON_VERTICES */
-#if STP_WITH_GOURAUD
-    int smooth = v[0].shade >= 0;
-#else
-    const int smooth = 0;
-#endif
-    int32_t ymin = INT32_MAX, ymax = INT32_MIN;
-    int direct;
-    int32_t band_top = (int32_t)(fr->y0 << SUB), band_bottom = (int32_t)((fr->y0 + fr->rows) << SUB);
-    uint32_t y, y_first, y_last;
-#if STP_WITH_ZBUFFER
-    depth_plane pl = {0, 0, 0, 0, 0};
-    int64_t d_row = 0;
-#endif
-#if STP_WITH_TRIANGLE_PATH
-    if (n == 3 && !smooth && TRIANGLE_PATH(fr) && TRIANGLE_NARROW(v)) {
-        draw_triangle(fr, at, v, style, use_z, t, ordinal); /* the painter's order comes here */
-        return;
-    }
-#endif
+    int32_t lo = INT32_MAX, hi = INT32_MIN;
+    int i;
     for (i = 0; i < n; i++) {
-        if (v[i].y < ymin)
-            ymin = v[i].y;
-        if (v[i].y > ymax)
-            ymax = v[i].y;
+        if (v[i].y < lo)
+            lo = v[i].y;
+        if (v[i].y > hi)
+            hi = v[i].y;
     }
-    if (ymax <= band_top || ymin >= band_bottom)
-        return;
-#if STP_WITH_ZBUFFER
-    if (use_z && !depth_plane_for(fr, v, n, ordinal, ymin, &pl))
-        return; /* edge-on: no area on screen */
-#else
-    (void)use_z;
-    (void)ordinal;
-#endif
-    direct = paint_setup(fr, at, style, smooth, t);
-    (void)direct; /* read by the Z buffer's spans only */
-    /* edges oriented top to bottom, horizontal ones dropped */
+    *ymin = lo;
+    *ymax = hi;
+}
+
+/* The polygon v[0..n-1]'s edges into r->edges, oriented top to bottom,
+ * horizontal ones dropped, with their ends' shades when smooth; returns
+ * their count. */
+STP_HOT_INLINE int polygon_edges(stp_renderer *r, const stp_instr *v, int n, int smooth)
+{
+    int i, ne = 0;
     for (i = 0; i < n; i++) {
         const stp_instr *a = &v[i], *b = &v[i + 1 == n ? 0 : i + 1];
         int dir = stp_edge_setup(&r->edges[ne], a->x, a->y, b->x, b->y);
@@ -1240,9 +1288,100 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
 #if STP_WITH_GOURAUD
         if (smooth)
             stp_edge_shades(&r->edges[ne], dir > 0 ? a->shade : b->shade, dir > 0 ? b->shade : a->shade);
+#else
+        (void)smooth;
 #endif
         ne++;
     }
+    return ne;
+}
+
+#if STP_WITH_GOURAUD
+/* The shade along a span from its two crossings c[0] and c[1], at pixel
+ * centres with 16 extra fractional bits: *s0 at p1's, *sstep per pixel. */
+STP_HOT_INLINE void span_shades(const stp_crossing *c, uint32_t p1, int64_t *s0, int64_t *sstep)
+{
+    int64_t sl = c[0].shade, sr = c[1].shade;
+    int64_t width = (int64_t)c[1].x - c[0].x;
+    *sstep = width > 0 ? ((sr - sl) * 65536 * (1 << SUB)) / width : 0;
+    *s0 = sl * 65536 + (width > 0 ? ((sr - sl) * 65536 * (((int64_t)p1 << SUB) + HALF_PIXEL - c[0].x)) / width : 0);
+}
+#endif
+
+/* The spans of a polygon's row y between its nc crossings (r->crossings,
+ * in pairs): pixels whose centre c satisfies x_left <= c < x_right.  With
+ * the Z buffer, d_row is the Q12 depth at device x = 0 of the row centre
+ * and ddx its change per subpixel. */
+STP_HOT_INLINE void polygon_row(const frame *fr, uint32_t y, int nc, paint style, int use_z, stp_fix t, int smooth,
+                                int direct, int64_t d_row, int64_t ddx)
+{
+    const stp_renderer *r = fr->r;
+    int k;
+    for (k = 0; k + 1 < nc; k += 2) {
+        int64_t s0 = 0, sstep = 0;
+        uint32_t p1, p2;
+        if (!stp_span_pixels(r->crossings[k].x, r->crossings[k + 1].x, r->width, &p1, &p2))
+            continue;
+#if STP_WITH_GOURAUD
+        if (smooth)
+            span_shades(&r->crossings[k], p1, &s0, &sstep);
+#endif
+#if STP_WITH_ZBUFFER
+        if (use_z) {
+            /* dc + ddx (x - xc) + ddy (y - yc) at p1's centre */
+            int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
+            int64_t d = d_row + (ddx >= INT32_MIN && ddx <= INT32_MAX ? stp_smul32((int32_t)ddx, xq) : ddx * xq);
+            put_span_z(fr, y, p1, p2, style, d, ddx * (1 << SUB), smooth, s0, sstep, t, direct);
+            continue;
+        }
+#else
+        (void)use_z;
+        (void)direct;
+        (void)d_row;
+        (void)ddx;
+#endif
+        paint_run(fr, y, p1, p2, style, smooth, s0, sstep, t);
+    }
+}
+
+/* Scan-convert the polygon whose header is df[at] into the current band;
+ * ordinal: its place among the visible polygons in display order
+ * (UINT32_MAX: no kept setup). */
+static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix t, uint32_t ordinal)
+{
+    stp_renderer *r = fr->r;
+    const stp_instr *v = &r->df[at];
+    int n = (int)v[0].op, ne; /* a vertex count, <= STP_MAX_POLYGON_VERTICES */
+#if STP_WITH_GOURAUD
+    int smooth = v[0].shade >= 0;
+#else
+    const int smooth = 0;
+#endif
+    int32_t ymin, ymax;
+    int direct;
+    int32_t band_top = (int32_t)(fr->y0 << SUB), band_bottom = (int32_t)((fr->y0 + fr->rows) << SUB);
+    uint32_t y, y_first, y_last;
+    int64_t d_row = 0, ddx = 0;
+#if STP_WITH_ZBUFFER
+    depth_plane pl = {0, 0, 0, 0, 0};
+#endif
+#if STP_WITH_TRIANGLE_PATH
+    if (n == 3 && !smooth && TRIANGLE_PATH(fr) && TRIANGLE_NARROW(v)) {
+        draw_triangle(fr, at, v, style, use_z, t, ordinal); /* the painter's order comes here */
+        return;
+    }
+#endif
+    polygon_y_extent(v, n, &ymin, &ymax);
+    if (ymax <= band_top || ymin >= band_bottom)
+        return;
+#if STP_WITH_ZBUFFER
+    if (use_z && !depth_plane_for(fr, v, n, ordinal, ymin, &pl))
+        return; /* edge-on: no area on screen */
+#else
+    (void)ordinal;
+#endif
+    direct = paint_setup(fr, at, style, smooth, t);
+    ne = polygon_edges(r, v, n, smooth);
     /* rows whose centres lie in [ymin, ymax) and in the band */
     y_first = (uint32_t)((ymin < band_top ? band_top : ymin) >> SUB);
     y_last = (uint32_t)((ymax > band_bottom ? band_bottom : ymax) >> SUB);
@@ -1255,46 +1394,17 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
      * term and the sum stay below 2^62) */
     if (use_z)
         d_row = pl.dc - pl.ddx * pl.xc + pl.ddy * (((int64_t)y_first << SUB) + HALF_PIXEL - pl.yc);
+    ddx = pl.ddx;
 #endif
     for (y = y_first; y <= y_last; y++) {
-        int32_t yc_row = (int32_t)(y << SUB) + HALF_PIXEL;
-        int nc = stp_edges_row(r->edges, ne, yc_row, smooth, r->crossings), k;
-        for (k = 0; k + 1 < nc; k += 2) {
-            /* pixels whose centre c satisfies x_left <= c < x_right */
-            int32_t xl = r->crossings[k].x, xr = r->crossings[k + 1].x;
-            int64_t s0 = 0, sstep = 0;
-            uint32_t p1, p2;
-            if (!stp_span_pixels(xl, xr, r->width, &p1, &p2))
-                continue;
-#if STP_WITH_GOURAUD
-            if (smooth) {
-                /* shade along the span from its two crossings, at pixel
-                 * centres, with 16 extra fractional bits */
-                int64_t sl = r->crossings[k].shade, sr = r->crossings[k + 1].shade;
-                int64_t width = (int64_t)xr - xl;
-                sstep = width > 0 ? ((sr - sl) * 65536 * (1 << SUB)) / width : 0;
-                s0 = sl * 65536 +
-                     (width > 0 ? ((sr - sl) * 65536 * (((int64_t)p1 << SUB) + HALF_PIXEL - xl)) / width : 0);
-            }
-#endif
-#if STP_WITH_ZBUFFER
-            if (use_z) {
-                /* dc + ddx (x - xc) + ddy (y - yc) at p1's centre */
-                int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
-                int64_t d = d_row + (pl.ddx >= INT32_MIN && pl.ddx <= INT32_MAX ? stp_smul32((int32_t)pl.ddx, xq)
-                                                                                : pl.ddx * xq);
-                put_span_z(fr, y, p1, p2, style, d, pl.ddx * (1 << SUB), smooth, s0, sstep, t, direct);
-                continue;
-            }
-#endif
-            paint_run(fr, y, p1, p2, style, smooth, s0, sstep, t);
-        }
+        int nc = stp_edges_row(r->edges, ne, (int32_t)(y << SUB) + HALF_PIXEL, smooth, r->crossings);
+        polygon_row(fr, y, nc, style, use_z, t, smooth, direct, d_row, ddx);
 #if STP_WITH_EDGE_AA
         /* the pixels just outside this row's spans (opaque, unshadowed) */
         if (fr->aa.out && t == 0 && EDGE_AA_UNSHADOWED(fr))
             stp_edge_aa_row(&fr->aa, fr->band + (size_t)(y - fr->y0) * fr->stride,
                             use_z ? fr->zbuf + (size_t)(y - fr->y0) * r->width : 0, r->crossings, nc,
-                            style, smooth, EDGE_AA_DEPTH(d_row), EDGE_AA_DEPTH(pl.ddx));
+                            style, smooth, EDGE_AA_DEPTH(d_row), EDGE_AA_DEPTH(ddx));
 #endif
 #if STP_WITH_ZBUFFER
         d_row += pl.ddy * (1 << SUB);
@@ -1419,16 +1529,71 @@ static void sort_entries(stp_sort_entry *e, size_t n)
 }
 #endif
 
+/* The extent of the visible polygons' vertices: device x and y (Q27.4)
+ * and depth keys. */
+typedef struct extent {
+    int32_t x_lo, x_hi, y_lo, y_hi, key_min, key_max;
+} extent;
+
+/* Widen ex by the n vertices of the polygon in[0..n-1]. */
+static inline void extent_add(extent *ex, const stp_instr *in, int32_t n)
+{
+    int32_t i;
+    for (i = 0; i < n; i++) {
+        int32_t z = in[i].z, x = in[i].x, y = in[i].y;
+        ex->key_min = z < ex->key_min ? z : ex->key_min;
+        ex->key_max = z > ex->key_max ? z : ex->key_max;
+        ex->x_lo = x < ex->x_lo ? x : ex->x_lo;
+        ex->x_hi = x > ex->x_hi ? x : ex->x_hi;
+        ex->y_lo = y < ex->y_lo ? y : ex->y_lo;
+        ex->y_hi = y > ex->y_hi ? y : ex->y_hi;
+    }
+}
+
+/* The painter's entry of the polygon df[k] (n vertices in[0..n-1]): keyed
+ * by its farthest vertex. */
+static inline void sort_entry_set(stp_sort_entry *e, uint32_t k, const stp_instr *in, int32_t n, paint style,
+                                  stp_fix t)
+{
+    int32_t far_key = in[0].z, i;
+    for (i = 1; i < n; i++)
+        far_key = in[i].z < far_key ? in[i].z : far_key;
+    e->index = k;
+    e->key = far_key;
+    e->style = style;
+    e->transmission = t;
+}
+
+/* The frame's depth-key range and the pixels the count visible polygons
+ * can cover: a pixel a polygon covers has its centre within the polygon's
+ * vertices' extent (coordinates are >= 0: project() clamps them). */
+static void frame_extent(frame *fr, uint32_t count, const extent *ex)
+{
+    fr->key_min = ex->key_min;
+    fr->key_max = ex->key_max;
+    fr->x_min = fr->y_min = 1;
+    fr->x_max = fr->y_max = 0;
+    if (count == 0)
+        return;
+    fr->x_min = (uint32_t)ex->x_lo >> SUB;
+    fr->x_max = (uint32_t)ex->x_hi >> SUB;
+    fr->y_min = (uint32_t)ex->y_lo >> SUB;
+    fr->y_max = (uint32_t)ex->y_hi >> SUB;
+    if (fr->x_max > fr->r->width - 1)
+        fr->x_max = fr->r->width - 1;
+    if (fr->y_max > fr->r->height - 1)
+        fr->y_max = fr->r->height - 1;
+}
+
 /* Collect visible polygons for the painter (sort != NULL: entries keyed by
  * their farthest vertex) and the depth-key range. */
 static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
 {
     stp_renderer *r = fr->r;
     uint32_t count = 0, k;
-    int s, i;
-    /* locals, not fr's fields: a store through fr may alias the display file */
-    int32_t x_lo = INT32_MAX, x_hi = INT32_MIN, y_lo = INT32_MAX, y_hi = INT32_MIN;
-    int32_t key_min = INT32_MAX, key_max = INT32_MIN;
+    int s;
+    /* a local, not fr's fields: a store through fr may alias the display file */
+    extent ex = {INT32_MAX, INT32_MIN, INT32_MAX, INT32_MIN, INT32_MAX, INT32_MIN};
     int second_pass = 0;
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
@@ -1440,25 +1605,10 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
             const stp_instr *in = &r->df[k];
             int32_t op = in->op;
             if (op >= 3) {
-                for (i = 0; i < op; i++) {
-                    int32_t z = in[i].z, x = in[i].x, y = in[i].y;
-                    key_min = z < key_min ? z : key_min;
-                    key_max = z > key_max ? z : key_max;
-                    x_lo = x < x_lo ? x : x_lo;
-                    x_hi = x > x_hi ? x : x_hi;
-                    y_lo = y < y_lo ? y : y_lo;
-                    y_hi = y > y_hi ? y : y_hi;
-                }
+                extent_add(&ex, in, op);
                 second_pass |= t > 0;
-                if (sort) {
-                    int32_t far_key = in[0].z;
-                    for (i = 1; i < op; i++)
-                        far_key = in[i].z < far_key ? in[i].z : far_key;
-                    sort[count].index = k;
-                    sort[count].key = far_key;
-                    sort[count].style = style;
-                    sort[count].transmission = t;
-                }
+                if (sort)
+                    sort_entry_set(&sort[count], k, in, op, style, t);
                 count++;
                 k += (uint32_t)op - 1;
             } else if (op == STP_OP_SHADE) {
@@ -1471,22 +1621,7 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
         }
     }
     fr->second_pass = second_pass;
-    fr->key_min = key_min;
-    fr->key_max = key_max;
-    /* a pixel a polygon covers has its centre within the polygon's
-     * vertices' extent (coordinates are >= 0: project() clamps them) */
-    fr->x_min = fr->y_min = 1;
-    fr->x_max = fr->y_max = 0;
-    if (count > 0) {
-        fr->x_min = (uint32_t)x_lo >> SUB;
-        fr->x_max = (uint32_t)x_hi >> SUB;
-        fr->y_min = (uint32_t)y_lo >> SUB;
-        fr->y_max = (uint32_t)y_hi >> SUB;
-        if (fr->x_max > r->width - 1)
-            fr->x_max = r->width - 1;
-        if (fr->y_max > r->height - 1)
-            fr->y_max = r->height - 1;
-    }
+    frame_extent(fr, count, &ex);
     return count;
 }
 

@@ -759,30 +759,84 @@ static uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, i
 }
 #endif
 
+
+/* The direction towards the eye, ve, and N.E exactly (|N_i| <= 2^14 + 2,
+ * |ve_i| < 2^32). */
+STP_HOT_INLINE int64_t wide_eye_dot(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int64_t ve[3])
+{
+    if (s->parallel) {
+        ve[0] = s->eye.x; /* the direction towards the eye (wide_prepare) */
+        ve[1] = s->eye.y;
+        ve[2] = s->eye.z;
+    } else {
+        ve[0] = (int64_t)s->eye.x - point.x;
+        ve[1] = (int64_t)s->eye.y - point.y;
+        ve[2] = (int64_t)s->eye.z - point.z;
+    }
+    return normal[0] * ve[0] + normal[1] * ve[1] + normal[2] * ve[2];
+}
+
+#if STP_WITH_SPECULAR
+/* The eye's terms of the highlight on a face (face_wide): the direction
+ * E, N.E in Q30 and 1/(N.E) in Q26. */
+typedef struct wide_eye {
+    wide_dir e;
+    int64_t ne;
+    uint64_t inv_ne;
+} wide_eye;
+
+/* N.E in Q30 for the highlight (dot_e = N.E > 0, ve not 0), e the
+ * direction towards the eye. */
+STP_HOT_INLINE int64_t wide_eye_cos(const int16_t normal[3], const int64_t ve[3], int64_t dot_e, uint64_t nlen28,
+                                    wide_dir *e)
+{
+    (void)wide_make(e, ve[0], ve[1], ve[2]); /* not 0: N.E > 0 */
+    /* the exact N.E unless e was shifted */
+    return wide_cos_dot(e->k == e->j ? dot_e : normal[0] * e->v[0] + normal[1] * e->v[1] + normal[2] * e->v[2], e,
+                        nlen28);
+}
+#endif
+
+#if STP_WITH_SPECULAR
+/* Light j's highlight share in Q26 (face_wide): l its direction unless
+ * at_point, nl N.L, w and c its BRIGHT P_j/(C + U) = w 2^(c - e - 36). */
+STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_eye *we, const wide_dir *l,
+                                           int at_point, int64_t nl, uint64_t w, int c)
+{
+    /* E.L: |e.l| 2^(je + jl) <= len_e len_l < 2^62, so twice it fits;
+     * len_e len_l >> 29 >= 2^31 */
+    int64_t el = we->ne;
+    uint64_t dfg, n;
+    int sh;
+    if (!at_point) {
+        int64_t dot = we->e.v[0] * l->v[0] + we->e.v[1] * l->v[1] + we->e.v[2] * l->v[2];
+        el = (dot * ((int64_t)2 << (we->e.j + l->j))) / (int64_t)((we->e.len * l->len) >> 29);
+        el = el > Q30 ? Q30 : el; /* below -1: x <= 0 in wide_specular */
+    }
+    dfg = wide_specular(s, nl, we->ne, el, we->inv_ne);
+    if (dfg == 0)
+        return 0;
+    /* D F G/(N.E) = dfg 2^-26 = n 2^(sh - 26), n in [2^31, 2^32); the share
+     * n w Ks 2^(sh + c - e - 52) = (n w 2^-32) Ks 2^(sh + c - e - 20),
+     * n w 2^-32 < 2^32, times Ks < 2^31 */
+    sh = bit_length64(dfg) - 32;
+    n = sh >= 0 ? dfg >> sh : dfg << -sh;
+    return wide_share(((n * w) >> 32) * s->wide_ks, sh + c - 20);
+}
+#endif
+
 static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
 {
-    int64_t ve0, ve1, ve2, dot_e;
+    int64_t ve[3], dot_e;
     uint64_t nn, nlen28;
     int32_t sum = s->ambient;
     int j, lit = 0;
 #if STP_WITH_SPECULAR
-    wide_dir e = {{0, 0, 0}, 0, 0, 0};
-    int64_t ne = 0;
-    uint64_t inv_ne = 0;
+    wide_eye we = {{{0, 0, 0}, 0, 0, 0}, 0, 0};
 #endif
     if (s->count == 0)
         return s->ambient_shade;
-    if (s->parallel) {
-        ve0 = s->eye.x; /* the direction towards the eye (wide_prepare) */
-        ve1 = s->eye.y;
-        ve2 = s->eye.z;
-    } else {
-        ve0 = (int64_t)s->eye.x - point.x;
-        ve1 = (int64_t)s->eye.y - point.y;
-        ve2 = (int64_t)s->eye.z - point.z;
-    }
-    /* N.E > 0 exactly: |N_i| <= 2^14 + 2, |ve_i| < 2^32 */
-    dot_e = normal[0] * ve0 + normal[1] * ve1 + normal[2] * ve2;
+    dot_e = wide_eye_dot(s, normal, point, ve);
     if (dot_e <= 0)
         return s->ambient_shade; /* a back face, edge-on, or the eye on it */
     nn = (uint64_t)((int32_t)normal[0] * normal[0]) + (uint64_t)((int32_t)normal[1] * normal[1]) +
@@ -790,15 +844,12 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
     nlen28 = (nn + ((uint64_t)1 << 28)) >> 1;
 #if STP_WITH_SPECULAR
     if (s->specular) {
-        (void)wide_make(&e, ve0, ve1, ve2); /* not 0: N.E > 0 above */
-        /* the exact N.E unless e was shifted */
-        ne = wide_cos_dot(e.k == e.j ? dot_e : normal[0] * e.v[0] + normal[1] * e.v[1] + normal[2] * e.v[2], &e,
-                          nlen28);
-        if (ne <= 0)
+        we.ne = wide_eye_cos(normal, ve, dot_e, nlen28, &we.e);
+        if (we.ne <= 0)
             return s->ambient_shade;
-        if (ne < s->fast_min_cos)
+        if (we.ne < s->fast_min_cos)
             return s->exact(s, normal, point);
-        inv_ne = ((uint64_t)1 << 56) / (uint64_t)ne;
+        we.inv_ne = ((uint64_t)1 << 56) / (uint64_t)we.ne;
     }
 #endif
     for (j = 0; j < s->count; j++) {
@@ -813,8 +864,8 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
             nl = wide_cos_dot(normal[0] * l.v[0] + normal[1] * l.v[1] + normal[2] * l.v[2], &l, nlen28);
             if (nl <= 0)
                 continue;
-            /* C + U = cu 2^-c in raw units, cu >= len >= 2^30: C < 2^31
-             * times 2^k <= 2^30 */
+            /* C + U = cu 2^-c in raw units, cu >= len >= 2^30: C < 2^31 times
+             * 2^k <= 2^30 */
             cu = l.k >= 0 ? ((uint64_t)s->wide_c << l.k) + l.len : (uint64_t)s->wide_c + (l.len << -l.k);
             c = l.k >= 0 ? l.k : 0;
         } else {
@@ -830,33 +881,15 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
         c -= t;
         w = ((uint64_t)(s->wide_power[j] & 0xFFFFFFu) << 36) / cu;
         c -= (int)(s->wide_power[j] >> 24) - 64; /* c - e */
-        /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: nl 2^-30 |R| 2^-16 w 2^(c -
-         * e - 36) 2^26 = (w nl 2^-30) |R| 2^(c - e - 26); w nl 2^-30 <
-         * 2^32, times |R| < 2^31 */
+        /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: nl 2^-30 |R| 2^-16 w 2^(c - e -
+         * 36) 2^26 = (w nl 2^-30) |R| 2^(c - e - 26); w nl 2^-30 < 2^32, times
+         * |R| < 2^31 */
         share = wide_share(((w * (uint64_t)nl) >> 30) * s->wide_refl, c - 26);
         if (s->refl_negative)
             share = -share;
 #if STP_WITH_SPECULAR
-        if (s->specular) {
-            /* E.L: |e.l| 2^(je + jl) <= len_e len_l < 2^62, so twice it
-             * fits; len_e len_l >> 29 >= 2^31 */
-            int64_t el = ne;
-            uint64_t dfg;
-            if (!at_point) {
-                int64_t dot = e.v[0] * l.v[0] + e.v[1] * l.v[1] + e.v[2] * l.v[2];
-                el = (dot * ((int64_t)2 << (e.j + l.j))) / (int64_t)((e.len * l.len) >> 29);
-                el = el > Q30 ? Q30 : el; /* below -1: x <= 0 in wide_specular */
-            }
-            dfg = wide_specular(s, nl, ne, el, inv_ne);
-            if (dfg != 0) {
-                /* D F G/(N.E) = dfg 2^-26 = n 2^(sh - 26), n in [2^31, 2^32);
-                 * the share n w Ks 2^(sh + c - e - 52) = (n w 2^-32) Ks
-                 * 2^(sh + c - e - 20), n w 2^-32 < 2^32, times Ks < 2^31 */
-                int sh = bit_length64(dfg) - 32;
-                uint64_t n = sh >= 0 ? dfg >> sh : dfg << -sh;
-                share += wide_share(((n * w) >> 32) * s->wide_ks, sh + c - 20);
-            }
-        }
+        if (s->specular)
+            share += wide_light_specular(s, &we, &l, at_point, nl, w, c);
 #endif
         if (share > 0) {
             lit = 1;
@@ -1003,29 +1036,13 @@ static void exact_prepare(stp_shade_fast *s, const stp_lighting *lighting, const
 }
 #endif
 
-void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
-                            const stp_material *material, stp_vec3 eye, int parallel,
-                            stp_vec3 parallel_dir)
+/* The ambient-only shade (ambient_shade) and its Q26 term of the sums
+ * (ambient) for background B, reflectivity R and BRIGHT (all F bits). */
+static void prepare_ambient(stp_shade_fast *s, stp_fix background, stp_fix refl, stp_fix bright)
 {
-    stp_fix background = stp_fix_clamp(lighting->background, 0, ONE);
-    stp_fix refl = material->reflectivity, bright = lighting->brightness;
-    stp_sf16 bright_sf = sf_make(bright > 0 ? (uint32_t)bright : 0u, F);
-    stp_sf16 refl_sf = sf_make(refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl, F);
-#if STP_WITH_SPECULAR
-    stp_sf16 ks_sf = sf_make(material->specular > 0 ? (uint32_t)material->specular : 0u, F);
-#endif
-    int64_t ambient;
-    int j, count;
-    count = lighting->count < 0 ? 0 : (lighting->count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : lighting->count);
-    if (bright <= 0)
-        count = 0;
-    s->count = (uint8_t)count;
-    s->parallel = (uint8_t)(parallel != 0);
-    s->refl_negative = (uint8_t)(refl < 0);
-    s->attenuation_c = sf_make(lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u, 0);
-    /* the ambient-only shade as shade_unit forms it: B R (2F bits, < 2^(31 + F)
-     * in magnitude) times BRIGHT, capped, rounded once */
-    ambient = (int64_t)background * refl;
+    /* as shade_unit forms it: B R (2F bits, < 2^(31 + F) in magnitude)
+     * times BRIGHT, capped, rounded once */
+    int64_t ambient = (int64_t)background * refl;
     if (bright <= 0 || ambient <= 0) {
         s->ambient_shade = 0;
     } else {
@@ -1044,16 +1061,20 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
         a = stp_asr64(a * bright, F);
         s->ambient = (int32_t)(a > SHARE_CAP ? SHARE_CAP : (a < -(int64_t)SHARE_CAP ? -(int64_t)SHARE_CAP : a));
     }
-    s->eye = eye;
-    s->eye_big = (uint8_t)is_big(eye);
-    if (parallel) {
-        stp_vec3 zero = {0, 0, 0};
-        if (!dir_make(&s->e, &parallel_dir, &zero, is_big(parallel_dir), 1)) {
-            stp_vec3 back = {0, 0, -ONE};
-            (void)dir_make(&s->e, &back, &zero, 0, 1);
-        }
-    }
-    for (j = 0; j < count; j++) {
+}
+
+/* Each of the s->count lights' position and its BRIGHT P_j |R| (and
+ * BRIGHT P_j Ks) per raw unit of C + U. */
+static void prepare_lights(stp_shade_fast *s, const stp_lighting *lighting, const stp_material *material)
+{
+    stp_fix refl = material->reflectivity, bright = lighting->brightness;
+    stp_sf16 bright_sf = sf_make(bright > 0 ? (uint32_t)bright : 0u, F);
+    stp_sf16 refl_sf = sf_make(refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl, F);
+#if STP_WITH_SPECULAR
+    stp_sf16 ks_sf = sf_make(material->specular > 0 ? (uint32_t)material->specular : 0u, F);
+#endif
+    int j;
+    for (j = 0; j < s->count; j++) {
         const stp_light *light = &lighting->lights[j];
         stp_sf16 p = sf_make(light->power > 0 ? (uint32_t)light->power : 0u, F);
         s->light[j] = light->position;
@@ -1065,32 +1086,64 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
         s->power_ks[j] = sf_mul(p, ks_sf);
 #endif
     }
+}
+
 #if STP_WITH_SPECULAR
+/* The highlight's material terms: 1/k, the refractive index n and 1/n^2
+ * (or n^2 below 1), and the Fresnel table. */
+static void prepare_specular(stp_shade_fast *s, const stp_material *material)
+{
+    stp_fix n = material->refraction <= 0 ? 1 : material->refraction;
+    int j;
     s->specular = (uint8_t)(material->specular > 0);
     s->inv_gloss = sf_recip(sf_make(material->gloss < 1 ? 1u : (uint32_t)material->gloss, F));
     s->inv_gloss_q16 = sf_to_fixed(s->inv_gloss, 15, 0x7FFFFFFFu) << 1; /* below 2^32 */
-    {
-        stp_fix n = material->refraction <= 0 ? 1 : material->refraction;
-        s->refraction = sf_make((uint32_t)n, F);
-        s->refraction_ge_1 = (uint8_t)(n >= ONE);
-        s->inv_n2 = 0;
-        s->n2 = 0;
-        if (s->refraction_ge_1)
-            s->inv_n2 = sf_to_fixed(sf_recip(sf_mul(s->refraction, s->refraction)), 31,
-                                    0x80000000u - 1u);
-        else
-            s->n2 = (uint32_t)(2 * F >= 30 ? ((int64_t)n * n) >> (2 * F - 30)
-                                           : ((int64_t)n * n) << (30 - 2 * F)); /* n < 1: < 2^30 */
+    s->refraction = sf_make((uint32_t)n, F);
+    s->refraction_ge_1 = (uint8_t)(n >= ONE);
+    s->inv_n2 = 0;
+    s->n2 = 0;
+    if (s->refraction_ge_1)
+        s->inv_n2 = sf_to_fixed(sf_recip(sf_mul(s->refraction, s->refraction)), 31, 0x80000000u - 1u);
+    else
+        s->n2 = (uint32_t)(2 * F >= 30 ? ((int64_t)n * n) >> (2 * F - 30)
+                                       : ((int64_t)n * n) << (30 - 2 * F)); /* n < 1: < 2^30 */
+    if (!s->refraction_ge_1)
+        return;
+    /* the Fresnel table: exact F at its nodes (about 570 instructions
+     * each on ARMv6-M: the reason prepare is meant to be cached) */
+    for (j = 0; j < STP_SHADE_FAST_FRESNEL_NODES; j++) {
+        uint32_t c = FRESNEL_C0 + ((uint32_t)j << 24); /* <= 2^30 */
+        uint32_t u = (uint32_t)Q30 - (mul_hi(c << 1, c << 1)); /* 1 - c^2 in Q30 */
+        s->fresnel[j] = (uint16_t)sf_to_fixed(fresnel_sf(s, c, u), 16, 0xFFFFu);
     }
-    if (s->refraction_ge_1) {
-        /* the Fresnel table: exact F at its nodes (about 570 instructions
-         * each on ARMv6-M: the reason prepare is meant to be cached) */
-        for (j = 0; j < STP_SHADE_FAST_FRESNEL_NODES; j++) {
-            uint32_t c = FRESNEL_C0 + ((uint32_t)j << 24); /* <= 2^30 */
-            uint32_t u = (uint32_t)Q30 - (mul_hi(c << 1, c << 1)); /* 1 - c^2 in Q30 */
-            s->fresnel[j] = (uint16_t)sf_to_fixed(fresnel_sf(s, c, u), 16, 0xFFFFu);
+}
+#endif
+
+void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
+                            const stp_material *material, stp_vec3 eye, int parallel,
+                            stp_vec3 parallel_dir)
+{
+    stp_fix bright = lighting->brightness;
+    int count = lighting->count < 0 ? 0 : (lighting->count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : lighting->count);
+    if (bright <= 0)
+        count = 0;
+    s->count = (uint8_t)count;
+    s->parallel = (uint8_t)(parallel != 0);
+    s->refl_negative = (uint8_t)(material->reflectivity < 0);
+    s->attenuation_c = sf_make(lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u, 0);
+    prepare_ambient(s, stp_fix_clamp(lighting->background, 0, ONE), material->reflectivity, bright);
+    s->eye = eye;
+    s->eye_big = (uint8_t)is_big(eye);
+    if (parallel) {
+        stp_vec3 zero = {0, 0, 0};
+        if (!dir_make(&s->e, &parallel_dir, &zero, is_big(parallel_dir), 1)) {
+            stp_vec3 back = {0, 0, -ONE};
+            (void)dir_make(&s->e, &back, &zero, 0, 1);
         }
     }
+    prepare_lights(s, lighting, material);
+#if STP_WITH_SPECULAR
+    prepare_specular(s, material);
 #else
     s->specular = 0;
 #endif
@@ -1102,18 +1155,80 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
 #endif
 }
 
+
+/* |N|^2 - 1 in Q28 (each n_i^2 <= 2^30, so the sum fits unsigned),
+ * clamped to +-2^17. */
+STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
+{
+    uint32_t nn = (uint32_t)((int32_t)normal[0] * normal[0]) + (uint32_t)((int32_t)normal[1] * normal[1]) +
+                  (uint32_t)((int32_t)normal[2] * normal[2]);
+    return nn > 0x10020000u ? 0x20000 : (nn < 0x0FFE0000u ? -0x20000 : (int32_t)(nn - 0x10000000u));
+}
+
+/* Whether the face at point with normal faces the eye; *e the direction
+ * towards it (e_local made here, or the parallel view's), *dot_e N.E
+ * where the highlight or a big or parallel eye needs it (else 0). */
+STP_HOT_INLINE int faces_eye(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int point_big,
+                             stp_shade_fast_dir *e_local, const stp_shade_fast_dir **e, int32_t *dot_e)
+{
+    if (!s->parallel && !s->specular && !(s->eye_big | point_big))
+        return faces_point(normal, &s->eye, &point); /* diffuse only: E matters only through N.E's sign */
+    if (!s->parallel) {
+        if (!dir_make(e_local, &s->eye, &point, s->eye_big | point_big, s->specular))
+            return 0; /* the eye on the face */
+        *e = e_local;
+    }
+    *dot_e = dot_n(normal, *e);
+    return *dot_e > 0; /* not a back face, nor edge-on */
+}
+
+/* Light j's share of the shade in Q26 (stp_shade_fast_face): BRIGHT P_j
+ * |R| (N.L)/(C + U), signed as R, plus the highlight; 0 when the light is
+ * behind the face.  nd: normal_deviation; e the eye's direction, n_dot_e
+ * N.E (Q30), inv_ne 1/(N.E) and inv_ne_q26 the same in Q26. */
+static inline int32_t light_share(const stp_shade_fast *s, int j, const int16_t normal[3], stp_vec3 point,
+                                   int point_big, int32_t nd, const stp_shade_fast_dir *e, int32_t n_dot_e,
+                                   stp_sf16 inv_ne, uint32_t inv_ne_q26)
+{
+    stp_shade_fast_dir l;
+    int32_t n_dot_l, share;
+    stp_sf16 w;
+    int at_point = !dir_make(&l, &s->light[j], &point, s->light_big[j] | point_big, 1);
+    if (!at_point) {
+        n_dot_l = cos_n(dot_n(normal, &l), &l, nd);
+        if (n_dot_l <= 0)
+            return 0;
+        w = sf_recip(sf_add(s->attenuation_c, dir_length(&l)));
+    } else {
+        n_dot_l = Q30; /* the light on the face: lit head-on (L = N), U = 0 */
+        w = sf_recip(s->attenuation_c);
+    }
+    share = share_times((uint32_t)n_dot_l, 30, sf_mul(w, s->power_refl[j]));
+    if (s->refl_negative)
+        share = -share;
+#if STP_WITH_SPECULAR
+    if (s->specular) {
+        int32_t e_dot_l = at_point ? n_dot_e : cos_dirs(e, &l);
+        share += specular_share(s, n_dot_l, n_dot_e, e_dot_l, inv_ne, inv_ne_q26, sf_mul(w, s->power_ks[j]));
+    }
+#else
+    (void)e;
+    (void)n_dot_e;
+    (void)inv_ne;
+    (void)inv_ne_q26;
+#endif
+    return share;
+}
+
 stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
 {
-    stp_shade_fast_dir e_local, l;
+    stp_shade_fast_dir e_local;
     const stp_shade_fast_dir *e = &s->e;
-    uint32_t nn;
     int32_t nd, dot_e = 0, sum = s->ambient;
     int j, lit = 0, point_big = is_big(point);
-#if STP_WITH_SPECULAR
     int32_t n_dot_e = 0;
     stp_sf16 inv_ne = {0, 0};
     uint32_t inv_ne_q26 = 0;
-#endif
 #if STP_WITH_SPECULAR
     if (s->exact && s->exact_always && s->count != 0)
         return s->exact(s, normal, point);
@@ -1124,26 +1239,9 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     if (s->wide_ready)
         return face_wide(s, normal, point);
 #endif
-    if (s->count == 0)
+    if (s->count == 0 || !faces_eye(s, normal, point, point_big, &e_local, &e, &dot_e))
         return s->ambient_shade;
-    if (!s->parallel && !s->specular && !(s->eye_big | point_big)) {
-        /* diffuse only: E matters only through the sign of N.E */
-        if (!faces_point(normal, &s->eye, &point))
-            return s->ambient_shade; /* a back face, or edge-on */
-    } else if (!s->parallel) {
-        if (!dir_make(&e_local, &s->eye, &point, s->eye_big | point_big, s->specular))
-            return s->ambient_shade; /* the eye on the face */
-        e = &e_local;
-    }
-    if (s->parallel || s->specular || (s->eye_big | point_big)) {
-        dot_e = dot_n(normal, e);
-        if (dot_e <= 0)
-            return s->ambient_shade; /* a back face, or edge-on */
-    }
-    /* |N|^2 - 1 in Q28: each n_i^2 <= 2^30, so the sum fits unsigned */
-    nn = (uint32_t)((int32_t)normal[0] * normal[0]) + (uint32_t)((int32_t)normal[1] * normal[1]) +
-         (uint32_t)((int32_t)normal[2] * normal[2]);
-    nd = nn > 0x10020000u ? 0x20000 : (nn < 0x0FFE0000u ? -0x20000 : (int32_t)(nn - 0x10000000u));
+    nd = normal_deviation(normal);
 #if STP_WITH_SPECULAR
     if (s->specular) {
         n_dot_e = cos_n(dot_e, e, nd);
@@ -1156,29 +1254,7 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     }
 #endif
     for (j = 0; j < s->count; j++) {
-        int32_t n_dot_l, share;
-        stp_sf16 w;
-        int at_point = !dir_make(&l, &s->light[j], &point, s->light_big[j] | point_big, 1);
-        if (!at_point) {
-            n_dot_l = cos_n(dot_n(normal, &l), &l, nd);
-            if (n_dot_l <= 0)
-                continue;
-            w = sf_recip(sf_add(s->attenuation_c, dir_length(&l)));
-        } else {
-            n_dot_l = Q30; /* the light on the face: lit head-on (L = N), U = 0 */
-            w = sf_recip(s->attenuation_c);
-        }
-        /* BRIGHT P_j |R| (N.L)/(C + U) */
-        share = share_times((uint32_t)n_dot_l, 30, sf_mul(w, s->power_refl[j]));
-        if (s->refl_negative)
-            share = -share;
-#if STP_WITH_SPECULAR
-        if (s->specular) {
-            int32_t e_dot_l = at_point ? n_dot_e : cos_dirs(e, &l);
-            share += specular_share(s, n_dot_l, n_dot_e, e_dot_l, inv_ne, inv_ne_q26,
-                                    sf_mul(w, s->power_ks[j]));
-        }
-#endif
+        int32_t share = light_share(s, j, normal, point, point_big, nd, e, n_dot_e, inv_ne, inv_ne_q26);
         if (share > 0) {
             lit = 1;
             sum += share;

@@ -78,6 +78,76 @@ static void to_light(const stp_shadow_map *sm, const int64_t p[3], int64_t out[3
 
 /* ---- the API ---- */
 
+/* ---- setting a map (stp_renderer_set_shadow_map's steps) ---- */
+
+/* stp_renderer_set_shadow_map's arguments: STP_OK, STP_ERR_ARG (a pointer,
+ * the light or a size out of range) or STP_ERR_MEMORY (count below width
+ * height texels). */
+static int map_args(const stp_renderer *r, int light, const uint16_t *depth, size_t count, uint32_t width,
+                    uint32_t height)
+{
+    if (r == 0 || depth == 0 || light < 0 || light >= STP_MAX_LIGHTS ||
+        light >= r->user_lighting.count || width < 1 || height < 1 || width > 32767 ||
+        height > 32767)
+        return STP_ERR_ARG;
+    if ((uint64_t)width * height > count) /* in 64 bits: size_t may be 16 */
+        return STP_ERR_MEMORY;
+    return STP_OK;
+}
+
+/* The map's roll, basis[0] (right) and basis[1] (up) about its axis
+ * basis[2] (unit, forward): the view's up, or its forward when the axis
+ * runs along the view's up (as stp_renderer_set_view derives its own).
+ * Returns 0 when neither gives a direction. */
+static int map_roll(const stp_renderer *r, stp_vec3 basis[3])
+{
+    stp_vec3 right = stp_vec3_cross(basis[2], r->up), up;
+    if (stp_vec3_unity(right, &right) < (ONE >> 10)) {
+        right = stp_vec3_cross(basis[2], r->forward);
+        if (stp_vec3_unity(right, &right) == 0)
+            return 0;
+    }
+    up = stp_vec3_cross(right, basis[2]);
+    (void)stp_vec3_unity(up, &up);
+    basis[0] = right;
+    basis[1] = up;
+    return 1;
+}
+
+/* The view -> light transform (m in Q28, t in F bits) of a map with axes
+ * basis[] and the light at lpos, and the light in view coordinates. */
+static void map_transform(stp_shadow_map *sm, const stp_renderer *r, stp_vec3 lpos, const stp_vec3 basis[3])
+{
+    stp_vec3 vbasis[3];
+    int a, b;
+    vbasis[0] = r->right;
+    vbasis[1] = r->up;
+    vbasis[2] = r->forward;
+    /* p_world = from + sum_b p_b vbasis[b]: p_l[a] = basis[a].(p_world - L)
+     * = sum_b p_b (basis[a].vbasis[b]) + basis[a].(from - L) */
+    for (a = 0; a < 3; a++) {
+        int64_t dx = (int64_t)r->from.x - lpos.x, dy = (int64_t)r->from.y - lpos.y,
+                dz = (int64_t)r->from.z - lpos.z;
+        for (b = 0; b < 3; b++)
+            sm->m[a][b] = to_q28((int64_t)basis[a].x * vbasis[b].x + (int64_t)basis[a].y * vbasis[b].y +
+                                 (int64_t)basis[a].z * vbasis[b].z);
+        sm->t[a] = stp_fix_sat64(stp_asr64(dx * basis[a].x + dy * basis[a].y + dz * basis[a].z, F));
+    }
+    stp_view_transform_point(&r->to_view, lpos, &sm->light_view);
+}
+
+/* The map's focal length: texels per unit of x_l / z_l, (short / 2) /
+ * tan(fov / 2) as the view's.  Returns 0 when it is not positive. */
+static int map_focal(stp_shadow_map *sm, uint32_t width, uint32_t height, stp_fix fov)
+{
+    uint32_t short_side = width < height ? width : height;
+    stp_fix half = fov / 2, s = stp_fix_sin_deg(half), c = stp_fix_cos_deg(half);
+    if (s <= 0)
+        return 0;
+    sm->focal = stp_fix_sat64(((int64_t)short_side * c * (ONE / 2)) / s);
+    return sm->focal > 0;
+}
+
 int stp_shadow_any(const stp_renderer *r)
 {
     return r->shadow_set != 0;
@@ -89,88 +159,48 @@ int stp_renderer_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, siz
                        uint32_t height, const stp_shadow_view *view)
 {
 #if STP_WITH_SHADOWS
-    stp_shadow_map *sm, built; /* built aside: a refused call changes nothing */
-    stp_vec3 target, fwd, right, up, basis[3], vbasis[3];
-    stp_fix fov, near, half, s, c;
+    stp_shadow_map built; /* built aside: a refused call changes nothing */
+    stp_vec3 lpos, target, basis[3];
+    stp_fix fov, near;
     int64_t dist;
     size_t i, texels;
-    uint32_t short_side;
-    int a, b;
-    if (r == 0 || depth == 0 || light < 0 || light >= STP_MAX_LIGHTS ||
-        light >= r->user_lighting.count || width < 1 || height < 1 || width > 32767 ||
-        height > 32767)
-        return STP_ERR_ARG;
-    if ((uint64_t)width * height > count) /* in 64 bits: size_t may be 16 */
-        return STP_ERR_MEMORY;
+    int status = map_args(r, light, depth, count, width, height);
+    if (status != STP_OK)
+        return status;
     texels = (size_t)width * (size_t)height;
     built = r->shadow[light];
-    sm = &built;
-    {
-        stp_vec3 lpos = r->user_lighting.lights[light].position;
-        target = view ? view->target : r->at;
-        fov = view ? view->fov_degrees : 90 * ONE;
-        if (fov <= 0 || fov >= 180 * ONE)
-            return STP_ERR_VIEW;
-        dist = stp_unity_diff(target, lpos, &fwd);
-        if (dist == 0)
-            return STP_ERR_VIEW;
-        near = view ? view->near : stp_fix_sat64(dist / 16);
-        if (view && near <= 0)
-            return STP_ERR_VIEW;
-        if (near <= 0)
-            near = 1;
-        /* the map's roll: the view's up, or its forward when the axis runs
-         * along the view's up (as stp_renderer_set_view derives its own) */
-        right = stp_vec3_cross(fwd, r->up);
-        if (stp_vec3_unity(right, &right) < (ONE >> 10)) {
-            right = stp_vec3_cross(fwd, r->forward);
-            if (stp_vec3_unity(right, &right) == 0)
-                return STP_ERR_VIEW;
-        }
-        up = stp_vec3_cross(right, fwd);
-        (void)stp_vec3_unity(up, &up);
-        basis[0] = right;
-        basis[1] = up;
-        basis[2] = fwd;
-        vbasis[0] = r->right;
-        vbasis[1] = r->up;
-        vbasis[2] = r->forward;
-        /* p_world = from + sum_b p_b vbasis[b]: p_l[a] = basis[a].(p_world - L)
-         * = sum_b p_b (basis[a].vbasis[b]) + basis[a].(from - L) */
-        for (a = 0; a < 3; a++) {
-            int64_t dx = (int64_t)r->from.x - lpos.x, dy = (int64_t)r->from.y - lpos.y,
-                    dz = (int64_t)r->from.z - lpos.z;
-            for (b = 0; b < 3; b++)
-                sm->m[a][b] = to_q28((int64_t)basis[a].x * vbasis[b].x + (int64_t)basis[a].y * vbasis[b].y +
-                                     (int64_t)basis[a].z * vbasis[b].z);
-            sm->t[a] = stp_fix_sat64(stp_asr64(dx * basis[a].x + dy * basis[a].y + dz * basis[a].z, F));
-        }
-        stp_view_transform_point(&r->to_view, lpos, &sm->light_view);
-    }
-    /* texels per unit of x_l / z_l: (short / 2) / tan(fov / 2), as the view */
-    short_side = width < height ? width : height;
-    half = fov / 2;
-    s = stp_fix_sin_deg(half);
-    c = stp_fix_cos_deg(half);
-    if (s <= 0)
+    lpos = r->user_lighting.lights[light].position;
+    target = view ? view->target : r->at;
+    fov = view ? view->fov_degrees : 90 * ONE;
+    if (fov <= 0 || fov >= 180 * ONE)
         return STP_ERR_VIEW;
-    sm->focal = stp_fix_sat64(((int64_t)short_side * c * (ONE / 2)) / s);
-    if (sm->focal <= 0)
+    dist = stp_unity_diff(target, lpos, &basis[2]);
+    if (dist == 0)
         return STP_ERR_VIEW;
-    sm->near = near;
-    sm->volume.focal = sm->focal;
-    sm->volume.near = near;
-    sm->volume.width = width;
-    sm->volume.height = height;
-    sm->volume.parallel = 0;
+    near = view ? view->near : stp_fix_sat64(dist / 16);
+    if (view && near <= 0)
+        return STP_ERR_VIEW;
+    if (near <= 0)
+        near = 1;
+    if (!map_roll(r, basis))
+        return STP_ERR_VIEW;
+    map_transform(&built, r, lpos, basis);
+    if (!map_focal(&built, width, height, fov))
+        return STP_ERR_VIEW;
+    built.near = near;
+    built.volume.focal = built.focal;
+    built.volume.near = near;
+    built.volume.width = width;
+    built.volume.height = height;
+    built.volume.parallel = 0;
     for (i = 0; i < texels; i++)
         depth[i] = 0;
-    sm->depth = depth;
+    built.depth = depth;
     r->shadow_set |= (uint32_t)1 << light;
-    sm->width = width;
-    sm->height = height;
+    built.width = width;
+    built.height = height;
     r->shadow_generation = r->shadow_generation % 0x7FFFFFu + 1u;
-    sm->generation = r->shadow_generation;
+    built.generation = r->shadow_generation;
     r->shadow[light] = built;
     return STP_OK;
 #else
@@ -384,27 +414,28 @@ void stp_shadow_enter(stp_renderer *r, const stp_vec3 *vertices, int n)
 
 /* ---- at output ---- */
 
-void stp_shadow_polygon(const stp_renderer *r, uint32_t at, stp_shadow_poly *sp)
+/* The first shadow record of the polygon whose header is df[at]: just
+ * before the header, the first with x < 0; UINT32_MAX when there is none. */
+static uint32_t first_record(const stp_renderer *r, uint32_t at)
 {
-    const stp_instr *v = &r->df[at];
-    uint32_t first = at, k;
-    int64_t fixed, kmax = 0, a = 0, b = 0, c = 0, sx = 0, sy = 0, sk = 0;
-    int n = (int)v[0].op, i, found = 0; /* a vertex count */
-    sp->count = 0;
-    sp->tested = 0;
-    /* the records: just before the header, the first with x < 0 */
+    uint32_t first = at;
     while (first > 0 && at - first <= STP_MAX_LIGHTS && r->df[first - 1].op == STP_OP_LIGHT_TERM) {
         first--;
-        if (r->df[first].x < 0) {
-            found = 1;
-            break;
-        }
+        if (r->df[first].x < 0)
+            return first;
     }
-    if (!found)
-        return;
+    return UINT32_MAX;
+}
+
+/* The records df[first..at): the shade's terms, the lights whose maps are
+ * there to test (a light whose map is gone is lit, part of the ambient). */
+static void take_records(const stp_renderer *r, uint32_t first, uint32_t at, stp_shadow_poly *sp)
+{
+    int64_t fixed = r->df[first].y;
+    uint32_t k;
+    int i;
     sp->grey = r->df[first].x == STP_LIGHT_TERM_GREY;
     sp->brightness = r->df[first].z;
-    fixed = r->df[first].y;
     for (i = 0; i < STP_MAX_LIGHTS; i++)
         sp->terms[i] = 0;
     for (k = first + 1; k < at; k++) {
@@ -425,19 +456,42 @@ void stp_shadow_polygon(const stp_renderer *r, uint32_t at, stp_shadow_poly *sp)
     }
     sp->ambient = stp_fix_sat64(fixed);
     sp->full = stp_shadow_shade(sp, 0xFFFFFFFFu);
-    if (sp->count == 0)
-        return;
+}
 
-    /* the depth key's plane over the device, by Newell's sums on (x, y, key)
-     * as the Z buffer's (exact for planar polygons, a best fit otherwise) */
+/* The right shift that brings the polygon's depth keys below 2^28 (so
+ * Newell's sums over its vertices stay below 2^62). */
+static int key_shift(const stp_instr *v, int n)
+{
+    int64_t kmax = 0;
+    int i, shift = 0;
     for (i = 0; i < n; i++) {
         int64_t z = v[i].z < 0 ? -(int64_t)v[i].z : v[i].z;
         if (z > kmax)
             kmax = z;
     }
-    sp->shift = 0;
-    while ((kmax >> sp->shift) >= ((int64_t)1 << 28))
-        sp->shift++;
+    while ((kmax >> shift) >= ((int64_t)1 << 28))
+        shift++;
+    return shift;
+}
+
+/* -a 2^16 / c (c != 0, |c| < 2^46) clamped to +-2^40, as quotient and
+ * remainder: a 2^16 itself could overflow. */
+static int64_t key_gradient(int64_t a, int64_t c)
+{
+    const int64_t lim = (int64_t)1 << 40;
+    int64_t q = a / c;
+    if (q > (lim >> 16) || q < -(lim >> 16))
+        return q > 0 ? -lim : lim;
+    return -clamp64(q * 65536 + ((a % c) * 65536) / c, -lim, lim);
+}
+
+/* The depth key's plane over the device, by Newell's sums on (x, y, key)
+ * as the Z buffer's (exact for planar polygons, a best fit otherwise). */
+static void key_plane(const stp_instr *v, int n, stp_shadow_poly *sp)
+{
+    int64_t a = 0, b = 0, c = 0, sx = 0, sy = 0, sk = 0;
+    int i;
+    sp->shift = key_shift(v, n);
     for (i = 0; i < n; i++) {
         const stp_instr *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
         int64_t kp = stp_asr64(p->z, sp->shift), kq = stp_asr64(q->z, sp->shift);
@@ -448,7 +502,7 @@ void stp_shadow_polygon(const stp_renderer *r, uint32_t at, stp_shadow_poly *sp)
         sy += q->y;
         sk += kq;
     }
-    /* keep c below 2^46 so the remainder below times 2^16 fits */
+    /* keep c below 2^46 so key_gradient's remainder times 2^16 fits */
     while (c >= ((int64_t)1 << 46) || c <= -((int64_t)1 << 46)) {
         a /= 2;
         b /= 2;
@@ -457,18 +511,20 @@ void stp_shadow_polygon(const stp_renderer *r, uint32_t at, stp_shadow_poly *sp)
     sp->x0 = (int32_t)(sx / n);
     sp->y0 = (int32_t)(sy / n);
     sp->k0 = (sk / n) * 65536;
-    if (c == 0) {
-        sp->gx = sp->gy = 0;
-    } else {
-        /* -a 2^16 / c and -b 2^16 / c as quotient and remainder: a 2^16
-         * itself could overflow */
-        const int64_t lim = (int64_t)1 << 40;
-        int64_t qa = a / c, qb = b / c;
-        sp->gx = qa > (lim >> 16) || qa < -(lim >> 16) ? (qa > 0 ? -lim : lim)
-                                                       : -clamp64(qa * 65536 + ((a % c) * 65536) / c, -lim, lim);
-        sp->gy = qb > (lim >> 16) || qb < -(lim >> 16) ? (qb > 0 ? -lim : lim)
-                                                       : -clamp64(qb * 65536 + ((b % c) * 65536) / c, -lim, lim);
-    }
+    sp->gx = c == 0 ? 0 : key_gradient(a, c);
+    sp->gy = c == 0 ? 0 : key_gradient(b, c);
+}
+
+void stp_shadow_polygon(const stp_renderer *r, uint32_t at, stp_shadow_poly *sp)
+{
+    uint32_t first = first_record(r, at);
+    sp->count = 0;
+    sp->tested = 0;
+    if (first == UINT32_MAX)
+        return;
+    take_records(r, first, at, sp);
+    if (sp->count > 0)
+        key_plane(&r->df[at], (int)r->df[at].op, sp);
 }
 
 stp_fix stp_shadow_shade(const stp_shadow_poly *sp, uint32_t lit)
