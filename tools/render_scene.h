@@ -217,8 +217,9 @@ int stp_tool_outline_pixels(const stp_scene *scene, const stp_tool_options *opt,
 
 /* The defaults for a still 1-bit picture (stipple render to a PBM file),
  * where options did not say otherwise: Floyd-Steinberg diffusion, rows
- * left to right, thresholds of mid-greys modulated by the blue-noise mask
- * (-d fs:blue: no worms on flat mid-greys, docs/dither.md), 256 levels,
+ * left to right, with its band weights and thresholds modulated by the
+ * blue-noise mask for mid-greys (-d fs:blue: no worms on flat mid-greys,
+ * diffuse.h, docs/dither.md), 256 levels,
  * automatic exposure, and silhouettes where the objects would not be told
  * from their background (readable.h; not with -d, --outlines or --raytrace)
  * (moving pictures keep an ordered cell, which does not flicker). */
