@@ -34,7 +34,7 @@ typedef struct stp_tool_options {
     int diffuse_kernel;      /* STP_TOOL_DITHER_DIFFUSE: stp_diffusion_kernel */
     int diffuse_raster;      /* 1: every row left to right (0: serpentine) */
     int diffuse_noise;       /* 1: thresholds modulated by the blue-noise mask
-                                (STP_DIFFUSE_NOISE_AMPLITUDE, _BAND; diffuse.h) */
+                                (STP_DIFFUSE_NOISE_AMPLITUDE_OF, _BAND; diffuse.h) */
     int dither_given, levels_given; /* the option parser saw -d / -l */
     int clustered_n, clustered_angle; /* STP_TOOL_DITHER_CLUSTERED: side, 0 or 45 */
     /* tone (tone.h): */

@@ -84,8 +84,14 @@ typedef struct stp_diffusion {
  * picture file): Floyd-Steinberg, rows left to right, within this band of
  * mid-grey (levels 82..173) its band weights and thresholds modulated by
  * the blue-noise mask with this amplitude (+-10 levels; docs/dither.md
- * gives the measures that chose them). */
+ * gives the measures that chose them).  The other kernels have no band
+ * weights, so their modulation needs the larger amplitude (`-d NAME:blue`);
+ * STP_DIFFUSE_NOISE_AMPLITUDE_OF(kernel) picks the one for a kernel. */
 #define STP_DIFFUSE_NOISE_AMPLITUDE 20
+#define STP_DIFFUSE_NOISE_AMPLITUDE_OTHERS 96
+#define STP_DIFFUSE_NOISE_AMPLITUDE_OF(kernel)                                                   \
+    ((kernel) == STP_DIFFUSE_FLOYD_STEINBERG ? STP_DIFFUSE_NOISE_AMPLITUDE                        \
+                                             : STP_DIFFUSE_NOISE_AMPLITUDE_OTHERS)
 #define STP_DIFFUSE_NOISE_BAND 42
 
 /* Error entries (int16_t) a kernel needs for rows of width pixels: one row
