@@ -15,17 +15,27 @@ typedef struct tap {
 typedef struct kernel_def {
     uint8_t divisor, rows, count;
     tap taps[12];
+    const uint8_t *band; /* NULL, or the taps' weights (same order and
+                            divisor) for pixels in the modulation's band */
 } kernel_def;
 
+/* Floyd-Steinberg's weights in the band (diffuse.h): 5 right; 2 6 3 below,
+ * /16, found by a search over the 969 sets of four sixteenths on flat
+ * mid-grey fields: the least error among the sets that drew no worms
+ * there (docs/dither.md). */
+static const uint8_t fs_band[4] = {5, 2, 6, 3};
+
 static const kernel_def kernels[STP_DIFFUSE_KERNELS] = {
-    {16, 2, 4, {{1, 0, 7}, {-1, 1, 3}, {0, 1, 5}, {1, 1, 1}}},
-    {8, 3, 6, {{1, 0, 1}, {2, 0, 1}, {-1, 1, 1}, {0, 1, 1}, {1, 1, 1}, {0, 2, 1}}},
-    {4, 2, 3, {{1, 0, 2}, {-1, 1, 1}, {0, 1, 1}}},
+    {16, 2, 4, {{1, 0, 7}, {-1, 1, 3}, {0, 1, 5}, {1, 1, 1}}, fs_band},
+    {8, 3, 6, {{1, 0, 1}, {2, 0, 1}, {-1, 1, 1}, {0, 1, 1}, {1, 1, 1}, {0, 2, 1}}, 0},
+    {4, 2, 3, {{1, 0, 2}, {-1, 1, 1}, {0, 1, 1}}, 0},
     {48, 3, 12, {{1, 0, 7}, {2, 0, 5}, {-2, 1, 3}, {-1, 1, 5}, {0, 1, 7}, {1, 1, 5}, {2, 1, 3},
-                 {-2, 2, 1}, {-1, 2, 3}, {0, 2, 5}, {1, 2, 3}, {2, 2, 1}}},
+                 {-2, 2, 1}, {-1, 2, 3}, {0, 2, 5}, {1, 2, 3}, {2, 2, 1}},
+     0},
     {42, 3, 12, {{1, 0, 8}, {2, 0, 4}, {-2, 1, 2}, {-1, 1, 4}, {0, 1, 8}, {1, 1, 4}, {2, 1, 2},
-                 {-2, 2, 1}, {-1, 2, 2}, {0, 2, 4}, {1, 2, 2}, {2, 2, 1}}},
-    {32, 2, 7, {{1, 0, 8}, {2, 0, 4}, {-2, 1, 2}, {-1, 1, 4}, {0, 1, 8}, {1, 1, 4}, {2, 1, 2}}},
+                 {-2, 2, 1}, {-1, 2, 2}, {0, 2, 4}, {1, 2, 2}, {2, 2, 1}},
+     0},
+    {32, 2, 7, {{1, 0, 8}, {2, 0, 4}, {-2, 1, 2}, {-1, 1, 4}, {0, 1, 8}, {1, 1, 4}, {2, 1, 2}}, 0},
 };
 
 size_t stp_diffusion_error_count(int kernel, uint32_t width)
@@ -64,19 +74,24 @@ static int32_t quantised_error(int32_t v, int on, int32_t divisor, int32_t recip
     return e;
 }
 
-/* Whether a pixel of drive level p (0..255) and value v (in 1/(4 divisor)
- * levels) is ON under mask value m (diffuse.h): its threshold midpoint
- * moves by (2m - 255) scale w / 1024, scale = amplitude divisor <= 12240,
- * w = the band's weight 0..8, exactly in int32_t: |1024 v| < 2^27 (|v| <=
- * 1020 divisor + 24576), |(2m - 255) scale w| <= 255 * 12240 * 8 < 2^25. */
-static int modulated_on(int32_t v, int32_t midpoint, int32_t scale, int32_t band2, uint32_t p,
-                        uint32_t m)
+/* The band's weight w(p) (diffuse.h) of drive level p (0..255) in eighths,
+ * 0..8, band2 = 2 band (0..510). */
+static int32_t band_share(uint32_t p, int32_t band2)
 {
     int32_t distance = (int32_t)(2u * p) - 255, w;
     if (distance < 0)
         distance = -distance;
     w = band2 + 8 - distance;
-    w = w < 0 ? 0 : (w > 8 ? 8 : w);
+    return w < 0 ? 0 : (w > 8 ? 8 : w);
+}
+
+/* Whether a pixel of value v (in 1/(4 divisor) levels) is ON under mask
+ * value m (diffuse.h): its threshold midpoint moves by (2m - 255) scale w
+ * / 1024, scale = amplitude divisor <= 12240, w = the band's weight 0..8,
+ * exactly in int32_t: |1024 v| < 2^27 (|v| <= 1020 divisor + 24576),
+ * |(2m - 255) scale w| <= 255 * 12240 * 8 < 2^25. */
+static int modulated_on(int32_t v, int32_t midpoint, int32_t scale, int32_t w, uint32_t m)
+{
     return v * 1024 >= midpoint * 1024 + ((int32_t)(2u * m) - 255) * scale * w;
 }
 
@@ -102,7 +117,7 @@ void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, ui
     uint32_t span = width + 2u * MARGIN, i;
     int16_t *rows[3]; /* rows y, y + 1, y + 2 (slots modulo k->rows) */
     int16_t *target[12];
-    int32_t weight[12];
+    int32_t weight[12], band_weight[12];
     int32_t divisor = k->divisor, midpoint = (int32_t)255 * (QUARTERS / 2) * divisor;
     /* threshold modulation (diffuse.h): NULL row, or row y mod 64 of the mask */
     const uint8_t *noise_row = d->noise ? d->noise + (y & 63u) * 64u : 0;
@@ -122,10 +137,13 @@ void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, ui
     for (t = 0; t < k->count; t++) {
         target[t] = rows[k->taps[t].dy] + dir * k->taps[t].dx;
         weight[t] = k->taps[t].weight;
+        band_weight[t] = k->band ? k->band[t] : k->taps[t].weight;
     }
     /* two loops, so plain diffusion tests no mask per pixel; exact shares
      * e w: the entries hold sums of them, read over divisor above; |entry|
-     * <= 512 divisor <= 24576 */
+     * <= 512 times the weights reaching it: the divisor (<= 48: 24576), or
+     * for Floyd-Steinberg mixing its two sets at most 7 + 3 + 6 + 3 = 19
+     * sixteenths (9728) */
     for (i = 0; i < width && !noise_row; i++) {
         uint32_t x = backwards ? width - 1u - i : i;
         int32_t v = (int32_t)pixels[x] * QUARTERS * divisor + rows[0][x];
@@ -137,11 +155,13 @@ void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, ui
     for (i = 0; i < width && noise_row; i++) {
         uint32_t x = backwards ? width - 1u - i : i;
         int32_t v = (int32_t)pixels[x] * QUARTERS * divisor + rows[0][x];
-        int on = modulated_on(v, midpoint, scale, band2, pixels[x], noise_row[x & 63u]);
+        int32_t w = band_share(pixels[x], band2);
+        int on = modulated_on(v, midpoint, scale, w, noise_row[x & 63u]);
         int32_t e = quantised_error(v, on, divisor, reciprocal, shift);
+        const int32_t *share = w ? band_weight : weight;
         pixels[x] = (uint8_t)on;
         for (t = 0; t < k->count; t++)
-            target[t][x] = (int16_t)(target[t][x] + e * weight[t]);
+            target[t][x] = (int16_t)(target[t][x] + e * share[t]);
     }
     /* this row's entries become those of row y + rows */
     for (i = 0; i < span; i++)

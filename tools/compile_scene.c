@@ -335,7 +335,7 @@ static void write_source(writer *w, const stp_scene *scene, const plan *p,
             out(w, "static const stp_diffusion diffusion = {%d, %d, diffusion_errors, %lu, "
                    "stp_cell_blue_noise_64, %d, %d};\n",
                 opt->diffuse_kernel, opt->diffuse_raster ? 0 : 1, (unsigned long)n,
-                STP_DIFFUSE_NOISE_AMPLITUDE, STP_DIFFUSE_NOISE_BAND);
+                STP_DIFFUSE_NOISE_AMPLITUDE_OF(opt->diffuse_kernel), STP_DIFFUSE_NOISE_BAND);
         else
             out(w, "static const stp_diffusion diffusion = {%d, %d, diffusion_errors, %lu, 0, 0, 0};\n",
                 opt->diffuse_kernel, opt->diffuse_raster ? 0 : 1, (unsigned long)n);

@@ -18,9 +18,9 @@
  * The rule (stp_tool_auto_outlines): silhouettes are drawn when the
  * picture without them has R < 0.45, i.e. when more than half of the
  * objects' outline is lost in the dither.  On the shared scenes at 128x64
- * that is balls-s1 (R 0.38) and balls-s2 (0.24), mid-grey objects on a
- * mid-grey floor, and none of the others (0.58 and up), whose shading
- * already separates object and background; at 400x240 none (0.50 and up:
+ * that is balls-s1 (R 0.38) and balls-s2 (0.23), mid-grey objects on a
+ * mid-grey floor, and none of the others (0.56 and up), whose shading
+ * already separates object and background; at 400x240 none (0.48 and up:
  * the picture is large enough for the shading to show).
  */
 #ifndef STIPPLE_TOOLS_READABLE_H

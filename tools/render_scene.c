@@ -105,7 +105,7 @@ int stp_tool_diffusion(const stp_tool_options *opt, uint32_t width, stp_diffusio
     d->serpentine = (uint8_t)!opt->diffuse_raster;
     if (opt->diffuse_noise) {
         d->noise = stp_cell_blue_noise_64;
-        d->noise_amplitude = STP_DIFFUSE_NOISE_AMPLITUDE;
+        d->noise_amplitude = (uint8_t)STP_DIFFUSE_NOISE_AMPLITUDE_OF(opt->diffuse_kernel);
         d->noise_band = STP_DIFFUSE_NOISE_BAND;
     }
     d->error_count = stp_diffusion_error_count(opt->diffuse_kernel, width);

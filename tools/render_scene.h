@@ -34,7 +34,7 @@ typedef struct stp_tool_options {
     int diffuse_kernel;      /* STP_TOOL_DITHER_DIFFUSE: stp_diffusion_kernel */
     int diffuse_raster;      /* 1: every row left to right (0: serpentine) */
     int diffuse_noise;       /* 1: thresholds modulated by the blue-noise mask
-                                (STP_DIFFUSE_NOISE_AMPLITUDE, _BAND; diffuse.h) */
+                                (STP_DIFFUSE_NOISE_AMPLITUDE_OF, _BAND; diffuse.h) */
     int dither_given, levels_given; /* the option parser saw -d / -l */
     int clustered_n, clustered_angle; /* STP_TOOL_DITHER_CLUSTERED: side, 0 or 45 */
     /* tone (tone.h): */
@@ -217,8 +217,9 @@ int stp_tool_outline_pixels(const stp_scene *scene, const stp_tool_options *opt,
 
 /* The defaults for a still 1-bit picture (stipple render to a PBM file),
  * where options did not say otherwise: Floyd-Steinberg diffusion, rows
- * left to right, thresholds of mid-greys modulated by the blue-noise mask
- * (-d fs:blue: no worms on flat mid-greys, docs/dither.md), 256 levels,
+ * left to right, with its band weights and thresholds modulated by the
+ * blue-noise mask for mid-greys (-d fs:blue: no worms on flat mid-greys,
+ * diffuse.h, docs/dither.md), 256 levels,
  * automatic exposure, and silhouettes where the objects would not be told
  * from their background (readable.h; not with -d, --outlines or --raytrace)
  * (moving pictures keep an ordered cell, which does not flicker). */

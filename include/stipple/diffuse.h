@@ -18,9 +18,19 @@
  * levels within band of mid-grey, 0 from band + 4 levels on (band >= 124:
  * every level).  The error is still v - output, so the mean grey is kept;
  * a blue-noise mask breaks up the regular "worms" plain diffusion draws
- * on flat greys (docs/dithering.md).  The comparison is exact in int32_t:
+ * on flat greys (docs/dither.md).  The comparison is exact in int32_t:
  * 1024 v >= 1024 midpoint + (2 mask - 255) amplitude divisor 8 w(p), both
  * sides below 2^27 in magnitude.
+ *
+ * With a mask, Floyd-Steinberg also changes its weights for the pixels
+ * where w(p) > 0 (levels within band + 4 of 127.5, exclusive): 5 right;
+ * 2 below-left, 6 below, 3 below-right; /16.  Near mid-grey, where 7 3 5
+ * 1 draws a checkerboard broken by diagonal lines (worms), those weights
+ * draw almost none by themselves, so a weak modulation
+ * (STP_DIFFUSE_NOISE_AMPLITUDE) is enough to break what is left, and the
+ * error stays near plain diffusion's (docs/dither.md).  The shares are
+ * still exact (e weight in the entries, over 16).  The other kernels keep
+ * their weights.
  */
 #ifndef STIPPLE_DIFFUSE_H
 #define STIPPLE_DIFFUSE_H
@@ -66,14 +76,22 @@ typedef struct stp_diffusion {
     uint8_t noise_amplitude; /* 0..255: the threshold moves by up to (mask -
                                 127.5) amplitude / 256 levels (0: not at all) */
     uint8_t noise_band;      /* 0..255: for drive levels within band of 127.5
-                                (tapering over 4 more levels; >= 124: all) */
+                                (tapering over 4 more levels; >= 124: all);
+                                Floyd-Steinberg's band weights there too */
 } stp_diffusion;
 
 /* The still picture's diffusion (what `stipple render` uses for a 1-bit
- * picture file): Floyd-Steinberg, rows left to right, thresholds
- * modulated by the blue-noise mask with this amplitude within this band
- * of mid-grey (docs/dithering.md gives the measures that chose them). */
-#define STP_DIFFUSE_NOISE_AMPLITUDE 96
+ * picture file): Floyd-Steinberg, rows left to right, within this band of
+ * mid-grey (levels 82..173) its band weights and thresholds modulated by
+ * the blue-noise mask with this amplitude (+-10 levels; docs/dither.md
+ * gives the measures that chose them).  The other kernels have no band
+ * weights, so their modulation needs the larger amplitude (`-d NAME:blue`);
+ * STP_DIFFUSE_NOISE_AMPLITUDE_OF(kernel) picks the one for a kernel. */
+#define STP_DIFFUSE_NOISE_AMPLITUDE 20
+#define STP_DIFFUSE_NOISE_AMPLITUDE_OTHERS 96
+#define STP_DIFFUSE_NOISE_AMPLITUDE_OF(kernel)                                                   \
+    ((kernel) == STP_DIFFUSE_FLOYD_STEINBERG ? STP_DIFFUSE_NOISE_AMPLITUDE                        \
+                                             : STP_DIFFUSE_NOISE_AMPLITUDE_OTHERS)
 #define STP_DIFFUSE_NOISE_BAND 42
 
 /* Error entries (int16_t) a kernel needs for rows of width pixels: one row

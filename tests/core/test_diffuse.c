@@ -244,6 +244,65 @@ static void test_modulation_by_hand(void **state)
     }
 }
 
+/* Floyd-Steinberg's weights in the band (diffuse.h), with a mask of
+ * amplitude 0 (no threshold moves) and band 42 (weights 5 2 6 3 for
+ * levels 82..173, |2p - 255| <= 91): [90, 90, 0, 0, 0, 0] keeps pixel 1
+ * OFF (90 + 90 * 5/16 = 118.1; with 7/16 it was 129.4, ON), while
+ * [81, 81, 0...] (|2p - 255| = 93, outside) hands on 7/16 as before:
+ * 81 + 35.4 = 116.4 OFF, and [100, 100, 0...] (in the band) 100 + 31.25 =
+ * 131.25 ON.  Below: a lone 126 (in the band; error 504 quarter levels)
+ * puts exactly 504 * 2, 504 * 6 and 504 * 3 below-left, below and
+ * below-right, a lone 81 (outside) 324 * 3, 5, 1, and the band's last
+ * levels 82 and 173 and the first outside, 174, likewise; the other
+ * kernels keep their weights in the band. */
+static void test_band_weights_by_hand(void **state)
+{
+    static const uint8_t zero_mask[64 * 64];
+    static const struct {
+        uint8_t level, on;
+    } right[] = {{90, 0}, {81, 0}, {100, 1}, {120, 1}};
+    static const struct {
+        uint8_t level;
+        int16_t weights[3];
+    } lone[] = {{126, {2, 6, 3}}, {81, {3, 5, 1}}, {82, {2, 6, 3}}, {173, {2, 6, 3}}, {174, {3, 5, 1}}};
+    size_t i;
+    int k;
+    (void)state;
+    for (i = 0; i < sizeof right / sizeof right[0]; i++) {
+        stp_diffusion d = make(STP_DIFFUSE_FLOYD_STEINBERG, 0, 6);
+        uint8_t row[6] = {0, 0, 0, 0, 0, 0};
+        d.noise = zero_mask;
+        d.noise_band = 42;
+        row[0] = row[1] = right[i].level;
+        stp_diffuse_row(&d, row, 6, 0);
+        if (row[0] != (right[i].on ? 0x40 : 0x00))
+            fail_msg("level %d: row 0x%02x", right[i].level, row[0]);
+    }
+    for (i = 0; i < sizeof lone / sizeof lone[0]; i++) {
+        stp_diffusion d = make(STP_DIFFUSE_FLOYD_STEINBERG, 0, 5);
+        uint8_t row[5] = {0, 0, 0, 0, 0};
+        int32_t e = (int32_t)lone[i].level * 4 - (lone[i].level > 127 ? 1020 : 0);
+        d.noise = zero_mask;
+        d.noise_band = 42;
+        row[4] = lone[i].level;
+        stp_diffuse_row(&d, row, 5, 0);
+        /* row 1's entry of column x is errors[9 + 2 + x] (rows of 5 + 4
+         * entries; column 5 is the margin that takes the share past the edge) */
+        assert_int_equal(errors[9 + 2 + 3], (int16_t)(e * lone[i].weights[0]));
+        assert_int_equal(errors[9 + 2 + 4], (int16_t)(e * lone[i].weights[1]));
+        assert_int_equal(errors[9 + 2 + 5], (int16_t)(e * lone[i].weights[2]));
+    }
+    /* the other kernels: the same pictures as without a mask */
+    for (k = 1; k < STP_DIFFUSE_KERNELS; k++) {
+        stp_diffusion d = make(k, 0, 5);
+        uint8_t row[5] = {0, 0, 0, 0, 126};
+        d.noise = zero_mask;
+        d.noise_band = 42;
+        stp_diffuse_row(&d, row, 5, 0);
+        check_below(k, 0, 4, 1, 5);
+    }
+}
+
 /* A test picture: smooth ramps and a disc, values 0..255. */
 static void test_picture(uint8_t *grey, int w, int h)
 {
@@ -296,16 +355,17 @@ static void test_against_double_reference(void **state)
     for (k = 0; k < STP_DIFFUSE_KERNELS; k++)
         for (serp = 0; serp < 4; serp++) {
             /* serp 2, 3: rows left to right, then serpentine, with the
-             * still default's modulation (blue noise, 96, band 42) */
+             * still default's modulation (blue noise, band 42; amplitude
+             * 20 and band weights for Floyd-Steinberg, 96 for the others) */
             stp_diffusion d = make(k, serp & 1, W);
             long same = 0, on = 0, ref_on = 0;
             if (serp >= 2) {
                 d.noise = stp_cell_blue_noise_64;
-                d.noise_amplitude = STP_DIFFUSE_NOISE_AMPLITUDE;
+                d.noise_amplitude = STP_DIFFUSE_NOISE_AMPLITUDE_OF(k);
                 d.noise_band = STP_DIFFUSE_NOISE_BAND;
             }
             ref_diffuse_noise(ref_in, W, H, (ref_kernel)k, serp & 1, serp >= 2 ? stp_cell_blue_noise_64 : 0,
-                              STP_DIFFUSE_NOISE_AMPLITUDE, STP_DIFFUSE_NOISE_BAND, ref_bits);
+                              STP_DIFFUSE_NOISE_AMPLITUDE_OF(k), STP_DIFFUSE_NOISE_BAND, ref_bits);
             for (y = 0; y < H; y++) {
                 memcpy(row, grey + y * W, W);
                 stp_diffuse_row(&d, row, W, (uint32_t)y);
@@ -340,6 +400,7 @@ int main(void)
         cmocka_unit_test(test_serpentine_by_hand),
         cmocka_unit_test(test_row0_clears_and_padding),
         cmocka_unit_test(test_modulation_by_hand),
+        cmocka_unit_test(test_band_weights_by_hand),
         cmocka_unit_test(test_against_double_reference),
     };
     return cmocka_run_group_tests(tests, 0, 0);

@@ -9,9 +9,9 @@
  *
  * Tests: the measure on hand-made pictures (a step, the same grey both
  * sides, a line, a small step, an edge along the frame); balls-s1 and
- * balls-s2 at 128x64: R < 0.45 without outlines (0.38, 0.24: the default
+ * balls-s2 at 128x64: R < 0.45 without outlines (0.38, 0.23: the default
  * before), R >= 0.5 with the default options (the rule draws silhouettes:
- * 0.74, 0.60); the six other scenes at 128x64: the default is the picture
+ * 0.74, 0.59); the six other scenes at 128x64: the default is the picture
  * without outlines (the rule leaves them alone) and has R >= 0.5.  400x240
  * is printed.
  */

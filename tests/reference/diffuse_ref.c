@@ -17,6 +17,10 @@ typedef struct kernel_def {
     tap taps[12];
 } kernel_def;
 
+/* Floyd-Steinberg's weights, over 16, for pixels whose band weight (below)
+ * is above 0 when a mask is given: 5 right; 2 6 3 below. */
+static const tap fs_band[4] = {{1, 0, 5}, {-1, 1, 2}, {0, 1, 6}, {1, 1, 3}};
+
 static const kernel_def kernels[REF_KERNEL_COUNT] = {
     {16, 4, {{1, 0, 7}, {-1, 1, 3}, {0, 1, 5}, {1, 1, 1}}},
     {8, 6, {{1, 0, 1}, {2, 0, 1}, {-1, 1, 1}, {0, 1, 1}, {1, 1, 1}, {0, 2, 1}}},
@@ -54,19 +58,21 @@ void ref_diffuse_noise(const double *grey, int w, int h, ref_kernel kernel, int 
     for (y = 0; y < h; y++) {
         int backwards = serpentine && (y & 1), dir = backwards ? -1 : 1;
         for (i = 0; i < w; i++) {
-            double e;
+            double e, share = 0, threshold = 0.5;
+            const tap *taps;
             int t;
             x = backwards ? w - 1 - i : i;
-            double threshold = 0.5;
-            if (mask)
-                threshold += (mask[(y % 64) * 64 + x % 64] - 127.5) * amplitude / (256.0 * 255.0) *
-                             band_weight(floor(grey[y * w + x] * 255.0 + 0.5), band);
+            if (mask) {
+                share = band_weight(floor(grey[y * w + x] * 255.0 + 0.5), band);
+                threshold += (mask[(y % 64) * 64 + x % 64] - 127.5) * amplitude / (256.0 * 255.0) * share;
+            }
+            taps = share > 0 && kernel == REF_FLOYD_STEINBERG ? fs_band : k->taps;
             bits[y * w + x] = (unsigned char)(v[y * w + x] >= threshold);
             e = v[y * w + x] - bits[y * w + x];
             for (t = 0; t < k->count; t++) {
-                int tx = x + dir * k->taps[t].dx, ty = y + k->taps[t].dy;
+                int tx = x + dir * taps[t].dx, ty = y + taps[t].dy;
                 if (tx >= 0 && tx < w && ty < h)
-                    v[ty * w + tx] += e * k->taps[t].weight / k->divisor;
+                    v[ty * w + tx] += e * taps[t].weight / k->divisor;
             }
         }
     }

@@ -30,7 +30,9 @@ void ref_diffuse(const double *grey, int w, int h, ref_kernel kernel, int serpen
  * (mask[(y mod 64) 64 + x mod 64] - 127.5) amplitude / 256 levels (of 255)
  * times clamp((2 band + 8 - |2p - 255|) / 8, 0, 1), p the pixel's grey in
  * levels rounded to an integer, mask a 64x64 threshold mask (NULL: not
- * moved): stp_diffusion's noise, noise_amplitude, noise_band. */
+ * moved): stp_diffusion's noise, noise_amplitude, noise_band; with a mask,
+ * Floyd-Steinberg's pixels whose factor is above 0 spread their error
+ * 5 right, 2 6 3 below (/16). */
 void ref_diffuse_noise(const double *grey, int w, int h, ref_kernel kernel, int serpentine,
                        const unsigned char *mask, double amplitude, int band, unsigned char *bits);
 
