@@ -186,20 +186,29 @@ static uint16_t face_intensity(const stp_direct_shading *s, const int16_t *norma
     return (uint16_t)(256u + (((index * 255u + (uint32_t)(levels - 1) / 2u) * drive_m) >> 24));
 }
 
+/* Every corner of the mesh's triangles indexes one of its vertices;
+ * apart from check_args, whose other checks are of single values. */
+static int corners_in_mesh(const stp_mesh *mesh)
+{
+    const uint16_t *c = mesh->triangles;
+    uint16_t t, n = mesh->vertex_count;
+    for (t = mesh->triangle_count; t != 0; t--, c += 3)
+        if (c[0] >= n || c[1] >= n || c[2] >= n)
+            return 0;
+    return 1;
+}
+
 static int check_args(const stp_direct_frame *f, const stp_mesh *mesh, const stp_direct_model *model,
                       const stp_direct_view *view, const stp_direct_light *light, int levels,
                       const uint8_t *cell, const stp_direct_point *points, size_t point_count,
                       const uint16_t *faces, size_t face_count)
 {
-    uint32_t i;
     if (f == 0 || mesh == 0 || model == 0 || view == 0 || light == 0 || cell == 0 || points == 0 ||
         faces == 0 || mesh->vertices == 0 || mesh->triangles == 0 || mesh->normals == 0 ||
         point_count < mesh->vertex_count || face_count < mesh->triangle_count || levels < 2 ||
-        levels > 255 || model->scale <= 0 || model->scale >= 2 * ONE || !light_ok(light))
+        levels > 255 || model->scale <= 0 || model->scale >= 2 * ONE || !light_ok(light) ||
+        !corners_in_mesh(mesh))
         return STP_ERR_ARG;
-    for (i = 0; i < 3 * (uint32_t)mesh->triangle_count; i++)
-        if (mesh->triangles[i] >= mesh->vertex_count)
-            return STP_ERR_ARG;
     return STP_OK;
 }
 

@@ -93,6 +93,23 @@ static uint8_t pattern_of(const uint8_t *cell, uint32_t y, uint32_t intensity)
     return (uint8_t)(p | p >> 4);
 }
 
+/* Row y's pixels whose centres lie in [x0, x1) (Q4), within the panel,
+ * set to the face's pattern in the band; page_shift as for draw_face.
+ * Apart from draw_face so that one finds the crossings and this one
+ * fills them. */
+static inline void fill_row(const stp_direct_frame *f, uint8_t *band, size_t stride, int page_shift,
+                            int32_t y_top, int32_t y, int32_t x0, int32_t x1, uint32_t intensity)
+{
+    /* pixel p with x0 <= 16 p + 8 < x1 */
+    int32_t a = floor16(x0 - HALF + 15), b = floor16(x1 - HALF + 15) - 1;
+    a = a < 0 ? 0 : a;
+    b = b > (int32_t)f->width - 1 ? (int32_t)f->width - 1 : b;
+    if (a <= b)
+        stp_halftone_fill_bits(band + (size_t)((uint32_t)(y - y_top) >> page_shift) * stride,
+                               (uint8_t)(page_shift ? 1u << (y & 7) : 0u), (uint32_t)a, (uint32_t)b,
+                               pattern_of(f->cell, (uint32_t)y, intensity));
+}
+
 /* One face's rows within [y_top, y_bottom) (pixel rows of the band);
  * page_shift 0: band row r is band + r stride (STP_BAND_ROWS); 3: its page
  * starts at band + (r / 8) stride, its bit 1 << (r mod 8) (STP_BAND_PAGES,
@@ -114,7 +131,7 @@ static void draw_face(const stp_direct_frame *f, const stp_direct_point *p[3], u
     y_first = floor16(ymin) < y_top ? y_top : floor16(ymin);
     y_last = floor16(ymax) >= y_bottom ? y_bottom - 1 : floor16(ymax);
     for (y = y_first; y <= y_last; y++) {
-        int32_t yc = y * 16 + HALF, x[2], a, b;
+        int32_t yc = y * 16 + HALF, x[2], a;
         int c = 0;
         for (i = 0; i < n && c < 2; i++)
             if (e[i].ya <= yc && yc < e[i].yb)
@@ -126,15 +143,7 @@ static void draw_face(const stp_direct_frame *f, const stp_direct_point *p[3], u
             x[0] = x[1];
             x[1] = a;
         }
-        /* pixel p with x0 <= 16 p + 8 < x1 */
-        a = floor16(x[0] - HALF + 15);
-        b = floor16(x[1] - HALF + 15) - 1;
-        a = a < 0 ? 0 : a;
-        b = b > (int32_t)f->width - 1 ? (int32_t)f->width - 1 : b;
-        if (a <= b)
-            stp_halftone_fill_bits(band + (size_t)((uint32_t)(y - y_top) >> page_shift) * stride,
-                                   (uint8_t)(page_shift ? 1u << (y & 7) : 0u), (uint32_t)a, (uint32_t)b,
-                                   pattern_of(f->cell, (uint32_t)y, intensity));
+        fill_row(f, band, stride, page_shift, y_top, y, x[0], x[1], intensity);
     }
 }
 

@@ -1172,6 +1172,48 @@ static void enter_transmission(const stp_renderer *r, stp_entry *e)
 #endif
 }
 
+/* Step 5, the attributes: the transparency and shade instructions that
+ * changed since the last polygon, appended (capacity checked by
+ * enter_store).  Apart from the clipping and the vertices: one job. */
+static inline void store_attributes(stp_renderer *r, const stp_entry *e)
+{
+    if (e->transmission != r->current_transmission) {
+        append(r, STP_OP_TRANSPARENCY, e->transmission, 0, 0, -1);
+        r->current_transmission = e->transmission;
+    }
+    if (e->style != r->current_style || e->colour != r->current_colour) {
+        append(r, STP_OP_SHADE, e->style, r->last_shade, e->colour, -1);
+        r->current_style = e->style;
+        r->current_colour = e->colour;
+    }
+}
+
+#if STP_WITH_SHADOWS
+/* Step 5, the shadow records: what the raster needs to re-light a pixel
+ * hidden from a light (render.h, STP_OP_LIGHT_TERM), into record; their
+ * count, 0 when the polygon needs none.  Apart from enter_store: one job. */
+static inline int shadow_records_of(const stp_renderer *r, const stp_entry *e,
+                                    stp_instr record[STP_MAX_LIGHTS + 1])
+{
+    if (r->shading && e->shading != STP_ENTER_SMOOTH_SHADES && shadows_on(r))
+        return stp_shadow_records(r, stp_unit_to_fix(e->normal), e->centre, stp_unit_to_fix(e->eye_dir),
+                                  e->colour != 0, record);
+    return 0;
+}
+
+/* The records appended (capacity checked by enter_store), each after the
+ * first indexed by its light in r->shadow_record. */
+static inline void store_records(stp_renderer *r, const stp_instr *record, int records)
+{
+    int i;
+    for (i = 0; i < records; i++) {
+        if (i > 0)
+            r->shadow_record[record[i].x & 0xFF] = r->used;
+        append(r, STP_OP_LIGHT_TERM, record[i].x, record[i].y, record[i].z, -1);
+    }
+}
+#endif
+
 /* Step 5: clip (only a polygon that crosses a plane), project and store:
  * the attribute instructions that changed, the shadow records, the
  * vertices. */
@@ -1202,31 +1244,14 @@ static int enter_store(stp_renderer *r, stp_entry *e)
     if (e->transmission != r->current_transmission)
         attribute++;
 #if STP_WITH_SHADOWS
-    /* shadow records: what the raster needs to re-light a pixel hidden
-     * from a light (render.h, STP_OP_LIGHT_TERM) */
-    records = 0;
-    if (r->shading && e->shading != STP_ENTER_SMOOTH_SHADES && shadows_on(r))
-        records = stp_shadow_records(r, stp_unit_to_fix(e->normal), e->centre,
-                                     stp_unit_to_fix(e->eye_dir), e->colour != 0, record);
+    records = shadow_records_of(r, e, record);
     attribute += (uint32_t)records;
 #endif
     if (r->capacity - r->used < (uint32_t)m + attribute)
         return STP_ERR_FULL;
-    if (e->transmission != r->current_transmission) {
-        append(r, STP_OP_TRANSPARENCY, e->transmission, 0, 0, -1);
-        r->current_transmission = e->transmission;
-    }
-    if (e->style != r->current_style || e->colour != r->current_colour) {
-        append(r, STP_OP_SHADE, e->style, r->last_shade, e->colour, -1);
-        r->current_style = e->style;
-        r->current_colour = e->colour;
-    }
+    store_attributes(r, e);
 #if STP_WITH_SHADOWS
-    for (i = 0; i < records; i++) {
-        if (i > 0)
-            r->shadow_record[record[i].x & 0xFF] = r->used;
-        append(r, STP_OP_LIGHT_TERM, record[i].x, record[i].y, record[i].z, -1);
-    }
+    store_records(r, record, records);
 #endif
     /* the vertices straight into the display file (capacity checked) */
     out = &r->df[r->used];

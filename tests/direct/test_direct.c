@@ -655,6 +655,7 @@ static void test_bad_arguments(void **state)
     stp_direct_frame fr;
     stp_direct_model far;
     uint8_t band[STRIDE];
+    int i;
     (void)state;
     assert_non_null(w);
     make_tetra(&w->m);
@@ -671,10 +672,16 @@ static void test_bad_arguments(void **state)
     assert_int_equal(stp_direct_frame_project(&fr, &w->m.mesh, &s.pose, &s.dview, &s.light, LEVELS, s.cell, w->pts,
                                               MAX_V, w->faces, 3),
                      STP_ERR_ARG);
-    w->m.t[5] = 4; /* an index beyond the vertices */
-    assert_int_equal(stp_direct_frame_project(&fr, &w->m.mesh, &s.pose, &s.dview, &s.light, LEVELS, s.cell, w->pts,
-                                              MAX_V, w->faces, MAX_T),
-                     STP_ERR_ARG);
+    /* an index beyond the vertices, at each corner of a triangle and in
+     * the first and the last triangle */
+    for (i = 0; i < 4; i++) {
+        static const int at[4] = {0, 4, 5, 11};
+        make_tetra(&w->m);
+        w->m.t[at[i]] = 4;
+        assert_int_equal(stp_direct_frame_project(&fr, &w->m.mesh, &s.pose, &s.dview, &s.light, LEVELS, s.cell,
+                                                  w->pts, MAX_V, w->faces, MAX_T),
+                         STP_ERR_ARG);
+    }
     make_tetra(&w->m);
     far = s.pose;
     far.scale = 2 * STP_FIX_ONE;
