@@ -1165,23 +1165,6 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
     return nn > 0x10020000u ? 0x20000 : (nn < 0x0FFE0000u ? -0x20000 : (int32_t)(nn - 0x10000000u));
 }
 
-/* Whether the face at point with normal faces the eye; *e the direction
- * towards it (e_local made here, or the parallel view's), *dot_e N.E
- * where the highlight or a big or parallel eye needs it (else 0). */
-STP_HOT_INLINE int faces_eye(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int point_big,
-                             stp_shade_fast_dir *e_local, const stp_shade_fast_dir **e, int32_t *dot_e)
-{
-    if (!s->parallel && !s->specular && !(s->eye_big | point_big))
-        return faces_point(normal, &s->eye, &point); /* diffuse only: E matters only through N.E's sign */
-    if (!s->parallel) {
-        if (!dir_make(e_local, &s->eye, &point, s->eye_big | point_big, s->specular))
-            return 0; /* the eye on the face */
-        *e = e_local;
-    }
-    *dot_e = dot_n(normal, *e);
-    return *dot_e > 0; /* not a back face, nor edge-on */
-}
-
 /* Light j's share of the shade in Q26 (stp_shade_fast_face): BRIGHT P_j
  * |R| (N.L)/(C + U), signed as R, plus the highlight; 0 when the light is
  * behind the face.  nd: normal_deviation; e the eye's direction, n_dot_e
@@ -1239,8 +1222,25 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     if (s->wide_ready)
         return face_wide(s, normal, point);
 #endif
-    if (s->count == 0 || !faces_eye(s, normal, point, point_big, &e_local, &e, &dot_e))
+    if (s->count == 0)
         return s->ambient_shade;
+    /* does the face face the eye?  e: the direction towards it (e_local
+     * made here, or the parallel view's); dot_e = N.E where the highlight
+     * or a big or parallel eye needs it (kept in this function: as a
+     * helper writing through pointers it cost an AVR image 510 B) */
+    if (!s->parallel && !s->specular && !(s->eye_big | point_big)) {
+        if (!faces_point(normal, &s->eye, &point)) /* diffuse only: E matters only through N.E's sign */
+            return s->ambient_shade;
+    } else {
+        if (!s->parallel) {
+            if (!dir_make(&e_local, &s->eye, &point, s->eye_big | point_big, s->specular))
+                return s->ambient_shade; /* the eye on the face */
+            e = &e_local;
+        }
+        dot_e = dot_n(normal, e);
+        if (dot_e <= 0)
+            return s->ambient_shade; /* a back face, or edge-on */
+    }
     nd = normal_deviation(normal);
 #if STP_WITH_SPECULAR
     if (s->specular) {
