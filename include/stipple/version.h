@@ -8,7 +8,7 @@
 #define STIPPLE_VERSION_H
 
 #define STP_VERSION_MAJOR 0
-#define STP_VERSION_MINOR 2
+#define STP_VERSION_MINOR 3
 #define STP_VERSION_PATCH 0
 
 /* The version as one integer, major * 10000 + minor * 100 + patch, for
