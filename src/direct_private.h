@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Private: the 32-bit integer helpers the direct-drawing files
- * (direct_view.c, direct.c, direct_band.c) share. */
+/* Private: what direct.c gives direct_band.c (the frame's shading), with
+ * the integer helpers of direct_view_private.h. */
 #ifndef STIPPLE_DIRECT_PRIVATE_H
 #define STIPPLE_DIRECT_PRIVATE_H
 
@@ -8,24 +8,7 @@
 
 #include "stipple/direct.h"
 #include "shade_fast_private.h"
-#include "fix_private.h" /* stp_bit_length32 */
-
-/* floor(v / 2^s) for any int32 v, 0 <= s <= 31 (C leaves >> of a negative
- * value to the implementation: the complement form is exact everywhere,
- * and compilers fold it to one arithmetic shift). */
-static inline int32_t stp_direct_asr(int32_t v, int s)
-{
-    return v >= 0 ? v >> s : (int32_t)~(~(uint32_t)v >> s);
-}
-
-static inline uint32_t stp_direct_abs(int32_t v)
-{
-    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
-}
-
-/* floor(n / d) for d >= 1: shift-and-subtract over the quotient's bits
- * (no library call, no table: setup code only, never per pixel). */
-uint32_t stp_direct_udiv(uint32_t n, uint32_t d);
+#include "direct_view_private.h" /* stp_direct_asr, stp_direct_abs, stp_direct_udiv */
 
 /* A frame's shading: shade_fast.c's constants and C = V R, the model's
  * rotation into view coordinates (Q1.14), for the normals. */

@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* Direct drawing's camera, model transform and sine (include/stipple/direct.h),
- * and the integer helpers the direct files share (direct_private.h). */
+ * and the integer helpers the direct files share (direct_view_private.h). */
 #include "stipple/direct.h"
 
-#include "direct_private.h"
+#include "direct_view_private.h"
 #include "fix_private.h" /* STP_TABLE */
 
 #define Q14 14

@@ -1,0 +1,27 @@
+/* SPDX-License-Identifier: MIT */
+/* Private: the 32-bit integer helpers of the direct-drawing files, which
+ * direct_view.c defines (stp_direct_udiv) and direct.c and direct_band.c
+ * use; a header of its own, so direct_view.c needs nothing of direct.c's. */
+#ifndef STIPPLE_DIRECT_VIEW_PRIVATE_H
+#define STIPPLE_DIRECT_VIEW_PRIVATE_H
+
+#include <stdint.h>
+
+/* floor(v / 2^s) for any int32 v, 0 <= s <= 31 (C leaves >> of a negative
+ * value to the implementation: the complement form is exact everywhere,
+ * and compilers fold it to one arithmetic shift). */
+static inline int32_t stp_direct_asr(int32_t v, int s)
+{
+    return v >= 0 ? v >> s : (int32_t)~(~(uint32_t)v >> s);
+}
+
+static inline uint32_t stp_direct_abs(int32_t v)
+{
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+}
+
+/* floor(n / d) for d >= 1: shift-and-subtract over the quotient's bits
+ * (no library call, no table: setup code only, never per pixel). */
+uint32_t stp_direct_udiv(uint32_t n, uint32_t d);
+
+#endif
