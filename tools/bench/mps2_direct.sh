@@ -8,7 +8,9 @@
 #
 # usage: mps2_direct.sh SOURCE_DIR WORK_DIR DIRECT_SPIN_HOST
 # Environment: STP_FW_CPU (cortex-m0plus), STP_MPS2_OPT (-O2),
-# STP_FW_BAND_ROWS (8), STP_QEMU_TIMEOUT (120), STP_BUILD_TIMEOUT (600).
+# STP_FW_BAND_ROWS (8), STP_FW_CYCLES (1: also the Cortex-M0+ cycle
+# estimate from an instruction trace, tools/bench/m0_cycles.sh),
+# STP_QEMU_TIMEOUT (120), STP_BUILD_TIMEOUT (600).
 # Exit status: 0 pass, 1 fail, 77 tools missing (skipped).
 set -eu
 if [ $# -ne 3 ]; then
@@ -44,6 +46,11 @@ timeout -k 5 "${STP_QEMU_TIMEOUT:-120}" qemu-system-arm -M mps2-an385 -kernel "$
 grep -v "^stipple: row\|^[0-9a-f]*\$" "$log" || true
 grep -q "^stipple: instructions per direct frame [0-9]" "$log" ||
     { echo "FAIL: no instruction count reported" >&2; exit 1; }
+if [ "${STP_FW_CYCLES:-0}" = 1 ]; then
+    echo "== the cycle estimate from an instruction trace"
+    sh "$src/tools/bench/m0_cycles.sh" "$fw/stipple_mps2_direct.elf" \
+        "$(sed -n 's/^stipple: instructions per direct frame \([0-9]*\).*/\1/p' "$log")"
+fi
 frame=$(sed -n 's/^stipple: frame \([0-9]*\)$/\1/p' "$log")
 {
     printf 'P4\n128 64\n'

@@ -12,7 +12,8 @@
 # whole frame), STP_FW_KEEP_SETUP (1/0: lend the per-polygon setup array;
 # default: with several bands), STP_FW_MESH (1: the torus entered as one
 # mesh by stp_renderer_mesh, checked against torus_frame_host --mesh),
-# STP_QEMU_TIMEOUT (seconds, 120), STP_BUILD_TIMEOUT (600).
+# STP_FW_CYCLES (1: also the Cortex-M0+ cycle estimate from an instruction
+# trace, tools/bench/m0_cycles.sh, ~30 s more), STP_QEMU_TIMEOUT (seconds, 120), STP_BUILD_TIMEOUT (600).
 # Exit status: 0 pass, 1 fail, 77 tools missing (skipped).
 set -eu
 if [ $# -ne 3 ]; then
@@ -56,6 +57,11 @@ grep -q "^stipple: instructions per torus frame [0-9]" "$log" ||
 awk '/^stipple: instructions per torus frame [0-9]/ {
     printf "stipple: %d instructions per torus frame: %.1f frames/s at 48 MHz (1 instruction/cycle)\n", $6, 48e6 / $6 }' "$log"
 
+if [ "${STP_FW_CYCLES:-0}" = 1 ]; then
+    echo "== the cycle estimate from an instruction trace"
+    sh "$src/tools/bench/m0_cycles.sh" "$fw/stipple_mps2_torus.elf" \
+        "$(sed -n 's/^stipple: instructions per torus frame \([0-9]*\).*/\1/p' "$log")"
+fi
 # the frame: the hex line after each "stipple: row Y", as a binary PBM
 {
     printf 'P4\n128 64\n'
