@@ -384,11 +384,10 @@ void stp_shadow_enter(stp_renderer *r, const stp_vec3 *vertices, int n)
         for (i = 0; i < n; i++) {
             stp_vec3 pv;
             int64_t p[3], l[3];
-            /* the entered vertex through the model transform and the view,
-             * as the display file takes it */
-            stp_view_transform_point(
-                &r->to_view, r->model_on ? stp_transform_point(&r->model, vertices[i]) : vertices[i],
-                &pv);
+            /* the entered vertex through the geometry stage, the one the
+             * display file's vertices come from (a composed model and view
+             * transform included), so map and picture agree */
+            (void)stp_render_point_to_view(r, vertices[i], &pv);
             p[0] = pv.x;
             p[1] = pv.y;
             p[2] = pv.z;
