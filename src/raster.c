@@ -1116,33 +1116,161 @@ STP_HOT_INLINE void tri_depth_step(tri_depth *td, const depth_plane *pl)
         td->d_row += pl->ddy * (1 << SUB);
 }
 
+/* The band row a triangle's direct spans go to (span_z_direct): its Z
+ * entries, its pixels and its cell row (0..cell_height - 1), set at the
+ * triangle's first span (tri_row_at) and stepped a row down with the
+ * triangle (tri_row_next) rather than formed again for every span. */
+typedef struct tri_row {
+    uint16_t *z;
+    uint8_t *band;
+    uint32_t cell_row, cell_height;
+} tri_row;
+
+STP_HOT_INLINE void tri_row_at(const frame *fr, tri_row *tr, uint32_t row)
+{
+    tr->z = z_row(fr, row);
+    tr->band = band_row(fr, row);
+    tr->cell_height = fr->cell->height; /* >= 1: direct spans need mono_fill */
+    tr->cell_row = fr->cell_mask ? (row & fr->cell_mask) : row % tr->cell_height;
+}
+
+STP_HOT_INLINE void tri_row_next(const frame *fr, tri_row *tr)
+{
+    tr->z += fr->r->width;
+    tr->band += fr->stride;
+    if (++tr->cell_row == tr->cell_height)
+        tr->cell_row = 0;
+}
+
 /* The depth-tested span p1..p2 of a triangle's row: straight to the band
- * (span_z_direct) when direct and its depths are 1..65535 at both ends,
- * else through put_span_z. */
+ * (span_z_direct, at tr: tr NULL when not direct) when its depths are
+ * 1..65535 at both ends, else through put_span_z. */
 STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint32_t p2, paint style, stp_fix t,
-                               int direct, const tri_depth *td, const depth_plane *pl)
+                               const tri_row *tr, const tri_depth *td, const depth_plane *pl)
 {
     if (td->short_depth) {
         /* the depths at the span's first and last pixel centres, modulo 2^32 */
         uint32_t d = td->d_row32 + td->gx * ((p1 << SUB) + HALF_PIXEL), d_end = d + (td->gx << SUB) * (p2 - p1);
         const uint32_t depths = (uint32_t)(DEPTH_Q12_END - DEPTH_Q12_MIN);
-        if (direct && d - (uint32_t)DEPTH_Q12_MIN < depths && d_end - (uint32_t)DEPTH_Q12_MIN < depths)
+        if (tr && d - (uint32_t)DEPTH_Q12_MIN < depths && d_end - (uint32_t)DEPTH_Q12_MIN < depths)
             /* 1..65535 at both ends; two pixel centres 16 apart lie
              * within the x extent: 16 |ddx| < 2^29 */
-            span_z_direct(z_row(fr, row), band_row(fr, row), pattern_of_row(fr, row), p1, p2, (int32_t)d,
+            span_z_direct(tr->z, tr->band, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
                           p2 > p1 ? from_twos(td->gx << SUB) : 0);
         else
-            put_span_z(fr, row, p1, p2, style, from_twos(d), pl->ddx * (1 << SUB), 0, 0, 0, t, direct);
+            put_span_z(fr, row, p1, p2, style, from_twos(d), pl->ddx * (1 << SUB), 0, 0, 0, t, tr != 0);
     } else {
         int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
         int64_t d = td->d_row + mul_wide(pl->ddx, xq);
         int64_t ddx = pl->ddx * (1 << SUB), d_end = d + mul_wide(ddx, (int32_t)(p2 - p1));
-        if (direct && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
+        if (tr && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
             d_end < DEPTH_Q12_END) /* as put_span_z would, without its call */
-            span_z_direct(z_row(fr, row), band_row(fr, row), pattern_of_row(fr, row), p1, p2, (int32_t)d,
+            span_z_direct(tr->z, tr->band, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
                           p2 > p1 ? (int32_t)ddx : 0);
         else
-            put_span_z(fr, row, p1, p2, style, d, ddx, 0, 0, 0, t, direct);
+            put_span_z(fr, row, p1, p2, style, d, ddx, 0, 0, 0, t, tr != 0);
+    }
+}
+#endif
+
+/* A triangle's walk down its rows in the band: the long edge top-bottom
+ * (lng) and the short one (sht: top-mid above row r_mid, mid-bottom from
+ * there) at row `row` (centre yc), to r_last. */
+typedef struct tri_walk {
+    tri_edge lng, sht;
+    int32_t row, yc, r_mid, r_last;
+    const stp_instr *top, *mid, *bot;
+} tri_walk;
+
+/* Walk w at the triangle v's first row in the band; 0 when it has none. */
+STP_HOT_INLINE int tri_walk_start(const frame *fr, const stp_instr *v, tri_walk *w)
+{
+    int32_t r_first;
+    tri_sort(v, &w->top, &w->mid, &w->bot);
+    if (w->bot->y <= fr->band_top || w->top->y >= fr->band_end)
+        return 0; /* not in the band */
+    /* rows whose centre lies in [top, bottom), in the band */
+    r_first = row_below(w->top->y);
+    w->r_last = row_below(w->bot->y) - 1;
+    w->r_mid = row_below(w->mid->y); /* the first row below mid's y */
+    if (r_first < (int32_t)fr->y0)
+        r_first = (int32_t)fr->y0;
+    if (w->r_last > (int32_t)(fr->y0 + fr->rows) - 1)
+        w->r_last = (int32_t)(fr->y0 + fr->rows) - 1;
+    if (r_first > w->r_last)
+        return 0;
+    w->row = r_first;
+    w->yc = r_first * (1 << SUB) + HALF_PIXEL;
+    tri_edge_start(&w->lng, w->top, w->bot, w->yc);
+    if (r_first < w->r_mid)
+        tri_edge_start(&w->sht, w->top, w->mid, w->yc);
+    else
+        tri_edge_start(&w->sht, w->mid, w->bot, w->yc);
+    return 1;
+}
+
+/* The pixels [*p1, *p2] of walk w's row between its two crossings; 0 when
+ * there is none. */
+STP_HOT_INLINE int tri_walk_span(const tri_walk *w, uint32_t width, uint32_t *p1, uint32_t *p2)
+{
+    int32_t xl = tri_edge_x(w->lng.acc), xr = tri_edge_x(w->sht.acc);
+    if (xl > xr) {
+        int32_t x = xl;
+        xl = xr;
+        xr = x;
+    }
+    return tri_span_pixels(xl, xr, width, p1, p2);
+}
+
+/* Walk w a row down; 0 when its row was the last. */
+STP_HOT_INLINE int tri_walk_next(tri_walk *w)
+{
+    if (w->row == w->r_last)
+        return 0;
+    w->row++;
+    w->yc += 1 << SUB;
+    w->lng.acc += w->lng.step;
+    if (w->row == w->r_mid)
+        tri_edge_start(&w->sht, w->mid, w->bot, w->yc);
+    else
+        w->sht.acc += w->sht.step;
+    return 1;
+}
+
+#if STP_WITH_ZBUFFER
+/* The depth-tested rows of triangle v (df[at]) from walk w's row, whose
+ * span p1..p2 is the first with pixels: its plane made (or taken from the
+ * kept setups) here; rows straight to the band (tri_row) when
+ * paint_setup says they can go. */
+static void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint style, stp_fix t, uint32_t ordinal,
+                       tri_walk *w, uint32_t p1, uint32_t p2)
+{
+    depth_plane pl;
+    tri_depth td;
+    tri_row tr;
+    tri_depth_clear(&td, &pl);
+    if (!depth_plane_for(fr, v, 3, ordinal, w->top->y, &pl))
+        return; /* edge-on: no area on screen */
+    tri_depth_start(&td, &pl, v, w->bot->y - w->top->y, w->yc);
+    if (!paint_setup(fr, at, style, 0, t)) {
+        for (;;) {
+            tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, 0, &td, &pl);
+            do {
+                if (!tri_walk_next(w))
+                    return;
+                tri_depth_step(&td, &pl);
+            } while (!tri_walk_span(w, fr->r->width, &p1, &p2));
+        }
+    }
+    tri_row_at(fr, &tr, (uint32_t)w->row);
+    for (;;) {
+        tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, &tr, &td, &pl);
+        do {
+            if (!tri_walk_next(w))
+                return;
+            tri_depth_step(&td, &pl);
+            tri_row_next(fr, &tr);
+        } while (!tri_walk_span(w, fr->r->width, &p1, &p2));
     }
 }
 #endif
@@ -1157,80 +1285,33 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
 static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint style, int use_z, stp_fix t,
                           uint32_t ordinal)
 {
-    const stp_instr *top, *mid, *bot;
-    int32_t r_first, r_last, r_mid, row, yc;
-    int ready = 0, direct = 0;
-    tri_edge lng, sht;
+    tri_walk w;
+    uint32_t p1, p2, width = fr->r->width;
+    if (!tri_walk_start(fr, v, &w))
+        return;
 #if STP_WITH_ZBUFFER
-    depth_plane pl;
-    tri_depth td;
-    tri_depth_clear(&td, &pl);
-#endif
-    tri_sort(v, &top, &mid, &bot);
-    if (bot->y <= fr->band_top || top->y >= fr->band_end)
-        return; /* not in the band */
-#if STP_WITH_ZBUFFER
-    if (use_z && fr->setup && ordinal != UINT32_MAX && top->y >= fr->band_top)
+    if (use_z && fr->setup && ordinal != UINT32_MAX && w.top->y >= fr->band_top)
         fr->setup[ordinal].centre[0] = SETUP_NOT_MADE; /* its first band: made at the first span */
+#endif
+    while (!tri_walk_span(&w, width, &p1, &p2))
+        if (!tri_walk_next(&w))
+            return; /* no pixel centre */
+#if STP_WITH_ZBUFFER
+    if (use_z) {
+        tri_draw_z(fr, at, v, style, t, ordinal, &w, p1, p2);
+        return;
+    }
 #else
     (void)use_z;
     (void)ordinal;
 #endif
-    /* rows whose centre lies in [top, bottom), in the band */
-    r_first = row_below(top->y);
-    r_last = row_below(bot->y) - 1;
-    r_mid = row_below(mid->y); /* the first row below mid's y */
-    if (r_first < (int32_t)fr->y0)
-        r_first = (int32_t)fr->y0;
-    if (r_last > (int32_t)(fr->y0 + fr->rows) - 1)
-        r_last = (int32_t)(fr->y0 + fr->rows) - 1;
-    if (r_first > r_last)
-        return;
-    yc = r_first * (1 << SUB) + HALF_PIXEL;
-    tri_edge_start(&lng, top, bot, yc);
-    if (r_first < r_mid)
-        tri_edge_start(&sht, top, mid, yc);
-    else
-        tri_edge_start(&sht, mid, bot, yc);
-    for (row = r_first;; row++) {
-        int32_t xl = tri_edge_x(lng.acc), xr = tri_edge_x(sht.acc);
-        uint32_t p1, p2;
-        if (xl > xr) {
-            int32_t x = xl;
-            xl = xr;
-            xr = x;
-        }
-        if (tri_span_pixels(xl, xr, fr->r->width, &p1, &p2)) {
-            if (!ready) {
-#if STP_WITH_ZBUFFER
-                if (use_z) {
-                    if (!depth_plane_for(fr, v, 3, ordinal, top->y, &pl))
-                        return; /* edge-on: no area on screen */
-                    tri_depth_start(&td, &pl, v, bot->y - top->y, yc);
-                }
-#endif
-                direct = paint_setup(fr, at, style, 0, t);
-                (void)direct; /* read by the Z buffer's spans only */
-                ready = 1;
-            }
-#if STP_WITH_ZBUFFER
-            if (use_z)
-                tri_span_z(fr, (uint32_t)row, p1, p2, style, t, direct, &td, &pl);
-            else
-#endif
-                paint_run(fr, (uint32_t)row, p1, p2, style, 0, 0, 0, t);
-        }
-        if (row == r_last)
-            return;
-        yc += 1 << SUB;
-        lng.acc += lng.step;
-        if (row + 1 == r_mid)
-            tri_edge_start(&sht, mid, bot, yc);
-        else
-            sht.acc += sht.step;
-#if STP_WITH_ZBUFFER
-        tri_depth_step(&td, &pl);
-#endif
+    (void)paint_setup(fr, at, style, 0, t);
+    for (;;) {
+        paint_run(fr, (uint32_t)w.row, p1, p2, style, 0, 0, 0, t);
+        do {
+            if (!tri_walk_next(&w))
+                return;
+        } while (!tri_walk_span(&w, width, &p1, &p2));
     }
 }
 #endif /* STP_WITH_TRIANGLE_PATH */
