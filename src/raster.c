@@ -810,9 +810,9 @@ static void gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_
 /* A triangle's plane: its Newell sums are its cross product, exactly
  * (relative coordinates below 2^20, depths below 2^16); its three Q12
  * depths (below 2^28) sum below 2^30.  Without wide arithmetic a small
- * triangle (relative x below 2^14, y below 2^13: products below 2^30, so
- * the sums fit int32, and |a|, |b| < 2^19) in 32 bits: no clamp (|a|, |b|
- * < 2^28), the same values. */
+ * triangle (relative x in [-2^14, 2^14), y in [-2^13, 2^13): products
+ * below 2^30, so the sums fit int32, and |a|, |b| < 2^19) in 32 bits: no
+ * clamp (|a|, |b| < 2^28), the same values. */
 static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
 {
     int32_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z), d2 = depth_q12(fr, v[2].z);
@@ -823,10 +823,15 @@ static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
              sd = (uint32_t)d0 + (uint32_t)d1 + (uint32_t)d2;
     int64_t a, b, c;
 #if !STP_WIDE_ARITH /* 64-bit hosts: 64-bit products and quotients cost what 32-bit ones do */
-    const int32_t xs = (int32_t)1 << 14, ys = (int32_t)1 << 13, gs = (int32_t)1 << 19;
-    if (x1 > -xs && x1 < xs && x2 > -xs && x2 < xs && y1 > -ys && y1 < ys && y2 > -ys && y2 < ys) {
+    /* -2^14 <= x1, x2 < 2^14 and -2^13 <= y1, y2 < 2^13: each offset by
+     * the bound is below twice it, a power of two, so both by their OR
+     * (products below 2^30 still: |e| < 2^16); |a|, |b| < 2^19 by one
+     * unsigned comparison each */
+    const uint32_t xs = (uint32_t)1 << 14, ys = (uint32_t)1 << 13, gs = (uint32_t)1 << 19;
+    if (((((uint32_t)x1 + xs) | ((uint32_t)x2 + xs)) >> 15) == 0 &&
+        ((((uint32_t)y1 + ys) | ((uint32_t)y2 + ys)) >> 14) == 0) {
         int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
-        if (c32 != 0 && a32 > -gs && a32 < gs && b32 > -gs && b32 < gs) {
+        if (c32 != 0 && (uint32_t)a32 + (gs - 1u) < 2u * gs - 1u && (uint32_t)b32 + (gs - 1u) < 2u * gs - 1u) {
             gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy);
             pl->xc = (int32_t)stp_div3_u30(sx); /* coordinates below 2^20 */
             pl->yc = (int32_t)stp_div3_u30(sy);
@@ -1080,17 +1085,6 @@ typedef struct tri_depth {
     int short_depth;
 } tri_depth;
 
-/* No depths yet (the plane made at the first span with pixels); field by
- * field: ARMv6-M's GCC clears a whole struct by memset. */
-STP_HOT_INLINE void tri_depth_clear(tri_depth *td, depth_plane *pl)
-{
-    pl->ddx = pl->ddy = pl->dc = 0;
-    pl->xc = pl->yc = 0;
-    td->d_row = 0;
-    td->d_row32 = td->gx = td->gy_row = 0;
-    td->short_depth = 0;
-}
-
 /* The depths of the triangle v (plane pl, y_extent high) from row centre
  * yc down. */
 STP_HOT_INLINE void tri_depth_start(tri_depth *td, const depth_plane *pl, const stp_instr *v, int32_t y_extent,
@@ -1102,8 +1096,10 @@ STP_HOT_INLINE void tri_depth_start(tri_depth *td, const depth_plane *pl, const 
         td->gx = (uint32_t)pl->ddx;
         td->gy_row = (uint32_t)pl->ddy << SUB;
         td->d_row32 = (uint32_t)pl->dc - td->gx * (uint32_t)pl->xc + (uint32_t)pl->ddy * (uint32_t)(yc - pl->yc);
+        td->d_row = 0; /* unused: set for the compiler's flow analysis */
     } else {
         td->d_row = pl->dc - mul_wide(pl->ddx, pl->xc) + mul_wide(pl->ddy, yc - pl->yc);
+        td->d_row32 = td->gx = td->gy_row = 0; /* unused, likewise */
     }
 }
 
@@ -1248,7 +1244,6 @@ static void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint style, 
     depth_plane pl;
     tri_depth td;
     tri_row tr;
-    tri_depth_clear(&td, &pl);
     if (!depth_plane_for(fr, v, 3, ordinal, w->top->y, &pl))
         return; /* edge-on: no area on screen */
     tri_depth_start(&td, &pl, v, w->bot->y - w->top->y, w->yc);
