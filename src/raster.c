@@ -1858,11 +1858,34 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
 
 /* Band y0's rows cleared to the background and, with the Z buffer, its
  * entries where a polygon can reach set farther than any polygon. */
+/* A MONO1 band whose rows hold no padding bits (width 8 stride) cleared
+ * to a background whose pattern bytes (use_style) are one byte for every
+ * cell row: one fill of the whole band, what put_span would write row by
+ * row.  0 (nothing written) when the band is not so. */
+static int band_clear_uniform(frame *fr, const stp_port *drawn, paint background)
+{
+    size_t i, count = fr->stride * fr->rows;
+    uint32_t cy;
+    uint8_t pattern, *band = fr->band; /* a local: a byte store may alias fr */
+    if (drawn->format != STP_PIXEL_MONO1 || (size_t)fr->r->width != 8u * fr->stride)
+        return 0;
+    use_style(fr, background); /* patterns[] for the background, when mono_fill */
+    if (background != fr->pattern_style)
+        return 0;
+    pattern = fr->patterns[0];
+    for (cy = 1; cy < fr->cell->height; cy++)
+        if (fr->patterns[cy] != pattern)
+            return 0;
+    for (i = 0; i < count; i++) /* a counted loop: compilers make it memset */
+        band[i] = pattern;
+    return 1;
+}
+
 static void render_band_clear(frame *fr, const stp_port *drawn, stp_hidden hidden, paint background)
 {
     const stp_renderer *r = fr->r;
     uint32_t y, y0 = fr->y0;
-    for (y = y0; y < y0 + fr->rows; y++) {
+    for (y = band_clear_uniform(fr, drawn, background) ? y0 + fr->rows : y0; y < y0 + fr->rows; y++) {
         /* MONO1 padding bits past the width reach the port too: make
          * them 0 rather than whatever the caller's buffer held */
         if (drawn->format == STP_PIXEL_MONO1)
