@@ -1244,7 +1244,8 @@ static void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint style, 
     depth_plane pl;
     tri_depth td;
     tri_row tr;
-    if (!depth_plane_for(fr, v, 3, ordinal, w->top->y, &pl))
+    /* without kept setups the plane is made here (no call, no lookup) */
+    if (!(fr->setup ? depth_plane_for(fr, v, 3, ordinal, w->top->y, &pl) : depth_setup_triangle(fr, v, &pl)))
         return; /* edge-on: no area on screen */
     tri_depth_start(&td, &pl, v, w->bot->y - w->top->y, w->yc);
     if (!paint_setup(fr, at, style, 0, t)) {
