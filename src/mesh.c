@@ -287,13 +287,16 @@ static int store_face(mesh_context *c, stp_mesh_vertex *const s[3], int style)
 {
     stp_renderer *r = c->r;
     uint32_t used = r->used;
-    int change = style != r->current_style || r->current_colour != 0, i;
+    int change = style != r->current_style || r->current_colour != 0;
     stp_instr *out;
     if (r->capacity - used < (change ? 4u : 3u))
         return STP_ERR_FULL;
-    for (i = 0; i < 3; i++)
-        if ((s[i]->state & PROJECTED) == 0)
-            vertex_project(c, s[i]);
+    if ((s[0]->state & PROJECTED) == 0)
+        vertex_project(c, s[0]);
+    if ((s[1]->state & PROJECTED) == 0)
+        vertex_project(c, s[1]);
+    if ((s[2]->state & PROJECTED) == 0)
+        vertex_project(c, s[2]);
     out = &r->df[used];
     if (change) {
         out->op = STP_OP_SHADE;
