@@ -1233,6 +1233,18 @@ STP_HOT_INLINE int tri_walk_next(tri_walk *w)
     return 1;
 }
 
+/* paint_setup's answer for an opaque flat triangle without its call when
+ * it has nothing to set up: a MONO1 pattern style already made, no
+ * shadow records to gather (0: ask paint_setup). */
+#if STP_WITH_SHADOWS
+#define TRIANGLE_SHADOWLESS(fr) ((fr)->shadow == 0)
+#else
+#define TRIANGLE_SHADOWLESS(fr) 1
+#endif
+#define TRIANGLE_PAINT_READY(fr, style, t)                                                                       \
+    ((t) == 0 && (style) == (fr)->pattern_style && (fr)->pattern_port && !((style)&STP_COLOUR_FLAG) &&            \
+     TRIANGLE_SHADOWLESS(fr))
+
 #if STP_WITH_ZBUFFER
 /* The depth-tested rows of triangle v (df[at]) from walk w's row, whose
  * span p1..p2 is the first with pixels: its plane made (or taken from the
@@ -1248,7 +1260,7 @@ static void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint style, 
     if (!(fr->setup ? depth_plane_for(fr, v, 3, ordinal, w->top->y, &pl) : depth_setup_triangle(fr, v, &pl)))
         return; /* edge-on: no area on screen */
     tri_depth_start(&td, &pl, v, w->bot->y - w->top->y, w->yc);
-    if (!paint_setup(fr, at, style, 0, t)) {
+    if (!(TRIANGLE_PAINT_READY(fr, style, t) || paint_setup(fr, at, style, 0, t))) {
         for (;;) {
             tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, 0, &td, &pl);
             do {
