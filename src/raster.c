@@ -81,13 +81,15 @@ static int64_t mul_wide(int64_t a, int32_t b)
  * ddy (y - yc) at its pixel centres (x and xc within the vertices' x
  * extent, y and yc within their y extent) is below 2^29 and the sum, with
  * dc < 2^28 + 2^12, fits int32. */
-static int depth_term_short(int64_t g, int32_t extent)
+STP_HOT_INLINE int depth_term_short(int64_t g, int32_t extent)
 {
-    uint32_t m, hi;
-    /* g + 2^29 in [1, 2^30): |g| < 2^29 */
-    if (((uint64_t)g + ((uint64_t)1 << 29)) - 1u >= ((uint64_t)1 << 30) - 1u || extent >= ((int32_t)1 << 14))
+    uint32_t m, hi, low = (uint32_t)g;
+    /* g within int32 (its high word the low word's sign), then low + 2^29
+     * in [1, 2^30): |g| < 2^29 */
+    if ((uint32_t)((uint64_t)g >> 32) != (low >> 31 ? 0xFFFFFFFFu : 0u) ||
+        low + ((uint32_t)1 << 29) - 1u >= ((uint32_t)1 << 30) - 1u || extent >= ((int32_t)1 << 14))
         return 0;
-    m = g < 0 ? 0u - (uint32_t)g : (uint32_t)g;
+    m = low >> 31 ? 0u - low : low;
     /* m extent = hi 2^15 + (m mod 2^15) extent, hi = (m >> 15) extent < 2^28 */
     hi = (m >> 15) * (uint32_t)extent;
     return hi < (1u << 14) && (hi << 15) + (m & 0x7FFFu) * (uint32_t)extent < ((uint32_t)1 << 29);
