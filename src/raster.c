@@ -1879,7 +1879,7 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
  * row.  0 (nothing written) when the band is not so. */
 static int band_clear_uniform(frame *fr, const stp_port *drawn, paint background)
 {
-    size_t i, count = fr->stride * fr->rows;
+    size_t i, count = fr->stride * (size_t)fr->rows; /* below band_size */
     uint32_t cy;
     uint8_t pattern, *band = fr->band; /* a local: a byte store may alias fr */
     if (drawn->format != STP_PIXEL_MONO1 || (size_t)fr->r->width != 8u * fr->stride)

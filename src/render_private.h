@@ -280,7 +280,7 @@ STP_HOT_INLINE int stp_render_point_to_view(const stp_renderer *r, stp_vec3 p, s
 {
     if (r->geometry == STP_GEOMETRY_TWO_STEPS)
         return stp_render_point_two_steps(r, p, out);
-    stp_view_transform_point(&r->point_view, p, out);
+    STP_VIEW_TRANSFORM_POINT(&r->point_view, p, out); /* inline where 64-bit products are */
     return 0;
 }
 
