@@ -1547,12 +1547,14 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
         stp_fix t = 0;
         const stp_instr *pen = 0;
         uint32_t k;
+        /* whether this pass draws the polygons that follow (t as it stands) */
+        int draw = !skip_polygons && pass != 2;
         if (!seg->used || !seg->visible)
             continue;
         for (k = seg->start; k < seg->end; k++) {
             const stp_instr *in = &r->df[k];
             if (in->op >= 3) {
-                if (skip_polygons || !(pass == 0 || (pass == 1) == (t == 0)))
+                if (!draw)
                     ;
 #if STP_WITH_TRIANGLE_PATH
                 else if (in->op == 3 && triangle_path && !polygon_smooth(in) && TRIANGLE_NARROW(in))
@@ -1564,6 +1566,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
                 k += (uint32_t)in->op - 1;
             } else if (in->op == STP_OP_TRANSPARENCY) {
                 t = in->x;
+                draw = !skip_polygons && (pass == 0 || (pass == 1) == (t == 0));
             } else if (in->op == STP_OP_SHADE) {
                 style = paint_of(fr, in);
             } else if (in->op == STP_OP_LINE_STYLE) {
