@@ -184,11 +184,11 @@ static int prepare_call(mesh_context *c)
 
 /* ---- per vertex and per face ---- */
 
-/* Vertex i (not transformed yet) in view coordinates with its outcode (or
- * CODE_RANGE): the geometry stage, as stp_renderer_polygon's. */
-static void vertex_transform(mesh_context *c, uint16_t i)
+/* Vertex i (not transformed yet, scratch entry *s) in view coordinates
+ * with its outcode (or CODE_RANGE): the geometry stage, as
+ * stp_renderer_polygon's. */
+static void vertex_transform(mesh_context *c, stp_mesh_vertex *s, uint16_t i)
 {
-    stp_mesh_vertex *s = &c->scratch[i];
     const stp_renderer *r = c->r;
     int range = stp_render_point_to_view(r, c->mesh->vertices[i], &s->view);
     if (c->inside)
@@ -200,27 +200,23 @@ static void vertex_transform(mesh_context *c, uint16_t i)
 
 /* Vertex i's outcode (or CODE_RANGE), transformed once per call; the
  * common case, a vertex an earlier face transformed, stays inline. */
-static inline int32_t vertex_code(mesh_context *c, uint16_t i)
+STP_HOT_INLINE int32_t vertex_code(mesh_context *c, stp_mesh_vertex *s, uint16_t i)
 {
-    stp_mesh_vertex *s = &c->scratch[i];
     if (s->state == STATE_NEW)
-        vertex_transform(c, i);
+        vertex_transform(c, s, i);
     return s->state & (CODE_RANGE | 31);
 }
 
-/* Vertex i's device position, projected once per call (it is inside the
+/* Vertex *s's device position, projected once per call (it is inside the
  * view volume: its outcode is 0). */
-static void vertex_project(mesh_context *c, uint16_t i)
+static void vertex_project(const mesh_context *c, stp_mesh_vertex *s)
 {
-    stp_mesh_vertex *s = &c->scratch[i];
-    if ((s->state & PROJECTED) == 0) {
-        int32_t d[3];
-        stp_view_perspective_device(&c->lens, &s->view, d); /* perspective (fast_state) */
-        s->dx = d[0];
-        s->dy = d[1];
-        s->dz = d[2];
-        s->state |= PROJECTED;
-    }
+    int32_t d[3];
+    stp_view_perspective_device(&c->lens, &s->view, d); /* perspective (fast_state) */
+    s->dx = d[0];
+    s->dy = d[1];
+    s->dz = d[2];
+    s->state |= PROJECTED;
 }
 
 /* The vertex average, truncated toward zero as render.c's Newell step
@@ -271,18 +267,37 @@ static int enter_fallback(const mesh_context *c, uint16_t t)
 #endif
 }
 
-/* The display-file records of a front face inside the view: SHADE when
- * the style changed, then its three projected vertices. */
-static int store_face(mesh_context *c, const uint16_t *k, int style)
+/* The display-file record of projected vertex *s (op: 3 opening the
+ * triangle, else STP_OP_LINE). */
+STP_HOT_INLINE void put_vertex(stp_instr *out, int32_t op, const stp_mesh_vertex *s)
+{
+    out->op = op;
+    out->x = s->dx;
+    out->y = s->dy;
+    out->z = s->dz;
+#if STP_WITH_GOURAUD
+    out->shade = -1;
+#endif
+}
+
+/* The display-file records of a front face inside the view (scratch
+ * entries s[0..2]): SHADE when the style changed, then its three
+ * projected vertices. */
+static int store_face(mesh_context *c, stp_mesh_vertex *const s[3], int style)
 {
     stp_renderer *r = c->r;
-    int change = style != r->current_style || r->current_colour != 0, i;
+    uint32_t used = r->used;
+    int change = style != r->current_style || r->current_colour != 0;
     stp_instr *out;
-    if (r->capacity - r->used < 3u + (change ? 1u : 0u))
+    if (r->capacity - used < (change ? 4u : 3u))
         return STP_ERR_FULL;
-    for (i = 0; i < 3; i++)
-        vertex_project(c, k[i]);
-    out = &r->df[r->used];
+    if ((s[0]->state & PROJECTED) == 0)
+        vertex_project(c, s[0]);
+    if ((s[1]->state & PROJECTED) == 0)
+        vertex_project(c, s[1]);
+    if ((s[2]->state & PROJECTED) == 0)
+        vertex_project(c, s[2]);
+    out = &r->df[used];
     if (change) {
         out->op = STP_OP_SHADE;
         out->x = style;
@@ -292,21 +307,16 @@ static int store_face(mesh_context *c, const uint16_t *k, int style)
         out->shade = -1;
 #endif
         out++;
+        used++;
         r->current_style = style;
         r->current_colour = 0;
     }
-    for (i = 0; i < 3; i++, out++) {
-        const stp_mesh_vertex *s = &c->scratch[k[i]];
-        out->op = i == 0 ? 3 : STP_OP_LINE;
-        out->x = s->dx;
-        out->y = s->dy;
-        out->z = s->dz;
-#if STP_WITH_GOURAUD
-        out->shade = -1;
-#endif
-    }
-    r->used = (uint32_t)(out - r->df);
-    r->segments[r->open_segment].end = r->used;
+    put_vertex(&out[0], 3, s[0]);
+    put_vertex(&out[1], STP_OP_LINE, s[1]);
+    put_vertex(&out[2], STP_OP_LINE, s[2]);
+    used += 3;
+    r->used = used;
+    r->segments[r->open_segment].end = used;
     return STP_OK;
 }
 
@@ -334,22 +344,22 @@ static int enter_face(mesh_context *c, uint16_t t)
     stp_renderer *r = c->r;
     const uint16_t *k = &c->mesh->triangles[3 * (uint32_t)t];
     const int16_t *n = &c->mesh->normals[3 * (uint32_t)t];
-    const stp_vec3 *a = &c->mesh->vertices[k[0]];
-    const stp_vec3 *v[3];
+    stp_mesh_vertex *s[3];
     int16_t nv[3];
-    int32_t all, any;
+    int32_t code0, code1, code2, all, any;
     stp_vec3 centre;
-    int i, style, side = face_side(c, n, a);
+    int style, side = face_side(c, n, &c->mesh->vertices[k[0]]);
     r->last_shade = -1;
     if (side <= 0 && r->backface_removal)
         return STP_OK; /* a back face (or edge-on): removed */
-    all = vertex_code(c, k[0]);
-    any = all;
-    for (i = 1; i < 3; i++) {
-        int32_t code = vertex_code(c, k[i]);
-        all &= code;
-        any |= code;
-    }
+    s[0] = &c->scratch[k[0]];
+    s[1] = &c->scratch[k[1]];
+    s[2] = &c->scratch[k[2]];
+    code0 = vertex_code(c, s[0], k[0]);
+    code1 = vertex_code(c, s[1], k[1]);
+    code2 = vertex_code(c, s[2], k[2]);
+    all = code0 & code1 & code2;
+    any = code0 | code1 | code2;
     if (any & CODE_RANGE)
         return STP_ERR_RANGE;
     if (all != 0)
@@ -357,13 +367,11 @@ static int enter_face(mesh_context *c, uint16_t t)
     if (any != 0)
         return enter_fallback(c, t); /* crosses a plane: to be clipped */
     stp_render_view_normal(c->frame, n, side, nv);
-    for (i = 0; i < 3; i++)
-        v[i] = &c->scratch[k[i]].view;
-    centre.x = average3(c->inside, v[0]->x, v[1]->x, v[2]->x);
-    centre.y = average3(c->inside, v[0]->y, v[1]->y, v[2]->y);
-    centre.z = average3(c->inside, v[0]->z, v[1]->z, v[2]->z);
+    centre.x = average3(c->inside, s[0]->view.x, s[1]->view.x, s[2]->view.x);
+    centre.y = average3(c->inside, s[0]->view.y, s[1]->view.y, s[2]->view.y);
+    centre.z = average3(c->inside, s[0]->view.z, s[1]->view.z, s[2]->view.z);
     style = stp_render_face_style(r, c->shade, nv, centre, side);
-    return store_face(c, k, style);
+    return store_face(c, s, style);
 }
 
 /* The arguments and every index, before anything is entered. */

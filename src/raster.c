@@ -81,13 +81,15 @@ static int64_t mul_wide(int64_t a, int32_t b)
  * ddy (y - yc) at its pixel centres (x and xc within the vertices' x
  * extent, y and yc within their y extent) is below 2^29 and the sum, with
  * dc < 2^28 + 2^12, fits int32. */
-static int depth_term_short(int64_t g, int32_t extent)
+STP_HOT_INLINE int depth_term_short(int64_t g, int32_t extent)
 {
-    uint32_t m, hi;
-    /* g + 2^29 in [1, 2^30): |g| < 2^29 */
-    if (((uint64_t)g + ((uint64_t)1 << 29)) - 1u >= ((uint64_t)1 << 30) - 1u || extent >= ((int32_t)1 << 14))
+    uint32_t m, hi, low = (uint32_t)g;
+    /* g within int32 (its high word the low word's sign), then low + 2^29
+     * in [1, 2^30): |g| < 2^29 */
+    if ((uint32_t)((uint64_t)g >> 32) != (low >> 31 ? 0xFFFFFFFFu : 0u) ||
+        low + ((uint32_t)1 << 29) - 1u >= ((uint32_t)1 << 30) - 1u || extent >= ((int32_t)1 << 14))
         return 0;
-    m = g < 0 ? 0u - (uint32_t)g : (uint32_t)g;
+    m = low >> 31 ? 0u - low : low;
     /* m extent = hi 2^15 + (m mod 2^15) extent, hi = (m >> 15) extent < 2^28 */
     hi = (m >> 15) * (uint32_t)extent;
     return hi < (1u << 14) && (hi << 15) + (m & 0x7FFFu) * (uint32_t)extent < ((uint32_t)1 << 29);
@@ -810,9 +812,9 @@ static void gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_
 /* A triangle's plane: its Newell sums are its cross product, exactly
  * (relative coordinates below 2^20, depths below 2^16); its three Q12
  * depths (below 2^28) sum below 2^30.  Without wide arithmetic a small
- * triangle (relative x below 2^14, y below 2^13: products below 2^30, so
- * the sums fit int32, and |a|, |b| < 2^19) in 32 bits: no clamp (|a|, |b|
- * < 2^28), the same values. */
+ * triangle (relative x in [-2^14, 2^14), y in [-2^13, 2^13): products
+ * below 2^30, so the sums fit int32, and |a|, |b| < 2^19) in 32 bits: no
+ * clamp (|a|, |b| < 2^28), the same values. */
 static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
 {
     int32_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z), d2 = depth_q12(fr, v[2].z);
@@ -823,10 +825,15 @@ static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
              sd = (uint32_t)d0 + (uint32_t)d1 + (uint32_t)d2;
     int64_t a, b, c;
 #if !STP_WIDE_ARITH /* 64-bit hosts: 64-bit products and quotients cost what 32-bit ones do */
-    const int32_t xs = (int32_t)1 << 14, ys = (int32_t)1 << 13, gs = (int32_t)1 << 19;
-    if (x1 > -xs && x1 < xs && x2 > -xs && x2 < xs && y1 > -ys && y1 < ys && y2 > -ys && y2 < ys) {
+    /* -2^14 <= x1, x2 < 2^14 and -2^13 <= y1, y2 < 2^13: each offset by
+     * the bound is below twice it, a power of two, so both by their OR
+     * (products below 2^30 still: |e| < 2^16); |a|, |b| < 2^19 by one
+     * unsigned comparison each */
+    const uint32_t xs = (uint32_t)1 << 14, ys = (uint32_t)1 << 13, gs = (uint32_t)1 << 19;
+    if (((((uint32_t)x1 + xs) | ((uint32_t)x2 + xs)) >> 15) == 0 &&
+        ((((uint32_t)y1 + ys) | ((uint32_t)y2 + ys)) >> 14) == 0) {
         int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
-        if (c32 != 0 && a32 > -gs && a32 < gs && b32 > -gs && b32 < gs) {
+        if (c32 != 0 && (uint32_t)a32 + (gs - 1u) < 2u * gs - 1u && (uint32_t)b32 + (gs - 1u) < 2u * gs - 1u) {
             gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy);
             pl->xc = (int32_t)stp_div3_u30(sx); /* coordinates below 2^20 */
             pl->yc = (int32_t)stp_div3_u30(sy);
@@ -1080,17 +1087,6 @@ typedef struct tri_depth {
     int short_depth;
 } tri_depth;
 
-/* No depths yet (the plane made at the first span with pixels); field by
- * field: ARMv6-M's GCC clears a whole struct by memset. */
-STP_HOT_INLINE void tri_depth_clear(tri_depth *td, depth_plane *pl)
-{
-    pl->ddx = pl->ddy = pl->dc = 0;
-    pl->xc = pl->yc = 0;
-    td->d_row = 0;
-    td->d_row32 = td->gx = td->gy_row = 0;
-    td->short_depth = 0;
-}
-
 /* The depths of the triangle v (plane pl, y_extent high) from row centre
  * yc down. */
 STP_HOT_INLINE void tri_depth_start(tri_depth *td, const depth_plane *pl, const stp_instr *v, int32_t y_extent,
@@ -1102,8 +1098,10 @@ STP_HOT_INLINE void tri_depth_start(tri_depth *td, const depth_plane *pl, const 
         td->gx = (uint32_t)pl->ddx;
         td->gy_row = (uint32_t)pl->ddy << SUB;
         td->d_row32 = (uint32_t)pl->dc - td->gx * (uint32_t)pl->xc + (uint32_t)pl->ddy * (uint32_t)(yc - pl->yc);
+        td->d_row = 0; /* unused: set for the compiler's flow analysis */
     } else {
         td->d_row = pl->dc - mul_wide(pl->ddx, pl->xc) + mul_wide(pl->ddy, yc - pl->yc);
+        td->d_row32 = td->gx = td->gy_row = 0; /* unused, likewise */
     }
 }
 
@@ -1116,33 +1114,173 @@ STP_HOT_INLINE void tri_depth_step(tri_depth *td, const depth_plane *pl)
         td->d_row += pl->ddy * (1 << SUB);
 }
 
+/* The band row a triangle's direct spans go to (span_z_direct): its Z
+ * entries, its pixels and its cell row (0..cell_height - 1), set at the
+ * triangle's first span (tri_row_at) and stepped a row down with the
+ * triangle (tri_row_next) rather than formed again for every span. */
+typedef struct tri_row {
+    uint16_t *z;
+    uint8_t *band;
+    uint32_t cell_row, cell_height;
+} tri_row;
+
+STP_HOT_INLINE void tri_row_at(const frame *fr, tri_row *tr, uint32_t row)
+{
+    tr->z = z_row(fr, row);
+    tr->band = band_row(fr, row);
+    tr->cell_height = fr->cell->height; /* >= 1: direct spans need mono_fill */
+    tr->cell_row = fr->cell_mask ? (row & fr->cell_mask) : row % tr->cell_height;
+}
+
+STP_HOT_INLINE void tri_row_next(const frame *fr, tri_row *tr)
+{
+    tr->z += fr->r->width;
+    tr->band += fr->stride;
+    if (++tr->cell_row == tr->cell_height)
+        tr->cell_row = 0;
+}
+
 /* The depth-tested span p1..p2 of a triangle's row: straight to the band
- * (span_z_direct) when direct and its depths are 1..65535 at both ends,
- * else through put_span_z. */
+ * (span_z_direct, at tr: tr NULL when not direct) when its depths are
+ * 1..65535 at both ends, else through put_span_z. */
 STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint32_t p2, paint style, stp_fix t,
-                               int direct, const tri_depth *td, const depth_plane *pl)
+                               const tri_row *tr, const tri_depth *td, const depth_plane *pl)
 {
     if (td->short_depth) {
         /* the depths at the span's first and last pixel centres, modulo 2^32 */
         uint32_t d = td->d_row32 + td->gx * ((p1 << SUB) + HALF_PIXEL), d_end = d + (td->gx << SUB) * (p2 - p1);
         const uint32_t depths = (uint32_t)(DEPTH_Q12_END - DEPTH_Q12_MIN);
-        if (direct && d - (uint32_t)DEPTH_Q12_MIN < depths && d_end - (uint32_t)DEPTH_Q12_MIN < depths)
+        if (tr && d - (uint32_t)DEPTH_Q12_MIN < depths && d_end - (uint32_t)DEPTH_Q12_MIN < depths)
             /* 1..65535 at both ends; two pixel centres 16 apart lie
              * within the x extent: 16 |ddx| < 2^29 */
-            span_z_direct(z_row(fr, row), band_row(fr, row), pattern_of_row(fr, row), p1, p2, (int32_t)d,
+            span_z_direct(tr->z, tr->band, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
                           p2 > p1 ? from_twos(td->gx << SUB) : 0);
         else
-            put_span_z(fr, row, p1, p2, style, from_twos(d), pl->ddx * (1 << SUB), 0, 0, 0, t, direct);
+            put_span_z(fr, row, p1, p2, style, from_twos(d), pl->ddx * (1 << SUB), 0, 0, 0, t, tr != 0);
     } else {
         int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
         int64_t d = td->d_row + mul_wide(pl->ddx, xq);
         int64_t ddx = pl->ddx * (1 << SUB), d_end = d + mul_wide(ddx, (int32_t)(p2 - p1));
-        if (direct && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
+        if (tr && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
             d_end < DEPTH_Q12_END) /* as put_span_z would, without its call */
-            span_z_direct(z_row(fr, row), band_row(fr, row), pattern_of_row(fr, row), p1, p2, (int32_t)d,
+            span_z_direct(tr->z, tr->band, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
                           p2 > p1 ? (int32_t)ddx : 0);
         else
-            put_span_z(fr, row, p1, p2, style, d, ddx, 0, 0, 0, t, direct);
+            put_span_z(fr, row, p1, p2, style, d, ddx, 0, 0, 0, t, tr != 0);
+    }
+}
+#endif
+
+/* A triangle's walk down its rows in the band: the long edge top-bottom
+ * (lng) and the short one (sht: top-mid above row r_mid, mid-bottom from
+ * there) at row `row` (centre yc), to r_last. */
+typedef struct tri_walk {
+    tri_edge lng, sht;
+    int32_t row, yc, r_mid, r_last;
+    const stp_instr *top, *mid, *bot;
+} tri_walk;
+
+/* Walk w at the triangle v's first row in the band; 0 when it has none. */
+STP_HOT_INLINE int tri_walk_start(const frame *fr, const stp_instr *v, tri_walk *w)
+{
+    int32_t r_first;
+    tri_sort(v, &w->top, &w->mid, &w->bot);
+    if (w->bot->y <= fr->band_top || w->top->y >= fr->band_end)
+        return 0; /* not in the band */
+    /* rows whose centre lies in [top, bottom), in the band */
+    r_first = row_below(w->top->y);
+    w->r_last = row_below(w->bot->y) - 1;
+    w->r_mid = row_below(w->mid->y); /* the first row below mid's y */
+    if (r_first < (int32_t)fr->y0)
+        r_first = (int32_t)fr->y0;
+    if (w->r_last > (int32_t)(fr->y0 + fr->rows) - 1)
+        w->r_last = (int32_t)(fr->y0 + fr->rows) - 1;
+    if (r_first > w->r_last)
+        return 0;
+    w->row = r_first;
+    w->yc = r_first * (1 << SUB) + HALF_PIXEL;
+    tri_edge_start(&w->lng, w->top, w->bot, w->yc);
+    if (r_first < w->r_mid)
+        tri_edge_start(&w->sht, w->top, w->mid, w->yc);
+    else
+        tri_edge_start(&w->sht, w->mid, w->bot, w->yc);
+    return 1;
+}
+
+/* The pixels [*p1, *p2] of walk w's row between its two crossings; 0 when
+ * there is none. */
+STP_HOT_INLINE int tri_walk_span(const tri_walk *w, uint32_t width, uint32_t *p1, uint32_t *p2)
+{
+    int32_t xl = tri_edge_x(w->lng.acc), xr = tri_edge_x(w->sht.acc);
+    if (xl > xr) {
+        int32_t x = xl;
+        xl = xr;
+        xr = x;
+    }
+    return tri_span_pixels(xl, xr, width, p1, p2);
+}
+
+/* Walk w a row down; 0 when its row was the last. */
+STP_HOT_INLINE int tri_walk_next(tri_walk *w)
+{
+    if (w->row == w->r_last)
+        return 0;
+    w->row++;
+    w->yc += 1 << SUB;
+    w->lng.acc += w->lng.step;
+    if (w->row == w->r_mid)
+        tri_edge_start(&w->sht, w->mid, w->bot, w->yc);
+    else
+        w->sht.acc += w->sht.step;
+    return 1;
+}
+
+/* paint_setup's answer for an opaque flat triangle without its call when
+ * it has nothing to set up: a MONO1 pattern style already made, no
+ * shadow records to gather (0: ask paint_setup). */
+#if STP_WITH_SHADOWS
+#define TRIANGLE_SHADOWLESS(fr) ((fr)->shadow == 0)
+#else
+#define TRIANGLE_SHADOWLESS(fr) 1
+#endif
+#define TRIANGLE_PAINT_READY(fr, style, t)                                                                       \
+    ((t) == 0 && (style) == (fr)->pattern_style && (fr)->pattern_port && !((style)&STP_COLOUR_FLAG) &&            \
+     TRIANGLE_SHADOWLESS(fr))
+
+#if STP_WITH_ZBUFFER
+/* The depth-tested rows of triangle v (df[at]) from walk w's row, whose
+ * span p1..p2 is the first with pixels: its plane made (or taken from the
+ * kept setups) here; rows straight to the band (tri_row) when
+ * paint_setup says they can go. */
+static void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint style, stp_fix t, uint32_t ordinal,
+                       tri_walk *w, uint32_t p1, uint32_t p2)
+{
+    depth_plane pl;
+    tri_depth td;
+    tri_row tr;
+    /* without kept setups the plane is made here (no call, no lookup) */
+    if (!(fr->setup ? depth_plane_for(fr, v, 3, ordinal, w->top->y, &pl) : depth_setup_triangle(fr, v, &pl)))
+        return; /* edge-on: no area on screen */
+    tri_depth_start(&td, &pl, v, w->bot->y - w->top->y, w->yc);
+    if (!(TRIANGLE_PAINT_READY(fr, style, t) || paint_setup(fr, at, style, 0, t))) {
+        for (;;) {
+            tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, 0, &td, &pl);
+            do {
+                if (!tri_walk_next(w))
+                    return;
+                tri_depth_step(&td, &pl);
+            } while (!tri_walk_span(w, fr->r->width, &p1, &p2));
+        }
+    }
+    tri_row_at(fr, &tr, (uint32_t)w->row);
+    for (;;) {
+        tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, &tr, &td, &pl);
+        do {
+            if (!tri_walk_next(w))
+                return;
+            tri_depth_step(&td, &pl);
+            tri_row_next(fr, &tr);
+        } while (!tri_walk_span(w, fr->r->width, &p1, &p2));
     }
 }
 #endif
@@ -1157,80 +1295,33 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
 static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint style, int use_z, stp_fix t,
                           uint32_t ordinal)
 {
-    const stp_instr *top, *mid, *bot;
-    int32_t r_first, r_last, r_mid, row, yc;
-    int ready = 0, direct = 0;
-    tri_edge lng, sht;
+    tri_walk w;
+    uint32_t p1, p2, width = fr->r->width;
+    if (!tri_walk_start(fr, v, &w))
+        return;
 #if STP_WITH_ZBUFFER
-    depth_plane pl;
-    tri_depth td;
-    tri_depth_clear(&td, &pl);
-#endif
-    tri_sort(v, &top, &mid, &bot);
-    if (bot->y <= fr->band_top || top->y >= fr->band_end)
-        return; /* not in the band */
-#if STP_WITH_ZBUFFER
-    if (use_z && fr->setup && ordinal != UINT32_MAX && top->y >= fr->band_top)
+    if (use_z && fr->setup && ordinal != UINT32_MAX && w.top->y >= fr->band_top)
         fr->setup[ordinal].centre[0] = SETUP_NOT_MADE; /* its first band: made at the first span */
+#endif
+    while (!tri_walk_span(&w, width, &p1, &p2))
+        if (!tri_walk_next(&w))
+            return; /* no pixel centre */
+#if STP_WITH_ZBUFFER
+    if (use_z) {
+        tri_draw_z(fr, at, v, style, t, ordinal, &w, p1, p2);
+        return;
+    }
 #else
     (void)use_z;
     (void)ordinal;
 #endif
-    /* rows whose centre lies in [top, bottom), in the band */
-    r_first = row_below(top->y);
-    r_last = row_below(bot->y) - 1;
-    r_mid = row_below(mid->y); /* the first row below mid's y */
-    if (r_first < (int32_t)fr->y0)
-        r_first = (int32_t)fr->y0;
-    if (r_last > (int32_t)(fr->y0 + fr->rows) - 1)
-        r_last = (int32_t)(fr->y0 + fr->rows) - 1;
-    if (r_first > r_last)
-        return;
-    yc = r_first * (1 << SUB) + HALF_PIXEL;
-    tri_edge_start(&lng, top, bot, yc);
-    if (r_first < r_mid)
-        tri_edge_start(&sht, top, mid, yc);
-    else
-        tri_edge_start(&sht, mid, bot, yc);
-    for (row = r_first;; row++) {
-        int32_t xl = tri_edge_x(lng.acc), xr = tri_edge_x(sht.acc);
-        uint32_t p1, p2;
-        if (xl > xr) {
-            int32_t x = xl;
-            xl = xr;
-            xr = x;
-        }
-        if (tri_span_pixels(xl, xr, fr->r->width, &p1, &p2)) {
-            if (!ready) {
-#if STP_WITH_ZBUFFER
-                if (use_z) {
-                    if (!depth_plane_for(fr, v, 3, ordinal, top->y, &pl))
-                        return; /* edge-on: no area on screen */
-                    tri_depth_start(&td, &pl, v, bot->y - top->y, yc);
-                }
-#endif
-                direct = paint_setup(fr, at, style, 0, t);
-                (void)direct; /* read by the Z buffer's spans only */
-                ready = 1;
-            }
-#if STP_WITH_ZBUFFER
-            if (use_z)
-                tri_span_z(fr, (uint32_t)row, p1, p2, style, t, direct, &td, &pl);
-            else
-#endif
-                paint_run(fr, (uint32_t)row, p1, p2, style, 0, 0, 0, t);
-        }
-        if (row == r_last)
-            return;
-        yc += 1 << SUB;
-        lng.acc += lng.step;
-        if (row + 1 == r_mid)
-            tri_edge_start(&sht, mid, bot, yc);
-        else
-            sht.acc += sht.step;
-#if STP_WITH_ZBUFFER
-        tri_depth_step(&td, &pl);
-#endif
+    (void)paint_setup(fr, at, style, 0, t);
+    for (;;) {
+        paint_run(fr, (uint32_t)w.row, p1, p2, style, 0, 0, 0, t);
+        do {
+            if (!tri_walk_next(&w))
+                return;
+        } while (!tri_walk_span(&w, width, &p1, &p2));
     }
 }
 #endif /* STP_WITH_TRIANGLE_PATH */
@@ -1456,12 +1547,14 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
         stp_fix t = 0;
         const stp_instr *pen = 0;
         uint32_t k;
+        /* whether this pass draws the polygons that follow (t as it stands) */
+        int draw = !skip_polygons && pass != 2;
         if (!seg->used || !seg->visible)
             continue;
         for (k = seg->start; k < seg->end; k++) {
             const stp_instr *in = &r->df[k];
             if (in->op >= 3) {
-                if (skip_polygons || !(pass == 0 || (pass == 1) == (t == 0)))
+                if (!draw)
                     ;
 #if STP_WITH_TRIANGLE_PATH
                 else if (in->op == 3 && triangle_path && !polygon_smooth(in) && TRIANGLE_NARROW(in))
@@ -1473,6 +1566,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
                 k += (uint32_t)in->op - 1;
             } else if (in->op == STP_OP_TRANSPARENCY) {
                 t = in->x;
+                draw = !skip_polygons && (pass == 0 || (pass == 1) == (t == 0));
             } else if (in->op == STP_OP_SHADE) {
                 style = paint_of(fr, in);
             } else if (in->op == STP_OP_LINE_STYLE) {
@@ -1782,11 +1876,34 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
 
 /* Band y0's rows cleared to the background and, with the Z buffer, its
  * entries where a polygon can reach set farther than any polygon. */
+/* A MONO1 band whose rows hold no padding bits (width 8 stride) cleared
+ * to a background whose pattern bytes (use_style) are one byte for every
+ * cell row: one fill of the whole band, what put_span would write row by
+ * row.  0 (nothing written) when the band is not so. */
+static int band_clear_uniform(frame *fr, const stp_port *drawn, paint background)
+{
+    size_t i, count = fr->stride * (size_t)fr->rows; /* below band_size */
+    uint32_t cy;
+    uint8_t pattern, *band = fr->band; /* a local: a byte store may alias fr */
+    if (drawn->format != STP_PIXEL_MONO1 || (size_t)fr->r->width != 8u * fr->stride)
+        return 0;
+    use_style(fr, background); /* patterns[] for the background, when mono_fill */
+    if (background != fr->pattern_style)
+        return 0;
+    pattern = fr->patterns[0];
+    for (cy = 1; cy < fr->cell->height; cy++)
+        if (fr->patterns[cy] != pattern)
+            return 0;
+    for (i = 0; i < count; i++) /* a counted loop: compilers make it memset */
+        band[i] = pattern;
+    return 1;
+}
+
 static void render_band_clear(frame *fr, const stp_port *drawn, stp_hidden hidden, paint background)
 {
     const stp_renderer *r = fr->r;
     uint32_t y, y0 = fr->y0;
-    for (y = y0; y < y0 + fr->rows; y++) {
+    for (y = band_clear_uniform(fr, drawn, background) ? y0 + fr->rows : y0; y < y0 + fr->rows; y++) {
         /* MONO1 padding bits past the width reach the port too: make
          * them 0 rather than whatever the caller's buffer held */
         if (drawn->format == STP_PIXEL_MONO1)

@@ -280,7 +280,7 @@ STP_HOT_INLINE int stp_render_point_to_view(const stp_renderer *r, stp_vec3 p, s
 {
     if (r->geometry == STP_GEOMETRY_TWO_STEPS)
         return stp_render_point_two_steps(r, p, out);
-    stp_view_transform_point(&r->point_view, p, out);
+    STP_VIEW_TRANSFORM_POINT(&r->point_view, p, out); /* inline where 64-bit products are */
     return 0;
 }
 
@@ -308,16 +308,19 @@ STP_HOT_INLINE int stp_render_face_side(const stp_model_frame *f, const int16_t 
  * product Q15 x Q14, the sum below 2^29 (1 + rounding), to Q14 rounded
  * (floor of the sum plus a half: >> of a negative value is
  * implementation-defined, so the shift is taken on a value made positive). */
+STP_HOT_INLINE int16_t stp_render_view_normal_row(const int32_t row[3], const int16_t n[3], int side)
+{
+    int32_t s = row[0] * n[0] + row[1] * n[1] + row[2] * n[2] + ((int32_t)1 << 14);
+    s = (int32_t)(((uint32_t)s + ((uint32_t)1 << 30)) >> 15) - ((int32_t)1 << 15);
+    return (int16_t)(side > 0 ? s : -s);
+}
+
 STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16_t n[3], int side,
                                            int16_t nv[3])
 {
-    int i;
-    for (i = 0; i < 3; i++) {
-        int32_t s = f->rot[i][0] * n[0] + f->rot[i][1] * n[1] + f->rot[i][2] * n[2] +
-                    ((int32_t)1 << 14);
-        s = (int32_t)(((uint32_t)s + ((uint32_t)1 << 30)) >> 15) - ((int32_t)1 << 15);
-        nv[i] = (int16_t)(side > 0 ? s : -s);
-    }
+    nv[0] = stp_render_view_normal_row(f->rot[0], n, side);
+    nv[1] = stp_render_view_normal_row(f->rot[1], n, side);
+    nv[2] = stp_render_view_normal_row(f->rot[2], n, side);
 }
 
 /* A flat face's INTENSITY style (1..levels) with shading on (its shade by

@@ -260,25 +260,9 @@ int stp_model_frame_make(const stp_view_transform *t, stp_vec3 from, const stp_t
 }
 
 #if STP_WIDE_ARITH
-/* floor(v / 2^F), saturated, for |v| < 2^62: the offset makes the shifted
- * value non-negative (a right shift of a negative value is the
- * implementation's), and 2^62 is a multiple of 2^F, so the floor is exact */
-static stp_fix floor_shift_sat(int64_t v)
-{
-    return stp_fix_sat64(((v + ((int64_t)1 << 62)) >> F) - ((int64_t)1 << (62 - F)));
-}
-
 void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out)
 {
-    /* (p - from) . axis = p . axis - from . axis, exactly in 64 bits: each
-     * product < 2^47, so the sums stay below 2^50; p - from itself may
-     * exceed stp_fix's range */
-    out->x = floor_shift_sat((int64_t)p.x * t->right.x + (int64_t)p.y * t->right.y +
-                             (int64_t)p.z * t->right.z - t->from_right);
-    out->y = floor_shift_sat((int64_t)p.x * t->up.x + (int64_t)p.y * t->up.y +
-                             (int64_t)p.z * t->up.z - t->from_up);
-    out->z = floor_shift_sat((int64_t)p.x * t->forward.x + (int64_t)p.y * t->forward.y +
-                             (int64_t)p.z * t->forward.z - t->from_forward);
+    stp_view_transform_point_wide(t, p, out); /* view_private.h */
 }
 #else
 /* floor(v / 2^16) (>> of a negative value is the implementation's: the

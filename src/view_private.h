@@ -6,6 +6,8 @@
 
 #include "stipple/render.h"
 #include "stipple/transform.h"
+#include "fix_private.h"   /* stp_fix_sat64 */
+#include "arith_private.h" /* STP_WIDE_ARITH, STP_HOT_INLINE */
 
 /* A view turned into what both renderers use: an orthonormal left-handed
  * basis (unit stp_vec3: x right, y up, z forward along the line of sight),
@@ -51,6 +53,36 @@ void stp_view_transform_of_axes(stp_vec3 right, stp_vec3 up, stp_vec3 forward, s
 
 /* p (world) in view coordinates, each floor((p - from) . axis), saturated. */
 void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out);
+
+#if STP_WIDE_ARITH
+/* stp_view_transform_point where 64-bit products are single instructions,
+ * inline for the entry's per-vertex use (view.c's function is this).
+ * stp_view_floor_shift_sat: floor(v / 2^F), saturated, for |v| < 2^62: the
+ * offset makes the shifted value non-negative (a right shift of a negative
+ * value is the implementation's), and 2^62 is a multiple of 2^F, so the
+ * floor is exact. */
+STP_HOT_INLINE stp_fix stp_view_floor_shift_sat(int64_t v)
+{
+    return stp_fix_sat64(((v + ((int64_t)1 << 62)) >> STP_FIX_FRAC_BITS) -
+                         ((int64_t)1 << (62 - STP_FIX_FRAC_BITS)));
+}
+
+STP_HOT_INLINE void stp_view_transform_point_wide(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out)
+{
+    /* (p - from) . axis = p . axis - from . axis, exactly in 64 bits: each
+     * product < 2^47, so the sums stay below 2^50; p - from itself may
+     * exceed stp_fix's range */
+    out->x = stp_view_floor_shift_sat((int64_t)p.x * t->right.x + (int64_t)p.y * t->right.y +
+                                      (int64_t)p.z * t->right.z - t->from_right);
+    out->y = stp_view_floor_shift_sat((int64_t)p.x * t->up.x + (int64_t)p.y * t->up.y +
+                                      (int64_t)p.z * t->up.z - t->from_up);
+    out->z = stp_view_floor_shift_sat((int64_t)p.x * t->forward.x + (int64_t)p.y * t->forward.y +
+                                      (int64_t)p.z * t->forward.z - t->from_forward);
+}
+#define STP_VIEW_TRANSFORM_POINT stp_view_transform_point_wide
+#else
+#define STP_VIEW_TRANSFORM_POINT stp_view_transform_point
+#endif
 
 /* ---- the geometry stage: model coordinates to view coordinates ----
  *
