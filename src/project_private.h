@@ -82,17 +82,63 @@ static inline int32_t stp_project_subpixel(int negative, uint32_t q)
     return negative ? -(int32_t)((q + ((1u << shift) - 1u)) >> shift) : (int32_t)(q >> shift);
 }
 
+#if !STP_HAVE_MUL32
+/* floor(f m / z) exactly for f, m < 2^31 and 0 < z < 2^29, without a
+ * 32-bit product (AVR: each is a library call, and the reciprocal's 64-bit
+ * products are four more): f m = hi 2^32 + lo from four 16 x 16-bit
+ * products, then restoring division, one quotient bit a step.  The
+ * quotient is below 2^31 exactly when floor(f m / 2^31) = 2 hi + (lo's top
+ * bit) is below z (f m < 2^62: below 2^31); the remainder r then stays
+ * below z < 2^29, so 2 r + 1 fits.  0 when the quotient is 2^31 or more
+ * (stp_project_quotient's cases: the same values). */
+static inline int stp_project_divide(uint32_t f, uint32_t m, uint32_t z, uint32_t *q)
+{
+    uint16_t fl = (uint16_t)f, fh = (uint16_t)(f >> 16), ml = (uint16_t)m, mh = (uint16_t)(m >> 16);
+    uint32_t ll = (uint32_t)fl * ml, lh = (uint32_t)fl * mh, hl = (uint32_t)fh * ml;
+    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    uint32_t lo = (mid << 16) | (ll & 0xFFFFu), r, e = 0;
+    uint8_t i;
+    r = (uint32_t)fh * mh + (lh >> 16) + (hl >> 16) + (mid >> 16); /* hi < 2^30 */
+    r = (r << 1) | (lo >> 31);
+    if (r >= z)
+        return 0;
+    for (i = 0; i < 31u; i++) {
+        lo <<= 1;
+        r = (r << 1) | (lo >> 31);
+        e <<= 1;
+        if (r >= z) {
+            r -= z;
+            e |= 1u;
+        }
+    }
+    *q = e;
+    return 1;
+}
+#endif
+
 /* The 32-bit form (z already raised to hither): 1 on success, 0 when z or
  * a quotient is out of its range (then the 64-bit quotients). */
 static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, const stp_vec3 *p, int32_t *x, int32_t *y,
                                     int32_t *key)
 {
     uint32_t mx = p->x < 0 ? 0u - (uint32_t)p->x : (uint32_t)p->x;
-    uint32_t my = p->y < 0 ? 0u - (uint32_t)p->y : (uint32_t)p->y, qx, qy, qk, w, wh, v;
+    uint32_t my = p->y < 0 ? 0u - (uint32_t)p->y : (uint32_t)p->y, qx, qy, qk;
+#if STP_HAVE_MUL32
+    uint32_t w, wh, v;
     int sz, sh, shh;
+#endif
     if (z >= ((uint32_t)1 << 29) || mx >= 0x80000000u || my >= 0x80000000u || f >= 0x80000000u ||
         h >= 0x80000000u)
         return 0;
+#if !STP_HAVE_MUL32
+    if (!stp_project_divide(f, mx, z, &qx) || !stp_project_divide(f, my, z, &qy))
+        return 0;
+    if (key) {
+        if (!stp_project_divide(h, (uint32_t)1 << 30, z, &qk))
+            return 0;
+        *key = (int32_t)qk;
+    }
+#else
     sz = 32 - stp_bit_length32(z);
     v = stp_recip32(z << sz);
     stp_project_scale(f, v, sz, &w, &sh);
@@ -104,6 +150,7 @@ static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, const st
             return 0;
         *key = (int32_t)qk;
     }
+#endif
     *x = stp_project_subpixel(p->x < 0, qx);
     *y = stp_project_subpixel(p->y < 0, qy);
     return 1;
