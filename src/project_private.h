@@ -85,33 +85,50 @@ static inline int32_t stp_project_subpixel(int negative, uint32_t q)
 #if !STP_HAVE_MUL32
 /* floor(f m / z) exactly for f, m < 2^31 and 0 < z < 2^29, without a
  * 32-bit product (AVR: each is a library call, and the reciprocal's 64-bit
- * products are four more): f m = hi 2^32 + lo from four 16 x 16-bit
- * products, then restoring division, one quotient bit a step.  The
- * quotient is below 2^31 exactly when floor(f m / 2^31) = 2 hi + (lo's top
- * bit) is below z (f m < 2^62: below 2^31); the remainder r then stays
- * below z < 2^29, so 2 r + 1 fits.  0 when the quotient is 2^31 or more
- * (stp_project_quotient's cases: the same values). */
+ * products are four more): restoring division of f m, whose bits come
+ * from a shift-and-add product over m's bits, one quotient bit a step.
+ * The quotient is below 2^31 exactly when floor(f m / 2^31) is below z
+ * (f m < 2^62); the remainder r then stays below z < 2^29, so 2 r + 1
+ * fits.  0 when the quotient is 2^31 or more (stp_project_quotient's
+ * cases: the same values). */
 static inline int stp_project_divide(uint32_t f, uint32_t m, uint32_t z, uint32_t *q)
 {
-    uint16_t fl = (uint16_t)f, fh = (uint16_t)(f >> 16), ml = (uint16_t)m, mh = (uint16_t)(m >> 16);
-    uint32_t ll = (uint32_t)fl * ml, lh = (uint32_t)fl * mh, hl = (uint32_t)fh * ml;
-    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
-    uint32_t lo = (mid << 16) | (ll & 0xFFFFu), r, e = 0;
+    uint32_t hi = 0, lo = 0;
     uint8_t i;
-    r = (uint32_t)fh * mh + (lh >> 16) + (hl >> 16) + (mid >> 16); /* hi < 2^30 */
-    r = (r << 1) | (lo >> 31);
-    if (r >= z)
+    /* hi 2^32 + lo = f m (bit tests and carries rather than shifts of
+     * the top bit: the short code on an 8-bit core) */
+    for (i = 0; i < 32u; i++) {
+        hi <<= 1;
+        if (lo & 0x80000000u)
+            hi |= 1u;
+        lo <<= 1;
+        if (m & 0x80000000u) {
+            lo += f;
+            if (lo < f)
+                hi++;
+        }
+        m <<= 1;
+    }
+    /* hi = floor(f m / 2^31), lo the other 31 bits at its top: each step
+     * moves one into the remainder and the quotient bit into lo's bottom,
+     * so after 31 steps lo is the quotient */
+    hi <<= 1;
+    if (lo & 0x80000000u)
+        hi |= 1u;
+    lo <<= 1;
+    if (hi >= z)
         return 0;
     for (i = 0; i < 31u; i++) {
+        hi <<= 1;
+        if (lo & 0x80000000u)
+            hi |= 1u;
         lo <<= 1;
-        r = (r << 1) | (lo >> 31);
-        e <<= 1;
-        if (r >= z) {
-            r -= z;
-            e |= 1u;
+        if (hi >= z) {
+            hi -= z;
+            lo |= 1u;
         }
     }
-    *q = e;
+    *q = lo;
     return 1;
 }
 #endif
