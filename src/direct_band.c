@@ -23,11 +23,11 @@
 #define SUB 4
 #define HALF (1 << (SUB - 1))
 
-/* floor(v / 16) for any int (C leaves >> of a negative value to the
- * implementation: the complement form, which compilers fold to one
- * arithmetic shift, as stp_direct_asr) */
+/* floor(v / 16) for any int (as stp_direct_asr) */
 static int floor16(int v)
 {
+    if (-1 >> 1 == -1)
+        return v >> SUB;
     return v >= 0 ? v >> SUB : (int)~(~(unsigned)v >> SUB);
 }
 
@@ -52,7 +52,7 @@ typedef struct band_edge {
 /* Edge a - b into *e, its crossings from row y_first on; 0 when no row
  * centre at or below y_first crosses it.  The slope's division is the
  * only one per edge (setup, not per pixel). */
-static int edge_make(band_edge *e, const stp_direct_point *a, const stp_direct_point *b, int y_first)
+STP_DIRECT_CALL int edge_make(band_edge *e, const stp_direct_point *a, const stp_direct_point *b, int y_first)
 {
     int xa = a->dx, ya = a->dy, xb = b->dx, yb = b->dy, dx, y0;
     int32_t slope;
@@ -92,7 +92,7 @@ static uint8_t pattern_of(const uint8_t *cell, int y, uint8_t intensity)
  * starts at band + (r / 8) stride, its bit 1 << (r mod 8) (STP_BAND_PAGES,
  * y_top a multiple of 8).  A row centre inside the face lies on exactly
  * two of its edges' half-open row ranges, one outside on none. */
-static void draw_face(const stp_direct_frame *f, const stp_direct_point *p[3], uint8_t intensity,
+STP_DIRECT_CALL void draw_face(const stp_direct_frame *f, const stp_direct_point *p[3], uint8_t intensity,
                       uint8_t *band, size_t stride, int page_shift, int y_top, int y_bottom)
 {
     band_edge e[3];
