@@ -40,7 +40,7 @@
 /* v m / 2^14 (file comment: vmul) */
 STP_DIRECT_CALL int32_t vmul(int32_t v, int16_t m)
 {
-    int16_t high = (int16_t)stp_direct_asr(v, Q14), low = (int16_t)(v & 0x3FFF);
+    int_fast16_t high = (int_fast16_t)stp_direct_asr(v, Q14), low = (int_fast16_t)(v & 0x3FFF);
     return (int32_t)high * m + stp_direct_asr((int32_t)low * m, Q14);
 }
 
@@ -193,8 +193,8 @@ STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const int16_t m[3]
 STP_DIRECT_CALL int32_t third(int32_t a, int32_t b, int32_t c)
 {
     int32_t s = a + b + c;
-    int16_t high = (int16_t)stp_direct_asr(s, 16); /* below 2^12 */
-    uint16_t low = (uint16_t)((uint32_t)s & 0xFFFFu);
+    int_fast16_t high = (int_fast16_t)stp_direct_asr(s, 16); /* below 2^12 */
+    uint_fast16_t low = (uint_fast16_t)((uint32_t)s & 0xFFFFu);
     return (int32_t)high * 21846 + (int32_t)((uint32_t)low * 21846u >> 16);
 }
 

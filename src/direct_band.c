@@ -23,11 +23,14 @@
 #define SUB 4
 #define HALF (1 << (SUB - 1))
 
-/* floor(v / 16) for any int (as stp_direct_asr) */
+/* floor(v / 16) for any int (as stp_direct_asr; on 32-bit cores the
+ * complement form, which gcc folds and schedules better there) */
 static int floor16(int v)
 {
+#if !STP_HAVE_MUL32
     if (-1 >> 1 == -1)
         return v >> SUB;
+#endif
     return v >= 0 ? v >> SUB : (int)~(~(unsigned)v >> SUB);
 }
 
