@@ -133,29 +133,44 @@ static inline int stp_project_divide(uint32_t f, uint32_t m, uint32_t z, uint32_
 }
 #endif
 
+#if !STP_HAVE_MUL32
+/* One offset of the 32-bit form without a 32-bit multiply:
+ * stp_project_subpixel of floor(f |c| / z); 0 when |c| or the quotient is
+ * 2^31 or more. */
+static inline int stp_project_offset(uint32_t f, int32_t c, uint32_t z, int32_t *out)
+{
+    uint32_t m = c < 0 ? 0u - (uint32_t)c : (uint32_t)c, q;
+    if (m >= 0x80000000u || !stp_project_divide(f, m, z, &q))
+        return 0;
+    *out = stp_project_subpixel(c < 0, q);
+    return 1;
+}
+#endif
+
 /* The 32-bit form (z already raised to hither): 1 on success, 0 when z or
- * a quotient is out of its range (then the 64-bit quotients). */
+ * a quotient is out of its range (then the 64-bit quotients; *x, *y and
+ * *key may have been written). */
 static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, const stp_vec3 *p, int32_t *x, int32_t *y,
                                     int32_t *key)
 {
-    uint32_t mx = p->x < 0 ? 0u - (uint32_t)p->x : (uint32_t)p->x;
-    uint32_t my = p->y < 0 ? 0u - (uint32_t)p->y : (uint32_t)p->y, qx, qy, qk;
-#if STP_HAVE_MUL32
-    uint32_t w, wh, v;
-    int sz, sh, shh;
-#endif
-    if (z >= ((uint32_t)1 << 29) || mx >= 0x80000000u || my >= 0x80000000u || f >= 0x80000000u ||
-        h >= 0x80000000u)
-        return 0;
 #if !STP_HAVE_MUL32
-    if (!stp_project_divide(f, mx, z, &qx) || !stp_project_divide(f, my, z, &qy))
+    uint32_t qk;
+    if (z >= ((uint32_t)1 << 29) || f >= 0x80000000u || h >= 0x80000000u ||
+        !stp_project_offset(f, p->x, z, x) || !stp_project_offset(f, p->y, z, y))
         return 0;
     if (key) {
         if (!stp_project_divide(h, (uint32_t)1 << 30, z, &qk))
             return 0;
         *key = (int32_t)qk;
     }
+    return 1;
 #else
+    uint32_t mx = p->x < 0 ? 0u - (uint32_t)p->x : (uint32_t)p->x;
+    uint32_t my = p->y < 0 ? 0u - (uint32_t)p->y : (uint32_t)p->y, qx, qy, qk, w, wh, v;
+    int sz, sh, shh;
+    if (z >= ((uint32_t)1 << 29) || mx >= 0x80000000u || my >= 0x80000000u || f >= 0x80000000u ||
+        h >= 0x80000000u)
+        return 0;
     sz = 32 - stp_bit_length32(z);
     v = stp_recip32(z << sz);
     stp_project_scale(f, v, sz, &w, &sh);
@@ -167,10 +182,10 @@ static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, const st
             return 0;
         *key = (int32_t)qk;
     }
-#endif
     *x = stp_project_subpixel(p->x < 0, qx);
     *y = stp_project_subpixel(p->y < 0, qy);
     return 1;
+#endif
 }
 #endif
 
