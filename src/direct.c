@@ -216,19 +216,41 @@ stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal
     return stp_shade_fast_face(&s->fast, nv, centre); /* [0, 1] */
 }
 
-/* The intensity byte of a front face: the shade, INTENSITY, the linear
+/* Twice the signed screen area of p (y down): differences below 2^14,
+ * products below 2^28; a front face turns counter-clockwise seen from the
+ * eye, clockwise in device coordinates (area < 0). */
+STP_DIRECT_CALL int32_t screen_area(const stp_direct_point *const p[3])
+{
+    int ax = p[1]->dx - p[0]->dx, ay = p[1]->dy - p[0]->dy;
+    int bx = p[2]->dx - p[0]->dx, by = p[2]->dy - p[0]->dy;
+    return (int32_t)ax * by - (int32_t)ay * bx;
+}
+
+/* faces[k] of triangle tri (corner indices into points) with normal: 0
+ * for a back or edge-on face, else 256 + the intensity byte of the front
+ * face: the shade, INTENSITY, the linear
  * drive value floor((k 255 + d / 2) / d) of index k + 1, d = levels - 1
  * (output.c's stp_output_level), as (n m) >> 24 with m = ceil(2^24 / d)
  * (drive_m, once per frame): n = k 255 + d / 2 <= 255.5 d, so n m <
  * 255.5 2^24 + n < 2^32, and the excess n (m d - 2^24) / (d 2^24) stays
  * below 1 / d (n (m d - 2^24) < 255.5 d^2 <= 255.5 254^2 < 2^24): the
  * quotient exactly, without a division per face. */
-static uint16_t face_intensity(const stp_direct_shading *s, const int16_t *normal,
-                               const stp_direct_point *const p[3], int levels, uint32_t drive_m)
+STP_DIRECT_CALL uint16_t face_intensity(const stp_direct_shading *s, const int16_t *normal,
+                                        const stp_direct_point *points, const uint16_t *tri, unsigned levels,
+                                        uint32_t drive_m)
 {
-    stp_fix shade = stp_direct_face_shade(s, normal, p);
-    uint32_t index = ((uint32_t)shade * (uint32_t)(levels - 1)) >> F; /* index - 1 */
-    return (uint16_t)(256u + (((index * 255u + (uint32_t)(levels - 1) / 2u) * drive_m) >> 24));
+    const stp_direct_point *p[3];
+    stp_fix shade;
+    unsigned d = levels - 1u;
+    uint32_t index;
+    p[0] = &points[tri[0]];
+    p[1] = &points[tri[1]];
+    p[2] = &points[tri[2]];
+    if (screen_area(p) >= 0)
+        return 0; /* a back face */
+    shade = stp_direct_face_shade(s, normal, p);
+    index = ((uint32_t)shade * d) >> F; /* index - 1, at most d */
+    return (uint16_t)(256u + (((index * 255u + d / 2u) * drive_m) >> 24));
 }
 
 /* Every corner of the mesh's triangles indexes one of its vertices;
@@ -257,15 +279,6 @@ static int check_args(const stp_direct_frame *f, const stp_mesh *mesh, const stp
     return STP_OK;
 }
 
-/* Twice the signed screen area of p (y down): differences below 2^14,
- * products below 2^28; a front face turns counter-clockwise seen from the
- * eye, clockwise in device coordinates (area < 0). */
-STP_DIRECT_CALL int32_t screen_area(const stp_direct_point *const p[3])
-{
-    int ax = p[1]->dx - p[0]->dx, ay = p[1]->dy - p[0]->dy;
-    int bx = p[2]->dx - p[0]->dx, by = p[2]->dy - p[0]->dy;
-    return (int32_t)ax * by - (int32_t)ay * bx;
-}
 
 int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const stp_direct_model *model,
                              const stp_direct_view *view, const stp_direct_light *light, int levels,
@@ -304,13 +317,8 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
             return STP_ERR_RANGE;
     tri = mesh->triangles;
     normal = mesh->normals;
-    for (k = 0; k < mesh->triangle_count; k++, tri += 3, normal += 3) {
-        const stp_direct_point *p[3];
-        p[0] = &points[tri[0]];
-        p[1] = &points[tri[1]];
-        p[2] = &points[tri[2]];
-        faces[k] = screen_area(p) < 0 ? face_intensity(&shading, normal, p, levels, drive_m) : 0;
-    }
+    for (k = 0; k < mesh->triangle_count; k++, tri += 3, normal += 3)
+        faces[k] = face_intensity(&shading, normal, points, tri, (unsigned)levels, drive_m);
     f->mesh = mesh;
     f->points = points;
     f->faces = faces;
