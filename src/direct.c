@@ -38,7 +38,7 @@
 #define DEVICE_LIMIT 8192
 
 /* v m / 2^14 (file comment: vmul) */
-STP_DIRECT_CALL int32_t vmul(int32_t v, int16_t m)
+static int32_t vmul(int32_t v, int16_t m)
 {
     int_fast16_t high = (int_fast16_t)stp_direct_asr(v, Q14), low = (int_fast16_t)(v & 0x3FFF);
     return (int32_t)high * m + stp_direct_asr((int32_t)low * m, Q14);
@@ -133,7 +133,7 @@ static int light_ok(const stp_direct_light *l)
 /* Device position (Q4) of view point p with p[2] >= hither > 0 by the one
  * perspective projection (view.c, the renderer's); 0 when it falls
  * outside the device range. */
-STP_DIRECT_CALL int project_point(const stp_direct_view *view, stp_direct_point *pt)
+static int project_point(const stp_direct_view *view, stp_direct_point *pt)
 {
     stp_vec3 p;
     int32_t c[2];
@@ -190,7 +190,7 @@ STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const int16_t m[3]
 /* The sum of three view coordinates (each below 2^26) over 3 as
  * floor(s / 2^16) 21846 + (s mod 2^16) 21846 / 2^16: relative error below
  * 2^-15 (21846 / 2^16 for 1/3), enough for the point a face is shaded at. */
-STP_DIRECT_CALL int32_t third(int32_t a, int32_t b, int32_t c)
+static int32_t third(int32_t a, int32_t b, int32_t c)
 {
     int32_t s = a + b + c;
     int_fast16_t high = (int_fast16_t)stp_direct_asr(s, 16); /* below 2^12 */
@@ -219,7 +219,7 @@ stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal
 /* Twice the signed screen area of p (y down): differences below 2^14,
  * products below 2^28; a front face turns counter-clockwise seen from the
  * eye, clockwise in device coordinates (area < 0). */
-STP_DIRECT_CALL int32_t screen_area(const stp_direct_point *const p[3])
+static int32_t screen_area(const stp_direct_point *const p[3])
 {
     int ax = p[1]->dx - p[0]->dx, ay = p[1]->dy - p[0]->dy;
     int bx = p[2]->dx - p[0]->dx, by = p[2]->dy - p[0]->dy;

@@ -95,7 +95,7 @@ static uint8_t pattern_of(const uint8_t *cell, int y, uint8_t intensity)
  * starts at band + (r / 8) stride, its bit 1 << (r mod 8) (STP_BAND_PAGES,
  * y_top a multiple of 8).  A row centre inside the face lies on exactly
  * two of its edges' half-open row ranges, one outside on none. */
-STP_DIRECT_CALL void draw_face(const stp_direct_frame *f, const stp_direct_point *p[3], uint8_t intensity,
+static void draw_face(const stp_direct_frame *f, const stp_direct_point *p[3], uint8_t intensity,
                       uint8_t *band, size_t stride, int page_shift, int y_top, int y_bottom)
 {
     band_edge e[3];
