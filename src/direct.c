@@ -79,7 +79,7 @@ STP_DIRECT_CALL void to_view(const stp_direct_view *view, const int32_t d[3], in
 /* The face shader's prepared form for one light (shade_fast.c's
  * stp_shade_fast_prepare, the one every route uses), eye at the view
  * origin, no highlight.  light_view: the light in view coordinates. */
-static void shade_prepare(stp_shade_fast *s, const stp_direct_light *l, const int32_t light_view[3])
+STP_DIRECT_CALL void shade_prepare(stp_shade_fast *s, const stp_direct_light *l, const int32_t light_view[3])
 {
     stp_lighting lighting;
     stp_material material;
