@@ -28,10 +28,11 @@ static inline uint32_t stp_direct_abs(int32_t v)
  * Cortex-M image), where each inlined copy of its 32-bit arithmetic costs
  * more than the call; inlined as the compiler likes otherwise. */
 #if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
-#define STP_DIRECT_CALL static __attribute__((noinline))
+#define STP_DIRECT_KEEP __attribute__((noinline))
 #else
-#define STP_DIRECT_CALL static
+#define STP_DIRECT_KEEP
 #endif
+#define STP_DIRECT_CALL static STP_DIRECT_KEEP
 
 /* floor(n / d) for d >= 1: shift-and-subtract over the quotient's bits
  * (no library call, no table: setup code only, never per pixel). */
