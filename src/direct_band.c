@@ -25,7 +25,7 @@
 
 /* floor(v / 16) for any int (as stp_direct_asr; on 32-bit cores the
  * complement form, which gcc folds and schedules better there) */
-static int floor16(int v)
+STP_DIRECT_CALL int floor16(int v)
 {
 #if !STP_HAVE_MUL32
     if (-1 >> 1 == -1)
@@ -82,7 +82,7 @@ STP_DIRECT_CALL int edge_make(band_edge *e, const stp_direct_point *a, const stp
 
 /* The byte of cell row (y mod 4) at intensity: bit 7 - x ON where
  * intensity > threshold (x mod 4), repeated. */
-static uint8_t pattern_of(const uint8_t *cell, int y, uint8_t intensity)
+STP_DIRECT_CALL uint8_t pattern_of(const uint8_t *cell, int y, uint8_t intensity)
 {
     const uint8_t *t = &cell[(y & 3) * 4];
     unsigned p = (unsigned)(intensity > t[0]) << 3 | (unsigned)(intensity > t[1]) << 2 |
