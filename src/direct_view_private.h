@@ -7,6 +7,8 @@
 
 #include <stdint.h>
 
+#include "arith_private.h" /* STP_HAVE_MUL32 */
+
 /* floor(v / 2^s) for any int32 v, 0 <= s <= 31.  C leaves >> of a
  * negative value to the implementation: where it is the arithmetic shift
  * (every compiler the project builds with; the test folds away) that
@@ -24,10 +26,12 @@ static inline uint32_t stp_direct_abs(int32_t v)
     return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
 }
 
-/* A small helper kept a call in builds for size (-Os: AVR, the lean
- * Cortex-M image), where each inlined copy of its 32-bit arithmetic costs
- * more than the call; inlined as the compiler likes otherwise. */
-#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+/* A small helper kept a call in builds for size (-Os) on cores without a
+ * 32-bit multiply (AVR), where each inlined copy of its 32-bit arithmetic
+ * costs more than the call (measured one by one on the Uno image); inlined
+ * as the compiler likes elsewhere (on a Cortex-M0+ the calls cost more
+ * than they save). */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__) && !STP_HAVE_MUL32
 #define STP_DIRECT_KEEP __attribute__((noinline))
 #else
 #define STP_DIRECT_KEEP
