@@ -17,8 +17,8 @@
  *              below 2^24: |.| < 2^26
  *   projection the one perspective projection (view.c's
  *              stp_view_perspective, the renderer's): floor(trunc(focal x
- *              / z) 2^-12) in Q4 exactly, from one 32-bit reciprocal of z
- *              (z in [hither, 2^26) is below 2^29: the 32-bit form,
+ *              / z) 2^-12) in Q4 exactly (a reciprocal of z, or on AVR
+ *              restoring division; z in [hither, 2^26): the 32-bit form,
  *              project_private.h's stp_project_exact, alone on targets
  *              without STP_WIDE_ARITH: its 64-bit fallback could only
  *              give points beyond the device range)
