@@ -4,17 +4,21 @@
  *
  * Formats (ranges as direct.h states them):
  *   composite  C = V R (view axes times the model rotation), Q1.14 rows:
- *              each sum of three Q28 products below 3 2^28, rounded to
- *              Q14; M = C scale, Q1.14 with |m| < 2^15 (scale < 2)
- *   vmul       v m / 2^14 for |v| < 2^23 and |m| < 2^15 as
- *              floor(v / 2^14) m + floor((v mod 2^14) m / 2^14): the
- *              products below 2^24 and 2^29
+ *              each sum of three Q28 products (16 x 16-bit) below 3 2^28,
+ *              rounded to Q14; M = C scale, Q1.14 in int16_t: the scale in
+ *              Q14 is below 2^15 (scale < 2) and |C| exceeds 1 only by
+ *              rounding, so |M| exceeds 32767 only within 2^-12 of scale 2,
+ *              where it is saturated to +-32767 (a relative error below
+ *              2^-12 in that one entry)
+ *   vmul       v m / 2^14 for |v| < 2^23 and int16_t m as
+ *              floor(v / 2^14) m + floor((v mod 2^14) m / 2^14): two
+ *              16 x 16-bit products, below 2^24 and 2^29
  *   view       M v + V (t - from): three vmul below 2^24 each plus one
  *              below 2^24: |.| < 2^26
  *   projection the one perspective projection (view.c's
  *              stp_view_perspective, the renderer's): floor(trunc(focal x
- *              / z) 2^-12) in Q4 exactly, from one 32-bit reciprocal of z
- *              (z in [hither, 2^26) is below 2^29: the 32-bit form,
+ *              / z) 2^-12) in Q4 exactly (a reciprocal of z, or on AVR
+ *              restoring division; z in [hither, 2^26): the 32-bit form,
  *              project_private.h's stp_project_exact, alone on targets
  *              without STP_WIDE_ARITH: its 64-bit fallback could only
  *              give points beyond the device range)
@@ -34,29 +38,48 @@
 #define DEVICE_LIMIT 8192
 
 /* v m / 2^14 (file comment: vmul) */
-static int32_t vmul(int32_t v, int32_t m)
+static int32_t vmul(int32_t v, int16_t m)
 {
-    return stp_direct_asr(v, Q14) * m + stp_direct_asr((v & 0x3FFF) * m, Q14);
+    int_fast16_t high = (int_fast16_t)stp_direct_asr(v, Q14), low = (int_fast16_t)(v & 0x3FFF);
+    return (int32_t)high * m + stp_direct_asr((int32_t)low * m, Q14);
 }
 
-static int outside(int32_t v)
+/* sum of vmul(v_j, m_j): below 3 2^24 */
+STP_DIRECT_CALL int32_t dot3(const int32_t v[3], const int16_t m[3])
 {
-    return v >= COORD_LIMIT || v <= -COORD_LIMIT;
+    int32_t s = 0;
+    int j;
+    for (j = 0; j < 3; j++)
+        s += vmul(v[j], m[j]);
+    return s;
+}
+
+/* d = a - b; 0 when a component is not below 2^23 in magnitude. */
+STP_DIRECT_CALL int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
+{
+    int j;
+    d[0] = a->x - b->x;
+    d[1] = a->y - b->y;
+    d[2] = a->z - b->z;
+    for (j = 0; j < 3; j++)
+        if (d[j] >= COORD_LIMIT || d[j] <= -COORD_LIMIT)
+            return 0;
+    return 1;
 }
 
 /* The view coordinates of world-space difference d (|d_i| < 2^23); out
  * must not be d. */
-static void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out[3])
+STP_DIRECT_CALL void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out[3])
 {
     int i;
     for (i = 0; i < 3; i++)
-        out[i] = vmul(d[0], view->axis[i][0]) + vmul(d[1], view->axis[i][1]) + vmul(d[2], view->axis[i][2]);
+        out[i] = dot3(d, view->axis[i]);
 }
 
 /* The face shader's prepared form for one light (shade_fast.c's
  * stp_shade_fast_prepare, the one every route uses), eye at the view
  * origin, no highlight.  light_view: the light in view coordinates. */
-static void shade_prepare(stp_shade_fast *s, const stp_direct_light *l, const int32_t light_view[3])
+STP_DIRECT_CALL void shade_prepare(stp_shade_fast *s, const stp_direct_light *l, const int32_t light_view[3])
 {
     stp_lighting lighting;
     stp_material material;
@@ -83,30 +106,28 @@ int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_view *vie
                                const stp_direct_model *model, const stp_direct_light *light)
 {
     int32_t d[3], lv[3];
-    int i, j;
+    int i, j, k;
     for (i = 0; i < 3; i++)
         for (j = 0; j < 3; j++) {
             /* three Q28 products: below 3 2^28 */
-            int32_t c = (int32_t)view->axis[i][0] * model->rot[0][j] +
-                        (int32_t)view->axis[i][1] * model->rot[1][j] + (int32_t)view->axis[i][2] * model->rot[2][j];
-            s->rot[i][j] = (int16_t)stp_direct_asr(c + ((int32_t)1 << (Q14 - 1)), Q14);
+            int32_t c = (int32_t)1 << (Q14 - 1);
+            for (k = 0; k < 3; k++)
+                c += (int32_t)view->axis[i][k] * model->rot[k][j];
+            s->rot[i][j] = (int16_t)stp_direct_asr(c, Q14);
         }
-    d[0] = light->position.x - view->from.x;
-    d[1] = light->position.y - view->from.y;
-    d[2] = light->position.z - view->from.z;
-    for (i = 0; i < 3; i++)
-        if (outside(d[i]))
-            return 0;
+    if (!difference(&light->position, &view->from, d))
+        return 0;
     to_view(view, d, lv);
     shade_prepare(&s->fast, light, lv);
     return 1;
 }
 
+/* The light's values in their ranges (direct.h), each one unsigned
+ * comparison: a negative value converts to 2^31 or more. */
 static int light_ok(const stp_direct_light *l)
 {
-    return l->power >= 0 && l->power < 256 * ONE && l->brightness >= 0 &&
-           l->brightness < 256 * ONE && l->background >= 0 && l->background <= ONE &&
-           l->reflectivity >= 0 && l->reflectivity <= ONE;
+    return (uint32_t)l->power < 256u * (uint32_t)ONE && (uint32_t)l->brightness < 256u * (uint32_t)ONE &&
+           (uint32_t)l->background <= (uint32_t)ONE && (uint32_t)l->reflectivity <= (uint32_t)ONE;
 }
 
 /* Device position (Q4) of view point p with p[2] >= hither > 0 by the one
@@ -146,13 +167,35 @@ static int project_point(const stp_direct_view *view, stp_direct_point *pt)
     return 1;
 }
 
+/* Vertex v of the mesh placed by M and t (view = M v + t) and projected
+ * into *p; 0 when a coordinate is out of range (direct.h) or the point
+ * nearer than hither or outside the device range. */
+STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const int16_t m[3][3], const int32_t t[3],
+                                 const stp_vec3 *v, stp_direct_point *p)
+{
+    int32_t w[3];
+    int i;
+    w[0] = v->x;
+    w[1] = v->y;
+    w[2] = v->z;
+    for (i = 0; i < 3; i++)
+        if (w[i] >= COORD_LIMIT || w[i] <= -COORD_LIMIT)
+            return 0;
+    p->x = dot3(w, m[0]) + t[0];
+    p->y = dot3(w, m[1]) + t[1];
+    p->z = dot3(w, m[2]) + t[2];
+    return p->z >= view->hither && project_point(view, p);
+}
+
 /* The sum of three view coordinates (each below 2^26) over 3 as
  * floor(s / 2^16) 21846 + (s mod 2^16) 21846 / 2^16: relative error below
  * 2^-15 (21846 / 2^16 for 1/3), enough for the point a face is shaded at. */
 static int32_t third(int32_t a, int32_t b, int32_t c)
 {
     int32_t s = a + b + c;
-    return stp_direct_asr(s, 16) * 21846 + (int32_t)(((uint32_t)s & 0xFFFFu) * 21846u >> 16);
+    int_fast16_t high = (int_fast16_t)stp_direct_asr(s, 16); /* below 2^12 */
+    uint_fast16_t low = (uint_fast16_t)((uint32_t)s & 0xFFFFu);
+    return (int32_t)high * 21846 + (int32_t)((uint32_t)low * 21846u >> 16);
 }
 
 stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal,
@@ -160,30 +203,54 @@ stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal
 {
     int16_t nv[3];
     stp_vec3 centre;
-    int i;
-    for (i = 0; i < 3; i++)
-        nv[i] = (int16_t)stp_direct_asr((int32_t)s->rot[i][0] * normal[0] + (int32_t)s->rot[i][1] * normal[1] +
-                                            (int32_t)s->rot[i][2] * normal[2] + ((int32_t)1 << (Q14 - 1)),
-                                        Q14);
+    int i, k;
+    for (i = 0; i < 3; i++) {
+        int32_t c = (int32_t)1 << (Q14 - 1);
+        for (k = 0; k < 3; k++)
+            c += (int32_t)s->rot[i][k] * normal[k];
+        nv[i] = (int16_t)stp_direct_asr(c, Q14);
+    }
     centre.x = third(p[0]->x, p[1]->x, p[2]->x);
     centre.y = third(p[0]->y, p[1]->y, p[2]->y);
     centre.z = third(p[0]->z, p[1]->z, p[2]->z);
     return stp_shade_fast_face(&s->fast, nv, centre); /* [0, 1] */
 }
 
-/* The intensity byte of a front face: the shade, INTENSITY, the linear
+/* Twice the signed screen area of p (y down): differences below 2^14,
+ * products below 2^28; a front face turns counter-clockwise seen from the
+ * eye, clockwise in device coordinates (area < 0). */
+static int32_t screen_area(const stp_direct_point *const p[3])
+{
+    int ax = p[1]->dx - p[0]->dx, ay = p[1]->dy - p[0]->dy;
+    int bx = p[2]->dx - p[0]->dx, by = p[2]->dy - p[0]->dy;
+    return (int32_t)ax * by - (int32_t)ay * bx;
+}
+
+/* faces[k] of triangle tri (corner indices into points) with normal: 0
+ * for a back or edge-on face, else 256 + the intensity byte of the front
+ * face: the shade, INTENSITY, the linear
  * drive value floor((k 255 + d / 2) / d) of index k + 1, d = levels - 1
  * (output.c's stp_output_level), as (n m) >> 24 with m = ceil(2^24 / d)
  * (drive_m, once per frame): n = k 255 + d / 2 <= 255.5 d, so n m <
  * 255.5 2^24 + n < 2^32, and the excess n (m d - 2^24) / (d 2^24) stays
  * below 1 / d (n (m d - 2^24) < 255.5 d^2 <= 255.5 254^2 < 2^24): the
  * quotient exactly, without a division per face. */
-static uint16_t face_intensity(const stp_direct_shading *s, const int16_t *normal,
-                               const stp_direct_point *const p[3], int levels, uint32_t drive_m)
+STP_DIRECT_CALL uint16_t face_intensity(const stp_direct_shading *s, const int16_t *normal,
+                                        const stp_direct_point *points, const uint16_t *tri, unsigned levels,
+                                        uint32_t drive_m)
 {
-    stp_fix shade = stp_direct_face_shade(s, normal, p);
-    uint32_t index = ((uint32_t)shade * (uint32_t)(levels - 1)) >> F; /* index - 1 */
-    return (uint16_t)(256u + (((index * 255u + (uint32_t)(levels - 1) / 2u) * drive_m) >> 24));
+    const stp_direct_point *p[3];
+    stp_fix shade;
+    unsigned d = levels - 1u;
+    uint32_t index;
+    p[0] = &points[tri[0]];
+    p[1] = &points[tri[1]];
+    p[2] = &points[tri[2]];
+    if (screen_area(p) >= 0)
+        return 0; /* a back face */
+    shade = stp_direct_face_shade(s, normal, p);
+    index = ((uint32_t)shade * d) >> F; /* index - 1, at most d */
+    return (uint16_t)(256u + (((index * 255u + d / 2u) * drive_m) >> 24));
 }
 
 /* Every corner of the mesh's triangles indexes one of its vertices;
@@ -206,20 +273,24 @@ static int check_args(const stp_direct_frame *f, const stp_mesh *mesh, const stp
     if (f == 0 || mesh == 0 || model == 0 || view == 0 || light == 0 || cell == 0 || points == 0 ||
         faces == 0 || mesh->vertices == 0 || mesh->triangles == 0 || mesh->normals == 0 ||
         point_count < mesh->vertex_count || face_count < mesh->triangle_count || levels < 2 ||
-        levels > 255 || model->scale <= 0 || model->scale >= 2 * ONE || !light_ok(light) ||
+        levels > 255 || (uint32_t)model->scale - 1u >= 2u * (uint32_t)ONE - 1u || !light_ok(light) ||
         !corners_in_mesh(mesh))
         return STP_ERR_ARG;
     return STP_OK;
 }
+
 
 int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const stp_direct_model *model,
                              const stp_direct_view *view, const stp_direct_light *light, int levels,
                              const uint8_t cell[16], stp_direct_point *points, size_t point_count,
                              uint16_t *faces, size_t face_count)
 {
-    int32_t m[3][3], t[3], d[3], scale14;
+    int32_t t[3], d[3];
+    int16_t m[3][3], scale14;
     uint32_t drive_m;
     stp_direct_shading shading;
+    const uint16_t *tri;
+    const int16_t *normal;
     int i, j, status;
     uint16_t k;
     status = check_args(f, mesh, model, view, light, levels, cell, points, point_count, faces, face_count);
@@ -229,48 +300,25 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
     /* ceil(2^24 / (levels - 1)), face_intensity's reciprocal */
     drive_m = stp_direct_udiv(((uint32_t)1 << 24) + (uint32_t)levels - 2u, (uint32_t)levels - 1u);
     /* C = V R (shading.rot, for the normals) and M = C scale: scale in Q14,
-     * below 2^15 */
-    scale14 = F >= 14 ? stp_direct_asr(model->scale, F >= 14 ? F - 14 : 0) : model->scale * (1 << (F >= 14 ? 0 : 14 - F));
-    if (!stp_direct_shading_prepare(&shading, view, model, light))
+     * below 2^15; M saturated (file comment) */
+    scale14 = (int16_t)(F >= 14 ? model->scale >> (F >= 14 ? F - 14 : 0) /* scale > 0 */
+                                : model->scale * (1 << (F >= 14 ? 0 : 14 - F)));
+    if (!stp_direct_shading_prepare(&shading, view, model, light) ||
+        !difference(&model->translate, &view->from, d))
         return STP_ERR_RANGE;
     for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++)
-            m[i][j] = stp_direct_asr((int32_t)shading.rot[i][j] * scale14, Q14); /* < 2^15 */
-    d[0] = model->translate.x - view->from.x;
-    d[1] = model->translate.y - view->from.y;
-    d[2] = model->translate.z - view->from.z;
-    for (i = 0; i < 3; i++)
-        if (outside(d[i]))
-            return STP_ERR_RANGE;
+        for (j = 0; j < 3; j++) {
+            int32_t e = stp_direct_asr((int32_t)shading.rot[i][j] * scale14, Q14);
+            m[i][j] = (int16_t)(e > 32767 ? 32767 : (e < -32767 ? -32767 : e));
+        }
     to_view(view, d, t);
-    for (k = 0; k < mesh->vertex_count; k++) {
-        const stp_vec3 *v = &mesh->vertices[k];
-        stp_direct_point *p = &points[k];
-        int32_t c[3];
-        if (outside(v->x) || outside(v->y) || outside(v->z))
+    for (k = 0; k < mesh->vertex_count; k++)
+        if (!place_vertex(view, (const int16_t(*)[3])m, t, &mesh->vertices[k], &points[k]))
             return STP_ERR_RANGE;
-        for (i = 0; i < 3; i++)
-            c[i] = vmul(v->x, m[i][0]) + vmul(v->y, m[i][1]) + vmul(v->z, m[i][2]) + t[i];
-        p->x = c[0];
-        p->y = c[1];
-        p->z = c[2];
-        if (c[2] < view->hither || !project_point(view, p))
-            return STP_ERR_RANGE;
-    }
-    for (k = 0; k < mesh->triangle_count; k++) {
-        const uint16_t *tri = &mesh->triangles[3 * (uint32_t)k];
-        const stp_direct_point *p[3];
-        int32_t area;
-        p[0] = &points[tri[0]];
-        p[1] = &points[tri[1]];
-        p[2] = &points[tri[2]];
-        /* twice the signed screen area (y down): differences below 2^14,
-         * products below 2^28; a front face turns counter-clockwise seen
-         * from the eye, clockwise in device coordinates */
-        area = ((int32_t)p[1]->dx - p[0]->dx) * ((int32_t)p[2]->dy - p[0]->dy) -
-               ((int32_t)p[1]->dy - p[0]->dy) * ((int32_t)p[2]->dx - p[0]->dx);
-        faces[k] = area < 0 ? face_intensity(&shading, &mesh->normals[3 * (uint32_t)k], p, levels, drive_m) : 0;
-    }
+    tri = mesh->triangles;
+    normal = mesh->normals;
+    for (k = 0; k < mesh->triangle_count; k++, tri += 3, normal += 3)
+        faces[k] = face_intensity(&shading, normal, points, tri, (unsigned)levels, drive_m);
     f->mesh = mesh;
     f->points = points;
     f->faces = faces;

@@ -17,8 +17,15 @@ uint32_t stp_direct_udiv(uint32_t n, uint32_t d)
         return 0;
     /* d aligned under n's top bit (below 2^32), then one step per
      * quotient bit: bits(n) - bits(d) + 1 of them */
+#if STP_HAVE_MUL32
     shift = stp_bit_length32(n) - stp_bit_length32(d);
     d <<= shift;
+#else
+    /* without a 32-bit multiply (AVR) the bit counts' table and halvings
+     * cost more code than doubling d while it stays at or below n */
+    for (shift = 0; !(d & 0x80000000u) && (d << 1) <= n; shift++)
+        d <<= 1;
+#endif
     for (; shift >= 0; shift--) {
         q <<= 1;
         if (n >= d) {
@@ -97,29 +104,29 @@ static const uint16_t quarter_sine[65] STP_TABLE = {
 
 int16_t stp_direct_sin(uint16_t angle)
 {
-    uint32_t quadrant = (uint32_t)angle >> 14, r = (uint32_t)angle & 0x3FFFu, i, f;
-    int32_t a, b, s;
-    if (quadrant & 1u)
+    unsigned r = angle & 0x3FFFu, i, f, a, b;
+    if (angle & 0x4000u)
         r = 0x4000u - r; /* sin(pi - x) */
     i = r >> 8;
     f = r & 0xFFu;
-    a = (int32_t)STP_TABLE_U16(&quarter_sine[i]);
-    b = i < 64u ? (int32_t)STP_TABLE_U16(&quarter_sine[i + 1u]) : a;
-    s = a + stp_direct_asr((b - a) * (int32_t)f + 128, 8);
-    return (int16_t)(quadrant >= 2u ? -s : s);
+    a = STP_TABLE_U16(&quarter_sine[i]);
+    b = i < 64u ? STP_TABLE_U16(&quarter_sine[i + 1u]) : a;
+    /* the table rises: b - a in [0, 402], times f below 2^17 */
+    a += (unsigned)(((uint32_t)(b - a) * f + 128u) >> 8);
+    return (int16_t)(angle & 0x8000u ? -(int)a : (int)a);
 }
 
-/* a b in Q1.14, rounded */
-static int16_t mul14(int32_t a, int32_t b)
+/* a b in Q1.14, rounded, for |a|, |b| <= 2^14: a 16 x 16-bit product */
+STP_DIRECT_CALL int16_t mul14(int_fast16_t a, int_fast16_t b)
 {
-    return (int16_t)stp_direct_asr(a * b + ((int32_t)1 << (Q14 - 1)), Q14);
+    return (int16_t)stp_direct_asr((int32_t)a * (int32_t)b + ((int32_t)1 << (Q14 - 1)), Q14);
 }
 
 void stp_direct_model_turn(stp_direct_model *m, uint16_t yaw, uint16_t pitch, stp_fix scale,
                            stp_vec3 translate)
 {
-    int32_t sy = stp_direct_sin(yaw), cy = stp_direct_sin((uint16_t)(yaw + 0x4000u));
-    int32_t sx = stp_direct_sin(pitch), cx = stp_direct_sin((uint16_t)(pitch + 0x4000u));
+    int_fast16_t sy = stp_direct_sin(yaw), cy = stp_direct_sin((uint16_t)(yaw + 0x4000u));
+    int_fast16_t sx = stp_direct_sin(pitch), cx = stp_direct_sin((uint16_t)(pitch + 0x4000u));
     if (m == 0)
         return;
     /* Rx(pitch) Ry(yaw) */

@@ -82,11 +82,89 @@ static inline int32_t stp_project_subpixel(int negative, uint32_t q)
     return negative ? -(int32_t)((q + ((1u << shift) - 1u)) >> shift) : (int32_t)(q >> shift);
 }
 
+#if !STP_HAVE_MUL32
+/* floor(f m / z) exactly for f, m < 2^31 and 0 < z < 2^29, without a
+ * 32-bit product (AVR: each is a library call, and the reciprocal's 64-bit
+ * products are four more): restoring division of f m, whose bits come
+ * from a shift-and-add product over m's bits, one quotient bit a step.
+ * The quotient is below 2^31 exactly when floor(f m / 2^31) is below z
+ * (f m < 2^62); the remainder r then stays below z < 2^29, so 2 r + 1
+ * fits.  0 when the quotient is 2^31 or more (stp_project_quotient's
+ * cases: the same values). */
+static inline int stp_project_divide(uint32_t f, uint32_t m, uint32_t z, uint32_t *q)
+{
+    uint32_t hi = 0, lo = 0;
+    uint8_t i;
+    /* hi 2^32 + lo = f m (bit tests and carries rather than shifts of
+     * the top bit: the short code on an 8-bit core) */
+    for (i = 0; i < 32u; i++) {
+        hi <<= 1;
+        if (lo & 0x80000000u)
+            hi |= 1u;
+        lo <<= 1;
+        if (m & 0x80000000u) {
+            lo += f;
+            if (lo < f)
+                hi++;
+        }
+        m <<= 1;
+    }
+    /* hi = floor(f m / 2^31), lo the other 31 bits at its top: each step
+     * moves one into the remainder and the quotient bit into lo's bottom,
+     * so after 31 steps lo is the quotient */
+    hi <<= 1;
+    if (lo & 0x80000000u)
+        hi |= 1u;
+    lo <<= 1;
+    if (hi >= z)
+        return 0;
+    for (i = 0; i < 31u; i++) {
+        hi <<= 1;
+        if (lo & 0x80000000u)
+            hi |= 1u;
+        lo <<= 1;
+        if (hi >= z) {
+            hi -= z;
+            lo |= 1u;
+        }
+    }
+    *q = lo;
+    return 1;
+}
+#endif
+
+#if !STP_HAVE_MUL32
+/* One offset of the 32-bit form without a 32-bit multiply:
+ * stp_project_subpixel of floor(f |c| / z); 0 when |c| or the quotient is
+ * 2^31 or more. */
+static inline int stp_project_offset(uint32_t f, int32_t c, uint32_t z, int32_t *out)
+{
+    uint32_t m = c < 0 ? 0u - (uint32_t)c : (uint32_t)c, q;
+    if (m >= 0x80000000u || !stp_project_divide(f, m, z, &q))
+        return 0;
+    *out = stp_project_subpixel(c < 0, q);
+    return 1;
+}
+#endif
+
 /* The 32-bit form (z already raised to hither): 1 on success, 0 when z or
- * a quotient is out of its range (then the 64-bit quotients). */
+ * a quotient is out of its range (then the 64-bit quotients; *x, *y and
+ * *key may have been written). */
 static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, const stp_vec3 *p, int32_t *x, int32_t *y,
                                     int32_t *key)
 {
+#if !STP_HAVE_MUL32
+    uint32_t qk;
+    if (z >= ((uint32_t)1 << 29) || f >= 0x80000000u || h >= 0x80000000u ||
+        !stp_project_offset(f, p->x, z, x) || !stp_project_offset(f, p->y, z, y))
+        return 0;
+    if (key) {
+        if (!stp_project_divide(h, (uint32_t)1 << 30, z, &qk))
+            return 0;
+        *key = (int32_t)qk;
+    }
+    return 1;
+#else
     uint32_t mx = p->x < 0 ? 0u - (uint32_t)p->x : (uint32_t)p->x;
     uint32_t my = p->y < 0 ? 0u - (uint32_t)p->y : (uint32_t)p->y, qx, qy, qk, w, wh, v;
     int sz, sh, shh;
@@ -107,6 +185,7 @@ static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, const st
     *x = stp_project_subpixel(p->x < 0, qx);
     *y = stp_project_subpixel(p->y < 0, qy);
     return 1;
+#endif
 }
 #endif
 

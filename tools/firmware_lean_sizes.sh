@@ -11,6 +11,8 @@
 #     main_direct.c: the OLED driver, startup, the model built on the chip),
 #     with link-time optimisation as the firmware build makes it:
 #     arm-none-eabi-size, and the RAM of the band and the scratch.
+#  3. with avr-gcc, the direct-drawing files on an ATmega328P per function
+#     (the Arduino library's configuration, no LTO).
 # The lean configuration: STP_WITH_SPECULAR=0 (the highlight's code out of
 # shade_fast.c), STP_MAX_LIGHTS=1.
 #
@@ -100,3 +102,23 @@ arm-none-eabi-size "$work/stipple_fw_lm3s6965evb_direct.elf"
 echo "== RAM of the spinning torus (500 vertices, 1000 triangles), bytes"
 arm-none-eabi-nm -S --size-sort --radix=d "$work/stipple_fw_lm3s6965evb_direct.elf" | awk '
     $3 ~ /^[bBdD]$/ { printf "%7d %s\n", $2, $4 }'
+
+# ---- 3. the direct-drawing files on an ATmega328P, per function
+# avr-gcc -Os without LTO in the Arduino library's configuration
+# (ports/arduino/src/stipple_config.h, included for ARDUINO), as
+# docs/avr.md gives them: each function's bytes as avr-nm reports them.
+if command -v avr-gcc >/dev/null 2>&1; then
+    echo "== direct drawing on an ATmega328P (avr-gcc -Os, no LTO, Arduino configuration), bytes per function"
+    for f in direct direct_band direct_view shade_fast; do
+        # shellcheck disable=SC2086
+        avr-gcc -std=gnu11 -mmcu=atmega328p -Os -ffunction-sections -fdata-sections -DARDUINO=10819 \
+            -Wall -Wextra -Werror -I "$src/include" -I "$src/src" -I "$src/ports/arduino/src" \
+            -c "$src/src/$f.c" -o "$work/obj/$f.avr.o"
+    done
+    for f in direct direct_band direct_view shade_fast; do
+        avr-nm --size-sort -S -t d "$work/obj/$f.avr.o" |
+            awk -v f="$f.c" 'NF == 4 && $3 ~ /[tTrR]/ { printf "%7d %s %s\n", $2, f, $4 }'
+    done
+else
+    echo "== avr-gcc not found: no ATmega328P sizes"
+fi

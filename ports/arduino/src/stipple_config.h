@@ -3,13 +3,16 @@
  * The Arduino library's configuration of the core (include/stipple/config.h
  * includes this file when ARDUINO is defined: the Arduino builder gives a
  * library no -D of its own).  The examples draw with direct drawing and
- * span playback, which shade ambient + diffuse only: the specular term is
- * compiled out, which takes 8 KB of flash off an AVR image.  A sketch
- * using the full renderer with specular surfaces sets it back to 1 here.
+ * span playback, which shade ambient + diffuse with one light: the
+ * specular term is compiled out, which takes 8 KB of flash off an AVR
+ * image, and the face shader keeps one light (124 bytes of flash and 143
+ * of stack off the Uno's SpinningCube).  A sketch using the full renderer
+ * with specular surfaces or several lights sets them back here.
  */
 #ifndef STIPPLE_ARDUINO_CONFIG_H
 #define STIPPLE_ARDUINO_CONFIG_H
 
 #define STP_WITH_SPECULAR 0
+#define STP_MAX_LIGHTS 1
 
 #endif

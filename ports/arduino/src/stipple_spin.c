@@ -19,14 +19,10 @@ static const uint8_t bayer4[16] = {14, 134, 44, 164, 194, 74, 224, 104,
 
 static const stp_direct_view spin_view SPIN_ROM = STIPPLE_SPIN_VIEW;
 
-static stp_vec3 point(stp_fix x, stp_fix y, stp_fix z)
-{
-    stp_vec3 p;
-    p.x = x;
-    p.y = y;
-    p.z = z;
-    return p;
-}
+/* the light at (-4, 6, 5), power 9.775, brightness 1, background 0.2,
+ * C = 1, reflectivity 0.7 */
+static const stp_direct_light spin_light SPIN_ROM = {
+    {-4 * ONE, 6 * ONE, 5 * ONE}, 640614, ONE, 13107, ONE, 45875};
 
 int stipple_spin_begin(stipple_spin *s, const stp_mesh *mesh, stp_direct_point *points,
                        uint16_t *faces)
@@ -36,16 +32,12 @@ int stipple_spin_begin(stipple_spin *s, const stp_mesh *mesh, stp_direct_point *
     s->mesh = mesh;
     s->points = points;
     s->faces = faces;
-    s->light.position = point(-4 * ONE, 6 * ONE, 5 * ONE);
-    s->light.power = 640614; /* 9.775 */
-    s->light.brightness = ONE;
-    s->light.background = 13107; /* 0.2 */
-    s->light.attenuation_c = ONE;
-    s->light.reflectivity = 45875; /* 0.7 */
 #if defined(__AVR__)
     memcpy_P(&s->view, &spin_view, sizeof s->view);
+    memcpy_P(&s->light, &spin_light, sizeof s->light);
 #else
     s->view = spin_view;
+    s->light = spin_light;
 #endif
     return STP_OK;
 }
@@ -53,7 +45,8 @@ int stipple_spin_begin(stipple_spin *s, const stp_mesh *mesh, stp_direct_point *
 int stipple_spin_frame(stipple_spin *s, uint16_t n)
 {
     stp_direct_model pose;
-    stp_direct_model_turn(&pose, (uint16_t)(n * 1024u), (uint16_t)(n * 410u), ONE, point(0, 0, 0));
+    stp_vec3 origin = {0, 0, 0};
+    stp_direct_model_turn(&pose, (uint16_t)(n * 1024u), (uint16_t)(n * 410u), ONE, origin);
     return stp_direct_frame_project(&s->frame, s->mesh, &pose, &s->view, &s->light, 16, bayer4,
                                     s->points, s->mesh->vertex_count, s->faces,
                                     s->mesh->triangle_count);
