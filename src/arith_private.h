@@ -113,6 +113,32 @@
 #define STP_HOT_INLINE static inline
 #endif
 
+/* A function kept out of line (a cold route beside a hot one). */
+#if defined(__GNUC__)
+#define STP_NOINLINE static __attribute__((noinline))
+#else
+#define STP_NOINLINE static
+#endif
+
+/* A small function called from several places: forced inline as
+ * STP_HOT_INLINE, but in builds for size (-Os) one out-of-line copy per
+ * file rather than one inlined copy per call (on AVR a 32-bit product of
+ * halves is about 100 bytes). */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+#define STP_SIZE_CALL static __attribute__((noinline, unused))
+#else
+#define STP_SIZE_CALL STP_HOT_INLINE
+#endif
+
+/* Before a loop over a vector's three components: unrolled where speed
+ * counts (GCC at -O2 keeps such a loop a loop), a loop in builds for size,
+ * where it is a third of the code on 8-bit targets. */
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 8 && !defined(__OPTIMIZE_SIZE__)
+#define STP_UNROLL3 _Pragma("GCC unroll 3")
+#else
+#define STP_UNROLL3
+#endif
+
 /* Constant tables of the core.  On AVR, const data is copied into RAM at
  * start-up unless it is put in program memory and read with LPM; 384 bytes
  * of square-root seeds are a twentieth of an ATmega2560's RAM. */
@@ -179,10 +205,16 @@ static inline uint32_t stp_umulhi32x32(uint32_t a, uint32_t b)
  * products' low halves are dropped): three 32-bit products without
  * STP_HAVE_MUL64; exact with it.  For products whose last two units do not
  * matter. */
-STP_HOT_INLINE uint32_t stp_umulhi32_approx(uint32_t a, uint32_t b)
+STP_SIZE_CALL uint32_t stp_umulhi32_approx(uint32_t a, uint32_t b)
 {
 #if STP_HAVE_MUL64
     return (uint32_t)(((uint64_t)a * b) >> 32);
+#elif !STP_HAVE_MUL32
+    /* 16 x 16 -> 32-bit products written as such (the operands' types say
+     * so), which an 8-bit target forms by its short widening helper
+     * rather than a 32 x 32 one */
+    uint16_t ah = (uint16_t)(a >> 16), al = (uint16_t)a, bh = (uint16_t)(b >> 16), bl = (uint16_t)b;
+    return (uint32_t)ah * bh + (((uint32_t)ah * bl) >> 16) + (((uint32_t)al * bh) >> 16);
 #else
     uint32_t ah = a >> 16, bh = b >> 16;
     return ah * bh + ((ah * (b & 0xFFFFu)) >> 16) + (((a & 0xFFFFu) * bh) >> 16);

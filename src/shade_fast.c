@@ -54,6 +54,12 @@ static inline int32_t asr32(int32_t v, int s)
     return v >= 0 ? v >> s : (int32_t)~(~(uint32_t)v >> s);
 }
 
+/* |v| as unsigned (2^31 for the most negative v) */
+STP_HOT_INLINE uint32_t abs_u32(int32_t v)
+{
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+}
+
 /* The face's shade from the Q26 sum of the ambient part and the shares
  * of the lights that reach it (lit: at least one did), rounded once to
  * stp_fix; a face no light reaches gets the prepared ambient shade. */
@@ -140,7 +146,7 @@ static const uint16_t recip_seed[256] STP_TABLE = {
  * r 2^-46, relative error below 2^-20.  The seed (2^-6) is refined by one
  * Newton step on 16-bit operands (2^-11) and one with the exact high word
  * of q y^2, which keeps the 15 more bits of its correction in r. */
-static uint32_t rsqrt_norm(uint32_t q)
+STP_HOT_INLINE uint32_t rsqrt_norm(uint32_t q)
 {
     uint32_t y = STP_TABLE_U16(&rsqrt_seed[(q >> 26) - 16u]); /* ~ 2^31/sqrt(q) < 2^16 */
     /* (q 2^-16)(y^2 2^-16) ~ 2^30: both factors below 2^16 */
@@ -277,48 +283,50 @@ static int is_big(stp_vec3 a)
     return (((uint32_t)a.x + h) | ((uint32_t)a.y + h) | ((uint32_t)a.z + h)) >= 0x80000000u;
 }
 
+/* v's component i (0: x, 1: y, 2: z), for the loops below over the three
+ * components: a loop is a third of the code of three written out on
+ * 8-bit targets, and unrolled (STP_UNROLL3) the same instructions as they
+ * elsewhere; no copy of the vector on the stack */
+STP_SIZE_CALL int32_t vec_comp(const stp_vec3 *v, int i)
+{
+    return i == 0 ? v->x : (i == 1 ? v->y : v->z);
+}
+
 /* a - b scaled to 16 bits (stp_shade_fast_dir) and, when need_r, its
  * 1/length; halved first when either has a component beyond 2^30 (big).
  * Returns 0 for a zero difference (d->w = 0 then). */
 static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b, int big, int need_r)
 {
-    int32_t v0, v1, v2;
-    uint32_t u0, u1, u2, q;
-    int n;
-    if (big) {
-        v0 = asr32(a->x, 1) - asr32(b->x, 1);
-        v1 = asr32(a->y, 1) - asr32(b->y, 1);
-        v2 = asr32(a->z, 1) - asr32(b->z, 1);
-    } else {
-        v0 = a->x - b->x;
-        v1 = a->y - b->y;
-        v2 = a->z - b->z;
+    uint32_t any = 0, q = 0;
+    int i, n;
+    /* v = a - b in d->w, then scaled there in place (no copy on the stack) */
+    STP_UNROLL3
+    for (i = 0; i < 3; i++) {
+        int32_t v = big ? asr32(vec_comp(a, i), 1) - asr32(vec_comp(b, i), 1) : vec_comp(a, i) - vec_comp(b, i);
+        d->w[i] = v;
+        any |= abs_u32(v);
     }
-    u0 = v0 < 0 ? 0u - (uint32_t)v0 : (uint32_t)v0;
-    u1 = v1 < 0 ? 0u - (uint32_t)v1 : (uint32_t)v1;
-    u2 = v2 < 0 ? 0u - (uint32_t)v2 : (uint32_t)v2;
     /* the bit length of the largest |v_i| is that of their OR */
-    n = stp_bit_length32(u0 | u1 | u2) - 16; /* the largest 2^-n in [2^15, 2^16) */
-    if (n == -16) {
-        d->w[0] = d->w[1] = d->w[2] = 0;
-        return 0;
-    }
+    n = stp_bit_length32(any) - 16; /* the largest 2^-n in [2^15, 2^16) */
+    if (n == -16)
+        return 0; /* d->w = 0 */
     d->shift = n + big;
     /* |v_i| 2^-n truncated, below 2^16: the direction moves by at most
      * 2^-15 radian, which moves a cosine near 1 only to second order */
     if (n > 0) {
-        u0 >>= n;
-        u1 >>= n;
-        u2 >>= n;
+        STP_UNROLL3
+        for (i = 0; i < 3; i++)
+            d->w[i] = d->w[i] < 0 ? -(int32_t)(abs_u32(d->w[i]) >> n) : d->w[i] >> n;
     } else {
-        u0 <<= -n;
-        u1 <<= -n;
-        u2 <<= -n;
+        STP_UNROLL3
+        for (i = 0; i < 3; i++)
+            d->w[i] *= (int32_t)1 << -n; /* |v_i| 2^-n < 2^16: no overflow */
     }
-    d->w[0] = v0 < 0 ? -(int32_t)u0 : (int32_t)u0;
-    d->w[1] = v1 < 0 ? -(int32_t)u1 : (int32_t)u1;
-    d->w[2] = v2 < 0 ? -(int32_t)u2 : (int32_t)u2;
-    q = ((u0 * u0) >> 2) + ((u1 * u1) >> 2) + ((u2 * u2) >> 2); /* each u^2 < 2^32 */
+    STP_UNROLL3
+    for (i = 0; i < 3; i++) {
+        uint32_t u = abs_u32(d->w[i]);
+        q += (u * u) >> 2; /* each u^2 < 2^32 */
+    }
     d->q = q; /* in [2^28, 3 2^30) */
     d->j = q < 0x40000000u;
     if (need_r)
@@ -335,14 +343,17 @@ static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b,
  * 0 or -1/2, both "not > 0" as floor keeps them <= 0). */
 static int faces_point(const int16_t n[3], const stp_vec3 *a, const stp_vec3 *b)
 {
-    int32_t v0 = a->x - b->x, v1 = a->y - b->y, v2 = a->z - b->z;
-    int32_t h = (int32_t)n[0] * asr32(v0, 16) + (int32_t)n[1] * asr32(v1, 16) + (int32_t)n[2] * asr32(v2, 16);
-    int32_t l = (int32_t)n[0] * (int32_t)(((uint32_t)v0 & 0xFFFFu) >> 1) +
-                (int32_t)n[1] * (int32_t)(((uint32_t)v1 & 0xFFFFu) >> 1) +
-                (int32_t)n[2] * (int32_t)(((uint32_t)v2 & 0xFFFFu) >> 1);
-    int32_t c = (int32_t)n[0] * (int32_t)((uint32_t)v0 & 1u) + (int32_t)n[1] * (int32_t)((uint32_t)v1 & 1u) +
-                (int32_t)n[2] * (int32_t)((uint32_t)v2 & 1u);
-    int32_t t = l + asr32(c, 1); /* floor(B + c/2): |t| < 2^31 */
+    int32_t h = 0, l = 0, c = 0, t;
+    int i;
+    STP_UNROLL3
+    for (i = 0; i < 3; i++) {
+        int32_t v = vec_comp(a, i) - vec_comp(b, i);
+        h += (int32_t)n[i] * asr32(v, 16);
+        l += (int32_t)n[i] * (int32_t)(((uint32_t)v & 0xFFFFu) >> 1);
+        if (v & 1)
+            c += n[i];
+    }
+    t = l + asr32(c, 1); /* floor(B + c/2): |t| < 2^31 */
     /* 2^15 h + t > 0  <=>  h > floor(-t / 2^15) */
     return h > asr32(-t, 15);
 }
@@ -350,12 +361,17 @@ static int faces_point(const int16_t n[3], const stp_vec3 *a, const stp_vec3 *b)
 /* N.w (|.| < 2^31: see the file comment) */
 static int32_t dot_n(const int16_t n[3], const stp_shade_fast_dir *d)
 {
-    return (int32_t)n[0] * d->w[0] + (int32_t)n[1] * d->w[1] + (int32_t)n[2] * d->w[2];
+    int32_t dot = 0;
+    int i;
+    STP_UNROLL3
+    for (i = 0; i < 3; i++)
+        dot += (int32_t)n[i] * d->w[i];
+    return dot;
 }
 
 /* The cosine N.w/|w| in Q30 from dot = N.w (N in Q14), corrected for
  * |N|^2 = 1 + nd 2^-28 (|nd| <= 2^17): cos (1 - nd 2^-29). */
-static int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t nd)
+STP_HOT_INLINE int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t nd)
 {
     uint32_t a = dot < 0 ? 0u - (uint32_t)dot : (uint32_t)dot;
     int32_t c = (int32_t)(stp_umulhi32_approx(a, d->r) << (1 + d->j)); /* <= 2^30 (1 + 2^-12) */
@@ -1160,8 +1176,11 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
  * clamped to +-2^17. */
 STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
 {
-    uint32_t nn = (uint32_t)((int32_t)normal[0] * normal[0]) + (uint32_t)((int32_t)normal[1] * normal[1]) +
-                  (uint32_t)((int32_t)normal[2] * normal[2]);
+    uint32_t nn = 0;
+    int i;
+    STP_UNROLL3
+    for (i = 0; i < 3; i++)
+        nn += (uint32_t)((int32_t)normal[i] * normal[i]);
     return nn > 0x10020000u ? 0x20000 : (nn < 0x0FFE0000u ? -0x20000 : (int32_t)(nn - 0x10000000u));
 }
 
@@ -1203,7 +1222,15 @@ static inline int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
     return share;
 }
 
+/* The 32-bit targets' face: stp_shade_fast_face itself there; on a host
+ * (kept compiled there: its helpers serve prepare and the Fresnel) a
+ * function of its own for a struct that prepare did not fill, so that the
+ * wide route's calls do not set up its registers and stack. */
+#if STP_WIDE_ARITH
+STP_NOINLINE stp_fix face_narrow(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+#else
 stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+#endif
 {
     stp_shade_fast_dir e_local;
     const stp_shade_fast_dir *e = &s->e;
@@ -1215,12 +1242,6 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
 #if STP_WITH_SPECULAR
     if (s->exact && s->exact_always && s->count != 0)
         return s->exact(s, normal, point);
-#endif
-#if STP_WIDE_ARITH
-    /* the host path; the code below is the 32-bit targets' (kept compiled
-     * on the host: its helpers serve prepare and the Fresnel) */
-    if (s->wide_ready)
-        return face_wide(s, normal, point);
 #endif
     if (s->count == 0)
         return s->ambient_shade;
@@ -1264,3 +1285,16 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     }
     return shade_of_sum(s, lit, sum);
 }
+
+#if STP_WIDE_ARITH
+stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+{
+#if STP_WITH_SPECULAR
+    if (s->exact && s->exact_always && s->count != 0)
+        return s->exact(s, normal, point);
+#endif
+    if (s->wide_ready)
+        return face_wide(s, normal, point); /* the host path */
+    return face_narrow(s, normal, point);
+}
+#endif
