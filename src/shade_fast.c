@@ -1053,30 +1053,47 @@ static void exact_prepare(stp_shade_fast *s, const stp_lighting *lighting, const
 #endif
 
 /* The ambient-only shade (ambient_shade) and its Q26 term of the sums
- * (ambient) for background B, reflectivity R and BRIGHT (all F bits). */
+ * (ambient) for background B in [0, 1], reflectivity R and BRIGHT (all F
+ * bits), exactly as shade_unit forms them:
+ *   ambient_shade = min(1, B R BRIGHT) rounded once to F bits (0 where
+ *     B R <= 0 or BRIGHT <= 0);
+ *   ambient = floor(floor(B R 2^(26 - 2F)) clamped to +-2^31, times BRIGHT
+ *     2^-F) clamped to +-SHARE_CAP (0 where BRIGHT <= 0).
+ * Only 32 x 32 -> 64-bit products of magnitudes (the C library's short
+ * widening product where there is no such instruction), shifts and sums
+ * below 2^63: B |R| < 2^(F + 31); a floor of a negative value is its
+ * magnitude rounded up. */
 static void prepare_ambient(stp_shade_fast *s, stp_fix background, stp_fix refl, stp_fix bright)
 {
-    /* as shade_unit forms it: B R (2F bits, < 2^(31 + F) in magnitude)
-     * times BRIGHT, capped, rounded once */
-    int64_t ambient = (int64_t)background * refl;
-    if (bright <= 0 || ambient <= 0) {
-        s->ambient_shade = 0;
-    } else {
-        int64_t a = stp_mul_shift_sat(ambient, bright, F); /* 2F fractional bits */
-        s->ambient_shade = a >= ((int64_t)ONE << F) ? ONE
-                                                   : (stp_fix)((a + ((int64_t)1 << (F - 1))) >> F);
+    uint32_t r = refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl;
+    uint64_t a, m;
+    s->ambient_shade = 0;
+    s->ambient = 0;
+    if (bright <= 0)
+        return;
+    a = (uint64_t)(uint32_t)background * r;
+    if (refl > 0) {
+        /* B R = t 2^F + l (t < 2^31, l < 2^F): B R BRIGHT 2^-2F rounded is
+         * floor((t BRIGHT + floor(l BRIGHT 2^-F) + 2^(F - 1)) 2^-F), the
+         * sum below 2^62 + 2^32 */
+        uint64_t t = (uint64_t)(uint32_t)(a >> F) * (uint32_t)bright +
+                     (((uint64_t)((uint32_t)a & (uint32_t)(ONE - 1)) * (uint32_t)bright) >> F) +
+                     ((uint32_t)1 << (F - 1));
+        t >>= F;
+        s->ambient_shade = t >= (uint64_t)ONE ? ONE : (stp_fix)t;
     }
-    /* the same in Q26 for the sums, saturated at +-8 */
-    if (bright <= 0) {
-        s->ambient = 0;
-    } else {
-        /* to Q26: |.| < 2^(31 + F - 6) */
-        int64_t a = 2 * F >= SUM_BITS ? stp_asr64(ambient, 2 * F - SUM_BITS)
-                                      : ambient * ((int64_t)1 << (SUM_BITS - 2 * F));
-        a = a > ((int64_t)1 << 31) || a < -((int64_t)1 << 31) ? (a < 0 ? -((int64_t)1 << 31) : (int64_t)1 << 31) : a;
-        a = stp_asr64(a * bright, F);
-        s->ambient = (int32_t)(a > SHARE_CAP ? SHARE_CAP : (a < -(int64_t)SHARE_CAP ? -(int64_t)SHARE_CAP : a));
-    }
+#if 2 * STP_FIX_FRAC_BITS >= SUM_BITS
+    m = (a + (refl < 0 ? ((uint64_t)1 << (2 * F - SUM_BITS)) - 1u : 0u)) >> (2 * F - SUM_BITS);
+#else
+    m = a << (SUM_BITS - 2 * F);
+#endif
+    if (m > 0x80000000u)
+        m = 0x80000000u;
+    /* m BRIGHT < 2^62 */
+    m = ((uint64_t)(uint32_t)m * (uint32_t)bright + (refl < 0 ? (uint32_t)(ONE - 1) : 0u)) >> F;
+    if (m > SHARE_CAP)
+        m = SHARE_CAP;
+    s->ambient = refl < 0 ? -(int32_t)m : (int32_t)m;
 }
 
 /* Each of the s->count lights' position and its BRIGHT P_j |R| (and
