@@ -429,7 +429,7 @@ static stp_sf16 sf_from_r(uint32_t r, int e)
 
 /* 1/sqrt(q) for any q in (0, 2^32): r 2^(j - 46) with r in (2^30, 2^31]
  * (q 4^j is brought into [2^30, 2^32)). */
-static uint32_t rsqrt_any(uint32_t q, int *j)
+STP_HOT_INLINE uint32_t rsqrt_any(uint32_t q, int *j)
 {
     /* the common cases (|L + E|^2 >= 1/4) without a search */
     *j = q >= 0x40000000u ? 0 : (q >= 0x10000000u ? 1 : (32 - stp_bit_length32(q)) >> 1);
