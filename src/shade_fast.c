@@ -116,7 +116,13 @@ static const uint16_t rsqrt_seed[48] STP_TABLE = {
     36179, 35840, 35509, 35188, 34875, 34571, 34274, 33985, 33703, 33427, 33159, 32897,
 };
 
-/* 2^31 / x at the middle of [256 + i, 257 + i) 2^7 */
+/* The reciprocal's seed: 2^31 / x at the middle of [256 + i, 257 + i) 2^7,
+ * rounded to nearest: (2^25 + k) / (2 k + 1) with k = 256 + i, the
+ * quotient truncated.  A table where a multiply is an instruction; on
+ * targets without one (AVR) the quotient itself (a 32 / 16-bit library
+ * division, which such an image links anyway, instead of 512 bytes of
+ * flash), the same seeds. */
+#if STP_HAVE_MUL32
 static const uint16_t recip_seed[256] STP_TABLE = {
     65408, 65154, 64902, 64652, 64404, 64158, 63913, 63671, 63430, 63191, 62954, 62719,
     62485, 62253, 62023, 61795, 61568, 61343, 61119, 60897, 60677, 60458, 60241, 60026,
@@ -141,6 +147,10 @@ static const uint16_t recip_seed[256] STP_TABLE = {
     33791, 33723, 33655, 33588, 33521, 33454, 33387, 33321, 33255, 33189, 33124, 33059,
     32994, 32929, 32864, 32800,
 };
+#define RECIP_SEED(k) STP_TABLE_U16(&recip_seed[(k) - 256u])
+#else
+#define RECIP_SEED(k) ((((uint32_t)1 << 25) + (k)) / (2u * (k) + 1u))
+#endif
 
 /* 1/sqrt(q) for q in [2^30, 2^32): r in (2^30, 2^31] with 1/sqrt(q) =
  * r 2^-46, relative error below 2^-20.  The seed (2^-6) is refined by one
@@ -163,7 +173,7 @@ STP_HOT_INLINE uint32_t rsqrt_norm(uint32_t q)
  * relative: a seed (2^-9) and one Newton step y (2 - m y 2^-31). */
 static uint32_t recip16(uint32_t m)
 {
-    uint32_t y = STP_TABLE_U16(&recip_seed[(m >> 7) - 256u]);
+    uint32_t y = RECIP_SEED(m >> 7);
     uint32_t p = m * y; /* ~ 2^31, < 2^32 */
     int32_t e = p <= 0x80000000u ? (int32_t)(0x80000000u - p) : -(int32_t)(p - 0x80000000u);
     return (uint32_t)((int32_t)y + asr32(mul_q16(e, y), 15)); /* |e| < 2^23 */
