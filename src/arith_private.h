@@ -120,20 +120,25 @@
 #define STP_NOINLINE static
 #endif
 
-/* A small function called from several places: forced inline as
- * STP_HOT_INLINE, but in builds for size (-Os) one out-of-line copy per
- * file rather than one inlined copy per call (on AVR a 32-bit product of
- * halves is about 100 bytes). */
-#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+/* A small function called from several places: forced inline, but in
+ * builds for size (-Os) for a target without a multiply instruction one
+ * out-of-line copy per file rather than one inlined copy per call (on AVR
+ * a 32-bit product of halves is about 100 bytes; on a 32-bit target the
+ * call costs more time than the inlined copy costs bytes). */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__) && !STP_HAVE_MUL32
 #define STP_SIZE_CALL static __attribute__((noinline, unused))
+#elif defined(__GNUC__)
+#define STP_SIZE_CALL static inline __attribute__((always_inline))
 #else
-#define STP_SIZE_CALL STP_HOT_INLINE
+#define STP_SIZE_CALL static inline
 #endif
 
-/* Before a loop over a vector's three components: unrolled where speed
- * counts (GCC at -O2 keeps such a loop a loop), a loop in builds for size,
- * where it is a third of the code on 8-bit targets. */
-#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 8 && !defined(__OPTIMIZE_SIZE__)
+/* Before a loop over a vector's three components: unrolled (GCC at -O2
+ * keeps such a loop a loop), but a loop in builds for size (-Os) for a
+ * target without a multiply instruction, where it is a third of the code
+ * (on a 32-bit target the unrolled copy costs few bytes and saves the
+ * loop's indexing). */
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 8 && !(defined(__OPTIMIZE_SIZE__) && !STP_HAVE_MUL32)
 #define STP_UNROLL3 _Pragma("GCC unroll 3")
 #else
 #define STP_UNROLL3
