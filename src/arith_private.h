@@ -120,25 +120,37 @@
 #define STP_NOINLINE static
 #endif
 
-/* A small function called from several places: forced inline, but in
- * builds for size (-Os) for a target without a multiply instruction one
- * out-of-line copy per file rather than one inlined copy per call (on AVR
- * a 32-bit product of halves is about 100 bytes; on a 32-bit target the
- * call costs more time than the inlined copy costs bytes). */
-#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__) && !STP_HAVE_MUL32
-#define STP_SIZE_CALL static __attribute__((noinline, unused))
-#elif defined(__GNUC__)
-#define STP_SIZE_CALL static inline __attribute__((always_inline))
+/* STP_LEAN_CODE 1: a build for size (-Os) for a target without a multiply
+ * instruction (AVR), where every 32-bit operation is several instructions:
+ * loops over a vector's three components stay loops and small helpers are
+ * calls, a third of the code.  Elsewhere both cost more time than bytes. */
+#if defined(__OPTIMIZE_SIZE__) && !STP_HAVE_MUL32
+#define STP_LEAN_CODE 1
 #else
-#define STP_SIZE_CALL static inline
+#define STP_LEAN_CODE 0
+#endif
+
+/* A small function called from several places: one out-of-line copy per
+ * file with STP_LEAN_CODE (on AVR a 32-bit product of halves is about 100
+ * bytes), else as STP_HOT_INLINE. */
+#if defined(__GNUC__) && STP_LEAN_CODE
+#define STP_SIZE_CALL static __attribute__((noinline, unused))
+#else
+#define STP_SIZE_CALL STP_HOT_INLINE
+#endif
+
+/* A few loads chosen by an index, as in a loop over a vector's components:
+ * inlined in every build (once the loop is unrolled the index is a
+ * constant and the choice disappears) but STP_LEAN_CODE's calls. */
+#if defined(__GNUC__) && !STP_LEAN_CODE
+#define STP_INDEX_INLINE static inline __attribute__((always_inline))
+#else
+#define STP_INDEX_INLINE STP_SIZE_CALL
 #endif
 
 /* Before a loop over a vector's three components: unrolled (GCC at -O2
- * keeps such a loop a loop), but a loop in builds for size (-Os) for a
- * target without a multiply instruction, where it is a third of the code
- * (on a 32-bit target the unrolled copy costs few bytes and saves the
- * loop's indexing). */
-#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 8 && !(defined(__OPTIMIZE_SIZE__) && !STP_HAVE_MUL32)
+ * and -Os keeps such a loop a loop) but with STP_LEAN_CODE. */
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 8 && !STP_LEAN_CODE
 #define STP_UNROLL3 _Pragma("GCC unroll 3")
 #else
 #define STP_UNROLL3

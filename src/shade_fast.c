@@ -294,10 +294,10 @@ static int is_big(stp_vec3 a)
 }
 
 /* v's component i (0: x, 1: y, 2: z), for the loops below over the three
- * components: a loop is a third of the code of three written out on
- * 8-bit targets, and unrolled (STP_UNROLL3) the same instructions as they
- * elsewhere; no copy of the vector on the stack */
-STP_SIZE_CALL int32_t vec_comp(const stp_vec3 *v, int i)
+ * components: with STP_LEAN_CODE (AVR -Os) a loop is a third of the code
+ * of three written out; elsewhere the loop is unrolled (STP_UNROLL3) and
+ * the index folds away.  No copy of the vector on the stack. */
+STP_INDEX_INLINE int32_t vec_comp(const stp_vec3 *v, int i)
 {
     return i == 0 ? v->x : (i == 1 ? v->y : v->z);
 }
