@@ -1316,12 +1316,12 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
 #if STP_WIDE_ARITH
 stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
 {
+    if (!s->wide_ready)
+        return face_narrow(s, normal, point);
 #if STP_WITH_SPECULAR
-    if (s->exact && s->exact_always && s->count != 0)
-        return s->exact(s, normal, point);
+    if (s->exact_always && s->count != 0)
+        return s->exact(s, normal, point); /* set with wide_ready */
 #endif
-    if (s->wide_ready)
-        return face_wide(s, normal, point); /* the host path */
-    return face_narrow(s, normal, point);
+    return face_wide(s, normal, point); /* the host path */
 }
 #endif
