@@ -113,6 +113,49 @@
 #define STP_HOT_INLINE static inline
 #endif
 
+/* A function kept out of line (a cold route beside a hot one). */
+#if defined(__GNUC__)
+#define STP_NOINLINE static __attribute__((noinline))
+#else
+#define STP_NOINLINE static
+#endif
+
+/* STP_LEAN_CODE 1: a build for size (-Os) for a target without a multiply
+ * instruction (AVR), where every 32-bit operation is several instructions:
+ * loops over a vector's three components stay loops and small helpers are
+ * calls, a third of the code.  Elsewhere both cost more time than bytes. */
+#if defined(__OPTIMIZE_SIZE__) && !STP_HAVE_MUL32
+#define STP_LEAN_CODE 1
+#else
+#define STP_LEAN_CODE 0
+#endif
+
+/* A small function called from several places: one out-of-line copy per
+ * file with STP_LEAN_CODE (on AVR a 32-bit product of halves is about 100
+ * bytes), else as STP_HOT_INLINE. */
+#if defined(__GNUC__) && STP_LEAN_CODE
+#define STP_SIZE_CALL static __attribute__((noinline, unused))
+#else
+#define STP_SIZE_CALL STP_HOT_INLINE
+#endif
+
+/* A few loads chosen by an index, as in a loop over a vector's components:
+ * inlined in every build (once the loop is unrolled the index is a
+ * constant and the choice disappears) but STP_LEAN_CODE's calls. */
+#if defined(__GNUC__) && !STP_LEAN_CODE
+#define STP_INDEX_INLINE static inline __attribute__((always_inline))
+#else
+#define STP_INDEX_INLINE STP_SIZE_CALL
+#endif
+
+/* Before a loop over a vector's three components: unrolled (GCC at -O2
+ * and -Os keeps such a loop a loop) but with STP_LEAN_CODE. */
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 8 && !STP_LEAN_CODE
+#define STP_UNROLL3 _Pragma("GCC unroll 3")
+#else
+#define STP_UNROLL3
+#endif
+
 /* Constant tables of the core.  On AVR, const data is copied into RAM at
  * start-up unless it is put in program memory and read with LPM; 384 bytes
  * of square-root seeds are a twentieth of an ATmega2560's RAM. */
@@ -179,10 +222,16 @@ static inline uint32_t stp_umulhi32x32(uint32_t a, uint32_t b)
  * products' low halves are dropped): three 32-bit products without
  * STP_HAVE_MUL64; exact with it.  For products whose last two units do not
  * matter. */
-STP_HOT_INLINE uint32_t stp_umulhi32_approx(uint32_t a, uint32_t b)
+STP_SIZE_CALL uint32_t stp_umulhi32_approx(uint32_t a, uint32_t b)
 {
 #if STP_HAVE_MUL64
     return (uint32_t)(((uint64_t)a * b) >> 32);
+#elif !STP_HAVE_MUL32
+    /* 16 x 16 -> 32-bit products written as such (the operands' types say
+     * so), which an 8-bit target forms by its short widening helper
+     * rather than a 32 x 32 one */
+    uint16_t ah = (uint16_t)(a >> 16), al = (uint16_t)a, bh = (uint16_t)(b >> 16), bl = (uint16_t)b;
+    return (uint32_t)ah * bh + (((uint32_t)ah * bl) >> 16) + (((uint32_t)al * bh) >> 16);
 #else
     uint32_t ah = a >> 16, bh = b >> 16;
     return ah * bh + ((ah * (b & 0xFFFFu)) >> 16) + (((a & 0xFFFFu) * bh) >> 16);

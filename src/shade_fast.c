@@ -54,6 +54,12 @@ static inline int32_t asr32(int32_t v, int s)
     return v >= 0 ? v >> s : (int32_t)~(~(uint32_t)v >> s);
 }
 
+/* |v| as unsigned (2^31 for the most negative v) */
+STP_HOT_INLINE uint32_t abs_u32(int32_t v)
+{
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+}
+
 /* The face's shade from the Q26 sum of the ambient part and the shares
  * of the lights that reach it (lit: at least one did), rounded once to
  * stp_fix; a face no light reaches gets the prepared ambient shade. */
@@ -110,7 +116,13 @@ static const uint16_t rsqrt_seed[48] STP_TABLE = {
     36179, 35840, 35509, 35188, 34875, 34571, 34274, 33985, 33703, 33427, 33159, 32897,
 };
 
-/* 2^31 / x at the middle of [256 + i, 257 + i) 2^7 */
+/* The reciprocal's seed: 2^31 / x at the middle of [256 + i, 257 + i) 2^7,
+ * rounded to nearest: (2^25 + k) / (2 k + 1) with k = 256 + i, the
+ * quotient truncated.  A table where a multiply is an instruction; on
+ * targets without one (AVR) the quotient itself (a 32 / 16-bit library
+ * division, which such an image links anyway, instead of 512 bytes of
+ * flash), the same seeds. */
+#if STP_HAVE_MUL32
 static const uint16_t recip_seed[256] STP_TABLE = {
     65408, 65154, 64902, 64652, 64404, 64158, 63913, 63671, 63430, 63191, 62954, 62719,
     62485, 62253, 62023, 61795, 61568, 61343, 61119, 60897, 60677, 60458, 60241, 60026,
@@ -135,12 +147,16 @@ static const uint16_t recip_seed[256] STP_TABLE = {
     33791, 33723, 33655, 33588, 33521, 33454, 33387, 33321, 33255, 33189, 33124, 33059,
     32994, 32929, 32864, 32800,
 };
+#define RECIP_SEED(k) STP_TABLE_U16(&recip_seed[(k) - 256u])
+#else
+#define RECIP_SEED(k) ((((uint32_t)1 << 25) + (k)) / (2u * (k) + 1u))
+#endif
 
 /* 1/sqrt(q) for q in [2^30, 2^32): r in (2^30, 2^31] with 1/sqrt(q) =
  * r 2^-46, relative error below 2^-20.  The seed (2^-6) is refined by one
  * Newton step on 16-bit operands (2^-11) and one with the exact high word
  * of q y^2, which keeps the 15 more bits of its correction in r. */
-static uint32_t rsqrt_norm(uint32_t q)
+STP_HOT_INLINE uint32_t rsqrt_norm(uint32_t q)
 {
     uint32_t y = STP_TABLE_U16(&rsqrt_seed[(q >> 26) - 16u]); /* ~ 2^31/sqrt(q) < 2^16 */
     /* (q 2^-16)(y^2 2^-16) ~ 2^30: both factors below 2^16 */
@@ -157,7 +173,7 @@ static uint32_t rsqrt_norm(uint32_t q)
  * relative: a seed (2^-9) and one Newton step y (2 - m y 2^-31). */
 static uint32_t recip16(uint32_t m)
 {
-    uint32_t y = STP_TABLE_U16(&recip_seed[(m >> 7) - 256u]);
+    uint32_t y = RECIP_SEED(m >> 7);
     uint32_t p = m * y; /* ~ 2^31, < 2^32 */
     int32_t e = p <= 0x80000000u ? (int32_t)(0x80000000u - p) : -(int32_t)(p - 0x80000000u);
     return (uint32_t)((int32_t)y + asr32(mul_q16(e, y), 15)); /* |e| < 2^23 */
@@ -277,48 +293,50 @@ static int is_big(stp_vec3 a)
     return (((uint32_t)a.x + h) | ((uint32_t)a.y + h) | ((uint32_t)a.z + h)) >= 0x80000000u;
 }
 
+/* v's component i (0: x, 1: y, 2: z), for the loops below over the three
+ * components: with STP_LEAN_CODE (AVR -Os) a loop is a third of the code
+ * of three written out; elsewhere the loop is unrolled (STP_UNROLL3) and
+ * the index folds away.  No copy of the vector on the stack. */
+STP_INDEX_INLINE int32_t vec_comp(const stp_vec3 *v, int i)
+{
+    return i == 0 ? v->x : (i == 1 ? v->y : v->z);
+}
+
 /* a - b scaled to 16 bits (stp_shade_fast_dir) and, when need_r, its
  * 1/length; halved first when either has a component beyond 2^30 (big).
  * Returns 0 for a zero difference (d->w = 0 then). */
 static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b, int big, int need_r)
 {
-    int32_t v0, v1, v2;
-    uint32_t u0, u1, u2, q;
-    int n;
-    if (big) {
-        v0 = asr32(a->x, 1) - asr32(b->x, 1);
-        v1 = asr32(a->y, 1) - asr32(b->y, 1);
-        v2 = asr32(a->z, 1) - asr32(b->z, 1);
-    } else {
-        v0 = a->x - b->x;
-        v1 = a->y - b->y;
-        v2 = a->z - b->z;
+    uint32_t any = 0, q = 0;
+    int i, n;
+    /* v = a - b in d->w, then scaled there in place (no copy on the stack) */
+    STP_UNROLL3
+    for (i = 0; i < 3; i++) {
+        int32_t v = big ? asr32(vec_comp(a, i), 1) - asr32(vec_comp(b, i), 1) : vec_comp(a, i) - vec_comp(b, i);
+        d->w[i] = v;
+        any |= abs_u32(v);
     }
-    u0 = v0 < 0 ? 0u - (uint32_t)v0 : (uint32_t)v0;
-    u1 = v1 < 0 ? 0u - (uint32_t)v1 : (uint32_t)v1;
-    u2 = v2 < 0 ? 0u - (uint32_t)v2 : (uint32_t)v2;
     /* the bit length of the largest |v_i| is that of their OR */
-    n = stp_bit_length32(u0 | u1 | u2) - 16; /* the largest 2^-n in [2^15, 2^16) */
-    if (n == -16) {
-        d->w[0] = d->w[1] = d->w[2] = 0;
-        return 0;
-    }
+    n = stp_bit_length32(any) - 16; /* the largest 2^-n in [2^15, 2^16) */
+    if (n == -16)
+        return 0; /* d->w = 0 */
     d->shift = n + big;
     /* |v_i| 2^-n truncated, below 2^16: the direction moves by at most
      * 2^-15 radian, which moves a cosine near 1 only to second order */
     if (n > 0) {
-        u0 >>= n;
-        u1 >>= n;
-        u2 >>= n;
+        STP_UNROLL3
+        for (i = 0; i < 3; i++)
+            d->w[i] = d->w[i] < 0 ? -(int32_t)(abs_u32(d->w[i]) >> n) : d->w[i] >> n;
     } else {
-        u0 <<= -n;
-        u1 <<= -n;
-        u2 <<= -n;
+        STP_UNROLL3
+        for (i = 0; i < 3; i++)
+            d->w[i] *= (int32_t)1 << -n; /* |v_i| 2^-n < 2^16: no overflow */
     }
-    d->w[0] = v0 < 0 ? -(int32_t)u0 : (int32_t)u0;
-    d->w[1] = v1 < 0 ? -(int32_t)u1 : (int32_t)u1;
-    d->w[2] = v2 < 0 ? -(int32_t)u2 : (int32_t)u2;
-    q = ((u0 * u0) >> 2) + ((u1 * u1) >> 2) + ((u2 * u2) >> 2); /* each u^2 < 2^32 */
+    STP_UNROLL3
+    for (i = 0; i < 3; i++) {
+        uint32_t u = abs_u32(d->w[i]);
+        q += (u * u) >> 2; /* each u^2 < 2^32 */
+    }
     d->q = q; /* in [2^28, 3 2^30) */
     d->j = q < 0x40000000u;
     if (need_r)
@@ -335,14 +353,17 @@ static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b,
  * 0 or -1/2, both "not > 0" as floor keeps them <= 0). */
 static int faces_point(const int16_t n[3], const stp_vec3 *a, const stp_vec3 *b)
 {
-    int32_t v0 = a->x - b->x, v1 = a->y - b->y, v2 = a->z - b->z;
-    int32_t h = (int32_t)n[0] * asr32(v0, 16) + (int32_t)n[1] * asr32(v1, 16) + (int32_t)n[2] * asr32(v2, 16);
-    int32_t l = (int32_t)n[0] * (int32_t)(((uint32_t)v0 & 0xFFFFu) >> 1) +
-                (int32_t)n[1] * (int32_t)(((uint32_t)v1 & 0xFFFFu) >> 1) +
-                (int32_t)n[2] * (int32_t)(((uint32_t)v2 & 0xFFFFu) >> 1);
-    int32_t c = (int32_t)n[0] * (int32_t)((uint32_t)v0 & 1u) + (int32_t)n[1] * (int32_t)((uint32_t)v1 & 1u) +
-                (int32_t)n[2] * (int32_t)((uint32_t)v2 & 1u);
-    int32_t t = l + asr32(c, 1); /* floor(B + c/2): |t| < 2^31 */
+    int32_t h = 0, l = 0, c = 0, t;
+    int i;
+    STP_UNROLL3
+    for (i = 0; i < 3; i++) {
+        int32_t v = vec_comp(a, i) - vec_comp(b, i);
+        h += (int32_t)n[i] * asr32(v, 16);
+        l += (int32_t)n[i] * (int32_t)(((uint32_t)v & 0xFFFFu) >> 1);
+        if (v & 1)
+            c += n[i];
+    }
+    t = l + asr32(c, 1); /* floor(B + c/2): |t| < 2^31 */
     /* 2^15 h + t > 0  <=>  h > floor(-t / 2^15) */
     return h > asr32(-t, 15);
 }
@@ -350,12 +371,17 @@ static int faces_point(const int16_t n[3], const stp_vec3 *a, const stp_vec3 *b)
 /* N.w (|.| < 2^31: see the file comment) */
 static int32_t dot_n(const int16_t n[3], const stp_shade_fast_dir *d)
 {
-    return (int32_t)n[0] * d->w[0] + (int32_t)n[1] * d->w[1] + (int32_t)n[2] * d->w[2];
+    int32_t dot = 0;
+    int i;
+    STP_UNROLL3
+    for (i = 0; i < 3; i++)
+        dot += (int32_t)n[i] * d->w[i];
+    return dot;
 }
 
 /* The cosine N.w/|w| in Q30 from dot = N.w (N in Q14), corrected for
  * |N|^2 = 1 + nd 2^-28 (|nd| <= 2^17): cos (1 - nd 2^-29). */
-static int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t nd)
+STP_HOT_INLINE int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t nd)
 {
     uint32_t a = dot < 0 ? 0u - (uint32_t)dot : (uint32_t)dot;
     int32_t c = (int32_t)(stp_umulhi32_approx(a, d->r) << (1 + d->j)); /* <= 2^30 (1 + 2^-12) */
@@ -413,7 +439,7 @@ static stp_sf16 sf_from_r(uint32_t r, int e)
 
 /* 1/sqrt(q) for any q in (0, 2^32): r 2^(j - 46) with r in (2^30, 2^31]
  * (q 4^j is brought into [2^30, 2^32)). */
-static uint32_t rsqrt_any(uint32_t q, int *j)
+STP_HOT_INLINE uint32_t rsqrt_any(uint32_t q, int *j)
 {
     /* the common cases (|L + E|^2 >= 1/4) without a search */
     *j = q >= 0x40000000u ? 0 : (q >= 0x10000000u ? 1 : (32 - stp_bit_length32(q)) >> 1);
@@ -1037,30 +1063,47 @@ static void exact_prepare(stp_shade_fast *s, const stp_lighting *lighting, const
 #endif
 
 /* The ambient-only shade (ambient_shade) and its Q26 term of the sums
- * (ambient) for background B, reflectivity R and BRIGHT (all F bits). */
+ * (ambient) for background B in [0, 1], reflectivity R and BRIGHT (all F
+ * bits), exactly as shade_unit forms them:
+ *   ambient_shade = min(1, B R BRIGHT) rounded once to F bits (0 where
+ *     B R <= 0 or BRIGHT <= 0);
+ *   ambient = floor(floor(B R 2^(26 - 2F)) clamped to +-2^31, times BRIGHT
+ *     2^-F) clamped to +-SHARE_CAP (0 where BRIGHT <= 0).
+ * Only 32 x 32 -> 64-bit products of magnitudes (the C library's short
+ * widening product where there is no such instruction), shifts and sums
+ * below 2^63: B |R| < 2^(F + 31); a floor of a negative value is its
+ * magnitude rounded up. */
 static void prepare_ambient(stp_shade_fast *s, stp_fix background, stp_fix refl, stp_fix bright)
 {
-    /* as shade_unit forms it: B R (2F bits, < 2^(31 + F) in magnitude)
-     * times BRIGHT, capped, rounded once */
-    int64_t ambient = (int64_t)background * refl;
-    if (bright <= 0 || ambient <= 0) {
-        s->ambient_shade = 0;
-    } else {
-        int64_t a = stp_mul_shift_sat(ambient, bright, F); /* 2F fractional bits */
-        s->ambient_shade = a >= ((int64_t)ONE << F) ? ONE
-                                                   : (stp_fix)((a + ((int64_t)1 << (F - 1))) >> F);
+    uint32_t r = refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl;
+    uint64_t a, m;
+    s->ambient_shade = 0;
+    s->ambient = 0;
+    if (bright <= 0)
+        return;
+    a = (uint64_t)(uint32_t)background * r;
+    if (refl > 0) {
+        /* B R = t 2^F + l (t < 2^31, l < 2^F): B R BRIGHT 2^-2F rounded is
+         * floor((t BRIGHT + floor(l BRIGHT 2^-F) + 2^(F - 1)) 2^-F), the
+         * sum below 2^62 + 2^32 */
+        uint64_t t = (uint64_t)(uint32_t)(a >> F) * (uint32_t)bright +
+                     (((uint64_t)((uint32_t)a & (uint32_t)(ONE - 1)) * (uint32_t)bright) >> F) +
+                     ((uint32_t)1 << (F - 1));
+        t >>= F;
+        s->ambient_shade = t >= (uint64_t)ONE ? ONE : (stp_fix)t;
     }
-    /* the same in Q26 for the sums, saturated at +-8 */
-    if (bright <= 0) {
-        s->ambient = 0;
-    } else {
-        /* to Q26: |.| < 2^(31 + F - 6) */
-        int64_t a = 2 * F >= SUM_BITS ? stp_asr64(ambient, 2 * F - SUM_BITS)
-                                      : ambient * ((int64_t)1 << (SUM_BITS - 2 * F));
-        a = a > ((int64_t)1 << 31) || a < -((int64_t)1 << 31) ? (a < 0 ? -((int64_t)1 << 31) : (int64_t)1 << 31) : a;
-        a = stp_asr64(a * bright, F);
-        s->ambient = (int32_t)(a > SHARE_CAP ? SHARE_CAP : (a < -(int64_t)SHARE_CAP ? -(int64_t)SHARE_CAP : a));
-    }
+#if 2 * STP_FIX_FRAC_BITS >= SUM_BITS
+    m = (a + (refl < 0 ? ((uint64_t)1 << (2 * F - SUM_BITS)) - 1u : 0u)) >> (2 * F - SUM_BITS);
+#else
+    m = a << (SUM_BITS - 2 * F);
+#endif
+    if (m > 0x80000000u)
+        m = 0x80000000u;
+    /* m BRIGHT < 2^62 */
+    m = ((uint64_t)(uint32_t)m * (uint32_t)bright + (refl < 0 ? (uint32_t)(ONE - 1) : 0u)) >> F;
+    if (m > SHARE_CAP)
+        m = SHARE_CAP;
+    s->ambient = refl < 0 ? -(int32_t)m : (int32_t)m;
 }
 
 /* Each of the s->count lights' position and its BRIGHT P_j |R| (and
@@ -1160,8 +1203,11 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
  * clamped to +-2^17. */
 STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
 {
-    uint32_t nn = (uint32_t)((int32_t)normal[0] * normal[0]) + (uint32_t)((int32_t)normal[1] * normal[1]) +
-                  (uint32_t)((int32_t)normal[2] * normal[2]);
+    uint32_t nn = 0;
+    int i;
+    STP_UNROLL3
+    for (i = 0; i < 3; i++)
+        nn += (uint32_t)((int32_t)normal[i] * normal[i]);
     return nn > 0x10020000u ? 0x20000 : (nn < 0x0FFE0000u ? -0x20000 : (int32_t)(nn - 0x10000000u));
 }
 
@@ -1203,7 +1249,15 @@ static inline int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
     return share;
 }
 
+/* The 32-bit targets' face: stp_shade_fast_face itself there; on a host
+ * (kept compiled there: its helpers serve prepare and the Fresnel) a
+ * function of its own for a struct that prepare did not fill, so that the
+ * wide route's calls do not set up its registers and stack. */
+#if STP_WIDE_ARITH
+STP_NOINLINE stp_fix face_narrow(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+#else
 stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+#endif
 {
     stp_shade_fast_dir e_local;
     const stp_shade_fast_dir *e = &s->e;
@@ -1215,12 +1269,6 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
 #if STP_WITH_SPECULAR
     if (s->exact && s->exact_always && s->count != 0)
         return s->exact(s, normal, point);
-#endif
-#if STP_WIDE_ARITH
-    /* the host path; the code below is the 32-bit targets' (kept compiled
-     * on the host: its helpers serve prepare and the Fresnel) */
-    if (s->wide_ready)
-        return face_wide(s, normal, point);
 #endif
     if (s->count == 0)
         return s->ambient_shade;
@@ -1264,3 +1312,16 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     }
     return shade_of_sum(s, lit, sum);
 }
+
+#if STP_WIDE_ARITH
+stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+{
+    if (!s->wide_ready)
+        return face_narrow(s, normal, point);
+#if STP_WITH_SPECULAR
+    if (s->exact_always && s->count != 0)
+        return s->exact(s, normal, point); /* set with wide_ready */
+#endif
+    return face_wide(s, normal, point); /* the host path */
+}
+#endif
