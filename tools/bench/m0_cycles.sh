@@ -7,7 +7,9 @@
 # TRM's timings (its docstring gives the model).  Prints the window's
 # instructions, estimated cycles and frames per second at 48 MHz; checks
 # the trace's instruction count against the firmware's own SysTick count
-# (EXPECTED, optional) within 64, so a wrong window cannot pass silently.
+# (EXPECTED, optional) within 256 (the firmware counts in SysTick ticks of
+# 40 instructions, and each count's own call sits at an edge of the
+# window), so a wrong window cannot pass silently.
 #
 # usage: m0_cycles.sh ELF [EXPECTED_INSTRUCTIONS]
 # Takes ~30 s and no disk: the trace (~11 M lines) is streamed.
@@ -30,7 +32,7 @@ if [ $# -eq 2 ]; then
     [ -n "$got" ] || { echo "FAIL: no instruction count from the trace" >&2; exit 1; }
     diff=$((got - $2))
     [ "$diff" -lt 0 ] && diff=$((-diff))
-    if [ "$diff" -gt 64 ]; then
+    if [ "$diff" -gt 256 ]; then
         echo "FAIL: the trace counts $got instructions in the window, the firmware $2" >&2
         exit 1
     fi
