@@ -156,6 +156,24 @@
 #define STP_UNROLL3
 #endif
 
+/* floor(v / 2^s) for any int32 v, 0 <= s <= 31.  C leaves >> of a
+ * negative value to the implementation: where it is the arithmetic shift
+ * (every compiler the project builds with; the test folds away) that
+ * shift, else the complement form, exact everywhere (gcc-avr does not
+ * fold the complement form into a shift: twice the code). */
+static inline int32_t stp_asr32(int32_t v, int s)
+{
+    if ((int32_t)-1 >> 1 == (int32_t)-1)
+        return v >> s;
+    return v >= 0 ? v >> s : (int32_t)~(~(uint32_t)v >> s);
+}
+
+/* |v| as unsigned, exact for every int32 v (2^31 for the most negative). */
+static inline uint32_t stp_abs32(int32_t v)
+{
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+}
+
 /* Constant tables of the core.  On AVR, const data is copied into RAM at
  * start-up unless it is put in program memory and read with LPM; 384 bytes
  * of square-root seeds are a twentieth of an ATmega2560's RAM. */

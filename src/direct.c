@@ -40,8 +40,8 @@
 /* v m / 2^14 (file comment: vmul) */
 static int32_t vmul(int32_t v, int16_t m)
 {
-    int_fast16_t high = (int_fast16_t)stp_direct_asr(v, Q14), low = (int_fast16_t)(v & 0x3FFF);
-    return (int32_t)high * m + stp_direct_asr((int32_t)low * m, Q14);
+    int_fast16_t high = (int_fast16_t)stp_asr32(v, Q14), low = (int_fast16_t)(v & 0x3FFF);
+    return (int32_t)high * m + stp_asr32((int32_t)low * m, Q14);
 }
 
 /* sum of vmul(v_j, m_j): below 3 2^24 */
@@ -113,7 +113,7 @@ int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_view *vie
             int32_t c = (int32_t)1 << (Q14 - 1);
             for (k = 0; k < 3; k++)
                 c += (int32_t)view->axis[i][k] * model->rot[k][j];
-            s->rot[i][j] = (int16_t)stp_direct_asr(c, Q14);
+            s->rot[i][j] = (int16_t)stp_asr32(c, Q14);
         }
     if (!difference(&light->position, &view->from, d))
         return 0;
@@ -193,7 +193,7 @@ STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const int16_t m[3]
 static int32_t third(int32_t a, int32_t b, int32_t c)
 {
     int32_t s = a + b + c;
-    int_fast16_t high = (int_fast16_t)stp_direct_asr(s, 16); /* below 2^12 */
+    int_fast16_t high = (int_fast16_t)stp_asr32(s, 16); /* below 2^12 */
     uint_fast16_t low = (uint_fast16_t)((uint32_t)s & 0xFFFFu);
     return (int32_t)high * 21846 + (int32_t)((uint32_t)low * 21846u >> 16);
 }
@@ -208,7 +208,7 @@ stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal
         int32_t c = (int32_t)1 << (Q14 - 1);
         for (k = 0; k < 3; k++)
             c += (int32_t)s->rot[i][k] * normal[k];
-        nv[i] = (int16_t)stp_direct_asr(c, Q14);
+        nv[i] = (int16_t)stp_asr32(c, Q14);
     }
     centre.x = third(p[0]->x, p[1]->x, p[2]->x);
     centre.y = third(p[0]->y, p[1]->y, p[2]->y);
@@ -279,7 +279,6 @@ static int check_args(const stp_direct_frame *f, const stp_mesh *mesh, const stp
     return STP_OK;
 }
 
-
 int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const stp_direct_model *model,
                              const stp_direct_view *view, const stp_direct_light *light, int levels,
                              const uint8_t cell[16], stp_direct_point *points, size_t point_count,
@@ -308,7 +307,7 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
         return STP_ERR_RANGE;
     for (i = 0; i < 3; i++)
         for (j = 0; j < 3; j++) {
-            int32_t e = stp_direct_asr((int32_t)shading.rot[i][j] * scale14, Q14);
+            int32_t e = stp_asr32((int32_t)shading.rot[i][j] * scale14, Q14);
             m[i][j] = (int16_t)(e > 32767 ? 32767 : (e < -32767 ? -32767 : e));
         }
     to_view(view, d, t);

@@ -23,7 +23,7 @@
 #define SUB 4
 #define HALF (1 << (SUB - 1))
 
-/* floor(v / 16) for any int (as stp_direct_asr; on 32-bit cores the
+/* floor(v / 16) for any int (as stp_asr32; on 32-bit cores the
  * complement form, which gcc folds and schedules better there) */
 STP_DIRECT_CALL int floor16(int v)
 {
@@ -112,7 +112,7 @@ static void draw_face(const stp_direct_frame *f, const stp_direct_point *p[3], u
         for (i = 0; i < n; i++)
             if (e[i].y_lo <= y && y < e[i].y_hi) {
                 if (c < 2)
-                    x[c++] = (int)stp_direct_asr((int32_t)e[i].acc, 16);
+                    x[c++] = (int)stp_asr32((int32_t)e[i].acc, 16);
                 e[i].acc += e[i].step;
             }
         if (c < 2)

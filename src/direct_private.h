@@ -8,7 +8,7 @@
 
 #include "stipple/direct.h"
 #include "shade_fast_private.h"
-#include "direct_view_private.h" /* stp_direct_asr, stp_direct_abs, stp_direct_udiv */
+#include "direct_view_private.h" /* stp_direct_udiv, STP_DIRECT_CALL */
 
 /* A frame's shading: shade_fast.c's constants and C = V R, the model's
  * rotation into view coordinates (Q1.14), for the normals. */

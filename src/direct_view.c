@@ -45,9 +45,9 @@ static int unit14(const int32_t v[3], int16_t out[3])
     stp_unit3 u;
     if (stp_unit_from64(v[0], v[1], v[2], &u) == 0)
         return 0;
-    out[0] = (int16_t)stp_direct_asr(u.x + ((int32_t)1 << 15), 16);
-    out[1] = (int16_t)stp_direct_asr(u.y + ((int32_t)1 << 15), 16);
-    out[2] = (int16_t)stp_direct_asr(u.z + ((int32_t)1 << 15), 16);
+    out[0] = (int16_t)stp_asr32(u.x + ((int32_t)1 << 15), 16);
+    out[1] = (int16_t)stp_asr32(u.y + ((int32_t)1 << 15), 16);
+    out[2] = (int16_t)stp_asr32(u.z + ((int32_t)1 << 15), 16);
     return 1;
 }
 
@@ -80,7 +80,7 @@ int stp_direct_view_look(stp_direct_view *v, stp_vec3 from, stp_vec3 at, stp_vec
         return STP_ERR_VIEW;
     /* right = forward x up, as view.c; short: up along the line of sight */
     cross14(v->axis[2], upn, c);
-    if (stp_direct_abs(c[0]) + stp_direct_abs(c[1]) + stp_direct_abs(c[2]) < ((uint32_t)1 << 18))
+    if (stp_abs32(c[0]) + stp_abs32(c[1]) + stp_abs32(c[2]) < ((uint32_t)1 << 18))
         return STP_ERR_VIEW;
     (void)unit14(c, v->axis[0]);
     cross14(v->axis[0], v->axis[2], c);
@@ -119,7 +119,7 @@ int16_t stp_direct_sin(uint16_t angle)
 /* a b in Q1.14, rounded, for |a|, |b| <= 2^14: a 16 x 16-bit product */
 STP_DIRECT_CALL int16_t mul14(int_fast16_t a, int_fast16_t b)
 {
-    return (int16_t)stp_direct_asr((int32_t)a * (int32_t)b + ((int32_t)1 << (Q14 - 1)), Q14);
+    return (int16_t)stp_asr32((int32_t)a * (int32_t)b + ((int32_t)1 << (Q14 - 1)), Q14);
 }
 
 void stp_direct_model_turn(stp_direct_model *m, uint16_t yaw, uint16_t pitch, stp_fix scale,

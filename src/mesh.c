@@ -39,18 +39,6 @@ typedef struct mesh_context {
     const stp_shade_fast *shade; /* the face stage's shader (stp_render_face_shader) */
 } mesh_context;
 
-/* floor(v / 2^s) for any int32 v, 0 <= s <= 31 (>> of a negative value is
- * implementation-defined in C). */
-static int32_t asr32(int32_t v, int s)
-{
-    return v >= 0 ? v >> s : -1 - ((-1 - v) >> s);
-}
-
-static uint32_t magnitude(int32_t v)
-{
-    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
-}
-
 /* ---- normals, once ---- */
 
 int stp_mesh_prepare_normals(const stp_mesh *mesh, int16_t *normals, uint16_t *bad_triangle)
@@ -100,13 +88,6 @@ static int fast_state(const stp_renderer *r, const stp_mesh *mesh)
     return 1;
 }
 
-/* Whether a view coordinate saturated (as render.c's test). */
-static int saturated(stp_vec3 p)
-{
-    return p.x >= STP_FIX_MAX || p.x <= STP_FIX_MIN || p.y >= STP_FIX_MAX || p.y <= STP_FIX_MIN ||
-           p.z >= STP_FIX_MAX || p.z <= STP_FIX_MIN;
-}
-
 /* Whether every point of the model box [lo, hi] lands strictly inside the
  * view volume under the model and view transforms, with room for their
  * rounding: the box grown by a margin worth 64 raw view units (64 / s
@@ -132,8 +113,8 @@ static int box_inside(const stp_renderer *r, stp_vec3 lo, stp_vec3 hi, int64_t s
         p.x = (stp_fix)x;
         p.y = (stp_fix)y;
         p.z = (stp_fix)z;
-        if (stp_render_point_to_view(r, p, &view) || saturated(view) || stp_clip_outcode(&r->clip_volume, view) != 0 ||
-            (magnitude(view.x) | magnitude(view.y) | magnitude(view.z)) >= ((uint32_t)1 << 28))
+        if (stp_render_point_to_view(r, p, &view) || stp_view_saturated(view) || stp_clip_outcode(&r->clip_volume, view) != 0 ||
+            (stp_abs32(view.x) | stp_abs32(view.y) | stp_abs32(view.z)) >= ((uint32_t)1 << 28))
             return 0;
     }
     return 1;
@@ -154,7 +135,7 @@ static int prepare_call(mesh_context *c)
         return 0;
     c->frame = f;
     for (j = 0; j < 3; j++)
-        big |= magnitude(f->eye[j]);
+        big |= stp_abs32(f->eye[j]);
     /* the scale of the back-face test (every coordinate below 2^14) and
      * the model's bounding box */
     lo = hi = c->mesh->vertices[0];
@@ -168,8 +149,8 @@ static int prepare_call(mesh_context *c)
         hi.z = p->z > hi.z ? p->z : hi.z;
     }
     /* the box's corners bound every coordinate's magnitude */
-    big |= magnitude(lo.x) | magnitude(lo.y) | magnitude(lo.z) | magnitude(hi.x) |
-           magnitude(hi.y) | magnitude(hi.z);
+    big |= stp_abs32(lo.x) | stp_abs32(lo.y) | stp_abs32(lo.z) | stp_abs32(hi.x) |
+           stp_abs32(hi.y) | stp_abs32(hi.z);
     c->inside = box_inside(r, lo, hi, f->scale2);
     c->lens.focal = r->focal;
     c->lens.hither = r->hither;
@@ -178,7 +159,7 @@ static int prepare_call(mesh_context *c)
     k = stp_bit_length32(big) - 14;
     c->shift = k > 0 ? k : 0;
     for (j = 0; j < 3; j++)
-        c->eye[j] = asr32(f->eye[j], c->shift);
+        c->eye[j] = stp_asr32(f->eye[j], c->shift);
     return 1;
 }
 
@@ -194,7 +175,7 @@ static void vertex_transform(mesh_context *c, stp_mesh_vertex *s, uint16_t i)
     if (c->inside)
         s->state = 0; /* box_inside: no vertex is outside or saturated */
     else
-        s->state = range || saturated(s->view) ? CODE_RANGE
+        s->state = range || stp_view_saturated(s->view) ? CODE_RANGE
                                                : (int32_t)stp_clip_outcode(&r->clip_volume, s->view);
 }
 
@@ -329,9 +310,9 @@ static int store_face(mesh_context *c, stp_mesh_vertex *const s[3], int style)
 static int face_side(const mesh_context *c, const int16_t *n, const stp_vec3 *a)
 {
 #if !STP_WIDE_ARITH
-    int32_t side = (int32_t)n[0] * (c->eye[0] - asr32(a->x, c->shift)) +
-                   (int32_t)n[1] * (c->eye[1] - asr32(a->y, c->shift)) +
-                   (int32_t)n[2] * (c->eye[2] - asr32(a->z, c->shift));
+    int32_t side = (int32_t)n[0] * (c->eye[0] - stp_asr32(a->x, c->shift)) +
+                   (int32_t)n[1] * (c->eye[1] - stp_asr32(a->y, c->shift)) +
+                   (int32_t)n[2] * (c->eye[2] - stp_asr32(a->z, c->shift));
     if (side >= ((int32_t)1 << 15) || side <= -((int32_t)1 << 15))
         return side > 0 ? 1 : -1;
 #endif

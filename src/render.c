@@ -505,29 +505,13 @@ static void cache_forget(stp_renderer *r)
 #endif
 }
 
-/* Whether a view coordinate was saturated (stp_view_transform_point and
- * stp_transform_point clamp to [STP_FIX_MIN, STP_FIX_MAX]): the point lies
- * beyond what view coordinates hold, and drawing it would move it. */
-static int saturated(stp_vec3 p)
-{
-    return p.x >= STP_FIX_MAX || p.x <= STP_FIX_MIN || p.y >= STP_FIX_MAX || p.y <= STP_FIX_MIN ||
-           p.z >= STP_FIX_MAX || p.z <= STP_FIX_MIN;
-}
-
 /* An entered point (model coordinates) to view coordinates by the
  * geometry stage; a point the model transform saturated comes out
- * saturated too (see saturated). */
+ * saturated too (see stp_view_saturated). */
 static void vertex_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
 {
     if (stp_render_point_to_view(r, p, out))
         out->x = STP_FIX_MAX;
-}
-
-int stp_render_point_two_steps(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
-{
-    p = stp_transform_point(&r->model, p);
-    stp_view_transform_point(&r->to_view, p, out);
-    return saturated(p);
 }
 
 void stp_render_geometry_update(stp_renderer *r)
@@ -708,7 +692,7 @@ int stp_renderer_move(stp_renderer *r, stp_vec3 p)
     if (status != STP_OK)
         return status;
     vertex_to_view(r, p, &q);
-    if (saturated(q))
+    if (stp_view_saturated(q))
         return STP_ERR_RANGE;
     r->pen = q;
     r->pen_valid = 1;
@@ -724,7 +708,7 @@ int stp_renderer_line(stp_renderer *r, stp_vec3 p)
     if (status != STP_OK)
         return status;
     vertex_to_view(r, p, &q);
-    if (saturated(q))
+    if (stp_view_saturated(q))
         return STP_ERR_RANGE;
     if (!r->pen_valid) {
         r->pen = q;
@@ -826,7 +810,7 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
             if (c->used_by == serial) /* the slot holds an earlier vertex of this polygon */
                 view = &r->clip_a[i];
             vertex_to_view(r, p, view);
-            code = saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode(&r->clip_volume, *view);
+            code = stp_view_saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode(&r->clip_volume, *view);
             if (c->used_by == serial) {
                 all &= code;
                 any |= code;
@@ -850,7 +834,7 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
 #else
     for (i = 0; i < e->n; i++) {
         vertex_to_view(r, vertices[i], &r->clip_a[i]);
-        range |= (unsigned)saturated(r->clip_a[i]);
+        range |= (unsigned)stp_view_saturated(r->clip_a[i]);
     }
 #endif
     e->range = range != 0;

@@ -272,14 +272,13 @@ void stp_render_geometry_update(stp_renderer *r);
 
 /* The geometry stage for an entered point p (model coordinates): its view
  * coordinates in *out, each saturated; returns 1 when the model transform
- * (two steps: stp_render_point_two_steps, render.c) saturated it: the
- * point lies beyond what the coordinates hold (the caller reports
+ * (two steps: stp_view_point_two_steps, view.c) saturated it: the point
+ * lies beyond what the coordinates hold (the caller reports
  * STP_ERR_RANGE), else 0. */
-int stp_render_point_two_steps(const stp_renderer *r, stp_vec3 p, stp_vec3 *out); /* render.c */
 STP_HOT_INLINE int stp_render_point_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
 {
     if (r->geometry == STP_GEOMETRY_TWO_STEPS)
-        return stp_render_point_two_steps(r, p, out);
+        return stp_view_point_two_steps(&r->model, &r->to_view, p, out);
     STP_VIEW_TRANSFORM_POINT(&r->point_view, p, out); /* inline where 64-bit products are */
     return 0;
 }

@@ -42,24 +42,6 @@
 
 /* ---- integer helpers ---- */
 
-/* v >> s rounding toward minus infinity for negative v too, 0 <= s < 32:
- * C99 leaves >> of a negative value to the implementation, so the
- * operator is used only where it is the arithmetic shift (every compiler
- * the project builds with: the test is folded, one instruction remains);
- * elsewhere the complement form. */
-static inline int32_t asr32(int32_t v, int s)
-{
-    if ((int32_t)-1 >> 1 == (int32_t)-1)
-        return v >> s;
-    return v >= 0 ? v >> s : (int32_t)~(~(uint32_t)v >> s);
-}
-
-/* |v| as unsigned (2^31 for the most negative v) */
-STP_HOT_INLINE uint32_t abs_u32(int32_t v)
-{
-    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
-}
-
 /* The face's shade from the Q26 sum of the ambient part and the shares
  * of the lights that reach it (lit: at least one did), rounded once to
  * stp_fix; a face no light reaches gets the prepared ambient shade. */
@@ -103,7 +85,7 @@ STP_HOT_INLINE uint32_t mul_u16(uint32_t a, uint32_t m)
  * two 32-bit products. */
 static inline int32_t mul_q16(int32_t a, uint32_t m)
 {
-    return asr32(a, 16) * (int32_t)m + (int32_t)((((uint32_t)a & 0xFFFFu) * m) >> 16);
+    return stp_asr32(a, 16) * (int32_t)m + (int32_t)((((uint32_t)a & 0xFFFFu) * m) >> 16);
 }
 
 /* ---- reciprocal square root and reciprocal ---- */
@@ -161,7 +143,7 @@ STP_HOT_INLINE uint32_t rsqrt_norm(uint32_t q)
     uint32_t y = STP_TABLE_U16(&rsqrt_seed[(q >> 26) - 16u]); /* ~ 2^31/sqrt(q) < 2^16 */
     /* (q 2^-16)(y^2 2^-16) ~ 2^30: both factors below 2^16 */
     int32_t e = Q30 - (int32_t)((q >> 16) * ((y * y) >> 16));
-    y = (uint32_t)((int32_t)y + asr32(mul_q16(e, y), 15)); /* y (1 + e 2^-31), |e| < 2^26 */
+    y = (uint32_t)((int32_t)y + stp_asr32(mul_q16(e, y), 15)); /* y (1 + e 2^-31), |e| < 2^26 */
     if (y > 0xFFFFu)
         y = 0xFFFFu;
     /* q y^2 2^-32 ~ 2^30, y^2 < 2^32; e is now below 2^20 */
@@ -176,7 +158,7 @@ static uint32_t recip16(uint32_t m)
     uint32_t y = RECIP_SEED(m >> 7);
     uint32_t p = m * y; /* ~ 2^31, < 2^32 */
     int32_t e = p <= 0x80000000u ? (int32_t)(0x80000000u - p) : -(int32_t)(p - 0x80000000u);
-    return (uint32_t)((int32_t)y + asr32(mul_q16(e, y), 15)); /* |e| < 2^23 */
+    return (uint32_t)((int32_t)y + stp_asr32(mul_q16(e, y), 15)); /* |e| < 2^23 */
 }
 
 /* ---- stp_sf16: m 2^-e, m = 0 or in [2^15, 2^16) ---- */
@@ -312,9 +294,9 @@ static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b,
     /* v = a - b in d->w, then scaled there in place (no copy on the stack) */
     STP_UNROLL3
     for (i = 0; i < 3; i++) {
-        int32_t v = big ? asr32(vec_comp(a, i), 1) - asr32(vec_comp(b, i), 1) : vec_comp(a, i) - vec_comp(b, i);
+        int32_t v = big ? stp_asr32(vec_comp(a, i), 1) - stp_asr32(vec_comp(b, i), 1) : vec_comp(a, i) - vec_comp(b, i);
         d->w[i] = v;
-        any |= abs_u32(v);
+        any |= stp_abs32(v);
     }
     /* the bit length of the largest |v_i| is that of their OR */
     n = stp_bit_length32(any) - 16; /* the largest 2^-n in [2^15, 2^16) */
@@ -326,7 +308,7 @@ static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b,
     if (n > 0) {
         STP_UNROLL3
         for (i = 0; i < 3; i++)
-            d->w[i] = d->w[i] < 0 ? -(int32_t)(abs_u32(d->w[i]) >> n) : d->w[i] >> n;
+            d->w[i] = d->w[i] < 0 ? -(int32_t)(stp_abs32(d->w[i]) >> n) : d->w[i] >> n;
     } else {
         STP_UNROLL3
         for (i = 0; i < 3; i++)
@@ -334,7 +316,7 @@ static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b,
     }
     STP_UNROLL3
     for (i = 0; i < 3; i++) {
-        uint32_t u = abs_u32(d->w[i]);
+        uint32_t u = stp_abs32(d->w[i]);
         q += (u * u) >> 2; /* each u^2 < 2^32 */
     }
     d->q = q; /* in [2^28, 3 2^30) */
@@ -358,14 +340,14 @@ static int faces_point(const int16_t n[3], const stp_vec3 *a, const stp_vec3 *b)
     STP_UNROLL3
     for (i = 0; i < 3; i++) {
         int32_t v = vec_comp(a, i) - vec_comp(b, i);
-        h += (int32_t)n[i] * asr32(v, 16);
+        h += (int32_t)n[i] * stp_asr32(v, 16);
         l += (int32_t)n[i] * (int32_t)(((uint32_t)v & 0xFFFFu) >> 1);
         if (v & 1)
             c += n[i];
     }
-    t = l + asr32(c, 1); /* floor(B + c/2): |t| < 2^31 */
+    t = l + stp_asr32(c, 1); /* floor(B + c/2): |t| < 2^31 */
     /* 2^15 h + t > 0  <=>  h > floor(-t / 2^15) */
-    return h > asr32(-t, 15);
+    return h > stp_asr32(-t, 15);
 }
 
 /* N.w (|.| < 2^31: see the file comment) */
@@ -385,7 +367,7 @@ STP_HOT_INLINE int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t n
 {
     uint32_t a = dot < 0 ? 0u - (uint32_t)dot : (uint32_t)dot;
     int32_t c = (int32_t)(stp_umulhi32_approx(a, d->r) << (1 + d->j)); /* <= 2^30 (1 + 2^-12) */
-    c -= asr32(asr32(c, 15) * asr32(nd, 2), 12); /* 2^15 2^15: fits */
+    c -= stp_asr32(stp_asr32(c, 15) * stp_asr32(nd, 2), 12); /* 2^15 2^15: fits */
     return dot < 0 ? -c : c;
 }
 
@@ -403,9 +385,9 @@ static int32_t cos_dirs(const stp_shade_fast_dir *a, const stp_shade_fast_dir *b
 {
     const int32_t *aw = a->w, *bw = b->w;
     /* |a_i (b_i >> 1)| < 2^16 2^15; b_i & 1 is 0 or 1 */
-    int32_t s = asr32(aw[0] * asr32(bw[0], 1), 2) + asr32(aw[1] * asr32(bw[1], 1), 2) +
-                asr32(aw[2] * asr32(bw[2], 1), 2) +
-                asr32(aw[0] * (bw[0] & 1) + aw[1] * (bw[1] & 1) + aw[2] * (bw[2] & 1), 3);
+    int32_t s = stp_asr32(aw[0] * stp_asr32(bw[0], 1), 2) + stp_asr32(aw[1] * stp_asr32(bw[1], 1), 2) +
+                stp_asr32(aw[2] * stp_asr32(bw[2], 1), 2) +
+                stp_asr32(aw[0] * (bw[0] & 1) + aw[1] * (bw[1] & 1) + aw[2] * (bw[2] & 1), 3);
     uint32_t m;
     m = s < 0 ? 0u - (uint32_t)s : (uint32_t)s;
     m = stp_umulhi32_approx(stp_umulhi32_approx(m, a->r), b->r) << (3 + a->j + b->j);
@@ -520,7 +502,7 @@ static uint32_t fresnel_q16(const stp_shade_fast *s, uint32_t c, int32_t e_dot_l
         if (i >= STP_SHADE_FAST_FRESNEL_NODES - 1)
             return a;
         d = (int32_t)s->fresnel[i + 1] - (int32_t)a; /* |d| < 2^16 */
-        return (uint32_t)((int32_t)a + asr32(d * (int32_t)frac, 16));
+        return (uint32_t)((int32_t)a + stp_asr32(d * (int32_t)frac, 16));
     }
     return sf_to_fixed(fresnel_sf(s, c, e_dot_l >= Q30 ? 0u : ((uint32_t)Q30 - (uint32_t)e_dot_l) >> 1),
                        16, 0xFFFFu);

@@ -384,16 +384,10 @@ void stp_shadow_enter(stp_renderer *r, const stp_vec3 *vertices, int n)
         for (i = 0; i < n; i++) {
             stp_vec3 pv;
             int64_t p[3], l[3];
-            /* the entered vertex through the geometry stage's transform,
-             * the one the display file's vertices come from (a composed
-             * model and view transform included), so map and picture
-             * agree; the two-step case spelled here, as render.c's
-             * function for it would make shadow.c and render.c use each
-             * other */
-            if (r->geometry == STP_GEOMETRY_TWO_STEPS)
-                stp_view_transform_point(&r->to_view, stp_transform_point(&r->model, vertices[i]), &pv);
-            else
-                stp_view_transform_point(&r->point_view, vertices[i], &pv);
+            /* the entered vertex through the geometry stage, the one the
+             * display file's vertices come from (a composed model and view
+             * transform included), so map and picture agree */
+            (void)stp_render_point_to_view(r, vertices[i], &pv);
             p[0] = pv.x;
             p[1] = pv.y;
             p[2] = pv.z;

@@ -117,18 +117,6 @@ void stp_view_transform_make(const stp_view_frame *vf, stp_view_transform *out)
 
 /* ---- the geometry stage (view_private.h) ---- */
 
-/* floor(v / 2^s) for any int32 v, 0 <= s <= 31 (>> of a negative value is
- * implementation-defined in C). */
-static int32_t asr32(int32_t v, int s)
-{
-    return v >= 0 ? v >> s : -1 - ((-1 - v) >> s);
-}
-
-static uint32_t magnitude(int32_t v)
-{
-    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
-}
-
 /* model's matrix m (the identity for NULL) and whether it is a similarity
  * (stp_view_similar).  Tested on m cut to 14 significant bits (mq = m /
  * 2^shift): products below 2^28, sums of three below 2^30, all in 32
@@ -141,14 +129,14 @@ static int similarity(const stp_transform *model, int32_t m[3][3], int32_t mq[3]
     for (i = 0; i < 3; i++)
         for (j = 0; j < 3; j++) {
             m[i][j] = model ? model->m[i][j] : (i == j ? ONE : 0);
-            big |= magnitude(m[i][j]);
+            big |= stp_abs32(m[i][j]);
         }
     if (big < ((uint32_t)1 << (F - 6)) || big >= ((uint32_t)1 << 24))
         return 0; /* scale below 2^-6 or 256 and more */
     shift = stp_bit_length32(big) - 14;
     for (i = 0; i < 3; i++)
         for (j = 0; j < 3; j++)
-            mq[i][j] = shift > 0 ? asr32(m[i][j], shift) : m[i][j] * ((int32_t)1 << -shift);
+            mq[i][j] = shift > 0 ? stp_asr32(m[i][j], shift) : m[i][j] * ((int32_t)1 << -shift);
     for (j = 0; j < 3; j++)
         len[j] = mq[0][j] * mq[0][j] + mq[1][j] * mq[1][j] + mq[2][j] * mq[2][j];
     dot[0] = mq[0][0] * mq[0][1] + mq[1][0] * mq[1][1] + mq[2][0] * mq[2][1];
@@ -161,11 +149,19 @@ static int similarity(const stp_transform *model, int32_t m[3][3], int32_t mq[3]
             return 0;
     }
     /* c1 x c2 (below 2^29) cut to 15 bits, dotted with c0 (below 2^14) */
-    cross[0] = asr32(mq[1][1] * mq[2][2] - mq[2][1] * mq[1][2], 14);
-    cross[1] = asr32(mq[2][1] * mq[0][2] - mq[0][1] * mq[2][2], 14);
-    cross[2] = asr32(mq[0][1] * mq[1][2] - mq[1][1] * mq[0][2], 14);
+    cross[0] = stp_asr32(mq[1][1] * mq[2][2] - mq[2][1] * mq[1][2], 14);
+    cross[1] = stp_asr32(mq[2][1] * mq[0][2] - mq[0][1] * mq[2][2], 14);
+    cross[2] = stp_asr32(mq[0][1] * mq[1][2] - mq[1][1] * mq[0][2], 14);
     det = mq[0][0] * cross[0] + mq[1][0] * cross[1] + mq[2][0] * cross[2];
     return det > 0;
+}
+
+int stp_view_point_two_steps(const stp_transform *model, const stp_view_transform *to_view, stp_vec3 p,
+                             stp_vec3 *out)
+{
+    p = stp_transform_point(model, p);
+    stp_view_transform_point(to_view, p, out);
+    return stp_view_saturated(p);
 }
 
 int stp_view_similar(const stp_transform *model)
@@ -231,7 +227,7 @@ int stp_model_frame_make(const stp_view_transform *t, stp_vec3 from, const stp_t
      * |mq column| < 2^14 sqrt 3) */
     for (i = 0; i < 3; i++) {
         int32_t row[3];
-        int32_t ax = asr32(axis[i]->x, 1), ay = asr32(axis[i]->y, 1), az = asr32(axis[i]->z, 1);
+        int32_t ax = stp_asr32(axis[i]->x, 1), ay = stp_asr32(axis[i]->y, 1), az = stp_asr32(axis[i]->z, 1);
         stp_unit3 u;
         for (j = 0; j < 3; j++)
             row[j] = ax * mq[0][j] + ay * mq[1][j] + az * mq[2][j];

@@ -103,6 +103,22 @@ STP_HOT_INLINE void stp_view_transform_point_wide(const stp_view_transform *t, s
  * stp_view_transform_point); the identity (no model transform) takes the
  * view transform alone. */
 
+/* Whether a coordinate of view or world point p is saturated
+ * (stp_view_transform_point and stp_transform_point clamp to
+ * [STP_FIX_MIN, STP_FIX_MAX]): the point lies beyond what the coordinates
+ * hold, and drawing it would move it. */
+static inline int stp_view_saturated(stp_vec3 p)
+{
+    return p.x >= STP_FIX_MAX || p.x <= STP_FIX_MIN || p.y >= STP_FIX_MAX || p.y <= STP_FIX_MIN ||
+           p.z >= STP_FIX_MAX || p.z <= STP_FIX_MIN;
+}
+
+/* The two steps for model point p: model (stp_transform_point), then the
+ * view transform to_view, into *out; returns 1 when the model transform
+ * saturated p (stp_view_saturated), else 0. */
+int stp_view_point_two_steps(const stp_transform *model, const stp_view_transform *to_view, stp_vec3 p,
+                             stp_vec3 *out);
+
 /* The face stage's model frame (render.c's stp_render_model_frame, direct
  * drawing's frame): what lets a face be tested and shaded from its Q1.14
  * model normal (a mesh's prepared one, or stp_render_model_normal of an
