@@ -174,6 +174,12 @@ static inline uint32_t stp_abs32(int32_t v)
     return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
 }
 
+/* |v| as unsigned, exact for every int64 v (2^63 for the most negative). */
+static inline uint64_t stp_abs64u(int64_t v)
+{
+    return v < 0 ? 0u - (uint64_t)v : (uint64_t)v;
+}
+
 /* Constant tables of the core.  On AVR, const data is copied into RAM at
  * start-up unless it is put in program memory and read with LPM; 384 bytes
  * of square-root seeds are a twentieth of an ATmega2560's RAM. */

@@ -1362,6 +1362,33 @@ static const stp_model_frame *model_route(stp_renderer *r)
     return stp_render_model_frame(r);
 }
 
+/* The model normal n (Q1.14) of polygon v (e->n points) and the side of
+ * it the eye sees (stp_render_face_side); for a triangle with back faces
+ * removed the side is found first (stp_render_certain_side), so a certain back face
+ * is not normalised: returns 0 for such a face (n unset), 1 otherwise,
+ * STP_ERR_DEGENERATE for a zero normal. */
+static int model_normal_and_side(const stp_renderer *r, const stp_vec3 *v, int count,
+                                 const stp_model_frame *f, int16_t n[3], int *side)
+{
+    if (count == 3 && r->backface_removal) {
+        int64_t c[3];
+        int sure;
+        stp_render_triangle_cross(v, c);
+        if ((c[0] | c[1] | c[2]) == 0)
+            return STP_ERR_DEGENERATE;
+        sure = stp_render_certain_side(f, c, v[0]);
+        if (sure < 0)
+            return 0;
+        (void)stp_render_unit_q14(c[0], c[1], c[2], n);
+        *side = sure > 0 ? 1 : stp_render_face_side(f, n, v[0]);
+        return 1;
+    }
+    if (!stp_render_model_normal(v, count, n))
+        return STP_ERR_DEGENERATE;
+    *side = stp_render_face_side(f, n, v[0]);
+    return 1;
+}
+
 /* DISPLAY-FILE-ENTER of a flat polygon on the model route: the face
  * stage's normal (of the entered points), side, view normal and shade, as
  * stp_renderer_mesh enters a triangle; then clip, project and store.  A
@@ -1370,10 +1397,9 @@ static int enter_model_face(stp_renderer *r, const stp_vec3 *vertices, stp_entry
                             const stp_model_frame *f)
 {
     int16_t n[3], nv[3];
-    int side;
-    if (!stp_render_model_normal(vertices, e->n, n))
-        return STP_ERR_DEGENERATE;
-    side = stp_render_face_side(f, n, vertices[0]);
+    int side = 0, found = model_normal_and_side(r, vertices, e->n, f, n, &side);
+    if (found != 1)
+        return found == 0 ? STP_OK : found;
     if (side <= 0 && r->backface_removal)
         return STP_OK;
     enter_transform(r, vertices, e);

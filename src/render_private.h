@@ -237,28 +237,39 @@ static inline int stp_render_unit_q14(int64_t a, int64_t b, int64_t c, int16_t o
     return 1;
 }
 
-/* a triangle's normal (stp_render_model_normal for n = 3): the edge
- * vectors (below 2^33) cut to 30 bits together, so each cross-product term
- * is below 2^61 and their difference below 2^62. */
+/* a triangle's cross product (v1 - v0) x (v2 - v0) in c[] (model
+ * coordinates): the edge vectors (below 2^33) cut to 30 bits together
+ * (floor), so each term is below 2^61 and each component below 2^62; the
+ * cut keeps the direction within 2^-28 of the exact one. */
+static inline void stp_render_triangle_cross(const stp_vec3 *v, int64_t c[3])
+{
+    int64_t x1 = (int64_t)v[1].x - v[0].x, y1 = (int64_t)v[1].y - v[0].y,
+            z1 = (int64_t)v[1].z - v[0].z;
+    int64_t x2 = (int64_t)v[2].x - v[0].x, y2 = (int64_t)v[2].y - v[0].y,
+            z2 = (int64_t)v[2].z - v[0].z;
+    uint64_t spread = stp_abs64u(x1) | stp_abs64u(y1) | stp_abs64u(z1) | stp_abs64u(x2) |
+                      stp_abs64u(y2) | stp_abs64u(z2);
+    if (spread >> 30) {
+        int bits = stp_bit_length64(spread) - 30;
+        x1 = stp_asr64(x1, bits);
+        y1 = stp_asr64(y1, bits);
+        z1 = stp_asr64(z1, bits);
+        x2 = stp_asr64(x2, bits);
+        y2 = stp_asr64(y2, bits);
+        z2 = stp_asr64(z2, bits);
+    }
+    c[0] = y1 * z2 - z1 * y2;
+    c[1] = z1 * x2 - x1 * z2;
+    c[2] = x1 * y2 - y1 * x2;
+}
+
+/* a triangle's normal (stp_render_model_normal for n = 3): its cross
+ * product, normalised. */
 static inline int stp_render_triangle_normal(const stp_vec3 *v, int16_t out[3])
 {
-    int64_t e[6];
-    uint64_t spread = 0;
-    int i, bits;
-    e[0] = (int64_t)v[1].x - v[0].x;
-    e[1] = (int64_t)v[1].y - v[0].y;
-    e[2] = (int64_t)v[1].z - v[0].z;
-    e[3] = (int64_t)v[2].x - v[0].x;
-    e[4] = (int64_t)v[2].y - v[0].y;
-    e[5] = (int64_t)v[2].z - v[0].z;
-    for (i = 0; i < 6; i++)
-        spread |= (uint64_t)(e[i] < 0 ? -e[i] : e[i]);
-    bits = stp_bit_length64(spread) - 30;
-    if (bits > 0)
-        for (i = 0; i < 6; i++)
-            e[i] = stp_asr64(e[i], bits);
-    return stp_render_unit_q14(e[1] * e[5] - e[2] * e[4], e[2] * e[3] - e[0] * e[5],
-                               e[0] * e[4] - e[1] * e[3], out);
+    int64_t c[3];
+    stp_render_triangle_cross(v, c);
+    return stp_render_unit_q14(c[0], c[1], c[2], out);
 }
 
 
@@ -300,6 +311,49 @@ STP_HOT_INLINE int stp_render_face_side(const stp_model_frame *f, const int16_t 
                    (int64_t)n[1] * ((int64_t)f->eye[1] - v0.y) +
                    (int64_t)n[2] * ((int64_t)f->eye[2] - v0.z);
     return side > 0 ? 1 : (side < 0 ? -1 : 0);
+}
+
+/* The side of a triangle with cross product c (stp_render_triangle_cross)
+ * through v0 that stp_render_face_side gives for its normal n (c
+ * normalised and rounded to Q1.14), found without normalising when the
+ * sign is certain: 1 or -1, else 0 (near edge-on: the caller normalises).
+ * With c and d = eye - v0 cut to 29 bits by floor shifts (c = 2^a cs + rc,
+ * d = 2^b ds + rd, 0 <= r < 2^shift), |c.d - 2^(a+b) cs.ds| <= 2^(a+b)
+ * (|cs|1 + |ds|1 + 3).  n = 2^14 c/|c| + delta with |delta_i| < 1 (the
+ * rounding's half plus stp_unit_from64's error and the cut's 2^-28), so
+ * n.d = 2^14 c.d/|c| + delta.d keeps the sign of c.d when 2^14 |c.d| >
+ * 2 |c|1 |d|1 (a margin of 2), with |c|1 <= 2^a (|cs|1 + 3) and |d|1 <=
+ * 2^b (|ds|1 + 3).  |cs|1 <= 3 C and |ds|1 <= 3 D for C and D the ORs of
+ * the magnitudes: certain when |cs.ds| > 3 C + 3 D + 3 + (3 C + 3)(3 D + 3)
+ * / 2^13.  Ranges: |cs|, |ds| <= 2^29, so C, D < 2^30, cs.ds below
+ * 3 2^58 and (3 C + 3)(3 D + 3) below 2^64 (unsigned). */
+static inline int stp_render_certain_side(const stp_model_frame *f, const int64_t c[3], stp_vec3 v0)
+{
+    int64_t cx = c[0], cy = c[1], cz = c[2], dot;
+    int64_t dx = (int64_t)f->eye[0] - v0.x, dy = (int64_t)f->eye[1] - v0.y,
+            dz = (int64_t)f->eye[2] - v0.z;
+    uint64_t c_or = stp_abs64u(cx) | stp_abs64u(cy) | stp_abs64u(cz);
+    uint64_t d_or = stp_abs64u(dx) | stp_abs64u(dy) | stp_abs64u(dz), bound;
+    if ((c_or | d_or) >> 29) {
+        int a = stp_bit_length64(c_or) - 29, b = stp_bit_length64(d_or) - 29;
+        if (a > 0) {
+            cx = stp_asr64(cx, a);
+            cy = stp_asr64(cy, a);
+            cz = stp_asr64(cz, a);
+            c_or = stp_abs64u(cx) | stp_abs64u(cy) | stp_abs64u(cz);
+        }
+        if (b > 0) {
+            dx = stp_asr64(dx, b);
+            dy = stp_asr64(dy, b);
+            dz = stp_asr64(dz, b);
+            d_or = stp_abs64u(dx) | stp_abs64u(dy) | stp_abs64u(dz);
+        }
+    }
+    dot = cx * dx + cy * dy + cz * dz;
+    bound = 3u * (c_or + d_or + 1u) + (((3u * c_or + 3u) * (3u * d_or + 3u)) >> 13) + 1u;
+    if (stp_abs64u(dot) <= bound)
+        return 0;
+    return dot > 0 ? 1 : -1;
 }
 
 /* The model normal n in view coordinates (Q1.14, rounded), turned to the
