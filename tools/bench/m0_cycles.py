@@ -104,12 +104,17 @@ def main():
     ap.add_argument("--clock", type=float, default=48e6, help="Hz, for frames per second")
     ap.add_argument("--objdump", default="arm-none-eabi-objdump")
     ap.add_argument("--nm", default="arm-none-eabi-nm")
+    ap.add_argument("--profile", type=int, default=0, metavar="N",
+                    help="print the N functions with the most cycles in the window")
     a = ap.parse_args()
     table = disassemble(a.elf, a.objdump)
     mark = symbol_address(a.elf, a.mark, a.nm)
     # per segment between entries of the mark: [instructions, cycles, taken, exceptions]
     segments = []
+    profiles = []  # per segment: symbol -> [instructions, cycles]
     cur = [0, 0, 0, 0]
+    prof = {}
+    prev_symbol = "?"
     prev = None
     unknown = 0
     for line in sys.stdin:
@@ -117,6 +122,7 @@ def main():
             continue
         b = line.find("[")
         pc = int(line[b + 10:b + 18], 16)
+        cycles_before = cur[1]
         if prev is not None:
             info = table.get(prev)
             if info is None:
@@ -134,10 +140,19 @@ def main():
                 else:
                     cur[1] += through + 15  # exception entry
                     cur[3] += 1
+        if a.profile and prev is not None:
+            entry = prof.setdefault(prev_symbol, [0, 0])
+            entry[0] += 1
+            entry[1] += cur[1] - cycles_before
         if pc == mark:
             segments.append(cur)
+            profiles.append(prof)
             cur = [0, 0, 0, 0]
+            prof = {}
         prev = pc
+        if a.profile:
+            tail = line[line.find("]", b) + 1:].split()
+            prev_symbol = tail[0] if tail else "?"
     if len(segments) < 3:
         sys.exit(f"m0_cycles: {a.mark} entered {len(segments)} times, need 3 (t0, t1, t2)")
     window = [x + y for x, y in zip(segments[-2], segments[-1])]
@@ -147,6 +162,17 @@ def main():
           f"({cycles / instructions:.3f} a instruction; taken branches {window[2]}, "
           f"exception entries {window[3]})")
     print(f"m0_cycles: {a.clock / cycles:.1f} frames/s at {a.clock / 1e6:g} MHz")
+    if a.profile:
+        merged = {}
+        for part in profiles[-2:]:
+            for name, (n, c) in part.items():
+                m = merged.setdefault(name, [0, 0])
+                m[0] += n
+                m[1] += c
+        print(f"m0_cycles: profile of the window, self cost ({len(merged)} functions)")
+        print(f"{'cycles':>10} {'instructions':>13}  function")
+        for name, (n, c) in sorted(merged.items(), key=lambda kv: -kv[1][1])[:a.profile]:
+            print(f"{c:>10} {n:>13}  {name}")
     if unknown:
         print(f"m0_cycles: {unknown} executed addresses not in the disassembly, counted as 1 cycle")
 

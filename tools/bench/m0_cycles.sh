@@ -11,7 +11,9 @@
 # 40 instructions, and each count's own call sits at an edge of the
 # window), so a wrong window cannot pass silently.
 #
-# usage: m0_cycles.sh ELF [EXPECTED_INSTRUCTIONS]
+# usage: [STP_M0_PROFILE=N] m0_cycles.sh ELF [EXPECTED_INSTRUCTIONS]
+#   STP_M0_PROFILE=N  also print the N functions with the most cycles
+#                     in the window (self cost)
 # Takes ~30 s and no disk: the trace (~11 M lines) is streamed.
 # Exit status: 0 pass, 1 fail, 77 tools missing (skipped).
 set -eu
@@ -25,7 +27,7 @@ trap 'rm -f "$out"' EXIT
 timeout -k 5 "${STP_QEMU_TIMEOUT:-300}" qemu-system-arm -M mps2-an385 -kernel "$1" \
     -display none -serial null -monitor none -semihosting-config enable=on,target=native \
     -icount shift=0 -singlestep -d exec,nochain -D /dev/stdout 2>/dev/null |
-    python3 "$here/m0_cycles.py" "$1" >"$out"
+    python3 "$here/m0_cycles.py" ${STP_M0_PROFILE:+--profile "$STP_M0_PROFILE"} "$1" >"$out"
 cat "$out"
 if [ $# -eq 2 ]; then
     got=$(sed -n 's/^m0_cycles: instructions in the window \([0-9]*\)$/\1/p' "$out")
