@@ -262,8 +262,8 @@ STP_HOT_INLINE void put_vertex(stp_instr *out, int32_t op, const stp_mesh_vertex
 }
 
 /* The display-file records of a front face inside the view (scratch
- * entries s[0..2]): SHADE when the style changed, then its three
- * projected vertices. */
+ * entries s[0..2], projected): SHADE when the style changed, then its
+ * three vertices. */
 static int store_face(mesh_context *c, stp_mesh_vertex *const s[3], int style)
 {
     stp_renderer *r = c->r;
@@ -272,12 +272,6 @@ static int store_face(mesh_context *c, stp_mesh_vertex *const s[3], int style)
     stp_instr *out;
     if (r->capacity - used < (change ? 4u : 3u))
         return STP_ERR_FULL;
-    if ((s[0]->state & PROJECTED) == 0)
-        vertex_project(c, s[0]);
-    if ((s[1]->state & PROJECTED) == 0)
-        vertex_project(c, s[1]);
-    if ((s[2]->state & PROJECTED) == 0)
-        vertex_project(c, s[2]);
     out = &r->df[used];
     if (change) {
         out->op = STP_OP_SHADE;
@@ -347,6 +341,14 @@ static int enter_face(mesh_context *c, uint16_t t)
         return STP_OK; /* wholly outside one plane */
     if (any != 0)
         return enter_fallback(c, t); /* crosses a plane: to be clipped */
+    if ((s[0]->state & PROJECTED) == 0)
+        vertex_project(c, s[0]);
+    if ((s[1]->state & PROJECTED) == 0)
+        vertex_project(c, s[1]);
+    if ((s[2]->state & PROJECTED) == 0)
+        vertex_project(c, s[2]);
+    if (!stp_render_rows_spanned(s[0]->dy, s[1]->dy, s[2]->dy))
+        return STP_OK; /* between two row centres: draws nothing */
     stp_render_view_normal(c->frame, n, side, nv);
     centre.x = average3(c->inside, s[0]->view.x, s[1]->view.x, s[2]->view.x);
     centre.y = average3(c->inside, s[0]->view.y, s[1]->view.y, s[2]->view.y);

@@ -777,6 +777,8 @@ typedef struct stp_entry {
     int style;
     int32_t colour;
     stp_fix transmission;
+    const stp_instr *projected; /* an unclipped polygon's device vertices, or NULL */
+    int outcodes_known;         /* outside_all and outside_any set */
 } stp_entry;
 
 /* Step 1: the vertices to view coordinates (r->clip_a), through the
@@ -849,6 +851,7 @@ static void enter_outcodes(stp_renderer *r, stp_entry *e)
     int i;
     e->outside_all = 31u;
     e->outside_any = 0;
+    e->outcodes_known = 1;
     for (i = 0; i < e->n; i++) {
         unsigned code = stp_clip_outcode(&r->clip_volume, r->clip_a[i]);
         e->outside_all &= code;
@@ -1216,7 +1219,8 @@ static int enter_store(stp_renderer *r, stp_entry *e)
     clipped_shades = r->shade_a;
 #endif
 #if !STP_VERTEX_CACHE
-    enter_outcodes(r, e);
+    if (!e->outcodes_known)
+        enter_outcodes(r, e);
 #endif
     if (e->outside_all != 0)
         return STP_OK; /* wholly outside one plane: nothing of it is in view */
@@ -1239,6 +1243,21 @@ static int enter_store(stp_renderer *r, stp_entry *e)
 #endif
     /* the vertices straight into the display file (capacity checked) */
     out = &r->df[r->used];
+    if (e->projected && e->outside_any == 0) {
+        /* enter_model_face projected them (a flat polygon) */
+        for (i = 0; i < m; i++, out++) {
+            out->op = i == 0 ? m : STP_OP_LINE;
+            out->x = e->projected[i].x;
+            out->y = e->projected[i].y;
+            out->z = e->projected[i].z;
+#if STP_WITH_GOURAUD
+            out->shade = -1;
+#endif
+        }
+        r->used += (uint32_t)m;
+        r->segments[r->open_segment].end = r->used;
+        return STP_OK;
+    }
     for (i = 0; i < m; i++, out++) {
 #if STP_VERTEX_CACHE
         /* an unclipped polygon's vertices are the cached ones */
@@ -1362,6 +1381,33 @@ static const stp_model_frame *model_route(stp_renderer *r)
     return stp_render_model_frame(r);
 }
 
+/* The device positions of the first n vertices of r->clip_a (inside the
+ * view volume), through the vertex cache: each cached vertex projected
+ * once. */
+static void project_entered(stp_renderer *r, int n, stp_instr *out)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+#if STP_VERTEX_CACHE
+        stp_vertex_entry *c = r->cached[i] != STP_CACHE_NONE ? &r->cache[r->cached[i]] : 0;
+        if (c && c->dx != STP_CACHE_NOT_PROJECTED) {
+            out[i].x = c->dx;
+            out[i].y = c->dy;
+            out[i].z = c->dz;
+            continue;
+        }
+        project(r, r->clip_a[i], &out[i]);
+        if (c) {
+            c->dx = out[i].x;
+            c->dy = out[i].y;
+            c->dz = out[i].z;
+        }
+#else
+        project(r, r->clip_a[i], &out[i]);
+#endif
+    }
+}
+
 /* The model normal n (Q1.14) of polygon v (e->n points) and the side of
  * it the eye sees (stp_render_face_side); for a triangle with back faces
  * removed the side is found first (stp_render_certain_side), so a certain back face
@@ -1396,7 +1442,8 @@ static int model_normal_and_side(const stp_renderer *r, const stp_vec3 *v, int c
 static int enter_model_face(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e,
                             const stp_model_frame *f)
 {
-    int16_t n[3], nv[3];
+    int16_t n[3] = {0, 0, 0}, nv[3];
+    stp_instr projected[3];
     int side = 0, found = model_normal_and_side(r, vertices, e->n, f, n, &side);
     if (found != 1)
         return found == 0 ? STP_OK : found;
@@ -1408,7 +1455,19 @@ static int enter_model_face(stp_renderer *r, const stp_vec3 *vertices, stp_entry
 #if STP_VERTEX_CACHE
     if (e->outside_all != 0)
         return STP_OK; /* wholly outside one plane: not shaded */
+#else
+    enter_outcodes(r, e);
+    if (e->outside_all != 0)
+        return STP_OK;
 #endif
+    if (e->n == 3 && e->outside_any == 0) {
+        /* as stp_renderer_mesh: a triangle between two row centres draws
+         * nothing, so it is left out before it is shaded */
+        project_entered(r, e->n, projected);
+        if (!stp_render_rows_spanned(projected[0].y, projected[1].y, projected[2].y))
+            return STP_OK;
+        e->projected = projected;
+    }
     stp_render_view_normal(f, n, side, nv);
     e->style = stp_render_face_style(r, r->shading ? stp_render_face_shader(r) : 0, nv,
                                      vertex_average(r->clip_a, e->n), side);
@@ -1435,6 +1494,8 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     e.n = n;
     e.shading = shading;
     e.normals = normals;
+    e.projected = 0;
+    e.outcodes_known = 0;
     e.shades = shades;
     r->last_shade = -1;
     if (shading == STP_ENTER_FLAT && (frame = model_route(r)) != 0)

@@ -356,6 +356,24 @@ static inline int stp_render_certain_side(const stp_model_frame *f, const int64_
     return dot > 0 ? 1 : -1;
 }
 
+/* Whether a triangle with device y coordinates a, b, c (Q27.4, >= 0: the
+ * projection clamps them into the picture) spans a row centre 16 r + 8 in
+ * [min, max): the rasters (raster.c's row_below and the polygon edges)
+ * draw exactly those rows, so a triangle spanning none draws no pixel in
+ * any mode, edge AA included (it works on the rows drawn).  Both entries
+ * leave such a triangle out before shading it. */
+STP_HOT_INLINE int stp_render_rows_spanned(int32_t a, int32_t b, int32_t c)
+{
+    int32_t lo = a < b ? a : b, hi = a < b ? b : a;
+    if (c < lo)
+        lo = c;
+    if (c > hi)
+        hi = c;
+    const int32_t below_centre = (1 << (STP_SUBPIXEL_BITS - 1)) - 1;
+    return ((uint32_t)(lo + below_centre) >> STP_SUBPIXEL_BITS) !=
+           ((uint32_t)(hi + below_centre) >> STP_SUBPIXEL_BITS);
+}
+
 /* The model normal n in view coordinates (Q1.14, rounded), turned to the
  * eye when side <= 0 (the other side of an open surface shows): each row
  * product Q15 x Q14, the sum below 2^29 (1 + rounding), to Q14 rounded

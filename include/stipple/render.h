@@ -305,9 +305,10 @@ int stp_renderer_line(stp_renderer *r, stp_vec3 p);
  * a uniform scale, no transparency or shadow map: then the Newell normal
  * of its points in model coordinates as Q1.14, and its back-face test on
  * that normal, and a triangle enters exactly as in a mesh, mesh.h); colour
- * shading takes the per-point shader.  A polygon wholly clipped away, or
- * a back face with back-face removal on, enters nothing and returns
- * STP_OK.
+ * shading takes the per-point shader.  A polygon wholly clipped away, a
+ * back face with back-face removal on, or (on that same route) a triangle
+ * inside the view whose vertices span no row centre (it would draw no
+ * pixel) enters nothing and returns STP_OK.
  * Errors: STP_ERR_ARG, STP_ERR_TOO_MANY_VERTICES, STP_ERR_DEGENERATE (zero
  * Newell normal: repeated/collinear vertices, no area), STP_ERR_FULL
  * (nothing of the polygon is left in the display file; or no segment slot
@@ -427,7 +428,10 @@ uint32_t stp_renderer_display_file_used(const stp_renderer *r);
 /* Polygons in visible segments (the size of the painter's sort array). */
 uint32_t stp_renderer_polygon_count(const stp_renderer *r);
 
-/* The shade the last stp_renderer_polygon call computed (for tests), or -1. */
+/* The shade the last stp_renderer_polygon call computed (for tests), or -1
+ * when it shaded nothing: a back face removed, a polygon outside the view,
+ * or a triangle between two row centres (it would draw no pixel, so it is
+ * left out of the display file unshaded). */
 stp_fix stp_renderer_last_shade(const stp_renderer *r);
 
 /* --- output */

@@ -86,7 +86,7 @@ static void frame_matches_reference_posed(int w, int h, double max_diff_share, i
     char err[256];
     long diff = 0, lit = 0, drawn = 0;
     size_t t;
-    int x, y, removed = 0;
+    int x, y, removed = 0, between_rows = 0;
     stp_scene ref_scene;
     assert_int_equal(torus_bench_init(&b, w, h, err, sizeof err), 0);
     b.keep_shades = 1;
@@ -115,9 +115,17 @@ static void frame_matches_reference_posed(int w, int h, double max_diff_share, i
     for (t = 0; t < TORUS_TRIANGLES; t++) {
         double core = b.shade[t] < 0 ? -1 : (double)b.shade[t] / STP_FIX_ONE;
         if (res.shade[t] < 0 || core < 0) {
-            /* removed by one and not the other: only when edge-on */
-            if ((res.shade[t] < 0) != (core < 0))
+            if (core < 0 && res.shade[t] >= 0 && res.n_dot_e[t] >= 1e-3) {
+                /* left out unshaded between two row centres (render.h):
+                 * the reference draws no pixel of it either */
+                size_t i;
+                for (i = 0; i < (size_t)w * (size_t)h; i++)
+                    assert_true(res.owner[i] != (long)t);
+                between_rows++;
+            } else if ((res.shade[t] < 0) != (core < 0)) {
+                /* removed by one and not the other: only when edge-on */
                 assert_true(res.n_dot_e[t] < 1e-3);
+            }
             removed += core < 0;
             continue;
         }
@@ -126,8 +134,10 @@ static void frame_matches_reference_posed(int w, int h, double max_diff_share, i
             fail();
         }
     }
-    /* about half the torus faces away from the eye */
+    /* about half the torus faces away from the eye; a few slivers at the
+     * silhouette fall between two row centres */
     assert_in_range(removed, 350, 650);
+    assert_true(between_rows <= 30);
     for (y = 0; y < h; y++) {
         for (x = 0; x < w; x++) {
             int c = mono_at(&b, x, y), r = res.mono[(size_t)y * (size_t)w + (size_t)x];
@@ -136,8 +146,10 @@ static void frame_matches_reference_posed(int w, int h, double max_diff_share, i
             drawn += res.owner[(size_t)y * (size_t)w + (size_t)x] >= 0;
         }
     }
-    fprintf(stderr, "%dx%d: %d faces removed, %ld of %ld pixels differ (%ld on the torus)\n", w, h,
-            removed, diff, (long)w * h, drawn);
+    fprintf(stderr,
+            "%dx%d: %d faces removed (%d between two row centres), %ld of %ld pixels differ "
+            "(%ld on the torus)\n",
+            w, h, removed, between_rows, diff, (long)w * h, drawn);
     /* the torus covers a good part of the frame, and the pictures agree */
     assert_true(drawn > (long)w * h / 8);
     assert_true((double)diff <= max_diff_share * drawn);
