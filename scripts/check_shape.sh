@@ -19,20 +19,25 @@
 # macros, inline code) is no dependency.  The public headers
 # (include/stipple/) are the library's interface and are not counted.
 # In either graph every strongly connected group of two or more files is a
-# circle.  Function sizes come from pmccabe (Debian package pmccabe): its
-# traditional McCabe complexity and its line count of each function.
+# circle.  Each header declares (a declaration starting a line, not static)
+# only functions and data of its own .c file (X.c for X_private.h; none for
+# a header without one).  Function sizes come from pmccabe (Debian package
+# pmccabe): its traditional McCabe complexity and its line count of each
+# function.
 #
 # Every finding is printed as one line (an include circle is followed by
 # its edges, each with the headers and symbols that make it):
 #   circle a.c b.c ...          (the files of the circle, sorted)
 #   include-circle a.c b.c ...
+#   declares HEADER FILE.c SYMBOLS   (a header declaring another file's)
 #   long FILE FUNCTION LINES
 #   complex FILE FUNCTION COMPLEXITY
 # With --known FILE (lines "circle a.c b.c", "include-circle a.c b.c",
-# "long FILE FUNCTION", "complex FILE FUNCTION"; # comments), the known
-# offenders are reported but pass, and the script fails only on new ones; a
-# known offender that is gone is reported so the list can shrink.  Exit
-# status 0: no new offender; 1: a new one; 2: usage or a missing tool.
+# "declares HEADER FILE.c", "long FILE FUNCTION", "complex FILE FUNCTION";
+# # comments), the known offenders are reported but pass, and the script
+# fails only on new ones; a known offender that is gone is reported so the
+# list can shrink.  Exit status 0: no new offender; 1: a new one; 2: usage
+# or a missing tool.
 set -eu
 known=
 cc=${CC:-cc}
@@ -40,7 +45,7 @@ while [ $# -gt 0 ]; do
     case $1 in
     --known) known=$2; shift 2 ;;
     --cc) cc=$2; shift 2 ;;
-    -h | --help) sed -n '3,36p' "$0"; exit 0 ;;
+    -h | --help) sed -n '3,40p' "$0"; exit 0 ;;
     -*) echo "check_shape: unknown option $1" >&2; exit 2 ;;
     *) break ;;
     esac
@@ -114,6 +119,17 @@ for h, t in text.items():
         if own in text:
             why.setdefault(own, []).insert(0, "(its name)")
         stands_for[h] = why
+# What each header declares (a declaration starting a line, not static):
+# a header declares only its own .c file's functions and data.
+declares = re.compile(r"^(?!static\b|typedef\b)[A-Za-z_][^;{}#]*?\b([A-Za-z_]\w*)[ \t]*[(\[]", re.M)
+foreign = {}  # (header, c file) -> [symbols]
+for h, t in text.items():
+    if not h.endswith(".h"):
+        continue
+    own = h[:-len("_private.h")] + ".c" if h.endswith("_private.h") else None
+    for name in declares.findall(t):
+        if name in defined and defined[name] != own:
+            foreign.setdefault((h, defined[name]), []).append(name)
 def reached(f):
     seen, todo = [], list(includes[f])
     while todo:
@@ -172,6 +188,8 @@ for comp in include_comps:
     detail = "".join(f"\n        {a} -> {b} by {', '.join(include_why[(a, b)])}"
                      for a in comp for b in include_edges[a] if b in comp)
     findings.append((("include-circle",) + tuple(comp), "include-circle " + " ".join(comp) + detail))
+for (h, c), names in sorted(foreign.items()):
+    findings.append((("declares", h, c), f"declares {h} {c} {' '.join(sorted(set(names)))}"))
 for line in open(findings_file):
     kind, f, fn, value = line.split()
     findings.append(((kind, f, fn), line.strip()))

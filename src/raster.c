@@ -3,6 +3,7 @@
  * output.  See the fill rule in include/stipple/render.h. */
 #include "render_private.h"
 #include "output_private.h"
+#include "dither_private.h"
 #include "raster_private.h"
 
 #define SUB STP_SUBPIXEL_BITS
