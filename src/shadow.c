@@ -17,7 +17,7 @@
  *     +-2^40 (a polygon seen edge-on), so a key at a pixel stays below 2^62.
  * Every quotient that could overflow goes through shl_div, which saturates. */
 #include "render_private.h"
-#include "raster_private.h"
+#include "edge_walk_private.h"
 #include "view_private.h"
 
 #define F STP_FIX_FRAC_BITS

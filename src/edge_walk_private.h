@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* Private: the edge setup and row crossings the polygon raster (raster.c)
- * and the shadow maps (shadow.c) share, inline so neither pays a call per
- * edge and row; and the 32 x 32 -> 64-bit products they use.  The formats
- * are stp_edge's (render_private.h). */
-#ifndef STIPPLE_RASTER_PRIVATE_H
-#define STIPPLE_RASTER_PRIVATE_H
+/* Private: the edge walker, the edge setup and row crossings the polygon
+ * raster (raster.c) and the shadow maps (shadow.c) share, inline so
+ * neither pays a call per edge and row; and the 32 x 32 -> 64-bit products
+ * they use.  No .c file of its own.  The formats are stp_edge's
+ * (render_private.h). */
+#ifndef STIPPLE_EDGE_WALK_PRIVATE_H
+#define STIPPLE_EDGE_WALK_PRIVATE_H
 
 #include "render_private.h"
 #include "edge_aa_private.h"
@@ -97,15 +98,8 @@ static inline uint32_t stp_div3_u30(uint32_t s)
 #endif
 }
 
-/* Reciprocals for slopes of short edges where a 32-bit division is a
- * library call (without wide arithmetic; AVR, with 16-bit pointers, keeps
- * the division and its flash): stp_slope_recip[d] = floor(2^32 / d) + 1
- * for 2 <= d < 128 (raster.c; made wherever pointers exceed 16 bits,
- * except in size-first builds, STP_SMALL_DIVISION, which divide). */
-#define STP_SLOPE_RECIP_SIZE 128
-#if UINTPTR_MAX > 0xFFFFu && !STP_SMALL_DIVISION
-extern const uint32_t stp_slope_recip[STP_SLOPE_RECIP_SIZE];
-#endif
+/* The reciprocals for slopes of short edges (stp_slope_recip,
+ * recip_private.h), used where a 32-bit division is a library call. */
 #if !STP_WIDE_ARITH && UINTPTR_MAX > 0xFFFFu && !STP_SMALL_DIVISION
 #define STP_SLOPE_RECIP STP_SLOPE_RECIP_SIZE
 #else
