@@ -3,11 +3,11 @@
  * raster (raster.c) and the shadow maps (shadow.c) share, inline so
  * neither pays a call per edge and row; and the 32 x 32 -> 64-bit products
  * they use.  No .c file of its own.  The formats are stp_edge's
- * (render_private.h). */
+ * (renderer_state.h). */
 #ifndef STIPPLE_EDGE_WALK_PRIVATE_H
 #define STIPPLE_EDGE_WALK_PRIVATE_H
 
-#include "render_private.h"
+#include "renderer_state.h"
 #include "edge_aa_private.h"
 
 #define STP_HALF_PIXEL (1 << (STP_SUBPIXEL_BITS - 1))

@@ -1,9 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* The display-file interpreter: hidden surfaces, scan conversion and band
  * output.  See the fill rule in include/stipple/render.h. */
-#include "render_private.h"
+#include "renderer_state.h"
+#include "shadow_private.h"
 #include "output_private.h"
 #include "dither_private.h"
+#include "edge_aa_private.h"
 #include "edge_walk_private.h"
 
 #define SUB STP_SUBPIXEL_BITS
