@@ -7,8 +7,8 @@
 #   scripts/check_shape.sh [--known FILE] [--cc CC] [ROOT]
 #
 # Circles by symbols: each src/*.c is compiled (CC, default cc; -O1, the
-# default configuration, and again with the 32-bit target arithmetic,
-# STP_WIDE_ARITH 0) and nm lists what it defines and what it needs; a file
+# default configuration, again with the 32-bit target arithmetic,
+# STP_WIDE_ARITH 0, and with STP_SMALL_DIVISION 1) and nm lists what it defines and what it needs; a file
 # using a symbol another defines depends on it.
 # Circles by includes: a header of src/ stands for the .c files whose
 # symbols it names (declares, or calls in its inline code and macros) and,
@@ -59,10 +59,10 @@ done
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# 1. symbols defined and used by each object file, in both arithmetics
+# 1. symbols defined and used by each object file, in three configurations
 for src in "$root"/src/*.c; do
     name=$(basename "$src")
-    for arith in "" -DSTP_WIDE_ARITH=0; do
+    for arith in "" -DSTP_WIDE_ARITH=0 -DSTP_SMALL_DIVISION=1; do
         # shellcheck disable=SC2086 # $arith: one word or none
         "$cc" -std=c99 -O1 $arith -I "$root/include" -I "$root/src" -c "$src" -o "$work/$name.o" ||
             { echo "check_shape: $src does not compile${arith:+ with $arith}" >&2; exit 2; }

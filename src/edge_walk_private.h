@@ -18,6 +18,7 @@
  * a ~50-instruction one) it takes 32 x 32 -> 64-bit products from 16-bit
  * halves and divides through 32-bit quotients, with the same results. */
 #include "recip_private.h" /* STP_WIDE_ARITH; a test defines it 0 to check the narrow arithmetic on the host */
+#include "div64_private.h" /* STP_DIV64 */
 
 /* a b, exactly, for 32-bit a and b */
 static inline uint64_t stp_umul32(uint32_t a, uint32_t b)

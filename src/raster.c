@@ -7,6 +7,7 @@
 #include "dither_private.h"
 #include "edge_aa_private.h"
 #include "edge_walk_private.h"
+#include "div64_private.h"
 
 #define SUB STP_SUBPIXEL_BITS
 #define HALF_PIXEL (1 << (SUB - 1))

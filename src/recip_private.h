@@ -68,14 +68,4 @@ extern const uint32_t stp_slope_recip[STP_SLOPE_RECIP_SIZE];
 #define stp_div64_fast(n, d) stp_div64_recip((int64_t)(n), (int64_t)(d))
 #endif
 
-/* num / den truncated toward zero for den != 0 and a quotient that fits:
- * C's operator, or with STP_SMALL_DIVISION (stipple/config.h) the bit-serial loop
- * of div64.c, so the C library's 64-bit division is not linked. */
-#if STP_SMALL_DIVISION
-int64_t stp_div64_trunc(int64_t num, int64_t den);
-#define STP_DIV64(num, den) stp_div64_trunc((int64_t)(num), (int64_t)(den))
-#else
-#define STP_DIV64(num, den) ((int64_t)(num) / (int64_t)(den))
-#endif
-
 #endif
