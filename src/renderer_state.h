@@ -10,7 +10,6 @@
 #define STIPPLE_RENDERER_STATE_H
 
 #include "stipple/render.h"
-#include "fix_private.h"
 #include "clip_private.h"
 #include "view_private.h"
 #include "shade_fast_private.h"
