@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Direct drawing's band fill (include/stipple/direct.h): the faces a frame
  * drew, painted into one band of a 1-bit picture with the full renderer's
- * rule (include/stipple/render.h, raster_private.h): a pixel belongs to a
+ * rule (include/stipple/render.h, edge_walk_private.h): a pixel belongs to a
  * face when its centre (16 p + 8 in Q4) lies in the face, left and top
  * edges included, right and bottom excluded.  An edge (xa, ya) - (xb, yb),
  * oriented downwards, crosses row centre yc (ya <= yc < yb) at

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Halftone cells and HALFTONE-FILLIN: see include/stipple/dither.h. */
 #include "stipple/dither.h"
-#include "output_private.h"
+#include "dither_private.h"
 
 #define F STP_FIX_FRAC_BITS
 

@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* 64-bit division in a few dozen bytes of code (STP_SMALL_DIVISION, see
- * fix_private.h): for a playback-only image where the C library's 64-bit
+ * div64_private.h): for a playback-only image where the C library's 64-bit
  * division routines (about 1 KB on ARMv6-M) outweigh the rest of the
  * rasterizer's arithmetic. */
-#include "recip_private.h"
+#include "div64_private.h"
 
 #if STP_SMALL_DIVISION
 int64_t stp_div64_trunc(int64_t num, int64_t den)

@@ -10,7 +10,7 @@
  *             below 2^(FRAC_BITS + 1 + 8) <= 2^29: 32 bits. */
 #include "edge_aa_private.h"
 #include "output_private.h"
-#include "raster_private.h"
+#include "edge_walk_private.h"
 
 #if STP_WITH_EDGE_AA
 

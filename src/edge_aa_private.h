@@ -24,7 +24,7 @@
 #ifndef STIPPLE_EDGE_AA_PRIVATE_H
 #define STIPPLE_EDGE_AA_PRIVATE_H
 
-#include "render_private.h"
+#include "renderer_state.h"
 
 #if STP_WITH_EDGE_AA
 

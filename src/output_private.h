@@ -22,11 +22,4 @@ uint8_t stp_output_style_code(const stp_output *out, int levels, int index);
 void stp_output_put_shade(uint8_t *row, stp_pixel_format format, uint32_t x, uint32_t y,
                           const stp_output *out, const stp_cell *cell, int levels, stp_fix shade);
 
-/* MONO1 span filling (dither.c).  The pattern byte of cell row y % height
- * for an intensity: bit 7 - b is ON when pixel b of any byte of the row is
- * (needs a threshold cell whose width divides 8). */
-uint8_t stp_halftone_pattern_byte(const stp_cell *cell, uint32_t y, uint8_t intensity);
-/* The one 1-bit run filler: stp_halftone_fill_bits (run_fill_private.h). */
-#include "run_fill_private.h"
-
 #endif

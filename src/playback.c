@@ -3,7 +3,7 @@
  * the data checked once, then only the fields stp_renderer_render reads
  * are set. */
 #include "stipple/playback.h"
-#include "render_private.h"
+#include "renderer_state.h"
 
 /* A point of a MOVE, LINE or polygon entry: x, y on the device (Q27.4,
  * 0..side << 4, as the entry side's projection clamps them), z a depth key

@@ -3,7 +3,9 @@
  * (render.c), mesh entry (mesh.c), shadow maps (shadow.c) and direct
  * drawing (direct.c).  Inline: it runs once per vertex, and the 32-bit
  * form's common case is a few products; the 64-bit quotients are view.c's
- * stp_view_perspective_wide. */
+ * stp_view_perspective_wide.  No .c file of its own: the inline part of
+ * view_private.h, which declares stp_view_perspective_wide and includes it
+ * at its end (include view_private.h). */
 #ifndef STIPPLE_PROJECT_PRIVATE_H
 #define STIPPLE_PROJECT_PRIVATE_H
 
@@ -19,16 +21,6 @@ typedef struct stp_view_lens {
     stp_fix focal, hither;
     int32_t half_width, half_height;
 } stp_view_lens;
-
-/* The projection of view point *p, its z raised to hither when nearer:
- *   *x = floor(trunc(focal p.x / z) / 2^(F - STP_SUBPIXEL_BITS)), *y the
- *   same of p.y: the device offsets from the picture's centre in Q27.4,
- *   y up; *key = trunc(hither 2^30 / z), the depth key (key NULL: not
- *   formed).
- * focal > 0, hither > 0 (stp_fix); |*x|, |*y| < 2^(63 - F).  By 64-bit
- * quotients (one reciprocal of z on targets without STP_WIDE_ARITH). */
-void stp_view_perspective_wide(stp_fix focal, stp_fix hither, const stp_vec3 *p, int64_t *x, int64_t *y,
-                               int32_t *key);
 
 #if !STP_WIDE_ARITH
 /* The reciprocal of z, scaled by f (f / z as w 2^-sh, 2^31 <= w < 2^32, 0

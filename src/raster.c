@@ -1,41 +1,16 @@
 /* SPDX-License-Identifier: MIT */
 /* The display-file interpreter: hidden surfaces, scan conversion and band
  * output.  See the fill rule in include/stipple/render.h. */
-#include "render_private.h"
+#include "renderer_state.h"
+#include "shadow_private.h"
 #include "output_private.h"
-#include "raster_private.h"
+#include "dither_private.h"
+#include "edge_aa_private.h"
+#include "edge_walk_private.h"
+#include "div64_private.h"
 
 #define SUB STP_SUBPIXEL_BITS
 #define HALF_PIXEL (1 << (SUB - 1))
-
-#if UINTPTR_MAX > 0xFFFFu && !STP_SMALL_DIVISION
-/* floor(2^32 / d) + 1 for d = 2..127 (raster_private.h, stp_slope_q16);
- * entries 0 and 1 unused */
-const uint32_t stp_slope_recip[STP_SLOPE_RECIP_SIZE] = {
-    0x00000000u, 0x00000000u, 0x80000001u, 0x55555556u, 0x40000001u, 0x33333334u,
-    0x2AAAAAABu, 0x24924925u, 0x20000001u, 0x1C71C71Du, 0x1999999Au, 0x1745D175u,
-    0x15555556u, 0x13B13B14u, 0x12492493u, 0x11111112u, 0x10000001u, 0x0F0F0F10u,
-    0x0E38E38Fu, 0x0D79435Fu, 0x0CCCCCCDu, 0x0C30C30Du, 0x0BA2E8BBu, 0x0B21642Du,
-    0x0AAAAAABu, 0x0A3D70A4u, 0x09D89D8Au, 0x097B425Fu, 0x0924924Au, 0x08D3DCB1u,
-    0x08888889u, 0x08421085u, 0x08000001u, 0x07C1F07Du, 0x07878788u, 0x07507508u,
-    0x071C71C8u, 0x06EB3E46u, 0x06BCA1B0u, 0x06906907u, 0x06666667u, 0x063E7064u,
-    0x06186187u, 0x05F417D1u, 0x05D1745Eu, 0x05B05B06u, 0x0590B217u, 0x0572620Bu,
-    0x05555556u, 0x0539782Au, 0x051EB852u, 0x05050506u, 0x04EC4EC5u, 0x04D4873Fu,
-    0x04BDA130u, 0x04A7904Bu, 0x04924925u, 0x047DC120u, 0x0469EE59u, 0x0456C798u,
-    0x04444445u, 0x04325C54u, 0x04210843u, 0x04104105u, 0x04000001u, 0x03F03F04u,
-    0x03E0F83Fu, 0x03D22636u, 0x03C3C3C4u, 0x03B5CC0Fu, 0x03A83A84u, 0x039B0AD2u,
-    0x038E38E4u, 0x0381C0E1u, 0x03759F23u, 0x0369D037u, 0x035E50D8u, 0x03531DEDu,
-    0x03483484u, 0x033D91D3u, 0x03333334u, 0x03291620u, 0x031F3832u, 0x03159722u,
-    0x030C30C4u, 0x03030304u, 0x02FA0BE9u, 0x02F14991u, 0x02E8BA2Fu, 0x02E05C0Cu,
-    0x02D82D83u, 0x02D02D03u, 0x02C8590Cu, 0x02C0B02Du, 0x02B93106u, 0x02B1DA47u,
-    0x02AAAAABu, 0x02A3A0FEu, 0x029CBC15u, 0x0295FAD5u, 0x028F5C29u, 0x0288DF0Du,
-    0x02828283u, 0x027C4598u, 0x02762763u, 0x02702703u, 0x026A43A0u, 0x02647C6Au,
-    0x025ED098u, 0x02593F6Au, 0x0253C826u, 0x024E6A18u, 0x02492493u, 0x0243F6F1u,
-    0x023EE090u, 0x0239E0D6u, 0x0234F72Du, 0x02302303u, 0x022B63CCu, 0x0226B903u,
-    0x02222223u, 0x021D9EAEu, 0x02192E2Au, 0x0214D022u, 0x02108422u, 0x020C49BBu,
-    0x02082083u, 0x02040811u
-};
-#endif
 
 #if STP_WITH_ZBUFFER
 /* num / den truncated toward zero (C's division), den != 0.  Without wide

@@ -49,22 +49,23 @@ int64_t stp_div64_by(const stp_recip_divisor *p, int64_t n);
  * that fits int64_t (not INT64_MIN / -1), through stp_udiv64_recip. */
 int64_t stp_div64_recip(int64_t n, int64_t d);
 
+/* Reciprocals for slopes of short edges where a 32-bit division is a
+ * library call (without wide arithmetic; AVR, with 16-bit pointers, keeps
+ * the division and its flash): stp_slope_recip[d] = floor(2^32 / d) + 1
+ * for 2 <= d < 128 (recip.c, for the edge walker, edge_walk_private.h;
+ * made wherever pointers exceed 16 bits, except in size-first builds,
+ * STP_SMALL_DIVISION, which divide). */
+#define STP_SLOPE_RECIP_SIZE 128
+#if UINTPTR_MAX > 0xFFFFu && !STP_SMALL_DIVISION
+extern const uint32_t stp_slope_recip[STP_SLOPE_RECIP_SIZE];
+#endif
+
 /* The shading's 64-bit division: C's operator where it is one instruction,
  * stp_div64_recip elsewhere (the same quotient). */
 #if STP_WIDE_ARITH
 #define stp_div64_fast(n, d) ((int64_t)(n) / (int64_t)(d))
 #else
 #define stp_div64_fast(n, d) stp_div64_recip((int64_t)(n), (int64_t)(d))
-#endif
-
-/* num / den truncated toward zero for den != 0 and a quotient that fits:
- * C's operator, or with STP_SMALL_DIVISION (stipple/config.h) the bit-serial loop
- * of div64.c, so the C library's 64-bit division is not linked. */
-#if STP_SMALL_DIVISION
-int64_t stp_div64_trunc(int64_t num, int64_t den);
-#define STP_DIV64(num, den) stp_div64_trunc((int64_t)(num), (int64_t)(den))
-#else
-#define STP_DIV64(num, den) ((int64_t)(num) / (int64_t)(den))
 #endif
 
 #endif

@@ -3,6 +3,7 @@
  * SHADE-CHECK, clip, project, store).  See include/stipple/render.h. */
 #include "align_private.h"
 #include "render_private.h"
+#include "shadow_private.h"
 #include "view_private.h"
 #include "shade_private.h"
 #include "clip_private.h"

@@ -16,8 +16,9 @@
  *     2^62), gradients per Q4 unit with 16 fractional bits, clamped to
  *     +-2^40 (a polygon seen edge-on), so a key at a pixel stays below 2^62.
  * Every quotient that could overflow goes through shl_div, which saturates. */
-#include "render_private.h"
-#include "raster_private.h"
+#include "shadow_private.h"
+#include "geometry_stage_private.h"
+#include "edge_walk_private.h"
 #include "view_private.h"
 
 #define F STP_FIX_FRAC_BITS

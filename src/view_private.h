@@ -165,6 +165,16 @@ int stp_model_frame_make(const stp_view_transform *t, stp_vec3 from, const stp_t
  * and from `from` of 2^29 raw units or more; see view.c). */
 int stp_view_triangle_side(stp_vec3 from, stp_vec3 forward, int parallel, const stp_vec3 *v);
 
+/* The projection of view point *p, its z raised to hither when nearer:
+ *   *x = floor(trunc(focal p.x / z) / 2^(F - STP_SUBPIXEL_BITS)), *y the
+ *   same of p.y: the device offsets from the picture's centre in Q27.4,
+ *   y up; *key = trunc(hither 2^30 / z), the depth key (key NULL: not
+ *   formed).
+ * focal > 0, hither > 0 (stp_fix); |*x|, |*y| < 2^(63 - F).  By 64-bit
+ * quotients (one reciprocal of z on targets without STP_WIDE_ARITH). */
+void stp_view_perspective_wide(stp_fix focal, stp_fix hither, const stp_vec3 *p, int64_t *x, int64_t *y,
+                               int32_t *key);
+
 /* The one perspective projection: project_private.h. */
 #include "project_private.h"
 

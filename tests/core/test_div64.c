@@ -8,7 +8,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 
-#include "fix_private.h"
+#include "div64_private.h"
 
 static void check(int64_t num, int64_t den)
 {

@@ -12,7 +12,7 @@
 #include <cmocka.h>
 
 #define STP_WIDE_ARITH 0
-#include "raster_private.h"
+#include "edge_walk_private.h"
 
 /* xorshift: the same sequence every run */
 static uint32_t next_random(uint32_t *s)

@@ -452,7 +452,7 @@ static void same_as_fresh(torus_bench *used, torus_bench *fresh, const stp_instr
 }
 
 /* The mesh path prepares its shading once and keeps it across frames
- * (render_private.h: fast_shade): a new material or lighting must reach
+ * (renderer_state.h: fast_shade): a new material or lighting must reach
  * it. */
 static void test_shading_cache(void **state)
 {

@@ -1,12 +1,13 @@
 /* SPDX-License-Identifier: MIT */
-/* Private: the edge setup and row crossings the polygon raster (raster.c)
- * and the shadow maps (shadow.c) share, inline so neither pays a call per
- * edge and row; and the 32 x 32 -> 64-bit products they use.  The formats
- * are stp_edge's (render_private.h). */
-#ifndef STIPPLE_RASTER_PRIVATE_H
-#define STIPPLE_RASTER_PRIVATE_H
+/* Private: the edge walker, the edge setup and row crossings the polygon
+ * raster (raster.c) and the shadow maps (shadow.c) share, inline so
+ * neither pays a call per edge and row; and the 32 x 32 -> 64-bit products
+ * they use.  No .c file of its own.  The formats are stp_edge's
+ * (renderer_state.h). */
+#ifndef STIPPLE_EDGE_WALK_PRIVATE_H
+#define STIPPLE_EDGE_WALK_PRIVATE_H
 
-#include "render_private.h"
+#include "renderer_state.h"
 #include "edge_aa_private.h"
 
 #define STP_HALF_PIXEL (1 << (STP_SUBPIXEL_BITS - 1))
@@ -17,6 +18,7 @@
  * a ~50-instruction one) it takes 32 x 32 -> 64-bit products from 16-bit
  * halves and divides through 32-bit quotients, with the same results. */
 #include "recip_private.h" /* STP_WIDE_ARITH; a test defines it 0 to check the narrow arithmetic on the host */
+#include "div64_private.h" /* STP_DIV64 */
 
 /* a b, exactly, for 32-bit a and b */
 static inline uint64_t stp_umul32(uint32_t a, uint32_t b)
@@ -97,15 +99,8 @@ static inline uint32_t stp_div3_u30(uint32_t s)
 #endif
 }
 
-/* Reciprocals for slopes of short edges where a 32-bit division is a
- * library call (without wide arithmetic; AVR, with 16-bit pointers, keeps
- * the division and its flash): stp_slope_recip[d] = floor(2^32 / d) + 1
- * for 2 <= d < 128 (raster.c; made wherever pointers exceed 16 bits,
- * except in size-first builds, STP_SMALL_DIVISION, which divide). */
-#define STP_SLOPE_RECIP_SIZE 128
-#if UINTPTR_MAX > 0xFFFFu && !STP_SMALL_DIVISION
-extern const uint32_t stp_slope_recip[STP_SLOPE_RECIP_SIZE];
-#endif
+/* The reciprocals for slopes of short edges (stp_slope_recip,
+ * recip_private.h), used where a 32-bit division is a library call. */
 #if !STP_WIDE_ARITH && UINTPTR_MAX > 0xFFFFu && !STP_SMALL_DIVISION
 #define STP_SLOPE_RECIP STP_SLOPE_RECIP_SIZE
 #else

@@ -1,0 +1,17 @@
+/* SPDX-License-Identifier: MIT */
+/* Private: dither.c's MONO1 span filling, for the polygon raster. */
+#ifndef STIPPLE_DITHER_PRIVATE_H
+#define STIPPLE_DITHER_PRIVATE_H
+
+#include <stdint.h>
+
+#include "stipple/dither.h"
+
+/* MONO1 span filling (dither.c).  The pattern byte of cell row y % height
+ * for an intensity: bit 7 - b is ON when pixel b of any byte of the row is
+ * (needs a threshold cell whose width divides 8). */
+uint8_t stp_halftone_pattern_byte(const stp_cell *cell, uint32_t y, uint8_t intensity);
+/* The one 1-bit run filler: stp_halftone_fill_bits (run_fill_private.h). */
+#include "run_fill_private.h"
+
+#endif
