@@ -1202,6 +1202,26 @@ static inline void store_records(stp_renderer *r, const stp_instr *record, int r
 }
 #endif
 
+/* The records of a flat polygon's m vertices projected by enter_model_face,
+ * appended (capacity checked by enter_store).  Returns STP_OK. */
+static int store_projected(stp_renderer *r, const stp_instr *projected, int m)
+{
+    stp_instr *out = &r->df[r->used];
+    int i;
+    for (i = 0; i < m; i++, out++) {
+        out->op = i == 0 ? m : STP_OP_LINE;
+        out->x = projected[i].x;
+        out->y = projected[i].y;
+        out->z = projected[i].z;
+#if STP_WITH_GOURAUD
+        out->shade = -1;
+#endif
+    }
+    r->used += (uint32_t)m;
+    r->segments[r->open_segment].end = r->used;
+    return STP_OK;
+}
+
 /* Step 5: clip (only a polygon that crosses a plane), project and store:
  * the attribute instructions that changed, the shadow records, the
  * vertices. */
@@ -1244,21 +1264,8 @@ static int enter_store(stp_renderer *r, stp_entry *e)
 #endif
     /* the vertices straight into the display file (capacity checked) */
     out = &r->df[r->used];
-    if (e->projected && e->outside_any == 0) {
-        /* enter_model_face projected them (a flat polygon) */
-        for (i = 0; i < m; i++, out++) {
-            out->op = i == 0 ? m : STP_OP_LINE;
-            out->x = e->projected[i].x;
-            out->y = e->projected[i].y;
-            out->z = e->projected[i].z;
-#if STP_WITH_GOURAUD
-            out->shade = -1;
-#endif
-        }
-        r->used += (uint32_t)m;
-        r->segments[r->open_segment].end = r->used;
-        return STP_OK;
-    }
+    if (e->projected && e->outside_any == 0)
+        return store_projected(r, e->projected, m);
     for (i = 0; i < m; i++, out++) {
 #if STP_VERTEX_CACHE
         /* an unclipped polygon's vertices are the cached ones */
