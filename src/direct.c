@@ -213,7 +213,8 @@ stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal
     centre.x = third(p[0]->x, p[1]->x, p[2]->x);
     centre.y = third(p[0]->y, p[1]->y, p[2]->y);
     centre.z = third(p[0]->z, p[1]->z, p[2]->z);
-    return stp_shade_fast_face(s->fast, nv, centre); /* [0, 1] */
+    /* view coordinates below 2^26 (direct.h), perspective, no highlight */
+    return stp_shade_fast_face_near(s->fast, nv, centre); /* [0, 1] */
 }
 
 /* Twice the signed screen area of p (y down): differences below 2^14,

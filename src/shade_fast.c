@@ -1204,7 +1204,8 @@ static inline int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
     stp_shade_fast_dir l;
     int32_t n_dot_l, share;
     stp_sf16 w;
-    int at_point = !dir_make(&l, &s->light[j], &point, s->light_big[j] | point_big, 1);
+    /* point_big < 0: the near face (face_body), where no light is big */
+    int at_point = !dir_make(&l, &s->light[j], &point, point_big < 0 ? 0 : s->light_big[j] | point_big, 1);
     if (!at_point) {
         n_dot_l = cos_n(dot_n(normal, &l), &l, nd);
         if (n_dot_l <= 0)
@@ -1231,20 +1232,23 @@ static inline int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
     return share;
 }
 
-/* The 32-bit targets' face: stp_shade_fast_face itself there; on a host
- * (kept compiled there: its helpers serve prepare and the Fresnel) a
- * function of its own for a struct that prepare did not fill, so that the
- * wide route's calls do not set up its registers and stack. */
-#if STP_WIDE_ARITH
-STP_NOINLINE stp_fix face_narrow(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+/* The 32-bit targets' face, for both entries: near 1 for
+ * stp_shade_fast_face_near (perspective, no highlight, the eye, the
+ * lights and the point within [-2^30, 2^30): the tests below that only
+ * those exclude are left out, constant), 0 for stp_shade_fast_face: the
+ * same integers where both apply.  Inlined into each entry, so a program
+ * that calls one links one. */
+#if defined(__GNUC__)
+#define STP_FACE_BODY static inline __attribute__((always_inline))
 #else
-stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+#define STP_FACE_BODY static inline
 #endif
+STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int near)
 {
     stp_shade_fast_dir e_local;
     const stp_shade_fast_dir *e = &s->e;
     int32_t nd, dot_e = 0, sum = s->ambient;
-    int j, lit = 0, point_big = is_big(point);
+    int j, lit = 0, point_big = near ? -1 : is_big(point); /* -1: light_share's near case */
     int32_t n_dot_e = 0;
     stp_sf16 inv_ne = {0, 0};
     uint32_t inv_ne_q26 = 0;
@@ -1258,7 +1262,7 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
      * made here, or the parallel view's); dot_e = N.E where the highlight
      * or a big or parallel eye needs it (kept in this function: as a
      * helper writing through pointers it cost an AVR image 510 B) */
-    if (!s->parallel && !s->specular && !(s->eye_big | point_big)) {
+    if (near || (!s->parallel && !s->specular && !(s->eye_big | point_big))) {
         if (!faces_point(normal, &s->eye, &point)) /* diffuse only: E matters only through N.E's sign */
             return s->ambient_shade;
     } else {
@@ -1273,7 +1277,7 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     }
     nd = normal_deviation(normal);
 #if STP_WITH_SPECULAR
-    if (s->specular) {
+    if (!near && s->specular) {
         n_dot_e = cos_n(dot_e, e, nd);
         if (n_dot_e <= 0)
             return s->ambient_shade;
@@ -1294,6 +1298,26 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     }
     return shade_of_sum(s, lit, sum);
 }
+
+/* The 32-bit targets' entries; on a host (kept compiled there: its
+ * helpers serve prepare and the Fresnel) a function of its own for a
+ * struct that prepare did not fill, so that the wide route's calls do not
+ * set up its registers and stack. */
+#if STP_WIDE_ARITH
+STP_NOINLINE stp_fix face_narrow(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+#else
+stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+#endif
+{
+    return face_body(s, normal, point, 0);
+}
+
+#if !STP_WIDE_ARITH
+stp_fix stp_shade_fast_face_near(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+{
+    return face_body(s, normal, point, 1);
+}
+#endif
 
 #if STP_WIDE_ARITH
 stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
