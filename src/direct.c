@@ -266,10 +266,9 @@ static int corners_in_mesh(const stp_mesh *mesh)
     return 1;
 }
 
-/* The arguments but the light (lit: the prepared light, or the light
- * itself for stp_direct_frame_project, checked there) */
+/* The arguments but the light (checked by stp_direct_frame_project) */
 static int check_args(const stp_direct_frame *f, const stp_mesh *mesh, const stp_direct_model *model,
-                      const stp_direct_view *view, const void *lit, int levels, const uint8_t *cell,
+                      const stp_direct_view *view, const stp_direct_lit *lit, int levels, const uint8_t *cell,
                       const stp_direct_point *points, size_t point_count, const uint16_t *faces, size_t face_count)
 {
     if (f == 0 || mesh == 0 || model == 0 || view == 0 || lit == 0 || cell == 0 || points == 0 ||
@@ -286,10 +285,8 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
                              uint16_t *faces, size_t face_count)
 {
     stp_direct_lit lit;
-    int status = check_args(f, mesh, model, view, light, levels, cell, points, point_count, faces, face_count);
-    if (status != STP_OK)
-        return status;
-    if (!light_ok(light))
+    /* the light's own checks here, the others in stp_direct_frame_project_lit */
+    if (view == 0 || light == 0 || !light_ok(light))
         return STP_ERR_ARG;
     if (!stp_direct_light_prepare(&lit, view, light))
         return STP_ERR_RANGE;

@@ -1089,7 +1089,7 @@ static void prepare_ambient(stp_shade_fast *s, stp_fix background, stp_fix refl,
 }
 
 /* Each of the s->count lights' position and its BRIGHT P_j |R| (and
- * BRIGHT P_j Ks) per raw unit of C + U. */
+ * BRIGHT P_j Ks) per raw unit of C + U; the other entries 0. */
 static void prepare_lights(stp_shade_fast *s, const stp_lighting *lighting, const stp_material *material)
 {
     stp_fix refl = material->reflectivity, bright = lighting->brightness;
@@ -1099,9 +1099,20 @@ static void prepare_lights(stp_shade_fast *s, const stp_lighting *lighting, cons
     stp_sf16 ks_sf = sf_make(material->specular > 0 ? (uint32_t)material->specular : 0u, F);
 #endif
     int j;
-    for (j = 0; j < s->count; j++) {
+    for (j = 0; j < STP_MAX_LIGHTS; j++) {
         const stp_light *light = &lighting->lights[j];
-        stp_sf16 p = sf_make(light->power > 0 ? (uint32_t)light->power : 0u, F);
+        stp_sf16 p;
+        if (j >= s->count) { /* unused: zero, so every field is set */
+            s->light[j].x = s->light[j].y = s->light[j].z = 0;
+            s->light_big[j] = 0;
+            s->power_refl[j].m = 0;
+            s->power_refl[j].e = 0;
+#if STP_WITH_SPECULAR
+            s->power_ks[j] = s->power_refl[j];
+#endif
+            continue;
+        }
+        p = sf_make(light->power > 0 ? (uint32_t)light->power : 0u, F);
         s->light[j] = light->position;
         s->light_big[j] = (uint8_t)is_big(light->position);
         p = sf_mul(bright_sf, p);
