@@ -1204,11 +1204,17 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
     return nn > 0x10020000u ? 0x20000 : (nn < 0x0FFE0000u ? -0x20000 : (int32_t)(nn - 0x10000000u));
 }
 
+#if defined(__GNUC__)
+#define STP_FACE_BODY static inline __attribute__((always_inline))
+#else
+#define STP_FACE_BODY static inline
+#endif
+
 /* Light j's share of the shade in Q26 (stp_shade_fast_face): BRIGHT P_j
  * |R| (N.L)/(C + U), signed as R, plus the highlight; 0 when the light is
  * behind the face.  nd: normal_deviation; e the eye's direction, n_dot_e
  * N.E (Q30), inv_ne 1/(N.E) and inv_ne_q26 the same in Q26. */
-static inline int32_t light_share(const stp_shade_fast *s, int j, const int16_t normal[3], stp_vec3 point,
+STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t normal[3], stp_vec3 point,
                                    int point_big, int32_t nd, const stp_shade_fast_dir *e, int32_t n_dot_e,
                                    stp_sf16 inv_ne, uint32_t inv_ne_q26)
 {
@@ -1247,13 +1253,10 @@ static inline int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
  * stp_shade_fast_face_near (perspective, no highlight, the eye, the
  * lights and the point within [-2^30, 2^30): the tests below that only
  * those exclude are left out, constant), 0 for stp_shade_fast_face: the
- * same integers where both apply.  Inlined into each entry, so a program
- * that calls one links one. */
-#if defined(__GNUC__)
-#define STP_FACE_BODY static inline __attribute__((always_inline))
-#else
-#define STP_FACE_BODY static inline
-#endif
+ * same integers where both apply.  Inlined into each entry with its light
+ * share (STP_FACE_BODY in every build: called from both, they would
+ * otherwise stay calls), so each entry is the one function it was, and a
+ * program that calls one links one (sections collected). */
 STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int near)
 {
     stp_shade_fast_dir e_local;
