@@ -1249,20 +1249,41 @@ STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
     return share;
 }
 
-/* The 32-bit targets' face, for both entries: near 1 for
+#if STP_WITH_SPECULAR
+/* With the highlight, for a face towards the eye (dot_e = N.w > 0, w the
+ * eye's direction e): N.E (Q30), 1/(N.E) and the same in Q26 into the
+ * pointers and -1, or the face's shade when it is already known (the
+ * ambient shade edge-on, the exact route below fast_min_cos). */
+STP_FACE_BODY stp_fix highlight_eye(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int32_t dot_e,
+                                    const stp_shade_fast_dir *e, int32_t nd, int32_t *n_dot_e, stp_sf16 *inv_ne,
+                                    uint32_t *inv_ne_q26)
+{
+    *n_dot_e = cos_n(dot_e, e, nd);
+    if (*n_dot_e <= 0)
+        return s->ambient_shade;
+    if (s->exact && *n_dot_e < s->fast_min_cos)
+        return s->exact(s, normal, point);
+    *inv_ne = sf_recip(sf_make((uint32_t)*n_dot_e, 30));
+    *inv_ne_q26 = sf_to_fixed(*inv_ne, 26, 0x7FFFFFFFu);
+    return -1;
+}
+#endif
+
+/* The 32-bit targets' face, for both entries: point_big -1 (near) for
  * stp_shade_fast_face_near (perspective, no highlight, the eye, the
  * lights and the point within [-2^30, 2^30): the tests below that only
- * those exclude are left out, constant), 0 for stp_shade_fast_face: the
- * same integers where both apply.  Inlined into each entry with its light
- * share (STP_FACE_BODY in every build: called from both, they would
- * otherwise stay calls), so each entry is the one function it was, and a
- * program that calls one links one (sections collected). */
-STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int near)
+ * those exclude are left out, constant), is_big(point) for
+ * stp_shade_fast_face: the same integers where both apply.  Inlined into
+ * each entry with its helpers (STP_FACE_BODY in every build: called from
+ * both, they would otherwise stay calls), so each entry is the one
+ * function it was, and a program that calls one links one (sections
+ * collected). */
+STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int point_big)
 {
     stp_shade_fast_dir e_local;
     const stp_shade_fast_dir *e = &s->e;
     int32_t nd, dot_e = 0, sum = s->ambient;
-    int j, lit = 0, point_big = near ? -1 : is_big(point); /* -1: light_share's near case */
+    int j, lit = 0, near = point_big < 0; /* point_big -1: the near entry */
     int32_t n_dot_e = 0;
     stp_sf16 inv_ne = {0, 0};
     uint32_t inv_ne_q26 = 0;
@@ -1292,13 +1313,9 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
     nd = normal_deviation(normal);
 #if STP_WITH_SPECULAR
     if (!near && s->specular) {
-        n_dot_e = cos_n(dot_e, e, nd);
-        if (n_dot_e <= 0)
-            return s->ambient_shade;
-        if (s->exact && n_dot_e < s->fast_min_cos)
-            return s->exact(s, normal, point);
-        inv_ne = sf_recip(sf_make((uint32_t)n_dot_e, 30));
-        inv_ne_q26 = sf_to_fixed(inv_ne, 26, 0x7FFFFFFFu);
+        stp_fix early = highlight_eye(s, normal, point, dot_e, e, nd, &n_dot_e, &inv_ne, &inv_ne_q26);
+        if (early >= 0)
+            return early;
     }
 #endif
     for (j = 0; j < s->count; j++) {
@@ -1323,13 +1340,13 @@ STP_NOINLINE stp_fix face_narrow(const stp_shade_fast *s, const int16_t normal[3
 stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
 #endif
 {
-    return face_body(s, normal, point, 0);
+    return face_body(s, normal, point, is_big(point));
 }
 
 #if !STP_WIDE_ARITH
 stp_fix stp_shade_fast_face_near(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
 {
-    return face_body(s, normal, point, 1);
+    return face_body(s, normal, point, -1);
 }
 #endif
 
