@@ -14,7 +14,7 @@
  * light at (-4, 6, 5), power 9.775, background 0.2, reflectivity 0.7,
  * brightness 1; 16 levels, Bayer 4x4.  The face shader's constants for
  * that view and light (stp_direct_lit) are data too in the Arduino
- * library's configuration (STIPPLE_SPIN_LIT in stipple_spin.c;
+ * library's configuration (spin_lit in stipple_spin.c;
  * tests/avr/test_spin_lit.c checks them against the prepare), so a
  * sketch links neither the prepare nor its 64-bit arithmetic.  Frame n
  * turns the model by n/64 of a turn about y and by n 410/65536 of a turn
