@@ -1215,14 +1215,14 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
  * behind the face.  nd: normal_deviation; e the eye's direction, n_dot_e
  * N.E (Q30), inv_ne 1/(N.E) and inv_ne_q26 the same in Q26. */
 STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t normal[3], stp_vec3 point,
-                                   int point_big, int32_t nd, const stp_shade_fast_dir *e, int32_t n_dot_e,
+                                   int point_big, int near, int32_t nd, const stp_shade_fast_dir *e, int32_t n_dot_e,
                                    stp_sf16 inv_ne, uint32_t inv_ne_q26)
 {
     stp_shade_fast_dir l;
     int32_t n_dot_l, share;
     stp_sf16 w;
-    /* point_big < 0: the near face (face_body), where no light is big */
-    int at_point = !dir_make(&l, &s->light[j], &point, point_big < 0 ? 0 : s->light_big[j] | point_big, 1);
+    /* near: the near face (face_body), where no light is big */
+    int at_point = !dir_make(&l, &s->light[j], &point, near ? 0 : s->light_big[j] | point_big, 1);
     if (!at_point) {
         n_dot_l = cos_n(dot_n(normal, &l), &l, nd);
         if (n_dot_l <= 0)
@@ -1236,7 +1236,7 @@ STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
     if (s->refl_negative)
         share = -share;
 #if STP_WITH_SPECULAR
-    if (s->specular) {
+    if (!near && s->specular) { /* near: no highlight (and no call left to it there) */
         int32_t e_dot_l = at_point ? n_dot_e : cos_dirs(e, &l);
         share += specular_share(s, n_dot_l, n_dot_e, e_dot_l, inv_ne, inv_ne_q26, sf_mul(w, s->power_ks[j]));
     }
@@ -1249,48 +1249,30 @@ STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
     return share;
 }
 
-#if STP_WITH_SPECULAR
-/* With the highlight, for a face towards the eye (dot_e = N.w > 0, w the
- * eye's direction e): N.E (Q30), 1/(N.E) and the same in Q26 into the
- * pointers and -1, or the face's shade when it is already known (the
- * ambient shade edge-on, the exact route below fast_min_cos). */
-STP_FACE_BODY stp_fix highlight_eye(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int32_t dot_e,
-                                    const stp_shade_fast_dir *e, int32_t nd, int32_t *n_dot_e, stp_sf16 *inv_ne,
-                                    uint32_t *inv_ne_q26)
-{
-    *n_dot_e = cos_n(dot_e, e, nd);
-    if (*n_dot_e <= 0)
-        return s->ambient_shade;
-    if (s->exact && *n_dot_e < s->fast_min_cos)
-        return s->exact(s, normal, point);
-    *inv_ne = sf_recip(sf_make((uint32_t)*n_dot_e, 30));
-    *inv_ne_q26 = sf_to_fixed(*inv_ne, 26, 0x7FFFFFFFu);
-    return -1;
-}
-#endif
-
-/* The 32-bit targets' face, for both entries: point_big -1 (near) for
+/* The 32-bit targets' face, for both entries: near 1 (point_big 0) for
  * stp_shade_fast_face_near (perspective, no highlight, the eye, the
  * lights and the point within [-2^30, 2^30): the tests below that only
- * those exclude are left out, constant), is_big(point) for
+ * those exclude are left out, constant), near 0 and is_big(point) for
  * stp_shade_fast_face: the same integers where both apply.  Inlined into
  * each entry with its helpers (STP_FACE_BODY in every build: called from
  * both, they would otherwise stay calls), so each entry is the one
  * function it was, and a program that calls one links one (sections
  * collected). */
-STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int point_big)
+#if STP_WITH_SPECULAR
+/* The lighting or the material outside the fast route's range: every
+ * lit face takes the exact route (each entry's first test) */
+#define FACE_EXACT_ALWAYS(s) ((s)->exact && (s)->exact_always && (s)->count != 0)
+#endif
+STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int point_big,
+                                int near)
 {
     stp_shade_fast_dir e_local;
     const stp_shade_fast_dir *e = &s->e;
     int32_t nd, dot_e = 0, sum = s->ambient;
-    int j, lit = 0, near = point_big < 0; /* point_big -1: the near entry */
+    int j, lit = 0;
     int32_t n_dot_e = 0;
     stp_sf16 inv_ne = {0, 0};
     uint32_t inv_ne_q26 = 0;
-#if STP_WITH_SPECULAR
-    if (s->exact && s->exact_always && s->count != 0)
-        return s->exact(s, normal, point);
-#endif
     if (s->count == 0)
         return s->ambient_shade;
     /* does the face face the eye?  e: the direction towards it (e_local
@@ -1313,13 +1295,17 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
     nd = normal_deviation(normal);
 #if STP_WITH_SPECULAR
     if (!near && s->specular) {
-        stp_fix early = highlight_eye(s, normal, point, dot_e, e, nd, &n_dot_e, &inv_ne, &inv_ne_q26);
-        if (early >= 0)
-            return early;
+        n_dot_e = cos_n(dot_e, e, nd);
+        if (n_dot_e <= 0)
+            return s->ambient_shade;
+        if (s->exact && n_dot_e < s->fast_min_cos)
+            return s->exact(s, normal, point);
+        inv_ne = sf_recip(sf_make((uint32_t)n_dot_e, 30));
+        inv_ne_q26 = sf_to_fixed(inv_ne, 26, 0x7FFFFFFFu);
     }
 #endif
     for (j = 0; j < s->count; j++) {
-        int32_t share = light_share(s, j, normal, point, point_big, nd, e, n_dot_e, inv_ne, inv_ne_q26);
+        int32_t share = light_share(s, j, normal, point, point_big, near, nd, e, n_dot_e, inv_ne, inv_ne_q26);
         if (share > 0) {
             lit = 1;
             sum += share;
@@ -1340,13 +1326,21 @@ STP_NOINLINE stp_fix face_narrow(const stp_shade_fast *s, const int16_t normal[3
 stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
 #endif
 {
-    return face_body(s, normal, point, is_big(point));
+#if STP_WITH_SPECULAR
+    if (FACE_EXACT_ALWAYS(s))
+        return s->exact(s, normal, point);
+#endif
+    return face_body(s, normal, point, is_big(point), 0);
 }
 
 #if !STP_WIDE_ARITH
 stp_fix stp_shade_fast_face_near(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
 {
-    return face_body(s, normal, point, -1);
+#if STP_WITH_SPECULAR
+    if (FACE_EXACT_ALWAYS(s))
+        return s->exact(s, normal, point);
+#endif
+    return face_body(s, normal, point, 0, 1);
 }
 #endif
 
