@@ -34,6 +34,8 @@ cp "$root/docs/arduino.md" "$lib/README.md"
 cp "$root"/ports/arduino/src/* "$lib/src/"
 cp "$root"/include/stipple/*.h "$lib/src/stipple/"
 cp "$root"/src/*.c "$root"/src/*.h "$lib/src/core/"
+# the examples' spin reads the core's private stp_direct_lit: beside it
+mv "$lib/src/stipple_spin.c" "$lib/src/core/"
 cp "$root/ports/controllers/stp_panel.h" "$root/ports/controllers/panel.c" \
    "$root/ports/controllers/ssd1306.c" "$lib/src/"
 cp -r "$root"/ports/arduino/examples/* "$lib/examples/"

@@ -24,7 +24,10 @@
  *              give points beyond the device range)
  *   shading    shade_fast.c (its file comment): its prepare and its face
  *              path, the ones the mesh route uses (the 64-bit host path
- *              where prepare chooses it, as for the mesh route). */
+ *              where prepare chooses it, as for the mesh route); the
+ *              prepared light (stp_direct_lit) made per frame by
+ *              stp_direct_frame_project or given to
+ *              stp_direct_frame_project_lit. */
 #include "stipple/direct.h"
 
 #include "direct_private.h"
@@ -76,22 +79,23 @@ STP_DIRECT_CALL void to_view(const stp_direct_view *view, const int32_t d[3], in
         out[i] = dot3(d, view->axis[i]);
 }
 
-/* The face shader's prepared form for one light (shade_fast.c's
- * stp_shade_fast_prepare, the one every route uses), eye at the view
- * origin, no highlight.  light_view: the light in view coordinates. */
-STP_DIRECT_CALL void shade_prepare(stp_shade_fast *s, const stp_direct_light *l, const int32_t light_view[3])
+int stp_direct_light_prepare(stp_direct_lit *lit, const stp_direct_view *view, const stp_direct_light *l)
 {
     stp_lighting lighting;
     stp_material material;
     stp_vec3 origin = {0, 0, 0}, towards_eye = {0, 0, -ONE}; /* unused: perspective */
+    int32_t d[3], lv[3];
     int i;
+    if (!difference(&l->position, &view->from, d))
+        return 0;
+    to_view(view, d, lv);
     lighting.brightness = l->brightness;
     lighting.background = l->background;
     lighting.attenuation_c = l->attenuation_c;
     lighting.count = 1;
-    lighting.lights[0].position.x = light_view[0];
-    lighting.lights[0].position.y = light_view[1];
-    lighting.lights[0].position.z = light_view[2];
+    lighting.lights[0].position.x = lv[0];
+    lighting.lights[0].position.y = lv[1];
+    lighting.lights[0].position.z = lv[2];
     lighting.lights[0].power = l->power;
     material.reflectivity = l->reflectivity;
     material.refraction = ONE / 2; /* below 1: no Fresnel table (no highlight) */
@@ -99,14 +103,15 @@ STP_DIRECT_CALL void shade_prepare(stp_shade_fast *s, const stp_direct_light *l,
     material.specular = 0;
     for (i = 0; i < 3; i++)
         lighting.lights[0].colour[i] = material.colour[i] = ONE;
-    stp_shade_fast_prepare(s, &lighting, &material, origin, 0, towards_eye);
+    stp_shade_fast_prepare(&lit->fast, &lighting, &material, origin, 0, towards_eye);
+    return 1;
 }
 
-int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_view *view,
-                               const stp_direct_model *model, const stp_direct_light *light)
+void stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit, const stp_direct_view *view,
+                                const stp_direct_model *model)
 {
-    int32_t d[3], lv[3];
     int i, j, k;
+    s->fast = &lit->fast;
     for (i = 0; i < 3; i++)
         for (j = 0; j < 3; j++) {
             /* three Q28 products: below 3 2^28 */
@@ -115,11 +120,6 @@ int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_view *vie
                 c += (int32_t)view->axis[i][k] * model->rot[k][j];
             s->rot[i][j] = (int16_t)stp_asr32(c, Q14);
         }
-    if (!difference(&light->position, &view->from, d))
-        return 0;
-    to_view(view, d, lv);
-    shade_prepare(&s->fast, light, lv);
-    return 1;
 }
 
 /* The light's values in their ranges (direct.h), each one unsigned
@@ -213,7 +213,8 @@ stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal
     centre.x = third(p[0]->x, p[1]->x, p[2]->x);
     centre.y = third(p[0]->y, p[1]->y, p[2]->y);
     centre.z = third(p[0]->z, p[1]->z, p[2]->z);
-    return stp_shade_fast_face(&s->fast, nv, centre); /* [0, 1] */
+    /* view coordinates below 2^26 (direct.h), perspective, no highlight */
+    return stp_shade_fast_face_near(s->fast, nv, centre); /* [0, 1] */
 }
 
 /* Twice the signed screen area of p (y down): differences below 2^14,
@@ -265,16 +266,15 @@ static int corners_in_mesh(const stp_mesh *mesh)
     return 1;
 }
 
+/* The arguments but the light (checked by stp_direct_frame_project) */
 static int check_args(const stp_direct_frame *f, const stp_mesh *mesh, const stp_direct_model *model,
-                      const stp_direct_view *view, const stp_direct_light *light, int levels,
-                      const uint8_t *cell, const stp_direct_point *points, size_t point_count,
-                      const uint16_t *faces, size_t face_count)
+                      const stp_direct_view *view, const stp_direct_lit *lit, int levels, const uint8_t *cell,
+                      const stp_direct_point *points, size_t point_count, const uint16_t *faces, size_t face_count)
 {
-    if (f == 0 || mesh == 0 || model == 0 || view == 0 || light == 0 || cell == 0 || points == 0 ||
+    if (f == 0 || mesh == 0 || model == 0 || view == 0 || lit == 0 || cell == 0 || points == 0 ||
         faces == 0 || mesh->vertices == 0 || mesh->triangles == 0 || mesh->normals == 0 ||
         point_count < mesh->vertex_count || face_count < mesh->triangle_count || levels < 2 ||
-        levels > 255 || (uint32_t)model->scale - 1u >= 2u * (uint32_t)ONE - 1u || !light_ok(light) ||
-        !corners_in_mesh(mesh))
+        levels > 255 || (uint32_t)model->scale - 1u >= 2u * (uint32_t)ONE - 1u || !corners_in_mesh(mesh))
         return STP_ERR_ARG;
     return STP_OK;
 }
@@ -284,6 +284,21 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
                              const uint8_t cell[16], stp_direct_point *points, size_t point_count,
                              uint16_t *faces, size_t face_count)
 {
+    stp_direct_lit lit;
+    /* the light's own checks here, the others in stp_direct_frame_project_lit */
+    if (view == 0 || light == 0 || !light_ok(light))
+        return STP_ERR_ARG;
+    if (!stp_direct_light_prepare(&lit, view, light))
+        return STP_ERR_RANGE;
+    return stp_direct_frame_project_lit(f, mesh, model, view, &lit, levels, cell, points, point_count, faces,
+                                        face_count);
+}
+
+int stp_direct_frame_project_lit(stp_direct_frame *f, const stp_mesh *mesh, const stp_direct_model *model,
+                                 const stp_direct_view *view, const stp_direct_lit *lit, int levels,
+                                 const uint8_t cell[16], stp_direct_point *points, size_t point_count,
+                                 uint16_t *faces, size_t face_count)
+{
     int32_t t[3], d[3];
     int16_t m[3][3], scale14;
     uint32_t drive_m;
@@ -292,7 +307,7 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
     const int16_t *normal;
     int i, j, status;
     uint16_t k;
-    status = check_args(f, mesh, model, view, light, levels, cell, points, point_count, faces, face_count);
+    status = check_args(f, mesh, model, view, lit, levels, cell, points, point_count, faces, face_count);
     if (status != STP_OK)
         return status;
     f->layout = STP_BAND_ROWS;
@@ -302,9 +317,9 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
      * below 2^15; M saturated (file comment) */
     scale14 = (int16_t)(F >= 14 ? model->scale >> (F >= 14 ? F - 14 : 0) /* scale > 0 */
                                 : model->scale * (1 << (F >= 14 ? 0 : 14 - F)));
-    if (!stp_direct_shading_prepare(&shading, view, model, light) ||
-        !difference(&model->translate, &view->from, d))
+    if (!difference(&model->translate, &view->from, d))
         return STP_ERR_RANGE;
+    stp_direct_shading_prepare(&shading, lit, view, model);
     for (i = 0; i < 3; i++)
         for (j = 0; j < 3; j++) {
             int32_t e = stp_asr32((int32_t)shading.rot[i][j] * scale14, Q14);

@@ -10,18 +10,32 @@
 #include "shade_fast_private.h"
 #include "direct_view_private.h" /* stp_direct_udiv, STP_DIRECT_CALL */
 
-/* A frame's shading: shade_fast.c's constants and C = V R, the model's
- * rotation into view coordinates (Q1.14), for the normals. */
-typedef struct stp_direct_shading {
+/* A light prepared for a view (include/stipple/direct.h: stp_direct_lit):
+ * the face shader's constants (shade_fast.c's stp_shade_fast_prepare for
+ * the one light in view coordinates, eye at the view origin, no
+ * highlight).  They depend on the view and the light only, not on the
+ * model, so a program whose view and light are fixed may carry them as
+ * data made on the host in its own configuration (the layout follows
+ * STP_MAX_LIGHTS, STP_WITH_SPECULAR and the target's arithmetic) and never
+ * link the prepare (ports/arduino/src/stipple_spin.c). */
+struct stp_direct_lit {
     stp_shade_fast fast;
+};
+
+/* *lit for light seen from view (its values checked by the caller); 0
+ * when the light's offset from the eye is not below 2^23 raw. */
+int stp_direct_light_prepare(stp_direct_lit *lit, const stp_direct_view *view, const stp_direct_light *light);
+
+/* A frame's shading: the prepared light and C = V R, the model's rotation
+ * into view coordinates (Q1.14), for the normals. */
+typedef struct stp_direct_shading {
+    const stp_shade_fast *fast;
     int16_t rot[3][3];
 } stp_direct_shading;
 
-/* *s for a frame (direct.c): C = V R rounded from Q28, and shade_fast.c's
- * constants for light (its values checked by the caller); 0 when the
- * light's offset from the eye is not below 2^23 raw. */
-int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_view *view,
-                               const stp_direct_model *model, const stp_direct_light *light);
+/* *s for a frame (direct.c): lit's shader and C = V R rounded from Q28. */
+void stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit, const stp_direct_view *view,
+                                const stp_direct_model *model);
 
 /* The shade in [0, 1] of a face with model normal (Q1.14) and projected
  * vertices p (direct.c). */

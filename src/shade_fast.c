@@ -1089,7 +1089,7 @@ static void prepare_ambient(stp_shade_fast *s, stp_fix background, stp_fix refl,
 }
 
 /* Each of the s->count lights' position and its BRIGHT P_j |R| (and
- * BRIGHT P_j Ks) per raw unit of C + U. */
+ * BRIGHT P_j Ks) per raw unit of C + U; the other entries 0. */
 static void prepare_lights(stp_shade_fast *s, const stp_lighting *lighting, const stp_material *material)
 {
     stp_fix refl = material->reflectivity, bright = lighting->brightness;
@@ -1099,9 +1099,20 @@ static void prepare_lights(stp_shade_fast *s, const stp_lighting *lighting, cons
     stp_sf16 ks_sf = sf_make(material->specular > 0 ? (uint32_t)material->specular : 0u, F);
 #endif
     int j;
-    for (j = 0; j < s->count; j++) {
+    for (j = 0; j < STP_MAX_LIGHTS; j++) {
         const stp_light *light = &lighting->lights[j];
-        stp_sf16 p = sf_make(light->power > 0 ? (uint32_t)light->power : 0u, F);
+        stp_sf16 p;
+        if (j >= s->count) { /* unused: zero, so every field is set */
+            s->light[j].x = s->light[j].y = s->light[j].z = 0;
+            s->light_big[j] = 0;
+            s->power_refl[j].m = 0;
+            s->power_refl[j].e = 0;
+#if STP_WITH_SPECULAR
+            s->power_ks[j] = s->power_refl[j];
+#endif
+            continue;
+        }
+        p = sf_make(light->power > 0 ? (uint32_t)light->power : 0u, F);
         s->light[j] = light->position;
         s->light_big[j] = (uint8_t)is_big(light->position);
         p = sf_mul(bright_sf, p);
@@ -1193,18 +1204,25 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
     return nn > 0x10020000u ? 0x20000 : (nn < 0x0FFE0000u ? -0x20000 : (int32_t)(nn - 0x10000000u));
 }
 
+#if defined(__GNUC__)
+#define STP_FACE_BODY static inline __attribute__((always_inline))
+#else
+#define STP_FACE_BODY static inline
+#endif
+
 /* Light j's share of the shade in Q26 (stp_shade_fast_face): BRIGHT P_j
  * |R| (N.L)/(C + U), signed as R, plus the highlight; 0 when the light is
  * behind the face.  nd: normal_deviation; e the eye's direction, n_dot_e
  * N.E (Q30), inv_ne 1/(N.E) and inv_ne_q26 the same in Q26. */
-static inline int32_t light_share(const stp_shade_fast *s, int j, const int16_t normal[3], stp_vec3 point,
-                                   int point_big, int32_t nd, const stp_shade_fast_dir *e, int32_t n_dot_e,
+STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t normal[3], stp_vec3 point,
+                                   int point_big, int near, int32_t nd, const stp_shade_fast_dir *e, int32_t n_dot_e,
                                    stp_sf16 inv_ne, uint32_t inv_ne_q26)
 {
     stp_shade_fast_dir l;
     int32_t n_dot_l, share;
     stp_sf16 w;
-    int at_point = !dir_make(&l, &s->light[j], &point, s->light_big[j] | point_big, 1);
+    /* near: the near face (face_body), where no light is big */
+    int at_point = !dir_make(&l, &s->light[j], &point, near ? 0 : s->light_big[j] | point_big, 1);
     if (!at_point) {
         n_dot_l = cos_n(dot_n(normal, &l), &l, nd);
         if (n_dot_l <= 0)
@@ -1218,7 +1236,7 @@ static inline int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
     if (s->refl_negative)
         share = -share;
 #if STP_WITH_SPECULAR
-    if (s->specular) {
+    if (!near && s->specular) { /* near: no highlight (and no call left to it there) */
         int32_t e_dot_l = at_point ? n_dot_e : cos_dirs(e, &l);
         share += specular_share(s, n_dot_l, n_dot_e, e_dot_l, inv_ne, inv_ne_q26, sf_mul(w, s->power_ks[j]));
     }
@@ -1231,34 +1249,37 @@ static inline int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
     return share;
 }
 
-/* The 32-bit targets' face: stp_shade_fast_face itself there; on a host
- * (kept compiled there: its helpers serve prepare and the Fresnel) a
- * function of its own for a struct that prepare did not fill, so that the
- * wide route's calls do not set up its registers and stack. */
-#if STP_WIDE_ARITH
-STP_NOINLINE stp_fix face_narrow(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
-#else
-stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+/* The 32-bit targets' face, for both entries: near 1 (point_big 0) for
+ * stp_shade_fast_face_near (perspective, no highlight, the eye, the
+ * lights and the point within [-2^30, 2^30): the tests below that only
+ * those exclude are left out, constant), near 0 and is_big(point) for
+ * stp_shade_fast_face: the same integers where both apply.  Inlined into
+ * each entry with its helpers (STP_FACE_BODY in every build: called from
+ * both, they would otherwise stay calls), so each entry is the one
+ * function it was, and a program that calls one links one (sections
+ * collected). */
+#if STP_WITH_SPECULAR
+/* The lighting or the material outside the fast route's range: every
+ * lit face takes the exact route (each entry's first test) */
+#define FACE_EXACT_ALWAYS(s) ((s)->exact && (s)->exact_always && (s)->count != 0)
 #endif
+STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int point_big,
+                                int near)
 {
     stp_shade_fast_dir e_local;
     const stp_shade_fast_dir *e = &s->e;
     int32_t nd, dot_e = 0, sum = s->ambient;
-    int j, lit = 0, point_big = is_big(point);
+    int j, lit = 0;
     int32_t n_dot_e = 0;
     stp_sf16 inv_ne = {0, 0};
     uint32_t inv_ne_q26 = 0;
-#if STP_WITH_SPECULAR
-    if (s->exact && s->exact_always && s->count != 0)
-        return s->exact(s, normal, point);
-#endif
     if (s->count == 0)
         return s->ambient_shade;
     /* does the face face the eye?  e: the direction towards it (e_local
      * made here, or the parallel view's); dot_e = N.E where the highlight
      * or a big or parallel eye needs it (kept in this function: as a
      * helper writing through pointers it cost an AVR image 510 B) */
-    if (!s->parallel && !s->specular && !(s->eye_big | point_big)) {
+    if (near || (!s->parallel && !s->specular && !(s->eye_big | point_big))) {
         if (!faces_point(normal, &s->eye, &point)) /* diffuse only: E matters only through N.E's sign */
             return s->ambient_shade;
     } else {
@@ -1273,7 +1294,7 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     }
     nd = normal_deviation(normal);
 #if STP_WITH_SPECULAR
-    if (s->specular) {
+    if (!near && s->specular) {
         n_dot_e = cos_n(dot_e, e, nd);
         if (n_dot_e <= 0)
             return s->ambient_shade;
@@ -1284,7 +1305,7 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     }
 #endif
     for (j = 0; j < s->count; j++) {
-        int32_t share = light_share(s, j, normal, point, point_big, nd, e, n_dot_e, inv_ne, inv_ne_q26);
+        int32_t share = light_share(s, j, normal, point, point_big, near, nd, e, n_dot_e, inv_ne, inv_ne_q26);
         if (share > 0) {
             lit = 1;
             sum += share;
@@ -1294,6 +1315,34 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     }
     return shade_of_sum(s, lit, sum);
 }
+
+/* The 32-bit targets' entries; on a host (kept compiled there: its
+ * helpers serve prepare and the Fresnel) a function of its own for a
+ * struct that prepare did not fill, so that the wide route's calls do not
+ * set up its registers and stack. */
+#if STP_WIDE_ARITH
+STP_NOINLINE stp_fix face_narrow(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+#else
+stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+#endif
+{
+#if STP_WITH_SPECULAR
+    if (FACE_EXACT_ALWAYS(s))
+        return s->exact(s, normal, point);
+#endif
+    return face_body(s, normal, point, is_big(point), 0);
+}
+
+#if !STP_WIDE_ARITH
+stp_fix stp_shade_fast_face_near(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+{
+#if STP_WITH_SPECULAR
+    if (FACE_EXACT_ALWAYS(s))
+        return s->exact(s, normal, point);
+#endif
+    return face_body(s, normal, point, 0, 1);
+}
+#endif
 
 #if STP_WIDE_ARITH
 stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)

@@ -132,4 +132,15 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
  * and 1 where the reference is). */
 stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point);
 
+/* stp_shade_fast_face for a struct prepared for perspective without the
+ * highlight (Ks <= 0), with the eye, every light and point within
+ * [-2^30, 2^30) in each coordinate (direct drawing's: below 2^26): the
+ * same shade, without the tests for the cases those conditions exclude,
+ * on the 32-bit targets (the host's is stp_shade_fast_face itself). */
+#if STP_WIDE_ARITH
+#define stp_shade_fast_face_near stp_shade_fast_face
+#else
+stp_fix stp_shade_fast_face_near(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point);
+#endif
+
 #endif

@@ -20,9 +20,9 @@
  * Every constructor, the call that starts each use of the library, is
  * checked against the tag: it is linked under a name that carries it
  * (stp_renderer_create, stp_playback_create, stp_spans_start,
- * stp_rt_create, stp_direct_frame_project), so an application compiled with
- * other layout switches than its library fails to link, naming the symbol
- * it wanted, e.g.
+ * stp_rt_create, stp_direct_frame_project, stp_direct_frame_project_lit),
+ * so an application compiled with other layout switches than its library
+ * fails to link, naming the symbol it wanted, e.g.
  *   undefined reference to `stp_playback_create_cfg_f16_v160_l4_s16_c64_10110'
  * instead of reading 20-byte entries as 16-byte ones.  Source code calls the
  * plain names; the macros below rename them (config.h includes this
@@ -61,6 +61,7 @@ extern "C" {
 #define stp_spans_start STP_CONFIG_SYMBOL(stp_spans_start)
 #define stp_rt_create STP_CONFIG_SYMBOL(stp_rt_create)
 #define stp_direct_frame_project STP_CONFIG_SYMBOL(stp_direct_frame_project)
+#define stp_direct_frame_project_lit STP_CONFIG_SYMBOL(stp_direct_frame_project_lit)
 
 #ifdef __cplusplus
 }

@@ -142,6 +142,25 @@ int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const st
                              const uint8_t cell[16], stp_direct_point *points, size_t point_count,
                              uint16_t *faces, size_t face_count);
 
+/* A light prepared for a view: the face shader's constants, which depend
+ * on the view and the light, not on the model (an opaque type: its layout
+ * follows the build's configuration and the target's arithmetic).
+ * stp_direct_frame_project prepares one for every frame; a program whose
+ * view and light stay fixed may carry it as data made on the host for the
+ * same configuration (guarded by the compatibility tag, config_guard.h)
+ * and call stp_direct_frame_project_lit, so the prepare and its 64-bit
+ * arithmetic are not linked: the Arduino examples' spin does
+ * (ports/arduino/src/stipple_spin.c). */
+typedef struct stp_direct_lit stp_direct_lit;
+
+/* stp_direct_frame_project with the light already prepared for view
+ * (lit): the same frame, the same errors but the light's (STP_ERR_ARG for
+ * lit NULL). */
+int stp_direct_frame_project_lit(stp_direct_frame *f, const stp_mesh *mesh, const stp_direct_model *model,
+                                 const stp_direct_view *view, const stp_direct_lit *lit, int levels,
+                                 const uint8_t cell[16], stp_direct_point *points, size_t point_count,
+                                 uint16_t *faces, size_t face_count);
+
 /* Draw rows y0 .. y0 + rows - 1 of frame f into band, 1 bit per pixel,
  * bit 1 = ON, in f->layout:
  *   STP_BAND_ROWS   rows x stride bytes, most significant bit first;

@@ -319,6 +319,7 @@ static int compare(work *w, const char *name, uint16_t yaw, uint16_t pitch)
     scene s;
     stp_direct_frame fr;
     stp_direct_shading sh;
+    stp_direct_lit lit;
     ref_lighting rl;
     ref_material rm;
     int x, y, diff = 0, edge = 0, style = 0, front = 0, level_diff = 0;
@@ -332,7 +333,8 @@ static int compare(work *w, const char *name, uint16_t yaw, uint16_t pitch)
     full_render(&w->f, &s, &w->m);
     /* shades: the lean path's per face against the double reference */
     memset(&sh, 0, sizeof sh);
-    assert_true(stp_direct_shading_prepare(&sh, &s.dview, &s.pose, &s.light));
+    assert_true(stp_direct_light_prepare(&lit, &s.dview, &s.light));
+    stp_direct_shading_prepare(&sh, &lit, &s.dview, &s.pose);
     memset(&rl, 0, sizeof rl);
     rl.brightness = 1;
     rl.background = 0.2;
@@ -499,6 +501,7 @@ static void test_levels(void **state)
 {
     work *w = calloc(1, sizeof *w);
     stp_direct_shading sh;
+    stp_direct_lit lit;
     scene s;
     stp_direct_frame fr;
     int levels, checked = 0;
@@ -506,7 +509,8 @@ static void test_levels(void **state)
     assert_non_null(w);
     make_sphere(&w->m);
     scene_make(&s, 7000, 5000);
-    assert_true(stp_direct_shading_prepare(&sh, &s.dview, &s.pose, &s.light));
+    assert_true(stp_direct_light_prepare(&lit, &s.dview, &s.light));
+    stp_direct_shading_prepare(&sh, &lit, &s.dview, &s.pose);
     for (levels = 2; levels <= 255; levels++) {
         uint16_t t;
         assert_int_equal(stp_direct_frame_project(&fr, &w->m.mesh, &s.pose, &s.dview, &s.light, levels, s.cell,

@@ -368,11 +368,26 @@ static double uni(uint32_t *seed)
     return (double)(*seed >> 8) / (double)(1u << 24);
 }
 
+/* 1 to 4 lights (drawn) at distances 0.1 .. 100 from point, towards the
+ * eye; returns their count */
+static int random_lights(uint32_t *seed, stp_vec3 point, light_desc lights[4])
+{
+    int j, count = 1 + (int)(uni(seed) * 4) % 4;
+    for (j = 0; j < count; j++) {
+        double ld = pow(10.0, 3 * uni(seed) - 1);
+        lights[j].x = dbl(point.x) + (uni(seed) - 0.5) * 2 * ld;
+        lights[j].y = dbl(point.y) + (uni(seed) - 0.5) * 2 * ld;
+        lights[j].z = dbl(point.z) - uni(seed) * ld;
+        lights[j].power = (0.2 + uni(seed)) * (1 + ld) / count;
+    }
+    return count;
+}
+
 static void test_random_against_reference(void **state)
 {
     stats st;
     uint32_t seed = 2024u;
-    int i, j;
+    int i;
     (void)state;
     memset(&st, 0, sizeof st);
     for (i = 0; i < 200000; i++) {
@@ -382,14 +397,7 @@ static void test_random_against_reference(void **state)
         ref_vec3 rn = q14_normal(uni(&seed) - 0.5, uni(&seed) - 0.5, -uni(&seed), n);
         double dist = pow(10.0, 3 * uni(&seed) - 1); /* 0.1 .. 100 */
         stp_vec3 point = fvec((uni(&seed) - 0.5) * dist, (uni(&seed) - 0.5) * dist, dist);
-        int count = 1 + (int)(uni(&seed) * 4) % 4;
-        for (j = 0; j < count; j++) {
-            double ld = pow(10.0, 3 * uni(&seed) - 1);
-            lights[j].x = dbl(point.x) + (uni(&seed) - 0.5) * 2 * ld;
-            lights[j].y = dbl(point.y) + (uni(&seed) - 0.5) * 2 * ld;
-            lights[j].z = dbl(point.z) - uni(&seed) * ld;
-            lights[j].power = (0.2 + uni(&seed)) * (1 + ld) / count;
-        }
+        int count = random_lights(&seed, point, lights);
         make_lighting(&sc.fl, &sc.rl, 0.5 + uni(&seed), uni(&seed) * 0.5, 0.5 + uni(&seed), lights, count);
         make_material(&sc.fm, &sc.rm, 0.1 + 0.9 * uni(&seed), 1.0 + pow(10.0, 2 * uni(&seed)) - 1,
                       pow(10.0, 2.5 * uni(&seed) - 1.3), uni(&seed));
@@ -399,6 +407,46 @@ static void test_random_against_reference(void **state)
         (void)check(&sc, n, rn, point, &st, "random");
     }
     report("random", &st);
+}
+
+/* stp_shade_fast_face_near (perspective, no highlight, every coordinate
+ * within 2^30: direct drawing's faces) gives stp_shade_fast_face's shade
+ * exactly: random faces as above with Ks = 0, some lit from a light on
+ * the face's point, some behind it. */
+static void test_near_equals_face(void **state)
+{
+    uint32_t seed = 77u;
+    int i, lit = 0;
+    scene sc;
+    stp_shade_fast fs;
+    (void)state;
+    for (i = 0; i < 100000; i++) {
+        int16_t n[3];
+        double dist = pow(10.0, 3 * uni(&seed) - 1); /* 0.1 .. 100 */
+        stp_vec3 point = fvec((uni(&seed) - 0.5) * dist, (uni(&seed) - 0.5) * dist, dist);
+        stp_fix want, got;
+        (void)q14_normal(uni(&seed) - 0.5, uni(&seed) - 0.5, uni(&seed) - 0.8, n);
+        if (i % 8 == 0 || i % 50 == 0) { /* a new lighting every 8 faces */
+            light_desc lights[4];
+            int count = random_lights(&seed, point, lights);
+            if (i % 50 == 0) { /* the light on the face */
+                lights[0].x = dbl(point.x);
+                lights[0].y = dbl(point.y);
+                lights[0].z = dbl(point.z);
+            }
+            make_lighting(&sc.fl, &sc.rl, 0.5 + uni(&seed) * (i % 7 == 0 ? 40 : 1), uni(&seed) * 0.5,
+                          0.5 + uni(&seed), lights, count);
+            make_material(&sc.fm, &sc.rm, (uni(&seed) - 0.2) * 1.2, 1.0 + pow(10.0, 2 * uni(&seed)) - 1,
+                          pow(10.0, 2.5 * uni(&seed) - 1.3), 0);
+            stp_shade_fast_prepare(&fs, &sc.fl, &sc.fm, fvec(0, 0, 0), 0, fvec(0, 0, -1));
+        }
+        want = stp_shade_fast_face(&fs, n, point);
+        got = stp_shade_fast_face_near(&fs, n, point);
+        if (got != want)
+            fail_msg("face %d: near %ld, face %ld", i, (long)got, (long)want);
+        lit += want != fs.ambient_shade;
+    }
+    assert_true(lit > 20000);
 }
 
 /* ---- the stiff cases ---- */
@@ -511,6 +559,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_back_face_is_exactly_ambient),
+        cmocka_unit_test(test_near_equals_face),
         cmocka_unit_test(test_stiff_cases),
         cmocka_unit_test(test_highlight_sweep),
         cmocka_unit_test(test_fresnel_range_sweep),

@@ -1,12 +1,25 @@
 /* SPDX-License-Identifier: MIT */
 /* SSD1306 drawing, whatever the bus (StippleSSD1306.h). */
 #include <Arduino.h>
+#ifdef __AVR__
+#include <util/delay.h>
+#endif
 
 #include "StippleSSD1306.h"
 
 #include "stipple/render.h"
 #include "stipple_sim.h"
 #include "stp_panel.h"
+
+void StippleSSD1306::wait(unsigned ms)
+{
+#ifdef __AVR__
+    while (ms-- != 0)
+        _delay_ms(1);
+#else
+    delay(ms);
+#endif
+}
 
 int StippleSSD1306::busCommand(void *ctx, const uint8_t *bytes, size_t count)
 {
@@ -29,7 +42,7 @@ int StippleSSD1306::step(void *ctx, unsigned op, unsigned arg)
         static_cast<StippleSSD1306 *>(ctx)->reset(arg);
         return 0;
     case STP_PANEL_STEP_DELAY:
-        delay(arg);
+        wait(arg);
         return 0;
     default:
         return -1;

@@ -57,6 +57,12 @@ protected:
      * from commands to data within one transfer overrides it. */
     virtual int pageStart(const uint8_t *address, uint8_t count);
 
+    /* Wait ms milliseconds (the reset pulse, the init sequence's delays):
+     * on an AVR a cycle-counted loop (util/delay.h at F_CPU), so a sketch
+     * links neither delay() nor micros() (190 bytes of an Uno image);
+     * elsewhere delay(). */
+    static void wait(unsigned ms);
+
 private:
     uint8_t *band_;
     uint8_t band_rows_;

@@ -74,7 +74,7 @@ protected:
     void reset(unsigned ms)
     {
         digitalWrite(reset_, LOW);
-        delay(ms);
+        wait(ms);
         digitalWrite(reset_, HIGH);
     }
 

@@ -12,8 +12,13 @@
  * and kept as data (STIPPLE_SPIN_VIEW; tests/avr/test_u8g2_buffer.c checks
  * it), so the look-at's code (1.5 KB on an AVR) stays off the chip.  One
  * light at (-4, 6, 5), power 9.775, background 0.2, reflectivity 0.7,
- * brightness 1; 16 levels, Bayer 4x4.  Frame n turns the model by n/64 of a turn about y and by
- * n 410/65536 of a turn about x.
+ * brightness 1; 16 levels, Bayer 4x4.  The face shader's constants for
+ * that view and light (stp_direct_lit) are data too in the Arduino
+ * library's configuration (spin_lit in stipple_spin.c;
+ * tests/avr/test_spin_lit.c checks them against the prepare), so a
+ * sketch links neither the prepare nor its 64-bit arithmetic.  Frame n
+ * turns the model by n/64 of a turn about y and by n 410/65536 of a turn
+ * about x.
  */
 #ifndef STIPPLE_SPIN_H
 #define STIPPLE_SPIN_H
@@ -35,6 +40,9 @@ typedef struct stipple_spin {
     uint16_t *faces;           /* mesh->triangle_count entries */
     stp_direct_view view;
     stp_direct_light light;
+    const stp_direct_lit *lit; /* the light prepared for the view, kept as
+                                  data in the Arduino configuration; NULL
+                                  elsewhere: prepared every frame */
     stp_direct_frame frame;    /* the last frame made by stipple_spin_frame */
 } stipple_spin;
 
