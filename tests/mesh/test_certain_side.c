@@ -47,6 +47,21 @@ typedef struct tally {
     long tried, certain, grazing_certain, grazing_tried;
 } tally;
 
+/* Triangle v's edges e1 = v1 - v0, e2 = v2 - v0 and their cross product g,
+ * in double precision (the reference). */
+static void double_edges(const stp_vec3 v[3], double e1[3], double e2[3], double g[3])
+{
+    e1[0] = (double)v[1].x - v[0].x;
+    e1[1] = (double)v[1].y - v[0].y;
+    e1[2] = (double)v[1].z - v[0].z;
+    e2[0] = (double)v[2].x - v[0].x;
+    e2[1] = (double)v[2].y - v[0].y;
+    e2[2] = (double)v[2].z - v[0].z;
+    g[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    g[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    g[2] = e1[0] * e2[1] - e1[1] * e2[0];
+}
+
 /* One triangle v and eye: a decided side agrees with the rounded normal's
  * and with the geometric sign. */
 static void check_one(const stp_vec3 v[3], const stp_vec3 *eye, int grazing, tally *t)
@@ -75,15 +90,7 @@ static void check_one(const stp_vec3 v[3], const stp_vec3 *eye, int grazing, tal
         fprintf(stderr, "certain %d, rounded normal %d: v0 (%d %d %d) eye (%d %d %d)\n", sure, exact,
                 (int)v[0].x, (int)v[0].y, (int)v[0].z, (int)eye->x, (int)eye->y, (int)eye->z);
     assert_int_equal(sure, exact);
-    e1[0] = (double)v[1].x - v[0].x;
-    e1[1] = (double)v[1].y - v[0].y;
-    e1[2] = (double)v[1].z - v[0].z;
-    e2[0] = (double)v[2].x - v[0].x;
-    e2[1] = (double)v[2].y - v[0].y;
-    e2[2] = (double)v[2].z - v[0].z;
-    g[0] = e1[1] * e2[2] - e1[2] * e2[1];
-    g[1] = e1[2] * e2[0] - e1[0] * e2[2];
-    g[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    double_edges(v, e1, e2, g);
     d[0] = (double)eye->x - v[0].x;
     d[1] = (double)eye->y - v[0].y;
     d[2] = (double)eye->z - v[0].z;
@@ -137,15 +144,7 @@ static void test_grazing_eyes(void **state)
         double e1[3], e2[3], g[3], len, a, b, off, p[3];
         int edge_bits = 6 + (int)(next_random() % 22u), i;
         random_triangle(v, edge_bits + 1 > 28 ? 28 : edge_bits + 1, edge_bits);
-        e1[0] = (double)v[1].x - v[0].x;
-        e1[1] = (double)v[1].y - v[0].y;
-        e1[2] = (double)v[1].z - v[0].z;
-        e2[0] = (double)v[2].x - v[0].x;
-        e2[1] = (double)v[2].y - v[0].y;
-        e2[2] = (double)v[2].z - v[0].z;
-        g[0] = e1[1] * e2[2] - e1[2] * e2[1];
-        g[1] = e1[2] * e2[0] - e1[0] * e2[2];
-        g[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        double_edges(v, e1, e2, g);
         len = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
         if (len == 0)
             continue;
