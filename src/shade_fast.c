@@ -372,7 +372,7 @@ STP_HOT_INLINE int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t n
 }
 
 /* The length of d's vector in raw stp_fix units: 2 sqrt(q) 2^shift */
-STP_SIZE_CALL stp_sf16 dir_length(const stp_shade_fast_dir *d)
+STP_HOT_INLINE stp_sf16 dir_length(const stp_shade_fast_dir *d)
 {
     return sf_make(stp_umulhi32_approx(d->q, d->r), 13 - d->j - d->shift);
 }
