@@ -779,7 +779,6 @@ typedef struct stp_entry {
     int32_t colour;
     stp_fix transmission;
     const stp_instr *projected; /* an unclipped polygon's device vertices, or NULL */
-    int outcodes_known;         /* outside_all and outside_any set */
 } stp_entry;
 
 /* Step 1: the vertices to view coordinates (r->clip_a), through the
@@ -852,7 +851,6 @@ static void enter_outcodes(stp_renderer *r, stp_entry *e)
     int i;
     e->outside_all = 31u;
     e->outside_any = 0;
-    e->outcodes_known = 1;
     for (i = 0; i < e->n; i++) {
         unsigned code = stp_clip_outcode(&r->clip_volume, r->clip_a[i]);
         e->outside_all &= code;
@@ -1202,24 +1200,31 @@ static inline void store_records(stp_renderer *r, const stp_instr *record, int r
 }
 #endif
 
-/* The records of a flat polygon's m vertices projected by enter_model_face,
- * appended (capacity checked by enter_store).  Returns STP_OK. */
-static int store_projected(stp_renderer *r, const stp_instr *projected, int m)
+/* The device positions of the first n vertices of r->clip_a (inside the
+ * view volume), through the vertex cache: each cached vertex projected
+ * once. */
+static void project_entered(stp_renderer *r, int n, stp_instr *out)
 {
-    stp_instr *out = &r->df[r->used];
     int i;
-    for (i = 0; i < m; i++, out++) {
-        out->op = i == 0 ? m : STP_OP_LINE;
-        out->x = projected[i].x;
-        out->y = projected[i].y;
-        out->z = projected[i].z;
-#if STP_WITH_GOURAUD
-        out->shade = -1;
+    for (i = 0; i < n; i++) {
+#if STP_VERTEX_CACHE
+        stp_vertex_entry *c = r->cached[i] != STP_CACHE_NONE ? &r->cache[r->cached[i]] : 0;
+        if (c && c->dx != STP_CACHE_NOT_PROJECTED) {
+            out[i].x = c->dx;
+            out[i].y = c->dy;
+            out[i].z = c->dz;
+            continue;
+        }
+        project(r, r->clip_a[i], &out[i]);
+        if (c) {
+            c->dx = out[i].x;
+            c->dy = out[i].y;
+            c->dz = out[i].z;
+        }
+#else
+        project(r, r->clip_a[i], &out[i]);
 #endif
     }
-    r->used += (uint32_t)m;
-    r->segments[r->open_segment].end = r->used;
-    return STP_OK;
 }
 
 /* Step 5: clip (only a polygon that crosses a plane), project and store:
@@ -1238,10 +1243,6 @@ static int enter_store(stp_renderer *r, stp_entry *e)
 #endif
 #if STP_WITH_GOURAUD
     clipped_shades = r->shade_a;
-#endif
-#if !STP_VERTEX_CACHE
-    if (!e->outcodes_known)
-        enter_outcodes(r, e);
 #endif
     if (e->outside_all != 0)
         return STP_OK; /* wholly outside one plane: nothing of it is in view */
@@ -1264,33 +1265,23 @@ static int enter_store(stp_renderer *r, stp_entry *e)
 #endif
     /* the vertices straight into the display file (capacity checked) */
     out = &r->df[r->used];
-    if (e->projected && e->outside_any == 0)
-        return store_projected(r, e->projected, m);
-    for (i = 0; i < m; i++, out++) {
-#if STP_VERTEX_CACHE
-        /* an unclipped polygon's vertices are the cached ones */
-        stp_vertex_entry *c = e->outside_any == 0 && r->cached[i] != STP_CACHE_NONE
-                                  ? &r->cache[r->cached[i]]
-                                  : 0;
-        if (c && c->dx != STP_CACHE_NOT_PROJECTED) {
-            out->x = c->dx;
-            out->y = c->dy;
-            out->z = c->dz;
-        } else {
-            project(r, clipped[i], out);
-            if (c) {
-                c->dx = out->x;
-                c->dy = out->y;
-                c->dz = out->z;
-            }
-        }
-#else
-        project(r, clipped[i], out);
-#endif
-        out->op = i == 0 ? m : STP_OP_LINE;
+    for (i = 0; i < m; i++) {
+        out[i].op = i == 0 ? m : STP_OP_LINE;
 #if STP_WITH_GOURAUD
-        out->shade = smooth ? clipped_shades[i] : -1;
+        out[i].shade = smooth ? clipped_shades[i] : -1;
 #endif
+    }
+    if (e->outside_any != 0) {
+        for (i = 0; i < m; i++)
+            project(r, clipped[i], &out[i]);
+    } else if (e->projected) {
+        for (i = 0; i < m; i++) { /* enter_model_face projected them */
+            out[i].x = e->projected[i].x;
+            out[i].y = e->projected[i].y;
+            out[i].z = e->projected[i].z;
+        }
+    } else {
+        project_entered(r, m, out); /* the cached ones */
     }
     r->used += (uint32_t)m;
     r->segments[r->open_segment].end = r->used;
@@ -1389,33 +1380,6 @@ static const stp_model_frame *model_route(stp_renderer *r)
     return stp_render_model_frame(r);
 }
 
-/* The device positions of the first n vertices of r->clip_a (inside the
- * view volume), through the vertex cache: each cached vertex projected
- * once. */
-static void project_entered(stp_renderer *r, int n, stp_instr *out)
-{
-    int i;
-    for (i = 0; i < n; i++) {
-#if STP_VERTEX_CACHE
-        stp_vertex_entry *c = r->cached[i] != STP_CACHE_NONE ? &r->cache[r->cached[i]] : 0;
-        if (c && c->dx != STP_CACHE_NOT_PROJECTED) {
-            out[i].x = c->dx;
-            out[i].y = c->dy;
-            out[i].z = c->dz;
-            continue;
-        }
-        project(r, r->clip_a[i], &out[i]);
-        if (c) {
-            c->dx = out[i].x;
-            c->dy = out[i].y;
-            c->dz = out[i].z;
-        }
-#else
-        project(r, r->clip_a[i], &out[i]);
-#endif
-    }
-}
-
 /* The model normal n (Q1.14) of polygon v (e->n points) and the side of
  * it the eye sees (stp_render_face_side); for a triangle with back faces
  * removed the side is found first (stp_render_certain_side), so a certain back face
@@ -1503,7 +1467,6 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     e.shading = shading;
     e.normals = normals;
     e.projected = 0;
-    e.outcodes_known = 0;
     e.shades = shades;
     r->last_shade = -1;
     if (shading == STP_ENTER_FLAT && (frame = model_route(r)) != 0)
@@ -1524,6 +1487,9 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     if (status != STP_OK)
         return status;
     enter_transmission(r, &e);
+#if !STP_VERTEX_CACHE
+    enter_outcodes(r, &e);
+#endif
     return enter_store(r, &e);
 }
 
