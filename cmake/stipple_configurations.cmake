@@ -19,15 +19,16 @@
 #   avr             a compiled scene's switches (`stipple compile`), on the
 #                   same arithmetic
 #   arduino         the Arduino library's switches (ports/arduino/src/
-#                   stipple_config.h) on the AVR's arithmetic (no 32-bit
-#                   multiply either: STP_HAVE_MUL32=0)
+#                   stipple_config.h: diffuse only, one light, the face
+#                   shader's compact route) on the AVR's arithmetic (no
+#                   32-bit multiply either: STP_HAVE_MUL32=0)
 set(STP_CONFIG_m0plus_full STP_WIDE_ARITH=0)
 set(STP_CONFIG_m0plus_minimal STP_WIDE_ARITH=0 STP_WITH_GOURAUD=0 STP_WITH_COLOUR=0 STP_WITH_TRANSPARENCY=0
     STP_WITH_SHADOWS=0 STP_WITH_RAYTRACE=0 STP_WITH_EDGE_AA=0 STP_VERTEX_CACHE=0)
 set(STP_CONFIG_avr STP_WIDE_ARITH=0 STP_WITH_SPECULAR=0 STP_MAX_LIGHTS=1 STP_MAX_SEGMENTS=1
     STP_WITH_LINES=0 STP_WITH_GOURAUD=0 STP_WITH_COLOUR=0 STP_WITH_TRANSPARENCY=0 STP_WITH_SHADOWS=0
     STP_VERTEX_CACHE=0 STP_WITH_EDGE_AA=0 STP_WITH_RAYTRACE=0 STP_WITH_PAINTER=0)
-set(STP_CONFIG_arduino STP_WIDE_ARITH=0 STP_HAVE_MUL32=0 STP_WITH_SPECULAR=0 STP_MAX_LIGHTS=1)
+set(STP_CONFIG_arduino STP_WIDE_ARITH=0 STP_HAVE_MUL32=0 STP_WITH_SPECULAR=0 STP_MAX_LIGHTS=1 STP_SHADE_COMPACT=1)
 set(STP_SHIPPED_CONFIGURATIONS m0plus_full m0plus_minimal avr arduino)
 
 function(stp_core_configuration name)

@@ -11,21 +11,15 @@
 
 uint32_t stp_direct_udiv(uint32_t n, uint32_t d)
 {
+#if STP_HAVE_MUL32
     uint32_t q = 0;
     int shift;
     if (n < d)
         return 0;
     /* d aligned under n's top bit (below 2^32), then one step per
      * quotient bit: bits(n) - bits(d) + 1 of them */
-#if STP_HAVE_MUL32
     shift = stp_bit_length32(n) - stp_bit_length32(d);
     d <<= shift;
-#else
-    /* without a 32-bit multiply (AVR) the bit counts' table and halvings
-     * cost more code than doubling d while it stays at or below n */
-    for (shift = 0; !(d & 0x80000000u) && (d << 1) <= n; shift++)
-        d <<= 1;
-#endif
     for (; shift >= 0; shift--) {
         q <<= 1;
         if (n >= d) {
@@ -35,6 +29,13 @@ uint32_t stp_direct_udiv(uint32_t n, uint32_t d)
         d >>= 1;
     }
     return q;
+#else
+    /* without a 32-bit multiply (AVR) the C library's division, a
+     * shift-and-subtract loop itself (68 bytes in libgcc), costs less code
+     * than this one inlined and no more cycles a frame (measured on the
+     * Uno's SpinningCube) */
+    return n / d;
+#endif
 }
 
 /* v scaled to unit length in Q1.14: the core's one unit vector

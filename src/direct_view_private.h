@@ -23,7 +23,8 @@
 #define STP_DIRECT_CALL static STP_DIRECT_KEEP
 
 /* floor(n / d) for d >= 1: shift-and-subtract over the quotient's bits
- * (no library call, no table: setup code only, never per pixel). */
+ * (no table; on AVR the C library's division, the same loop: setup code
+ * only, never per pixel). */
 uint32_t stp_direct_udiv(uint32_t n, uint32_t d);
 
 #endif

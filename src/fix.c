@@ -52,11 +52,31 @@ stp_fix stp_fix_div(stp_fix a, stp_fix b)
     return stp_fix_sat64(((int64_t)a * STP_FIX_ONE) / b);
 }
 
+uint16_t stp_isqrt32(uint32_t v)
+{
+    /* as stp_isqrt64 below, in 32-bit words: 16 steps */
+    uint32_t root = 0, bit = (uint32_t)1 << 30;
+    while (bit > v)
+        bit >>= 2;
+    while (bit != 0) {
+        if (v >= root + bit) {
+            v -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    return (uint16_t)root;
+}
+
 uint32_t stp_isqrt64(uint64_t v)
 {
     /* Digit-by-digit (restoring) square root: exact floor, 32 steps, only
      * shifts, adds and compares, so it costs the same on every core. */
     uint64_t root = 0, bit = (uint64_t)1 << 62;
+    if (v <= 0xFFFFFFFFu)
+        return stp_isqrt32((uint32_t)v);
     while (bit > v)
         bit >>= 2;
     while (bit != 0) {

@@ -12,6 +12,11 @@
 /* floor(sqrt(v)) for any 64-bit unsigned v (exact in both sqrt modes). */
 uint32_t stp_isqrt64(uint64_t v);
 
+/* floor(sqrt(v)) for a 32-bit v: the same digit-by-digit root in 32-bit
+ * words (stp_isqrt64 takes it for v < 2^32), for cores where 64-bit
+ * arithmetic is a library call. */
+uint16_t stp_isqrt32(uint32_t v);
+
 /* Clamp a to [lo, hi]. */
 static inline stp_fix stp_fix_clamp(stp_fix a, stp_fix lo, stp_fix hi)
 {

@@ -1249,6 +1249,130 @@ STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
     return share;
 }
 
+#if STP_SHADE_COMPACT
+/* ---- the compact route (STP_SHADE_COMPACT, include/stipple/config.h) ----
+ * A face without the highlight, in 16-bit directions:
+ *   w      a - b scaled by 2^-n (floor), the largest |w_i| in [2^14, 2^15]:
+ *          int16; halved first when either point is big (as dir_make)
+ *   q      sum of w_i^2 <= 3 2^30 (uint32); |w| = floor(sqrt(q)) in
+ *          [2^14, 2^15 sqrt(3)) (stp_isqrt32)
+ *   N.w    int32: |N.w| <= |N||w| < 2^14 (1 + 2^-13) 2^15.8 < 2^29.8
+ *   cosine N.L in Q16 as floor(4 N.w / |w|) (4 N.w < 2^32), |N| taken as 1
+ *   U      |w| 2^n raw units, then C + U, 1/(C + U) and the product with
+ *          BRIGHT P_j |R| in stp_sf16 as the main route
+ * Errors: w's truncation turns the direction by at most sqrt(3) 2^-14
+ * radian, the root and the cosine's floor add 2^-14 and 2^-16, |N| = 1 +-
+ * 2^-13 a relative 2^-13: the shade's error is about 2.5e-4 times the gain
+ * BRIGHT P_j |R| / (C + U) where that exceeds 1, tested in
+ * tests/shade_fast (test_shade_fast_compact). */
+#define NO_DIR (-128)
+
+/* Component i of a - b, halved first when big */
+STP_INDEX_INLINE int32_t diff_comp(const stp_vec3 *a, const stp_vec3 *b, int i, int big)
+{
+    return big ? stp_asr32(vec_comp(a, i), 1) - stp_asr32(vec_comp(b, i), 1) : vec_comp(a, i) - vec_comp(b, i);
+}
+
+/* w = (a - b) 2^-n as above; returns n (with the halving: the raw length
+ * is |w| 2^n), NO_DIR when a = b.  Each difference is formed twice (no
+ * copy of the vector kept across the bit count). */
+static int compact_dir(int16_t w[3], const stp_vec3 *a, const stp_vec3 *b, int big)
+{
+    uint32_t any = 0;
+    int i, n;
+    for (i = 0; i < 3; i++)
+        any |= stp_abs32(diff_comp(a, b, i, big));
+    if (any == 0)
+        return NO_DIR;
+    n = stp_bit_length32(any) - 15; /* |v_i| < 2^(15 + n) */
+    for (i = 0; i < 3; i++) {
+        int32_t v = diff_comp(a, b, i, big);
+        w[i] = (int16_t)(n > 0 ? stp_asr32(v, n) : (int32_t)((uint32_t)v << -n));
+    }
+    return n + big;
+}
+
+/* 1/a for a != 0 as sf_recip, its mantissa floor(2^31 / a.m) exactly:
+ * one division, no table */
+static stp_sf16 compact_recip(stp_sf16 a)
+{
+    stp_sf16 r;
+    r.m = 0x80000000u / a.m;
+    r.e = 31 - a.e;
+    if (r.m > 0xFFFFu) { /* a.m = 2^15 exactly */
+        r.m >>= 1;
+        r.e--;
+    }
+    return r;
+}
+
+/* N.w (|.| < 2^29.8) */
+static int32_t compact_dot(const int16_t n[3], const int16_t w[3])
+{
+    return (int32_t)n[0] * w[0] + (int32_t)n[1] * w[1] + (int32_t)n[2] * w[2];
+}
+
+/* Light j's diffuse share in Q26, as light_share's: 0 behind the face
+ * (near: face_body's, no point big) */
+static int32_t compact_share(const stp_shade_fast *s, int j, const int16_t normal[3], stp_vec3 point,
+                             int point_big, int near)
+{
+    int16_t w[3];
+    uint32_t cos_q16, len;
+    int32_t share;
+    stp_sf16 g;
+    int i, n = compact_dir(w, &s->light[j], &point, near ? 0 : s->light_big[j] | point_big);
+    if (n != NO_DIR) {
+        int32_t dot = compact_dot(normal, w);
+        uint32_t q = 0;
+        if (dot <= 0)
+            return 0;
+        for (i = 0; i < 3; i++)
+            q += (uint32_t)((int32_t)w[i] * w[i]);
+        len = stp_isqrt32(q);
+        cos_q16 = ((uint32_t)dot << 2) / len;
+        g = compact_recip(sf_add(s->attenuation_c, sf_make(len, -n)));
+    } else {
+        cos_q16 = (uint32_t)1 << 16; /* the light on the face: lit head-on, U = 0 */
+        g = compact_recip(s->attenuation_c);
+    }
+    share = share_times(cos_q16, 16, sf_mul(g, s->power_refl[j]));
+    return s->refl_negative ? -share : share;
+}
+
+/* The face on the compact route (face_body's, without the highlight) */
+STP_FACE_BODY stp_fix face_compact(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point,
+                                   int point_big, int near)
+{
+    int32_t sum = s->ambient;
+    int j, lit = 0;
+    if (s->count == 0)
+        return s->ambient_shade;
+    if (s->parallel) {
+        if (dot_n(normal, &s->e) <= 0)
+            return s->ambient_shade;
+    } else {
+        int16_t w[3];
+        if (compact_dir(w, &s->eye, &point, near ? 0 : s->eye_big | point_big) == NO_DIR ||
+            compact_dot(normal, w) <= 0)
+            return s->ambient_shade; /* a back face, edge-on, or the eye on it */
+    }
+    for (j = 0; j < s->count; j++) {
+        int32_t share = compact_share(s, j, normal, point, point_big, near);
+        if (share > 0) {
+            lit = 1;
+            sum += share;
+            if (sum >= SUM_ONE)
+                return ONE;
+        }
+    }
+    return shade_of_sum(s, lit, sum);
+}
+
+/* The faces the compact route shades: every face without the highlight */
+#define FACE_COMPACT(s) (!STP_WITH_SPECULAR || !(s)->specular)
+#endif
+
 /* The 32-bit targets' face, for both entries: near 1 (point_big 0) for
  * stp_shade_fast_face_near (perspective, no highlight, the eye, the
  * lights and the point within [-2^30, 2^30): the tests below that only
@@ -1273,6 +1397,10 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
     int32_t n_dot_e = 0;
     stp_sf16 inv_ne = {0, 0};
     uint32_t inv_ne_q26 = 0;
+#if STP_SHADE_COMPACT
+    if (FACE_COMPACT(s))
+        return face_compact(s, normal, point, point_big, near);
+#endif
     if (s->count == 0)
         return s->ambient_shade;
     /* does the face face the eye?  e: the direction towards it (e_local
@@ -1349,6 +1477,10 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
 {
     if (!s->wide_ready)
         return face_narrow(s, normal, point);
+#if STP_SHADE_COMPACT
+    if (FACE_COMPACT(s))
+        return face_narrow(s, normal, point); /* the compact route, on the 32-bit path's fields */
+#endif
 #if STP_WITH_SPECULAR
     if (s->exact_always && s->count != 0)
         return s->exact(s, normal, point); /* set with wide_ready */

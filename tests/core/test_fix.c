@@ -245,6 +245,30 @@ static void test_isqrt64_is_exact_floor(void **state)
     }
 }
 
+/* The 32-bit root (stp_shade_fast's compact route, and stp_isqrt64 below
+ * 2^32): at every square k^2 and k^2 - 1 (all k < 2^16), the top of the
+ * range and random values, floor(sqrt(v)) by r^2 <= v < (r + 1)^2. */
+static void test_isqrt32_is_exact_floor(void **state)
+{
+    uint32_t k;
+    int i;
+    (void)state;
+    for (k = 0; k < 0x10000u; k++) {
+        uint32_t sq = k * k;
+        assert_int_equal(stp_isqrt32(sq), k);
+        if (k > 0)
+            assert_int_equal(stp_isqrt32(sq - 1u), k - 1u);
+    }
+    assert_int_equal(stp_isqrt32(0xFFFFFFFFu), 0xFFFFu);
+    prng_seed(5);
+    for (i = 0; i < 4 * CASES; i++) {
+        uint32_t v = (uint32_t)(prng_next() >> (32 + prng_below(32)));
+        uint64_t r = stp_isqrt32(v);
+        if (!(r * r <= v && (r + 1) * (r + 1) > v))
+            fail_msg("isqrt32(%lu) = %lu", (unsigned long)v, (unsigned long)r);
+    }
+}
+
 static void test_sqrt_is_floor_of_root(void **state)
 {
     int i;
@@ -807,6 +831,7 @@ int main(void)
         cmocka_unit_test(test_div_truncates_toward_zero),
         cmocka_unit_test(test_div_by_zero_and_overflow_saturate),
         cmocka_unit_test(test_isqrt64_is_exact_floor),
+        cmocka_unit_test(test_isqrt32_is_exact_floor),
         cmocka_unit_test(test_sqrt_is_floor_of_root),
         cmocka_unit_test(test_sqrt_of_negative_and_extremes),
         cmocka_unit_test(test_sqrt_wide_is_floor_and_saturates),

@@ -6,13 +6,17 @@
  * span playback, which shade ambient + diffuse with one light: the
  * specular term is compiled out, which takes 8 KB of flash off an AVR
  * image, and the face shader keeps one light (124 bytes of flash and 143
- * of stack off the Uno's SpinningCube).  A sketch using the full renderer
- * with specular surfaces or several lights sets them back here.
+ * of stack off the Uno's SpinningCube), on the face shader's compact
+ * route (16-bit directions, one division: 1 288 bytes off the Uno's
+ * SpinningCube; error against the double reference within 5e-4 below a
+ * light gain of 20, include/stipple/config.h).  A sketch using the full
+ * renderer with specular surfaces or several lights sets them back here.
  */
 #ifndef STIPPLE_ARDUINO_CONFIG_H
 #define STIPPLE_ARDUINO_CONFIG_H
 
 #define STP_WITH_SPECULAR 0
 #define STP_MAX_LIGHTS 1
+#define STP_SHADE_COMPACT 1
 
 #endif
