@@ -187,10 +187,10 @@ STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const int16_t m[3]
     return p->z >= view->hither && project_point(view, p);
 }
 
-/* Component i (0: x, 1: y, 2: z) of p's view position, for the loop
- * below over the three components (with STP_LEAN_CODE a third of the
- * code of three written out) */
-STP_DIRECT_CALL int32_t view_comp(const stp_direct_point *p, int i)
+/* Component i (0: x, 1: y, 2: z) of p's view position: third's one
+ * body serves the three components (with STP_LEAN_CODE one call, a third
+ * of the code of three inlined copies; elsewhere folded per component) */
+STP_INDEX_INLINE int32_t view_comp(const stp_direct_point *p, int i)
 {
     return i == 0 ? p->x : (i == 1 ? p->y : p->z);
 }
