@@ -158,13 +158,16 @@ static stp_fix accurate(const scene *sc, const int16_t n[3], stp_vec3 point)
     return stp_shade_unit(&sc->fl, &sc->fm, un, point, ue, ne < 0 ? 0 : ne);
 }
 
-#if STP_SHADE_COMPACT
-/* The compact route's bound (include/stipple/config.h): its cosine's
- * error, about 2e-5, times the largest gain BRIGHT P_j |R| / (C + U_j) of
- * the face's lights; TOL where the gain is below 20.  Measured: 4.4e-4 at
- * gain 20, 2.2e-3 at gain 200 (the stiff cases). */
-#define COMPACT_TOL_PER_GAIN 2.5e-5
-static double compact_tol(const scene *sc, stp_vec3 point)
+#if !STP_WITH_SPECULAR
+/* Without the highlight there is no exact route to take over where the
+ * light's gain BRIGHT P_j |R| / (C + U_j) is large (with it, prepare sends
+ * every face of a gain above 16 there), so the 32-bit routes' cosine
+ * error, about 1.5e-5 on the main route and 1.1e-5 on the compact one,
+ * is multiplied by the gain: TOL up to a gain of 20, 2.5e-5 times the
+ * gain above (measured at gain 200: 3.1e-3 main, 2.2e-3 compact; the
+ * host's 64-bit route 6.2e-6). */
+#define NO_EXACT_TOL_PER_GAIN 2.5e-5
+static double gain_tol(const scene *sc, stp_vec3 point)
 {
     double gain = 0;
     int j;
@@ -174,7 +177,7 @@ static double compact_tol(const scene *sc, stp_vec3 point)
                    (sc->rl.c + sqrt(ref_dot(d, d)));
         gain = fmax(gain, g);
     }
-    return COMPACT_TOL_PER_GAIN * gain;
+    return NO_EXACT_TOL_PER_GAIN * gain;
 }
 #endif
 
@@ -207,8 +210,8 @@ static double check(const scene *sc, const int16_t n[3], ref_vec3 rn, stp_vec3 p
         if (err > st->worst)
             st->worst = err;
     }
-#if STP_SHADE_COMPACT
-    tol = fmax(tol, compact_tol(sc, point));
+#if !STP_WITH_SPECULAR
+    tol = fmax(tol, gain_tol(sc, point));
 #endif
     if (err / tol > st->worst_ratio)
         st->worst_ratio = err / tol;
