@@ -8,7 +8,9 @@
 # rendered by the command stands in for the user's photo).  Then each
 # output is checked: teapot.png a 128x64 1-bit PNG, the text 40 lines of 80
 # characters, photo-1bit.png a 1-bit PNG of the photo's size, cube.pbm a raw
-# PBM, spin.gif a GIF of 36 frames.
+# PBM, spin.gif a GIF of 36 frames.  Also the API's size the README states
+# ("The C API is N public functions in H headers") against
+# scripts/api_count.sh.
 # Usage: test_readme_cli.sh SOURCE_DIR STIPPLE
 set -u
 src=$1 stipple=$2
@@ -26,6 +28,14 @@ ln -s "$stipple" "$work/build-demo/tools/stipple"
 cp "$src/tests/data/scenes/cube.obj" "$work/tests/data/scenes/"
 "$stipple" scene teapot --size 4 -o "$work/out/teapot.nff" || fail "stipple scene teapot"
 "$stipple" render "$work/out/teapot.nff" -s 160x120 -o "$work/photo.png" || fail "the stand-in photo"
+# the API's size as the README states it, against the count
+api=$(sh "$src/scripts/api_count.sh" "$src" | tail -n 1) || fail "scripts/api_count.sh"
+case $api in
+    *" public functions in "*" headers") ;;
+    *) fail "scripts/api_count.sh printed no total: $api" ;;
+esac
+tr -s ' \n' '  ' <"$src/README.md" | grep -qF "API is $api" ||
+    fail "README.md does not say \"The C API is $api\""
 (cd "$work" && PATH=/usr/bin:/bin bash -e cli.sh >"$work/stdout" 2>"$work/stderr") ||
     { cat "$work/stderr"; fail "the README's examples do not run as written"; }
 
