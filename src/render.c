@@ -8,6 +8,7 @@
 #include "shade_private.h"
 #include "clip_private.h"
 #include "recip_private.h"
+#include "edge_walk_private.h" /* stp_slope_q16_short, stp_floor16 */
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -78,6 +79,7 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     r->levels = 16;
     r->fill_style = 16;
     r->backface_removal = 0;
+    r->pixel_cull = 0;
     r->current_style = -1;
     r->current_line_style = -1;
     r->colour = 0;
@@ -281,6 +283,14 @@ int stp_renderer_set_transparency(stp_renderer *r, stp_fix t_min, stp_fix t_max,
 #endif
 }
 
+int stp_renderer_set_pixel_cull(stp_renderer *r, int on)
+{
+    if (r == 0)
+        return STP_ERR_ARG;
+    r->pixel_cull = on != 0;
+    return STP_OK;
+}
+
 int stp_renderer_set_backface_removal(stp_renderer *r, int on)
 {
     if (r == 0)
@@ -351,6 +361,7 @@ static int open_segment(stp_renderer *r, int id)
     r->segments[i].used = 1;
     r->segments[i].open = 1;
     r->segments[i].visible = 1;
+    r->segments[i].pixel_culled = 0;
     r->segments[i].id = id;
     r->segments[i].start = r->segments[i].end = r->used;
     r->open_segment = i;
@@ -617,9 +628,13 @@ static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
 
 static int check_open(stp_renderer *r)
 {
+    int status;
     if (r == 0)
         return STP_ERR_ARG;
-    return r->open_segment < 0 ? open_implicit_segment(r) : STP_OK;
+    status = r->open_segment < 0 ? open_implicit_segment(r) : STP_OK;
+    if (status == STP_OK && r->pixel_cull)
+        r->segments[r->open_segment].pixel_culled = 1; /* no edge AA (render.h) */
+    return status;
 }
 
 int stp_render_check_open(stp_renderer *r)
@@ -630,6 +645,49 @@ int stp_render_check_open(stp_renderer *r)
 void stp_render_project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
 {
     project(r, p, out);
+}
+
+/* The crossing of row centre yc by the edge (xa, ya) - (xb, yb) (ya <= yc
+ * < yb, coordinates below 2^14) as the rasters form it: floor((xa 2^16 +
+ * (yc - ya) q) / 2^16), q = stp_slope_q16_short (|q| < 2^30).  The sum is
+ * within (-2^20, 2^30 + 2^20) (raster.c's tri_edge_start), so its value
+ * modulo 2^32 in unsigned arithmetic is its two's complement. */
+static int32_t row_crossing(const int32_t *a, const int32_t *b, int32_t yc)
+{
+    int32_t q = stp_slope_q16_short(b[0] - a[0], b[1] - a[1]);
+    uint32_t acc = (uint32_t)a[0] * 65536u + (uint32_t)(yc - a[1]) * (uint32_t)q;
+    int32_t value = acc < 0x80000000u ? (int32_t)acc : -(int32_t)~acc - 1;
+    return stp_asr32(value, 16);
+}
+
+int stp_render_centre_rows(const int32_t v[6])
+{
+    const int32_t *top = &v[0], *mid = &v[2], *bot = &v[4], *swap;
+    int32_t row, last;
+    /* sorted by y as raster.c's tri_sort sorts (ties keep their order) */
+    if (mid[1] < top[1])
+        swap = top, top = mid, mid = swap;
+    if (bot[1] < mid[1]) {
+        swap = mid, mid = bot, bot = swap;
+        if (mid[1] < top[1])
+            swap = top, top = mid, mid = swap;
+    }
+    if (bot[1] >> 14)
+        return 1; /* not narrow (the caller tested x): kept */
+    /* rows whose centre lies in [top, bottom) */
+    row = stp_floor16(top[1] + STP_HALF_PIXEL - 1);
+    last = stp_floor16(bot[1] + STP_HALF_PIXEL - 1) - 1;
+    if (last - row >= STP_CENTRE_TEST_MAX)
+        return 1; /* more rows than the callers test: kept */
+    for (; row <= last; row++) {
+        int32_t yc = row * 16 + STP_HALF_PIXEL, x_long = row_crossing(top, bot, yc);
+        int32_t x_short = yc < mid[1] ? row_crossing(top, mid, yc) : row_crossing(mid, bot, yc);
+        int32_t lo = x_long < x_short ? x_long : x_short, hi = x_long < x_short ? x_short : x_long;
+        /* a pixel centre 16 p + 8 in [lo, hi), width aside */
+        if (stp_floor16(lo + STP_HALF_PIXEL - 1) < stp_floor16(hi + STP_HALF_PIXEL - 1))
+            return 1;
+    }
+    return 0;
 }
 
 /* ---- the face stage (render_private.h): shared with mesh.c ---- */
@@ -1436,8 +1494,13 @@ static int enter_model_face(stp_renderer *r, const stp_vec3 *vertices, stp_entry
         /* as stp_renderer_mesh: a triangle between two row centres draws
          * nothing, so it is left out before it is shaded */
         project_entered(r, e->n, projected);
-        if (!stp_render_rows_spanned(projected[0].y, projected[1].y, projected[2].y))
+        int32_t rows = stp_render_row_count(projected[0].y, projected[1].y, projected[2].y);
+        if (rows == 0)
             return STP_OK;
+        if (r->pixel_cull && rows <= STP_CENTRE_TEST_MAX &&
+            !stp_render_centre_reached(projected[0].x, projected[0].y, projected[1].x, projected[1].y,
+                                       projected[2].x, projected[2].y))
+            return STP_OK; /* no pixel centre in its spans: nothing drawn */
         e->projected = projected;
     }
     stp_render_view_normal(f, n, side, nv);
