@@ -166,32 +166,33 @@ STP_HOT_INLINE int32_t stp_render_row_count(int32_t a, int32_t b, int32_t c)
            (int32_t)((uint32_t)(lo + below_centre) >> STP_SUBPIXEL_BITS);
 }
 
-/* Whether a flat triangle with device vertices (x0, y0), (x1, y1), (x2, y2) (Q27.4, >= 0;
- * spanning 1..STP_CENTRE_TEST_MAX row centres: stp_render_row_count) may give a pixel to one
- * of its rows' spans; 0 only when neither raster (raster.c's draw_triangle
- * and draw_polygon) draws a pixel of it, in any mode but edge
- * anti-aliasing (which also draws pixels near the crossings of a row whose
- * span is empty: so callers drop triangles only under
- * stp_renderer_set_pixel_cull, render.h, and such a render refuses a
- * display file entered so).  Both rasters draw on row r (centre yc = 16 r
- * + 8 in [ymin, ymax)) the pixel centres c with x_left <= c < x_right, the
- * two crossings of the edges covering yc (stp_edge_setup: ya <= yc < yb,
- * a the upper end), each floor(xa + (yc - ya) q / 2^16) with q = 2^16 (xb
- * - xa) / (yb - ya) truncated toward zero (a stepped row's accumulator
- * holds the same value).  That lies between xa and the exact crossing, so
- * within [xmin, xmax], and a drawn centre lies in [xmin, xmax): none there
- * (the inline test) and the triangle draws nothing.  Otherwise
- * stp_render_centre_rows forms those crossings as the rasters do, for
- * triangles of at most STP_CENTRE_TEST_MAX pixel centres in [xmin, xmax)
- * (callers test the rows) with every coordinate below 2^14 (others are
- * kept: 1; the bound keeps the test cheap where it rarely drops);
- * stp_render_centre_rows takes the six coordinates in that order. */
-#ifndef STP_CENTRE_TEST_MAX
+/* The triangles pixel culling tests by their crossings: at most this many
+ * row centres (the callers' test) and pixel centres across
+ * (stp_render_centre_reached's).  Measured on the benchmark tori (host,
+ * callgrind): larger ones rarely miss every centre, and testing them cost
+ * the 1000-triangle torus more than it saved. */
 #define STP_CENTRE_TEST_MAX 1
-#endif
-#ifndef STP_CENTRE_TEST_COLUMNS
 #define STP_CENTRE_TEST_COLUMNS 2
-#endif
+
+/* Whether a flat triangle with device vertices (x0, y0), (x1, y1), (x2,
+ * y2) (Q27.4, >= 0; spanning 1..STP_CENTRE_TEST_MAX row centres:
+ * stp_render_row_count) may give a pixel to one of its rows' spans; 0 only
+ * when neither raster (raster.c's draw_triangle and draw_polygon) draws a
+ * pixel of it, in any mode but edge anti-aliasing (which also draws pixels
+ * near the crossings of a row whose span is empty: so callers drop
+ * triangles only under stp_renderer_set_pixel_cull, render.h, and such a
+ * render refuses a display file entered so).  Both rasters draw on row r
+ * (centre yc = 16 r + 8 in [ymin, ymax)) the pixel centres c with x_left
+ * <= c < x_right, the two crossings of the edges covering yc
+ * (stp_edge_setup: ya <= yc < yb, a the upper end), each floor(xa + (yc -
+ * ya) q / 2^16) with q = 2^16 (xb - xa) / (yb - ya) truncated toward zero
+ * (a stepped row's accumulator holds the same value).  That lies between
+ * xa and the exact crossing, so within [xmin, xmax], and a drawn centre
+ * lies in [xmin, xmax): none there and the triangle draws nothing.
+ * Otherwise, for at most STP_CENTRE_TEST_COLUMNS centres there and every
+ * coordinate below 2^14, stp_render_centre_rows (render.c; the six
+ * coordinates in this order) forms those crossings as the rasters do;
+ * others are kept (1). */
 int stp_render_centre_rows(const int32_t v[6]);
 STP_HOT_INLINE int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2,
                                              int32_t y2)
