@@ -660,10 +660,21 @@ static int32_t row_crossing(const int32_t *a, const int32_t *b, int32_t yc)
     return stp_asr32(value, 16);
 }
 
-int stp_render_centre_rows(const int32_t v[6])
+int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2, int32_t y2)
 {
+    const int32_t v[6] = {x0, y0, x1, y1, x2, y2};
     const int32_t *top = &v[0], *mid = &v[2], *bot = &v[4], *swap;
-    int32_t row, last;
+    int32_t xlo = x0, xhi = x0, columns, row, last;
+    xlo = x1 < xlo ? x1 : xlo;
+    xhi = x1 > xhi ? x1 : xhi;
+    xlo = x2 < xlo ? x2 : xlo;
+    xhi = x2 > xhi ? x2 : xhi;
+    /* the pixel centres in [xmin, xmax) */
+    columns = stp_floor16(xhi + STP_HALF_PIXEL - 1) - stp_floor16(xlo + STP_HALF_PIXEL - 1);
+    if (columns == 0)
+        return 0; /* none: nothing drawn */
+    if (columns > STP_CENTRE_TEST_COLUMNS || (xhi >> 14) != 0)
+        return 1; /* wider, or not narrow: kept untested */
     /* sorted by y as raster.c's tri_sort sorts (ties keep their order) */
     if (mid[1] < top[1])
         swap = top, top = mid, mid = swap;
@@ -673,12 +684,12 @@ int stp_render_centre_rows(const int32_t v[6])
             swap = top, top = mid, mid = swap;
     }
     if (bot[1] >> 14)
-        return 1; /* not narrow (the caller tested x): kept */
+        return 1; /* not narrow: kept */
     /* rows whose centre lies in [top, bottom) */
     row = stp_floor16(top[1] + STP_HALF_PIXEL - 1);
     last = stp_floor16(bot[1] + STP_HALF_PIXEL - 1) - 1;
-    if (last - row >= STP_CENTRE_TEST_MAX)
-        return 1; /* more rows than the callers test: kept */
+    if ((last - row + 1) * columns > STP_CENTRE_TEST_COLUMNS)
+        return 1; /* more candidate centres than tested: kept */
     for (; row <= last; row++) {
         int32_t yc = row * 16 + STP_HALF_PIXEL, x_long = row_crossing(top, bot, yc);
         int32_t x_short = yc < mid[1] ? row_crossing(top, mid, yc) : row_crossing(mid, bot, yc);

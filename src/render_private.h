@@ -166,17 +166,17 @@ STP_HOT_INLINE int32_t stp_render_row_count(int32_t a, int32_t b, int32_t c)
            (int32_t)((uint32_t)(lo + below_centre) >> STP_SUBPIXEL_BITS);
 }
 
-/* The triangles pixel culling tests by their crossings: at most this many
- * row centres (the callers' test) and pixel centres across
- * (stp_render_centre_reached's).  Measured on the benchmark tori (host,
- * callgrind): larger ones rarely miss every centre, and testing them cost
- * the 1000-triangle torus more than it saved. */
+/* The triangles pixel culling tests by their crossings: at most
+ * STP_CENTRE_TEST_MAX row centres (the callers' test) and
+ * STP_CENTRE_TEST_COLUMNS candidate centres, pixel centres across times
+ * rows (stp_render_centre_reached's).  Measured on the benchmark tori
+ * (host, callgrind): larger ones rarely miss every centre, and testing
+ * them cost the 1000-triangle torus more than it saved. */
 #define STP_CENTRE_TEST_MAX 1
 #define STP_CENTRE_TEST_COLUMNS 2
 
 /* Whether a flat triangle with device vertices (x0, y0), (x1, y1), (x2,
- * y2) (Q27.4, >= 0; spanning 1..STP_CENTRE_TEST_MAX row centres:
- * stp_render_row_count) may give a pixel to one of its rows' spans; 0 only
+ * y2) (Q27.4, >= 0; spanning a row centre: stp_render_row_count) may give a pixel to one of its rows' spans; 0 only
  * when neither raster (raster.c's draw_triangle and draw_polygon) draws a
  * pixel of it, in any mode but edge anti-aliasing (which also draws pixels
  * near the crossings of a row whose span is empty: so callers drop
@@ -189,30 +189,12 @@ STP_HOT_INLINE int32_t stp_render_row_count(int32_t a, int32_t b, int32_t c)
  * (a stepped row's accumulator holds the same value).  That lies between
  * xa and the exact crossing, so within [xmin, xmax], and a drawn centre
  * lies in [xmin, xmax): none there and the triangle draws nothing.
- * Otherwise, for at most STP_CENTRE_TEST_COLUMNS centres there and every
- * coordinate below 2^14, stp_render_centre_rows (render.c; the six
- * coordinates in this order) forms those crossings as the rasters do;
- * others are kept (1). */
-int stp_render_centre_rows(const int32_t v[6]);
-STP_HOT_INLINE int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2,
-                                             int32_t y2)
-{
-    int32_t xlo = x0, xhi = x0, columns;
-    xlo = x1 < xlo ? x1 : xlo;
-    xhi = x1 > xhi ? x1 : xhi;
-    xlo = x2 < xlo ? x2 : xlo;
-    xhi = x2 > xhi ? x2 : xhi;
-    /* the pixel centres in [xmin, xmax) */
-    columns = ((xhi + 7) >> STP_SUBPIXEL_BITS) - ((xlo + 7) >> STP_SUBPIXEL_BITS);
-    if (columns == 0)
-        return 0; /* none */
-    if (columns > STP_CENTRE_TEST_COLUMNS || (xhi >> 14) != 0)
-        return 1; /* wider, or not narrow: kept untested */
-    {
-        const int32_t v[6] = {x0, y0, x1, y1, x2, y2};
-        return stp_render_centre_rows(v);
-    }
-}
+ * Otherwise, for at most STP_CENTRE_TEST_COLUMNS candidate centres (pixel
+ * centres there times rows) and every coordinate below 2^14, it forms
+ * those crossings as the rasters do; others are kept (1).  A call of its
+ * own (render.c), so that the callers' path without the cull stays as it
+ * is. */
+int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2, int32_t y2);
 
 /* The model normal n in view coordinates (Q1.14, rounded), turned to the
  * eye when side <= 0 (the other side of an open surface shows): each row
