@@ -652,18 +652,27 @@ void stp_render_project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
  * (yc - ya) q) / 2^16), q = stp_slope_q16_short (|q| < 2^30).  The sum is
  * within (-2^20, 2^30 + 2^20) (raster.c's tri_edge_start), so its value
  * modulo 2^32 in unsigned arithmetic is its two's complement. */
-static int32_t row_crossing(const int32_t *a, const int32_t *b, int32_t yc)
+static int32_t row_crossing(int32_t xa, int32_t ya, int32_t xb, int32_t yb, int32_t yc)
 {
-    int32_t q = stp_slope_q16_short(b[0] - a[0], b[1] - a[1]);
-    uint32_t acc = (uint32_t)a[0] * 65536u + (uint32_t)(yc - a[1]) * (uint32_t)q;
+    int32_t q = stp_slope_q16_short(xb - xa, yb - ya);
+    uint32_t acc = (uint32_t)xa * 65536u + (uint32_t)(yc - ya) * (uint32_t)q;
     int32_t value = acc < 0x80000000u ? (int32_t)acc : -(int32_t)~acc - 1;
     return stp_asr32(value, 16);
 }
 
+/* Swap two vertices (x, y). */
+#define SWAP_VERTEX(xa, ya, xb, yb)                                                                      \
+    do {                                                                                                 \
+        int32_t t_ = xa;                                                                                 \
+        xa = xb;                                                                                         \
+        xb = t_;                                                                                         \
+        t_ = ya;                                                                                         \
+        ya = yb;                                                                                         \
+        yb = t_;                                                                                         \
+    } while (0)
+
 int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2, int32_t y2)
 {
-    const int32_t v[6] = {x0, y0, x1, y1, x2, y2};
-    const int32_t *top = &v[0], *mid = &v[2], *bot = &v[4], *swap;
     int32_t xlo = x0, xhi = x0, columns, row, last;
     xlo = x1 < xlo ? x1 : xlo;
     xhi = x1 > xhi ? x1 : xhi;
@@ -675,24 +684,25 @@ int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, in
         return 0; /* none: nothing drawn */
     if (columns > STP_CENTRE_TEST_COLUMNS || (xhi >> 14) != 0)
         return 1; /* wider, or not narrow: kept untested */
-    /* sorted by y as raster.c's tri_sort sorts (ties keep their order) */
-    if (mid[1] < top[1])
-        swap = top, top = mid, mid = swap;
-    if (bot[1] < mid[1]) {
-        swap = mid, mid = bot, bot = swap;
-        if (mid[1] < top[1])
-            swap = top, top = mid, mid = swap;
+    /* sorted by y as raster.c's tri_sort sorts (ties keep their order):
+     * (x0, y0) top, (x1, y1) middle, (x2, y2) bottom */
+    if (y1 < y0)
+        SWAP_VERTEX(x0, y0, x1, y1);
+    if (y2 < y1) {
+        SWAP_VERTEX(x1, y1, x2, y2);
+        if (y1 < y0)
+            SWAP_VERTEX(x0, y0, x1, y1);
     }
-    if (bot[1] >> 14)
+    if (y2 >> 14)
         return 1; /* not narrow: kept */
     /* rows whose centre lies in [top, bottom) */
-    row = stp_floor16(top[1] + STP_HALF_PIXEL - 1);
-    last = stp_floor16(bot[1] + STP_HALF_PIXEL - 1) - 1;
+    row = stp_floor16(y0 + STP_HALF_PIXEL - 1);
+    last = stp_floor16(y2 + STP_HALF_PIXEL - 1) - 1;
     if ((last - row + 1) * columns > STP_CENTRE_TEST_COLUMNS)
         return 1; /* more candidate centres than tested: kept */
     for (; row <= last; row++) {
-        int32_t yc = row * 16 + STP_HALF_PIXEL, x_long = row_crossing(top, bot, yc);
-        int32_t x_short = yc < mid[1] ? row_crossing(top, mid, yc) : row_crossing(mid, bot, yc);
+        int32_t yc = row * 16 + STP_HALF_PIXEL, x_long = row_crossing(x0, y0, x2, y2, yc);
+        int32_t x_short = yc < y1 ? row_crossing(x0, y0, x1, y1, yc) : row_crossing(x1, y1, x2, y2, yc);
         int32_t lo = x_long < x_short ? x_long : x_short, hi = x_long < x_short ? x_short : x_long;
         /* a pixel centre 16 p + 8 in [lo, hi), width aside */
         if (stp_floor16(lo + STP_HALF_PIXEL - 1) < stp_floor16(hi + STP_HALF_PIXEL - 1))
@@ -700,6 +710,8 @@ int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, in
     }
     return 0;
 }
+
+#undef SWAP_VERTEX
 
 /* ---- the face stage (render_private.h): shared with mesh.c ---- */
 
