@@ -113,6 +113,14 @@
 #define STP_HOT_INLINE static inline
 #endif
 
+/* A condition the hot path expects false: its branch laid out of the way
+ * (the compiler's choice otherwise). */
+#if defined(__GNUC__)
+#define STP_UNLIKELY(c) __builtin_expect(!!(c), 0)
+#else
+#define STP_UNLIKELY(c) (c)
+#endif
+
 /* A function kept out of line (a cold route beside a hot one). */
 #if defined(__GNUC__)
 #define STP_NOINLINE static __attribute__((noinline))

@@ -37,6 +37,7 @@ typedef struct mesh_context {
                    and its view coordinates are below 2^29 in magnitude */
     stp_view_lens lens; /* the projection's constants (view.c) */
     const stp_shade_fast *shade; /* the face stage's shader (stp_render_face_shader) */
+    int32_t test_rows; /* rows of a triangle pixel culling (render.h) tests: STP_CENTRE_TEST_MAX, or 0 when off */
 } mesh_context;
 
 /* ---- normals, once ---- */
@@ -290,8 +291,7 @@ static int store_face(mesh_context *c, stp_mesh_vertex *const s[3], int style)
     put_vertex(&out[1], STP_OP_LINE, s[1]);
     put_vertex(&out[2], STP_OP_LINE, s[2]);
     used += 3;
-    r->used = used;
-    r->segments[r->open_segment].end = used;
+    r->used = used; /* the open segment's end: set once per call (stp_renderer_mesh) */
     return STP_OK;
 }
 
@@ -321,7 +321,7 @@ static int enter_face(mesh_context *c, uint16_t t)
     const int16_t *n = &c->mesh->normals[3 * (uint32_t)t];
     stp_mesh_vertex *s[3];
     int16_t nv[3];
-    int32_t code0, code1, code2, all, any;
+    int32_t code0, code1, code2, all, any, rows;
     stp_vec3 centre;
     int style, side = face_side(c, n, &c->mesh->vertices[k[0]]);
     r->last_shade = -1;
@@ -347,8 +347,12 @@ static int enter_face(mesh_context *c, uint16_t t)
         vertex_project(c, s[1]);
     if ((s[2]->state & PROJECTED) == 0)
         vertex_project(c, s[2]);
-    if (!stp_render_rows_spanned(s[0]->dy, s[1]->dy, s[2]->dy))
+    rows = stp_render_row_count(s[0]->dy, s[1]->dy, s[2]->dy);
+    if (rows == 0)
         return STP_OK; /* between two row centres: draws nothing */
+    if (STP_UNLIKELY(rows <= c->test_rows) &&
+        !stp_render_centre_reached(s[0]->dx, s[0]->dy, s[1]->dx, s[1]->dy, s[2]->dx, s[2]->dy))
+        return STP_OK; /* pixel culling: no pixel centre in its spans, draws nothing */
     stp_render_view_normal(c->frame, n, side, nv);
     centre.x = average3(c->inside, s[0]->view.x, s[1]->view.x, s[2]->view.x);
     centre.y = average3(c->inside, s[0]->view.y, s[1]->view.y, s[2]->view.y);
@@ -382,7 +386,7 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
                       size_t scratch_count)
 {
     mesh_context c;
-    uint16_t t, v;
+    uint16_t t, v, count;
     int status = check_mesh(r, mesh, scratch, scratch_count), fast;
     if (status != STP_OK)
         return status;
@@ -395,16 +399,26 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
     c.scratch = scratch;
     fast = fast_state(r, mesh) && prepare_call(&c);
     c.shade = fast && r->shading ? stp_render_face_shader(r) : 0;
+    c.test_rows = r->pixel_cull ? STP_CENTRE_TEST_MAX : 0;
 #if !STP_WITH_MESH_FALLBACK
     if (!fast)
         return STP_ERR_UNSUPPORTED;
 #endif
     for (v = 0; v < mesh->vertex_count; v++)
         scratch[v].state = STATE_NEW;
-    for (t = 0; t < mesh->triangle_count; t++) {
-        status = fast ? enter_face(&c, t) : enter_fallback(&c, t);
-        if (status != STP_OK)
-            return status;
+    count = mesh->triangle_count; /* once: the stores below may alias the mesh */
+    /* one loop per route: no choice per triangle */
+    if (fast) {
+        for (t = 0; t < count; t++)
+            if ((status = enter_face(&c, t)) != STP_OK)
+                break;
+    } else {
+        for (t = 0; t < count; t++)
+            if ((status = enter_fallback(&c, t)) != STP_OK)
+                break;
     }
-    return STP_OK;
+    /* the open segment ends where the display file does (store_face
+     * leaves this to here) */
+    r->segments[r->open_segment].end = r->used;
+    return status;
 }

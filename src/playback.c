@@ -113,6 +113,7 @@ stp_renderer *stp_playback_create(void *mem, size_t mem_size, const stp_instr *d
     r->segments[0].used = 1;
     r->segments[0].open = 0;
     r->segments[0].visible = 1;
+    r->segments[0].pixel_culled = 0; /* unknown here (render.h) */
     r->segments[0].id = 1;
     r->segments[0].start = 0;
     r->segments[0].end = used;

@@ -1702,6 +1702,20 @@ static int render_args_ok(const stp_renderer *r, const stp_port *port, const stp
            port->height == r->height;
 }
 
+#if STP_WITH_EDGE_AA
+/* Whether a visible segment holds polygons entered with pixel culling on
+ * (stp_renderer_set_pixel_cull): its slivers are gone, which edge
+ * anti-aliasing would draw. */
+static int pixel_culled(const stp_renderer *r)
+{
+    int s;
+    for (s = 0; s < STP_MAX_SEGMENTS; s++)
+        if (r->segments[s].used && r->segments[s].visible && r->segments[s].pixel_culled)
+            return 1;
+    return 0;
+}
+#endif
+
 /* The port the bands are drawn for: port itself, or a GREY8 copy of a
  * MONO1 port in *grey when the output diffuses errors or anti-aliases
  * edges (the band is thresholded at flush).  STP_OK or the error. */
@@ -1971,6 +1985,10 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
     }
     if (!render_args_ok(r, port, mem))
         return STP_ERR_ARG;
+#if STP_WITH_EDGE_AA
+    if (output->edge_aa && pixel_culled(r))
+        return STP_ERR_UNSUPPORTED; /* render.h: stp_renderer_set_pixel_cull */
+#endif
     if ((status = render_drawn_port(&fr, port, output, &grey_port, &drawn)) != STP_OK)
         return status;
     fr.stride = stp_row_bytes(drawn->format, port->width);

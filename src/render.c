@@ -8,6 +8,7 @@
 #include "shade_private.h"
 #include "clip_private.h"
 #include "recip_private.h"
+#include "edge_walk_private.h" /* stp_slope_q16_short, stp_floor16 */
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -78,6 +79,7 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     r->levels = 16;
     r->fill_style = 16;
     r->backface_removal = 0;
+    r->pixel_cull = 0;
     r->current_style = -1;
     r->current_line_style = -1;
     r->colour = 0;
@@ -281,6 +283,14 @@ int stp_renderer_set_transparency(stp_renderer *r, stp_fix t_min, stp_fix t_max,
 #endif
 }
 
+int stp_renderer_set_pixel_cull(stp_renderer *r, int on)
+{
+    if (r == 0)
+        return STP_ERR_ARG;
+    r->pixel_cull = on != 0;
+    return STP_OK;
+}
+
 int stp_renderer_set_backface_removal(stp_renderer *r, int on)
 {
     if (r == 0)
@@ -351,6 +361,7 @@ static int open_segment(stp_renderer *r, int id)
     r->segments[i].used = 1;
     r->segments[i].open = 1;
     r->segments[i].visible = 1;
+    r->segments[i].pixel_culled = 0;
     r->segments[i].id = id;
     r->segments[i].start = r->segments[i].end = r->used;
     r->open_segment = i;
@@ -617,9 +628,13 @@ static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
 
 static int check_open(stp_renderer *r)
 {
+    int status;
     if (r == 0)
         return STP_ERR_ARG;
-    return r->open_segment < 0 ? open_implicit_segment(r) : STP_OK;
+    status = r->open_segment < 0 ? open_implicit_segment(r) : STP_OK;
+    if (status == STP_OK && r->pixel_cull)
+        r->segments[r->open_segment].pixel_culled = 1; /* no edge AA (render.h) */
+    return status;
 }
 
 int stp_render_check_open(stp_renderer *r)
@@ -631,6 +646,72 @@ void stp_render_project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
 {
     project(r, p, out);
 }
+
+/* The crossing of row centre yc by the edge (xa, ya) - (xb, yb) (ya <= yc
+ * < yb, coordinates below 2^14) as the rasters form it: floor((xa 2^16 +
+ * (yc - ya) q) / 2^16), q = stp_slope_q16_short (|q| < 2^30).  The sum is
+ * within (-2^20, 2^30 + 2^20) (raster.c's tri_edge_start), so its value
+ * modulo 2^32 in unsigned arithmetic is its two's complement. */
+static int32_t row_crossing(int32_t xa, int32_t ya, int32_t xb, int32_t yb, int32_t yc)
+{
+    int32_t q = stp_slope_q16_short(xb - xa, yb - ya);
+    uint32_t acc = (uint32_t)xa * 65536u + (uint32_t)(yc - ya) * (uint32_t)q;
+    int32_t value = acc < 0x80000000u ? (int32_t)acc : -(int32_t)~acc - 1;
+    return stp_asr32(value, 16);
+}
+
+/* Swap two vertices (x, y). */
+#define SWAP_VERTEX(xa, ya, xb, yb)                                                                      \
+    do {                                                                                                 \
+        int32_t t_ = xa;                                                                                 \
+        xa = xb;                                                                                         \
+        xb = t_;                                                                                         \
+        t_ = ya;                                                                                         \
+        ya = yb;                                                                                         \
+        yb = t_;                                                                                         \
+    } while (0)
+
+int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2, int32_t y2)
+{
+    int32_t xlo = x0, xhi = x0, columns, row, last;
+    xlo = x1 < xlo ? x1 : xlo;
+    xhi = x1 > xhi ? x1 : xhi;
+    xlo = x2 < xlo ? x2 : xlo;
+    xhi = x2 > xhi ? x2 : xhi;
+    /* the pixel centres in [xmin, xmax) */
+    columns = stp_floor16(xhi + STP_HALF_PIXEL - 1) - stp_floor16(xlo + STP_HALF_PIXEL - 1);
+    if (columns == 0)
+        return 0; /* none: nothing drawn */
+    if (columns > STP_CENTRE_TEST_COLUMNS || (xhi >> 14) != 0)
+        return 1; /* wider, or not narrow: kept untested */
+    /* sorted by y as raster.c's tri_sort sorts (ties keep their order):
+     * (x0, y0) top, (x1, y1) middle, (x2, y2) bottom */
+    if (y1 < y0)
+        SWAP_VERTEX(x0, y0, x1, y1);
+    if (y2 < y1) {
+        SWAP_VERTEX(x1, y1, x2, y2);
+        if (y1 < y0)
+            SWAP_VERTEX(x0, y0, x1, y1);
+    }
+    if (y2 >> 14)
+        return 1; /* not narrow: kept */
+    /* rows whose centre lies in [top, bottom) */
+    row = stp_floor16(y0 + STP_HALF_PIXEL - 1);
+    last = stp_floor16(y2 + STP_HALF_PIXEL - 1) - 1;
+    if ((last - row + 1) * columns > STP_CENTRE_TEST_COLUMNS)
+        return 1; /* more candidate centres than tested: kept */
+    for (; row <= last; row++) {
+        int32_t yc = row * 16 + STP_HALF_PIXEL, x_long = row_crossing(x0, y0, x2, y2, yc);
+        int32_t x_short = yc < y1 ? row_crossing(x0, y0, x1, y1, yc) : row_crossing(x1, y1, x2, y2, yc);
+        int32_t lo = x_long < x_short ? x_long : x_short, hi = x_long < x_short ? x_short : x_long;
+        /* a pixel centre 16 p + 8 in [lo, hi), width aside */
+        if (stp_floor16(lo + STP_HALF_PIXEL - 1) < stp_floor16(hi + STP_HALF_PIXEL - 1))
+            return 1;
+    }
+    return 0;
+}
+
+#undef SWAP_VERTEX
 
 /* ---- the face stage (render_private.h): shared with mesh.c ---- */
 
@@ -1436,8 +1517,13 @@ static int enter_model_face(stp_renderer *r, const stp_vec3 *vertices, stp_entry
         /* as stp_renderer_mesh: a triangle between two row centres draws
          * nothing, so it is left out before it is shaded */
         project_entered(r, e->n, projected);
-        if (!stp_render_rows_spanned(projected[0].y, projected[1].y, projected[2].y))
+        int32_t rows = stp_render_row_count(projected[0].y, projected[1].y, projected[2].y);
+        if (rows == 0)
             return STP_OK;
+        if (r->pixel_cull && rows <= STP_CENTRE_TEST_MAX &&
+            !stp_render_centre_reached(projected[0].x, projected[0].y, projected[1].x, projected[1].y,
+                                       projected[2].x, projected[2].y))
+            return STP_OK; /* no pixel centre in its spans: nothing drawn */
         e->projected = projected;
     }
     stp_render_view_normal(f, n, side, nv);

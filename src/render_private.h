@@ -148,13 +148,13 @@ static inline int stp_render_certain_side(const stp_model_frame *f, const int64_
     return dot > 0 ? 1 : -1;
 }
 
-/* Whether a triangle with device y coordinates a, b, c (Q27.4, >= 0: the
- * projection clamps them into the picture) spans a row centre 16 r + 8 in
+/* How many row centres 16 r + 8 a triangle with device y coordinates a,
+ * b, c (Q27.4, >= 0: the projection clamps them into the picture) spans in
  * [min, max): the rasters (raster.c's row_below and the polygon edges)
  * draw exactly those rows, so a triangle spanning none draws no pixel in
  * any mode, edge AA included (it works on the rows drawn).  Both entries
  * leave such a triangle out before shading it. */
-STP_HOT_INLINE int stp_render_rows_spanned(int32_t a, int32_t b, int32_t c)
+STP_HOT_INLINE int32_t stp_render_row_count(int32_t a, int32_t b, int32_t c)
 {
     int32_t lo = a < b ? a : b, hi = a < b ? b : a;
     if (c < lo)
@@ -162,9 +162,39 @@ STP_HOT_INLINE int stp_render_rows_spanned(int32_t a, int32_t b, int32_t c)
     if (c > hi)
         hi = c;
     const int32_t below_centre = (1 << (STP_SUBPIXEL_BITS - 1)) - 1;
-    return ((uint32_t)(lo + below_centre) >> STP_SUBPIXEL_BITS) !=
-           ((uint32_t)(hi + below_centre) >> STP_SUBPIXEL_BITS);
+    return (int32_t)((uint32_t)(hi + below_centre) >> STP_SUBPIXEL_BITS) -
+           (int32_t)((uint32_t)(lo + below_centre) >> STP_SUBPIXEL_BITS);
 }
+
+/* The triangles pixel culling tests by their crossings: at most
+ * STP_CENTRE_TEST_MAX row centres (the callers' test) and
+ * STP_CENTRE_TEST_COLUMNS candidate centres, pixel centres across times
+ * rows (stp_render_centre_reached's).  Measured on the benchmark tori
+ * (host, callgrind): larger ones rarely miss every centre, and testing
+ * them cost the 1000-triangle torus more than it saved. */
+#define STP_CENTRE_TEST_MAX 1
+#define STP_CENTRE_TEST_COLUMNS 2
+
+/* Whether a flat triangle with device vertices (x0, y0), (x1, y1), (x2,
+ * y2) (Q27.4, >= 0; spanning a row centre: stp_render_row_count) may give a pixel to one of its rows' spans; 0 only
+ * when neither raster (raster.c's draw_triangle and draw_polygon) draws a
+ * pixel of it, in any mode but edge anti-aliasing (which also draws pixels
+ * near the crossings of a row whose span is empty: so callers drop
+ * triangles only under stp_renderer_set_pixel_cull, render.h, and such a
+ * render refuses a display file entered so).  Both rasters draw on row r
+ * (centre yc = 16 r + 8 in [ymin, ymax)) the pixel centres c with x_left
+ * <= c < x_right, the two crossings of the edges covering yc
+ * (stp_edge_setup: ya <= yc < yb, a the upper end), each floor(xa + (yc -
+ * ya) q / 2^16) with q = 2^16 (xb - xa) / (yb - ya) truncated toward zero
+ * (a stepped row's accumulator holds the same value).  That lies between
+ * xa and the exact crossing, so within [xmin, xmax], and a drawn centre
+ * lies in [xmin, xmax): none there and the triangle draws nothing.
+ * Otherwise, for at most STP_CENTRE_TEST_COLUMNS candidate centres (pixel
+ * centres there times rows) and every coordinate below 2^14, it forms
+ * those crossings as the rasters do; others are kept (1).  A call of its
+ * own (render.c), so that the callers' path without the cull stays as it
+ * is. */
+int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2, int32_t y2);
 
 /* The model normal n in view coordinates (Q1.14, rounded), turned to the
  * eye when side <= 0 (the other side of an open surface shows): each row

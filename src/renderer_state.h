@@ -20,6 +20,8 @@ typedef struct stp_segment {
     int32_t id;
     uint32_t start, end; /* display-file entries [start, end) */
     uint8_t used, open, visible;
+    uint8_t pixel_culled; /* polygons entered with pixel culling on
+                             (stp_renderer_set_pixel_cull): no edge AA */
 } stp_segment;
 
 /* One edge of a polygon being scan-converted, oriented top to bottom
@@ -122,6 +124,9 @@ struct stp_renderer {
     stp_lighting segment_lighting; /* COPY-LIGHT of the open segment (view) */
     stp_material material;
     int shading, backface_removal;
+    /* stp_renderer_set_pixel_cull: triangles reaching no pixel centre are
+     * left out at entry (stp_render_centre_reached) */
+    int pixel_cull;
     int current_style;      /* polygon style last entered in the open segment, -1 none */
     int current_line_style; /* line style likewise */
     int colour;             /* colour shading on */

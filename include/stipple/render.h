@@ -253,6 +253,19 @@ int stp_renderer_set_levels(stp_renderer *r, int levels);
  * NULL r. */
 int stp_renderer_set_backface_removal(stp_renderer *r, int on);
 
+/* Pixel culling on (non-zero) or off (0, default) for the polygons entered
+ * from now on: a flat triangle (stp_renderer_polygon, stp_renderer_mesh)
+ * inside the view whose row spans hold no pixel centre, so that it draws
+ * no pixel, is left out of the display file before it is shaded (a
+ * 100 000-triangle mesh at 400x240 has tens of thousands of them).  The
+ * pictures stay the same in every output but edge anti-aliasing, which
+ * also draws partial pixels along such slivers: stp_renderer_render
+ * refuses (STP_ERR_UNSUPPORTED) an output with edge_aa set while a visible
+ * segment holds polygons entered with pixel culling on (a display file
+ * played back elsewhere, playback.h, carries no such mark).  STP_ERR_ARG
+ * for a NULL r. */
+int stp_renderer_set_pixel_cull(stp_renderer *r, int on);
+
 /* --- segments (the display file's grouping)
  *
  * Drawing (stp_renderer_polygon, stp_renderer_move, ...) with no open segment opens an
@@ -531,7 +544,9 @@ int stp_frame_memory_split(stp_frame_memory *memory, const stp_renderer *r, cons
  * renderer's.  output NULL: stp_output_default's.  Errors: STP_ERR_ARG,
  * STP_ERR_MEMORY (a buffer too small, a setup array given with fewer than
  * stp_renderer_polygon_count() entries),
- * STP_ERR_UNSUPPORTED (a hidden-surface method compiled out), STP_ERR_PORT. */
+ * STP_ERR_UNSUPPORTED (a hidden-surface method compiled out; edge_aa of a
+ * display file entered with pixel culling, stp_renderer_set_pixel_cull),
+ * STP_ERR_PORT. */
 int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *output,
                const stp_frame_memory *memory);
 

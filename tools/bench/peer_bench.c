@@ -7,7 +7,7 @@
  * (--toggle-collect=torus_frame or peer_s3l_frame: only the frames).
  *
  * usage: peer_bench [--renderer stipple|small3dlib] [--size WxH] [--spin]
- *                   [--fine AROUNDxTUBE] [--frames N] [--pbm FILE]
+ *                   [--fine AROUNDxTUBE] [--frames N] [--pbm FILE] [--keep-slivers]
  *   --renderer    who draws (default stipple)
  *   --size WxH    frame size (default 128x64; small3dlib: at most 640x480)
  *   --spin        a new pose each frame, as torus_bench --spin: tilt 20
@@ -17,6 +17,8 @@
  *                 parts of at most 65 535 triangles (torus_bench_use_fine_mesh)
  *   --frames N    frames drawn (default 20)
  *   --pbm FILE    write the last frame (binary PBM)
+ *   --keep-slivers  stipple without pixel culling (stp_renderer_set_pixel_cull,
+ *                 on by default here: no edge anti-aliasing; the same frame)
  * Prints "RENDERER WxH TRIANGLES N frames".  Exit status 3: small3dlib
  * asked for but not built in.
  */
@@ -28,14 +30,14 @@
 #include "torus.h"
 
 typedef struct options {
-    int small3dlib, width, height, spin, around, tube, frames;
+    int small3dlib, width, height, spin, around, tube, frames, keep_slivers;
     const char *pbm;
 } options;
 
 static int usage(void)
 {
     fprintf(stderr, "usage: peer_bench [--renderer stipple|small3dlib] [--size WxH] [--spin] "
-                    "[--fine AROUNDxTUBE] [--frames N] [--pbm FILE]\n");
+                    "[--fine AROUNDxTUBE] [--frames N] [--pbm FILE] [--keep-slivers]\n");
     return 2;
 }
 
@@ -50,6 +52,10 @@ static int parse(int argc, char **argv, options *o)
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : 0;
         if (!strcmp(a, "--spin")) {
             o->spin = 1;
+            continue;
+        }
+        if (!strcmp(a, "--keep-slivers")) {
+            o->keep_slivers = 1;
             continue;
         }
         if (!v)
@@ -150,6 +156,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "peer_bench: %dx%d: %s\n", o.width, o.height, err);
         return 1;
     }
+    if (!o.keep_slivers)
+        (void)stp_renderer_set_pixel_cull(b.r, 1);
     if (o.small3dlib) {
         peer_view v;
         view_of(&b.scene, &v);

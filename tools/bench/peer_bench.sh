@@ -7,7 +7,9 @@
 # counted), at 128x64, 400x240 and 640x480, still and spinning, and a
 # 100 000-triangle torus at 400x240; a table with the ratio
 # stipple / small3dlib.  gcc -O2, the same workload as torus_bench.sh
-# --mesh (see tools/bench/torus.h and peer_s3l.h).
+# --mesh (see tools/bench/torus.h and peer_s3l.h), stipple with pixel
+# culling on (stp_renderer_set_pixel_cull: the same frames, no edge
+# anti-aliasing; peer_bench --keep-slivers turns it off).
 #
 # usage: peer_bench.sh [--peer-small3dlib DIR] [--peer-zbuffer 1|2] [--frames N] [--quick] BUILD_DIR
 #   BUILD_DIR   a build folder of its own (created if missing), configured
