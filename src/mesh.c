@@ -351,8 +351,12 @@ static int enter_face(mesh_context *c, uint16_t t)
     if (rows == 0)
         return STP_OK; /* between two row centres: draws nothing */
     if (STP_UNLIKELY(rows <= c->test_rows) &&
-        !stp_render_centre_reached(s[0]->dx, s[0]->dy, s[1]->dx, s[1]->dy, s[2]->dx, s[2]->dy))
-        return STP_OK; /* pixel culling: no pixel centre in its spans, draws nothing */
+        !stp_render_centre_reached(s[0]->dx, s[0]->dy, s[1]->dx, s[1]->dy, s[2]->dx, s[2]->dy)) {
+        /* pixel culling: no pixel centre in its spans, draws nothing; the
+         * segment has lost a sliver edge AA would draw (render.h) */
+        r->segments[r->open_segment].pixel_culled = 1;
+        return STP_OK;
+    }
     stp_render_view_normal(c->frame, n, side, nv);
     centre.x = average3(c->inside, s[0]->view.x, s[1]->view.x, s[2]->view.x);
     centre.y = average3(c->inside, s[0]->view.y, s[1]->view.y, s[2]->view.y);

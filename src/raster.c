@@ -1703,9 +1703,8 @@ static int render_args_ok(const stp_renderer *r, const stp_port *port, const stp
 }
 
 #if STP_WITH_EDGE_AA
-/* Whether a visible segment holds polygons entered with pixel culling on
- * (stp_renderer_set_pixel_cull): its slivers are gone, which edge
- * anti-aliasing would draw. */
+/* Whether pixel culling (stp_renderer_set_pixel_cull) dropped a triangle
+ * of a visible segment: a sliver edge anti-aliasing would draw. */
 static int pixel_culled(const stp_renderer *r)
 {
     int s;

@@ -628,13 +628,9 @@ static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
 
 static int check_open(stp_renderer *r)
 {
-    int status;
     if (r == 0)
         return STP_ERR_ARG;
-    status = r->open_segment < 0 ? open_implicit_segment(r) : STP_OK;
-    if (status == STP_OK && r->pixel_cull)
-        r->segments[r->open_segment].pixel_culled = 1; /* no edge AA (render.h) */
-    return status;
+    return r->open_segment < 0 ? open_implicit_segment(r) : STP_OK;
 }
 
 int stp_render_check_open(stp_renderer *r)
@@ -1522,8 +1518,12 @@ static int enter_model_face(stp_renderer *r, const stp_vec3 *vertices, stp_entry
             return STP_OK;
         if (r->pixel_cull && rows <= STP_CENTRE_TEST_MAX &&
             !stp_render_centre_reached(projected[0].x, projected[0].y, projected[1].x, projected[1].y,
-                                       projected[2].x, projected[2].y))
-            return STP_OK; /* no pixel centre in its spans: nothing drawn */
+                                       projected[2].x, projected[2].y)) {
+            /* no pixel centre in its spans: nothing drawn; the segment
+             * has lost a sliver edge AA would draw (render.h) */
+            r->segments[r->open_segment].pixel_culled = 1;
+            return STP_OK;
+        }
         e->projected = projected;
     }
     stp_render_view_normal(f, n, side, nv);

@@ -20,8 +20,8 @@ typedef struct stp_segment {
     int32_t id;
     uint32_t start, end; /* display-file entries [start, end) */
     uint8_t used, open, visible;
-    uint8_t pixel_culled; /* polygons entered with pixel culling on
-                             (stp_renderer_set_pixel_cull): no edge AA */
+    uint8_t pixel_culled; /* pixel culling (stp_renderer_set_pixel_cull)
+                             dropped a triangle of it: no edge AA */
 } stp_segment;
 
 /* One edge of a polygon being scan-converted, oriented top to bottom

@@ -261,9 +261,9 @@ int stp_renderer_set_backface_removal(stp_renderer *r, int on);
  * pictures stay the same in every output but edge anti-aliasing, which
  * also draws partial pixels along such slivers: stp_renderer_render
  * refuses (STP_ERR_UNSUPPORTED) an output with edge_aa set while a visible
- * segment holds polygons entered with pixel culling on (a display file
- * played back elsewhere, playback.h, carries no such mark).  STP_ERR_ARG
- * for a NULL r. */
+ * segment has lost a triangle to pixel culling (a display file played
+ * back elsewhere, playback.h, carries no such mark).  STP_ERR_ARG for a
+ * NULL r. */
 int stp_renderer_set_pixel_cull(stp_renderer *r, int on);
 
 /* --- segments (the display file's grouping)
@@ -545,7 +545,8 @@ int stp_frame_memory_split(stp_frame_memory *memory, const stp_renderer *r, cons
  * STP_ERR_MEMORY (a buffer too small, a setup array given with fewer than
  * stp_renderer_polygon_count() entries),
  * STP_ERR_UNSUPPORTED (a hidden-surface method compiled out; edge_aa of a
- * display file entered with pixel culling, stp_renderer_set_pixel_cull),
+ * display file that lost triangles to pixel culling,
+ * stp_renderer_set_pixel_cull),
  * STP_ERR_PORT. */
 int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *output,
                const stp_frame_memory *memory);

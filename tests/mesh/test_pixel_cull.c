@@ -12,8 +12,9 @@
  *     painter's sort, none; the benchmark torus both ways and the
  *     100 000-triangle torus), and both entries still give the same
  *     display file with it on;
- *   - a render with edge anti-aliasing of a display file entered with it is
- *     refused (STP_ERR_UNSUPPORTED), until that segment is gone.
+ *   - a render with edge anti-aliasing of a display file from which it
+ *     dropped a triangle is refused (STP_ERR_UNSUPPORTED), until that
+ *     segment is gone; one from which it dropped nothing is drawn.
  * Built against the host core (test_pixel_cull) and the 32-bit target
  * arithmetic (test_pixel_cull_narrow: stipple_core_m0plus_full).
  */
@@ -271,6 +272,27 @@ static void test_edge_aa_refused(void **state)
 #else
     assert_int_equal(torus_frame(&b), -1); /* edge AA compiled out */
 #endif
+    /* with it on, a segment from which it dropped nothing (one triangle
+     * across the picture) is not refused */
+    {
+        stp_vec3 big[3];
+        big[0] = b.vertices[0];
+        big[1].x = -STP_FIX_ONE;
+        big[1].y = -STP_FIX_ONE;
+        big[1].z = b.vertices[0].z;
+        big[2].x = STP_FIX_ONE;
+        big[2].y = -STP_FIX_ONE;
+        big[2].z = b.vertices[0].z;
+        assert_int_equal(stp_segment_delete(b.r, 1), STP_OK);
+        assert_int_equal(stp_renderer_set_pixel_cull(b.r, 1), STP_OK);
+        assert_int_equal(stp_segment_create(b.r, 2), STP_OK);
+        assert_int_equal(stp_renderer_polygon(b.r, big, 3), STP_OK);
+        assert_int_equal(stp_segment_close(b.r), STP_OK);
+        assert_true(stp_renderer_polygon_count(b.r) >= 1);
+#if STP_WITH_EDGE_AA
+        assert_int_equal(stp_renderer_render(b.r, &b.port, &b.output, &b.memory), STP_OK);
+#endif
+    }
     torus_bench_free(&b);
 }
 
