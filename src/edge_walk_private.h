@@ -152,6 +152,46 @@ static inline int32_t stp_slope_q16_short(int32_t num, int32_t den)
     return (num * (int32_t)65536) / den;
 }
 
+/* The vertices v[0..2] sorted by y, ties kept in their order: *top, *mid,
+ * *bot, the order the triangle raster (raster.c) walks them in, and
+ * pixel culling's test (render.c) with it. */
+STP_HOT_INLINE void stp_tri_sort(const stp_instr *v, const stp_instr **top, const stp_instr **mid,
+                                 const stp_instr **bot)
+{
+    const stp_instr *t = &v[0], *m = &v[1], *b = &v[2], *swap;
+    if (m->y < t->y) {
+        swap = t;
+        t = m;
+        m = swap;
+    }
+    if (b->y < m->y) {
+        swap = m;
+        m = b;
+        b = swap;
+        if (m->y < t->y) {
+            swap = t;
+            t = m;
+            m = swap;
+        }
+    }
+    *top = t;
+    *mid = m;
+    *bot = b;
+}
+
+/* Edge a - b (a the upper end, x below 2^14) at row centre yc (a->y <= yc
+ * < b->y): the crossing's accumulator xa 2^16 + (yc - ya) slope modulo
+ * 2^32, slope = stp_slope_q16_short(xb - xa, yb - ya) (|slope| <= 2^30)
+ * into *slope.  The value lies within (-2^20, 2^30 + 2^20) (a point of
+ * [xa, xb] less the slope's truncation, below one, times yc - ya), so the
+ * unsigned sum is its two's complement; its floor(/ 2^16) is the crossing
+ * both rasters draw from. */
+static inline uint32_t stp_edge_acc_short(const stp_instr *a, const stp_instr *b, int32_t yc, int32_t *slope)
+{
+    *slope = stp_slope_q16_short(b->x - a->x, b->y - a->y);
+    return (uint32_t)a->x * 65536u + (uint32_t)(yc - a->y) * (uint32_t)*slope;
+}
+
 /* The edge setup the polygon raster and the shadow maps share.
  * stp_edge_setup: edge (xa, ya) - (xb, yb) (Q27.4, |coordinates| < 2^20)
  * oriented top to bottom into *e; returns 0 for a horizontal edge (no row

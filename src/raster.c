@@ -967,8 +967,8 @@ static inline void tri_edge_start(tri_edge *e, const stp_instr *a, const stp_ins
     /* |xb - xa| < 2^14: the slope fits 32 bits (|slope| <= 2^30), and the
      * accumulator's value lies within int32 (above), so its sum taken
      * modulo 2^32 in unsigned arithmetic is its value's two's complement */
-    int32_t slope = stp_slope_q16_short(b->x - a->x, b->y - a->y);
-    e->acc = (uint32_t)a->x * 65536u + (uint32_t)(yc - a->y) * (uint32_t)slope;
+    int32_t slope;
+    e->acc = stp_edge_acc_short(a, b, yc, &slope);
     e->step = slope > -((int32_t)1 << 27) && slope < ((int32_t)1 << 27) ? (uint32_t)slope * 16u : 0u;
 #endif
 }
@@ -1020,30 +1020,6 @@ static int depth_terms_short(const depth_plane *pl, const stp_instr *v, int32_t 
     return depth_term_short(pl->ddx, x_hi - x_lo) && depth_term_short(pl->ddy, y_extent);
 }
 #endif
-
-/* The vertices v[0..2] sorted by y: *top, *mid, *bot. */
-STP_HOT_INLINE void tri_sort(const stp_instr *v, const stp_instr **top, const stp_instr **mid, const stp_instr **bot)
-{
-    const stp_instr *t = &v[0], *m = &v[1], *b = &v[2], *swap;
-    if (m->y < t->y) {
-        swap = t;
-        t = m;
-        m = swap;
-    }
-    if (b->y < m->y) {
-        swap = m;
-        m = b;
-        b = swap;
-        if (m->y < t->y) {
-            swap = t;
-            t = m;
-            m = swap;
-        }
-    }
-    *top = t;
-    *mid = m;
-    *bot = b;
-}
 
 /* The first row whose centre 16 r + 8 lies at or below y (Q27.4, y >= 0). */
 STP_HOT_INLINE int32_t row_below(int32_t y)
@@ -1159,7 +1135,7 @@ typedef struct tri_walk {
 STP_HOT_INLINE int tri_walk_start(const frame *fr, const stp_instr *v, tri_walk *w)
 {
     int32_t r_first;
-    tri_sort(v, &w->top, &w->mid, &w->bot);
+    stp_tri_sort(v, &w->top, &w->mid, &w->bot);
     if (w->bot->y <= fr->band_top || w->top->y >= fr->band_end)
         return 0; /* not in the band */
     /* rows whose centre lies in [top, bottom), in the band */

@@ -176,7 +176,8 @@ STP_HOT_INLINE int32_t stp_render_row_count(int32_t a, int32_t b, int32_t c)
 #define STP_CENTRE_TEST_COLUMNS 2
 
 /* Whether a flat triangle with device vertices (x0, y0), (x1, y1), (x2,
- * y2) (Q27.4, >= 0; spanning a row centre: stp_render_row_count) may give a pixel to one of its rows' spans; 0 only
+ * y2) (Q27.4, >= 0; spanning a row centre: stp_render_row_count) may give
+ * a pixel to one of its rows' spans; 0 only
  * when neither raster (raster.c's draw_triangle and draw_polygon) draws a
  * pixel of it, in any mode but edge anti-aliasing (which also draws pixels
  * near the crossings of a row whose span is empty: so callers drop
@@ -191,9 +192,10 @@ STP_HOT_INLINE int32_t stp_render_row_count(int32_t a, int32_t b, int32_t c)
  * lies in [xmin, xmax): none there and the triangle draws nothing.
  * Otherwise, for at most STP_CENTRE_TEST_COLUMNS candidate centres (pixel
  * centres there times rows) and every coordinate below 2^14, it forms
- * those crossings as the rasters do; others are kept (1).  A call of its
- * own (render.c), so that the callers' path without the cull stays as it
- * is. */
+ * those crossings as the rasters do (stp_tri_sort, stp_edge_acc_short:
+ * the triangle raster's own order and accumulator); others are kept (1).
+ * A call of its own (render.c), so that the callers' path without the cull
+ * stays as it is. */
 int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2, int32_t y2);
 
 /* The model normal n in view coordinates (Q1.14, rounded), turned to the

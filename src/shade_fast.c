@@ -192,17 +192,24 @@ static stp_sf16 sf_mul(stp_sf16 a, stp_sf16 b)
     return r;
 }
 
-/* 1/a for a != 0 */
-STP_HOT_INLINE stp_sf16 sf_recip(stp_sf16 a)
+/* 1/a for a != 0 from m = 2^31 / a.m, in (2^15, 2^16] (recip16's, or the
+ * compact route's exact quotient) */
+STP_HOT_INLINE stp_sf16 sf_recip_of(uint32_t m, stp_sf16 a)
 {
     stp_sf16 r;
-    r.m = recip16(a.m);
+    r.m = m;
     r.e = 31 - a.e;
     if (r.m > 0xFFFFu) { /* a.m = 2^15 exactly */
         r.m >>= 1;
         r.e--;
     }
     return r;
+}
+
+/* 1/a for a != 0 */
+STP_HOT_INLINE stp_sf16 sf_recip(stp_sf16 a)
+{
+    return sf_recip_of(recip16(a.m), a);
 }
 
 /* a with b's exponent difference d >= 0 (a >= b) aligned: b.m >> d */
@@ -284,6 +291,13 @@ STP_INDEX_INLINE int32_t vec_comp(const stp_vec3 *v, int i)
     return i == 0 ? v->x : (i == 1 ? v->y : v->z);
 }
 
+/* Component i of a - b, halved first when big (|a_i| or |b_i| beyond
+ * 2^30: the difference then fits int32) */
+STP_INDEX_INLINE int32_t diff_comp(const stp_vec3 *a, const stp_vec3 *b, int i, int big)
+{
+    return big ? stp_asr32(vec_comp(a, i), 1) - stp_asr32(vec_comp(b, i), 1) : vec_comp(a, i) - vec_comp(b, i);
+}
+
 /* a - b scaled to 16 bits (stp_shade_fast_dir) and, when need_r, its
  * 1/length; halved first when either has a component beyond 2^30 (big).
  * Returns 0 for a zero difference (d->w = 0 then). */
@@ -294,7 +308,7 @@ static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b,
     /* v = a - b in d->w, then scaled there in place (no copy on the stack) */
     STP_UNROLL3
     for (i = 0; i < 3; i++) {
-        int32_t v = big ? stp_asr32(vec_comp(a, i), 1) - stp_asr32(vec_comp(b, i), 1) : vec_comp(a, i) - vec_comp(b, i);
+        int32_t v = diff_comp(a, b, i, big);
         d->w[i] = v;
         any |= stp_abs32(v);
     }
@@ -1267,12 +1281,6 @@ STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
  * tests/shade_fast (test_shade_fast_compact). */
 #define NO_DIR (-128)
 
-/* Component i of a - b, halved first when big */
-STP_INDEX_INLINE int32_t diff_comp(const stp_vec3 *a, const stp_vec3 *b, int i, int big)
-{
-    return big ? stp_asr32(vec_comp(a, i), 1) - stp_asr32(vec_comp(b, i), 1) : vec_comp(a, i) - vec_comp(b, i);
-}
-
 /* w = (a - b) 2^-n as above; returns n (with the halving: the raw length
  * is |w| 2^n), NO_DIR when a = b.  Each difference is formed twice (no
  * copy of the vector kept across the bit count). */
@@ -1296,14 +1304,7 @@ static int compact_dir(int16_t w[3], const stp_vec3 *a, const stp_vec3 *b, int b
  * one division, no table */
 static stp_sf16 compact_recip(stp_sf16 a)
 {
-    stp_sf16 r;
-    r.m = 0x80000000u / a.m;
-    r.e = 31 - a.e;
-    if (r.m > 0xFFFFu) { /* a.m = 2^15 exactly */
-        r.m >>= 1;
-        r.e--;
-    }
-    return r;
+    return sf_recip_of(0x80000000u / a.m, a);
 }
 
 /* N.w (|.| < 2^29.8) */
