@@ -57,16 +57,30 @@ STP_DIRECT_CALL int32_t dot3(const int32_t v[3], const int16_t m[3])
     return s;
 }
 
-/* d = a - b; 0 when a component is not below 2^23 in magnitude. */
+/* 1 when |v| < 2^23 (COORD_LIMIT): one unsigned comparison */
+static int in_coord_range(int32_t v)
+{
+    return (uint32_t)v + (uint32_t)(COORD_LIMIT - 1) <= 2u * (uint32_t)(COORD_LIMIT - 1);
+}
+
+/* Component i of v (0: x, 1: y, 2: z), for loops over the three */
+STP_INDEX_INLINE int32_t coord(const stp_vec3 *v, int i)
+{
+    return i == 0 ? v->x : (i == 1 ? v->y : v->z);
+}
+
+/* d = a - b; 0 when a component's difference is not below 2^23 in
+ * magnitude, or wraps (the operands' signs differ and the difference's
+ * differs from a's) */
 STP_DIRECT_CALL int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
 {
     int j;
-    d[0] = a->x - b->x;
-    d[1] = a->y - b->y;
-    d[2] = a->z - b->z;
-    for (j = 0; j < 3; j++)
-        if (d[j] >= COORD_LIMIT || d[j] <= -COORD_LIMIT)
+    for (j = 0; j < 3; j++) {
+        uint32_t x = (uint32_t)coord(a, j), y = (uint32_t)coord(b, j), v = x - y;
+        if ((((x ^ y) & (x ^ v)) & 0x80000000u) != 0 || v + (uint32_t)(COORD_LIMIT - 1) > 2u * (uint32_t)(COORD_LIMIT - 1))
             return 0;
+        d[j] = (int32_t)(x - y);
+    }
     return 1;
 }
 
@@ -179,7 +193,7 @@ STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const int16_t m[3]
     w[1] = v->y;
     w[2] = v->z;
     for (i = 0; i < 3; i++)
-        if (w[i] >= COORD_LIMIT || w[i] <= -COORD_LIMIT)
+        if (!in_coord_range(w[i]))
             return 0;
     p->x = dot3(w, m[0]) + t[0];
     p->y = dot3(w, m[1]) + t[1];

@@ -702,6 +702,27 @@ static void test_bad_arguments(void **state)
     assert_int_equal(stp_direct_frame_project(&fr, &w->m.mesh, &far, &s.dview, &s.light, LEVELS, s.cell, w->pts,
                                               MAX_V, w->faces, MAX_T),
                      STP_ERR_RANGE);
+    /* the eye 5 units above -2^31 raw looking down z: a model 3 units in
+     * front is drawn; one near +2^31, whose difference from the eye wraps
+     * modulo 2^32 to 10 units in front, is refused (not drawn there) */
+    {
+        scene wrap = s;
+        stp_vec3 from = {0, 0, INT32_MIN + 5 * STP_FIX_ONE}, at = {0, 0, INT32_MIN}, up = {0, STP_FIX_ONE, 0};
+        assert_int_equal(stp_direct_view_look(&wrap.dview, from, at, up, fx(80), fx(0.1), W, H), STP_OK);
+        wrap.light.position = from;
+        wrap.light.position.x = -4 * STP_FIX_ONE;
+        wrap.light.position.z += 2 * STP_FIX_ONE;
+        far = s.pose;
+        far.translate = from;
+        far.translate.z -= 3 * STP_FIX_ONE;
+        assert_int_equal(stp_direct_frame_project(&fr, &w->m.mesh, &far, &wrap.dview, &wrap.light, LEVELS, s.cell,
+                                                  w->pts, MAX_V, w->faces, MAX_T),
+                         STP_OK);
+        far.translate.z = INT32_MAX - 5 * STP_FIX_ONE + 1; /* from.z - 10 units + 2^32 */
+        assert_int_equal(stp_direct_frame_project(&fr, &w->m.mesh, &far, &wrap.dview, &wrap.light, LEVELS, s.cell,
+                                                  w->pts, MAX_V, w->faces, MAX_T),
+                         STP_ERR_RANGE);
+    }
     assert_int_equal(stp_direct_view_look(&s.dview, s.view.from, s.view.from, s.view.up, fx(80), fx(0.1), W, H),
                      STP_ERR_VIEW);
     assert_int_equal(stp_direct_view_look(&s.dview, vec(0, 5, 0), vec(0, 0, 0), vec(0, 1, 0), fx(80), fx(0.1), W, H),

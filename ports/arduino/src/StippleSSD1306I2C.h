@@ -17,9 +17,11 @@
 #include "stipple/render.h"
 #include "stipple_sim.h"
 
-class StippleSSD1306I2C : public StippleSSD1306 {
+class StippleSSD1306I2C : public StippleSSD1306<StippleSSD1306I2C, 8> {
+    friend class StippleSSD1306<StippleSSD1306I2C, 8>;
+
 public:
-    StippleSSD1306I2C() : StippleSSD1306(band_, 8), address_(0x3C), count_(0) {}
+    StippleSSD1306I2C() : address_(0x3C), count_(0) {}
 
     /* Wire up, the panel initialised.  Returns STP_OK or STP_ERR_PORT (no
      * acknowledge). */
@@ -50,19 +52,31 @@ protected:
         return status;
     }
 
-    void dataStart() { count_ = 0; }
+    int pageStart(const uint8_t *address, uint8_t count)
+    {
+        count_ = 0;
+        return command(address, count);
+    }
 
+    /* bytes in transmissions of up to chunk data bytes each (Wire's
+     * buffer), count_ of the open one already written */
     int dataPut(const uint8_t *bytes, uint8_t count)
     {
         int status = 0;
         STIPPLE_SIM_BUS(1);
-        while (count-- && status == 0) {
+        while (count != 0 && status == 0) {
+            uint8_t n = (uint8_t)(chunk - count_);
+            if (n > count)
+                n = count;
             if (count_ == 0) {
                 Wire.beginTransmission(address_);
                 Wire.write(0x40); /* Co 0, D/C# 1: the rest are data */
             }
-            Wire.write(*bytes++);
-            if (++count_ == chunk) {
+            Wire.write(bytes, n);
+            bytes += n;
+            count = (uint8_t)(count - n);
+            count_ = (uint8_t)(count_ + n);
+            if (count_ == chunk) {
                 count_ = 0;
                 status = Wire.endTransmission() == 0 ? 0 : -1;
             }
@@ -86,7 +100,6 @@ protected:
     void reset(unsigned ms) { (void)ms; /* I2C modules tie RES# to a power-on reset */ }
 
 private:
-    uint8_t band_[8 * (width / 8)];
     uint8_t address_, count_;
 };
 

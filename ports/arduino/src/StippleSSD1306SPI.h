@@ -16,10 +16,12 @@
 #include "stipple/render.h"
 #include "stipple_sim.h"
 
-class StippleSSD1306SPI : public StippleSSD1306 {
+class StippleSSD1306SPI : public StippleSSD1306<StippleSSD1306SPI, 16> {
+    friend class StippleSSD1306<StippleSSD1306SPI, 16>;
+
 public:
     StippleSSD1306SPI(uint8_t cs_pin, uint8_t dc_pin, uint8_t reset_pin)
-        : StippleSSD1306(band_, 16), cs_(cs_pin), dc_(dc_pin), reset_(reset_pin)
+        : cs_(cs_pin), dc_(dc_pin), reset_(reset_pin)
     {
     }
 
@@ -45,8 +47,6 @@ protected:
         put(bytes, count);
         return dataEnd();
     }
-
-    void dataStart() { start(HIGH); }
 
     int dataPut(const uint8_t *bytes, uint8_t count)
     {
@@ -79,7 +79,6 @@ protected:
     }
 
 private:
-    uint8_t band_[16 * (width / 8)];
     uint8_t cs_, dc_, reset_;
     /* CS# and D/C#: on an AVR written as port bits (digitalWrite's table
      * lookups cost about 60 cycles a call, 6 calls a page: about 3 k cycles
