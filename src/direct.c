@@ -63,20 +63,15 @@ static int in_coord_range(int32_t v)
     return (uint32_t)v + (uint32_t)(COORD_LIMIT - 1) <= 2u * (uint32_t)(COORD_LIMIT - 1);
 }
 
-/* Component i of v (0: x, 1: y, 2: z), for loops over the three */
-STP_INDEX_INLINE int32_t coord(const stp_vec3 *v, int i)
-{
-    return i == 0 ? v->x : (i == 1 ? v->y : v->z);
-}
-
 /* d = a - b; 0 when a component's difference is not below 2^23 in
  * magnitude, or wraps (the operands' signs differ and the difference's
  * differs from a's) */
 STP_DIRECT_CALL int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
 {
     int j;
+    STP_UNROLL3
     for (j = 0; j < 3; j++) {
-        uint32_t x = (uint32_t)coord(a, j), y = (uint32_t)coord(b, j), v = x - y;
+        uint32_t x = (uint32_t)stp_vec3_comp(a, j), y = (uint32_t)stp_vec3_comp(b, j), v = x - y;
         if ((((x ^ y) & (x ^ v)) & 0x80000000u) != 0 || v + (uint32_t)(COORD_LIMIT - 1) > 2u * (uint32_t)(COORD_LIMIT - 1))
             return 0;
         d[j] = (int32_t)(x - y);
@@ -151,6 +146,7 @@ static int project_point(const stp_direct_view *view, stp_direct_point *pt)
 {
     stp_vec3 p;
     int32_t c[2];
+    int i;
     p.x = pt->x;
     p.y = pt->y;
     p.z = pt->z;
@@ -174,8 +170,11 @@ static int project_point(const stp_direct_view *view, stp_direct_point *pt)
 #endif
     c[0] = (int32_t)view->width * 8 + c[0];
     c[1] = (int32_t)view->height * 8 - c[1];
-    if (c[0] < -DEVICE_LIMIT || c[0] >= DEVICE_LIMIT || c[1] < -DEVICE_LIMIT || c[1] >= DEVICE_LIMIT)
-        return 0;
+    /* [-DEVICE_LIMIT, DEVICE_LIMIT): one unsigned comparison each */
+    STP_UNROLL3
+    for (i = 0; i < 2; i++)
+        if ((uint32_t)c[i] + DEVICE_LIMIT >= 2u * DEVICE_LIMIT)
+            return 0;
     pt->dx = (int16_t)c[0];
     pt->dy = (int16_t)c[1];
     return 1;
@@ -187,17 +186,20 @@ static int project_point(const stp_direct_view *view, stp_direct_point *pt)
 STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const int16_t m[3][3], const int32_t t[3],
                                  const stp_vec3 *v, stp_direct_point *p)
 {
-    int32_t w[3];
+    int32_t w[3], r[3];
     int i;
-    w[0] = v->x;
-    w[1] = v->y;
-    w[2] = v->z;
-    for (i = 0; i < 3; i++)
+    STP_UNROLL3
+    for (i = 0; i < 3; i++) {
+        w[i] = stp_vec3_comp(v, i);
         if (!in_coord_range(w[i]))
             return 0;
-    p->x = dot3(w, m[0]) + t[0];
-    p->y = dot3(w, m[1]) + t[1];
-    p->z = dot3(w, m[2]) + t[2];
+    }
+    STP_UNROLL3
+    for (i = 0; i < 3; i++)
+        r[i] = dot3(w, m[i]) + t[i];
+    p->x = r[0];
+    p->y = r[1];
+    p->z = r[2];
     return p->z >= view->hither && project_point(view, p);
 }
 

@@ -17,6 +17,15 @@ uint32_t stp_isqrt64(uint64_t v);
  * arithmetic is a library call. */
 uint16_t stp_isqrt32(uint32_t v);
 
+/* v's component i (0: x, 1: y, 2: z), for loops over the three
+ * components: with STP_LEAN_CODE (AVR -Os) a loop is a third of the code
+ * of three written out; elsewhere the loop is unrolled and the index
+ * folds away.  No copy of the vector on the stack. */
+STP_INDEX_INLINE int32_t stp_vec3_comp(const stp_vec3 *v, int i)
+{
+    return i == 0 ? v->x : (i == 1 ? v->y : v->z);
+}
+
 /* Clamp a to [lo, hi]. */
 static inline stp_fix stp_fix_clamp(stp_fix a, stp_fix lo, stp_fix hi)
 {

@@ -282,20 +282,11 @@ static int is_big(stp_vec3 a)
     return (((uint32_t)a.x + h) | ((uint32_t)a.y + h) | ((uint32_t)a.z + h)) >= 0x80000000u;
 }
 
-/* v's component i (0: x, 1: y, 2: z), for the loops below over the three
- * components: with STP_LEAN_CODE (AVR -Os) a loop is a third of the code
- * of three written out; elsewhere the loop is unrolled (STP_UNROLL3) and
- * the index folds away.  No copy of the vector on the stack. */
-STP_INDEX_INLINE int32_t vec_comp(const stp_vec3 *v, int i)
-{
-    return i == 0 ? v->x : (i == 1 ? v->y : v->z);
-}
-
 /* Component i of a - b, halved first when big (|a_i| or |b_i| beyond
  * 2^30: the difference then fits int32) */
 STP_INDEX_INLINE int32_t diff_comp(const stp_vec3 *a, const stp_vec3 *b, int i, int big)
 {
-    return big ? stp_asr32(vec_comp(a, i), 1) - stp_asr32(vec_comp(b, i), 1) : vec_comp(a, i) - vec_comp(b, i);
+    return big ? stp_asr32(stp_vec3_comp(a, i), 1) - stp_asr32(stp_vec3_comp(b, i), 1) : stp_vec3_comp(a, i) - stp_vec3_comp(b, i);
 }
 
 /* a - b scaled to 16 bits (stp_shade_fast_dir) and, when need_r, its
@@ -353,7 +344,7 @@ static int faces_point(const int16_t n[3], const stp_vec3 *a, const stp_vec3 *b)
     int i;
     STP_UNROLL3
     for (i = 0; i < 3; i++) {
-        int32_t v = vec_comp(a, i) - vec_comp(b, i);
+        int32_t v = stp_vec3_comp(a, i) - stp_vec3_comp(b, i);
         h += (int32_t)n[i] * stp_asr32(v, 16);
         l += (int32_t)n[i] * (int32_t)(((uint32_t)v & 0xFFFFu) >> 1);
         if (v & 1)
