@@ -1262,12 +1262,18 @@ STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
  *   q      sum of w_i^2 <= 3 2^30 (uint32); |w| = floor(sqrt(q)) in
  *          [2^14, 2^15 sqrt(3)) (stp_isqrt32)
  *   N.w    int32: |N.w| <= |N||w| < 2^14 (1 + 2^-13) 2^15.8 < 2^29.8
- *   cosine N.L in Q16 as floor(4 N.w / |w|) (4 N.w < 2^32), |N| taken as 1
- *   U      |w| 2^n raw units, then C + U, 1/(C + U) and the product with
- *          BRIGHT P_j |R| in stp_sf16 as the main route
+ *   cosine N.L in Q16 as floor(4 N.w / |w|) (4 N.w < 2^32), |N| taken as
+ *          1, at most 2^16 (|N| may exceed 1 by 2^-13)
+ *   U      |w| 2^n raw units, then S = C + U in stp_sf16 as the main route
+ *   share  cos BRIGHT P_j |R| / S in Q26 from one quotient:
+ *          floor(cos_q16 P.m / S.m) (cos_q16 P.m <= 2^16 (2^16 - 1) <
+ *          2^32; the quotient below 2^17) times 2^(10 + S.e - P.e),
+ *          saturated (share_of): no reciprocal, no product of two
+ *          stp_sf16
  * Errors: w's truncation turns the direction by at most sqrt(3) 2^-14
  * radian, the root and the cosine's floor add 2^-14 and 2^-16, |N| = 1 +-
- * 2^-13 a relative 2^-13: the shade's error is about 2.5e-4 times the gain
+ * 2^-13 a relative 2^-13, the quotient's floor 2^-15 of the share at a
+ * cosine of 1: the shade's error is about 2.5e-4 times the gain
  * BRIGHT P_j |R| / (C + U) where that exceeds 1, tested in
  * tests/shade_fast (test_shade_fast_compact). */
 #define NO_DIR (-128)
@@ -1291,13 +1297,6 @@ static int compact_dir(int16_t w[3], const stp_vec3 *a, const stp_vec3 *b, int b
     return n + big;
 }
 
-/* 1/a for a != 0 as sf_recip, its mantissa floor(2^31 / a.m) exactly:
- * one division, no table */
-static stp_sf16 compact_recip(stp_sf16 a)
-{
-    return sf_recip_of(0x80000000u / a.m, a);
-}
-
 /* N.w (|.| < 2^29.8) */
 static int32_t compact_dot(const int16_t n[3], const int16_t w[3])
 {
@@ -1312,7 +1311,7 @@ static int32_t compact_share(const stp_shade_fast *s, int j, const int16_t norma
     int16_t w[3];
     uint32_t cos_q16, len;
     int32_t share;
-    stp_sf16 g;
+    stp_sf16 sum; /* C + U */
     int i, n = compact_dir(w, &s->light[j], &point, near ? 0 : s->light_big[j] | point_big);
     if (n != NO_DIR) {
         int32_t dot = compact_dot(normal, w);
@@ -1323,12 +1322,14 @@ static int32_t compact_share(const stp_shade_fast *s, int j, const int16_t norma
             q += (uint32_t)((int32_t)w[i] * w[i]);
         len = stp_isqrt32(q);
         cos_q16 = ((uint32_t)dot << 2) / len;
-        g = compact_recip(sf_add(s->attenuation_c, sf_make(len, -n)));
+        if (cos_q16 > (uint32_t)1 << 16)
+            cos_q16 = (uint32_t)1 << 16;
+        sum = sf_add(s->attenuation_c, sf_make(len, -n));
     } else {
         cos_q16 = (uint32_t)1 << 16; /* the light on the face: lit head-on, U = 0 */
-        g = compact_recip(s->attenuation_c);
+        sum = s->attenuation_c;
     }
-    share = share_times(cos_q16, 16, sf_mul(g, s->power_refl[j]));
+    share = share_of(cos_q16 * s->power_refl[j].m / sum.m, 10 + sum.e - s->power_refl[j].e);
     return s->refl_negative ? -share : share;
 }
 
