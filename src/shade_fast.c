@@ -1311,7 +1311,7 @@ static int32_t compact_share(const stp_shade_fast *s, int j, const int16_t norma
     int16_t w[3];
     uint32_t cos_q16, len;
     int32_t share;
-    stp_sf16 sum; /* C + U */
+    stp_sf16 u, sum; /* U, C + U */
     int i, n = compact_dir(w, &s->light[j], &point, near ? 0 : s->light_big[j] | point_big);
     if (n != NO_DIR) {
         int32_t dot = compact_dot(normal, w);
@@ -1324,7 +1324,9 @@ static int32_t compact_share(const stp_shade_fast *s, int j, const int16_t norma
         cos_q16 = ((uint32_t)dot << 2) / len;
         if (cos_q16 > (uint32_t)1 << 16)
             cos_q16 = (uint32_t)1 << 16;
-        sum = sf_add(s->attenuation_c, sf_make(len, -n));
+        u.m = len < 0x8000u ? len << 1 : len; /* |w| in [2^14, 2^16): at most one shift */
+        u.e = len < 0x8000u ? 1 - n : -n;
+        sum = sf_add(s->attenuation_c, u);
     } else {
         cos_q16 = (uint32_t)1 << 16; /* the light on the face: lit head-on, U = 0 */
         sum = s->attenuation_c;
