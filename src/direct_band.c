@@ -85,8 +85,10 @@ STP_DIRECT_CALL int edge_make(band_edge *e, const stp_direct_point *a, const stp
 STP_DIRECT_CALL uint8_t pattern_of(const uint8_t *cell, int y, uint8_t intensity)
 {
     const uint8_t *t = &cell[(y & 3) * 4];
-    unsigned p = (unsigned)(intensity > t[0]) << 3 | (unsigned)(intensity > t[1]) << 2 |
-                 (unsigned)(intensity > t[2]) << 1 | (unsigned)(intensity > t[3]);
+    unsigned p = 0, x;
+    STP_UNROLL4
+    for (x = 0; x < 4; x++)
+        p = p << 1 | (unsigned)(intensity > t[x]);
     return (uint8_t)(p << 4 | p);
 }
 

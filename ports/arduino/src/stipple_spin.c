@@ -72,7 +72,7 @@ int stipple_spin_begin(stipple_spin *s, const stp_mesh *mesh, stp_direct_point *
     return STP_OK;
 }
 
-int stipple_spin_frame(stipple_spin *s, uint16_t n)
+__attribute__((noinline)) int stipple_spin_frame(stipple_spin *s, uint16_t n)
 {
     stp_direct_model pose;
     stp_vec3 origin = {0, 0, 0};
