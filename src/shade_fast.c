@@ -1300,7 +1300,12 @@ static int compact_dir(int16_t w[3], const stp_vec3 *a, const stp_vec3 *b, int b
 /* N.w (|.| < 2^29.8) */
 static int32_t compact_dot(const int16_t n[3], const int16_t w[3])
 {
-    return (int32_t)n[0] * w[0] + (int32_t)n[1] * w[1] + (int32_t)n[2] * w[2];
+    int32_t dot = 0;
+    int i;
+    STP_UNROLL3
+    for (i = 0; i < 3; i++)
+        dot += (int32_t)n[i] * w[i];
+    return dot;
 }
 
 /* Light j's diffuse share in Q26, as light_share's: 0 behind the face
@@ -1343,7 +1348,7 @@ STP_FACE_BODY stp_fix face_compact(const stp_shade_fast *s, const int16_t normal
     int j, lit = 0;
     if (s->count == 0)
         return s->ambient_shade;
-    if (s->parallel) {
+    if (!near && s->parallel) { /* near: perspective (stp_shade_fast_face_near) */
         if (dot_n(normal, &s->e) <= 0)
             return s->ambient_shade;
     } else {

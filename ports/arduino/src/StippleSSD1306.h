@@ -53,7 +53,12 @@ public:
         int status = STP_OK;
         if (frame.width != width || frame.height != height)
             return STP_ERR_ARG;
+        /* the copy's layout and size constants the compiler folds into
+         * the inlined band fill (the caller's frame could be written by
+         * the band's bytes as far as it knows) */
         pages.layout = STP_BAND_PAGES;
+        pages.width = width;
+        pages.height = height;
         for (y = 0; y < height && status == STP_OK; y = (uint8_t)(y + BandRows)) {
             status = stp_direct_draw_band(&pages, band_, width, y, BandRows);
             for (p = 0; p < BandRows / 8u && status == STP_OK; p++)
