@@ -21,7 +21,7 @@ class StippleSSD1306I2C : public StippleSSD1306<StippleSSD1306I2C, 8> {
     friend class StippleSSD1306<StippleSSD1306I2C, 8>;
 
 public:
-    StippleSSD1306I2C() : address_(0x3C), count_(0) {}
+    StippleSSD1306I2C() : address_(0x3C) {}
 
     /* Wire up, the panel initialised.  Returns STP_OK or STP_ERR_PORT (no
      * acknowledge). */
@@ -40,67 +40,39 @@ protected:
     static const uint8_t chunk = 16;
 #endif
 
-    int command(const uint8_t *bytes, uint8_t count)
-    {
-        int status;
-        STIPPLE_SIM_BUS(1);
-        Wire.beginTransmission(address_);
-        Wire.write(0x00); /* Co 0, D/C# 0: the rest are commands */
-        Wire.write(bytes, count);
-        status = Wire.endTransmission() == 0 ? 0 : -1;
-        STIPPLE_SIM_BUS(0);
-        return status;
-    }
-
-    int pageStart(const uint8_t *address, uint8_t count)
-    {
-        count_ = 0;
-        return command(address, count);
-    }
-
-    /* bytes in transmissions of up to chunk data bytes each (Wire's
-     * buffer), count_ of the open one already written */
-    int dataPut(const uint8_t *bytes, uint8_t count)
+    /* count bytes after the control byte (0x00: commands, 0x40: data;
+     * Co 0), in transmissions of up to chunk bytes each (Wire's buffer
+     * less the control byte): a page's 128 bytes as 31, 31, 31, 31 and 4;
+     * no state kept between calls */
+    int transmit(uint8_t control, const uint8_t *bytes, uint8_t count)
     {
         int status = 0;
         STIPPLE_SIM_BUS(1);
         while (count != 0 && status == 0) {
-            uint8_t n = (uint8_t)(chunk - count_);
-            if (n > count)
-                n = count;
-            if (count_ == 0) {
-                Wire.beginTransmission(address_);
-                Wire.write(0x40); /* Co 0, D/C# 1: the rest are data */
-            }
+            uint8_t n = count < chunk ? count : chunk;
+            Wire.beginTransmission(address_);
+            Wire.write(control);
             Wire.write(bytes, n);
+            status = Wire.endTransmission() == 0 ? 0 : -1;
             bytes += n;
             count = (uint8_t)(count - n);
-            count_ = (uint8_t)(count_ + n);
-            if (count_ == chunk) {
-                count_ = 0;
-                status = Wire.endTransmission() == 0 ? 0 : -1;
-            }
         }
         STIPPLE_SIM_BUS(0);
         return status;
     }
 
-    int dataEnd()
-    {
-        int status = 0;
-        if (count_ != 0) {
-            STIPPLE_SIM_BUS(1);
-            status = Wire.endTransmission() == 0 ? 0 : -1;
-            STIPPLE_SIM_BUS(0);
-            count_ = 0;
-        }
-        return status;
-    }
+    int command(const uint8_t *bytes, uint8_t count) { return transmit(0x00, bytes, count); }
+
+    int pageStart(const uint8_t *address, uint8_t count) { return command(address, count); }
+
+    int dataPut(const uint8_t *bytes, uint8_t count) { return transmit(0x40, bytes, count); }
+
+    int dataEnd() { return 0; }
 
     void reset(unsigned ms) { (void)ms; /* I2C modules tie RES# to a power-on reset */ }
 
 private:
-    uint8_t address_, count_;
+    uint8_t address_;
 };
 
 #endif
