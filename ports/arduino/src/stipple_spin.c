@@ -64,12 +64,19 @@ int stipple_spin_begin(stipple_spin *s, const stp_mesh *mesh, stp_direct_point *
 #endif
 #if defined(__AVR__)
     memcpy_P(&s->view, &spin_view, sizeof s->view);
-    memcpy_P(&s->light, &spin_light, sizeof s->light);
 #else
     s->view = spin_view;
-    s->light = spin_light;
 #endif
     return STP_OK;
+}
+
+void stipple_spin_light(stp_direct_light *light)
+{
+#if defined(__AVR__)
+    memcpy_P(light, &spin_light, sizeof *light);
+#else
+    *light = spin_light;
+#endif
 }
 
 __attribute__((noinline)) int stipple_spin_frame(stipple_spin *s, uint16_t n)
@@ -81,8 +88,11 @@ __attribute__((noinline)) int stipple_spin_frame(stipple_spin *s, uint16_t n)
     return stp_direct_frame_project_lit(&s->frame, s->mesh, &pose, &s->view, s->lit, 16, bayer4, s->points,
                                         s->mesh->vertex_count, s->faces, s->mesh->triangle_count);
 #else
-    return stp_direct_frame_project(&s->frame, s->mesh, &pose, &s->view, &s->light, 16, bayer4,
-                                    s->points, s->mesh->vertex_count, s->faces,
-                                    s->mesh->triangle_count);
+    {
+        stp_direct_light light;
+        stipple_spin_light(&light);
+        return stp_direct_frame_project(&s->frame, s->mesh, &pose, &s->view, &light, 16, bayer4, s->points,
+                                        s->mesh->vertex_count, s->faces, s->mesh->triangle_count);
+    }
 #endif
 }

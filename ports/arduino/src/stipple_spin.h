@@ -39,7 +39,6 @@ typedef struct stipple_spin {
     stp_direct_point *points;  /* mesh->vertex_count entries */
     uint16_t *faces;           /* mesh->triangle_count entries */
     stp_direct_view view;
-    stp_direct_light light;
     const stp_direct_lit *lit; /* the light prepared for the view, kept as
                                   data in the Arduino configuration; NULL
                                   elsewhere: prepared every frame */
@@ -57,6 +56,10 @@ typedef struct stipple_spin {
  * STP_ERR_ARG (a pointer NULL). */
 int stipple_spin_begin(stipple_spin *s, const stp_mesh *mesh, stp_direct_point *points,
                        uint16_t *faces);
+
+/* The light above into *light (the one stipple_spin_frame prepares where
+ * lit is NULL; the tests compare lit with it). */
+void stipple_spin_light(stp_direct_light *light);
 
 /* Frame n into s->frame (then drawn band by band by stp_direct_draw_band).
  * Returns STP_OK or the error of stp_direct_frame_project. */
