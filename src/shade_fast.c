@@ -1297,15 +1297,17 @@ static int compact_dir(int16_t w[3], const stp_vec3 *a, const stp_vec3 *b, int b
     return n + big;
 }
 
-/* N.w (|.| < 2^29.8) */
-static int32_t compact_dot(const int16_t n[3], const int16_t w[3])
+/* The sum of a_i b_i modulo 2^32 (each product below 2^30 in
+ * magnitude): N.w as int32 (|N.w| < 2^29.8) and |w|^2 as uint32 (below
+ * 3 2^30).  One copy for both (STP_SIZE_CALL). */
+STP_SIZE_CALL uint32_t compact_dot(const int16_t a[3], const int16_t b[3])
 {
-    int32_t dot = 0;
+    uint32_t sum = 0;
     int i;
     STP_UNROLL3
     for (i = 0; i < 3; i++)
-        dot += (int32_t)n[i] * w[i];
-    return dot;
+        sum += (uint32_t)((int32_t)a[i] * b[i]);
+    return sum;
 }
 
 /* Light j's diffuse share in Q26, as light_share's: 0 behind the face
@@ -1317,15 +1319,12 @@ static int32_t compact_share(const stp_shade_fast *s, int j, const int16_t norma
     uint32_t cos_q16, len;
     int32_t share;
     stp_sf16 u, sum; /* U, C + U */
-    int i, n = compact_dir(w, &s->light[j], &point, near ? 0 : s->light_big[j] | point_big);
+    int n = compact_dir(w, &s->light[j], &point, near ? 0 : s->light_big[j] | point_big);
     if (n != NO_DIR) {
-        int32_t dot = compact_dot(normal, w);
-        uint32_t q = 0;
+        int32_t dot = (int32_t)compact_dot(normal, w);
         if (dot <= 0)
             return 0;
-        for (i = 0; i < 3; i++)
-            q += (uint32_t)((int32_t)w[i] * w[i]);
-        len = stp_isqrt32(q);
+        len = stp_isqrt32(compact_dot(w, w));
         cos_q16 = ((uint32_t)dot << 2) / len;
         if (cos_q16 > (uint32_t)1 << 16)
             cos_q16 = (uint32_t)1 << 16;
@@ -1354,7 +1353,7 @@ STP_FACE_BODY stp_fix face_compact(const stp_shade_fast *s, const int16_t normal
     } else {
         int16_t w[3];
         if (compact_dir(w, &s->eye, &point, near ? 0 : s->eye_big | point_big) == NO_DIR ||
-            compact_dot(normal, w) <= 0)
+            (int32_t)compact_dot(normal, w) <= 0)
             return s->ambient_shade; /* a back face, edge-on, or the eye on it */
     }
     for (j = 0; j < s->count; j++) {
