@@ -8,7 +8,9 @@
 # with the host's picture made by REFERENCE (spin_reference MODEL: the same
 # frame drawn by the host core; or a `stipple render ...` command line).
 # Prints the builder's flash and RAM figures (and fails over the flash
-# budget STP_FLASH_BUDGET, bytes, when the environment sets it), the peak
+# budget STP_FLASH_BUDGET, bytes of the test's build, or
+# STP_FLASH_NET_BUDGET, bytes as the IDE builds the sketch net of an
+# empty sketch, when the environment sets them), the peak
 # RAM with the stack and the cycles of each frame with the bus left out (simavr's SPI takes
 # ~1600 cycles a byte, a real one 16 at f/2: add the real transfer time).
 #
@@ -117,6 +119,11 @@ echo "FIGURES $example $fqbn $bus: flash $flash B ($ide_flash B as the IDE build
 # figure the project has promised (docs/arduino.md), not a timing
 if [ -n "${STP_FLASH_BUDGET:-}" ] && [ "$flash" -gt "$STP_FLASH_BUDGET" ]; then
     echo "FAIL: $example ($fqbn) takes $flash B of flash, over its budget of $STP_FLASH_BUDGET B"
+    exit 1
+fi
+# the same net of an empty sketch, as the IDE builds it (STP_FLASH_NET_BUDGET)
+if [ -n "${STP_FLASH_NET_BUDGET:-}" ] && [ "$((ide_flash - empty_flash))" -gt "$STP_FLASH_NET_BUDGET" ]; then
+    echo "FAIL: $example ($fqbn) takes $((ide_flash - empty_flash)) B of flash net of an empty sketch, over its budget of $STP_FLASH_NET_BUDGET B"
     exit 1
 fi
 echo "PASS: $example ($fqbn, $bus) draws on the simulated panel what the host draws"
