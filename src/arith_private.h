@@ -293,6 +293,21 @@ STP_HOT_INLINE int stp_bit_length32(uint32_t v)
 {
 #if STP_HAVE_CLZ
     return v == 0 ? 0 : 32 - __builtin_clz(v);
+#elif STP_LEAN_CODE
+    /* a byte at a time (a move on an 8-bit core), then bit by bit: a
+     * quarter of the code of the table's form there */
+    int n = 32;
+    if (v == 0)
+        return 0;
+    while ((v & 0xFF000000u) == 0) {
+        v <<= 8;
+        n -= 8;
+    }
+    while ((v & 0x80000000u) == 0) {
+        v <<= 1;
+        n--;
+    }
+    return n;
 #else
     static const uint16_t len4[16] STP_TABLE = {0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4};
     int n = 0;
