@@ -126,7 +126,7 @@ static void draw_face(const stp_direct_frame *f, const stp_direct_point *p[3], u
         b = b < (int)f->width ? b : (int)f->width - 1;
         if (a <= b)
             stp_halftone_fill_bits(band + ((unsigned)(y - y_top) >> page_shift) * stride,
-                                   (uint8_t)(page_shift ? 1u << (y & 7) : 0u), (uint32_t)a, (uint32_t)b,
+                                   (uint8_t)(page_shift ? 1u << (y & 7) : 0u), (unsigned)a, (unsigned)b,
                                    pattern_of(f->cell, y, intensity));
     }
 }

@@ -14,7 +14,7 @@
  * bit page_bit from the pattern's bit 7 - (x mod 8), found by a mask that
  * walks right and wraps (no shift by a variable count per pixel: an 8-bit
  * core has none). */
-static inline void stp_halftone_fill_page_run(uint8_t *page, uint8_t page_bit, uint32_t x1, uint32_t x2,
+static inline void stp_halftone_fill_page_run(uint8_t *page, uint8_t page_bit, unsigned x1, unsigned x2,
                                               uint8_t pattern)
 {
     uint8_t mask = (uint8_t)(0x80u >> (x1 & 7u)), keep = (uint8_t)~page_bit;
@@ -26,16 +26,17 @@ static inline void stp_halftone_fill_page_run(uint8_t *page, uint8_t page_bit, u
     }
 }
 
-/* Pixels x1..x2 (x1 <= x2) of one band row from a pattern byte (pixel x
- * takes bit 7 - (x mod 8) of pattern), in either stp_band_layout:
+/* Pixels x1..x2 (x1 <= x2 < 32768: a port's width, so unsigned, 16 bits
+ * on an 8-bit core) of one band row from a pattern byte (pixel x takes
+ * bit 7 - (x mod 8) of pattern), in either stp_band_layout:
  *   page_bit 0: line is a STP_BAND_ROWS row (MSB first), filled a byte at
  *     a time between the two partial end bytes;
  *   page_bit 1 << (y mod 8): line is the first byte of row y's page of a
  *     STP_BAND_PAGES band; byte x gets bit page_bit, its other bits kept. */
-static inline void stp_halftone_fill_bits(uint8_t *line, uint8_t page_bit, uint32_t x1, uint32_t x2,
+static inline void stp_halftone_fill_bits(uint8_t *line, uint8_t page_bit, unsigned x1, unsigned x2,
                                           uint8_t pattern)
 {
-    uint32_t first = x1 >> 3, last = x2 >> 3, b;
+    unsigned first = x1 >> 3, last = x2 >> 3, b;
     uint8_t head = (uint8_t)(0xFFu >> (x1 & 7u)), tail = (uint8_t)(0xFFu << (7u - (x2 & 7u)));
     if (page_bit) {
         stp_halftone_fill_page_run(line, page_bit, x1, x2, pattern);
