@@ -144,15 +144,15 @@ static int light_ok(const stp_direct_light *l)
  * outside the device range. */
 static int project_point(const stp_direct_view *view, stp_direct_point *pt)
 {
-    stp_vec3 p;
     int32_t c[2];
     int i;
-    p.x = pt->x;
-    p.y = pt->y;
-    p.z = pt->z;
 #if STP_WIDE_ARITH
     {
         int64_t w[2];
+        stp_vec3 p;
+        p.x = pt->x;
+        p.y = pt->y;
+        p.z = pt->z;
         stp_view_perspective(view->focal, view->hither, p, &w[0], &w[1], 0);
         /* beyond 2^20 (Q4) an offset lands outside the device range */
         if (w[0] <= -((int64_t)1 << 20) || w[0] >= (int64_t)1 << 20 || w[1] <= -((int64_t)1 << 20) ||
@@ -165,7 +165,8 @@ static int project_point(const stp_direct_view *view, stp_direct_point *pt)
     /* the projection's 32-bit form alone: it declines (z >= 2^29, a
      * quotient of 2^31 or more) only where the 64-bit one would land
      * beyond the device range (|offset| >= 2^(31 - F) pixels > 512) */
-    if (!stp_project_exact((uint32_t)view->focal, (uint32_t)view->hither, (uint32_t)p.z, &p, &c[0], &c[1], 0))
+    if (!stp_project_exact((uint32_t)view->focal, (uint32_t)view->hither, (uint32_t)pt->z, pt->x, pt->y, &c[0], &c[1],
+                           0))
         return 0;
 #endif
     c[0] = (int32_t)view->width * 8 + c[0];

@@ -142,13 +142,13 @@ static inline int stp_project_offset(uint32_t f, int32_t c, uint32_t z, int32_t 
 /* The 32-bit form (z already raised to hither): 1 on success, 0 when z or
  * a quotient is out of its range (then the 64-bit quotients; *x, *y and
  * *key may have been written). */
-static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, const stp_vec3 *p, int32_t *x, int32_t *y,
-                                    int32_t *key)
+static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, int32_t px, int32_t py, int32_t *x,
+                                    int32_t *y, int32_t *key)
 {
 #if !STP_HAVE_MUL32
     uint32_t qk;
     if (z >= ((uint32_t)1 << 29) || f >= 0x80000000u || h >= 0x80000000u ||
-        !stp_project_offset(f, p->x, z, x) || !stp_project_offset(f, p->y, z, y))
+        !stp_project_offset(f, px, z, x) || !stp_project_offset(f, py, z, y))
         return 0;
     if (key) {
         if (!stp_project_divide(h, (uint32_t)1 << 30, z, &qk))
@@ -157,8 +157,8 @@ static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, const st
     }
     return 1;
 #else
-    uint32_t mx = p->x < 0 ? 0u - (uint32_t)p->x : (uint32_t)p->x;
-    uint32_t my = p->y < 0 ? 0u - (uint32_t)p->y : (uint32_t)p->y, qx, qy, qk, w, wh, v;
+    uint32_t mx = px < 0 ? 0u - (uint32_t)px : (uint32_t)px;
+    uint32_t my = py < 0 ? 0u - (uint32_t)py : (uint32_t)py, qx, qy, qk, w, wh, v;
     int sz, sh, shh;
     if (z >= ((uint32_t)1 << 29) || mx >= 0x80000000u || my >= 0x80000000u || f >= 0x80000000u ||
         h >= 0x80000000u)
@@ -174,8 +174,8 @@ static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, const st
             return 0;
         *key = (int32_t)qk;
     }
-    *x = stp_project_subpixel(p->x < 0, qx);
-    *y = stp_project_subpixel(p->y < 0, qy);
+    *x = stp_project_subpixel(px < 0, qx);
+    *y = stp_project_subpixel(py < 0, qy);
     return 1;
 #endif
 }
@@ -204,8 +204,8 @@ static inline void stp_view_perspective(stp_fix focal, stp_fix hither, stp_vec3 
 {
 #if !STP_WIDE_ARITH
     int32_t x32, y32;
-    if (stp_project_exact((uint32_t)focal, (uint32_t)hither, (uint32_t)(p.z < hither ? hither : p.z), &p, &x32,
-                          &y32, key)) {
+    if (stp_project_exact((uint32_t)focal, (uint32_t)hither, (uint32_t)(p.z < hither ? hither : p.z), p.x, p.y,
+                          &x32, &y32, key)) {
         *x = x32;
         *y = y32;
         return;
@@ -225,7 +225,8 @@ static inline void stp_view_perspective_device(const stp_view_lens *lens, const 
 #if !STP_WIDE_ARITH
     int32_t x32, y32;
     if (stp_project_exact((uint32_t)lens->focal, (uint32_t)lens->hither,
-                          (uint32_t)(p->z < lens->hither ? lens->hither : p->z), p, &x32, &y32, &out[2])) {
+                          (uint32_t)(p->z < lens->hither ? lens->hither : p->z), p->x, p->y, &x32, &y32,
+                          &out[2])) {
         /* |offset| < 2^(31 - 12): the sums fit int32 */
         x32 = lens->half_width + x32;
         y32 = lens->half_height - y32;
