@@ -66,7 +66,7 @@ static int in_coord_range(int32_t v)
 /* d = a - b; 0 when a component's difference is not below 2^23 in
  * magnitude, or wraps (the operands' signs differ and the difference's
  * differs from a's) */
-STP_DIRECT_CALL int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
+static int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
 {
     int j;
     STP_UNROLL3
@@ -81,7 +81,7 @@ STP_DIRECT_CALL int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3
 
 /* The view coordinates of world-space difference d (|d_i| < 2^23); out
  * must not be d. */
-STP_DIRECT_CALL void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out[3])
+static void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out[3])
 {
     int i;
     for (i = 0; i < 3; i++)

@@ -82,7 +82,7 @@ STP_DIRECT_CALL int edge_make(band_edge *e, const stp_direct_point *a, const stp
 
 /* The byte of cell row (y mod 4) at intensity: bit 7 - x ON where
  * intensity > threshold (x mod 4), repeated. */
-STP_DIRECT_CALL uint8_t pattern_of(const uint8_t *cell, int y, uint8_t intensity)
+static uint8_t pattern_of(const uint8_t *cell, int y, uint8_t intensity)
 {
     const uint8_t *t = &cell[(y & 3) * 4];
     unsigned p = 0, x;
