@@ -245,7 +245,7 @@ void stp_halftone_fillin(uint8_t *row, uint32_t x1, uint32_t x2, uint32_t y,
     if (cell->kind != STP_CELL_PATTERN && (w & (w - 1u)) == 0 && w <= 8u) { /* w divides 8, no division */
         /* The cell's width divides 8, so every byte of the row sees the same
          * cell columns at the same bits: one pattern byte fills the span. */
-        stp_halftone_fill_bits(row, 0, x1, x2, stp_halftone_pattern_byte(cell, y, intensity));
+        stp_halftone_fill_bits(row, 0, (unsigned)x1, (unsigned)x2, stp_halftone_pattern_byte(cell, y, intensity));
         return;
     }
     if (cell->kind == STP_CELL_PATTERN) {

@@ -223,7 +223,7 @@ static void put_span(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pain
     case STP_PIXEL_MONO1:
         if (style == fr->pattern_style) {
             uint32_t cy = fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height;
-            stp_halftone_fill_bits(row, 0, x1, x2, fr->patterns[cy]);
+            stp_halftone_fill_bits(row, 0, (unsigned)x1, (unsigned)x2, fr->patterns[cy]);
         } else {
             stp_halftone_fillin(row, x1, x2, y, fr->cell, level_of(fr, style));
         }
@@ -495,7 +495,7 @@ static void span_paint_init(span_paint *sp, const frame *fr, uint32_t y, uint32_
 static void span_paint_run(const span_paint *sp, uint32_t a, uint32_t b)
 {
     if (sp->row)
-        stp_halftone_fill_bits(sp->row, 0, a, b, sp->pattern);
+        stp_halftone_fill_bits(sp->row, 0, (unsigned)a, (unsigned)b, sp->pattern);
     else
         paint_run(sp->fr, sp->y, a, b, sp->style, sp->smooth,
                   sp->smooth ? sp->s0 + (int64_t)(a - sp->x1) * sp->sstep : 0, sp->sstep, sp->t);
@@ -508,7 +508,7 @@ static void span_paint_run(const span_paint *sp, uint32_t a, uint32_t b)
 /* Pixels x1..x2 of a MONO1 row from a pattern byte: the one run filler. */
 static inline void fill_run(uint8_t *row, uint32_t x1, uint32_t x2, uint8_t pattern)
 {
-    stp_halftone_fill_bits(row, 0, x1, x2, pattern);
+    stp_halftone_fill_bits(row, 0, (unsigned)x1, (unsigned)x2, pattern);
 }
 /* An opaque span of a direct style (paint_setup) whose depths are all in
  * 1..65535: di the Q12 depth at x1's centre, dstep per pixel (both fit 32
