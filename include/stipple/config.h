@@ -153,16 +153,16 @@
 
 /* 1: the face shader's compact route: faces without the highlight (every
  * face with STP_WITH_SPECULAR 0) shaded from 16-bit directions, an exact
- * integer square root and one division instead of the main route's
- * reciprocal roots and Newton steps.  Its error against the double
- * reference is the cosine's, about 1.1e-5, times the light's gain
- * BRIGHT P |R| / (C + U): 4.4e-4 at a gain of 20, 2.2e-3 at 200, where
- * the main 32-bit route without the highlight (which has no exact route
- * to take over) has 2.0e-4 and 3.1e-3 (tests/shade_fast:
- * test_shade_fast_compact; 1.7e-4 worst over its 200 000 random faces,
- * 7.8e-5 on the main 32-bit route).  The
- * Arduino library sets it (ports/arduino/src/stipple_config.h): 1 saves
- * 1 288 bytes of the Uno's SpinningCube. */
+ * integer square root, the cosine by one division and each light's share
+ * by one quotient, instead of the main route's reciprocal roots and
+ * Newton steps.  Its error against the double reference is the cosine's,
+ * about 1.1e-5, times the light's gain BRIGHT P |R| / (C + U): 2.2e-3 at
+ * a gain of 200, where the main 32-bit route without the highlight (which
+ * has no exact route to take over) has 3.1e-3 (tests/shade_fast:
+ * test_shade_fast_compact; 1.4e-4 worst over its 200 000 random faces,
+ * 7.8e-5 on the main 32-bit route).  The Arduino library sets it
+ * (ports/arduino/src/stipple_config.h): about 1 500 bytes off the Uno's
+ * SpinningCube. */
 #ifndef STP_SHADE_COMPACT
 #define STP_SHADE_COMPACT 0
 #endif

@@ -7,7 +7,7 @@
  * specular term is compiled out, which takes 8 KB of flash off an AVR
  * image, and the face shader keeps one light (124 bytes of flash and 143
  * of stack off the Uno's SpinningCube), on the face shader's compact
- * route (16-bit directions, one division: 1 288 bytes off the Uno's
+ * route (16-bit directions, a quotient per light: about 1 500 bytes off the Uno's
  * SpinningCube; error against the double reference within 5e-4 below a
  * light gain of 20, include/stipple/config.h).  A sketch using the full
  * renderer with specular surfaces or several lights sets them back here.
