@@ -17,37 +17,35 @@
 int stp_panel_run(const uint8_t *seq, uint16_t length, const stp_panel_bus *bus,
                   stp_panel_step_fn step, void *step_ctx)
 {
-    size_t at = 0;
-    while (at < length) {
-        size_t n = SEQ_BYTE(seq + at);
+    const uint8_t *end = seq + length;
+    while (seq != end) {
+        uint8_t n = SEQ_BYTE(seq++);
+        size_t left = (size_t)(end - seq);
         int status;
         if (n == 0) {
             /* a step: 0, op, arg low, arg high */
-            if (length - at < 4u || !step)
+            if (left < 3u || !step)
                 return -1;
-            status = step(step_ctx, SEQ_BYTE(seq + at + 1),
-                          (unsigned)SEQ_BYTE(seq + at + 2) | (unsigned)SEQ_BYTE(seq + at + 3) << 8);
-            if (status != 0)
-                return status;
-            at += 4u;
-            continue;
-        }
-        if (n > length - at - 1u)
-            return -1;
+            status = step(step_ctx, SEQ_BYTE(seq), (unsigned)SEQ_BYTE(seq + 1) | (unsigned)SEQ_BYTE(seq + 2) << 8);
+            seq += 3;
+        } else {
+            if (n > left)
+                return -1;
 #if defined(__AVR__)
-        {
-            uint8_t record[SEQ_RECORD_MAX];
-            if (n > SEQ_RECORD_MAX)
-                return -1;
-            memcpy_P(record, seq + at + 1, n);
-            status = bus->command(bus->ctx, record, n);
-        }
+            {
+                uint8_t record[SEQ_RECORD_MAX];
+                if (n > SEQ_RECORD_MAX)
+                    return -1;
+                memcpy_P(record, seq, n);
+                status = bus->command(bus->ctx, record, n);
+            }
 #else
-        status = bus->command(bus->ctx, seq + at + 1, n);
+            status = bus->command(bus->ctx, seq, n);
 #endif
+            seq += n;
+        }
         if (status != 0)
             return status;
-        at += 1u + n;
     }
     return 0;
 }
