@@ -26,12 +26,15 @@ public:
     const stp_mesh *load(const stp_mesh *rom)
     {
 #ifdef __AVR__
+        size_t corners;
         memcpy_P(&mesh_, rom, sizeof mesh_);
         if (mesh_.vertex_count > VERTICES || mesh_.triangle_count > TRIANGLES)
             return 0;
+        static_assert(sizeof triangles_[0] == sizeof normals_[0], "one size for both arrays");
+        corners = 3u * sizeof triangles_[0] * mesh_.triangle_count; /* triangles' and normals' bytes */
         memcpy_P(vertices_, mesh_.vertices, mesh_.vertex_count * sizeof vertices_[0]);
-        memcpy_P(triangles_, mesh_.triangles, 3u * mesh_.triangle_count * sizeof triangles_[0]);
-        memcpy_P(normals_, mesh_.normals, 3u * mesh_.triangle_count * sizeof normals_[0]);
+        memcpy_P(triangles_, mesh_.triangles, corners);
+        memcpy_P(normals_, mesh_.normals, corners);
         mesh_.vertices = vertices_;
         mesh_.triangles = triangles_;
         mesh_.normals = normals_;
