@@ -1574,6 +1574,8 @@ static int render_args(const stp_raytracer *rt, const stp_port *port, const stp_
         return STP_ERR_ARG;
     if (port->width != rt->width || port->height != rt->height)
         return STP_ERR_ARG;
+    if (port->format == STP_PIXEL_MONO1_PAGES)
+        return STP_ERR_ARG; /* rows only (port.h) */
     *drawn = port->format;
     if (output->diffusion && port->format == STP_PIXEL_MONO1) {
         int status = stp_diffusion_check(output->diffusion, port->width);

@@ -52,4 +52,38 @@ static inline void stp_halftone_fill_bits(uint8_t *line, uint8_t page_bit, uint3
     line[last] = (uint8_t)((line[last] & ~tail) | (pattern & tail));
 }
 
+/* Pixel x of a band line in either stp_band_layout (line and page_bit as
+ * stp_halftone_fill_bits: page_bit 0 a STP_BAND_ROWS row, else row y's
+ * page and its bit 1 << (y mod 8)): set ON (on != 0) or OFF, or read. */
+static inline void stp_mono_put(uint8_t *line, uint8_t page_bit, uint32_t x, int on)
+{
+    uint32_t i = page_bit ? x : x >> 3;
+    uint8_t bit = page_bit ? page_bit : (uint8_t)(0x80u >> (x & 7u));
+    line[i] = (uint8_t)(on ? line[i] | bit : line[i] & ~bit);
+}
+
+/* Row y's pixels as bytes 0 (OFF) / 1 (ON), bits[0..width), into its
+ * page line of a STP_BAND_PAGES band (page_bit 1 << (y mod 8)): the
+ * page's top row (page_bit 1) sets the bytes, so the page's other bits
+ * start 0, the others add their bit.  bits may be line itself (byte x is
+ * read before it is written), which lets a band drawn as grey rows be
+ * made pages in place: row r's page lies on grey row r / 8, read before. */
+static inline void stp_mono_page_from_bytes(uint8_t *line, uint8_t page_bit, const uint8_t *bits, uint32_t width)
+{
+    uint32_t x;
+    if (page_bit == 1u) {
+        for (x = 0; x < width; x++)
+            line[x] = (uint8_t)(bits[x] != 0);
+        return;
+    }
+    for (x = 0; x < width; x++)
+        if (bits[x])
+            line[x] = (uint8_t)(line[x] | page_bit);
+}
+
+static inline int stp_mono_get(const uint8_t *line, uint8_t page_bit, uint32_t x)
+{
+    return page_bit ? (line[x] & page_bit) != 0 : (line[x >> 3] & (0x80u >> (x & 7u))) != 0;
+}
+
 #endif

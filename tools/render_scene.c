@@ -439,7 +439,8 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
 {
     stp_tool_prepared prep;
     int rc;
-    if (opt->outlines_auto && !opt->outlines && !opt->raytrace && port->format == STP_PIXEL_MONO1) {
+    if (opt->outlines_auto && !opt->outlines && !opt->raytrace &&
+        (port->format == STP_PIXEL_MONO1 || port->format == STP_PIXEL_MONO1_PAGES)) {
         /* silhouettes when the picture would not show its objects (readable.h) */
         stp_tool_options o = *opt;
         int silhouettes = 0;
@@ -652,7 +653,7 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
     stp_scene_vec3 *normals = 0;
     uint16_t *shadow_maps = 0;
     stp_diffusion diffusion;
-    int diffusing = 0;
+    int diffusing = 0, one_bit;
     stp_outline_segment *outline = 0;
     size_t outline_count = 0;
 
@@ -805,14 +806,11 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
     band_rows = opt->band_rows > 0 && opt->band_rows < opt->height ? opt->band_rows : opt->height;
     memset(&mem, 0, sizeof mem);
     mem.band_rows = (uint32_t)band_rows;
-    diffusing = port->format == STP_PIXEL_MONO1 &&
-                stp_tool_diffusion(opt, (uint32_t)opt->width, &diffusion) != 0;
+    one_bit = port->format == STP_PIXEL_MONO1 || port->format == STP_PIXEL_MONO1_PAGES;
+    diffusing = one_bit && stp_tool_diffusion(opt, (uint32_t)opt->width, &diffusion) != 0;
     /* error diffusion and edge anti-aliasing draw a 1-bit band as GREY8 (render.h, stp_output) */
-    mem.band_size = stp_row_bytes(diffusing || (opt->edge_aa && port->format == STP_PIXEL_MONO1)
-                                      ? STP_PIXEL_GREY8
-                                      : port->format,
-                                  (uint32_t)opt->width) *
-                    (size_t)band_rows;
+    mem.band_size = stp_band_bytes(diffusing || (opt->edge_aa && one_bit) ? STP_PIXEL_GREY8 : port->format,
+                                   (uint32_t)opt->width, (uint32_t)band_rows);
     band = malloc(mem.band_size);
     mem.band = band;
     if (opt->hidden == STP_HIDDEN_ZBUFFER) {
