@@ -526,7 +526,7 @@ static void span_paint_run(const span_paint *sp, uint32_t a, uint32_t b)
 
 /* Pixels x1..x2 of a 1-bit band line from a pattern byte: the one run
  * filler (page_bit as stp_halftone_fill_bits). */
-static inline void fill_run(uint8_t *row, uint8_t page_bit, uint32_t x1, uint32_t x2, uint8_t pattern)
+STP_HOT_INLINE void fill_run(uint8_t *row, uint8_t page_bit, uint32_t x1, uint32_t x2, uint8_t pattern)
 {
     stp_halftone_fill_bits(row, page_bit, x1, x2, pattern);
 }
@@ -534,7 +534,7 @@ static inline void fill_run(uint8_t *row, uint8_t page_bit, uint32_t x1, uint32_
  * 1..65535: di the Q12 depth at x1's centre, dstep per pixel (both fit 32
  * bits, put_span_z).  Alternately skip the hidden pixels and take a run of
  * visible ones, writing their depth and the pattern byte of the row. */
-static inline void span_z_direct(uint16_t *z, uint8_t *row, uint8_t page_bit, uint8_t pattern, uint32_t x1,
+STP_HOT_INLINE void span_z_direct(uint16_t *z, uint8_t *row, uint8_t page_bit, uint8_t pattern, uint32_t x1,
                                  uint32_t x2, int32_t di, int32_t dstep)
 {
     /* every pixel's depth (uint32_t)di >> 12 is 1..65535 here: no clamp,
@@ -575,9 +575,14 @@ static uint8_t pattern_of_row(const frame *fr, uint32_t y)
     return fr->patterns[fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height];
 }
 
+/* (span_z_direct inlined twice: rows with page_bit 0 as a constant, so
+ * the rows' run filler keeps no page test) */
 static void put_span_z_direct(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int32_t di, int32_t dstep)
 {
-    span_z_direct(z_row(fr, y), band_row(fr, y), page_bit_of(fr, y), pattern_of_row(fr, y), x1, x2, di, dstep);
+    if (fr->page_one)
+        span_z_direct(z_row(fr, y), band_row(fr, y), page_bit_of(fr, y), pattern_of_row(fr, y), x1, x2, di, dstep);
+    else
+        span_z_direct(z_row(fr, y), band_row(fr, y), 0, pattern_of_row(fr, y), x1, x2, di, dstep);
 }
 
 /* put_span_z's opaque span whose depths fit 32 bits (di at x1's centre,
@@ -1091,19 +1096,19 @@ typedef struct tri_row {
     uint8_t page_bit; /* stp_halftone_fill_bits: 0, or the row's page bit */
 } tri_row;
 
-STP_HOT_INLINE void tri_row_at(const frame *fr, tri_row *tr, uint32_t row)
+STP_HOT_INLINE void tri_row_at(const frame *fr, tri_row *tr, uint32_t row, int pages)
 {
     tr->z = z_row(fr, row);
-    tr->band = band_row(fr, row);
-    tr->page_bit = page_bit_of(fr, row);
+    tr->band = fr->band + (size_t)(pages ? (row - fr->y0) >> 3 : row - fr->y0) * fr->stride; /* band_row */
+    tr->page_bit = pages ? page_bit_of(fr, row) : 0;
     tr->cell_height = fr->cell->height; /* >= 1: direct spans need mono_fill */
     tr->cell_row = fr->cell_mask ? (row & fr->cell_mask) : row % tr->cell_height;
 }
 
-STP_HOT_INLINE void tri_row_next(const frame *fr, tri_row *tr)
+STP_HOT_INLINE void tri_row_next(const frame *fr, tri_row *tr, int pages)
 {
     tr->z += fr->r->width;
-    if (tr->page_bit) {
+    if (pages) {
         /* the next bit of the page, else the next page's first */
         tr->page_bit = (uint8_t)(tr->page_bit << 1);
         if (tr->page_bit == 0) {
@@ -1121,8 +1126,9 @@ STP_HOT_INLINE void tri_row_next(const frame *fr, tri_row *tr)
  * (span_z_direct, at tr: tr NULL when not direct) when its depths are
  * 1..65535 at both ends, else through put_span_z. */
 STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint32_t p2, paint style, stp_fix t,
-                               const tri_row *tr, const tri_depth *td, const depth_plane *pl)
+                               const tri_row *tr, const tri_depth *td, const depth_plane *pl, int pages)
 {
+    uint8_t page_bit = pages && tr ? tr->page_bit : 0;
     if (td->short_depth) {
         /* the depths at the span's first and last pixel centres, modulo 2^32 */
         uint32_t d = td->d_row32 + td->gx * ((p1 << SUB) + HALF_PIXEL), d_end = d + (td->gx << SUB) * (p2 - p1);
@@ -1130,7 +1136,7 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
         if (tr && d - (uint32_t)DEPTH_Q12_MIN < depths && d_end - (uint32_t)DEPTH_Q12_MIN < depths)
             /* 1..65535 at both ends; two pixel centres 16 apart lie
              * within the x extent: 16 |ddx| < 2^29 */
-            span_z_direct(tr->z, tr->band, tr->page_bit, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
+            span_z_direct(tr->z, tr->band, page_bit, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
                           p2 > p1 ? from_twos(td->gx << SUB) : 0);
         else
             put_span_z(fr, row, p1, p2, style, from_twos(d), pl->ddx * (1 << SUB), 0, 0, 0, t, tr != 0);
@@ -1140,7 +1146,7 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
         int64_t ddx = pl->ddx * (1 << SUB), d_end = d + mul_wide(ddx, (int32_t)(p2 - p1));
         if (tr && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
             d_end < DEPTH_Q12_END) /* as put_span_z would, without its call */
-            span_z_direct(tr->z, tr->band, tr->page_bit, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
+            span_z_direct(tr->z, tr->band, page_bit, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
                           p2 > p1 ? (int32_t)ddx : 0);
         else
             put_span_z(fr, row, p1, p2, style, d, ddx, 0, 0, 0, t, tr != 0);
@@ -1225,12 +1231,29 @@ STP_HOT_INLINE int tri_walk_next(tri_walk *w)
      TRIANGLE_SHADOWLESS(fr))
 
 #if STP_WITH_ZBUFFER
+/* The rows of tri_draw_z that go straight to the band from w's row (span
+ * p1..p2) at tr; pages a constant at each call (1: MONO1_PAGES), so the
+ * rows' loop keeps no page test. */
+STP_HOT_INLINE void tri_rows_direct(const frame *fr, paint style, stp_fix t, tri_walk *w, tri_row *tr, tri_depth *td,
+                                    const depth_plane *pl, uint32_t p1, uint32_t p2, int pages)
+{
+    for (;;) {
+        tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, tr, td, pl, pages);
+        do {
+            if (!tri_walk_next(w))
+                return;
+            tri_depth_step(td, pl);
+            tri_row_next(fr, tr, pages);
+        } while (!tri_walk_span(w, fr->r->width, &p1, &p2));
+    }
+}
+
 /* The depth-tested rows of triangle v (df[at]) from walk w's row, whose
  * span p1..p2 is the first with pixels: its plane made (or taken from the
  * kept setups) here; rows straight to the band (tri_row) when
  * paint_setup says they can go. */
-static void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint style, stp_fix t, uint32_t ordinal,
-                       tri_walk *w, uint32_t p1, uint32_t p2)
+STP_HOT_INLINE void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint style, stp_fix t,
+                               uint32_t ordinal, tri_walk *w, uint32_t p1, uint32_t p2, int pages)
 {
     depth_plane pl;
     tri_depth td;
@@ -1241,7 +1264,7 @@ static void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint style, 
     tri_depth_start(&td, &pl, v, w->bot->y - w->top->y, w->yc);
     if (!(TRIANGLE_PAINT_READY(fr, style, t) || paint_setup(fr, at, style, 0, t))) {
         for (;;) {
-            tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, 0, &td, &pl);
+            tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, 0, &td, &pl, 0);
             do {
                 if (!tri_walk_next(w))
                     return;
@@ -1249,16 +1272,24 @@ static void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint style, 
             } while (!tri_walk_span(w, fr->r->width, &p1, &p2));
         }
     }
-    tri_row_at(fr, &tr, (uint32_t)w->row);
-    for (;;) {
-        tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, &tr, &td, &pl);
-        do {
-            if (!tri_walk_next(w))
-                return;
-            tri_depth_step(&td, &pl);
-            tri_row_next(fr, &tr);
-        } while (!tri_walk_span(w, fr->r->width, &p1, &p2));
-    }
+    tri_row_at(fr, &tr, (uint32_t)w->row, pages);
+    tri_rows_direct(fr, style, t, w, &tr, &td, &pl, p1, p2, pages);
+}
+
+/* tri_draw_z into a MONO1_PAGES band: the same code with pages 1, out of
+ * line, marked cold (the host's rows then measure as before it was added:
+ * callgrind, tools/bench/torus_bench.sh) and w taken by value, so the
+ * rows' copy (inlined in draw_triangle) keeps no page test and its locals
+ * stay in registers. */
+#if defined(__GNUC__)
+#define PAGES_COPY static __attribute__((noinline, cold))
+#else
+#define PAGES_COPY static
+#endif
+PAGES_COPY void tri_draw_z_pages(frame *fr, uint32_t at, const stp_instr *v, paint style, stp_fix t,
+                                   uint32_t ordinal, tri_walk w, uint32_t p1, uint32_t p2)
+{
+    tri_draw_z(fr, at, v, style, t, ordinal, &w, p1, p2, 1);
 }
 #endif
 
@@ -1285,7 +1316,10 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
             return; /* no pixel centre */
 #if STP_WITH_ZBUFFER
     if (use_z) {
-        tri_draw_z(fr, at, v, style, t, ordinal, &w, p1, p2);
+        if (fr->page_one)
+            tri_draw_z_pages(fr, at, v, style, t, ordinal, w, p1, p2);
+        else
+            tri_draw_z(fr, at, v, style, t, ordinal, &w, p1, p2, 0);
         return;
     }
 #else
