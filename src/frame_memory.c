@@ -91,7 +91,7 @@ static size_t band_rows_fitting(const stp_port *port, stp_pixel_format drawn, st
         size_t page = (size_t)port->width + 8u * depth; /* no overflow: width < 2^15 */
         rows = 8u * (size / page);
         if (rows < port->height && band_bytes(port, drawn, hidden, port->height) <= size)
-            rows = port->height; /* a frame below one page */
+            rows = (size_t)port->height; /* a frame below one page */
     } else {
         rows = size / (stp_row_bytes(drawn, port->width) + depth);
     }

@@ -11,19 +11,33 @@
 #include "stipple/dither.h" /* stp_band_layout */
 
 /* The page layout's run (stp_halftone_fill_bits): byte x of the page gets
- * bit page_bit from the pattern's bit 7 - (x mod 8), found by a mask that
- * walks right and wraps (no shift by a variable count per pixel: an 8-bit
- * core has none). */
+ * bit page_bit from the pattern's bit 7 - (x mod 8).  Walked by pointer
+ * (no 32-bit index per pixel on an 8-bit core); an all-OFF or all-ON
+ * pattern is one AND or OR per byte, another takes its bits from the
+ * pattern rotated so that bit 7 is pixel x1's and turned a bit per pixel
+ * (no shift by a variable count per pixel: an 8-bit core has none). */
 static inline void stp_halftone_fill_page_run(uint8_t *page, uint8_t page_bit, uint32_t x1, uint32_t x2,
                                               uint8_t pattern)
 {
-    uint8_t mask = (uint8_t)(0x80u >> (x1 & 7u)), keep = (uint8_t)~page_bit;
-    for (; x1 <= x2; x1++) {
-        page[x1] = (uint8_t)((pattern & mask) ? page[x1] | page_bit : page[x1] & keep);
-        mask = (uint8_t)(mask >> 1);
-        if (mask == 0)
-            mask = 0x80u;
+    uint8_t *p = page + x1, *const last = page + x2, keep = (uint8_t)~page_bit, turn = (uint8_t)(x1 & 7u);
+    if (pattern == 0u) {
+        do
+            *p = (uint8_t)(*p & keep);
+        while (p++ != last);
+        return;
     }
+    if (pattern == 0xFFu) {
+        do
+            *p = (uint8_t)(*p | page_bit);
+        while (p++ != last);
+        return;
+    }
+    if (turn)
+        pattern = (uint8_t)((unsigned)pattern << turn | (unsigned)pattern >> (8u - turn));
+    do {
+        *p = (uint8_t)((pattern & 0x80u) ? *p | page_bit : *p & keep);
+        pattern = (uint8_t)((unsigned)pattern << 1 | (unsigned)pattern >> 7);
+    } while (p++ != last);
 }
 
 /* Pixels x1..x2 (x1 <= x2) of one band row from a pattern byte (pixel x
@@ -58,7 +72,7 @@ static inline void stp_halftone_fill_bits(uint8_t *line, uint8_t page_bit, uint3
 static inline void stp_mono_put(uint8_t *line, uint8_t page_bit, uint32_t x, int on)
 {
     uint32_t i = page_bit ? x : x >> 3;
-    uint8_t bit = page_bit ? page_bit : (uint8_t)(0x80u >> (x & 7u));
+    uint8_t bit = (uint8_t)(page_bit ? page_bit : 0x80u >> (x & 7u));
     line[i] = (uint8_t)(on ? line[i] | bit : line[i] & ~bit);
 }
 
