@@ -21,6 +21,7 @@
 
 #include "fix_private.h"
 #include "output_private.h"
+#include "diffuse_private.h"
 #include "view_private.h"
 
 #if STP_WITH_RAYTRACE
@@ -1574,10 +1575,8 @@ static int render_args(const stp_raytracer *rt, const stp_port *port, const stp_
         return STP_ERR_ARG;
     if (port->width != rt->width || port->height != rt->height)
         return STP_ERR_ARG;
-    if (port->format == STP_PIXEL_MONO1_PAGES)
-        return STP_ERR_ARG; /* rows only (port.h) */
     *drawn = port->format;
-    if (output->diffusion && port->format == STP_PIXEL_MONO1) {
+    if (output->diffusion && (port->format == STP_PIXEL_MONO1 || port->format == STP_PIXEL_MONO1_PAGES)) {
         int status = stp_diffusion_check(output->diffusion, port->width);
         if (status != STP_OK)
             return status;
@@ -1586,18 +1585,22 @@ static int render_args(const stp_raytracer *rt, const stp_port *port, const stp_
     *stride = stp_row_bytes(*drawn, port->width);
     if (*stride == 0 || band_rows < 1 || band_rows > rt->height)
         return STP_ERR_ARG;
-    if (band_size < *stride * band_rows)
+    if (port->format == STP_PIXEL_MONO1_PAGES && band_rows % 8u != 0 && band_rows != rt->height)
+        return STP_ERR_ARG; /* whole pages (port.h) */
+    if (band_size < stp_band_bytes(*drawn, port->width, band_rows))
         return STP_ERR_MEMORY;
     if (port->format == STP_PIXEL_STYLE8 && output->styles == 0 && rt->levels > 255)
         return STP_ERR_ARG;
     return check_materials(rt) != STP_OK ? STP_ERR_ARG : STP_OK;
 }
 
-/* Trace row y into row (drawn format; the port's format says whether
- * colour is kept) and diffuse it when drawn differs from the port's. */
+/* Trace row y into row (drawn format: MONO1_PAGES row y's page line, its
+ * bits 0 before; the port's format says whether colour is kept) and
+ * diffuse it when drawn differs from the port's (a page port's bits to
+ * page, diffuse_private.h). */
 static void render_row(stp_raytracer *rt, const stp_port *port, const stp_output *output,
                        const stp_cell *cell, const rt_colour *bg, stp_pixel_format drawn,
-                       size_t stride, uint32_t y, uint8_t *row)
+                       size_t stride, uint32_t y, uint8_t *row, uint8_t *page)
 {
     uint32_t x;
     int c;
@@ -1615,7 +1618,9 @@ static void render_row(stp_raytracer *rt, const stp_port *port, const stp_output
             stp_output_put_shade(row, drawn, x, y, output, cell, rt->levels, grey);
         }
     }
-    if (drawn != port->format)
+    if (drawn != port->format && port->format == STP_PIXEL_MONO1_PAGES)
+        stp_diffuse_row_page(output->diffusion, row, rt->width, y, page);
+    else if (drawn != port->format)
         stp_diffuse_row(output->diffusion, row, rt->width, y);
 }
 
@@ -1644,8 +1649,16 @@ int stp_rt_render(stp_raytracer *rt, stp_port *port, const stp_output *output, u
                                 0, ONE);
     for (y0 = 0; y0 < rt->height; y0 += band_rows) {
         uint32_t rows = rt->height - y0 < band_rows ? rt->height - y0 : band_rows, y;
-        for (y = y0; y < y0 + rows; y++)
-            render_row(rt, port, output, cell, &bg, drawn, stride, y, band + (size_t)(y - y0) * stride);
+        size_t i, page_bytes = stp_band_bytes(STP_PIXEL_MONO1_PAGES, rt->width, rows);
+        for (i = 0; drawn == STP_PIXEL_MONO1_PAGES && i < page_bytes; i++)
+            band[i] = 0; /* put_shade sets and clears its bit only */
+        for (y = y0; y < y0 + rows; y++) {
+            /* pages: row y's page line (grey rows diffused: on grey row
+             * (y - y0) / 8, read already) */
+            uint8_t *page = band + (size_t)((y - y0) >> 3) * stride;
+            render_row(rt, port, output, cell, &bg, drawn, stride, y,
+                       drawn == STP_PIXEL_MONO1_PAGES ? page : band + (size_t)(y - y0) * stride, page);
+        }
         if (port->flush(port, y0, rows, band, stride) < 0)
             return STP_ERR_PORT;
     }

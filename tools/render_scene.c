@@ -96,6 +96,14 @@ void stp_tool_still_defaults(stp_tool_options *opt)
         opt->outlines_auto = 1;
 }
 
+int stp_tool_band_rows(const stp_tool_options *opt, const stp_port *port)
+{
+    int rows = opt->band_rows > 0 && opt->band_rows < opt->height ? opt->band_rows : opt->height;
+    if (port->format == STP_PIXEL_MONO1_PAGES && rows % 8 != 0)
+        rows = rows + 8 - rows % 8 < opt->height ? rows + 8 - rows % 8 : opt->height;
+    return rows;
+}
+
 int stp_tool_diffusion(const stp_tool_options *opt, uint32_t width, stp_diffusion *d)
 {
     memset(d, 0, sizeof *d);
@@ -803,7 +811,7 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
     (void)stp_segment_close(r);
     stats->display_entries = stp_renderer_display_file_used(r);
 
-    band_rows = opt->band_rows > 0 && opt->band_rows < opt->height ? opt->band_rows : opt->height;
+    band_rows = stp_tool_band_rows(opt, port);
     memset(&mem, 0, sizeof mem);
     mem.band_rows = (uint32_t)band_rows;
     one_bit = port->format == STP_PIXEL_MONO1 || port->format == STP_PIXEL_MONO1_PAGES;

@@ -40,10 +40,10 @@ typedef enum stp_pixel_format {
      * + x, and each page goes to the panel as it is.  The stride of a band
      * (stp_row_bytes, the flush's stride) is the bytes of one page, width;
      * a band of rows rows takes (rows + 7) / 8 pages (stp_band_bytes), the
-     * bits of rows past the last band's rows 0.  stp_renderer_render asks
-     * for band_rows a multiple of 8 unless one band holds the whole frame
-     * (so every band but the frame's last is whole pages), else STP_ERR_ARG;
-     * the ray tracer (raytrace.h) does not draw it (STP_ERR_ARG). */
+     * bits of rows past the last band's rows 0.  stp_renderer_render and
+     * stp_rt_render ask for band_rows a multiple of 8 unless one band holds
+     * the whole frame (so every band but the frame's last is whole pages
+     * and starts on a page), else STP_ERR_ARG. */
     STP_PIXEL_MONO1_PAGES = 4
 } stp_pixel_format;
 
