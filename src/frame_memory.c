@@ -102,6 +102,14 @@ static size_t band_rows_fitting(const stp_port *port, stp_pixel_format drawn, st
     return rows;
 }
 
+/* The format a band for port is drawn in: a 1-bit port's is grey when the
+ * output diffuses errors or anti-aliases edges (render.h, stp_output). */
+static stp_pixel_format drawn_format(const stp_port *port, const stp_output *output)
+{
+    int one_bit = port->format == STP_PIXEL_MONO1 || port->format == STP_PIXEL_MONO1_PAGES;
+    return one_bit && (output->diffusion || output->edge_aa) ? STP_PIXEL_GREY8 : port->format;
+}
+
 size_t stp_frame_memory_bytes(const stp_port *port, stp_hidden hidden, uint32_t band_rows,
                               uint32_t polygons)
 {
@@ -132,11 +140,7 @@ int stp_frame_memory_split(stp_frame_memory *memory, const stp_renderer *r, cons
         (void)stp_output_default(&defaults);
         output = &defaults;
     }
-    /* a 1-bit port's band is drawn grey for diffusion and edge anti-aliasing */
-    drawn = (port->format == STP_PIXEL_MONO1 || port->format == STP_PIXEL_MONO1_PAGES) &&
-                    (output->diffusion || output->edge_aa)
-                ? STP_PIXEL_GREY8
-                : port->format;
+    drawn = drawn_format(port, output);
     if (band_bytes(port, drawn, output->hidden, 1) == 0 || stp_row_bytes(port->format, port->width) == 0)
         return STP_ERR_ARG;
     if (output->hidden == STP_HIDDEN_PAINTER) {

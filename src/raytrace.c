@@ -1565,30 +1565,40 @@ int stp_rt_trace_pixel(stp_raytracer *rt, uint32_t x, uint32_t y, const stp_fix 
     return STP_OK;
 }
 
+/* The band for port in format drawn: STP_OK, STP_ERR_ARG (band_rows
+ * outside 1..height, or a page port's neither whole pages nor the height)
+ * or STP_ERR_MEMORY (band_size short). */
+static int band_ok(const stp_port *port, stp_pixel_format drawn, size_t band_size, uint32_t band_rows)
+{
+    if (stp_row_bytes(drawn, port->width) == 0 || band_rows < 1 || band_rows > port->height)
+        return STP_ERR_ARG;
+    if (port->format == STP_PIXEL_MONO1_PAGES && band_rows % 8u != 0 && band_rows != port->height)
+        return STP_ERR_ARG; /* whole pages (port.h) */
+    return band_size < stp_band_bytes(drawn, port->width, band_rows) ? STP_ERR_MEMORY : STP_OK;
+}
+
 /* The checks of stp_rt_render's arguments; *drawn the format rows are
  * traced in (GREY8 under error diffusion) and *stride its row bytes. */
 static int render_args(const stp_raytracer *rt, const stp_port *port, const stp_output *output,
                        const uint8_t *band, size_t band_size, uint32_t band_rows,
                        stp_pixel_format *drawn, size_t *stride)
 {
+    int status;
     if (rt == 0 || port == 0 || output == 0 || band == 0 || port->flush == 0)
         return STP_ERR_ARG;
     if (port->width != rt->width || port->height != rt->height)
         return STP_ERR_ARG;
     *drawn = port->format;
     if (output->diffusion && (port->format == STP_PIXEL_MONO1 || port->format == STP_PIXEL_MONO1_PAGES)) {
-        int status = stp_diffusion_check(output->diffusion, port->width);
+        status = stp_diffusion_check(output->diffusion, port->width);
         if (status != STP_OK)
             return status;
         *drawn = STP_PIXEL_GREY8;
     }
     *stride = stp_row_bytes(*drawn, port->width);
-    if (*stride == 0 || band_rows < 1 || band_rows > rt->height)
-        return STP_ERR_ARG;
-    if (port->format == STP_PIXEL_MONO1_PAGES && band_rows % 8u != 0 && band_rows != rt->height)
-        return STP_ERR_ARG; /* whole pages (port.h) */
-    if (band_size < stp_band_bytes(*drawn, port->width, band_rows))
-        return STP_ERR_MEMORY;
+    status = band_ok(port, *drawn, band_size, band_rows);
+    if (status != STP_OK)
+        return status;
     if (port->format == STP_PIXEL_STYLE8 && output->styles == 0 && rt->levels > 255)
         return STP_ERR_ARG;
     return check_materials(rt) != STP_OK ? STP_ERR_ARG : STP_OK;

@@ -5,7 +5,7 @@
  * - Every shared scene, through the hidden-surface methods, flat and smooth
  *   shading, transparency, ordered dither with cells of every kind (Bayer,
  *   pattern, blue noise, a 6-wide clustered screen), error diffusion, edge
- *   anti-aliasing and the ray tracer (stp_rt_render), at 128x64 and 100x60 (neither side a multiple of 8), in
+ *   anti-aliasing, shadow maps and the ray tracer (stp_rt_render), at 128x64 and 100x60 (neither side a multiple of 8), in
  *   bands of 8, 16, 24 rows and the whole frame: each band the port receives
  *   is checked (page stride, bands on page boundaries, the unused bits of a
  *   last partial page 0) and its pages gathered, and every pixel must equal
@@ -104,7 +104,7 @@ static int compare_pages(const stp_scene *scene, const stp_tool_options *opt, co
     return differ != 0;
 }
 
-enum { VARIANTS = 12 };
+enum { VARIANTS = 13 };
 
 /* Variant v of the options (the default: Z buffer, flat, Bayer 4x4); its
  * name in *name.  0 when the build lacks what the variant needs. */
@@ -112,7 +112,8 @@ static int variant_options(int v, stp_tool_options *opt, const char **name)
 {
     static const char *const names[VARIANTS] = {"Z buffer",   "painter",      "smooth",     "transparent",
                                                 "diffusion",  "edge AA",      "blue noise", "pattern 2x2",
-                                                "clustered 6", "no hidden",   "ray traced", "ray traced, diffusion"};
+                                                "clustered 6", "no hidden",   "ray traced", "ray traced, diffusion",
+                                                "shadow maps"};
     *name = names[v];
     switch (v) {
     case 1: opt->hidden = STP_HIDDEN_PAINTER; return STP_WITH_PAINTER;
@@ -140,6 +141,7 @@ static int variant_options(int v, stp_tool_options *opt, const char **name)
         opt->dither = STP_TOOL_DITHER_DIFFUSE;
         opt->levels = 256;
         return STP_WITH_RAYTRACE && STP_WITH_DIFFUSION;
+    case 12: opt->shadow_resolution = 128; return STP_WITH_SHADOWS;
     default: return STP_WITH_ZBUFFER;
     }
 }
