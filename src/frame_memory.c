@@ -5,6 +5,7 @@
  * layout of the caller's memory; the rasteriser (raster.c) and the ray
  * tracer use it, and it uses neither (no import circle). */
 #include "align_private.h"
+#include "frame_memory_private.h"
 #include "stipple/render.h"
 
 /* The bytes of one row of width pixels of format fmt (port.h). */

@@ -21,6 +21,7 @@
 
 #include "fix_private.h"
 #include "output_private.h"
+#include "frame_memory_private.h"
 #include "diffuse_private.h"
 #include "view_private.h"
 

@@ -232,8 +232,7 @@ int stp_tool_raytrace(const stp_scene *scene, const stp_tool_options *opt, stp_p
     if (diffusing)
         out.diffusion = &diffusion;
     /* error diffusion traces GREY8 rows (raytrace.h, stp_rt_render) */
-    band_size = stp_band_bytes(diffusing ? STP_PIXEL_GREY8 : port->format, (uint32_t)opt->width,
-                               (uint32_t)band_rows);
+    band_size = stp_tool_band_bytes(diffusing ? STP_PIXEL_GREY8 : port->format, (uint32_t)opt->width, band_rows);
     band = malloc(band_size ? band_size : 1);
     if (!band || (diffusing && !diffusion.errors)) {
         snprintf(err, err_size, "out of memory");

@@ -96,6 +96,12 @@ void stp_tool_still_defaults(stp_tool_options *opt)
         opt->outlines_auto = 1;
 }
 
+size_t stp_tool_band_bytes(stp_pixel_format format, uint32_t width, int rows)
+{
+    size_t count = format == STP_PIXEL_MONO1_PAGES ? ((size_t)rows + 7u) / 8u : (size_t)rows;
+    return stp_row_bytes(format, width) * count;
+}
+
 int stp_tool_band_rows(const stp_tool_options *opt, const stp_port *port)
 {
     int rows = opt->band_rows > 0 && opt->band_rows < opt->height ? opt->band_rows : opt->height;
@@ -817,8 +823,8 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
     one_bit = port->format == STP_PIXEL_MONO1 || port->format == STP_PIXEL_MONO1_PAGES;
     diffusing = one_bit && stp_tool_diffusion(opt, (uint32_t)opt->width, &diffusion) != 0;
     /* error diffusion and edge anti-aliasing draw a 1-bit band as GREY8 (render.h, stp_output) */
-    mem.band_size = stp_band_bytes(diffusing || (opt->edge_aa && one_bit) ? STP_PIXEL_GREY8 : port->format,
-                                   (uint32_t)opt->width, (uint32_t)band_rows);
+    mem.band_size = stp_tool_band_bytes(diffusing || (opt->edge_aa && one_bit) ? STP_PIXEL_GREY8 : port->format,
+                                        (uint32_t)opt->width, band_rows);
     band = malloc(mem.band_size);
     mem.band = band;
     if (opt->hidden == STP_HIDDEN_ZBUFFER) {

@@ -207,6 +207,10 @@ stp_fix stp_tool_fix(double v);
  * to whole pages of 8 rows, which it takes (port.h). */
 int stp_tool_band_rows(const stp_tool_options *opt, const stp_port *port);
 
+/* Bytes of a band of rows rows of width pixels in format: rows rows, or
+ * (rows + 7) / 8 pages of width bytes (STP_PIXEL_MONO1_PAGES). */
+size_t stp_tool_band_bytes(stp_pixel_format format, uint32_t width, int rows);
+
 /* The error diffusion the options ask for, for rows of width pixels:
  * 1 with d filled and d->errors allocated (the caller frees it), 0 when the
  * options dither with a cell (d->errors NULL), -1 out of memory. */

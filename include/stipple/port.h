@@ -39,8 +39,8 @@ typedef enum stp_pixel_format {
      * starting at row y0 is bit (y - y0) mod 8 of byte ((y - y0) / 8) width
      * + x, and each page goes to the panel as it is.  The stride of a band
      * (stp_row_bytes, the flush's stride) is the bytes of one page, width;
-     * a band of rows rows takes (rows + 7) / 8 pages (stp_band_bytes), the
-     * bits of rows past the last band's rows 0.  stp_renderer_render and
+     * a band of rows rows takes (rows + 7) / 8 pages, (rows + 7) / 8 width
+     * bytes, the bits of rows past the last band's rows 0.  stp_renderer_render and
      * stp_rt_render ask for band_rows a multiple of 8 unless one band holds
      * the whole frame (so every band but the frame's last is whole pages
      * and starts on a page), else STP_ERR_ARG. */
@@ -51,12 +51,6 @@ typedef enum stp_pixel_format {
  * row, or for STP_PIXEL_MONO1_PAGES the bytes of one page of 8 rows
  * (width); 0 for an unknown format. */
 size_t stp_row_bytes(stp_pixel_format fmt, uint32_t width);
-
-/* Bytes of a band of rows rows of width pixels in format fmt: rows
- * stp_row_bytes, or (rows + 7) / 8 pages of width bytes for
- * STP_PIXEL_MONO1_PAGES; 0 for an unknown format or a size that does not
- * fit size_t. */
-size_t stp_band_bytes(stp_pixel_format fmt, uint32_t width, uint32_t rows);
 
 struct stp_port;
 

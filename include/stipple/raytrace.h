@@ -245,8 +245,9 @@ int stp_rt_trace_pixel(stp_raytracer *rt, uint32_t x, uint32_t y, const stp_fix 
  * INTENSITY, the gamma table and the halftone (MONO1: each pixel's level
  * against its own threshold, as smooth polygons), as stp_renderer_render does.
  * output: hidden is ignored; background and background_colour give the
- * misses.  band: stp_band_bytes(format, width, band_rows) bytes (GREY8 rows
- * when output->diffusion diffuses a 1-bit picture).  Errors: STP_ERR_ARG
+ * misses.  band: band_rows * stp_row_bytes(format, width) bytes (GREY8 rows
+ * when output->diffusion diffuses a 1-bit picture; STP_PIXEL_MONO1_PAGES:
+ * (band_rows + 7) / 8 pages of width bytes).  Errors: STP_ERR_ARG
  * (also a STP_PIXEL_MONO1_PAGES port with band_rows neither a multiple of 8
  * nor the height), STP_ERR_MEMORY (band too small), STP_ERR_PORT. */
 int stp_rt_render(stp_raytracer *rt, stp_port *port, const stp_output *output, uint8_t *band,

@@ -481,9 +481,10 @@ typedef struct stp_output {
 } stp_output;
 
 /* Memory the caller lends to one stp_renderer_render call.
- *   band, band_size     pixel rows: stp_band_bytes(format, width,
- *                       band_rows) (GREY8 rows for a 1-bit port the output
- *                       diffuses or anti-aliases)
+ *   band, band_size     pixel rows: band_rows * stp_row_bytes(format,
+ *                       width) (GREY8 rows for a 1-bit port the output
+ *                       diffuses or anti-aliases); STP_PIXEL_MONO1_PAGES:
+ *                       (band_rows + 7) / 8 pages of width bytes
  *   band_rows           rows per band, 1..height; STP_PIXEL_MONO1_PAGES:
  *                       a multiple of 8, or the height (port.h)
  *   zbuf, zbuf_count    STP_HIDDEN_ZBUFFER: width * band_rows entries
