@@ -2,6 +2,8 @@
 /* Error diffusion of grey rows: see include/stipple/diffuse.h. */
 #include "stipple/diffuse.h"
 #include "stipple/render.h"
+#include "diffuse_private.h"
+#include "run_fill_private.h" /* stp_mono_page_from_bytes */
 
 #define QUARTERS 4 /* errors are whole quarter levels */
 #define ERR_LIMIT (128 * QUARTERS) /* saturation of an error: 128 levels */
@@ -111,7 +113,8 @@ static void pack_row(uint8_t *pixels, uint32_t width)
     }
 }
 
-void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, uint32_t y)
+/* Row y diffused in place: each grey pixel becomes 0 (OFF) or 1 (ON). */
+static void diffuse_to_bytes(const stp_diffusion *d, uint8_t *pixels, uint32_t width, uint32_t y)
 {
     const kernel_def *k = &kernels[d->kernel];
     uint32_t span = width + 2u * MARGIN, i;
@@ -166,5 +169,16 @@ void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, ui
     /* this row's entries become those of row y + rows */
     for (i = 0; i < span; i++)
         rows[0][(int32_t)i - MARGIN] = 0;
+}
+
+void stp_diffuse_row(const stp_diffusion *d, uint8_t *pixels, uint32_t width, uint32_t y)
+{
+    diffuse_to_bytes(d, pixels, width, y);
     pack_row(pixels, width);
+}
+
+void stp_diffuse_row_page(const stp_diffusion *d, uint8_t *pixels, uint32_t width, uint32_t y, uint8_t *line)
+{
+    diffuse_to_bytes(d, pixels, width, y);
+    stp_mono_page_from_bytes(line, (uint8_t)(1u << (y & 7u)), pixels, width);
 }

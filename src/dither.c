@@ -237,25 +237,21 @@ uint8_t stp_halftone_pattern_byte(const stp_cell *cell, uint32_t y, uint8_t inte
     return (uint8_t)pattern;
 }
 
-void stp_halftone_fillin(uint8_t *row, uint32_t x1, uint32_t x2, uint32_t y,
-                         const stp_cell *cell, uint8_t intensity)
+void stp_halftone_fillin_line(uint8_t *line, uint8_t page_bit, uint32_t x1, uint32_t x2, uint32_t y,
+                              const stp_cell *cell, uint8_t intensity)
 {
     uint32_t w = cell->width, hx, x;
     const uint8_t *cell_row;
     if (cell->kind != STP_CELL_PATTERN && (w & (w - 1u)) == 0 && w <= 8u) { /* w divides 8, no division */
         /* The cell's width divides 8, so every byte of the row sees the same
          * cell columns at the same bits: one pattern byte fills the span. */
-        stp_halftone_fill_bits(row, 0, (unsigned)x1, (unsigned)x2, stp_halftone_pattern_byte(cell, y, intensity));
+        stp_halftone_fill_bits(line, page_bit, (unsigned)x1, (unsigned)x2,
+                               stp_halftone_pattern_byte(cell, y, intensity));
         return;
     }
     if (cell->kind == STP_CELL_PATTERN) {
-        for (x = x1; x <= x2; x++) {
-            uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
-            if (stp_cell_on(cell, x, y, intensity))
-                row[x >> 3] = (uint8_t)(row[x >> 3] | bit);
-            else
-                row[x >> 3] = (uint8_t)(row[x >> 3] & ~bit);
-        }
+        for (x = x1; x <= x2; x++)
+            stp_mono_put(line, page_bit, x, stp_cell_on(cell, x, y, intensity));
         return;
     }
     /* The cell row is resolved once per span; hx steps and wraps as in the
@@ -263,14 +259,16 @@ void stp_halftone_fillin(uint8_t *row, uint32_t x1, uint32_t x2, uint32_t y,
     hx = x1 % w;
     cell_row = &stp_cell_table(cell)[(y % cell->height) * w];
     for (x = x1; x <= x2; x++) {
-        uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
-        if (intensity > cell_row[hx])
-            row[x >> 3] = (uint8_t)(row[x >> 3] | bit);
-        else
-            row[x >> 3] = (uint8_t)(row[x >> 3] & ~bit);
+        stp_mono_put(line, page_bit, x, intensity > cell_row[hx]);
         if (++hx == w)
             hx = 0;
     }
+}
+
+void stp_halftone_fillin(uint8_t *row, uint32_t x1, uint32_t x2, uint32_t y,
+                         const stp_cell *cell, uint8_t intensity)
+{
+    stp_halftone_fillin_line(row, 0, x1, x2, y, cell, intensity);
 }
 
 void stp_halftone_row(uint8_t *out, const uint8_t *grey, uint32_t width, uint32_t y,

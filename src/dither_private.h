@@ -11,6 +11,10 @@
  * for an intensity: bit 7 - b is ON when pixel b of any byte of the row is
  * (needs a threshold cell whose width divides 8). */
 uint8_t stp_halftone_pattern_byte(const stp_cell *cell, uint32_t y, uint8_t intensity);
+/* stp_halftone_fillin (dither.h) into a band line of either layout:
+ * line and page_bit as stp_halftone_fill_bits (run_fill_private.h). */
+void stp_halftone_fillin_line(uint8_t *line, uint8_t page_bit, uint32_t x1, uint32_t x2, uint32_t y,
+                              const stp_cell *cell, uint8_t intensity);
 /* The one 1-bit run filler: stp_halftone_fill_bits (run_fill_private.h). */
 #include "run_fill_private.h"
 

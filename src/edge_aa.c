@@ -11,6 +11,7 @@
 #include "edge_aa_private.h"
 #include "output_private.h"
 #include "edge_walk_private.h"
+#include "run_fill_private.h" /* stp_mono_page_from_bytes */
 
 #if STP_WITH_EDGE_AA
 
@@ -362,6 +363,14 @@ void stp_edge_aa_threshold_row(uint8_t *row, uint32_t width, uint32_t y, const s
     }
     if (width % 8u)
         row[width / 8u] = (uint8_t)(bits << (8u - width % 8u)); /* padding bits 0 */
+}
+
+void stp_edge_aa_threshold_page(uint8_t *row, uint32_t width, uint32_t y, const stp_cell *cell, uint8_t *line)
+{
+    uint32_t x;
+    for (x = 0; x < width; x++)
+        row[x] = (uint8_t)stp_cell_on(cell, x, y, row[x]);
+    stp_mono_page_from_bytes(line, (uint8_t)(1u << (y & 7u)), row, width);
 }
 
 #endif

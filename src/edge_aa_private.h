@@ -71,6 +71,11 @@ void stp_edge_aa_row(const stp_edge_aa *aa, uint8_t *row, uint16_t *zrow, const 
  * spans make), the padding bits past width 0. */
 void stp_edge_aa_threshold_row(uint8_t *row, uint32_t width, uint32_t y, const stp_cell *cell);
 
+/* The same test, the bits going to row y's page line of a
+ * STP_PIXEL_MONO1_PAGES band drawn as grey rows (stp_mono_page_from_bytes:
+ * line on a grey row already made bits, or on row itself). */
+void stp_edge_aa_threshold_page(uint8_t *row, uint32_t width, uint32_t y, const stp_cell *cell, uint8_t *line);
+
 #endif
 
 #endif

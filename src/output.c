@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Style index to device value (see output_private.h). */
 #include "output_private.h"
+#include "run_fill_private.h" /* stp_mono_put */
 
 uint8_t stp_output_level(const stp_output *out, int levels, int index)
 {
@@ -24,14 +25,10 @@ void stp_output_put_shade(uint8_t *row, stp_pixel_format format, uint32_t x, uin
     }
     level = stp_output_level(out, levels, index);
     switch (format) {
-    case STP_PIXEL_MONO1: {
-        uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
-        if (stp_cell_on(cell, x, y, level))
-            row[x >> 3] = (uint8_t)(row[x >> 3] | bit);
-        else
-            row[x >> 3] = (uint8_t)(row[x >> 3] & ~bit);
+    case STP_PIXEL_MONO1: stp_mono_put(row, 0, x, stp_cell_on(cell, x, y, level)); break;
+    case STP_PIXEL_MONO1_PAGES:
+        stp_mono_put(row, (uint8_t)(1u << (y & 7u)), x, stp_cell_on(cell, x, y, level));
         break;
-    }
     case STP_PIXEL_GREY8: row[x] = level; break;
     default: row[3 * x] = row[3 * x + 1] = row[3 * x + 2] = level; break;
     }

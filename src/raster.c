@@ -4,8 +4,10 @@
 #include "renderer_state.h"
 #include "shadow_private.h"
 #include "output_private.h"
+#include "frame_memory_private.h"
 #include "dither_private.h"
 #include "edge_aa_private.h"
+#include "diffuse_private.h"
 #include "edge_walk_private.h"
 #include "div64_private.h"
 
@@ -110,8 +112,12 @@ typedef struct frame {
     stp_renderer *r;
     uint8_t *band;
     uint16_t *zbuf;
-    size_t stride;
+    size_t stride;            /* bytes between band rows, or pages (MONO1_PAGES) */
     uint32_t y0, rows; /* current band */
+    /* the band's layout: rows (0, 0), or STP_PIXEL_MONO1_PAGES (3, 1):
+     * row y's line starts (y - y0) >> line_shift strides in, and is
+     * written at bit page_one << (y mod 8) (page_bit_of) */
+    uint8_t line_shift, page_one;
     int32_t band_top, band_end; /* its rows' extent in subpixels: y0 2^SUB, (y0 + rows) 2^SUB */
     stp_polygon_setup *setup; /* the caller's per-polygon depth setups, or NULL */
     int32_t key_min, key_max; /* depth-key range of the visible polygons */
@@ -157,6 +163,20 @@ typedef struct frame {
     stp_cell default_cell;
 } frame;
 
+
+/* The line of band row y: the row itself, or (MONO1_PAGES) the first
+ * byte of its page, written at page_bit_of(fr, y). */
+static uint8_t *band_row(const frame *fr, uint32_t y)
+{
+    return fr->band + (size_t)((y - fr->y0) >> fr->line_shift) * fr->stride;
+}
+
+/* The page bit of row y (stp_halftone_fill_bits): 0 for rows; bands
+ * start on page boundaries (y0 a multiple of 8). */
+static uint8_t page_bit_of(const frame *fr, uint32_t y)
+{
+    return (uint8_t)(fr->page_one << (y & 7u));
+}
 
 /* 8-bit drive value of a style index (gamma table or linear); index is a
  * plain style here (0..levels), so it fits an int. */
@@ -217,15 +237,16 @@ static paint paint_of(const frame *fr, const stp_instr *in)
 /* Paint pixels x1..x2 of band row `row` (absolute y) in a style. */
 static void put_span(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, paint style)
 {
-    uint8_t *row = fr->band + (size_t)(y - fr->y0) * fr->stride;
+    uint8_t *row = band_row(fr, y);
     uint32_t x;
     switch (fr->port->format) {
     case STP_PIXEL_MONO1:
+    case STP_PIXEL_MONO1_PAGES:
         if (style == fr->pattern_style) {
             uint32_t cy = fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height;
-            stp_halftone_fill_bits(row, 0, (unsigned)x1, (unsigned)x2, fr->patterns[cy]);
+            stp_halftone_fill_bits(row, page_bit_of(fr, y), (unsigned)x1, (unsigned)x2, fr->patterns[cy]);
         } else {
-            stp_halftone_fillin(row, x1, x2, y, fr->cell, level_of(fr, style));
+            stp_halftone_fillin_line(row, page_bit_of(fr, y), x1, x2, y, fr->cell, level_of(fr, style));
         }
         break;
     case STP_PIXEL_GREY8: {
@@ -267,7 +288,7 @@ static void put_span(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pain
 static void put_span_smooth(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int64_t s0,
                             int64_t step)
 {
-    uint8_t *row = fr->band + (size_t)(y - fr->y0) * fr->stride;
+    uint8_t *row = band_row(fr, y);
     uint32_t x;
     int64_t s = s0;
     for (x = x1; x <= x2; x++, s += step) {
@@ -309,21 +330,18 @@ static int blend(const frame *fr, stp_fix v_r, stp_fix t, stp_fix v_t)
 static void put_span_blend(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, paint style,
                            stp_fix t)
 {
-    uint8_t *row = fr->band + (size_t)(y - fr->y0) * fr->stride;
+    uint8_t *row = band_row(fr, y), page_bit = page_bit_of(fr, y);
     int levels = fr->r->levels;
     uint32_t x;
     switch (fr->port->format) {
-    case STP_PIXEL_MONO1: {
+    case STP_PIXEL_MONO1:
+    case STP_PIXEL_MONO1_PAGES: {
         /* one bilevel pixel inverts to 0 or 1: its halftone density is
          * the shade, so blending per pixel keeps it on average */
         stp_fix v_r = stp_intensity_shade((int)style, levels);
         for (x = x1; x <= x2; x++) {
-            uint8_t bit = (uint8_t)(0x80u >> (x & 7u));
-            stp_fix v_t = (row[x >> 3] & bit) ? STP_FIX_ONE : 0;
-            if (stp_cell_on(fr->cell, x, y, level_of(fr, blend(fr, v_r, t, v_t))))
-                row[x >> 3] = (uint8_t)(row[x >> 3] | bit);
-            else
-                row[x >> 3] = (uint8_t)(row[x >> 3] & ~bit);
+            stp_fix v_t = stp_mono_get(row, page_bit, x) ? STP_FIX_ONE : 0;
+            stp_mono_put(row, page_bit, x, stp_cell_on(fr->cell, x, y, level_of(fr, blend(fr, v_r, t, v_t))));
         }
         break;
     }
@@ -470,7 +488,7 @@ typedef struct span_paint {
     int64_t s0, sstep;
     stp_fix t;
     uint8_t *row; /* NULL: through paint_run */
-    uint8_t pattern;
+    uint8_t pattern, page_bit;
 } span_paint;
 
 static void span_paint_init(span_paint *sp, const frame *fr, uint32_t y, uint32_t x1, paint style, int smooth,
@@ -486,8 +504,10 @@ static void span_paint_init(span_paint *sp, const frame *fr, uint32_t y, uint32_
     sp->t = t;
     sp->row = 0;
     sp->pattern = 0;
+    sp->page_bit = 0;
     if (direct) {
-        sp->row = fr->band + (size_t)(y - fr->y0) * fr->stride;
+        sp->row = band_row(fr, y);
+        sp->page_bit = page_bit_of(fr, y);
         sp->pattern = fr->patterns[fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height];
     }
 }
@@ -495,7 +515,7 @@ static void span_paint_init(span_paint *sp, const frame *fr, uint32_t y, uint32_
 static void span_paint_run(const span_paint *sp, uint32_t a, uint32_t b)
 {
     if (sp->row)
-        stp_halftone_fill_bits(sp->row, 0, (unsigned)a, (unsigned)b, sp->pattern);
+        stp_halftone_fill_bits(sp->row, sp->page_bit, (unsigned)a, (unsigned)b, sp->pattern);
     else
         paint_run(sp->fr, sp->y, a, b, sp->style, sp->smooth,
                   sp->smooth ? sp->s0 + (int64_t)(a - sp->x1) * sp->sstep : 0, sp->sstep, sp->t);
@@ -505,17 +525,18 @@ static void span_paint_run(const span_paint *sp, uint32_t a, uint32_t b)
 #define DEPTH_Q12_MIN ((int64_t)1 << 12)
 #define DEPTH_Q12_END ((int64_t)65536 << 12)
 
-/* Pixels x1..x2 of a MONO1 row from a pattern byte: the one run filler. */
-static inline void fill_run(uint8_t *row, uint32_t x1, uint32_t x2, uint8_t pattern)
+/* Pixels x1..x2 of a 1-bit band line from a pattern byte: the one run
+ * filler (page_bit as stp_halftone_fill_bits). */
+STP_HOT_INLINE void fill_run(uint8_t *row, uint8_t page_bit, uint32_t x1, uint32_t x2, uint8_t pattern)
 {
-    stp_halftone_fill_bits(row, 0, (unsigned)x1, (unsigned)x2, pattern);
+    stp_halftone_fill_bits(row, page_bit, (unsigned)x1, (unsigned)x2, pattern);
 }
 /* An opaque span of a direct style (paint_setup) whose depths are all in
  * 1..65535: di the Q12 depth at x1's centre, dstep per pixel (both fit 32
  * bits, put_span_z).  Alternately skip the hidden pixels and take a run of
  * visible ones, writing their depth and the pattern byte of the row. */
-static inline void span_z_direct(uint16_t *z, uint8_t *row, uint8_t pattern, uint32_t x1, uint32_t x2, int32_t di,
-                                 int32_t dstep)
+STP_HOT_INLINE void span_z_direct(uint16_t *z, uint8_t *row, uint8_t page_bit, uint8_t pattern, uint32_t x1,
+                                 uint32_t x2, int32_t di, int32_t dstep)
 {
     /* every pixel's depth (uint32_t)di >> 12 is 1..65535 here: no clamp,
      * and compared with the entry as it is */
@@ -532,7 +553,7 @@ static inline void span_z_direct(uint16_t *z, uint8_t *row, uint8_t pattern, uin
         for (;;) {
             *zp = (uint16_t)((uint32_t)di >> 12);
             if (zp == zlast) {
-                fill_run(row, run, x2, pattern);
+                fill_run(row, page_bit, run, x2, pattern);
                 return;
             }
             zp++;
@@ -540,7 +561,7 @@ static inline void span_z_direct(uint16_t *z, uint8_t *row, uint8_t pattern, uin
             if ((uint32_t)di >> 12 <= *zp)
                 break;
         }
-        fill_run(row, run, (uint32_t)(zp - z) - 1u, pattern);
+        fill_run(row, page_bit, run, (uint32_t)(zp - z) - 1u, pattern);
     }
 }
 
@@ -550,19 +571,19 @@ static uint16_t *z_row(const frame *fr, uint32_t y)
     return fr->zbuf + (size_t)(y - fr->y0) * fr->r->width;
 }
 
-static uint8_t *band_row(const frame *fr, uint32_t y)
-{
-    return fr->band + (size_t)(y - fr->y0) * fr->stride;
-}
-
 static uint8_t pattern_of_row(const frame *fr, uint32_t y)
 {
     return fr->patterns[fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height];
 }
 
+/* (span_z_direct inlined twice: rows with page_bit 0 as a constant, so
+ * the rows' run filler keeps no page test) */
 static void put_span_z_direct(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int32_t di, int32_t dstep)
 {
-    span_z_direct(z_row(fr, y), band_row(fr, y), pattern_of_row(fr, y), x1, x2, di, dstep);
+    if (fr->page_one)
+        span_z_direct(z_row(fr, y), band_row(fr, y), page_bit_of(fr, y), pattern_of_row(fr, y), x1, x2, di, dstep);
+    else
+        span_z_direct(z_row(fr, y), band_row(fr, y), 0, pattern_of_row(fr, y), x1, x2, di, dstep);
 }
 
 /* put_span_z's opaque span whose depths fit 32 bits (di at x1's centre,
@@ -1073,20 +1094,31 @@ typedef struct tri_row {
     uint16_t *z;
     uint8_t *band;
     uint32_t cell_row, cell_height;
+    uint8_t page_bit; /* stp_halftone_fill_bits: 0, or the row's page bit */
 } tri_row;
 
-STP_HOT_INLINE void tri_row_at(const frame *fr, tri_row *tr, uint32_t row)
+STP_HOT_INLINE void tri_row_at(const frame *fr, tri_row *tr, uint32_t row, int pages)
 {
     tr->z = z_row(fr, row);
-    tr->band = band_row(fr, row);
+    tr->band = fr->band + (size_t)(pages ? (row - fr->y0) >> 3 : row - fr->y0) * fr->stride; /* band_row */
+    tr->page_bit = pages ? page_bit_of(fr, row) : 0;
     tr->cell_height = fr->cell->height; /* >= 1: direct spans need mono_fill */
     tr->cell_row = fr->cell_mask ? (row & fr->cell_mask) : row % tr->cell_height;
 }
 
-STP_HOT_INLINE void tri_row_next(const frame *fr, tri_row *tr)
+STP_HOT_INLINE void tri_row_next(const frame *fr, tri_row *tr, int pages)
 {
     tr->z += fr->r->width;
-    tr->band += fr->stride;
+    if (pages) {
+        /* the next bit of the page, else the next page's first */
+        tr->page_bit = (uint8_t)(tr->page_bit << 1);
+        if (tr->page_bit == 0) {
+            tr->page_bit = 1;
+            tr->band += fr->stride;
+        }
+    } else {
+        tr->band += fr->stride;
+    }
     if (++tr->cell_row == tr->cell_height)
         tr->cell_row = 0;
 }
@@ -1095,8 +1127,9 @@ STP_HOT_INLINE void tri_row_next(const frame *fr, tri_row *tr)
  * (span_z_direct, at tr: tr NULL when not direct) when its depths are
  * 1..65535 at both ends, else through put_span_z. */
 STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint32_t p2, paint style, stp_fix t,
-                               const tri_row *tr, const tri_depth *td, const depth_plane *pl)
+                               const tri_row *tr, const tri_depth *td, const depth_plane *pl, int pages)
 {
+    uint8_t page_bit = pages && tr ? tr->page_bit : 0;
     if (td->short_depth) {
         /* the depths at the span's first and last pixel centres, modulo 2^32 */
         uint32_t d = td->d_row32 + td->gx * ((p1 << SUB) + HALF_PIXEL), d_end = d + (td->gx << SUB) * (p2 - p1);
@@ -1104,7 +1137,7 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
         if (tr && d - (uint32_t)DEPTH_Q12_MIN < depths && d_end - (uint32_t)DEPTH_Q12_MIN < depths)
             /* 1..65535 at both ends; two pixel centres 16 apart lie
              * within the x extent: 16 |ddx| < 2^29 */
-            span_z_direct(tr->z, tr->band, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
+            span_z_direct(tr->z, tr->band, page_bit, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
                           p2 > p1 ? from_twos(td->gx << SUB) : 0);
         else
             put_span_z(fr, row, p1, p2, style, from_twos(d), pl->ddx * (1 << SUB), 0, 0, 0, t, tr != 0);
@@ -1114,7 +1147,7 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
         int64_t ddx = pl->ddx * (1 << SUB), d_end = d + mul_wide(ddx, (int32_t)(p2 - p1));
         if (tr && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
             d_end < DEPTH_Q12_END) /* as put_span_z would, without its call */
-            span_z_direct(tr->z, tr->band, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
+            span_z_direct(tr->z, tr->band, page_bit, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
                           p2 > p1 ? (int32_t)ddx : 0);
         else
             put_span_z(fr, row, p1, p2, style, d, ddx, 0, 0, 0, t, tr != 0);
@@ -1199,12 +1232,29 @@ STP_HOT_INLINE int tri_walk_next(tri_walk *w)
      TRIANGLE_SHADOWLESS(fr))
 
 #if STP_WITH_ZBUFFER
+/* The rows of tri_draw_z that go straight to the band from w's row (span
+ * p1..p2) at tr; pages a constant at each call (1: MONO1_PAGES), so the
+ * rows' loop keeps no page test. */
+STP_HOT_INLINE void tri_rows_direct(const frame *fr, paint style, stp_fix t, tri_walk *w, tri_row *tr, tri_depth *td,
+                                    const depth_plane *pl, uint32_t p1, uint32_t p2, int pages)
+{
+    for (;;) {
+        tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, tr, td, pl, pages);
+        do {
+            if (!tri_walk_next(w))
+                return;
+            tri_depth_step(td, pl);
+            tri_row_next(fr, tr, pages);
+        } while (!tri_walk_span(w, fr->r->width, &p1, &p2));
+    }
+}
+
 /* The depth-tested rows of triangle v (df[at]) from walk w's row, whose
  * span p1..p2 is the first with pixels: its plane made (or taken from the
  * kept setups) here; rows straight to the band (tri_row) when
  * paint_setup says they can go. */
-static void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint style, stp_fix t, uint32_t ordinal,
-                       tri_walk *w, uint32_t p1, uint32_t p2)
+STP_HOT_INLINE void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint style, stp_fix t,
+                               uint32_t ordinal, tri_walk *w, uint32_t p1, uint32_t p2, int pages)
 {
     depth_plane pl;
     tri_depth td;
@@ -1215,7 +1265,7 @@ static void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint style, 
     tri_depth_start(&td, &pl, v, w->bot->y - w->top->y, w->yc);
     if (!(TRIANGLE_PAINT_READY(fr, style, t) || paint_setup(fr, at, style, 0, t))) {
         for (;;) {
-            tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, 0, &td, &pl);
+            tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, 0, &td, &pl, 0);
             do {
                 if (!tri_walk_next(w))
                     return;
@@ -1223,16 +1273,24 @@ static void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint style, 
             } while (!tri_walk_span(w, fr->r->width, &p1, &p2));
         }
     }
-    tri_row_at(fr, &tr, (uint32_t)w->row);
-    for (;;) {
-        tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, &tr, &td, &pl);
-        do {
-            if (!tri_walk_next(w))
-                return;
-            tri_depth_step(&td, &pl);
-            tri_row_next(fr, &tr);
-        } while (!tri_walk_span(w, fr->r->width, &p1, &p2));
-    }
+    tri_row_at(fr, &tr, (uint32_t)w->row, pages);
+    tri_rows_direct(fr, style, t, w, &tr, &td, &pl, p1, p2, pages);
+}
+
+/* tri_draw_z into a MONO1_PAGES band: the same code with pages 1, out of
+ * line, marked cold and w taken by value, so the rows' copy (inlined in
+ * draw_triangle) keeps no page test and its locals stay in registers
+ * (one copy with a page test per row cost the host's rows up to 3 % more
+ * instructions, a copy taking w's address 4 %: tools/bench/torus_bench.sh). */
+#if defined(__GNUC__)
+#define PAGES_COPY static __attribute__((noinline, cold))
+#else
+#define PAGES_COPY static
+#endif
+PAGES_COPY void tri_draw_z_pages(frame *fr, uint32_t at, const stp_instr *v, paint style, stp_fix t,
+                                   uint32_t ordinal, tri_walk w, uint32_t p1, uint32_t p2)
+{
+    tri_draw_z(fr, at, v, style, t, ordinal, &w, p1, p2, 1);
 }
 #endif
 
@@ -1259,7 +1317,10 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
             return; /* no pixel centre */
 #if STP_WITH_ZBUFFER
     if (use_z) {
-        tri_draw_z(fr, at, v, style, t, ordinal, &w, p1, p2);
+        if (fr->page_one)
+            tri_draw_z_pages(fr, at, v, style, t, ordinal, w, p1, p2);
+        else
+            tri_draw_z(fr, at, v, style, t, ordinal, &w, p1, p2, 0);
         return;
     }
 #else
@@ -1444,7 +1505,7 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
 #if STP_WITH_EDGE_AA
         /* the pixels just outside this row's spans (opaque, unshadowed) */
         if (fr->aa.out && t == 0 && EDGE_AA_UNSHADOWED(fr))
-            stp_edge_aa_row(&fr->aa, fr->band + (size_t)(y - fr->y0) * fr->stride,
+            stp_edge_aa_row(&fr->aa, band_row(fr, y),
                             use_z ? fr->zbuf + (size_t)(y - fr->y0) * r->width : 0, r->crossings, nc,
                             style, smooth, EDGE_AA_DEPTH(d_row), EDGE_AA_DEPTH(ddx));
 #endif
@@ -1691,8 +1752,14 @@ static int pixel_culled(const stp_renderer *r)
 }
 #endif
 
+/* Whether a port's pixels are 1 bit: rows or pages. */
+static int one_bit(stp_pixel_format format)
+{
+    return format == STP_PIXEL_MONO1 || format == STP_PIXEL_MONO1_PAGES;
+}
+
 /* The port the bands are drawn for: port itself, or a GREY8 copy of a
- * MONO1 port in *grey when the output diffuses errors or anti-aliases
+ * 1-bit port in *grey when the output diffuses errors or anti-aliases
  * edges (the band is thresholded at flush).  STP_OK or the error. */
 static int render_drawn_port(frame *fr, const stp_port *port, const stp_output *output, stp_port *grey,
                              const stp_port **drawn)
@@ -1700,7 +1767,7 @@ static int render_drawn_port(frame *fr, const stp_port *port, const stp_output *
     *drawn = port;
 #if STP_WITH_EDGE_AA
     fr->aa.out = 0;
-    if (output->edge_aa && port->format == STP_PIXEL_MONO1) {
+    if (output->edge_aa && one_bit(port->format)) {
         *grey = *port; /* drawn grey, thresholded by the cell at flush */
         grey->format = STP_PIXEL_GREY8;
         *drawn = grey;
@@ -1710,7 +1777,7 @@ static int render_drawn_port(frame *fr, const stp_port *port, const stp_output *
     if (output->edge_aa)
         return STP_ERR_UNSUPPORTED;
 #endif
-    if (output->diffusion && port->format == STP_PIXEL_MONO1) {
+    if (output->diffusion && one_bit(port->format)) {
 #if STP_WITH_DIFFUSION
         int status = stp_diffusion_check(output->diffusion, port->width);
         if (status != STP_OK)
@@ -1729,14 +1796,18 @@ static int render_drawn_port(frame *fr, const stp_port *port, const stp_output *
 }
 
 /* The caller's frame memory against what the hidden-surface method and
- * the drawn format need: STP_OK, STP_ERR_MEMORY, STP_ERR_ARG or
+ * the drawn format need: STP_OK, STP_ERR_MEMORY, STP_ERR_ARG (also a page
+ * port's band_rows neither whole pages nor the height, port.h) or
  * STP_ERR_UNSUPPORTED (a method compiled out). */
 static int render_check_memory(const stp_renderer *r, const stp_port *port, const stp_output *output,
-                               const stp_frame_memory *mem, size_t stride)
+                               const stp_frame_memory *mem, stp_pixel_format drawn)
 {
+    size_t stride = stp_row_bytes(drawn, port->width);
     if (stride == 0 || mem->band_rows < 1 || mem->band_rows > r->height)
         return STP_ERR_ARG;
-    if (mem->band_size < stride * mem->band_rows)
+    if (port->format == STP_PIXEL_MONO1_PAGES && mem->band_rows % 8u != 0 && mem->band_rows != r->height)
+        return STP_ERR_ARG;
+    if (mem->band_size < stp_band_bytes(drawn, port->width, mem->band_rows))
         return STP_ERR_MEMORY;
     /* STYLE8 without a table stores the index in a byte: 1..255 */
     if (port->format == STP_PIXEL_STYLE8 && output->styles == 0 && r->levels > 255)
@@ -1814,10 +1885,10 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
     for (i = 0; i < KEY_CACHE; i++)
         fr->cached[i].q12 = 0;
 #endif
-    fr->mono_fill = port->format == STP_PIXEL_MONO1 && fr->cell->kind == STP_CELL_THRESHOLD &&
+    fr->mono_fill = one_bit(port->format) && fr->cell->kind == STP_CELL_THRESHOLD &&
                     fr->cell->width > 0 && 8u % fr->cell->width == 0 && fr->cell->height > 0 &&
                     fr->cell->height <= STP_CELL_MAX; /* patterns[] holds a row each */
-    fr->pattern_port = drawn->format == STP_PIXEL_MONO1 && fr->mono_fill;
+    fr->pattern_port = one_bit(drawn->format) && fr->mono_fill;
     fr->cell_mask = (fr->cell->height & (fr->cell->height - 1u)) == 0 ? fr->cell->height - 1u : 0;
     fr->pattern_style = -1;
 #if STP_PATTERN_CACHE > 0
@@ -1863,11 +1934,32 @@ static int band_clear_uniform(frame *fr, const stp_port *drawn, paint background
     return 1;
 }
 
+/* A MONO1_PAGES band's pages cleared to 0, so the bits of rows past the
+ * frame's last row stay 0: 1 when that is the background (its pattern
+ * bytes all 0), else 0 and the rows are painted over it. */
+static int band_clear_pages(frame *fr, paint background)
+{
+    size_t i, count = fr->stride * (((size_t)fr->rows + 7u) / 8u); /* within band_size */
+    uint32_t cy;
+    uint8_t *band = fr->band; /* a local: a byte store may alias fr */
+    for (i = 0; i < count; i++) /* a counted loop: compilers make it memset */
+        band[i] = 0;
+    use_style(fr, background); /* patterns[] for the background, when mono_fill */
+    if (background != fr->pattern_style)
+        return 0;
+    for (cy = 0; cy < fr->cell->height; cy++)
+        if (fr->patterns[cy] != 0)
+            return 0;
+    return 1;
+}
+
 static void render_band_clear(frame *fr, const stp_port *drawn, stp_hidden hidden, paint background)
 {
     const stp_renderer *r = fr->r;
     uint32_t y, y0 = fr->y0;
-    for (y = band_clear_uniform(fr, drawn, background) ? y0 + fr->rows : y0; y < y0 + fr->rows; y++) {
+    int cleared = drawn->format == STP_PIXEL_MONO1_PAGES ? band_clear_pages(fr, background)
+                                                         : band_clear_uniform(fr, drawn, background);
+    for (y = cleared ? y0 + fr->rows : y0; y < y0 + fr->rows; y++) {
         /* MONO1 padding bits past the width reach the port too: make
          * them 0 rather than whatever the caller's buffer held */
         if (drawn->format == STP_PIXEL_MONO1)
@@ -1916,28 +2008,38 @@ static void render_band_draw(frame *fr, stp_hidden hidden, const stp_frame_memor
     }
 }
 
-/* A grey band for a MONO1 port made MONO1 in place, row by row, by error
- * diffusion or the cell. */
-static void render_band_threshold(frame *fr, const stp_output *output)
+/* A grey band for a 1-bit port made MONO1 rows (pages: MONO1_PAGES) in
+ * place, row by row, by error diffusion or the cell. */
+static void render_band_threshold(frame *fr, const stp_output *output, int pages)
 {
 #if STP_WITH_DIFFUSION || STP_WITH_EDGE_AA
     uint32_t y;
     (void)output; /* read only with diffusion */
     for (y = fr->y0; y < fr->y0 + fr->rows; y++) {
+        /* a page port's row r goes to page r / 8, on grey row r / 8:
+         * read already (diffuse_private.h) */
         uint8_t *row = fr->band + (size_t)(y - fr->y0) * fr->stride;
+        uint8_t *page = pages ? fr->band + (size_t)((y - fr->y0) >> 3) * fr->stride : 0;
 #if STP_WITH_DIFFUSION
         if (output->diffusion) {
-            stp_diffuse_row(output->diffusion, row, fr->r->width, y);
+            if (page)
+                stp_diffuse_row_page(output->diffusion, row, fr->r->width, y, page);
+            else
+                stp_diffuse_row(output->diffusion, row, fr->r->width, y);
             continue;
         }
 #endif
 #if STP_WITH_EDGE_AA
-        stp_edge_aa_threshold_row(row, fr->r->width, y, fr->cell);
+        if (page)
+            stp_edge_aa_threshold_page(row, fr->r->width, y, fr->cell, page);
+        else
+            stp_edge_aa_threshold_row(row, fr->r->width, y, fr->cell);
 #endif
     }
 #else
     (void)fr;
     (void)output;
+    (void)pages;
 #endif
 }
 
@@ -1967,7 +2069,9 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
     if ((status = render_drawn_port(&fr, port, output, &grey_port, &drawn)) != STP_OK)
         return status;
     fr.stride = stp_row_bytes(drawn->format, port->width);
-    if ((status = render_check_memory(r, port, output, mem, fr.stride)) != STP_OK)
+    fr.line_shift = drawn->format == STP_PIXEL_MONO1_PAGES ? 3u : 0u;
+    fr.page_one = drawn->format == STP_PIXEL_MONO1_PAGES ? 1u : 0u;
+    if ((status = render_check_memory(r, port, output, mem, drawn->format)) != STP_OK)
         return status;
     fr.r = r;
     fr.port = drawn;
@@ -2002,7 +2106,7 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
         render_band_clear(&fr, drawn, output->hidden, background_style);
         render_band_draw(&fr, output->hidden, mem, polygons);
         if (drawn == &grey_port)
-            render_band_threshold(&fr, output);
+            render_band_threshold(&fr, output, port->format == STP_PIXEL_MONO1_PAGES);
         if (port->flush(port, y0, fr.rows, fr.band, fr.stride) < 0)
             return STP_ERR_PORT;
     }

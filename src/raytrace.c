@@ -21,6 +21,8 @@
 
 #include "fix_private.h"
 #include "output_private.h"
+#include "frame_memory_private.h"
+#include "diffuse_private.h"
 #include "view_private.h"
 
 #if STP_WITH_RAYTRACE
@@ -1564,38 +1566,52 @@ int stp_rt_trace_pixel(stp_raytracer *rt, uint32_t x, uint32_t y, const stp_fix 
     return STP_OK;
 }
 
+/* The band for port in format drawn: STP_OK, STP_ERR_ARG (band_rows
+ * outside 1..height, or a page port's neither whole pages nor the height)
+ * or STP_ERR_MEMORY (band_size short). */
+static int band_ok(const stp_port *port, stp_pixel_format drawn, size_t band_size, uint32_t band_rows)
+{
+    if (stp_row_bytes(drawn, port->width) == 0 || band_rows < 1 || band_rows > port->height)
+        return STP_ERR_ARG;
+    if (port->format == STP_PIXEL_MONO1_PAGES && band_rows % 8u != 0 && band_rows != port->height)
+        return STP_ERR_ARG; /* whole pages (port.h) */
+    return band_size < stp_band_bytes(drawn, port->width, band_rows) ? STP_ERR_MEMORY : STP_OK;
+}
+
 /* The checks of stp_rt_render's arguments; *drawn the format rows are
  * traced in (GREY8 under error diffusion) and *stride its row bytes. */
 static int render_args(const stp_raytracer *rt, const stp_port *port, const stp_output *output,
                        const uint8_t *band, size_t band_size, uint32_t band_rows,
                        stp_pixel_format *drawn, size_t *stride)
 {
+    int status;
     if (rt == 0 || port == 0 || output == 0 || band == 0 || port->flush == 0)
         return STP_ERR_ARG;
     if (port->width != rt->width || port->height != rt->height)
         return STP_ERR_ARG;
     *drawn = port->format;
-    if (output->diffusion && port->format == STP_PIXEL_MONO1) {
-        int status = stp_diffusion_check(output->diffusion, port->width);
+    if (output->diffusion && (port->format == STP_PIXEL_MONO1 || port->format == STP_PIXEL_MONO1_PAGES)) {
+        status = stp_diffusion_check(output->diffusion, port->width);
         if (status != STP_OK)
             return status;
         *drawn = STP_PIXEL_GREY8;
     }
     *stride = stp_row_bytes(*drawn, port->width);
-    if (*stride == 0 || band_rows < 1 || band_rows > rt->height)
-        return STP_ERR_ARG;
-    if (band_size < *stride * band_rows)
-        return STP_ERR_MEMORY;
+    status = band_ok(port, *drawn, band_size, band_rows);
+    if (status != STP_OK)
+        return status;
     if (port->format == STP_PIXEL_STYLE8 && output->styles == 0 && rt->levels > 255)
         return STP_ERR_ARG;
     return check_materials(rt) != STP_OK ? STP_ERR_ARG : STP_OK;
 }
 
-/* Trace row y into row (drawn format; the port's format says whether
- * colour is kept) and diffuse it when drawn differs from the port's. */
+/* Trace row y into row (drawn format: MONO1_PAGES row y's page line, its
+ * bits 0 before; the port's format says whether colour is kept) and
+ * diffuse it when drawn differs from the port's (a page port's bits to
+ * page, diffuse_private.h). */
 static void render_row(stp_raytracer *rt, const stp_port *port, const stp_output *output,
                        const stp_cell *cell, const rt_colour *bg, stp_pixel_format drawn,
-                       size_t stride, uint32_t y, uint8_t *row)
+                       size_t stride, uint32_t y, uint8_t *row, uint8_t *page)
 {
     uint32_t x;
     int c;
@@ -1613,7 +1629,9 @@ static void render_row(stp_raytracer *rt, const stp_port *port, const stp_output
             stp_output_put_shade(row, drawn, x, y, output, cell, rt->levels, grey);
         }
     }
-    if (drawn != port->format)
+    if (drawn != port->format && port->format == STP_PIXEL_MONO1_PAGES)
+        stp_diffuse_row_page(output->diffusion, row, rt->width, y, page);
+    else if (drawn != port->format)
         stp_diffuse_row(output->diffusion, row, rt->width, y);
 }
 
@@ -1642,8 +1660,16 @@ int stp_rt_render(stp_raytracer *rt, stp_port *port, const stp_output *output, u
                                 0, ONE);
     for (y0 = 0; y0 < rt->height; y0 += band_rows) {
         uint32_t rows = rt->height - y0 < band_rows ? rt->height - y0 : band_rows, y;
-        for (y = y0; y < y0 + rows; y++)
-            render_row(rt, port, output, cell, &bg, drawn, stride, y, band + (size_t)(y - y0) * stride);
+        size_t i, page_bytes = stp_band_bytes(STP_PIXEL_MONO1_PAGES, rt->width, rows);
+        for (i = 0; drawn == STP_PIXEL_MONO1_PAGES && i < page_bytes; i++)
+            band[i] = 0; /* put_shade sets and clears its bit only */
+        for (y = y0; y < y0 + rows; y++) {
+            /* pages: row y's page line (grey rows diffused: on grey row
+             * (y - y0) / 8, read already) */
+            uint8_t *page = band + (size_t)((y - y0) >> 3) * stride;
+            render_row(rt, port, output, cell, &bg, drawn, stride, y,
+                       drawn == STP_PIXEL_MONO1_PAGES ? page : band + (size_t)(y - y0) * stride, page);
+        }
         if (port->flush(port, y0, rows, band, stride) < 0)
             return STP_ERR_PORT;
     }

@@ -11,19 +11,33 @@
 #include "stipple/dither.h" /* stp_band_layout */
 
 /* The page layout's run (stp_halftone_fill_bits): byte x of the page gets
- * bit page_bit from the pattern's bit 7 - (x mod 8), found by a mask that
- * walks right and wraps (no shift by a variable count per pixel: an 8-bit
- * core has none). */
+ * bit page_bit from the pattern's bit 7 - (x mod 8).  Walked by pointer
+ * (no 32-bit index per pixel on an 8-bit core); an all-OFF or all-ON
+ * pattern is one AND or OR per byte, another takes its bits from the
+ * pattern rotated so that bit 7 is pixel x1's and turned a bit per pixel
+ * (no shift by a variable count per pixel: an 8-bit core has none). */
 static inline void stp_halftone_fill_page_run(uint8_t *page, uint8_t page_bit, unsigned x1, unsigned x2,
                                               uint8_t pattern)
 {
-    uint8_t mask = (uint8_t)(0x80u >> (x1 & 7u)), keep = (uint8_t)~page_bit;
-    for (; x1 <= x2; x1++) {
-        page[x1] = (uint8_t)((pattern & mask) ? page[x1] | page_bit : page[x1] & keep);
-        mask = (uint8_t)(mask >> 1);
-        if (mask == 0)
-            mask = 0x80u;
+    uint8_t *p = page + x1, *const last = page + x2, keep = (uint8_t)~page_bit, turn = (uint8_t)(x1 & 7u);
+    if (pattern == 0u) {
+        do
+            *p = (uint8_t)(*p & keep);
+        while (p++ != last);
+        return;
     }
+    if (pattern == 0xFFu) {
+        do
+            *p = (uint8_t)(*p | page_bit);
+        while (p++ != last);
+        return;
+    }
+    if (turn)
+        pattern = (uint8_t)((unsigned)pattern << turn | (unsigned)pattern >> (8u - turn));
+    do {
+        *p = (uint8_t)((pattern & 0x80u) ? *p | page_bit : *p & keep);
+        pattern = (uint8_t)((unsigned)pattern << 1 | (unsigned)pattern >> 7);
+    } while (p++ != last);
 }
 
 /* Pixels x1..x2 (x1 <= x2 < 32768: a port's width, so unsigned, 16 bits
@@ -51,6 +65,40 @@ static inline void stp_halftone_fill_bits(uint8_t *line, uint8_t page_bit, unsig
     for (b = first + 1; b < last; b++)
         line[b] = pattern;
     line[last] = (uint8_t)((line[last] & ~tail) | (pattern & tail));
+}
+
+/* Pixel x of a band line in either stp_band_layout (line and page_bit as
+ * stp_halftone_fill_bits: page_bit 0 a STP_BAND_ROWS row, else row y's
+ * page and its bit 1 << (y mod 8)): set ON (on != 0) or OFF, or read. */
+static inline void stp_mono_put(uint8_t *line, uint8_t page_bit, uint32_t x, int on)
+{
+    uint32_t i = page_bit ? x : x >> 3;
+    uint8_t bit = (uint8_t)(page_bit ? page_bit : 0x80u >> (x & 7u));
+    line[i] = (uint8_t)(on ? line[i] | bit : line[i] & ~bit);
+}
+
+/* Row y's pixels as bytes 0 (OFF) / 1 (ON), bits[0..width), into its
+ * page line of a STP_BAND_PAGES band (page_bit 1 << (y mod 8)): the
+ * page's top row (page_bit 1) sets the bytes, so the page's other bits
+ * start 0, the others add their bit.  bits may be line itself (byte x is
+ * read before it is written), which lets a band drawn as grey rows be
+ * made pages in place: row r's page lies on grey row r / 8, read before. */
+static inline void stp_mono_page_from_bytes(uint8_t *line, uint8_t page_bit, const uint8_t *bits, uint32_t width)
+{
+    uint32_t x;
+    if (page_bit == 1u) {
+        for (x = 0; x < width; x++)
+            line[x] = (uint8_t)(bits[x] != 0);
+        return;
+    }
+    for (x = 0; x < width; x++)
+        if (bits[x])
+            line[x] = (uint8_t)(line[x] | page_bit);
+}
+
+static inline int stp_mono_get(const uint8_t *line, uint8_t page_bit, uint32_t x)
+{
+    return page_bit ? (line[x] & page_bit) != 0 : (line[x >> 3] & (0x80u >> (x & 7u))) != 0;
 }
 
 #endif

@@ -226,14 +226,13 @@ int stp_tool_raytrace(const stp_scene *scene, const stp_tool_options *opt, stp_p
         return -1;
     if (stp_tool_output(scene, opt, &out, &cell, &gamma, background_rgb, err, err_size) != 0)
         goto done;
-    band_rows = opt->band_rows > 0 && opt->band_rows < opt->height ? opt->band_rows : opt->height;
-    diffusing = port->format == STP_PIXEL_MONO1 &&
+    band_rows = stp_tool_band_rows(opt, port);
+    diffusing = (port->format == STP_PIXEL_MONO1 || port->format == STP_PIXEL_MONO1_PAGES) &&
                 stp_tool_diffusion(opt, (uint32_t)opt->width, &diffusion) != 0;
     if (diffusing)
         out.diffusion = &diffusion;
     /* error diffusion traces GREY8 rows (raytrace.h, stp_rt_render) */
-    band_size = stp_row_bytes(diffusing ? STP_PIXEL_GREY8 : port->format, (uint32_t)opt->width) *
-                (size_t)band_rows;
+    band_size = stp_tool_band_bytes(diffusing ? STP_PIXEL_GREY8 : port->format, (uint32_t)opt->width, band_rows);
     band = malloc(band_size ? band_size : 1);
     if (!band || (diffusing && !diffusion.errors)) {
         snprintf(err, err_size, "out of memory");

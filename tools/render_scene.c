@@ -96,6 +96,20 @@ void stp_tool_still_defaults(stp_tool_options *opt)
         opt->outlines_auto = 1;
 }
 
+size_t stp_tool_band_bytes(stp_pixel_format format, uint32_t width, int rows)
+{
+    size_t count = format == STP_PIXEL_MONO1_PAGES ? ((size_t)rows + 7u) / 8u : (size_t)rows;
+    return stp_row_bytes(format, width) * count;
+}
+
+int stp_tool_band_rows(const stp_tool_options *opt, const stp_port *port)
+{
+    int rows = opt->band_rows > 0 && opt->band_rows < opt->height ? opt->band_rows : opt->height;
+    if (port->format == STP_PIXEL_MONO1_PAGES && rows % 8 != 0)
+        rows = rows + 8 - rows % 8 < opt->height ? rows + 8 - rows % 8 : opt->height;
+    return rows;
+}
+
 int stp_tool_diffusion(const stp_tool_options *opt, uint32_t width, stp_diffusion *d)
 {
     memset(d, 0, sizeof *d);
@@ -439,7 +453,8 @@ int stp_tool_render(const stp_scene *scene, const stp_tool_options *opt, stp_por
 {
     stp_tool_prepared prep;
     int rc;
-    if (opt->outlines_auto && !opt->outlines && !opt->raytrace && port->format == STP_PIXEL_MONO1) {
+    if (opt->outlines_auto && !opt->outlines && !opt->raytrace &&
+        (port->format == STP_PIXEL_MONO1 || port->format == STP_PIXEL_MONO1_PAGES)) {
         /* silhouettes when the picture would not show its objects (readable.h) */
         stp_tool_options o = *opt;
         int silhouettes = 0;
@@ -652,7 +667,7 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
     stp_scene_vec3 *normals = 0;
     uint16_t *shadow_maps = 0;
     stp_diffusion diffusion;
-    int diffusing = 0;
+    int diffusing = 0, one_bit;
     stp_outline_segment *outline = 0;
     size_t outline_count = 0;
 
@@ -802,17 +817,14 @@ int stp_tool_render_prepared(const stp_tool_prepared *prep, stp_port *port,
     (void)stp_segment_close(r);
     stats->display_entries = stp_renderer_display_file_used(r);
 
-    band_rows = opt->band_rows > 0 && opt->band_rows < opt->height ? opt->band_rows : opt->height;
+    band_rows = stp_tool_band_rows(opt, port);
     memset(&mem, 0, sizeof mem);
     mem.band_rows = (uint32_t)band_rows;
-    diffusing = port->format == STP_PIXEL_MONO1 &&
-                stp_tool_diffusion(opt, (uint32_t)opt->width, &diffusion) != 0;
+    one_bit = port->format == STP_PIXEL_MONO1 || port->format == STP_PIXEL_MONO1_PAGES;
+    diffusing = one_bit && stp_tool_diffusion(opt, (uint32_t)opt->width, &diffusion) != 0;
     /* error diffusion and edge anti-aliasing draw a 1-bit band as GREY8 (render.h, stp_output) */
-    mem.band_size = stp_row_bytes(diffusing || (opt->edge_aa && port->format == STP_PIXEL_MONO1)
-                                      ? STP_PIXEL_GREY8
-                                      : port->format,
-                                  (uint32_t)opt->width) *
-                    (size_t)band_rows;
+    mem.band_size = stp_tool_band_bytes(diffusing || (opt->edge_aa && one_bit) ? STP_PIXEL_GREY8 : port->format,
+                                        (uint32_t)opt->width, band_rows);
     band = malloc(mem.band_size);
     mem.band = band;
     if (opt->hidden == STP_HIDDEN_ZBUFFER) {

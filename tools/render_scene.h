@@ -60,7 +60,7 @@ typedef struct stp_tool_options {
                                 large polygons are split first (subdivide.h) */
     int subdivided;          /* 1: smooth polygons already split (internal) */
     int edge_aa;             /* 1: anti-aliased polygon edges (stp_output.edge_aa) (0) */
-    int band_rows;           /* 0: whole frame */
+    int band_rows;           /* 0: whole frame (page ports: rounded up to 8) */
     double background;       /* BKGRND, the indirect share (0.2) */
     double brightness;       /* BRIGHT (1) */
     double attenuation_c;    /* C of 1/(C+U) (1) */
@@ -201,6 +201,15 @@ void stp_tool_material(const stp_scene_material *m, int colour, stp_material *ou
 
 /* Double to stp_fix, saturating. */
 stp_fix stp_tool_fix(double v);
+
+/* The rows of a band the options ask for on port: band_rows, or the whole
+ * frame for 0 or more; on a page port (STP_PIXEL_MONO1_PAGES) rounded up
+ * to whole pages of 8 rows, which it takes (port.h). */
+int stp_tool_band_rows(const stp_tool_options *opt, const stp_port *port);
+
+/* Bytes of a band of rows rows of width pixels in format: rows rows, or
+ * (rows + 7) / 8 pages of width bytes (STP_PIXEL_MONO1_PAGES). */
+size_t stp_tool_band_bytes(stp_pixel_format format, uint32_t width, int rows);
 
 /* The error diffusion the options ask for, for rows of width pixels:
  * 1 with d filled and d->errors allocated (the caller frees it), 0 when the

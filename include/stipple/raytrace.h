@@ -246,8 +246,10 @@ int stp_rt_trace_pixel(stp_raytracer *rt, uint32_t x, uint32_t y, const stp_fix 
  * against its own threshold, as smooth polygons), as stp_renderer_render does.
  * output: hidden is ignored; background and background_colour give the
  * misses.  band: band_rows * stp_row_bytes(format, width) bytes (GREY8 rows
- * when output->diffusion diffuses a MONO1 picture).  Errors:
- * STP_ERR_ARG, STP_ERR_MEMORY (band too small), STP_ERR_PORT. */
+ * when output->diffusion diffuses a 1-bit picture; STP_PIXEL_MONO1_PAGES:
+ * (band_rows + 7) / 8 pages of width bytes).  Errors: STP_ERR_ARG
+ * (also a STP_PIXEL_MONO1_PAGES port with band_rows neither a multiple of 8
+ * nor the height), STP_ERR_MEMORY (band too small), STP_ERR_PORT. */
 int stp_rt_render(stp_raytracer *rt, stp_port *port, const stp_output *output, uint8_t *band,
                   size_t band_size, uint32_t band_rows);
 

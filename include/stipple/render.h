@@ -452,13 +452,15 @@ stp_fix stp_renderer_last_shade(const stp_renderer *r);
 /* Everything about how the display file meets the device. */
 typedef struct stp_output {
     stp_hidden hidden;
-    const stp_cell *cell;            /* MONO1: halftone cell (NULL: Bayer 4x4) */
+    const stp_cell *cell;            /* MONO1, MONO1_PAGES: halftone cell
+                                        (NULL: Bayer 4x4) */
     const uint8_t *gamma;            /* levels entries, style index-1 -> 0..255;
                                         NULL: linear (index-1)*255/(levels-1) */
     const stp_style_table *styles;   /* STYLE8: codes; NULL: the index itself */
     stp_fix background;              /* shade of the empty frame, [0, 1] */
     const stp_fix *background_colour; /* RGB888: its colour (3 shades), or NULL */
-    const stp_diffusion *diffusion;  /* MONO1: error diffusion instead of the
+    const stp_diffusion *diffusion;  /* MONO1, MONO1_PAGES: error diffusion
+                                        instead of the
                                         cell (NULL: the cell).  The band is
                                         drawn as GREY8 and diffused row by
                                         row as it is flushed, so it needs
@@ -479,8 +481,12 @@ typedef struct stp_output {
 } stp_output;
 
 /* Memory the caller lends to one stp_renderer_render call.
- *   band, band_size     pixel rows: band_rows * stp_row_bytes(format, width)
- *   band_rows           rows per band, 1..height
+ *   band, band_size     pixel rows: band_rows * stp_row_bytes(format,
+ *                       width) (GREY8 rows for a 1-bit port the output
+ *                       diffuses or anti-aliases); STP_PIXEL_MONO1_PAGES:
+ *                       (band_rows + 7) / 8 pages of width bytes
+ *   band_rows           rows per band, 1..height; STP_PIXEL_MONO1_PAGES:
+ *                       a multiple of 8, or the height (port.h)
  *   zbuf, zbuf_count    STP_HIDDEN_ZBUFFER: width * band_rows entries
  *   sort, sort_count    STP_HIDDEN_PAINTER: stp_renderer_polygon_count() entries
  *   setup, setup_count  optional (NULL, 0: none), STP_HIDDEN_ZBUFFER:
@@ -529,8 +535,9 @@ size_t stp_frame_memory_bytes(const stp_port *port, stp_hidden hidden, uint32_t 
  * of a stp_renderer_render call for port and output (NULL: stp_output_default): the
  * painter's sort array first (stp_renderer_polygon_count(r) entries, so call it after
  * the last polygon), then for the Z buffer one 16-bit entry per pixel of a
- * band, then the band (of GREY8 rows for a MONO1 port the output diffuses or
- * anti-aliases), with as many rows as fit, at most port->height.
+ * band, then the band (of GREY8 rows for a 1-bit port the output diffuses or
+ * anti-aliases), with as many rows as fit, at most port->height (for a
+ * STP_PIXEL_MONO1_PAGES port whole pages of 8 rows, or the whole height).
  * More rows: fewer passes over the display file (the picture is the same).
  * Errors: STP_ERR_ARG (a NULL argument; r may be NULL unless the method is
  * the painter's; an unknown pixel format), STP_ERR_MEMORY (not even one row
@@ -541,7 +548,9 @@ int stp_frame_memory_split(stp_frame_memory *memory, const stp_renderer *r, cons
 /* Interpret the display file and send the picture to the port, band by band
  * (the display file is re-read for each band; the result is the same pixel
  * for pixel whatever the band height).  The port's size must be the
- * renderer's.  output NULL: stp_output_default's.  Errors: STP_ERR_ARG,
+ * renderer's.  output NULL: stp_output_default's.  Errors: STP_ERR_ARG
+ * (also a STP_PIXEL_MONO1_PAGES port with band_rows neither a multiple of 8
+ * nor the height),
  * STP_ERR_MEMORY (a buffer too small, a setup array given with fewer than
  * stp_renderer_polygon_count() entries),
  * STP_ERR_UNSUPPORTED (a hidden-surface method compiled out; edge_aa of a

@@ -168,9 +168,8 @@ void stp_panel_pack_page(const uint8_t *pixels, size_t stride, uint32_t width, u
     }
 }
 
-int stp_panel_send_mono_page(const stp_panel_controller *c, const stp_panel_bus *bus,
-                             uint32_t page, const uint8_t *pixels, size_t stride,
-                             uint32_t width, uint8_t *scratch)
+int stp_panel_send_page(const stp_panel_controller *c, const stp_panel_bus *bus, uint32_t page,
+                        const uint8_t *columns, uint32_t width)
 {
     int status;
     uint32_t col = c->column_offset;
@@ -186,8 +185,15 @@ int stp_panel_send_mono_page(const stp_panel_controller *c, const stp_panel_bus 
     cmd = (uint8_t)(c->column_high_command | (col >> 4));
     if ((status = bus->command(bus->ctx, &cmd, 1)) != 0)
         return status;
+    return bus->data(bus->ctx, columns, width);
+}
+
+int stp_panel_send_mono_page(const stp_panel_controller *c, const stp_panel_bus *bus,
+                             uint32_t page, const uint8_t *pixels, size_t stride,
+                             uint32_t width, uint8_t *scratch)
+{
     stp_panel_pack_page(pixels, stride, width, scratch);
-    return bus->data(bus->ctx, scratch, width);
+    return stp_panel_send_page(c, bus, page, scratch, width);
 }
 
 int stp_panel_window_counters_all(const stp_panel_controller *c, const stp_panel_bus *bus)

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* Bands of any height onto an 8-row-page controller (stp_panel.h,
- * stp_panel_pages). */
+/* Bands onto an 8-row-page controller (stp_panel.h): MONO1 rows of any
+ * height gathered into pages (stp_panel_pages), or page bands
+ * (STP_PIXEL_MONO1_PAGES) sent as they are. */
 #include "stp_panel.h"
 
 #define PAGE_ROWS 8u
@@ -32,6 +33,20 @@ int stp_panel_pages_put(const stp_panel_pages *p, uint32_t y0, uint32_t rows,
                 return status;
         }
         r++;
+    }
+    return 0;
+}
+
+int stp_panel_pages_send(const stp_panel_controller *c, const stp_panel_bus *bus, uint32_t y0,
+                         uint32_t rows, const uint8_t *pages, size_t stride, uint32_t width)
+{
+    uint32_t k, count = (rows + PAGE_ROWS - 1u) / PAGE_ROWS;
+    if (y0 % PAGE_ROWS != 0)
+        return -1;
+    for (k = 0; k < count; k++) {
+        int status = stp_panel_send_page(c, bus, y0 / PAGE_ROWS + k, pages + (size_t)k * stride, width);
+        if (status != 0)
+            return status;
     }
     return 0;
 }

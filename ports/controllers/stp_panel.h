@@ -215,6 +215,12 @@ void stp_panel_pack_page(const uint8_t *pixels, size_t stride, uint32_t width, u
  * streams a page packs it a block at a time, with no page buffer. */
 void stp_panel_pack_block(const uint8_t *rows, size_t stride, uint8_t out[8]);
 
+/* PAGES controllers: send page `page` (rows 8 page .. 8 page + 7) as it
+ * is: columns holds width bytes in the panel's layout (column x in byte x,
+ * least significant bit on top: STP_PIXEL_MONO1_PAGES, port.h). */
+int stp_panel_send_page(const stp_panel_controller *c, const stp_panel_bus *bus, uint32_t page,
+                        const uint8_t *columns, uint32_t width);
+
 /* PAGES controllers: send one 8-row page of a MONO1 picture (rows
  * 8*page .. 8*page+7 at pixels, stride apart), through scratch (width
  * bytes). */
@@ -240,6 +246,14 @@ typedef struct stp_panel_pages {
  * stp_port flush does.  Returns 0, or the bus error. */
 int stp_panel_pages_put(const stp_panel_pages *p, uint32_t y0, uint32_t rows,
                         const uint8_t *pixels, size_t stride);
+
+/* PAGES controllers fed a STP_PIXEL_MONO1_PAGES band, as a stp_port flush
+ * is: rows [y0, y0 + rows) in (rows + 7) / 8 pages of width bytes, stride
+ * bytes apart, each sent as it is (no packing, no buffer).  y0 must be a
+ * multiple of 8 (stp_renderer_render's page bands are).  Returns 0, -1 for
+ * a y0 within a page, or the bus error. */
+int stp_panel_pages_send(const stp_panel_controller *c, const stp_panel_bus *bus, uint32_t y0,
+                         uint32_t rows, const uint8_t *pages, size_t stride, uint32_t width);
 
 /* WINDOW_COUNTERS controllers: set the RAM window to the visible area
  * (columns from column_offset), the counters to its first pixel, and send

@@ -210,6 +210,8 @@ static const char *format_name(int f)
         return "RGB888";
     case STP_PIXEL_STYLE8:
         return "STYLE8";
+    case STP_PIXEL_MONO1_PAGES:
+        return "MONO1_PAGES";
     }
     return "?";
 }
@@ -455,8 +457,8 @@ static int open_spi(stp_device *d, const char *spec, const spec_parts *s,
     if (!d->spi)
         return -1;
     d->port = stp_spipanel_port(d->spi);
-    snprintf(d->description, sizeof d->description, "%s %ux%u MONO1 on %s", c->name,
-             (unsigned)c->width, (unsigned)c->height, s->target);
+    snprintf(d->description, sizeof d->description, "%s %ux%u %s on %s", c->name, (unsigned)c->width,
+             (unsigned)c->height, format_name(d->port->format), s->target);
     return 0;
 }
 

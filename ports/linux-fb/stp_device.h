@@ -82,7 +82,7 @@ stp_device *stp_device_open(const char *spec, const stp_device_options *opt, cha
 /* The port to render into (valid until close): width, height, format. */
 stp_port *stp_device_port(stp_device *d);
 
-/* What was opened, for messages: "SSD1306 128x64 MONO1 on /dev/spidev0.0". */
+/* What was opened, for messages: "SSD1306 128x64 MONO1_PAGES on /dev/spidev0.0". */
 const char *stp_device_describe(const stp_device *d);
 
 /* Why the port's flush failed during a render ("" if it did not). */

@@ -34,8 +34,7 @@ struct stp_spipanel {
     int vcom_level;        /* software VCOM (M1) */
     char after[40];        /* the last thing sent: "after command 0x12" */
     char stage[40];        /* what is being done: "init", "page 3", ... */
-    size_t mono_row_bytes; /* a MONO1 row of the panel's width */
-    uint8_t *page;         /* PAGES: 8 MONO1 rows */
+    size_t mono_row_bytes; /* a MONO1 row of the panel's width (PAGES: a page) */
     uint8_t *frame;        /* WINDOW_COUNTERS: height packed rows */
     uint8_t *buf;          /* LINES: one write; others: packing scratch */
     size_t sent;           /* bytes sent since the frame began */
@@ -231,23 +230,21 @@ static int run_sequence(stp_spipanel *p, const uint8_t *seq, uint16_t length, co
 
 /* ----------------------------------------------------------------- flush */
 
-/* PAGES: gather rows into the 8-row page; send each page when complete. */
+/* PAGES: a STP_PIXEL_MONO1_PAGES band, each page sent as it is (the
+ * renderer's bands start on pages; a short last page's rows below are 0). */
 static int flush_pages(stp_spipanel *p, uint32_t y0, uint32_t rows, const uint8_t *pixels,
                        size_t stride)
 {
     const stp_panel_controller *c = p->c;
-    size_t rb = p->mono_row_bytes;
-    uint32_t r;
-    for (r = 0; r < rows; r++) {
-        uint32_t y = y0 + r;
-        memcpy(p->page + (size_t)(y & 7u) * rb, pixels + (size_t)r * stride, rb);
-        if ((y & 7u) == 7u || y == c->height - 1u) {
-            if ((y & 7u) != 7u) /* a short last page: the rows below are OFF */
-                memset(p->page + (size_t)((y & 7u) + 1u) * rb, 0, (7u - (y & 7u)) * rb);
-            snprintf(p->stage, sizeof p->stage, "page %u", (unsigned)(y >> 3));
-            if (stp_panel_send_mono_page(c, &p->bus, y >> 3, p->page, rb, c->width, p->buf) != 0)
-                return -1;
-        }
+    uint32_t k;
+    if (y0 % 8u != 0) {
+        panel_err(p, "band at row %u: a page band starts on a page (a multiple of 8)", (unsigned)y0);
+        return -1;
+    }
+    for (k = 0; k < (rows + 7u) / 8u; k++) {
+        snprintf(p->stage, sizeof p->stage, "page %u", (unsigned)(y0 / 8u + k));
+        if (stp_panel_send_page(c, &p->bus, y0 / 8u + k, pixels + (size_t)k * stride, c->width) != 0)
+            return -1;
     }
     return 0;
 }
@@ -331,7 +328,7 @@ static int port_flush(stp_port *port, uint32_t y0, uint32_t rows, const uint8_t 
         return -1;
     c = p->c;
     if (!pixels || y0 >= c->height || rows > c->height - y0 ||
-        (rows > 1 && stride < p->mono_row_bytes)) {
+        (rows > (c->addressing == STP_PANEL_PAGES ? 8u : 1u) && stride < p->mono_row_bytes)) {
         panel_err(p, "band of rows %u..+%u (stride %zu) does not fit the %ux%u panel",
                   (unsigned)y0, (unsigned)rows, stride, (unsigned)c->width, (unsigned)c->height);
         return -1;
@@ -436,7 +433,7 @@ stp_spipanel *stp_spipanel_open(const char *path, const stp_panel_controller *c,
     p->speed_hz = opt.speed_hz ? opt.speed_hz : c->spi_hz;
     p->busy_timeout_ms = opt.busy_timeout_ms;
     p->dc_level = -1;
-    p->mono_row_bytes = ((size_t)c->width + 7u) / 8u;
+    p->mono_row_bytes = c->addressing == STP_PANEL_PAGES ? (size_t)c->width : ((size_t)c->width + 7u) / 8u;
     snprintf(p->after, sizeof p->after, "before any command");
     p->bus.command = bus_command;
     p->bus.data = bus_data;
@@ -492,19 +489,17 @@ stp_spipanel *stp_spipanel_open(const char *path, const stp_panel_controller *c,
         return NULL;
     }
     p->buf = malloc(bufsize);
-    if (c->addressing == STP_PANEL_PAGES)
-        p->page = calloc(8, p->mono_row_bytes);
     if (c->addressing == STP_PANEL_WINDOW_COUNTERS)
         p->frame = calloc(c->height, stp_panel_row_bytes(c, c->width));
-    if (!p->buf || (c->addressing == STP_PANEL_PAGES && !p->page) ||
-        (c->addressing == STP_PANEL_WINDOW_COUNTERS && !p->frame)) {
+    if (!p->buf || (c->addressing == STP_PANEL_WINDOW_COUNTERS && !p->frame)) {
         stp_error_set(err, errlen, "spi %s: out of memory", path);
         stp_spipanel_close(p);
         return NULL;
     }
     p->port.width = c->width;
     p->port.height = c->height;
-    p->port.format = STP_PIXEL_MONO1;
+    /* a page controller takes the renderer's pages as they are */
+    p->port.format = c->addressing == STP_PANEL_PAGES ? STP_PIXEL_MONO1_PAGES : STP_PIXEL_MONO1;
     p->port.flush = port_flush;
     p->port.user = p;
 
@@ -578,7 +573,6 @@ void stp_spipanel_close(stp_spipanel *p)
     if (p->fd >= 0)
         close(p->fd);
     free(p->buf);
-    free(p->page);
     free(p->frame);
     free(p);
 }

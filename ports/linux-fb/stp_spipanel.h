@@ -21,15 +21,18 @@
  * their firmware buses only, are refused.
  *
  * The port (stp_spipanel_port): width x height of the controller, format
- * STP_PIXEL_MONO1 only.  stipple's MONO1 bit 1 = ON = light.  ON becomes:
+ * STP_PIXEL_MONO1_PAGES for page controllers (SSD1306: the renderer writes
+ * the panel's own layout), STP_PIXEL_MONO1 for the others.  Bit 1 = ON =
+ * light in both.  ON becomes:
  *   SSD1306: a lit pixel (RAM bit 1, normal display mode);
  *   Sharp:   a white pixel (data bit 1 = white);
  *   SSD1680: a white pixel (B/W RAM bit 1 = white).
  * Orientation: each panel's own; no rotation, no column offset (pixel (0, 0)
  * is RAM column 0 of page 0 / gate line 1 / RAM X 0, Y 0).  Bands of any
  * height arrive top to bottom:
- *   SSD1306 (pages of 8 rows): rows are gathered in an 8-row page buffer;
- *     a page goes out when its last row (or the frame's last row) arrives.
+ *   SSD1306 (pages of 8 rows): each page of a band goes out as it is (no
+ *     packing, no buffer); bands start on pages (port.h: stp_renderer_render
+ *     takes whole pages), a band at another row is refused.
  *   Sharp (line records): each band's lines are written at once.
  *   SSD1680 (RAM window + refresh): the rows are gathered in a frame buffer
  *     the port allocates; after the frame's last row the whole RAM is

@@ -21,6 +21,8 @@ size_t stp_posix_priv_row_bytes(stp_pixel_format fmt, uint32_t width)
         return (size_t)width;
     case STP_PIXEL_RGB888:
         return (size_t)width * 3u;
+    case STP_PIXEL_MONO1_PAGES: /* a panel's layout: posix frames hold rows */
+        return 0;
     }
     return 0;
 }
@@ -47,6 +49,8 @@ const char *stp_posix_priv_format_name(stp_pixel_format fmt)
         return "RGB888";
     case STP_PIXEL_STYLE8:
         return "STYLE8";
+    case STP_PIXEL_MONO1_PAGES:
+        return "MONO1_PAGES";
     }
     return "unknown-format";
 }
@@ -221,6 +225,8 @@ stp_posix_file_kind stp_posix_kind_for_format(stp_pixel_format fmt)
         return STP_POSIX_FILE_P6;
     case STP_PIXEL_STYLE8:
         return STP_POSIX_FILE_ASCII;
+    case STP_PIXEL_MONO1_PAGES: /* no file holds pages */
+        return STP_POSIX_FILE_UNKNOWN;
     }
     return STP_POSIX_FILE_UNKNOWN;
 }

@@ -8,7 +8,8 @@
 #
 # run_avr_test.sh SOURCE_DIR WORK_DIR STIPPLE SIM SCENE
 # Exit status: 0 pass, 1 fail, 77 tools missing (skipped).
-# Environment: STP_FW_BAND_ROWS (4), STP_BUILD_TIMEOUT (600 s).
+# Environment: STP_FW_BAND_ROWS (4; the firmware rounds it up to whole 8-row
+# pages), STP_BUILD_TIMEOUT (600 s).
 set -eu
 if [ $# -ne 5 ]; then
     echo "usage: $0 SOURCE_DIR WORK_DIR STIPPLE SIM SCENE" >&2

@@ -81,7 +81,8 @@ static void render_bands(spi_sim *sim, stp_spipanel *p, const char *scene_name, 
     stp_posix_frame want;
     size_t i;
     stp_port *port = stp_spipanel_port(p);
-    assert_int_equal(port->format, STP_PIXEL_MONO1);
+    /* a page controller takes pages (bands of 1 and 3 rows become 8) */
+    assert_true(port->format == STP_PIXEL_MONO1 || port->format == STP_PIXEL_MONO1_PAGES);
     stp_test_load_scene(scene_name, &scene);
     spi_expected_render(&scene, port->width, port->height, &want);
     for (i = 0; i < sizeof band_heights / sizeof band_heights[0]; i++) {
@@ -111,9 +112,17 @@ static void test_ssd1306_scene(void **state)
     assert_int_equal(stp_spipanel_max_transfer(p), 4096); /* no bufsiz file: spidev's default */
     assert_int_equal(sim->resets, 1);
     assert_int_equal(sim->mode & 0xFF, 0); /* mode 0, chip select active low */
+    assert_int_equal(stp_spipanel_port(p)->format, STP_PIXEL_MONO1_PAGES);
     render_bands(sim, p, "tetra-s1.nff", "ssd1306-tetra");
     assert_int_equal(sim->speed_min, 8000000);
     assert_int_equal(sim->speed_max, 8000000);
+    {
+        /* a page band must start on a page */
+        static const uint8_t page[128];
+        stp_port *port = stp_spipanel_port(p);
+        assert_int_equal(port->flush(port, 3, 5, page, 128), -1);
+        assert_non_null(strstr(stp_spipanel_error(p), "starts on a page"));
+    }
     stp_spipanel_close(p);
     assert_clean(sim);
     spi_sim_free(sim);
