@@ -335,7 +335,8 @@ static int render_once(state *st, const render_args *a, fault f, uint32_t fail_a
     memset(&mem, 0, sizeof mem);
     cap.port.width = st->width;
     cap.port.height = st->height;
-    cap.port.format = f == FAULT_FORMAT ? (stp_pixel_format)4 : a->format;
+    /* an unknown format: the first value past the last one */
+    cap.port.format = f == FAULT_FORMAT ? (stp_pixel_format)(STP_PIXEL_MONO1_PAGES + 1) : a->format;
     cap.port.flush = capture_flush;
     cap.port.user = &cap;
     cap.stride = stride;
