@@ -72,9 +72,9 @@ static int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
     STP_UNROLL3
     for (j = 0; j < 3; j++) {
         uint32_t x = (uint32_t)stp_vec3_comp(a, j), y = (uint32_t)stp_vec3_comp(b, j), v = x - y;
-        if ((((x ^ y) & (x ^ v)) & 0x80000000u) != 0 || v + (uint32_t)(COORD_LIMIT - 1) > 2u * (uint32_t)(COORD_LIMIT - 1))
+        if (((x ^ y) & (x ^ v) & 0x80000000u) != 0 || !in_coord_range((int32_t)v))
             return 0;
-        d[j] = (int32_t)(x - y);
+        d[j] = (int32_t)v;
     }
     return 1;
 }

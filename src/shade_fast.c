@@ -192,24 +192,17 @@ static stp_sf16 sf_mul(stp_sf16 a, stp_sf16 b)
     return r;
 }
 
-/* 1/a for a != 0 from m = 2^31 / a.m, in (2^15, 2^16] (recip16's, or the
- * compact route's exact quotient) */
-STP_HOT_INLINE stp_sf16 sf_recip_of(uint32_t m, stp_sf16 a)
+/* 1/a for a != 0: m = recip16's 2^31 / a.m, in (2^15, 2^16] */
+STP_HOT_INLINE stp_sf16 sf_recip(stp_sf16 a)
 {
     stp_sf16 r;
-    r.m = m;
+    r.m = recip16(a.m);
     r.e = 31 - a.e;
     if (r.m > 0xFFFFu) { /* a.m = 2^15 exactly */
         r.m >>= 1;
         r.e--;
     }
     return r;
-}
-
-/* 1/a for a != 0 */
-STP_HOT_INLINE stp_sf16 sf_recip(stp_sf16 a)
-{
-    return sf_recip_of(recip16(a.m), a);
 }
 
 /* a with b's exponent difference d >= 0 (a >= b) aligned: b.m >> d */
@@ -286,7 +279,8 @@ static int is_big(stp_vec3 a)
  * 2^30: the difference then fits int32) */
 STP_INDEX_INLINE int32_t diff_comp(const stp_vec3 *a, const stp_vec3 *b, int i, int big)
 {
-    return big ? stp_asr32(stp_vec3_comp(a, i), 1) - stp_asr32(stp_vec3_comp(b, i), 1) : stp_vec3_comp(a, i) - stp_vec3_comp(b, i);
+    return big ? stp_asr32(stp_vec3_comp(a, i), 1) - stp_asr32(stp_vec3_comp(b, i), 1)
+               : stp_vec3_comp(a, i) - stp_vec3_comp(b, i);
 }
 
 /* a - b scaled to 16 bits (stp_shade_fast_dir) and, when need_r, its
