@@ -50,6 +50,24 @@ static inline void stp_halftone_fill_page_run(uint8_t *page, uint8_t page_bit, u
 static inline void stp_halftone_fill_bits(uint8_t *line, uint8_t page_bit, unsigned x1, unsigned x2,
                                           uint8_t pattern)
 {
+#if defined(__OPTIMIZE_SIZE__)
+    /* a build for size: one loop of masked stores, the first byte's mask
+     * cut at x1, the last's at x2 (the same bytes as below) */
+    unsigned i = x1 >> 3, last = x2 >> 3;
+    uint8_t mask = (uint8_t)(0xFFu >> (x1 & 7u));
+    if (page_bit) {
+        stp_halftone_fill_page_run(line, page_bit, x1, x2, pattern);
+        return;
+    }
+    for (;; i++) {
+        if (i == last)
+            mask = (uint8_t)(mask & (0xFF00u >> ((x2 & 7u) + 1u)));
+        line[i] = (uint8_t)((line[i] & ~mask) | (pattern & mask));
+        if (i == last)
+            return;
+        mask = 0xFFu;
+    }
+#else
     unsigned first = x1 >> 3, last = x2 >> 3, b;
     uint8_t head = (uint8_t)(0xFFu >> (x1 & 7u)), tail = (uint8_t)(0xFFu << (7u - (x2 & 7u)));
     if (page_bit) {
@@ -65,6 +83,7 @@ static inline void stp_halftone_fill_bits(uint8_t *line, uint8_t page_bit, unsig
     for (b = first + 1; b < last; b++)
         line[b] = pattern;
     line[last] = (uint8_t)((line[last] & ~tail) | (pattern & tail));
+#endif
 }
 
 /* Pixel x of a band line in either stp_band_layout (line and page_bit as

@@ -90,6 +90,36 @@ static void test_exact(void **state)
     assert_true(small > 100000 && small < 1900000);
 }
 
+/* The 32-bit difference of a point below 2^28 and an eye within int32
+ * at its edges: exactly -2^31 (saturated to STP_FIX_MIN, -(2^31 - 1)),
+ * wrapping below and above int32, and just inside it. */
+static void test_edges(void **state)
+{
+    static const int32_t cases[][2] = {
+        /* p.x, from.x: view x = p.x - from.x with the identity axes */
+        {-(1 << 27), 2013265920},         /* -2^31 exactly */
+        {-(1 << 27), INT32_MAX},          /* below -2^31: wraps */
+        {(1 << 27), -INT32_MAX},          /* above 2^31 - 1: wraps */
+        {(1 << 27) - 1, -2013265920},     /* 2^31 - 1 exactly */
+        {-(1 << 27) + 1, 2013265920},     /* -2^31 + 1 exactly */
+        {5, 3},
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        stp_view_transform t;
+        stp_vec3 right = {65536, 0, 0}, up = {0, 65536, 0}, forward = {0, 0, 65536}, from, p, out;
+        from.x = cases[i][1];
+        from.y = from.z = 0;
+        p.x = cases[i][0];
+        p.y = p.z = 0;
+        stp_view_transform_of_axes(right, up, forward, from, &t);
+        stp_view_transform_point(&t, p, &out);
+        assert_int_equal(out.x, reference(p, t.right, t.from_right));
+        assert_int_equal(out.y, 0);
+    }
+}
+
 /* floor(v / 2^s) of a 64-bit value, by plain division (no shift of a
  * negative value) */
 static int64_t floor_div_pow2(int64_t v, int s)
@@ -133,6 +163,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_exact),
+        cmocka_unit_test(test_edges),
         cmocka_unit_test(test_perspective),
     };
     return cmocka_run_group_tests(tests, 0, 0);
