@@ -15,7 +15,8 @@
 #   m0plus_full     the defaults on the 32-bit target arithmetic
 #                   (STP_WIDE_ARITH=0: no 32 x 32 -> 64 multiply, no count
 #                   of leading zeros, no hardware divide, as on a Cortex-M0+)
-#   m0plus_minimal  the least core a flat scene needs, on the same arithmetic
+#   m0plus_minimal  the least core a flat scene on a panel of rows needs, on
+#                   the same arithmetic
 #   avr             a compiled scene's switches (`stipple compile`), on the
 #                   same arithmetic
 #   arduino         the Arduino library's switches (ports/arduino/src/
@@ -24,7 +25,7 @@
 #                   32-bit multiply either: STP_HAVE_MUL32=0)
 set(STP_CONFIG_m0plus_full STP_WIDE_ARITH=0)
 set(STP_CONFIG_m0plus_minimal STP_WIDE_ARITH=0 STP_WITH_GOURAUD=0 STP_WITH_COLOUR=0 STP_WITH_TRANSPARENCY=0
-    STP_WITH_SHADOWS=0 STP_WITH_RAYTRACE=0 STP_WITH_EDGE_AA=0 STP_VERTEX_CACHE=0)
+    STP_WITH_SHADOWS=0 STP_WITH_RAYTRACE=0 STP_WITH_EDGE_AA=0 STP_VERTEX_CACHE=0 STP_WITH_PAGES=0)
 set(STP_CONFIG_avr STP_WIDE_ARITH=0 STP_WITH_SPECULAR=0 STP_MAX_LIGHTS=1 STP_MAX_SEGMENTS=1
     STP_WITH_LINES=0 STP_WITH_GOURAUD=0 STP_WITH_COLOUR=0 STP_WITH_TRANSPARENCY=0 STP_WITH_SHADOWS=0
     STP_VERTEX_CACHE=0 STP_WITH_EDGE_AA=0 STP_WITH_RAYTRACE=0 STP_WITH_PAINTER=0)

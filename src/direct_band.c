@@ -131,6 +131,12 @@ static void draw_face(const stp_direct_frame *f, const stp_direct_point *p[3], u
     }
 }
 
+/* the arrays f points to are there */
+static int frame_arrays(const stp_direct_frame *f)
+{
+    return f->mesh != 0 && f->points != 0 && f->faces != 0 && f->cell != 0;
+}
+
 /* The page shift of f's layout (0 rows, 3 pages) and the band's lines
  * (rows or pages) for a band of rows rows at y0, stride bytes a line; -1
  * when the arguments do not fit (direct.h). */
@@ -151,9 +157,10 @@ int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride
     size_t i, lines;
     uint16_t t;
     int page_shift;
-    if (f == 0 || band == 0 || f->mesh == 0 || f->points == 0 || f->faces == 0 || f->cell == 0 || rows == 0 ||
-        (uint32_t)y0 + rows > f->height)
+    if (f == 0 || band == 0 || !frame_arrays(f) || rows == 0 || (uint32_t)y0 + rows > f->height)
         return STP_ERR_ARG;
+    if (!STP_WITH_PAGES && f->layout == STP_BAND_PAGES)
+        return STP_ERR_UNSUPPORTED; /* the page layout compiled out (config.h) */
     page_shift = band_shape(f, stride, y0, rows, &lines);
     if (page_shift < 0)
         return STP_ERR_ARG;

@@ -168,14 +168,18 @@ typedef struct frame {
  * byte of its page, written at page_bit_of(fr, y). */
 static uint8_t *band_row(const frame *fr, uint32_t y)
 {
-    return fr->band + (size_t)((y - fr->y0) >> fr->line_shift) * fr->stride;
+    return fr->band + (size_t)((y - fr->y0) >> (STP_WITH_PAGES ? fr->line_shift : 0u)) * fr->stride;
 }
+
+/* The port's format is the page layout: never without STP_WITH_PAGES,
+ * whose renders of it are refused (render_check_memory). */
+#define PAGES_FORMAT(format) (STP_WITH_PAGES && (format) == STP_PIXEL_MONO1_PAGES)
 
 /* The page bit of row y (stp_halftone_fill_bits): 0 for rows; bands
  * start on page boundaries (y0 a multiple of 8). */
 static uint8_t page_bit_of(const frame *fr, uint32_t y)
 {
-    return (uint8_t)(fr->page_one << (y & 7u));
+    return STP_WITH_PAGES ? (uint8_t)(fr->page_one << (y & 7u)) : 0u;
 }
 
 /* 8-bit drive value of a style index (gamma table or linear); index is a
@@ -580,7 +584,7 @@ static uint8_t pattern_of_row(const frame *fr, uint32_t y)
  * the rows' run filler keeps no page test) */
 static void put_span_z_direct(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int32_t di, int32_t dstep)
 {
-    if (fr->page_one)
+    if (STP_WITH_PAGES && fr->page_one)
         span_z_direct(z_row(fr, y), band_row(fr, y), page_bit_of(fr, y), pattern_of_row(fr, y), x1, x2, di, dstep);
     else
         span_z_direct(z_row(fr, y), band_row(fr, y), 0, pattern_of_row(fr, y), x1, x2, di, dstep);
@@ -1317,7 +1321,7 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
             return; /* no pixel centre */
 #if STP_WITH_ZBUFFER
     if (use_z) {
-        if (fr->page_one)
+        if (STP_WITH_PAGES && fr->page_one)
             tri_draw_z_pages(fr, at, v, style, t, ordinal, w, p1, p2);
         else
             tri_draw_z(fr, at, v, style, t, ordinal, &w, p1, p2, 0);
@@ -1803,6 +1807,8 @@ static int render_check_memory(const stp_renderer *r, const stp_port *port, cons
                                const stp_frame_memory *mem, stp_pixel_format drawn)
 {
     size_t stride = stp_row_bytes(drawn, port->width);
+    if (!STP_WITH_PAGES && port->format == STP_PIXEL_MONO1_PAGES)
+        return STP_ERR_UNSUPPORTED;
     if (stride == 0 || mem->band_rows < 1 || mem->band_rows > r->height)
         return STP_ERR_ARG;
     if (port->format == STP_PIXEL_MONO1_PAGES && mem->band_rows % 8u != 0 && mem->band_rows != r->height)
@@ -1957,7 +1963,7 @@ static void render_band_clear(frame *fr, const stp_port *drawn, stp_hidden hidde
 {
     const stp_renderer *r = fr->r;
     uint32_t y, y0 = fr->y0;
-    int cleared = drawn->format == STP_PIXEL_MONO1_PAGES ? band_clear_pages(fr, background)
+    int cleared = PAGES_FORMAT(drawn->format) ? band_clear_pages(fr, background)
                                                          : band_clear_uniform(fr, drawn, background);
     for (y = cleared ? y0 + fr->rows : y0; y < y0 + fr->rows; y++) {
         /* MONO1 padding bits past the width reach the port too: make
@@ -2106,7 +2112,7 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
         render_band_clear(&fr, drawn, output->hidden, background_style);
         render_band_draw(&fr, output->hidden, mem, polygons);
         if (drawn == &grey_port)
-            render_band_threshold(&fr, output, port->format == STP_PIXEL_MONO1_PAGES);
+            render_band_threshold(&fr, output, PAGES_FORMAT(port->format));
         if (port->flush(port, y0, fr.rows, fr.band, fr.stride) < 0)
             return STP_ERR_PORT;
     }

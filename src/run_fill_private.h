@@ -8,7 +8,7 @@
 
 #include <stdint.h>
 
-#include "stipple/dither.h" /* stp_band_layout */
+#include "stipple/dither.h" /* stp_band_layout; STP_WITH_PAGES (config.h) */
 
 /* The page layout's run (stp_halftone_fill_bits): byte x of the page gets
  * bit page_bit from the pattern's bit 7 - (x mod 8).  Walked by pointer
@@ -40,7 +40,9 @@ static inline void stp_halftone_fill_page_run(uint8_t *page, uint8_t page_bit, u
     } while (p++ != last);
 }
 
-/* Pixels x1..x2 (x1 <= x2 < 32768: a port's width, so unsigned, 16 bits
+/* (STP_WITH_PAGES 0: page_bit is taken as 0, and the page path is not
+ * compiled: no caller passes one, they are refused before.)
+ * Pixels x1..x2 (x1 <= x2 < 32768: a port's width, so unsigned, 16 bits
  * on an 8-bit core) of one band row from a pattern byte (pixel x takes
  * bit 7 - (x mod 8) of pattern), in either stp_band_layout:
  *   page_bit 0: line is a STP_BAND_ROWS row (MSB first), filled a byte at
@@ -55,7 +57,7 @@ static inline void stp_halftone_fill_bits(uint8_t *line, uint8_t page_bit, unsig
      * cut at x1, the last's at x2 (the same bytes as below) */
     unsigned i = x1 >> 3, last = x2 >> 3;
     uint8_t mask = (uint8_t)(0xFFu >> (x1 & 7u));
-    if (page_bit) {
+    if (STP_WITH_PAGES && page_bit) {
         stp_halftone_fill_page_run(line, page_bit, x1, x2, pattern);
         return;
     }
@@ -70,7 +72,7 @@ static inline void stp_halftone_fill_bits(uint8_t *line, uint8_t page_bit, unsig
 #else
     unsigned first = x1 >> 3, last = x2 >> 3, b;
     uint8_t head = (uint8_t)(0xFFu >> (x1 & 7u)), tail = (uint8_t)(0xFFu << (7u - (x2 & 7u)));
-    if (page_bit) {
+    if (STP_WITH_PAGES && page_bit) {
         stp_halftone_fill_page_run(line, page_bit, x1, x2, pattern);
         return;
     }
@@ -91,8 +93,9 @@ static inline void stp_halftone_fill_bits(uint8_t *line, uint8_t page_bit, unsig
  * page and its bit 1 << (y mod 8)): set ON (on != 0) or OFF, or read. */
 static inline void stp_mono_put(uint8_t *line, uint8_t page_bit, uint32_t x, int on)
 {
-    uint32_t i = page_bit ? x : x >> 3;
-    uint8_t bit = (uint8_t)(page_bit ? page_bit : 0x80u >> (x & 7u));
+    int pages = STP_WITH_PAGES && page_bit;
+    uint32_t i = pages ? x : x >> 3;
+    uint8_t bit = (uint8_t)(pages ? page_bit : 0x80u >> (x & 7u));
     line[i] = (uint8_t)(on ? line[i] | bit : line[i] & ~bit);
 }
 
@@ -117,7 +120,7 @@ static inline void stp_mono_page_from_bytes(uint8_t *line, uint8_t page_bit, con
 
 static inline int stp_mono_get(const uint8_t *line, uint8_t page_bit, uint32_t x)
 {
-    return page_bit ? (line[x] & page_bit) != 0 : (line[x >> 3] & (0x80u >> (x & 7u))) != 0;
+    return STP_WITH_PAGES && page_bit ? (line[x] & page_bit) != 0 : (line[x >> 3] & (0x80u >> (x & 7u))) != 0;
 }
 
 #endif

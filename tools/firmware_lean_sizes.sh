@@ -14,7 +14,8 @@
 #  3. with avr-gcc, the direct-drawing files on an ATmega328P per function
 #     (the Arduino library's configuration, no LTO).
 # The lean configuration: STP_WITH_SPECULAR=0 (the highlight's code out of
-# shade_fast.c), STP_MAX_LIGHTS=1.
+# shade_fast.c), STP_MAX_LIGHTS=1, STP_WITH_PAGES=0 (its SSD0323 panel takes
+# rows: the page layout left out).
 #
 # usage: firmware_lean_sizes.sh SOURCE_DIR WORK_DIR
 set -eu
@@ -24,7 +25,7 @@ src=$(cd "$1" && pwd)
 mkdir -p "$2"
 work=$(cd "$2" && pwd)
 cpu="-mcpu=cortex-m0plus -mthumb -mfloat-abi=soft"
-defs="-DSTP_WITH_SPECULAR=0 -DSTP_MAX_LIGHTS=1"
+defs="-DSTP_WITH_SPECULAR=0 -DSTP_MAX_LIGHTS=1 -DSTP_WITH_PAGES=0"
 cflags="-std=c99 $cpu -Os -ffreestanding -ffunction-sections -fdata-sections -Wall -Wextra -Werror"
 inc="-I $src/include -I $src/src -I $src/ports/direct -I $src/ports/stellaris -I $src/ports/controllers"
 core="direct direct_band direct_view shade_fast shade view recip mesh fix"

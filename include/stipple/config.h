@@ -251,6 +251,18 @@
 #define STP_SMALL_DIVISION 0
 #endif
 
+/* 1: the panels' page layout is compiled in: the STP_PIXEL_MONO1_PAGES
+ * pixel format (stipple/port.h) and direct drawing's STP_BAND_PAGES bands,
+ * written by the one 1-bit run filler's page path.  0: a render, ray
+ * trace or band in that layout returns STP_ERR_UNSUPPORTED, and the page
+ * paths are not linked: a firmware whose panel takes rows (the
+ * lm3s6965evb images of firmware/ set it).  Same pixels in rows.  0 saves
+ * 994 bytes of the whole core's code (Cortex-M0+, -Os), 552 bytes of a
+ * static scene's lm3s6965evb image and 704 of an on-chip one. */
+#ifndef STP_WITH_PAGES
+#define STP_WITH_PAGES 1
+#endif
+
 /* [layout] 1: a playback-only core (stipple compile --static): the renderer
  * object keeps only what stp_playback_create and stp_renderer_render use,
  * and the entry side (render.c, view.c, clip.c, transform.c, ...) must not

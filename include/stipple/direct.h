@@ -172,7 +172,8 @@ int stp_direct_frame_project_lit(stp_direct_frame *f, const stp_mesh *mesh, cons
  * The band is cleared (OFF) first, then every drawn face is painted in
  * mesh order; both layouts hold the same pixels.  Errors: STP_ERR_ARG (f,
  * its arrays or band NULL, an unknown layout, stride too small, rows 0,
- * y0 + rows > height, a page band's y0 not a multiple of 8). */
+ * y0 + rows > height, a page band's y0 not a multiple of 8),
+ * STP_ERR_UNSUPPORTED (STP_BAND_PAGES in a build without STP_WITH_PAGES). */
 int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0,
                          uint16_t rows);
 

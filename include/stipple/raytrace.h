@@ -249,7 +249,8 @@ int stp_rt_trace_pixel(stp_raytracer *rt, uint32_t x, uint32_t y, const stp_fix 
  * when output->diffusion diffuses a 1-bit picture; STP_PIXEL_MONO1_PAGES:
  * (band_rows + 7) / 8 pages of width bytes).  Errors: STP_ERR_ARG
  * (also a STP_PIXEL_MONO1_PAGES port with band_rows neither a multiple of 8
- * nor the height), STP_ERR_MEMORY (band too small), STP_ERR_PORT. */
+ * nor the height), STP_ERR_MEMORY (band too small), STP_ERR_UNSUPPORTED
+ * (STP_PIXEL_MONO1_PAGES in a build without STP_WITH_PAGES), STP_ERR_PORT. */
 int stp_rt_render(stp_raytracer *rt, stp_port *port, const stp_output *output, uint8_t *band,
                   size_t band_size, uint32_t band_rows);
 

@@ -553,9 +553,9 @@ int stp_frame_memory_split(stp_frame_memory *memory, const stp_renderer *r, cons
  * nor the height),
  * STP_ERR_MEMORY (a buffer too small, a setup array given with fewer than
  * stp_renderer_polygon_count() entries),
- * STP_ERR_UNSUPPORTED (a hidden-surface method compiled out; edge_aa of a
- * display file that lost triangles to pixel culling,
- * stp_renderer_set_pixel_cull),
+ * STP_ERR_UNSUPPORTED (a hidden-surface method compiled out, or the page
+ * layout: STP_WITH_PAGES; edge_aa of a display file that lost triangles
+ * to pixel culling, stp_renderer_set_pixel_cull),
  * STP_ERR_PORT. */
 int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *output,
                const stp_frame_memory *memory);
