@@ -55,4 +55,4 @@ static void hold(void)
         ;
 }
 
-const stp_board stp_board_this = {"lm3s6965evb", PANEL_W, 64u, "-s 128x64", panel_start, flush, hold};
+const stp_board stp_board_this = {"lm3s6965evb", PANEL_W, 64u, STP_PIXEL_MONO1, "-s 128x64", panel_start, flush, hold};

@@ -1,6 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* The lm3s811evb for main.c: the SSD0303 96x16 mono OLED on I2C0 (8-row
- * pages gathered from the bands), released by a byte on UART0. */
+/* The lm3s811evb for main.c: the SSD0303 96x16 mono OLED on I2C0, fed
+ * bands in its own page layout (STP_PIXEL_MONO1_PAGES: 8 rows a byte, one
+ * byte a column), each page sent as it is: no repacking, no page buffer;
+ * released by a byte on UART0. */
 #include "board.h"
 #include "lm3s811_oled.h"
 #include "stellaris.h"
@@ -8,12 +10,6 @@
 
 #define PANEL_W 96u
 #define PANEL_H 16u
-#define ROW_BYTES (PANEL_W / 8u)
-
-static uint8_t page_rows[8u * ROW_BYTES];
-static uint8_t columns[PANEL_W];
-static const stp_panel_pages pages = {&stp_panel_ssd0303, &stp_lm3s811_oled_bus, PANEL_W, PANEL_H,
-                                      ROW_BYTES, page_rows, columns};
 
 static int panel_start(void)
 {
@@ -21,10 +17,15 @@ static int panel_start(void)
     return stp_panel_init(&stp_panel_ssd0303, &stp_lm3s811_oled_bus) == 0 ? 0 : -1;
 }
 
+/* A band of (rows + 7) / 8 pages, stride bytes apart, starting on page
+ * y0 / 8 (stp_renderer_render's page bands do). */
 static int flush(stp_port *port, uint32_t y0, uint32_t rows, const uint8_t *pixels, size_t stride)
 {
     (void)port;
-    return stp_panel_pages_put(&pages, y0, rows, pixels, stride) == 0 ? 0 : -1;
+    return stp_panel_pages_send(&stp_panel_ssd0303, &stp_lm3s811_oled_bus, y0, rows, pixels,
+                                stride, PANEL_W) == 0
+               ? 0
+               : -1;
 }
 
 /* UART0 (PA0/PA1; a PL011 at 0x4000C000), receive only. */
@@ -58,4 +59,4 @@ static void hold(void)
     (void)UART_DR;
 }
 
-const stp_board stp_board_this = {"lm3s811evb", PANEL_W, PANEL_H, "-s 96x16", panel_start, flush, hold};
+const stp_board stp_board_this = {"lm3s811evb", PANEL_W, PANEL_H, STP_PIXEL_MONO1_PAGES, "-s 96x16", panel_start, flush, hold};

@@ -5,9 +5,15 @@
  *
  * RAM: the renderer object (STP_RENDERER_BYTES of the configuration), the
  * scene's display file (in the generated source, with the error rows of a
- * scene compiled with error diffusion), STP_FW_BAND_ROWS rows of MONO1
+ * scene compiled with error diffusion), STP_FW_BAND_ROWS rows of 1-bit
  * pixels (8-bit pixels with diffusion) and their Z-buffer rows; the picture
  * lives only in the panel.
+ *
+ * The band's pixel format is the board's (board.h): MONO1 rows, or with
+ * STP_FW_PAGES 1 (a page panel: the lm3s811evb's SSD0303) the panel's own
+ * 8-row pages, STP_PIXEL_MONO1_PAGES, which the renderer writes directly
+ * and the board sends as they are; STP_FW_BAND_ROWS is then a multiple of
+ * 8 (whole pages).
  *
  * STP_FW_STATIC 1: the scene is static (`stipple compile --static`): its
  * display file, entered on the host, is played back from flash
@@ -46,9 +52,26 @@
 #ifndef STP_FW_SPANS
 #define STP_FW_SPANS 0
 #endif
+#ifndef STP_FW_PAGES
+#define STP_FW_PAGES 0
+#endif
+
+#if STP_FW_PAGES
+#if STP_FW_BAND_ROWS % 8 != 0
+#error "a page panel's bands are whole pages: STP_FW_BAND_ROWS a multiple of 8"
+#endif
+#if STP_FW_SPANS
+#error "the span player draws MONO1 rows, not a page panel's pages"
+#endif
+#define STP_FW_FORMAT STP_PIXEL_MONO1_PAGES
+#define STP_FW_MONO_BAND_BYTES (((STP_FW_BAND_ROWS + 7u) / 8u) * STP_FW_PANEL_W)
+#else
+#define STP_FW_FORMAT STP_PIXEL_MONO1
+#define STP_FW_MONO_BAND_BYTES (STP_FW_BAND_ROWS * (STP_FW_PANEL_W / 8u))
+#endif
 
 #if STP_FW_SPANS
-static uint8_t band[STP_FW_BAND_ROWS * (STP_FW_PANEL_W / 8u)];
+static uint8_t band[STP_FW_MONO_BAND_BYTES];
 
 static int fail(const char *what)
 {
@@ -96,6 +119,8 @@ int main(void)
     stp_count_start();
     per_tick = stp_count_calibrate();
 #endif
+    if (board->format != STP_FW_FORMAT)
+        return fail("the board's pixel format (STP_FW_PAGES) check");
     if (board->width != STP_FW_PANEL_W || stp_compiled_spans.width != board->width ||
         stp_compiled_spans.height != board->height) {
         stp_semihost_write(board->size_hint);
@@ -103,7 +128,7 @@ int main(void)
     }
     port.width = board->width;
     port.height = board->height;
-    port.format = STP_PIXEL_MONO1;
+    port.format = board->format;
     port.user = 0;
     port.flush = board->flush;
 #if STP_FW_BENCH
@@ -123,6 +148,7 @@ int main(void)
     report("instructions per frame (core):", (uint32_t)((t1 - t0) * per_tick));
     report("instructions per frame (core + panel):", (uint32_t)((t2 - t1) * per_tick));
     report("band rows:", STP_FW_BAND_ROWS);
+    report("stack bytes never used:", stp_stack_never_used());
 #endif
     board->hold();
     return 0;
@@ -146,7 +172,7 @@ static stp_renderer_storage renderer;
 /* error diffusion draws the band as GREY8 rows (render.h, stp_output.diffusion) */
 static uint8_t band[STP_FW_BAND_ROWS * STP_FW_PANEL_W];
 #else
-static uint8_t band[STP_FW_BAND_ROWS * (STP_FW_PANEL_W / 8u)];
+static uint8_t band[STP_FW_MONO_BAND_BYTES];
 #endif
 #if STP_WITH_ZBUFFER
 static uint16_t zbuf[STP_FW_BAND_ROWS * STP_FW_PANEL_W];
@@ -201,6 +227,8 @@ int main(void)
     per_tick = stp_count_calibrate();
 #endif
 
+    if (board->format != STP_FW_FORMAT) /* the build's STP_FW_PAGES is not the board's */
+        return fail("the board's pixel format", STP_ERR_ARG);
     if (board->width != STP_FW_PANEL_W || scene->width != board->width ||
         scene->height != board->height) {
         stp_semihost_write(board->size_hint);
@@ -225,7 +253,7 @@ int main(void)
 #endif
     port.width = board->width;
     port.height = board->height;
-    port.format = STP_PIXEL_MONO1;
+    port.format = board->format;
     port.user = 0;
 
 #if STP_FW_BENCH
@@ -261,6 +289,7 @@ int main(void)
     }
 #endif
     report("band rows:", STP_FW_BAND_ROWS);
+    report("stack bytes never used:", stp_stack_never_used());
     report("renderer bytes:", stp_renderer_size());
     report("renderer storage bytes:", STP_RENDERER_BYTES); /* the test: the same */
     report("display-file entries:", stp_renderer_display_file_used(r));

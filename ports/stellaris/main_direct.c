@@ -10,6 +10,8 @@
  * same frames are checked pixel for pixel on the mps2-an385
  * (tools/bench/mps2_direct.sh).  STP_DIRECT_FRAMES > 0 stops after that
  * many frames and holds the picture (board->hold); 0 spins for ever.
+ * The bands are in the board's format (board.h): MONO1 rows, or a page
+ * panel's own pages (STP_BAND_PAGES, whole 8-row pages) sent as drawn.
  */
 #include "board.h"
 #include "direct_spin.h"
@@ -23,6 +25,7 @@
 #endif
 
 static direct_spin spin;
+/* rows of SPIN_STRIDE bytes, or as many bytes in pages of SPIN_WIDTH */
 static uint8_t band[SPIN_STRIDE * STP_FW_BAND_ROWS];
 
 int main(void)
@@ -32,13 +35,15 @@ int main(void)
     stp_port port;
     uint16_t n;
     uint32_t y;
-    int status;
+    int status, pages = board->format == STP_PIXEL_MONO1_PAGES;
+    size_t stride = pages ? SPIN_WIDTH : SPIN_STRIDE;
     port.width = SPIN_WIDTH;
     port.height = SPIN_HEIGHT;
-    port.format = STP_PIXEL_MONO1;
+    port.format = board->format;
     port.flush = board->flush;
     port.user = 0;
-    if (board->width != SPIN_WIDTH || board->height != SPIN_HEIGHT || board->panel_start() != 0 ||
+    if (board->width != SPIN_WIDTH || board->height != SPIN_HEIGHT ||
+        (pages && STP_FW_BAND_ROWS % 8u != 0) || board->panel_start() != 0 ||
         direct_spin_init(&spin) != STP_OK) {
         stp_semihost_write("stipple: direct setup failed\n");
         return 1;
@@ -49,9 +54,10 @@ int main(void)
     for (n = 0;; n++) {
 #endif
         status = direct_spin_frame(&spin, n, &f);
+        f.layout = pages ? STP_BAND_PAGES : STP_BAND_ROWS;
         for (y = 0; status == STP_OK && y < SPIN_HEIGHT; y += STP_FW_BAND_ROWS) {
-            status = stp_direct_draw_band(&f, band, SPIN_STRIDE, (uint16_t)y, STP_FW_BAND_ROWS);
-            if (status == STP_OK && board->flush(&port, y, STP_FW_BAND_ROWS, band, SPIN_STRIDE) != 0)
+            status = stp_direct_draw_band(&f, band, stride, (uint16_t)y, STP_FW_BAND_ROWS);
+            if (status == STP_OK && board->flush(&port, y, STP_FW_BAND_ROWS, band, stride) != 0)
                 status = STP_ERR_PORT;
         }
         if (status != STP_OK) {

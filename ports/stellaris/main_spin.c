@@ -5,8 +5,9 @@
  * tools/bench/spin_mesh_gen), the teapot turned SPIN_DEGREES_PER_FRAME
  * degrees per frame about its vertical axis and re-entered with
  * stp_renderer_mesh into a fresh segment, rendered in STP_FW_BAND_ROWS-row
- * bands straight to the OLED.  After STP_SPIN_FRAMES frames the picture is
- * held (board->hold); 0 spins for ever.
+ * bands straight to the OLED, in the board's format (board.h: MONO1 rows,
+ * or a page panel's own 8-row pages, sent as drawn).  After STP_SPIN_FRAMES
+ * frames the picture is held (board->hold); 0 spins for ever.
  *
  * Counting (tests/firmware/run_spin_oled_test.sh runs QEMU with -icount
  * shift=0): SysTick ticks of every frame, calibrated to emulated
@@ -30,7 +31,7 @@
 #define CLOCK_HZ 48000000u
 
 static stp_renderer_storage storage;
-static uint8_t band[SPIN_STRIDE * STP_FW_BAND_ROWS];
+static uint8_t band[SPIN_STRIDE * STP_FW_BAND_ROWS]; /* rows, or as many bytes of pages */
 static uint16_t zbuf[8u * SPIN_STRIDE * STP_FW_BAND_ROWS];
 
 static void report(const char *what, uint32_t value, const char *after)
@@ -63,7 +64,7 @@ int main(void)
     per_tick = stp_count_calibrate();
     port.width = board->width;
     port.height = board->height;
-    port.format = STP_PIXEL_MONO1;
+    port.format = board->format; /* pages: STP_FW_BAND_ROWS a multiple of 8 (stp_renderer_render) */
     port.flush = board->flush;
     port.user = 0;
     mem.band = band;

@@ -53,4 +53,11 @@ uint64_t stp_count_now(void);
  * clock configuration, not on the code).  0 if the counter did not move. */
 uint32_t stp_count_calibrate(void);
 
+/* Bench images (STP_FW_BENCH): bytes of RAM between the static data and
+ * the stack that the stack has not reached since reset (startup.c fills
+ * them with a pattern; a word the program happens to leave holding it
+ * counts as unreached).  0: the stack reached the static data, whose last
+ * words may then have been overwritten. */
+uint32_t stp_stack_never_used(void);
+
 #endif

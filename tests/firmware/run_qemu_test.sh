@@ -7,9 +7,10 @@
 #   lm3s6965evb  SSD0323 128x64 (SSI): the 1-bit halftoned picture, ON as grey
 #                15; the shipping image and the bench image (the scene's
 #                minimal configuration) and the full library's bench image
-#   lm3s811evb   SSD0303 96x16 mono (I2C): the 1-bit picture; the shipping
-#                and bench images of the minimal configuration only (the
-#                full renderer exceeds its 8 KB RAM)
+#   lm3s811evb   SSD0303 96x16 mono (I2C): the 1-bit picture, drawn in the
+#                panel's page layout (STP_PIXEL_MONO1_PAGES) and sent page by
+#                page as drawn; the shipping and bench images of the minimal
+#                configuration only (the full renderer exceeds its 8 KB RAM)
 # Either dump shows a panel pixel as a 4x4 block, 255 for ON and 0 for OFF.
 # Every image's picture is compared; the bench images' counts are recorded.
 #
@@ -30,7 +31,7 @@
 # reports no per-shade figure).
 # Environment: STP_FW_CPU (cortex-m3; cortex-m0plus also runs on QEMU's M3),
 # STP_QEMU_TIMEOUT (seconds per QEMU run, 60), STP_BUILD_TIMEOUT (600),
-# STP_FW_BAND_ROWS (4), STP_FW_STATIC (OFF; ON: the scene compiled with
+# STP_FW_BAND_ROWS (4; 8 on the lm3s811evb: whole pages), STP_FW_STATIC (OFF; ON: the scene compiled with
 # --static and played back from flash), STP_FW_SPANS (OFF; ON: compiled with
 # --spans, drawn by the span player: no renderer, so no renderer bytes).
 set -eu
@@ -51,10 +52,12 @@ case $board in
     lm3s6965evb)
         size=128x64
         images="stipple_fw_lm3s6965evb stipple_fw_lm3s6965evb_bench stipple_fw_lm3s6965evb_full"
+        default_band_rows=4
         uart=no ;;
     lm3s811evb)
         size=96x16
         images="stipple_fw_lm3s811evb stipple_fw_lm3s811evb_bench"
+        default_band_rows=8
         uart=yes ;;
     *)
         echo "$0: unknown board '$board' (lm3s6965evb or lm3s811evb)" >&2
@@ -68,7 +71,7 @@ shift 6
 cpu=${STP_FW_CPU:-cortex-m3}
 qemu_timeout=${STP_QEMU_TIMEOUT:-60}
 build_timeout=${STP_BUILD_TIMEOUT:-600}
-band_rows=${STP_FW_BAND_ROWS:-4}
+band_rows=${STP_FW_BAND_ROWS:-$default_band_rows}
 here=$(cd "$(dirname "$0")" && pwd)
 
 # 77: CTest's "skipped" (SKIP_RETURN_CODE), so a machine without the tools
@@ -161,6 +164,14 @@ for image in $images; do
     esac
     if [ -n "$config" ] && ! grep -q "instructions per frame" "$log"; then
         echo "FAIL $image: no instruction count reported" >&2
+        status=1
+        continue
+    fi
+    # the stack must not have reached the static data (bench images paint
+    # the free RAM at reset and report what the stack never touched)
+    unused=$(figure "$log" "stack bytes never used:")
+    if [ -n "$config" ] && { [ -z "$unused" ] || [ "$unused" -eq 0 ]; }; then
+        echo "FAIL $image: the stack ran into the static data (no stack bytes left unused)" >&2
         status=1
         continue
     fi

@@ -36,7 +36,12 @@
  *  - the formats agree (without transparency): MONO1 is the GREY8 picture
  *    through the halftone cell, RGB888 without colour is grey (R = G = B =
  *    GREY8), STYLE8 without a style table holds indices 1..levels whose
- *    levels GREY8 shows (port.h; 0 only for a background of 0).
+ *    levels GREY8 shows (port.h; 0 only for a background of 0);
+ *  - every MONO1 render is drawn again in the panel page layout
+ *    (STP_PIXEL_MONO1_PAGES), in bands of whole pages and in one band, and
+ *    each, unpacked to rows here, is the MONO1 picture pixel for pixel; a
+ *    page band's bits below its last row are 0 (port.h); a band height that
+ *    is neither whole pages nor the frame's is refused (STP_ERR_ARG).
  */
 #include <string.h>
 
@@ -258,9 +263,20 @@ static void account(state *st, uint32_t before, int status, int polygon)
 
 /* ------------------------------------------------------------ the port */
 
+/* Bytes of rows rows of format fmt, width pixels wide: rows of stride
+ * bytes, or for STP_PIXEL_MONO1_PAGES (rows + 7) / 8 pages of width bytes
+ * (port.h); 0 for an unknown format. */
+static size_t layout_bytes(stp_pixel_format fmt, uint32_t width, uint32_t rows)
+{
+    size_t stride = stp_row_bytes(fmt, width);
+    if (fmt == STP_PIXEL_MONO1_PAGES)
+        return stride * (((size_t)rows + 7u) / 8u);
+    return stride * rows;
+}
+
 typedef struct capture {
     stp_port port;
-    uint8_t *frame; /* height rows of stride bytes */
+    uint8_t *frame; /* height rows of stride bytes (MONO1_PAGES: pages) */
     size_t stride;
     uint32_t band_rows, next_y, flushes, fail_at;
     int failed;
@@ -282,7 +298,18 @@ static int capture_flush(stp_port *port, uint32_t y0, uint32_t rows, const uint8
         c->failed = 1;
         return -1;
     }
-    memcpy(c->frame + (size_t)y0 * stride, pixels, (size_t)rows * stride);
+    if (port->format == STP_PIXEL_MONO1_PAGES) {
+        size_t bytes = layout_bytes(port->format, port->width, rows), x;
+        FZ_CHECK(y0 % 8u == 0, "a page band starts at row %u, within a page", (unsigned)y0);
+        /* port.h: the bits of rows past the band's last row are 0 */
+        for (x = 0; rows % 8u != 0 && x < stride; x++)
+            FZ_CHECK((pixels[bytes - stride + x] >> (rows % 8u)) == 0,
+                     "page band at row %u (%u rows): column %zu has bits below its last row",
+                     (unsigned)y0, (unsigned)rows, x);
+        memcpy(c->frame + (size_t)(y0 / 8u) * stride, pixels, bytes);
+    } else {
+        memcpy(c->frame + (size_t)y0 * stride, pixels, (size_t)rows * stride);
+    }
     c->next_y += rows;
     return 0;
 }
@@ -296,7 +323,10 @@ typedef enum fault {
     FAULT_ZBUF,
     FAULT_SORT,
     FAULT_PORT,
-    FAULT_COUNT
+    FAULT_COUNT,
+    /* not drawn from the input: a MONO1_PAGES render whose band_rows (as
+     * given) is neither a multiple of 8 nor the height */
+    FAULT_PAGE_BAND
 } fault;
 
 typedef struct render_args {
@@ -326,8 +356,9 @@ static int render_once(state *st, const render_args *a, fault f, uint32_t fail_a
     stp_frame_memory mem;
     capture cap;
     size_t stride = stp_row_bytes(a->format, st->width);
-    size_t row_bytes = stride == 0 ? 1 : stride;
+    size_t frame_bytes = layout_bytes(a->format, st->width, st->height);
     uint32_t band_rows = a->band_rows;
+    size_t band_bytes = layout_bytes(a->format, st->width, band_rows);
     uint32_t polygons = stp_renderer_polygon_count(st->r);
     int expect = STP_OK, status;
 
@@ -342,14 +373,14 @@ static int render_once(state *st, const render_args *a, fault f, uint32_t fail_a
     cap.stride = stride;
     cap.band_rows = band_rows;
     cap.fail_at = f == FAULT_PORT ? fail_at : UINT32_MAX;
-    cap.frame = (uint8_t *)xmalloc(row_bytes * st->height);
-    memset(cap.frame, 0xEE, row_bytes * st->height);
+    cap.frame = (uint8_t *)xmalloc(frame_bytes);
+    memset(cap.frame, 0xEE, frame_bytes);
 
     if (f == FAULT_BAND_ROWS)
         mem.band_rows = (fail_at & 1) ? 0 : st->height + 1;
     else
         mem.band_rows = band_rows;
-    mem.band_size = row_bytes * band_rows - (f == FAULT_BAND_SIZE ? 1 : 0);
+    mem.band_size = band_bytes - (f == FAULT_BAND_SIZE ? 1 : 0);
     mem.band = (uint8_t *)xmalloc(mem.band_size);
     mem.zbuf_count = (size_t)st->width * band_rows - (f == FAULT_ZBUF ? 1 : 0);
     mem.zbuf = (uint16_t *)xmalloc(mem.zbuf_count * sizeof *mem.zbuf);
@@ -362,6 +393,7 @@ static int render_once(state *st, const render_args *a, fault f, uint32_t fail_a
         switch (f) {
         case FAULT_FORMAT:
         case FAULT_BAND_ROWS:
+        case FAULT_PAGE_BAND:
         case FAULT_HIDDEN: expect = STP_ERR_ARG; break;
         case FAULT_BAND_SIZE: expect = STP_ERR_MEMORY; break;
         /* a short Z buffer or sort array matters only to its own method */
@@ -525,8 +557,61 @@ static void cross_check(state *st, const render_args *a, const uint8_t *frame)
     free(grey);
 }
 
+/* A MONO1_PAGES frame (pages of width bytes, bit y mod 8 of byte
+ * (y / 8) width + x) unpacked to MONO1 rows (pixel 0 in bit 7), the padding
+ * bits 0: a fresh block the caller frees. */
+static uint8_t *pages_to_rows(const state *st, const uint8_t *pages)
+{
+    size_t stride = stp_row_bytes(STP_PIXEL_MONO1, st->width);
+    uint8_t *rows = (uint8_t *)xmalloc(stride * st->height);
+    uint32_t x, y;
+    memset(rows, 0, stride * st->height);
+    for (y = 0; y < st->height; y++)
+        for (x = 0; x < st->width; x++)
+            if ((pages[(size_t)(y / 8u) * st->width + x] >> (y % 8u)) & 1u)
+                rows[(size_t)y * stride + x / 8u] |= (uint8_t)(0x80u >> (x % 8u));
+    return rows;
+}
+
+/* The MONO1 render of a (its frame: mono) drawn again in the page layout:
+ * refused in bands that are not whole pages, then in bands of whole pages
+ * (a's band height rounded up to one) and in one band; each unpacked must
+ * be mono pixel for pixel. */
+static void pages_check(state *st, const render_args *a, const uint8_t *mono)
+{
+    render_args p = *a;
+    uint8_t *frames[2] = {NULL, NULL};
+    uint32_t heights[2], x = 0, y = 0;
+    int k;
+    if (p.out.cell == &a->cell)
+        p.out.cell = &p.cell;
+    if (p.out.styles == &a->styles)
+        p.out.styles = &p.styles;
+    p.format = STP_PIXEL_MONO1_PAGES;
+    if (a->band_rows % 8u != 0 && a->band_rows < st->height)
+        (void)render_once(st, &p, FAULT_PAGE_BAND, 0, NULL); /* checks the STP_ERR_ARG */
+    heights[0] = (a->band_rows + 7u) / 8u * 8u;
+    heights[0] = heights[0] < st->height ? heights[0] : st->height;
+    heights[1] = st->height;
+    for (k = 0; k < 2; k++) {
+        uint8_t *rows;
+        p.band_rows = heights[k];
+        FZ_CHECK(render_once(st, &p, FAULT_NONE, 0, &frames[k]) == STP_OK,
+                 "MONO1_PAGES render in bands of %u rows failed", (unsigned)heights[k]);
+        rows = pages_to_rows(st, frames[k]);
+        FZ_CHECK(!pixel_differs(st, STP_PIXEL_MONO1, 0, rows, mono, &x, &y),
+                 "MONO1_PAGES pixel (%u, %u) (bands of %u rows) differs from MONO1 (bands of %u "
+                 "rows; hidden %d, %ux%u)",
+                 (unsigned)x, (unsigned)y, (unsigned)heights[k], (unsigned)a->band_rows,
+                 (int)a->hidden, (unsigned)st->width, (unsigned)st->height);
+        free(rows);
+        free(frames[k]);
+    }
+}
+
 /* Render with arguments from the input, check it, and unless a fault was
- * injected, render again in one band and compare, and against GREY8. */
+ * injected, render again in one band and compare, against GREY8, and a
+ * MONO1 render against the page layout's. */
 static void op_render(state *st, fz_reader *in, int final_hidden)
 {
     render_args a;
@@ -601,6 +686,8 @@ static void op_render(state *st, fz_reader *in, int final_hidden)
                  (unsigned)x, (unsigned)y, (unsigned)a.band_rows, (unsigned)st->height,
                  (int)a.format, (int)a.hidden, (unsigned)st->width, (unsigned)st->height);
         cross_check(st, &a, banded);
+        if (a.format == STP_PIXEL_MONO1)
+            pages_check(st, &a, banded);
     }
     free(banded);
     free(whole);
