@@ -1940,22 +1940,44 @@ static int band_clear_uniform(frame *fr, const stp_port *drawn, paint background
     return 1;
 }
 
-/* A MONO1_PAGES band's pages cleared to 0, so the bits of rows past the
- * frame's last row stay 0: 1 when that is the background (its pattern
- * bytes all 0), else 0 and the rows are painted over it. */
+/* Page k of a MONO1_PAGES band filled with the background's pattern rows
+ * (patterns[], made by use_style): pixel x of row r takes bit 7 - (x mod
+ * 8) of its row's pattern byte, so the page repeats every 8 columns, and
+ * column c's byte gathers bit 7 - c of its rows' bytes, bit r for row r;
+ * rows past the band's last stay 0. */
+static void page_fill_background(const frame *fr, uint8_t *page, uint32_t k)
+{
+    uint8_t column[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    uint32_t r, c, first = fr->y0 + 8u * k, n = fr->rows - 8u * k < 8u ? fr->rows - 8u * k : 8u;
+    size_t x;
+    for (r = 0; r < n; r++) {
+        uint32_t y = first + r;
+        uint8_t pattern = fr->patterns[fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height];
+        for (c = 0; c < 8u; c++)
+            column[c] = (uint8_t)(column[c] | (((pattern >> (7u - c)) & 1u) << r));
+    }
+    for (x = 0; x < fr->stride; x++) /* stride: the width, a page's bytes */
+        page[x] = column[x & 7u];
+}
+
+/* A MONO1_PAGES band's pages cleared: to the background's pattern when it
+ * has one (1: the band is the background), else to 0 (0: the rows are
+ * painted over it); the bits of rows past the frame's last row stay 0
+ * either way.  Filling a page a byte per column beats painting its rows,
+ * which set one bit of each byte (stp_halftone_fill_page_run). */
 static int band_clear_pages(frame *fr, paint background)
 {
     size_t i, count = fr->stride * (((size_t)fr->rows + 7u) / 8u); /* within band_size */
-    uint32_t cy;
+    uint32_t k;
     uint8_t *band = fr->band; /* a local: a byte store may alias fr */
-    for (i = 0; i < count; i++) /* a counted loop: compilers make it memset */
-        band[i] = 0;
     use_style(fr, background); /* patterns[] for the background, when mono_fill */
-    if (background != fr->pattern_style)
+    if (background != fr->pattern_style) {
+        for (i = 0; i < count; i++) /* a counted loop: compilers make it memset */
+            band[i] = 0;
         return 0;
-    for (cy = 0; cy < fr->cell->height; cy++)
-        if (fr->patterns[cy] != 0)
-            return 0;
+    }
+    for (k = 0; 8u * k < fr->rows; k++)
+        page_fill_background(fr, band + k * fr->stride, k);
     return 1;
 }
 
