@@ -153,11 +153,13 @@ STP_HOT_INLINE uint32_t rsqrt_norm(uint32_t q)
 
 /* 2^31 / m for m in [2^15, 2^16): in (2^15, 2^16], error below 2^-15
  * relative: a seed (2^-9) and one Newton step y (2 - m y 2^-31). */
-static uint32_t recip16(uint32_t m)
+STP_NOINLINE uint32_t recip16(uint32_t m)
 {
     uint32_t y = RECIP_SEED(m >> 7);
     uint32_t p = m * y; /* ~ 2^31, < 2^32 */
-    int32_t e = p <= 0x80000000u ? (int32_t)(0x80000000u - p) : -(int32_t)(p - 0x80000000u);
+    /* e = 2^31 - p, |e| < 2^23: 2^31 - p + 2^30 modulo 2^32 is in
+     * (2^30 - 2^23, 2^30 + 2^23), so the signed value needs no branch */
+    int32_t e = (int32_t)(0xC0000000u - p) - 0x40000000;
     return (uint32_t)((int32_t)y + stp_asr32(mul_q16(e, y), 15)); /* |e| < 2^23 */
 }
 
