@@ -131,23 +131,23 @@ static void draw_face(const stp_direct_frame *f, const stp_direct_point *p[3], u
     }
 }
 
-/* the arrays f points to are there */
-static int frame_arrays(const stp_direct_frame *f)
-{
-    return f->mesh != 0 && f->points != 0 && f->faces != 0 && f->cell != 0;
-}
-
-/* The page shift of f's layout (0 rows, 3 pages) and the band's lines
- * (rows or pages) for a band of rows rows at y0, stride bytes a line; -1
- * when the arguments do not fit (direct.h). */
-static int band_shape(const stp_direct_frame *f, size_t stride, uint16_t y0, uint16_t rows, size_t *lines)
+/* The shift of f's layout (*page_shift: 0 rows, 3 pages) and the band's
+ * lines (*lines: rows or pages) for a band of rows rows at y0, stride
+ * bytes a line: STP_OK, STP_ERR_ARG when the arguments do not fit, or
+ * STP_ERR_UNSUPPORTED for pages without STP_WITH_PAGES (direct.h). */
+static int band_shape(const stp_direct_frame *f, size_t stride, uint16_t y0, uint16_t rows, size_t *lines,
+                      int *page_shift)
 {
     if (f->layout == STP_BAND_PAGES) {
+        if (!STP_WITH_PAGES)
+            return STP_ERR_UNSUPPORTED; /* the page layout compiled out (config.h) */
         *lines = ((size_t)rows + 7u) >> 3;
-        return stride < f->width || (y0 & 7u) != 0 ? -1 : 3;
+        *page_shift = 3;
+        return stride < f->width || (y0 & 7u) != 0 ? STP_ERR_ARG : STP_OK;
     }
     *lines = rows;
-    return f->layout != STP_BAND_ROWS || stride < ((size_t)f->width + 7u) / 8u ? -1 : 0;
+    *page_shift = 0;
+    return f->layout != STP_BAND_ROWS || stride < ((size_t)f->width + 7u) / 8u ? STP_ERR_ARG : STP_OK;
 }
 
 int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0,
@@ -156,14 +156,13 @@ int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride
     const uint16_t *k;
     size_t i, lines;
     uint16_t t;
-    int page_shift;
-    if (f == 0 || band == 0 || !frame_arrays(f) || rows == 0 || (uint32_t)y0 + rows > f->height)
+    int page_shift = 0, status;
+    if (f == 0 || band == 0 || f->mesh == 0 || f->points == 0 || f->faces == 0 || f->cell == 0 || rows == 0 ||
+        (uint32_t)y0 + rows > f->height)
         return STP_ERR_ARG;
-    if (!STP_WITH_PAGES && f->layout == STP_BAND_PAGES)
-        return STP_ERR_UNSUPPORTED; /* the page layout compiled out (config.h) */
-    page_shift = band_shape(f, stride, y0, rows, &lines);
-    if (page_shift < 0)
-        return STP_ERR_ARG;
+    status = band_shape(f, stride, y0, rows, &lines, &page_shift);
+    if (status != STP_OK)
+        return status;
     for (i = 0; i < lines * stride; i++)
         band[i] = 0;
     k = f->mesh->triangles;
