@@ -553,6 +553,49 @@ static void test_stiff_cases(void **state)
     report("stiff", &st);
 }
 
+/* Faces seen nearly edge-on, N.E from 0.021 to 0.079 in steps of 0.002:
+ * across the face shader's hand-over to its exact route (N.E below 1/20,
+ * shade_fast.c), which the random faces and the grid reach only by chance.
+ * The eye at the origin, the face at (0, 0, 4), N = (sqrt(1 - c^2), 0, -c);
+ * one light in the mirror direction of the eye (the strongest highlight),
+ * one along the normal, one to the side; three glosses. */
+static void test_eye_cosine_band(void **state)
+{
+    static const double glosses[] = {0.05, 0.2, 0.5};
+    stats st;
+    int step, which, g;
+    (void)state;
+    memset(&st, 0, sizeof st);
+    for (step = 0; step < 30; step++) {
+        double c = 0.021 + 0.002 * step, sn = sqrt(1 - c * c);
+        for (which = 0; which < 3; which++) {
+            /* E = (0, 0, -1); mirror direction 2 (N.E) N - E */
+            double dx = which == 0 ? 2 * c * sn : which == 1 ? sn : 0.6;
+            double dy = which == 2 ? 0.7 : 0;
+            double dz = which == 0 ? -2 * c * c + 1 : which == 1 ? -c : -0.4;
+            light_desc l;
+            l.x = 3 * dx;
+            l.y = 3 * dy;
+            l.z = 4 + 3 * dz;
+            l.power = 2;
+            for (g = 0; g < 3; g++) {
+                scene sc;
+                int16_t n[3];
+                ref_vec3 rn = q14_normal(sn, 0, -c, n);
+                char what[64];
+                make_lighting(&sc.fl, &sc.rl, 1, 0.2, 1, &l, 1);
+                make_material(&sc.fm, &sc.rm, 0.8, 10, glosses[g], 0.5);
+                sc.eye = fvec(0, 0, 0);
+                sc.pdir = fvec(0, 0, -1);
+                sc.parallel = 0;
+                snprintf(what, sizeof what, "N.E %.3f light %d gloss %.2f", c, which, glosses[g]);
+                (void)check(&sc, n, rn, fvec(0, 0, 4), &st, what);
+            }
+        }
+    }
+    report("eye cosine band", &st);
+}
+
 /* N.E <= 0: exactly the ambient share, as stp_shade_unit gives it. */
 static void test_back_face_is_exactly_ambient(void **state)
 {
@@ -592,6 +635,7 @@ int main(void)
         cmocka_unit_test(test_back_face_is_exactly_ambient),
         cmocka_unit_test(test_near_equals_face),
         cmocka_unit_test(test_stiff_cases),
+        cmocka_unit_test(test_eye_cosine_band),
         cmocka_unit_test(test_highlight_sweep),
         cmocka_unit_test(test_fresnel_range_sweep),
         cmocka_unit_test(test_random_against_reference),
