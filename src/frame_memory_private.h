@@ -15,4 +15,9 @@
  * fit size_t. */
 size_t stp_band_bytes(stp_pixel_format fmt, uint32_t width, uint32_t rows);
 
+/* The format is the panels' page layout: never without STP_WITH_PAGES
+ * (config.h), whose renders of it the rasteriser and the ray tracer
+ * refuse, so the page paths behind this test compile to nothing there. */
+#define STP_PAGES_FORMAT(format) (STP_WITH_PAGES && (format) == STP_PIXEL_MONO1_PAGES)
+
 #endif

@@ -171,10 +171,6 @@ static uint8_t *band_row(const frame *fr, uint32_t y)
     return fr->band + (size_t)((y - fr->y0) >> (STP_WITH_PAGES ? fr->line_shift : 0u)) * fr->stride;
 }
 
-/* The port's format is the page layout: never without STP_WITH_PAGES,
- * whose renders of it are refused (render_check_memory). */
-#define PAGES_FORMAT(format) (STP_WITH_PAGES && (format) == STP_PIXEL_MONO1_PAGES)
-
 /* The page bit of row y (stp_halftone_fill_bits): 0 for rows; bands
  * start on page boundaries (y0 a multiple of 8). */
 static uint8_t page_bit_of(const frame *fr, uint32_t y)
@@ -1985,7 +1981,7 @@ static void render_band_clear(frame *fr, const stp_port *drawn, stp_hidden hidde
 {
     const stp_renderer *r = fr->r;
     uint32_t y, y0 = fr->y0;
-    int cleared = PAGES_FORMAT(drawn->format) ? band_clear_pages(fr, background)
+    int cleared = STP_PAGES_FORMAT(drawn->format) ? band_clear_pages(fr, background)
                                                          : band_clear_uniform(fr, drawn, background);
     for (y = cleared ? y0 + fr->rows : y0; y < y0 + fr->rows; y++) {
         /* MONO1 padding bits past the width reach the port too: make
@@ -2134,7 +2130,7 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
         render_band_clear(&fr, drawn, output->hidden, background_style);
         render_band_draw(&fr, output->hidden, mem, polygons);
         if (drawn == &grey_port)
-            render_band_threshold(&fr, output, PAGES_FORMAT(port->format));
+            render_band_threshold(&fr, output, STP_PAGES_FORMAT(port->format));
         if (port->flush(port, y0, fr.rows, fr.band, fr.stride) < 0)
             return STP_ERR_PORT;
     }

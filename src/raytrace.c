@@ -1631,7 +1631,7 @@ static void render_row(stp_raytracer *rt, const stp_port *port, const stp_output
             stp_output_put_shade(row, drawn, x, y, output, cell, rt->levels, grey);
         }
     }
-    if (STP_WITH_PAGES && drawn != port->format && port->format == STP_PIXEL_MONO1_PAGES)
+    if (drawn != port->format && STP_PAGES_FORMAT(port->format))
         stp_diffuse_row_page(output->diffusion, row, rt->width, y, page);
     else if (drawn != port->format)
         stp_diffuse_row(output->diffusion, row, rt->width, y);
@@ -1663,14 +1663,14 @@ int stp_rt_render(stp_raytracer *rt, stp_port *port, const stp_output *output, u
     for (y0 = 0; y0 < rt->height; y0 += band_rows) {
         uint32_t rows = rt->height - y0 < band_rows ? rt->height - y0 : band_rows, y;
         size_t i, page_bytes = stp_band_bytes(STP_PIXEL_MONO1_PAGES, rt->width, rows);
-        for (i = 0; STP_WITH_PAGES && drawn == STP_PIXEL_MONO1_PAGES && i < page_bytes; i++)
+        for (i = 0; STP_PAGES_FORMAT(drawn) && i < page_bytes; i++)
             band[i] = 0; /* put_shade sets and clears its bit only */
         for (y = y0; y < y0 + rows; y++) {
             /* pages: row y's page line (grey rows diffused: on grey row
              * (y - y0) / 8, read already) */
             uint8_t *page = band + (size_t)((y - y0) >> 3) * stride;
             render_row(rt, port, output, cell, &bg, drawn, stride, y,
-                       STP_WITH_PAGES && drawn == STP_PIXEL_MONO1_PAGES ? page : band + (size_t)(y - y0) * stride, page);
+                       STP_PAGES_FORMAT(drawn) ? page : band + (size_t)(y - y0) * stride, page);
         }
         if (port->flush(port, y0, rows, band, stride) < 0)
             return STP_ERR_PORT;

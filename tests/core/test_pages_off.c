@@ -18,26 +18,14 @@
 
 #include "stipple/direct.h"
 #include "stipple/stipple.h"
+#include "test_square.h"
 
 #if STP_WITH_PAGES
 #error "this test is built with STP_WITH_PAGES 0"
 #endif
 
-#define W 16
-#define H 8
-
-static uint8_t frame[H * W];
-static int flushes;
-
-static int flush_copy(stp_port *port, uint32_t y0, uint32_t rows, const uint8_t *pixels, size_t stride)
-{
-    uint32_t y;
-    (void)port;
-    flushes++;
-    for (y = 0; y < rows; y++)
-        memcpy(frame + (size_t)(y0 + y) * W, pixels + (size_t)y * stride, stride < W ? stride : W);
-    return 0;
-}
+#define W STP_TEST_SQUARE_W
+#define H STP_TEST_SQUARE_H
 
 /* A white square over device x 0..8 (world x = 8 - device x), all rows:
  * MONO1 rows hold 0xFF in byte 0 of every row, 0x00 in byte 1. */
@@ -47,52 +35,25 @@ static void test_render(void **state)
     static stp_instr df[64];
     uint8_t band[W * H];
     uint16_t zbuf[W * H];
-    stp_renderer *r = stp_renderer_create(&storage, sizeof storage, df, 64, W, H);
-    stp_view v;
+    stp_renderer *r = stp_test_square(&storage, df, 0);
     stp_output out;
     stp_frame_memory mem;
     stp_port port;
-    stp_vec3 sq[4];
+    stp_test_capture got;
     int y;
     (void)state;
-    assert_non_null(r);
-    memset(&v, 0, sizeof v);
-    v.from.z = -10 * STP_FIX_ONE;
-    v.up.y = STP_FIX_ONE;
-    v.window_half = 4 * STP_FIX_ONE; /* one unit per pixel */
-    v.hither = STP_FIX_ONE;
-    v.fov_degrees = 90 * STP_FIX_ONE;
-    v.projection = STP_PARALLEL;
-    assert_int_equal(stp_renderer_set_view(r, &v), STP_OK);
-    assert_int_equal(stp_renderer_set_levels(r, 256), STP_OK);
-    assert_int_equal(stp_renderer_set_fill_style(r, 256), STP_OK);
-    memset(sq, 0, sizeof sq);
-    sq[0].x = 8 * STP_FIX_ONE, sq[0].y = 4 * STP_FIX_ONE;
-    sq[1].x = 0, sq[1].y = 4 * STP_FIX_ONE;
-    sq[2].x = 0, sq[2].y = -4 * STP_FIX_ONE;
-    sq[3].x = 8 * STP_FIX_ONE, sq[3].y = -4 * STP_FIX_ONE;
-    assert_int_equal(stp_renderer_polygon(r, sq, 4), STP_OK);
-    memset(&port, 0, sizeof port);
-    port.width = W;
-    port.height = H;
-    port.format = STP_PIXEL_MONO1_PAGES;
-    port.flush = flush_copy;
+    stp_test_capture_port(&port, STP_PIXEL_MONO1_PAGES, &got);
     assert_int_equal(stp_output_default(&out), STP_OK);
-    memset(&mem, 0, sizeof mem);
-    mem.band = band;
-    mem.band_size = sizeof band;
-    mem.band_rows = H;
-    mem.zbuf = zbuf;
-    mem.zbuf_count = W * H;
+    stp_test_square_memory(&mem, band, zbuf);
     assert_int_equal(stp_renderer_render(r, &port, &out, &mem), STP_ERR_UNSUPPORTED);
-    assert_int_equal(flushes, 0);
+    assert_int_equal(got.flushes, 0);
     port.format = STP_PIXEL_MONO1;
-    memset(frame, 0xA5, sizeof frame);
+    memset(got.frame, 0xA5, sizeof got.frame);
     assert_int_equal(stp_renderer_render(r, &port, &out, &mem), STP_OK);
-    assert_int_equal(flushes, 1);
+    assert_int_equal(got.flushes, 1);
     for (y = 0; y < H; y++) {
-        assert_int_equal(frame[y * W], 0xFF);
-        assert_int_equal(frame[y * W + 1], 0x00);
+        assert_int_equal(got.frame[y * W], 0xFF);
+        assert_int_equal(got.frame[y * W + 1], 0x00);
     }
 }
 
