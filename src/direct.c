@@ -33,6 +33,7 @@
 #include "direct_private.h"
 #include "shade_fast_private.h"
 #include "view_private.h" /* stp_view_perspective */
+#include "div64_private.h" /* STP_UDIV32 */
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -338,7 +339,7 @@ int stp_direct_frame_project_lit(stp_direct_frame *f, const stp_mesh *mesh, cons
         return status;
     f->layout = STP_BAND_ROWS;
     /* ceil(2^24 / (levels - 1)), face_intensity's reciprocal */
-    drive_m = stp_direct_udiv(((uint32_t)1 << 24) + (uint32_t)levels - 2u, (uint32_t)levels - 1u);
+    drive_m = STP_UDIV32(((uint32_t)1 << 24) + (uint32_t)levels - 2u, (uint32_t)levels - 1u);
     /* C = V R (shading.rot, for the normals) and M = C scale: scale in Q14,
      * below 2^15; M saturated (file comment) */
     scale14 = (int16_t)(F >= 14 ? model->scale >> (F >= 14 ? F - 14 : 0) /* scale > 0 */

@@ -8,7 +8,7 @@
 
 #include "stipple/direct.h"
 #include "shade_fast_private.h"
-#include "direct_view_private.h" /* stp_direct_udiv, STP_DIRECT_CALL */
+#include "direct_view_private.h" /* STP_DIRECT_CALL */
 
 /* A light prepared for a view (include/stipple/direct.h: stp_direct_lit):
  * the face shader's constants (shade_fast.c's stp_shade_fast_prepare for

@@ -1,6 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Direct drawing's camera, model transform and sine (include/stipple/direct.h),
- * and the integer helpers the direct files share (direct_view_private.h). */
+/* Direct drawing's camera, model transform and sine (include/stipple/direct.h). */
 #include "stipple/direct.h"
 
 #include "direct_view_private.h"
@@ -8,35 +7,6 @@
 
 #define Q14 14
 #define COORD_LIMIT ((int32_t)1 << 23) /* direct.h: coordinates below 2^23 raw */
-
-uint32_t stp_direct_udiv(uint32_t n, uint32_t d)
-{
-#if STP_HAVE_MUL32
-    uint32_t q = 0;
-    int shift;
-    if (n < d)
-        return 0;
-    /* d aligned under n's top bit (below 2^32), then one step per
-     * quotient bit: bits(n) - bits(d) + 1 of them */
-    shift = stp_bit_length32(n) - stp_bit_length32(d);
-    d <<= shift;
-    for (; shift >= 0; shift--) {
-        q <<= 1;
-        if (n >= d) {
-            n -= d;
-            q |= 1u;
-        }
-        d >>= 1;
-    }
-    return q;
-#else
-    /* without a 32-bit multiply (AVR) the C library's division, a
-     * shift-and-subtract loop itself (68 bytes in libgcc), costs less code
-     * than this one inlined and no more cycles a frame (measured on the
-     * Uno's SpinningCube) */
-    return n / d;
-#endif
-}
 
 /* v scaled to unit length in Q1.14: the core's one unit vector
  * (fix.c's stp_unit_from64, Q30), rounded to Q14 as mesh.c rounds the

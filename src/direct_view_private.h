@@ -1,8 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* Private: the division of the direct-drawing files, which direct_view.c
- * defines (stp_direct_udiv) and direct.c and direct_band.c use, and their
- * call attribute; a header of its own, so direct_view.c needs nothing of
- * direct.c's.  Shifts and magnitudes: arith_private.h. */
+/* Private: the call attribute of the direct-drawing files' helpers; a
+ * header of its own, so direct_view.c needs nothing of direct.c's.  Shifts
+ * and magnitudes: arith_private.h; division: div64_private.h. */
 #ifndef STIPPLE_DIRECT_VIEW_PRIVATE_H
 #define STIPPLE_DIRECT_VIEW_PRIVATE_H
 
@@ -21,10 +20,5 @@
 #define STP_DIRECT_KEEP
 #endif
 #define STP_DIRECT_CALL static STP_DIRECT_KEEP
-
-/* floor(n / d) for d >= 1: shift-and-subtract over the quotient's bits
- * (no table; on AVR the C library's division, the same loop: setup code
- * only, never per pixel). */
-uint32_t stp_direct_udiv(uint32_t n, uint32_t d);
 
 #endif

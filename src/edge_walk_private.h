@@ -149,26 +149,47 @@ static inline int32_t stp_slope_q16_short(int32_t num, int32_t den)
         return num < 0 ? -(int32_t)q : (int32_t)q;
     }
 #endif
-    return (num * (int32_t)65536) / den;
+    {
+        /* trunc(2^16 num / den) as C's division gives it (den > 0), from
+         * the unsigned quotient: one division routine where it is a library
+         * call (div64_private.h) */
+        uint32_t q = STP_UDIV32((num < 0 ? 0u - (uint32_t)num : (uint32_t)num) << 16, (uint32_t)den);
+        return num < 0 ? -(int32_t)q : (int32_t)q;
+    }
 }
 
-/* The vertices v[0..2] sorted by y, ties kept in their order: *top, *mid,
- * *bot, the order the triangle raster (raster.c) walks them in, and
- * pixel culling's test (render.c) with it. */
-STP_HOT_INLINE void stp_tri_sort(const stp_instr *v, const stp_instr **top, const stp_instr **mid,
-                                 const stp_instr **bot)
+/* The triangle walk's vertex: stp_instr (x, y: Q27.4 in int32_t) unless
+ * the file defines STP_TRI_VERTEX, its coordinate type STP_TRI_COORD (at
+ * least 16 bits, holding 2^SUB (32767 + 1)) and the coordinates
+ * STP_TRI_X(p), STP_TRI_Y(p) before it includes this header (direct_band.c:
+ * stp_direct_point at a moved origin, in int): one walk, compiled for the
+ * vertices each caller has, so a 16-bit core does not widen them. */
+#ifndef STP_TRI_VERTEX
+#define STP_TRI_VERTEX stp_instr
+#define STP_TRI_COORD int32_t
+#define STP_TRI_X(p) ((p)->x)
+#define STP_TRI_Y(p) ((p)->y)
+#endif
+typedef STP_TRI_VERTEX stp_tri_vertex;
+typedef STP_TRI_COORD stp_tri_coord;
+
+/* The vertices v0, v1, v2 sorted by y, ties kept in their order: *top,
+ * *mid, *bot, the order the triangle walk takes them in, and pixel
+ * culling's test (render.c) with it. */
+STP_HOT_INLINE void stp_tri_sort(const stp_tri_vertex *v0, const stp_tri_vertex *v1, const stp_tri_vertex *v2,
+                                 const stp_tri_vertex **top, const stp_tri_vertex **mid, const stp_tri_vertex **bot)
 {
-    const stp_instr *t = &v[0], *m = &v[1], *b = &v[2], *swap;
-    if (m->y < t->y) {
+    const stp_tri_vertex *t = v0, *m = v1, *b = v2, *swap;
+    if (STP_TRI_Y(m) < STP_TRI_Y(t)) {
         swap = t;
         t = m;
         m = swap;
     }
-    if (b->y < m->y) {
+    if (STP_TRI_Y(b) < STP_TRI_Y(m)) {
         swap = m;
         m = b;
         b = swap;
-        if (m->y < t->y) {
+        if (STP_TRI_Y(m) < STP_TRI_Y(t)) {
             swap = t;
             t = m;
             m = swap;
@@ -186,10 +207,184 @@ STP_HOT_INLINE void stp_tri_sort(const stp_instr *v, const stp_instr **top, cons
  * [xa, xb] less the slope's truncation, below one, times yc - ya), so the
  * unsigned sum is its two's complement; its floor(/ 2^16) is the crossing
  * both rasters draw from. */
-static inline uint32_t stp_edge_acc_short(const stp_instr *a, const stp_instr *b, int32_t yc, int32_t *slope)
+static inline uint32_t stp_edge_acc_short(const stp_tri_vertex *a, const stp_tri_vertex *b, stp_tri_coord yc,
+                                          int32_t *slope)
 {
-    *slope = stp_slope_q16_short(b->x - a->x, b->y - a->y);
-    return (uint32_t)a->x * 65536u + (uint32_t)(yc - a->y) * (uint32_t)*slope;
+    *slope = stp_slope_q16_short(STP_TRI_X(b) - STP_TRI_X(a), STP_TRI_Y(b) - STP_TRI_Y(a));
+    return (uint32_t)STP_TRI_X(a) * 65536u + (uint32_t)(stp_tri_coord)(yc - STP_TRI_Y(a)) * (uint32_t)*slope;
+}
+
+/* ---- the triangle walk: the triangle raster's (raster.c) and direct
+ * drawing's bands' (direct_band.c) one scan converter for triangles ----
+ * A triangle's edge over the rows it crosses, as stp_edge_setup and
+ * stp_edges_row make it: the crossing of row centre yc is
+ * floor((xa 2^16 + (yc - ya) slope) / 2^16) with slope = trunc(2^16 (xb -
+ * xa) / (yb - ya)), stepped by 16 slopes a row; so the triangle walk
+ * gives exactly the crossings the general one does.  Coordinates are Q27.4
+ * and >= 0 (the renderer's project() clamps them; direct drawing moves its
+ * origin).  Without wide arithmetic in 32 bits (ARMv6-M: no 64-bit adds and
+ * shifts a row): only triangles whose x are below 2^14 are walked
+ * (STP_TRIANGLE_NARROW), and at a row centre ya <= yc < yb the accumulator
+ * is 2^16 times a point of [xa, xb] less (yc - ya) times the slope's
+ * truncation (below one), so within (-2^20, 2^30 + 2^20); a step taken (the
+ * next row is the edge's too) is the difference of two such values, below
+ * 2^31.  A slope of 2^27 or more is never stepped by: its step is stored
+ * as 0. */
+#if STP_WIDE_ARITH /* 64-bit registers: no limit, no narrowing */
+typedef int64_t stp_tri_acc;
+typedef int32_t stp_tri_x; /* a crossing's x, Q27.4 */
+#define STP_TRIANGLE_NARROW(v) 1
+#else
+typedef uint32_t stp_tri_acc; /* the accumulator modulo 2^32 (two's complement) */
+typedef int stp_tri_x;        /* narrow: below 2^14, an int (16 bits on AVR) */
+#define STP_TRIANGLE_NARROW(v)                                                                                   \
+    ((((uint32_t)STP_TRI_X(&(v)[0]) | (uint32_t)STP_TRI_X(&(v)[1]) | (uint32_t)STP_TRI_X(&(v)[2])) >> 14) == 0)
+#endif
+typedef struct stp_tri_edge {
+    stp_tri_acc acc, step;
+} stp_tri_edge;
+
+static inline void stp_tri_edge_start(stp_tri_edge *e, const stp_tri_vertex *a, const stp_tri_vertex *b,
+                                      stp_tri_coord yc)
+{
+#if STP_WIDE_ARITH
+    int64_t slope = stp_slope_q16(STP_TRI_X(b) - STP_TRI_X(a), STP_TRI_Y(b) - STP_TRI_Y(a));
+    int32_t dy = yc - STP_TRI_Y(a);
+    e->acc = (int64_t)STP_TRI_X(a) * 65536 +
+             (slope >= INT32_MIN && slope <= INT32_MAX ? stp_smul32(dy, (int32_t)slope) : (int64_t)dy * slope);
+    e->step = slope * 16;
+#else
+    /* |xb - xa| < 2^14: the slope fits 32 bits (|slope| <= 2^30), and the
+     * accumulator's value lies within int32 (above), so its sum taken
+     * modulo 2^32 in unsigned arithmetic is its value's two's complement */
+    int32_t slope;
+    e->acc = stp_edge_acc_short(a, b, yc, &slope);
+    e->step = slope > -((int32_t)1 << 27) && slope < ((int32_t)1 << 27) ? (uint32_t)slope * 16u : 0u;
+#endif
+}
+
+/* floor(acc / 2^16) of an edge accumulator at a row centre the edge
+ * crosses: 2^16 times a point between xa and the edge's exact crossing
+ * (the slope is truncated toward zero), so 0 <= acc < 2^30 (x >= 0) and,
+ * narrow, its 32 bits are its value and the crossing is below 2^14 */
+static inline stp_tri_x stp_tri_edge_x(stp_tri_acc acc)
+{
+    return (stp_tri_x)(acc >> 16);
+}
+
+/* The pixels [*p1, *p2] of 0..width-1 (width <= 32767) whose centres c
+ * satisfy xl <= c < xr (stp_span_pixels) for crossings xl, xr >= 0
+ * (within the vertices' x extent): the first centres at or right of xl
+ * and xr come by a shift. */
+static inline int stp_tri_span_pixels(stp_tri_x xl, stp_tri_x xr, uint32_t width, uint32_t *p1, uint32_t *p2)
+{
+    stp_tri_x a = (xl + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS, b = (xr + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS;
+    if (b > (stp_tri_x)width)
+        b = (stp_tri_x)width;
+    if (a >= b)
+        return 0;
+    *p1 = (uint32_t)a;
+    *p2 = (uint32_t)(b - 1);
+    return 1;
+}
+
+/* The first row whose centre 16 r + 8 lies at or below y (Q27.4, 0 <= y
+ * <= 32767 2^SUB: the row fits an int). */
+STP_HOT_INLINE int stp_row_below(stp_tri_coord y)
+{
+    return (int)((y + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS);
+}
+
+/* A band's rows y0 .. y0 + count - 1, and their extent in subpixels
+ * [top, end) = [y0 2^SUB, (y0 + count) 2^SUB) (SUB = STP_SUBPIXEL_BITS,
+ * y0 + count <= 32767), both kept: a walk tests each. */
+typedef struct stp_band_rows {
+    uint32_t y0, count;
+    int32_t top, end;
+} stp_band_rows;
+
+/* A triangle's walk down its rows in a band: the long edge top-bottom
+ * (lng) and the short one (sht: top-mid above row r_mid, mid-bottom from
+ * there) at row `row`, to r_last.  Its vertices' y lie in [0, 32767 2^SUB]
+ * (the renderer's frames and direct drawing's moved origin), so a row is
+ * an int (16 bits on AVR, where each 32-bit step a row costs).
+ * stp_tri_walk_start: walk w at the first row of triangle v0 v1 v2 (their
+ *   x, y) within the band's rows; 0 when it has none.
+ * stp_tri_walk_span: the pixels [*p1, *p2] of 0..width-1 of w's row
+ *   between its two crossings; 0 when there is none.
+ * stp_tri_walk_next: w a row down; 0 when its row was the last.
+ * stp_tri_walk_yc: the centre of w's row, Q27.4. */
+typedef struct stp_tri_walk {
+    stp_tri_edge lng, sht;
+    int row, r_mid, r_last;
+    const stp_tri_vertex *top, *mid, *bot;
+} stp_tri_walk;
+
+/* The centre of row `row`, Q27.4 (formed where needed: cheaper than
+ * stepping it a row, measured) */
+STP_HOT_INLINE stp_tri_coord stp_tri_row_centre(int row)
+{
+    return (stp_tri_coord)row * (1 << STP_SUBPIXEL_BITS) + STP_HALF_PIXEL;
+}
+
+STP_HOT_INLINE stp_tri_coord stp_tri_walk_yc(const stp_tri_walk *w)
+{
+    return stp_tri_row_centre(w->row);
+}
+
+STP_HOT_INLINE int stp_tri_walk_start(const stp_tri_vertex *v0, const stp_tri_vertex *v1, const stp_tri_vertex *v2,
+                                      const stp_band_rows *band, stp_tri_walk *w)
+{
+    int r_first, r_last;
+    stp_tri_coord yc;
+    stp_tri_sort(v0, v1, v2, &w->top, &w->mid, &w->bot);
+    /* (a shortcut: the rows below find it too; left out where 32-bit
+     * comparisons cost more code than they save time) */
+    if (!STP_LEAN_CODE && (STP_TRI_Y(w->bot) <= band->top || STP_TRI_Y(w->top) >= band->end))
+        return 0; /* not in the band */
+    /* rows whose centre lies in [top, bottom), in the band */
+    r_first = stp_row_below(STP_TRI_Y(w->top));
+    r_last = stp_row_below(STP_TRI_Y(w->bot)) - 1;
+    if (r_first < (int)band->y0)
+        r_first = (int)band->y0;
+    if (r_last > (int)(band->y0 + band->count) - 1)
+        r_last = (int)(band->y0 + band->count) - 1;
+    if (r_first > r_last)
+        return 0;
+    w->row = r_first;
+    w->r_last = r_last;
+    w->r_mid = stp_row_below(STP_TRI_Y(w->mid)); /* the first row below mid's y */
+    yc = stp_tri_row_centre(r_first);
+    stp_tri_edge_start(&w->lng, w->top, w->bot, yc);
+    if (r_first < w->r_mid)
+        stp_tri_edge_start(&w->sht, w->top, w->mid, yc);
+    else
+        stp_tri_edge_start(&w->sht, w->mid, w->bot, yc);
+    return 1;
+}
+
+STP_HOT_INLINE int stp_tri_walk_span(const stp_tri_walk *w, uint32_t width, uint32_t *p1, uint32_t *p2)
+{
+    stp_tri_x xl = stp_tri_edge_x(w->lng.acc), xr = stp_tri_edge_x(w->sht.acc);
+    if (xl > xr) {
+        stp_tri_x x = xl;
+        xl = xr;
+        xr = x;
+    }
+    return stp_tri_span_pixels(xl, xr, width, p1, p2);
+}
+
+STP_HOT_INLINE int stp_tri_walk_next(stp_tri_walk *w)
+{
+    if (w->row == w->r_last)
+        return 0;
+    w->row++;
+    w->lng.acc += w->lng.step;
+    if (w->row == w->r_mid)
+        stp_tri_edge_start(&w->sht, w->mid, w->bot, stp_tri_walk_yc(w));
+    else
+        w->sht.acc += w->sht.step;
+    return 1;
 }
 
 /* The edge setup the polygon raster and the shadow maps share.

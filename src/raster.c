@@ -113,12 +113,11 @@ typedef struct frame {
     uint8_t *band;
     uint16_t *zbuf;
     size_t stride;            /* bytes between band rows, or pages (MONO1_PAGES) */
-    uint32_t y0, rows; /* current band */
+    stp_band_rows rows; /* current band */
     /* the band's layout: rows (0, 0), or STP_PIXEL_MONO1_PAGES (3, 1):
      * row y's line starts (y - y0) >> line_shift strides in, and is
      * written at bit page_one << (y mod 8) (page_bit_of) */
     uint8_t line_shift, page_one;
-    int32_t band_top, band_end; /* its rows' extent in subpixels: y0 2^SUB, (y0 + rows) 2^SUB */
     stp_polygon_setup *setup; /* the caller's per-polygon depth setups, or NULL */
     int32_t key_min, key_max; /* depth-key range of the visible polygons */
     uint32_t key_range;       /* key_max - key_min, when positive */
@@ -168,7 +167,7 @@ typedef struct frame {
  * byte of its page, written at page_bit_of(fr, y). */
 static uint8_t *band_row(const frame *fr, uint32_t y)
 {
-    return fr->band + (size_t)((y - fr->y0) >> (STP_WITH_PAGES ? fr->line_shift : 0u)) * fr->stride;
+    return fr->band + (size_t)((y - fr->rows.y0) >> (STP_WITH_PAGES ? fr->line_shift : 0u)) * fr->stride;
 }
 
 /* The page bit of row y (stp_halftone_fill_bits): 0 for rows; bands
@@ -568,7 +567,7 @@ STP_HOT_INLINE void span_z_direct(uint16_t *z, uint8_t *row, uint8_t page_bit, u
 /* The band row y's Z entries, pixels and pattern byte. */
 static uint16_t *z_row(const frame *fr, uint32_t y)
 {
-    return fr->zbuf + (size_t)(y - fr->y0) * fr->r->width;
+    return fr->zbuf + (size_t)(y - fr->rows.y0) * fr->r->width;
 }
 
 static uint8_t pattern_of_row(const frame *fr, uint32_t y)
@@ -665,7 +664,7 @@ static void span_z_clamped(const span_paint *sp, uint16_t *z, uint32_t x1, uint3
 static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, paint style,
                        int64_t d, int64_t ddx, int smooth, int64_t s0, int64_t sstep, stp_fix t, int direct)
 {
-    uint16_t *z = fr->zbuf + (size_t)(y - fr->y0) * fr->r->width;
+    uint16_t *z = fr->zbuf + (size_t)(y - fr->rows.y0) * fr->r->width;
     int64_t d_end = d + ddx * (int64_t)(x2 - x1);
     const int64_t lo = DEPTH_Q12_MIN, hi = DEPTH_Q12_END;
     span_paint sp;
@@ -894,7 +893,7 @@ static int depth_plane_for(frame *fr, const stp_instr *v, int n, uint32_t ordina
 {
     stp_polygon_setup *kept = fr->setup && ordinal != UINT32_MAX ? &fr->setup[ordinal] : 0;
     int ok;
-    if (kept && ymin < (int32_t)(fr->y0 << SUB) && kept->centre[0] != SETUP_NOT_MADE) {
+    if (kept && ymin < (int32_t)(fr->rows.y0 << SUB) && kept->centre[0] != SETUP_NOT_MADE) {
         if (kept->centre[0] < 0)
             return 0;
         pl->ddx = kept->plane[0];
@@ -953,72 +952,6 @@ static int polygon_smooth(const stp_instr *header)
 #endif
 }
 
-/* A triangle's edge over the rows it crosses, as stp_edge_setup and
- * stp_edges_row make it: the crossing of row centre yc is
- * floor((xa 2^16 + (yc - ya) slope) / 2^16) with slope = trunc(2^16 (xb -
- * xa) / (yb - ya)), stepped by 16 slopes a row; so the triangle path
- * paints exactly the pixels the general one does.  Without wide
- * arithmetic in 32 bits (ARMv6-M: no 64-bit adds and shifts a row): the
- * triangle path takes triangles whose x are below 2^14 (TRIANGLE_NARROW),
- * and at a row centre ya <= yc < yb the accumulator is 2^16 times a point
- * of [xa, xb] less (yc - ya) times the slope's truncation (below one), so
- * within (-2^20, 2^30 + 2^20); a step taken (the next row is the edge's
- * too) is the difference of two such values, below 2^31.  A slope of 2^27
- * or more is never stepped by: its step is stored as 0. */
-#if STP_WIDE_ARITH /* 64-bit registers: no limit, no narrowing */
-typedef int64_t tri_acc;
-#define TRIANGLE_NARROW(v) 1
-#else
-typedef uint32_t tri_acc; /* the accumulator modulo 2^32 (two's complement) */
-#define TRIANGLE_NARROW(v) ((((uint32_t)(v)[0].x | (uint32_t)(v)[1].x | (uint32_t)(v)[2].x) >> 14) == 0)
-#endif
-typedef struct tri_edge {
-    tri_acc acc, step;
-} tri_edge;
-
-static inline void tri_edge_start(tri_edge *e, const stp_instr *a, const stp_instr *b, int32_t yc)
-{
-#if STP_WIDE_ARITH
-    int64_t slope = stp_slope_q16(b->x - a->x, b->y - a->y);
-    e->acc = (int64_t)a->x * 65536 + (slope >= INT32_MIN && slope <= INT32_MAX
-                                          ? stp_smul32(yc - a->y, (int32_t)slope)
-                                          : (int64_t)(yc - a->y) * slope);
-    e->step = slope * 16;
-#else
-    /* |xb - xa| < 2^14: the slope fits 32 bits (|slope| <= 2^30), and the
-     * accumulator's value lies within int32 (above), so its sum taken
-     * modulo 2^32 in unsigned arithmetic is its value's two's complement */
-    int32_t slope;
-    e->acc = stp_edge_acc_short(a, b, yc, &slope);
-    e->step = slope > -((int32_t)1 << 27) && slope < ((int32_t)1 << 27) ? (uint32_t)slope * 16u : 0u;
-#endif
-}
-
-/* floor(acc / 2^16) of an edge accumulator at a row centre the edge
- * crosses: 2^16 times a point between xa and the edge's exact crossing
- * (the slope is truncated toward zero), so 0 <= acc < 2^30 (device x are
- * >= 0) and, narrow, its 32 bits are its value */
-static int32_t tri_edge_x(tri_acc acc)
-{
-    return (int32_t)(acc >> 16);
-}
-
-/* The pixels [*p1, *p2] of 0..width-1 whose centres c satisfy xl <= c <
- * xr (stp_span_pixels) for crossings xl, xr >= 0: a triangle's, within its
- * vertices' x extent, and device coordinates are >= 0 (project() clamps
- * them), so the first centres at or right of xl and xr come by a shift. */
-static int tri_span_pixels(int32_t xl, int32_t xr, uint32_t width, uint32_t *p1, uint32_t *p2)
-{
-    uint32_t a = (uint32_t)(xl + HALF_PIXEL - 1) >> SUB, b = (uint32_t)(xr + HALF_PIXEL - 1) >> SUB;
-    if (b > width)
-        b = width;
-    if (a >= b)
-        return 0;
-    *p1 = a;
-    *p2 = b - 1u;
-    return 1;
-}
-
 #if STP_WITH_ZBUFFER
 /* The int32 whose two's complement is u (no implementation-defined
  * conversion of a value above INT32_MAX) */
@@ -1041,12 +974,6 @@ static int depth_terms_short(const depth_plane *pl, const stp_instr *v, int32_t 
     return depth_term_short(pl->ddx, x_hi - x_lo) && depth_term_short(pl->ddy, y_extent);
 }
 #endif
-
-/* The first row whose centre 16 r + 8 lies at or below y (Q27.4, y >= 0). */
-STP_HOT_INLINE int32_t row_below(int32_t y)
-{
-    return (int32_t)((uint32_t)(y + HALF_PIXEL - 1) >> SUB);
-}
 
 #if STP_WITH_ZBUFFER
 /* A flat triangle's depths down its rows (draw_triangle): short ones
@@ -1100,7 +1027,7 @@ typedef struct tri_row {
 STP_HOT_INLINE void tri_row_at(const frame *fr, tri_row *tr, uint32_t row, int pages)
 {
     tr->z = z_row(fr, row);
-    tr->band = fr->band + (size_t)(pages ? (row - fr->y0) >> 3 : row - fr->y0) * fr->stride; /* band_row */
+    tr->band = fr->band + (size_t)(pages ? (row - fr->rows.y0) >> 3 : row - fr->rows.y0) * fr->stride; /* band_row */
     tr->page_bit = pages ? page_bit_of(fr, row) : 0;
     tr->cell_height = fr->cell->height; /* >= 1: direct spans need mono_fill */
     tr->cell_row = fr->cell_mask ? (row & fr->cell_mask) : row % tr->cell_height;
@@ -1155,70 +1082,6 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
 }
 #endif
 
-/* A triangle's walk down its rows in the band: the long edge top-bottom
- * (lng) and the short one (sht: top-mid above row r_mid, mid-bottom from
- * there) at row `row` (centre yc), to r_last. */
-typedef struct tri_walk {
-    tri_edge lng, sht;
-    int32_t row, yc, r_mid, r_last;
-    const stp_instr *top, *mid, *bot;
-} tri_walk;
-
-/* Walk w at the triangle v's first row in the band; 0 when it has none. */
-STP_HOT_INLINE int tri_walk_start(const frame *fr, const stp_instr *v, tri_walk *w)
-{
-    int32_t r_first;
-    stp_tri_sort(v, &w->top, &w->mid, &w->bot);
-    if (w->bot->y <= fr->band_top || w->top->y >= fr->band_end)
-        return 0; /* not in the band */
-    /* rows whose centre lies in [top, bottom), in the band */
-    r_first = row_below(w->top->y);
-    w->r_last = row_below(w->bot->y) - 1;
-    w->r_mid = row_below(w->mid->y); /* the first row below mid's y */
-    if (r_first < (int32_t)fr->y0)
-        r_first = (int32_t)fr->y0;
-    if (w->r_last > (int32_t)(fr->y0 + fr->rows) - 1)
-        w->r_last = (int32_t)(fr->y0 + fr->rows) - 1;
-    if (r_first > w->r_last)
-        return 0;
-    w->row = r_first;
-    w->yc = r_first * (1 << SUB) + HALF_PIXEL;
-    tri_edge_start(&w->lng, w->top, w->bot, w->yc);
-    if (r_first < w->r_mid)
-        tri_edge_start(&w->sht, w->top, w->mid, w->yc);
-    else
-        tri_edge_start(&w->sht, w->mid, w->bot, w->yc);
-    return 1;
-}
-
-/* The pixels [*p1, *p2] of walk w's row between its two crossings; 0 when
- * there is none. */
-STP_HOT_INLINE int tri_walk_span(const tri_walk *w, uint32_t width, uint32_t *p1, uint32_t *p2)
-{
-    int32_t xl = tri_edge_x(w->lng.acc), xr = tri_edge_x(w->sht.acc);
-    if (xl > xr) {
-        int32_t x = xl;
-        xl = xr;
-        xr = x;
-    }
-    return tri_span_pixels(xl, xr, width, p1, p2);
-}
-
-/* Walk w a row down; 0 when its row was the last. */
-STP_HOT_INLINE int tri_walk_next(tri_walk *w)
-{
-    if (w->row == w->r_last)
-        return 0;
-    w->row++;
-    w->yc += 1 << SUB;
-    w->lng.acc += w->lng.step;
-    if (w->row == w->r_mid)
-        tri_edge_start(&w->sht, w->mid, w->bot, w->yc);
-    else
-        w->sht.acc += w->sht.step;
-    return 1;
-}
-
 /* paint_setup's answer for an opaque flat triangle without its call when
  * it has nothing to set up: a MONO1 pattern style already made, no
  * shadow records to gather (0: ask paint_setup). */
@@ -1235,17 +1098,17 @@ STP_HOT_INLINE int tri_walk_next(tri_walk *w)
 /* The rows of tri_draw_z that go straight to the band from w's row (span
  * p1..p2) at tr; pages a constant at each call (1: MONO1_PAGES), so the
  * rows' loop keeps no page test. */
-STP_HOT_INLINE void tri_rows_direct(const frame *fr, paint style, stp_fix t, tri_walk *w, tri_row *tr, tri_depth *td,
+STP_HOT_INLINE void tri_rows_direct(const frame *fr, paint style, stp_fix t, stp_tri_walk *w, tri_row *tr, tri_depth *td,
                                     const depth_plane *pl, uint32_t p1, uint32_t p2, int pages)
 {
     for (;;) {
         tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, tr, td, pl, pages);
         do {
-            if (!tri_walk_next(w))
+            if (!stp_tri_walk_next(w))
                 return;
             tri_depth_step(td, pl);
             tri_row_next(fr, tr, pages);
-        } while (!tri_walk_span(w, fr->r->width, &p1, &p2));
+        } while (!stp_tri_walk_span(w, fr->r->width, &p1, &p2));
     }
 }
 
@@ -1254,7 +1117,7 @@ STP_HOT_INLINE void tri_rows_direct(const frame *fr, paint style, stp_fix t, tri
  * kept setups) here; rows straight to the band (tri_row) when
  * paint_setup says they can go. */
 STP_HOT_INLINE void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint style, stp_fix t,
-                               uint32_t ordinal, tri_walk *w, uint32_t p1, uint32_t p2, int pages)
+                               uint32_t ordinal, stp_tri_walk *w, uint32_t p1, uint32_t p2, int pages)
 {
     depth_plane pl;
     tri_depth td;
@@ -1262,15 +1125,15 @@ STP_HOT_INLINE void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint
     /* without kept setups the plane is made here (no call, no lookup) */
     if (!(fr->setup ? depth_plane_for(fr, v, 3, ordinal, w->top->y, &pl) : depth_setup_triangle(fr, v, &pl)))
         return; /* edge-on: no area on screen */
-    tri_depth_start(&td, &pl, v, w->bot->y - w->top->y, w->yc);
+    tri_depth_start(&td, &pl, v, w->bot->y - w->top->y, stp_tri_walk_yc(w));
     if (!(TRIANGLE_PAINT_READY(fr, style, t) || paint_setup(fr, at, style, 0, t))) {
         for (;;) {
             tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, 0, &td, &pl, 0);
             do {
-                if (!tri_walk_next(w))
+                if (!stp_tri_walk_next(w))
                     return;
                 tri_depth_step(&td, &pl);
-            } while (!tri_walk_span(w, fr->r->width, &p1, &p2));
+            } while (!stp_tri_walk_span(w, fr->r->width, &p1, &p2));
         }
     }
     tri_row_at(fr, &tr, (uint32_t)w->row, pages);
@@ -1288,7 +1151,7 @@ STP_HOT_INLINE void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint
 #define PAGES_COPY static
 #endif
 PAGES_COPY void tri_draw_z_pages(frame *fr, uint32_t at, const stp_instr *v, paint style, stp_fix t,
-                                   uint32_t ordinal, tri_walk w, uint32_t p1, uint32_t p2)
+                                   uint32_t ordinal, stp_tri_walk w, uint32_t p1, uint32_t p2)
 {
     tri_draw_z(fr, at, v, style, t, ordinal, &w, p1, p2, 1);
 }
@@ -1304,16 +1167,16 @@ PAGES_COPY void tri_draw_z_pages(frame *fr, uint32_t at, const stp_instr *v, pai
 static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint style, int use_z, stp_fix t,
                           uint32_t ordinal)
 {
-    tri_walk w;
+    stp_tri_walk w;
     uint32_t p1, p2, width = fr->r->width;
-    if (!tri_walk_start(fr, v, &w))
+    if (!stp_tri_walk_start(&v[0], &v[1], &v[2], &fr->rows, &w))
         return;
 #if STP_WITH_ZBUFFER
-    if (use_z && fr->setup && ordinal != UINT32_MAX && w.top->y >= fr->band_top)
+    if (use_z && fr->setup && ordinal != UINT32_MAX && w.top->y >= fr->rows.top)
         fr->setup[ordinal].centre[0] = SETUP_NOT_MADE; /* its first band: made at the first span */
 #endif
-    while (!tri_walk_span(&w, width, &p1, &p2))
-        if (!tri_walk_next(&w))
+    while (!stp_tri_walk_span(&w, width, &p1, &p2))
+        if (!stp_tri_walk_next(&w))
             return; /* no pixel centre */
 #if STP_WITH_ZBUFFER
     if (use_z) {
@@ -1331,9 +1194,9 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
     for (;;) {
         paint_run(fr, (uint32_t)w.row, p1, p2, style, 0, 0, 0, t);
         do {
-            if (!tri_walk_next(&w))
+            if (!stp_tri_walk_next(&w))
                 return;
-        } while (!tri_walk_span(&w, width, &p1, &p2));
+        } while (!stp_tri_walk_span(&w, width, &p1, &p2));
     }
 }
 #endif /* STP_WITH_TRIANGLE_PATH */
@@ -1462,14 +1325,14 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
 #endif
     int32_t ymin, ymax;
     int direct;
-    int32_t band_top = (int32_t)(fr->y0 << SUB), band_bottom = (int32_t)((fr->y0 + fr->rows) << SUB);
+    int32_t band_top = fr->rows.top, band_bottom = fr->rows.end;
     uint32_t y, y_first, y_last;
     int64_t d_row = 0, ddx = 0;
 #if STP_WITH_ZBUFFER
     depth_plane pl = {0, 0, 0, 0, 0};
 #endif
 #if STP_WITH_TRIANGLE_PATH
-    if (n == 3 && !smooth && TRIANGLE_PATH(fr) && TRIANGLE_NARROW(v)) {
+    if (n == 3 && !smooth && TRIANGLE_PATH(fr) && STP_TRIANGLE_NARROW(v)) {
         draw_triangle(fr, at, v, style, use_z, t, ordinal); /* the painter's order comes here */
         return;
     }
@@ -1488,8 +1351,8 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
     /* rows whose centres lie in [ymin, ymax) and in the band */
     y_first = (uint32_t)((ymin < band_top ? band_top : ymin) >> SUB);
     y_last = (uint32_t)((ymax > band_bottom ? band_bottom : ymax) >> SUB);
-    if (y_last >= fr->y0 + fr->rows)
-        y_last = fr->y0 + fr->rows - 1;
+    if (y_last >= fr->rows.y0 + fr->rows.count)
+        y_last = fr->rows.y0 + fr->rows.count - 1;
     stp_edges_start(r->edges, ne, (int32_t)(y_first << SUB) + HALF_PIXEL, smooth);
 #if STP_WITH_ZBUFFER
     /* the depth at device x = 0 of the current row centre, stepped down
@@ -1506,7 +1369,7 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
         /* the pixels just outside this row's spans (opaque, unshadowed) */
         if (fr->aa.out && t == 0 && EDGE_AA_UNSHADOWED(fr))
             stp_edge_aa_row(&fr->aa, band_row(fr, y),
-                            use_z ? fr->zbuf + (size_t)(y - fr->y0) * r->width : 0, r->crossings, nc,
+                            use_z ? fr->zbuf + (size_t)(y - fr->rows.y0) * r->width : 0, r->crossings, nc,
                             style, smooth, EDGE_AA_DEPTH(d_row), EDGE_AA_DEPTH(ddx));
 #endif
 #if STP_WITH_ZBUFFER
@@ -1525,7 +1388,7 @@ static void draw_line(const frame *fr, const stp_instr *a, const stp_instr *b, p
     int32_t w = (int32_t)fr->r->width - 1, h = (int32_t)fr->r->height - 1;
     for (;;) {
         int32_t px = x0 > w ? w : x0, py = y0 > h ? h : y0;
-        if ((uint32_t)py >= fr->y0 && (uint32_t)py < fr->y0 + fr->rows)
+        if ((uint32_t)py >= fr->rows.y0 && (uint32_t)py < fr->rows.y0 + fr->rows.count)
             put_span(fr, (uint32_t)py, (uint32_t)px, (uint32_t)px, style);
         if (x0 == x1 && y0 == y1)
             break;
@@ -1569,7 +1432,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
                 if (!draw)
                     ;
 #if STP_WITH_TRIANGLE_PATH
-                else if (in->op == 3 && triangle_path && !polygon_smooth(in) && TRIANGLE_NARROW(in))
+                else if (in->op == 3 && triangle_path && !polygon_smooth(in) && STP_TRIANGLE_NARROW(in))
                     draw_triangle(fr, k, in, style, use_z, t, ordinal);
 #endif
                 else
@@ -1919,7 +1782,7 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
  * row.  0 (nothing written) when the band is not so. */
 static int band_clear_uniform(frame *fr, const stp_port *drawn, paint background)
 {
-    size_t i, count = fr->stride * (size_t)fr->rows; /* below band_size */
+    size_t i, count = fr->stride * (size_t)fr->rows.count; /* below band_size */
     uint32_t cy;
     uint8_t pattern, *band = fr->band; /* a local: a byte store may alias fr */
     if (drawn->format != STP_PIXEL_MONO1 || (size_t)fr->r->width != 8u * fr->stride)
@@ -1944,7 +1807,7 @@ static int band_clear_uniform(frame *fr, const stp_port *drawn, paint background
 static void page_fill_background(const frame *fr, uint8_t *page, uint32_t k)
 {
     uint8_t column[8] = {0, 0, 0, 0, 0, 0, 0, 0};
-    uint32_t r, c, first = fr->y0 + 8u * k, n = fr->rows - 8u * k < 8u ? fr->rows - 8u * k : 8u;
+    uint32_t r, c, first = fr->rows.y0 + 8u * k, n = fr->rows.count - 8u * k < 8u ? fr->rows.count - 8u * k : 8u;
     size_t x;
     for (r = 0; r < n; r++) {
         uint32_t y = first + r;
@@ -1963,7 +1826,7 @@ static void page_fill_background(const frame *fr, uint8_t *page, uint32_t k)
  * which set one bit of each byte (stp_halftone_fill_page_run). */
 static int band_clear_pages(frame *fr, paint background)
 {
-    size_t i, count = fr->stride * (((size_t)fr->rows + 7u) / 8u); /* within band_size */
+    size_t i, count = fr->stride * (((size_t)fr->rows.count + 7u) / 8u); /* within band_size */
     uint32_t k;
     uint8_t *band = fr->band; /* a local: a byte store may alias fr */
     use_style(fr, background); /* patterns[] for the background, when mono_fill */
@@ -1972,7 +1835,7 @@ static int band_clear_pages(frame *fr, paint background)
             band[i] = 0;
         return 0;
     }
-    for (k = 0; 8u * k < fr->rows; k++)
+    for (k = 0; 8u * k < fr->rows.count; k++)
         page_fill_background(fr, band + k * fr->stride, k);
     return 1;
 }
@@ -1980,10 +1843,10 @@ static int band_clear_pages(frame *fr, paint background)
 static void render_band_clear(frame *fr, const stp_port *drawn, stp_hidden hidden, paint background)
 {
     const stp_renderer *r = fr->r;
-    uint32_t y, y0 = fr->y0;
+    uint32_t y, y0 = fr->rows.y0;
     int cleared = STP_PAGES_FORMAT(drawn->format) ? band_clear_pages(fr, background)
                                                          : band_clear_uniform(fr, drawn, background);
-    for (y = cleared ? y0 + fr->rows : y0; y < y0 + fr->rows; y++) {
+    for (y = cleared ? y0 + fr->rows.count : y0; y < y0 + fr->rows.count; y++) {
         /* MONO1 padding bits past the width reach the port too: make
          * them 0 rather than whatever the caller's buffer held */
         if (drawn->format == STP_PIXEL_MONO1)
@@ -1994,7 +1857,7 @@ static void render_band_clear(frame *fr, const stp_port *drawn, stp_hidden hidde
     if (hidden == STP_HIDDEN_ZBUFFER && fr->x_min <= fr->x_max) {
         /* farther than any polygon (they map to >= 1), where one can
          * reach: a Z test reads no other entry */
-        uint32_t y_end = y0 + fr->rows - 1 < fr->y_max ? y0 + fr->rows - 1 : fr->y_max;
+        uint32_t y_end = y0 + fr->rows.count - 1 < fr->y_max ? y0 + fr->rows.count - 1 : fr->y_max;
         size_t i, count = (size_t)(fr->x_max - fr->x_min) + 1u;
         for (y = y0 > fr->y_min ? y0 : fr->y_min; y <= y_end; y++) {
             uint16_t *z = fr->zbuf + (size_t)(y - y0) * r->width + fr->x_min;
@@ -2039,11 +1902,11 @@ static void render_band_threshold(frame *fr, const stp_output *output, int pages
 #if STP_WITH_DIFFUSION || STP_WITH_EDGE_AA
     uint32_t y;
     (void)output; /* read only with diffusion */
-    for (y = fr->y0; y < fr->y0 + fr->rows; y++) {
+    for (y = fr->rows.y0; y < fr->rows.y0 + fr->rows.count; y++) {
         /* a page port's row r goes to page r / 8, on grey row r / 8:
          * read already (diffuse_private.h) */
-        uint8_t *row = fr->band + (size_t)(y - fr->y0) * fr->stride;
-        uint8_t *page = pages ? fr->band + (size_t)((y - fr->y0) >> 3) * fr->stride : 0;
+        uint8_t *row = fr->band + (size_t)(y - fr->rows.y0) * fr->stride;
+        uint8_t *page = pages ? fr->band + (size_t)((y - fr->rows.y0) >> 3) * fr->stride : 0;
 #if STP_WITH_DIFFUSION
         if (output->diffusion) {
             if (page)
@@ -2123,15 +1986,15 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
         sort_entries(mem->sort, (size_t)polygons);
 #endif
     for (y0 = 0; y0 < r->height; y0 += mem->band_rows) {
-        fr.y0 = y0;
-        fr.rows = r->height - y0 < mem->band_rows ? r->height - y0 : mem->band_rows;
-        fr.band_top = (int32_t)(y0 << SUB); /* heights below 2^15: no overflow */
-        fr.band_end = (int32_t)((y0 + fr.rows) << SUB);
+        fr.rows.y0 = y0;
+        fr.rows.count = r->height - y0 < mem->band_rows ? r->height - y0 : mem->band_rows;
+        fr.rows.top = (int32_t)(y0 << SUB); /* heights below 2^15: no overflow */
+        fr.rows.end = (int32_t)((y0 + fr.rows.count) << SUB);
         render_band_clear(&fr, drawn, output->hidden, background_style);
         render_band_draw(&fr, output->hidden, mem, polygons);
         if (drawn == &grey_port)
             render_band_threshold(&fr, output, STP_PAGES_FORMAT(port->format));
-        if (port->flush(port, y0, fr.rows, fr.band, fr.stride) < 0)
+        if (port->flush(port, y0, fr.rows.count, fr.band, fr.stride) < 0)
             return STP_ERR_PORT;
     }
     return STP_OK;

@@ -675,7 +675,7 @@ int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, in
     v[1].y = y1;
     v[2].x = x2;
     v[2].y = y2;
-    stp_tri_sort(v, &top, &mid, &bot);
+    stp_tri_sort(&v[0], &v[1], &v[2], &top, &mid, &bot);
     if (bot->y >> 14)
         return 1; /* not narrow: kept */
     /* rows whose centre lies in [top, bottom) */

@@ -15,7 +15,8 @@
 #     (the Arduino library's configuration, no LTO).
 # The lean configuration: STP_WITH_SPECULAR=0 (the highlight's code out of
 # shade_fast.c), STP_MAX_LIGHTS=1, STP_WITH_PAGES=0 (its SSD0323 panel takes
-# rows: the page layout left out).
+# rows: the page layout left out), STP_SMALL_DIVISION=1 (the edges' slopes
+# by div64.c's loop: no C library division, no slope table).
 #
 # usage: firmware_lean_sizes.sh SOURCE_DIR WORK_DIR
 set -eu
@@ -25,10 +26,10 @@ src=$(cd "$1" && pwd)
 mkdir -p "$2"
 work=$(cd "$2" && pwd)
 cpu="-mcpu=cortex-m0plus -mthumb -mfloat-abi=soft"
-defs="-DSTP_WITH_SPECULAR=0 -DSTP_MAX_LIGHTS=1 -DSTP_WITH_PAGES=0"
+defs="-DSTP_WITH_SPECULAR=0 -DSTP_MAX_LIGHTS=1 -DSTP_WITH_PAGES=0 -DSTP_SMALL_DIVISION=1"
 cflags="-std=c99 $cpu -Os -ffreestanding -ffunction-sections -fdata-sections -Wall -Wextra -Werror"
 inc="-I $src/include -I $src/src -I $src/ports/direct -I $src/ports/stellaris -I $src/ports/controllers"
-core="direct direct_band direct_view shade_fast shade view recip mesh fix"
+core="direct direct_band direct_view shade_fast shade view recip mesh fix div64"
 rm -rf "$work/obj" && mkdir -p "$work/obj"
 
 # ---- 1. the core alone, per object
@@ -96,7 +97,7 @@ arm-none-eabi-gcc $cflags $defs $inc -flto -nostdlib -Wl,--gc-sections -T "$st/l
     "$st/main_direct.c" "$src/ports/direct/direct_spin.c" "$st/startup.c" "$st/semihost.c" \
     "$st/lm3s6965_oled.c" "$st/board_lm3s6965.c" "$src/ports/controllers/panel.c" \
     "$src/ports/controllers/ssd0323.c" "$src/src/direct.c" "$src/src/direct_band.c" \
-    "$src/src/direct_view.c" "$src/src/shade_fast.c" "$src/src/shade.c" "$src/src/view.c" "$src/src/recip.c" "$src/src/mesh.c" "$src/src/fix.c" "$work/obj/libc_min.x" -lgcc \
+    "$src/src/direct_view.c" "$src/src/shade_fast.c" "$src/src/shade.c" "$src/src/view.c" "$src/src/recip.c" "$src/src/mesh.c" "$src/src/fix.c" "$src/src/div64.c" "$work/obj/libc_min.x" -lgcc \
     -Wl,-Map="$work/lm3s6965.map" -o "$work/stipple_fw_lm3s6965evb_direct.elf"
 echo "== whole lm3s6965evb image (LTO, --gc-sections)"
 arm-none-eabi-size "$work/stipple_fw_lm3s6965evb_direct.elf"

@@ -242,11 +242,15 @@
 #define STP_WITH_DEFAULT_CELL 1
 #endif
 
-/* 1: the band renderer divides 64-bit numbers with a small bit-serial loop
- * (src/div64.c, up to 64 steps a quotient) instead of the C library's
- * routines (about 1 KB on ARMv6-M, not counted below): a size-first choice
- * for playback-only firmware (stipple compile --static sets it).  Same
- * results.  1 saves 654 bytes of the core's own code. */
+/* 1: the band renderer and direct drawing divide with small bit-serial
+ * loops (src/div64.c: up to 64 steps a 64-bit quotient, 32 a 32-bit one
+ * on cores with a 32-bit multiply) instead of the C library's routines
+ * (about 1 KB for 64 bits and 500 bytes for 32 on ARMv6-M, not counted
+ * below), and short edges' slopes come from the division instead of a
+ * 512-byte table: a size-first choice for playback-only firmware (stipple
+ * compile --static sets it) and the lean direct-drawing image.  Same
+ * results.  1 saves 752 bytes of the core's own code (Cortex-M0+, -Os,
+ * every file of src/). */
 #ifndef STP_SMALL_DIVISION
 #define STP_SMALL_DIVISION 0
 #endif

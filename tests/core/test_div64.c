@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* STP_SMALL_DIVISION's bit-serial 64-bit division (src/div64.c, built here
- * with the switch on) against C's own operator: signs, extremes and a
- * pseudo-random sweep of magnitudes. */
+/* STP_SMALL_DIVISION's bit-serial 64-bit and 32-bit divisions (src/div64.c,
+ * built here with the switch on) against C's own operator: signs, extremes
+ * and a pseudo-random sweep of magnitudes. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -56,11 +56,50 @@ static void test_random_magnitudes(void **state)
     }
 }
 
+static void check32(uint32_t n, uint32_t d)
+{
+    uint32_t got = STP_UDIV32(n, d), want = n / d;
+    if (got != want)
+        fail_msg("%lu / %lu: got %lu, C gives %lu", (unsigned long)n, (unsigned long)d, (unsigned long)got,
+                 (unsigned long)want);
+}
+
+/* STP_UDIV32: the loop on a core with a 32-bit multiply (the host), the
+ * edges' slopes' division in size-first builds (edge_walk_private.h) */
+static void test_udiv32(void **state)
+{
+    static const uint32_t values[] = {1, 2, 3, 7, 15, 16, 17, 255, 256, 65535, 65536, 65537, 1000003,
+                                      0x3FFF0000u, 0x7FFFFFFFu, 0x80000000u, 0xFFFFFFFEu, 0xFFFFFFFFu};
+    uint32_t seed = 0x2545F491u;
+    size_t i, j;
+    int k;
+    (void)state;
+    for (i = 0; i < sizeof values / sizeof values[0]; i++) {
+        check32(0, values[i]);
+        for (j = 0; j < sizeof values / sizeof values[0]; j++)
+            check32(values[i], values[j]);
+    }
+    for (k = 0; k < 200000; k++) {
+        uint32_t n, d;
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        n = seed >> (seed & 31u);
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        d = (seed >> (seed & 31u)) | 1u;
+        check32(n, d);
+        check32(n, d + 1u > d ? d + 1u : d); /* even divisors too */
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_signs_and_edges),
         cmocka_unit_test(test_random_magnitudes),
+        cmocka_unit_test(test_udiv32),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
