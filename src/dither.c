@@ -24,19 +24,19 @@ static void cell_clear(stp_cell *cell)
 static uint32_t bayer_rank(uint32_t n, uint32_t x, uint32_t y)
 {
     static const uint8_t b2[2][2] = {{0, 2}, {3, 1}};
-    uint32_t rank = 0, size;
+    uint32_t rank = 0, half;
     if (n == 8) {
         uint32_t t = x;
         x = y;
         y = t;
     }
-    /* Walk from the coarsest 2x2 split down: each level contributes the
-     * quadrant's B(2) value with weight 1, 4, 16, ... from coarse to fine. */
-    for (size = n; size > 1; size /= 2) {
-        uint32_t half = size / 2;
-        uint32_t qx = (x % size) / half, qy = (y % size) / half;
-        rank = rank + b2[qy][qx] * ((n / size) * (n / size));
-    }
+    /* Each 2x2 split contributes its quadrant's B(2) value, weighted 1, 4,
+     * 16, ... from the coarsest split to the finest: summed by Horner's
+     * rule from the finest; the quadrant is a bit test (sizes are powers
+     * of two: no division, a library call per step on cores without a
+     * divide). */
+    for (half = 1; half < n; half <<= 1)
+        rank = rank * 4u + b2[(y & half) != 0][(x & half) != 0];
     return rank;
 }
 
@@ -60,8 +60,9 @@ static uint8_t spaced_threshold(uint32_t r, uint32_t m, stp_spacing spacing)
     case STP_SPACING_LINEAR:
     default:
         /* ceil(255 (r+1) / (m+1)) - 1: ON iff v (m+1) >= 255 (r+1), the
-         * comparison ImageMagick makes with its 8-bit input */
-        v = (255 * (int64_t)(r + 1) + (m + 1) - 1) / (m + 1) - 1;
+         * comparison ImageMagick makes with its 8-bit input (r < m <= 256:
+         * the numerator below 2^17, a 32-bit division) */
+        v = (int64_t)((255u * (r + 1u) + m) / (m + 1u)) - 1;
         break;
     }
     return (uint8_t)(v < 0 ? 0 : (v > 255 ? 255 : v));
