@@ -345,6 +345,7 @@ STP_HOT_INLINE int stp_tri_walk_start(const stp_tri_vertex *v0, const stp_tri_ve
     /* rows whose centre lies in [top, bottom), in the band */
     r_first = stp_row_below(STP_TRI_Y(w->top));
     r_last = stp_row_below(STP_TRI_Y(w->bot)) - 1;
+    w->r_mid = stp_row_below(STP_TRI_Y(w->mid)); /* the first row below mid's y */
     if (r_first < (int)band->y0)
         r_first = (int)band->y0;
     if (r_last > (int)(band->y0 + band->count) - 1)
@@ -353,7 +354,6 @@ STP_HOT_INLINE int stp_tri_walk_start(const stp_tri_vertex *v0, const stp_tri_ve
         return 0;
     w->row = r_first;
     w->r_last = r_last;
-    w->r_mid = stp_row_below(STP_TRI_Y(w->mid)); /* the first row below mid's y */
     yc = stp_tri_row_centre(r_first);
     stp_tri_edge_start(&w->lng, w->top, w->bot, yc);
     if (r_first < w->r_mid)
