@@ -29,7 +29,7 @@ int64_t stp_div64_trunc(int64_t num, int64_t den)
 }
 #endif
 
-#if STP_SMALL_DIVISION && STP_HAVE_MUL32
+#if STP_UDIV32_LOOP
 uint32_t stp_udiv32_small(uint32_t n, uint32_t d)
 {
     uint32_t q = 0;

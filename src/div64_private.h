@@ -7,7 +7,7 @@
 #include <stdint.h>
 
 #include "stipple/config.h" /* STP_SMALL_DIVISION */
-#include "arith_private.h"  /* STP_HAVE_MUL32 */
+#include "arith_private.h"  /* STP_HAVE_MUL32, STP_HAVE_DIV */
 
 /* num / den truncated toward zero for den != 0 and a quotient that fits:
  * C's operator, or with STP_SMALL_DIVISION (stipple/config.h) the bit-serial loop
@@ -20,14 +20,17 @@ int64_t stp_div64_trunc(int64_t num, int64_t den);
 #endif
 
 /* floor(n / d) for d >= 1: C's operator, or with STP_SMALL_DIVISION on a
- * core with a 32-bit multiply (ARM: the C library's 32-bit division is
- * routines of its own, about 500 bytes on ARMv6-M) the bit-serial loop of
- * div64.c.  Without the multiply (AVR) the C library's division is such a
- * loop already. */
-#if STP_SMALL_DIVISION && STP_HAVE_MUL32
+ * core with a 32-bit multiply and no divide instruction (ARMv6-M, where
+ * the C library's 32-bit division is routines of about 500 bytes) the
+ * bit-serial loop of div64.c (STP_UDIV32_LOOP 1).  Without the multiply
+ * (AVR) the C library's division is such a loop already; with a divide
+ * instruction (Cortex-M3, hosts) it is one instruction. */
+#if STP_SMALL_DIVISION && STP_HAVE_MUL32 && !STP_HAVE_DIV
+#define STP_UDIV32_LOOP 1
 uint32_t stp_udiv32_small(uint32_t n, uint32_t d);
 #define STP_UDIV32(n, d) stp_udiv32_small((n), (d))
 #else
+#define STP_UDIV32_LOOP 0
 #define STP_UDIV32(n, d) ((uint32_t)(n) / (uint32_t)(d))
 #endif
 

@@ -149,11 +149,11 @@ static inline int32_t stp_slope_q16_short(int32_t num, int32_t den)
         return num < 0 ? -(int32_t)q : (int32_t)q;
     }
 #endif
-#if STP_SMALL_DIVISION || !STP_HAVE_MUL32
+#if STP_UDIV32_LOOP || !STP_HAVE_MUL32
     {
         /* trunc(2^16 num / den) as C's division gives it (den > 0), from
          * the unsigned quotient: one division routine where it is a loop
-         * (div64_private.h; AVR's library division) */
+         * (div64_private.h's, or AVR's library division) */
         uint32_t q = STP_UDIV32((num < 0 ? 0u - (uint32_t)num : (uint32_t)num) << 16, (uint32_t)den);
         return num < 0 ? -(int32_t)q : (int32_t)q;
     }

@@ -244,7 +244,7 @@
 
 /* 1: the band renderer and direct drawing divide with small bit-serial
  * loops (src/div64.c: up to 64 steps a 64-bit quotient, 32 a 32-bit one
- * on cores with a 32-bit multiply) instead of the C library's routines
+ * on cores with a 32-bit multiply and no divide instruction) instead of the C library's routines
  * (about 1 KB for 64 bits and 500 bytes for 32 on ARMv6-M, not counted
  * below), and short edges' slopes come from the division instead of a
  * 512-byte table: a size-first choice for playback-only firmware (stipple

@@ -64,7 +64,8 @@ static void check32(uint32_t n, uint32_t d)
                  (unsigned long)want);
 }
 
-/* STP_UDIV32: the loop on a core with a 32-bit multiply (the host), the
+/* STP_UDIV32: the loop (this test builds as for a core without a divide
+ * instruction, STP_HAVE_DIV 0: CMakeLists.txt), the
  * edges' slopes' division in size-first builds (edge_walk_private.h) */
 static void test_udiv32(void **state)
 {
