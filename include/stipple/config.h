@@ -249,7 +249,7 @@
  * below), and short edges' slopes come from the division instead of a
  * 512-byte table: a size-first choice for playback-only firmware (stipple
  * compile --static sets it) and the lean direct-drawing image.  Same
- * results.  1 saves 752 bytes of the core's own code (Cortex-M0+, -Os,
+ * results.  1 saves 686 bytes of the core's own code (Cortex-M0+, -Os,
  * every file of src/). */
 #ifndef STP_SMALL_DIVISION
 #define STP_SMALL_DIVISION 0
