@@ -10,8 +10,8 @@
  * the panel's pages (stp_band_layout).
  *
  * Device coordinates (Q4, [-8192, 8192)), pixel rows and columns and their
- * sums here stay below 2^14 in magnitude: plain int (16 bits at least);
- * the walk's coordinates and crossings are 32-bit. */
+ * sums here stay below 2^14 in magnitude: plain int (16 bits at least),
+ * in the walk too; only its crossings' accumulators are 32-bit. */
 #include "stipple/direct.h"
 
 #include "direct_private.h"
@@ -60,7 +60,7 @@ static void draw_face(const stp_direct_frame *f, const uint16_t k[3], uint8_t in
     do {
         /* pixels ORIGIN_PIXELS .. ORIGIN_PIXELS + width - 1 are the panel's */
         if (stp_tri_walk_span(&w, ORIGIN_PIXELS + (uint32_t)f->width, &p1, &p2) && p2 >= ORIGIN_PIXELS) {
-            unsigned r = (unsigned)(w.row - (int32_t)rows->y0); /* the band's row */
+            unsigned r = (unsigned)(w.row - (int)rows->y0); /* the band's row */
             p1 = p1 < ORIGIN_PIXELS ? ORIGIN_PIXELS : p1;
             stp_halftone_fill_bits(band + (r >> page_shift) * stride,
                                    (uint8_t)(page_shift ? 1u << (r & 7) : 0u), (unsigned)(p1 - ORIGIN_PIXELS),

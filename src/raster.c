@@ -893,7 +893,7 @@ static int depth_plane_for(frame *fr, const stp_instr *v, int n, uint32_t ordina
 {
     stp_polygon_setup *kept = fr->setup && ordinal != UINT32_MAX ? &fr->setup[ordinal] : 0;
     int ok;
-    if (kept && ymin < (int32_t)(fr->rows.y0 << SUB) && kept->centre[0] != SETUP_NOT_MADE) {
+    if (kept && ymin < fr->rows.top && kept->centre[0] != SETUP_NOT_MADE) {
         if (kept->centre[0] < 0)
             return 0;
         pl->ddx = kept->plane[0];
