@@ -6,6 +6,10 @@
 #include "stellaris.h"
 #include "stp_panel.h"
 
+#if defined(STP_FW_PAGES) && STP_FW_PAGES
+#error "the lm3s6965evb's panel takes MONO1 rows: STP_FW_PAGES=0 (firmware/CMakeLists.txt sets it from STP_FW_BOARD)"
+#endif
+
 #define PANEL_W 128u
 #define CHUNK_PIXELS 16u /* packed and sent a piece of a row at a time */
 

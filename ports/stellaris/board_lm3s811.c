@@ -8,6 +8,10 @@
 #include "stellaris.h"
 #include "stp_panel.h"
 
+#if defined(STP_FW_PAGES) && !STP_FW_PAGES
+#error "the lm3s811evb's panel takes its own pages: STP_FW_PAGES=1 (firmware/CMakeLists.txt sets it from STP_FW_BOARD)"
+#endif
+
 #define PANEL_W 96u
 #define PANEL_H 16u
 

