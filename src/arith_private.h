@@ -251,6 +251,52 @@ static inline uint32_t stp_umulhi32x32(uint32_t a, uint32_t b)
 #endif
 }
 
+/* floor(u / 3) exactly for any 32-bit u, without a division (a library
+ * call of ~120 instructions on ARMv6-M): with a 64-bit product
+ * u ceil(2^33 / 3) / 2^33 (0xAAAAAAAB exceeds 2^33 / 3 by 1/3, and that
+ * times u / 2^33 < 1/2 stays below the 1/3 gap to the next integer);
+ * without one, from 32-bit products of 16-bit values: floor(t 0xAAAB /
+ * 2^17) is floor(t / 3) for t < 2^16 (3 0xAAAB = 2^17 + 1: the excess t / (3 2^17) stays below 1/3), taken
+ * of u's top bits h = u >> 14 and then of t = (h mod 3) 2^14 + (u mod
+ * 2^14) < 3 2^14; h < 2^16 needs u < 2^30 (a coordinate sum's size), so
+ * larger u take the 64-bit product from halves (stp_div3_large). */
+#if !STP_HAVE_MUL64
+/* u >= 2^30 (rare: coordinate sums are smaller) out of line, so that the
+ * inline form stays short */
+#if defined(__GNUC__)
+__attribute__((noinline, unused))
+#endif
+static uint32_t stp_div3_large(uint32_t u)
+{
+    return (uint32_t)(stp_umul32x32(u, 0xAAAAAAABu) >> 33);
+}
+#endif
+
+static inline uint32_t stp_div3_u32(uint32_t u)
+{
+#if !STP_HAVE_MUL64
+    uint32_t h, hq, t;
+    if (u < 0x10000u) /* a small triangle's coordinate sums: one product */
+        return (u * 0xAAABu) >> 17;
+    if (u < 0x40000000u) {
+        h = u >> 14;
+        hq = (h * 0xAAABu) >> 17;
+        t = ((h - 3u * hq) << 14) | (u & 0x3FFFu);
+        return (hq << 14) + ((t * 0xAAABu) >> 17);
+    }
+    return stp_div3_large(u);
+#else
+    return (uint32_t)(stp_umul32x32(u, 0xAAAAAAABu) >> 33);
+#endif
+}
+
+/* v / 3 truncated toward zero, as C's operator, for any int32 v */
+static inline int32_t stp_div3_toward_zero(int32_t v)
+{
+    uint32_t q = stp_div3_u32(v < 0 ? 0u - (uint32_t)v : (uint32_t)v);
+    return v < 0 ? 0 - (int32_t)q : (int32_t)q;
+}
+
 /* The high word of a b for 32-bit a and b, short of floor(a b / 2^32) by
  * at most 2 (the low halves' product and the carries out of the middle
  * products' low halves are dropped): three 32-bit products without

@@ -20,54 +20,6 @@
 #include "recip_private.h" /* STP_WIDE_ARITH; a test defines it 0 to check the narrow arithmetic on the host */
 #include "div64_private.h" /* STP_DIV64 */
 
-/* a b, exactly, for 32-bit a and b */
-static inline uint64_t stp_umul32(uint32_t a, uint32_t b)
-{
-#if STP_WIDE_ARITH
-    return (uint64_t)a * b;
-#else
-    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-    uint32_t ll, lh, hl, hh, mid;
-    if ((ah | bh) == 0)
-        return a * b; /* below 2^32 */
-    if (ah == 0 || bh == 0) {
-        /* one factor below 2^16: two partial products, s 2^16 + l */
-        uint32_t small = ah == 0 ? a : b, big = ah == 0 ? b : a, l = (big & 0xFFFFu) * small,
-                 s = (big >> 16) * small, low = l + (s << 16);
-        return ((uint64_t)((s >> 16) + (low < l ? 1u : 0u)) << 32) | low;
-    }
-    ll = al * bl;
-    lh = al * bh;
-    hl = ah * bl;
-    hh = ah * bh;
-    mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
-    return ((uint64_t)(hh + (lh >> 16) + (hl >> 16) + (mid >> 16)) << 32) | ((mid << 16) | (ll & 0xFFFFu));
-#endif
-}
-
-static inline int64_t stp_smul32(int32_t a, int32_t b)
-{
-#if STP_WIDE_ARITH
-    return (int64_t)a * b;
-#else
-    uint64_t p = stp_umul32(a < 0 ? 0u - (uint32_t)a : (uint32_t)a, b < 0 ? 0u - (uint32_t)b : (uint32_t)b);
-    return (a < 0) != (b < 0) ? -(int64_t)p : (int64_t)p;
-#endif
-}
-
-
-/* floor(a b / 2^32), the high word of a 32 x 32-bit product */
-static inline uint32_t stp_umulhi32(uint32_t a, uint32_t b)
-{
-#if STP_WIDE_ARITH
-    return (uint32_t)(((uint64_t)a * b) >> 32);
-#else
-    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-    uint32_t lh = al * bh, hl = ah * bl, mid = ((al * bl) >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
-    return ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
-#endif
-}
-
 /* floor(n / d) for n < 2^31 and 2 <= d < 2^31 from r = floor((2^32 - 1) /
  * d): r > (2^32 - d) / d, so n r / 2^32 lies less than n / 2^32 < 1/2
  * below n / d and not above it; its floor is the quotient or one short,
@@ -75,28 +27,8 @@ static inline uint32_t stp_umulhi32(uint32_t a, uint32_t b)
  * serves every n with the same d. */
 static inline uint32_t stp_quotient_by_recip(uint32_t n, uint32_t d, uint32_t r)
 {
-    uint32_t q = stp_umulhi32(n, r);
+    uint32_t q = stp_umulhi32x32(n, r);
     return n - q * d >= d ? q + 1u : q;
-}
-
-/* floor(s / 3) for s < 2^30.  Without wide arithmetic from 32-bit
- * products: floor(t 0xAAAB / 2^17) is floor(t / 3) for t < 2^16 (3 0xAAAB
- * = 2^17 + 1: the excess t / (3 2^17) stays below 1/3), applied to s's top
- * 16 bits h = s >> 14 and then to t = (h mod 3) 2^14 + (s mod 2^14) < 3
- * 2^14. */
-static inline uint32_t stp_div3_u30(uint32_t s)
-{
-#if STP_WIDE_ARITH
-    return s / 3u;
-#else
-    uint32_t h, hq, t;
-    if (s < 0x10000u) /* a small triangle's coordinate sums */
-        return (s * 0xAAABu) >> 17;
-    h = s >> 14;
-    hq = (h * 0xAAABu) >> 17;
-    t = ((h - 3u * hq) << 14) | (s & 0x3FFFu);
-    return (hq << 14) + ((t * 0xAAABu) >> 17);
-#endif
 }
 
 /* The reciprocals for slopes of short edges (stp_slope_recip,
@@ -127,7 +59,7 @@ static inline int64_t stp_slope_q16(int32_t num, int32_t den)
      * so its floor is the quotient */
     uint32_t un = num < 0 ? 0u - (uint32_t)num : (uint32_t)num;
     if (den >= 2 && den < STP_SLOPE_RECIP && un * (uint32_t)den < 65536u) {
-        uint32_t q = (uint32_t)(stp_umul32(un, stp_slope_recip[den]) >> 16); /* un < 2^15 */
+        uint32_t q = (uint32_t)(stp_umul32x32(un, stp_slope_recip[den]) >> 16); /* un < 2^15 */
         return num < 0 ? -(int64_t)q : (int64_t)q;
     }
 #endif
@@ -255,7 +187,7 @@ static inline void stp_tri_edge_start(stp_tri_edge *e, const stp_tri_vertex *a, 
     int64_t slope = stp_slope_q16(STP_TRI_X(b) - STP_TRI_X(a), STP_TRI_Y(b) - STP_TRI_Y(a));
     int32_t dy = yc - STP_TRI_Y(a);
     e->acc = (int64_t)STP_TRI_X(a) * 65536 +
-             (slope >= INT32_MIN && slope <= INT32_MAX ? stp_smul32(dy, (int32_t)slope) : (int64_t)dy * slope);
+             (slope >= INT32_MIN && slope <= INT32_MAX ? stp_smul32x32(dy, (int32_t)slope) : (int64_t)dy * slope);
     e->step = slope * 16;
 #else
     /* |xb - xa| < 2^14: the slope fits 32 bits (|slope| <= 2^30), and the
@@ -453,7 +385,7 @@ static inline void stp_edges_start(stp_edge *edges, int n, int32_t yc, int smoot
         /* step is 16 slopes exactly */
         int64_t slope = stp_asr64(e->step, 4);
         e->acc = (int64_t)e->xa * 65536 +
-                 (slope >= INT32_MIN && slope <= INT32_MAX ? stp_smul32(yc - e->ya, (int32_t)slope)
+                 (slope >= INT32_MIN && slope <= INT32_MAX ? stp_smul32x32(yc - e->ya, (int32_t)slope)
                                                             : (int64_t)(yc - e->ya) * slope);
 #if STP_WITH_GOURAUD
         if (smooth)

@@ -185,16 +185,4 @@ static inline int64_t stp_mul_shift_sat(int64_t a, int64_t b, int s)
     }
 }
 
-/* v / 3 truncated toward zero, as C's operator, for any int32 v, without
- * a division (a library call on ARMv6-M, ~120 instructions): |v| < 2^32
- * times ceil(2^33 / 3) = 0xAAAAAAAB, shifted down 33, is floor(|v| / 3)
- * exactly (the multiplier's excess of 1/3 2^-33 times |v| < 2^32 stays
- * below the 1/3 gap to the next integer), then the sign. */
-static inline int32_t stp_div3_toward_zero(int32_t v)
-{
-    uint32_t u = v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
-    uint32_t q = (uint32_t)(stp_umul32x32(u, 0xAAAAAAABu) >> 33);
-    return v < 0 ? 0 - (int32_t)q : (int32_t)q;
-}
-
 #endif

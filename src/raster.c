@@ -47,7 +47,7 @@ static int64_t div_trunc(int64_t num, int64_t den)
 static int64_t mul_wide(int64_t a, int32_t b)
 {
     if (!STP_WIDE_ARITH && a >= INT32_MIN && a <= INT32_MAX)
-        return stp_smul32((int32_t)a, b);
+        return stp_smul32x32((int32_t)a, b);
     return a * b;
 }
 #endif
@@ -77,7 +77,7 @@ STP_HOT_INLINE int depth_term_short(int64_t g, int32_t extent)
 static uint32_t div_count(uint32_t s, uint32_t n)
 {
     if (n == 3)
-        return (uint32_t)(stp_umul32(s, 0xAAAAAAABu) >> 33);
+        return stp_div3_u32(s);
     if (n == 4)
         return s >> 2;
     return s / n;
@@ -697,20 +697,20 @@ static uint32_t key_quotient(const frame *fr, uint32_t u)
 {
     const uint32_t k = (uint32_t)65534 << 12;
 #if STP_WIDE_ARITH
-    return (uint32_t)(stp_umul32(u, k) / fr->key_range);
+    return (uint32_t)(stp_umul32x32(u, k) / fr->key_range);
 #else
     uint32_t q;
     if (fr->depth_shift < 32) {
         /* u < 2^s: u 2^(32 - s) < 2^32, and its high product word is the
          * estimate; the remainder u k - q range is in [0, 2 range), below
          * 2^32 (range < 2^31 here), so its 32-bit wrap is exact */
-        q = stp_umulhi32(u << (32 - fr->depth_shift), fr->depth_scale);
+        q = stp_umulhi32x32(u << (32 - fr->depth_shift), fr->depth_scale);
         if (u * k - q * fr->key_range >= fr->key_range)
             q++;
     } else {
-        uint64_t num = stp_umul32(u, k);
-        q = (uint32_t)(stp_umul32(u, fr->depth_scale) >> fr->depth_shift);
-        if (stp_umul32(q + 1u, fr->key_range) <= num)
+        uint64_t num = stp_umul32x32(u, k);
+        q = (uint32_t)(stp_umul32x32(u, fr->depth_scale) >> fr->depth_shift);
+        if (stp_umul32x32(q + 1u, fr->key_range) <= num)
             q++;
     }
     return q;
@@ -830,9 +830,9 @@ static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
         int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
         if (c32 != 0 && (uint32_t)a32 + (gs - 1u) < 2u * gs - 1u && (uint32_t)b32 + (gs - 1u) < 2u * gs - 1u) {
             gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy);
-            pl->xc = (int32_t)stp_div3_u30(sx); /* coordinates below 2^20 */
-            pl->yc = (int32_t)stp_div3_u30(sy);
-            pl->dc = stp_div3_u30(sd);
+            pl->xc = (int32_t)stp_div3_u32(sx); /* coordinates below 2^20 */
+            pl->yc = (int32_t)stp_div3_u32(sy);
+            pl->dc = stp_div3_u32(sd);
             return 1;
         }
         a = a32;
@@ -841,9 +841,9 @@ static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
     } else
 #endif
     {
-        a = stp_smul32(y1, e2) - stp_smul32(e1, y2);
-        b = stp_smul32(e1, x2) - stp_smul32(x1, e2);
-        c = stp_smul32(x1, y2) - stp_smul32(y1, x2);
+        a = stp_smul32x32(y1, e2) - stp_smul32x32(e1, y2);
+        b = stp_smul32x32(e1, x2) - stp_smul32x32(x1, e2);
+        c = stp_smul32x32(x1, y2) - stp_smul32x32(y1, x2);
     }
     if (c == 0) {
         pl->ddx = pl->ddy = pl->dc = 0;
@@ -866,9 +866,9 @@ static int depth_setup(frame *fr, const stp_instr *v, int n, depth_plane *pl)
         const stp_instr *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
         int64_t d_q = i == n - 1 ? d_last : depth_q12(fr, q->z), dp = d_prev >> 12, dq = d_q >> 12;
         /* coordinates in [0, 2^19], depths in [1, 65535]: 32-bit factors */
-        a += stp_smul32(p->y - q->y, (int32_t)(dp + dq));
-        b += stp_smul32((int32_t)(dp - dq), p->x + q->x);
-        c += stp_smul32(p->x - q->x, p->y + q->y);
+        a += stp_smul32x32(p->y - q->y, (int32_t)(dp + dq));
+        b += stp_smul32x32((int32_t)(dp - dq), p->x + q->x);
+        c += stp_smul32x32(p->x - q->x, p->y + q->y);
         sx += (uint32_t)q->x;
         sy += (uint32_t)q->y;
         sd += d_q;
@@ -1296,7 +1296,7 @@ STP_HOT_INLINE void polygon_row(const frame *fr, uint32_t y, int nc, paint style
         if (use_z) {
             /* dc + ddx (x - xc) + ddy (y - yc) at p1's centre */
             int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
-            int64_t d = d_row + (ddx >= INT32_MIN && ddx <= INT32_MAX ? stp_smul32((int32_t)ddx, xq) : ddx * xq);
+            int64_t d = d_row + (ddx >= INT32_MIN && ddx <= INT32_MAX ? stp_smul32x32((int32_t)ddx, xq) : ddx * xq);
             put_span_z(fr, y, p1, p2, style, d, ddx * (1 << SUB), smooth, s0, sstep, t, direct);
             continue;
         }

@@ -3,8 +3,8 @@
  * RV32, AVR), compiled here on the host with STP_WIDE_ARITH 0: the 32 x
  * 32-bit products from 16-bit halves (with their one- and two-product
  * shortcuts), the slopes of short edges from the reciprocal table, the
- * quotients through one reciprocal and the division by 3 from 32-bit
- * products, against the host's own 64-bit operators. */
+ * quotients through one reciprocal and the division by 3 (arith_private.h)
+ * from 32-bit products, against the host's own 64-bit operators. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -27,12 +27,12 @@ static void check_products(uint32_t a, uint32_t b)
 {
     uint64_t want = (uint64_t)a * b;
     int64_t swant = (int64_t)(int32_t)a * (int32_t)b;
-    if (stp_umul32(a, b) != want)
-        fail_msg("stp_umul32(%u, %u) = %llu, want %llu", a, b, (unsigned long long)stp_umul32(a, b),
+    if (stp_umul32x32(a, b) != want)
+        fail_msg("stp_umul32x32(%u, %u) = %llu, want %llu", a, b, (unsigned long long)stp_umul32x32(a, b),
                  (unsigned long long)want);
-    if (stp_smul32((int32_t)a, (int32_t)b) != swant)
-        fail_msg("stp_smul32(%d, %d) = %lld, want %lld", (int32_t)a, (int32_t)b,
-                 (long long)stp_smul32((int32_t)a, (int32_t)b), (long long)swant);
+    if (stp_smul32x32((int32_t)a, (int32_t)b) != swant)
+        fail_msg("stp_smul32x32(%d, %d) = %lld, want %lld", (int32_t)a, (int32_t)b,
+                 (long long)stp_smul32x32((int32_t)a, (int32_t)b), (long long)swant);
 }
 
 static void test_products_against_64_bit(void **state)
@@ -114,7 +114,7 @@ static void check_recip_quotient(uint32_t n, uint32_t d)
 }
 
 /* stp_umulhi32 against the 64-bit product; stp_quotient_by_recip (n <
- * 2^31, 2 <= d < 2^31) and stp_div3_u30 (s < 2^30) against C's division:
+ * 2^31, 2 <= d < 2^31) and stp_div3_u32 (s < 2^30) against C's division:
  * the edges of their ranges, every small value, random ones of every size */
 static void test_reciprocal_quotients_against_division(void **state)
 {
@@ -126,7 +126,7 @@ static void test_reciprocal_quotients_against_division(void **state)
     for (i = 0; i < sizeof big / sizeof big[0]; i++)
         for (j = 0; j < sizeof big / sizeof big[0]; j++) {
             check_recip_quotient(big[i], big[j]);
-            assert_true(stp_umulhi32(big[i], big[j] << 1) == (uint32_t)(((uint64_t)big[i] * (big[j] << 1)) >> 32));
+            assert_true(stp_umulhi32x32(big[i], big[j] << 1) == (uint32_t)(((uint64_t)big[i] * (big[j] << 1)) >> 32));
         }
     for (d = 2; d < 3000; d++) {
         check_recip_quotient(0x7FFFFFFFu, d);
@@ -139,14 +139,39 @@ static void test_reciprocal_quotients_against_division(void **state)
     }
     for (k = 0; k < 1000000; k++) {
         uint32_t a = next_random(&s), b = next_random(&s);
-        assert_true(stp_umulhi32(a, b) == (uint32_t)(((uint64_t)a * b) >> 32));
+        assert_true(stp_umulhi32x32(a, b) == (uint32_t)(((uint64_t)a * b) >> 32));
         n = a >> 1 >> (k % 31);
         d = (b >> 1 >> ((k >> 5) % 30)) | 2u;
         check_recip_quotient(n, d);
-        assert_true(stp_div3_u30(a >> 2) == (a >> 2) / 3u);
+        assert_true(stp_div3_u32(a >> 2) == (a >> 2) / 3u);
     }
     for (n = 0; n < (1u << 20); n++)
-        assert_true(stp_div3_u30(n) == n / 3u && stp_div3_u30(0x3FFFFFFFu - n) == (0x3FFFFFFFu - n) / 3u);
+        assert_true(stp_div3_u32(n) == n / 3u && stp_div3_u32(0x3FFFFFFFu - n) == (0x3FFFFFFFu - n) / 3u);
+}
+
+/* stp_div3_u32 over the whole 32-bit range (its three forms meet at 2^16
+ * and 2^30) and stp_div3_toward_zero against C's signed division */
+static void test_division_by_3_against_division(void **state)
+{
+    static const uint32_t edge[] = {0xFFFFu, 0x10000u, 0x3FFFFFFFu, 0x40000000u, 0x7FFFFFFFu, 0x80000000u,
+                                    0xFFFFFFFEu, 0xFFFFFFFFu};
+    uint32_t s = 2718281828u, u;
+    size_t i;
+    int k, d;
+    (void)state;
+    for (i = 0; i < sizeof edge / sizeof edge[0]; i++)
+        for (d = -3; d <= 3; d++) {
+            u = edge[i] + (uint32_t)d;
+            assert_int_equal(stp_div3_u32(u), u / 3u);
+            assert_int_equal(stp_div3_toward_zero((int32_t)u), (int32_t)u == INT32_MIN ? INT32_MIN / 3
+                                                                                       : (int32_t)u / 3);
+        }
+    for (k = 0; k < 1000000; k++) {
+        u = next_random(&s) >> (k % 32);
+        assert_int_equal(stp_div3_u32(u), u / 3u);
+        assert_int_equal(stp_div3_toward_zero((int32_t)u), (int32_t)u / 3);
+        assert_int_equal(stp_div3_toward_zero(-(int32_t)(u >> 1)), -(int32_t)(u >> 1) / 3);
+    }
 }
 
 int main(void)
@@ -156,6 +181,7 @@ int main(void)
         cmocka_unit_test(test_slopes_against_division),
         cmocka_unit_test(test_short_slopes_against_division),
         cmocka_unit_test(test_reciprocal_quotients_against_division),
+        cmocka_unit_test(test_division_by_3_against_division),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -4,7 +4,7 @@
  * compiled once more here under other names, beside the library's own
  * (fallback on).  A triangle inside the view enters as with the fallback;
  * one that needs clipping, or a state only stp_renderer_polygon handles, is
- * STP_ERR_UNSUPPORTED.  Also mesh.c's vertex average and division by 3
+ * STP_ERR_UNSUPPORTED.  Also mesh.c's vertex average and the division by 3
  * against C's operators (the projection is view.c's, tested by
  * test_view_narrow).
  */
@@ -97,14 +97,14 @@ static void test_average_exact(void **state)
             for (k = 0; k < sizeof edge / sizeof edge[0]; k++)
                 assert_int_equal(average3(0, edge[i], edge[j], edge[k]),
                                  ((int64_t)edge[i] + edge[j] + edge[k]) / 3);
-    /* the small case's division by 3: every u below 2^22 and from there
+    /* the division by 3 (arith_private.h): every u below 2^22 and from there
      * to 2^30 in steps that visit every residue */
     for (n = 0; n < (1L << 22); n++)
-        assert_int_equal(div3_small((uint32_t)n), (uint32_t)n / 3u);
+        assert_int_equal(stp_div3_u32((uint32_t)n), (uint32_t)n / 3u);
     for (n = 1L << 22; n < (1L << 30); n += 253)
-        assert_int_equal(div3_small((uint32_t)n), (uint32_t)n / 3u);
+        assert_int_equal(stp_div3_u32((uint32_t)n), (uint32_t)n / 3u);
     for (n = (1L << 30) - 1000; n < (1L << 30); n++)
-        assert_int_equal(div3_small((uint32_t)n), (uint32_t)n / 3u);
+        assert_int_equal(stp_div3_u32((uint32_t)n), (uint32_t)n / 3u);
     for (n = 0; n < 3000000; n++) {
         int32_t v[3];
         int shift;
