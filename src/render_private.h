@@ -59,6 +59,17 @@ static inline void stp_render_triangle_cross(const stp_vec3 *v, int64_t c[3])
             z2 = (int64_t)v[2].z - v[0].z;
     uint64_t spread = stp_abs64u(x1) | stp_abs64u(y1) | stp_abs64u(z1) | stp_abs64u(x2) |
                       stp_abs64u(y2) | stp_abs64u(z2);
+#if !STP_WIDE_ARITH
+    if (spread < ((uint64_t)1 << 15)) {
+        /* edges below 2^15 (half a unit: a mesh's triangle): products
+         * below 2^30, their differences below 2^31, the same values in
+         * int32 without the 64-bit multiply library call */
+        c[0] = (int32_t)y1 * (int32_t)z2 - (int32_t)z1 * (int32_t)y2;
+        c[1] = (int32_t)z1 * (int32_t)x2 - (int32_t)x1 * (int32_t)z2;
+        c[2] = (int32_t)x1 * (int32_t)y2 - (int32_t)y1 * (int32_t)x2;
+        return;
+    }
+#endif
     if (spread >> 30) {
         int bits = stp_bit_length64(spread) - 30;
         x1 = stp_asr64(x1, bits);
@@ -119,8 +130,58 @@ STP_HOT_INLINE int stp_render_face_side(const stp_model_frame *f, const int16_t 
  * the magnitudes: certain when |cs.ds| > 3 C + 3 D + 3 + (3 C + 3)(3 D + 3)
  * / 2^13.  Ranges: |cs|, |ds| <= 2^29, so C, D < 2^30, cs.ds below
  * 3 2^58 and (3 C + 3)(3 D + 3) below 2^64 (unsigned). */
+#if !STP_WIDE_ARITH
+/* stp_render_certain_side's test in 32-bit arithmetic, where 64-bit
+ * products are library calls: c below 2^31 and v0 within 2^30 (so d =
+ * eye - v0 below 2^31), both cut to 13 bits (|cs|, |ds| <= 2^13, C, D <
+ * 2^14): cs.ds below 3 2^26 and (3 C + 3)(3 D + 3) below 2^32.  1 or -1
+ * when certain, else 0 (the 64-bit test, with more bits, decides). */
+static inline int stp_render_certain_side32(const stp_model_frame *f, const int64_t c[3], stp_vec3 v0)
+{
+    const uint32_t lim = (uint32_t)1 << 30;
+    int32_t cx, cy, cz, dx, dy, dz, dot;
+    uint32_t c_or, d_or, bound;
+    int a, b;
+    if (((stp_abs64u(c[0]) | stp_abs64u(c[1]) | stp_abs64u(c[2])) >> 31) != 0 ||
+        (((uint32_t)v0.x + lim) | ((uint32_t)v0.y + lim) | ((uint32_t)v0.z + lim)) >= 2 * lim)
+        return 0;
+    cx = (int32_t)c[0];
+    cy = (int32_t)c[1];
+    cz = (int32_t)c[2];
+    dx = f->eye[0] - v0.x; /* |eye| < 2^30 (stp_model_frame) */
+    dy = f->eye[1] - v0.y;
+    dz = f->eye[2] - v0.z;
+    c_or = stp_abs32(cx) | stp_abs32(cy) | stp_abs32(cz);
+    d_or = stp_abs32(dx) | stp_abs32(dy) | stp_abs32(dz);
+    a = stp_bit_length32(c_or) - 13;
+    b = stp_bit_length32(d_or) - 13;
+    if (a > 0) {
+        cx = stp_asr32(cx, a);
+        cy = stp_asr32(cy, a);
+        cz = stp_asr32(cz, a);
+        c_or = stp_abs32(cx) | stp_abs32(cy) | stp_abs32(cz);
+    }
+    if (b > 0) {
+        dx = stp_asr32(dx, b);
+        dy = stp_asr32(dy, b);
+        dz = stp_asr32(dz, b);
+        d_or = stp_abs32(dx) | stp_abs32(dy) | stp_abs32(dz);
+    }
+    dot = cx * dx + cy * dy + cz * dz;
+    bound = 3u * (c_or + d_or + 1u) + (((3u * c_or + 3u) * (3u * d_or + 3u)) >> 13) + 1u;
+    if (stp_abs32(dot) <= bound)
+        return 0;
+    return dot > 0 ? 1 : -1;
+}
+#endif
+
 static inline int stp_render_certain_side(const stp_model_frame *f, const int64_t c[3], stp_vec3 v0)
 {
+#if !STP_WIDE_ARITH
+    int sure = stp_render_certain_side32(f, c, v0);
+    if (sure != 0)
+        return sure;
+#endif
     int64_t cx = c[0], cy = c[1], cz = c[2], dot;
     int64_t dx = (int64_t)f->eye[0] - v0.x, dy = (int64_t)f->eye[1] - v0.y,
             dz = (int64_t)f->eye[2] - v0.z;
