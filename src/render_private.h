@@ -38,13 +38,7 @@ int stp_render_model_normal(const stp_vec3 *v, int n, int16_t out[3]);
  * zero vector; */
 static inline int stp_render_unit_q14(int64_t a, int64_t b, int64_t c, int16_t out[3])
 {
-    stp_unit3 u;
-    if (stp_unit_from64(a, b, c, &u) == 0)
-        return 0;
-    out[0] = (int16_t)stp_asr64((int64_t)u.x + ((int64_t)1 << 15), 16);
-    out[1] = (int16_t)stp_asr64((int64_t)u.y + ((int64_t)1 << 15), 16);
-    out[2] = (int16_t)stp_asr64((int64_t)u.z + ((int64_t)1 << 15), 16);
-    return 1;
+    return stp_unit_q14_from64(a, b, c, out);
 }
 
 /* a triangle's cross product (v1 - v0) x (v2 - v0) in c[] (model
