@@ -253,6 +253,69 @@ STP_HOT_INLINE int32_t stp_render_row_count(int32_t a, int32_t b, int32_t c)
  * stays as it is. */
 int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2, int32_t y2);
 
+/* Whether a flat triangle inside the view with device vertices (x0, y0),
+ * (x1, y1), (x2, y2) (Q27.4, >= 0) may draw: it spans a row centre
+ * (stp_render_row_count) and, spanning at most test_rows (pixel culling's
+ * STP_CENTRE_TEST_MAX, 0 when off), reaches a pixel centre.  A culled one
+ * marks the open segment (it lost a sliver edge AA would draw: render.h).
+ * Both entries test their triangles so before shading them. */
+STP_HOT_INLINE int stp_render_triangle_shows(stp_renderer *r, int32_t test_rows, int32_t x0, int32_t y0,
+                                             int32_t x1, int32_t y1, int32_t x2, int32_t y2)
+{
+    int32_t rows = stp_render_row_count(y0, y1, y2);
+    if (rows == 0)
+        return 0;
+    if (STP_UNLIKELY(rows <= test_rows) && !stp_render_centre_reached(x0, y0, x1, y1, x2, y2)) {
+        r->segments[r->open_segment].pixel_culled = 1;
+        return 0;
+    }
+    return 1;
+}
+
+/* A flat opaque triangle's display-file records, as both entries store
+ * them: SHADE (style, r->last_shade, colour 0) when the style or colour
+ * changed, written here, then room for its three vertex records, which
+ * the caller writes (stp_render_put_vertex: op 3, then STP_OP_LINE twice);
+ * r->used counts them all.  NULL when the display file has no room for
+ * them (nothing written).  The caller keeps the open segment's end and
+ * the transmission (0: the caller's test). */
+STP_HOT_INLINE stp_instr *stp_render_triangle_records(stp_renderer *r, int style)
+{
+    uint32_t used = r->used;
+    int change = style != r->current_style || r->current_colour != 0;
+    stp_instr *out;
+    if (r->capacity - used < (change ? 4u : 3u))
+        return 0;
+    out = &r->df[used];
+    if (change) {
+        out->op = STP_OP_SHADE;
+        out->x = style;
+        out->y = r->last_shade;
+        out->z = 0;
+#if STP_WITH_GOURAUD
+        out->shade = -1;
+#endif
+        out++;
+        used++;
+        r->current_style = style;
+        r->current_colour = 0;
+    }
+    r->used = used + 3;
+    return out;
+}
+
+/* A flat polygon's vertex record: device position (x, y) and depth key z. */
+STP_HOT_INLINE void stp_render_put_vertex(stp_instr *out, int32_t op, int32_t x, int32_t y, int32_t z)
+{
+    out->op = op;
+    out->x = x;
+    out->y = y;
+    out->z = z;
+#if STP_WITH_GOURAUD
+    out->shade = -1;
+#endif
+}
+
 /* The model normal n in view coordinates (Q1.14, rounded), turned to the
  * eye when side <= 0 (the other side of an open surface shows): each row
  * product Q15 x Q14, the sum below 2^29 (1 + rounding), to Q14 rounded
