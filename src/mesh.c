@@ -201,37 +201,6 @@ static void vertex_project(const mesh_context *c, stp_mesh_vertex *s)
     s->state |= PROJECTED;
 }
 
-/* The vertex average, truncated toward zero as render.c's Newell step
- * forms it (the same quotients); small: each value below 2^28 in
- * magnitude (box_inside), so the sum fits int32. */
-/* floor(u / 3) for u < 2^30, three 32-bit products (no 32 x 32 -> 64 one):
- * u = h 2^15 + l with 2^15 = 3 10922 + 2 gives floor(u / 3) = 10922 h +
- * floor(t / 3), t = 2 h + l < 3 2^15; t = th 2^14 + tl with 2^14 = 3 5461
- * + 1 gives floor(t / 3) = 5461 th + floor(x / 3), x = th + tl < 2^14 + 6;
- * and for x < 2^15, (x 21846) >> 16 = floor(x / 3 + x / 98304) is floor(x
- * / 3) (x / 98304 < 1/3). */
-static uint32_t div3_small(uint32_t u)
-{
-    uint32_t h = u >> 15, t = 2u * h + (u & 0x7FFFu), th = t >> 14;
-    return 10922u * h + 5461u * th + (((th + (t & 0x3FFFu)) * 21846u) >> 16);
-}
-
-STP_HOT_INLINE stp_fix average3(int small, int32_t a, int32_t b, int32_t c)
-{
-    int64_t s;
-    if (small && STP_WIDE_ARITH)
-        return (stp_fix)stp_div3_toward_zero(a + b + c); /* one product here */
-    if (small) {
-        int32_t sum = a + b + c; /* below 3 2^28 in magnitude */
-        return sum >= 0 ? (stp_fix)div3_small((uint32_t)sum)
-                        : -(stp_fix)div3_small(0u - (uint32_t)sum);
-    }
-    s = (int64_t)a + b + c;
-    if (s >= INT32_MIN && s <= INT32_MAX)
-        return (stp_fix)stp_div3_toward_zero((int32_t)s);
-    return (stp_fix)(s / 3);
-}
-
 /* Triangle t through stp_renderer_polygon (mesh.h: the fallback). */
 static int enter_fallback(const mesh_context *c, uint16_t t)
 {
@@ -320,9 +289,9 @@ static int enter_face(mesh_context *c, uint16_t t)
                                    s[2]->dy))
         return STP_OK; /* between two row centres, or pixel culling: draws nothing */
     stp_render_view_normal(c->frame, n, side, nv);
-    centre.x = average3(c->inside, s[0]->view.x, s[1]->view.x, s[2]->view.x);
-    centre.y = average3(c->inside, s[0]->view.y, s[1]->view.y, s[2]->view.y);
-    centre.z = average3(c->inside, s[0]->view.z, s[1]->view.z, s[2]->view.z);
+    centre.x = stp_render_average3(c->inside, s[0]->view.x, s[1]->view.x, s[2]->view.x);
+    centre.y = stp_render_average3(c->inside, s[0]->view.y, s[1]->view.y, s[2]->view.y);
+    centre.z = stp_render_average3(c->inside, s[0]->view.z, s[1]->view.z, s[2]->view.z);
     style = stp_render_face_style(r, c->shade, nv, centre, side);
     return store_face(c, s, style);
 }

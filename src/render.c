@@ -1483,6 +1483,7 @@ static int enter_model_triangle(stp_renderer *r, stp_entry *e, const stp_model_f
 {
     stp_instr p[3];
     stp_instr *out;
+    stp_vec3 centre;
     int16_t nv[3];
     int style;
     project_entered(r, 3, p);
@@ -1490,8 +1491,19 @@ static int enter_model_triangle(stp_renderer *r, stp_entry *e, const stp_model_f
                                    p[1].y, p[2].x, p[2].y))
         return STP_OK; /* between two row centres, or pixel culling: draws nothing */
     stp_render_view_normal(f, n, side, nv);
-    style = stp_render_face_style(r, r->shading ? stp_render_face_shader(r) : 0, nv,
-                                  vertex_average(r->clip_a, 3), side);
+    {
+        const stp_vec3 *v = r->clip_a;
+        /* where 32 x 32 -> 64 products are library calls, view points
+         * below 2^28 (the usual) take mesh entry's 32-bit quotient */
+        int small = !STP_WIDE_ARITH &&
+                    (stp_abs32(v[0].x) | stp_abs32(v[0].y) | stp_abs32(v[0].z) | stp_abs32(v[1].x) |
+                     stp_abs32(v[1].y) | stp_abs32(v[1].z) | stp_abs32(v[2].x) | stp_abs32(v[2].y) |
+                     stp_abs32(v[2].z)) < ((uint32_t)1 << 28);
+        centre.x = stp_render_average3(small, v[0].x, v[1].x, v[2].x);
+        centre.y = stp_render_average3(small, v[0].y, v[1].y, v[2].y);
+        centre.z = stp_render_average3(small, v[0].z, v[1].z, v[2].z);
+    }
+    style = stp_render_face_style(r, r->shading ? stp_render_face_shader(r) : 0, nv, centre, side);
     if (STP_UNLIKELY(r->current_transmission != 0)) {
         e->style = style;
         e->colour = 0;

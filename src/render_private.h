@@ -272,6 +272,38 @@ STP_HOT_INLINE int stp_render_triangle_shows(stp_renderer *r, int32_t test_rows,
     return 1;
 }
 
+/* floor(u / 3) for u < 2^30, three 32-bit products (no 32 x 32 -> 64 one):
+ * u = h 2^15 + l with 2^15 = 3 10922 + 2 gives floor(u / 3) = 10922 h +
+ * floor(t / 3), t = 2 h + l < 3 2^15; t = th 2^14 + tl with 2^14 = 3 5461
+ * + 1 gives floor(t / 3) = 5461 th + floor(x / 3), x = th + tl < 2^14 + 6;
+ * and for x < 2^15, (x 21846) >> 16 = floor(x / 3 + x / 98304) is floor(x
+ * / 3) (x / 98304 < 1/3). */
+static inline uint32_t stp_render_div3_small(uint32_t u)
+{
+    uint32_t h = u >> 15, t = 2u * h + (u & 0x7FFFu), th = t >> 14;
+    return 10922u * h + 5461u * th + (((th + (t & 0x3FFFu)) * 21846u) >> 16);
+}
+
+/* A triangle's vertex average (one coordinate of its three view points),
+ * each sum divided by 3 truncated toward zero: both entries' face centre
+ * (render.c's vertex_average, the same quotients).  small: each value
+ * below 2^28 in magnitude (mesh.c's box_inside), so the sum fits int32. */
+STP_HOT_INLINE stp_fix stp_render_average3(int small, int32_t a, int32_t b, int32_t c)
+{
+    int64_t s;
+    if (small && STP_WIDE_ARITH)
+        return (stp_fix)stp_div3_toward_zero(a + b + c); /* one product here */
+    if (small) {
+        int32_t sum = a + b + c; /* below 3 2^28 in magnitude */
+        return sum >= 0 ? (stp_fix)stp_render_div3_small((uint32_t)sum)
+                        : -(stp_fix)stp_render_div3_small(0u - (uint32_t)sum);
+    }
+    s = (int64_t)a + b + c;
+    if (s >= INT32_MIN && s <= INT32_MAX)
+        return (stp_fix)stp_div3_toward_zero((int32_t)s);
+    return (stp_fix)(s / 3);
+}
+
 /* A flat opaque triangle's display-file records, as both entries store
  * them: SHADE (style, r->last_shade, colour 0) when the style or colour
  * changed, written here, then room for its three vertex records, which
