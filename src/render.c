@@ -864,20 +864,22 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
     stp_vec3 *const view_out = r->clip_a;
     unsigned all = 31u, any = 0;
     for (i = 0; i < n; i++) {
-        stp_vec3 p = vertices[i];
+        /* the coordinates as scalars: a copy of the point is taken only
+         * by a miss */
+        const stp_fix px = vertices[i].x, py = vertices[i].y, pz = vertices[i].z;
         /* a multiplicative hash of the exact coordinates, rotated apart
          * and mixed by one product (compilers for cores without a fast
          * multiplier expand each constant product into ~20 shifts) */
-        uint32_t ux = (uint32_t)p.x, uy = (uint32_t)p.y, uz = (uint32_t)p.z;
+        uint32_t ux = (uint32_t)px, uy = (uint32_t)py, uz = (uint32_t)pz;
         uint32_t h = (ux ^ ((uy << 11) | (uy >> 21)) ^ ((uz << 22) | (uz >> 10))) * 0x9E3779B1u;
         uint32_t slot = (h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1);
         stp_vertex_entry *c = &cache[slot];
-        if (c->stamp != stamp || c->point.x != p.x || c->point.y != p.y || c->point.z != p.z) {
+        if (c->stamp != stamp || c->point.x != px || c->point.y != py || c->point.z != pz) {
             unsigned code;
             stp_vec3 *view = &c->view;
             if (c->used_by == serial) /* the slot holds an earlier vertex of this polygon */
                 view = &view_out[i];
-            vertex_to_view(r, p, view);
+            vertex_to_view(r, vertices[i], view);
             code = stp_view_saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode(&r->clip_volume, *view);
             if (c->used_by == serial) {
                 all &= code;
@@ -886,7 +888,7 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
                 continue;
             }
             c->stamp = stamp;
-            c->point = p;
+            c->point = vertices[i];
             c->code = (int16_t)code;
             c->dx = STP_CACHE_NOT_PROJECTED;
         }
