@@ -719,18 +719,14 @@ const stp_model_frame *stp_render_model_frame(stp_renderer *r)
     return r->frame.usable ? &r->frame : 0;
 }
 
-const stp_shade_fast *stp_render_face_shader(stp_renderer *r)
+void stp_render_face_shader_prepare(stp_renderer *r, int parallel)
 {
-    int parallel = r->projection == STP_PARALLEL;
-    if (!r->fast_shade_valid || r->fast_shade_parallel != parallel) {
-        /* the eye at the view's origin; parallel: towards it along -z */
-        stp_vec3 origin = {0, 0, 0}, towards_eye = {0, 0, -ONE};
-        stp_shade_fast_prepare(&r->fast_shade, &r->segment_lighting, &r->material, origin,
-                               parallel, towards_eye);
-        r->fast_shade_valid = 1;
-        r->fast_shade_parallel = parallel;
-    }
-    return &r->fast_shade;
+    /* the eye at the view's origin; parallel: towards it along -z */
+    stp_vec3 origin = {0, 0, 0}, towards_eye = {0, 0, -ONE};
+    stp_shade_fast_prepare(&r->fast_shade, &r->segment_lighting, &r->material, origin, parallel,
+                           towards_eye);
+    r->fast_shade_valid = 1;
+    r->fast_shade_parallel = parallel;
 }
 
 static void append(stp_renderer *r, int32_t op, int32_t x, int32_t y, int32_t z, int32_t shade)

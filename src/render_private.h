@@ -95,8 +95,17 @@ void stp_render_geometry_update(stp_renderer *r);
  * after either changes), or NULL when it is not usable (see above). */
 const stp_model_frame *stp_render_model_frame(stp_renderer *r);
 /* The face shader of the segment's lighting and the material
- * (stp_shade_fast_prepare), prepared when out of date. */
-const stp_shade_fast *stp_render_face_shader(stp_renderer *r);
+ * (stp_shade_fast_prepare), prepared when out of date (by
+ * stp_render_face_shader_prepare, out of line: the check stays inline for
+ * a polygon's entry). */
+void stp_render_face_shader_prepare(stp_renderer *r, int parallel);
+STP_HOT_INLINE const stp_shade_fast *stp_render_face_shader(stp_renderer *r)
+{
+    int parallel = r->projection == STP_PARALLEL;
+    if (!r->fast_shade_valid || r->fast_shade_parallel != parallel)
+        stp_render_face_shader_prepare(r, parallel);
+    return &r->fast_shade;
+}
 
 /* The exact sign (-1, 0, 1) of N.(eye - v0) in model coordinates: which
  * side of a face with Q1.14 model normal n through model point v0 the eye
