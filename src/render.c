@@ -1264,31 +1264,35 @@ static inline void store_records(stp_renderer *r, const stp_instr *record, int r
 }
 #endif
 
-/* The device positions of the first n vertices of r->clip_a (inside the
- * view volume), through the vertex cache: each cached vertex projected
- * once. */
+/* The device position of vertex i of r->clip_a (inside the view volume),
+ * through the vertex cache: each cached vertex projected once. */
+STP_HOT_INLINE void project_entered_vertex(stp_renderer *r, int i, stp_instr *out)
+{
+#if STP_VERTEX_CACHE
+    stp_vertex_entry *c = r->cached[i] != STP_CACHE_NONE ? &r->cache[r->cached[i]] : 0;
+    if (c && c->dx != STP_CACHE_NOT_PROJECTED) {
+        out->x = c->dx;
+        out->y = c->dy;
+        out->z = c->dz;
+        return;
+    }
+    project(r, r->clip_a[i], out);
+    if (c) {
+        c->dx = out->x;
+        c->dy = out->y;
+        c->dz = out->z;
+    }
+#else
+    project(r, r->clip_a[i], out);
+#endif
+}
+
+/* The device positions of the first n vertices of r->clip_a. */
 static void project_entered(stp_renderer *r, int n, stp_instr *out)
 {
     int i;
-    for (i = 0; i < n; i++) {
-#if STP_VERTEX_CACHE
-        stp_vertex_entry *c = r->cached[i] != STP_CACHE_NONE ? &r->cache[r->cached[i]] : 0;
-        if (c && c->dx != STP_CACHE_NOT_PROJECTED) {
-            out[i].x = c->dx;
-            out[i].y = c->dy;
-            out[i].z = c->dz;
-            continue;
-        }
-        project(r, r->clip_a[i], &out[i]);
-        if (c) {
-            c->dx = out[i].x;
-            c->dy = out[i].y;
-            c->dz = out[i].z;
-        }
-#else
-        project(r, r->clip_a[i], &out[i]);
-#endif
-    }
+    for (i = 0; i < n; i++)
+        project_entered_vertex(r, i, &out[i]);
 }
 
 /* Step 5: clip (only a polygon that crosses a plane), project and store:
@@ -1484,7 +1488,9 @@ static int enter_model_triangle(stp_renderer *r, stp_entry *e, const stp_model_f
     stp_vec3 centre;
     int16_t nv[3];
     int style;
-    project_entered(r, 3, p);
+    project_entered_vertex(r, 0, &p[0]);
+    project_entered_vertex(r, 1, &p[1]);
+    project_entered_vertex(r, 2, &p[2]);
     if (!stp_render_triangle_shows(r, r->pixel_cull ? STP_CENTRE_TEST_MAX : 0, p[0].x, p[0].y, p[1].x,
                                    p[1].y, p[2].x, p[2].y))
         return STP_OK; /* between two row centres, or pixel culling: draws nothing */
