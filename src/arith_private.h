@@ -103,6 +103,13 @@
 #define STP_WIDE_ARITH (STP_HAVE_MUL64 && STP_HAVE_DIV64)
 #endif
 
+/* A 32-bit form beside a 64-bit one (the same values for operands in its
+ * range) pays where 64-bit products are library calls and 32-bit ones
+ * single instructions (ARMv6-M, ARMv8-M Baseline); on an 8-bit core every
+ * product is a library call, and the 64-bit form alone is the smaller
+ * code. */
+#define STP_NARROW_FORMS (!STP_HAVE_MUL64 && STP_HAVE_MUL32)
+
 /* ---- target helpers ---- */
 
 /* A small function forced inline where a call would cost as much as its
@@ -251,18 +258,31 @@ static inline uint32_t stp_umulhi32x32(uint32_t a, uint32_t b)
 #endif
 }
 
-/* floor(u / 3) exactly for any 32-bit u, without a division (a library
- * call of ~120 instructions on ARMv6-M): with a 64-bit product
- * u ceil(2^33 / 3) / 2^33 (0xAAAAAAAB exceeds 2^33 / 3 by 1/3, and that
- * times u / 2^33 < 1/2 stays below the 1/3 gap to the next integer);
- * without one, from 32-bit products of 16-bit values: floor(t 0xAAAB /
- * 2^17) is floor(t / 3) for t < 2^16 (3 0xAAAB = 2^17 + 1: the excess t / (3 2^17) stays below 1/3), taken
- * of u's top bits h = u >> 14 and then of t = (h mod 3) 2^14 + (u mod
- * 2^14) < 3 2^14; h < 2^16 needs u < 2^30 (a coordinate sum's size), so
- * larger u take the 64-bit product from halves (stp_div3_large). */
+/* floor(u / 3) exactly, without a division (a library call of ~120
+ * instructions on ARMv6-M).  With a 64-bit product: u ceil(2^33 / 3) /
+ * 2^33 (0xAAAAAAAB exceeds 2^33 / 3 by 1/3, and that times u / 2^33 < 1/2
+ * stays below the 1/3 gap to the next integer).  Without one, from 32-bit
+ * products: stp_div3_u30 for u < 2^30 (a coordinate sum's size): u = h
+ * 2^15 + l with 2^15 = 3 10922 + 2 gives floor(u / 3) = 10922 h +
+ * floor(t / 3), t = 2 h + l < 3 2^15; t = th 2^14 + tl with 2^14 = 3 5461
+ * + 1 gives floor(t / 3) = 5461 th + floor(x / 3), x = th + tl < 2^14 + 6;
+ * and for x < 2^15, (x 21846) >> 16 = floor(x / 3 + x / 98304) is
+ * floor(x / 3) (x / 98304 < 1/3): three products, no branch.
+ * stp_div3_u32 takes any u: below 2^16 one product ((u 0xAAAB) >> 17:
+ * 3 0xAAAB = 2^17 + 1, the excess u / (3 2^17) below 1/3), up to 2^30
+ * stp_div3_u30, beyond the 64-bit product from halves out of line
+ * (stp_div3_large). */
+static inline uint32_t stp_div3_u30(uint32_t u)
+{
+#if STP_HAVE_MUL64
+    return (uint32_t)(stp_umul32x32(u, 0xAAAAAAABu) >> 33);
+#else
+    uint32_t h = u >> 15, t = 2u * h + (u & 0x7FFFu), th = t >> 14;
+    return 10922u * h + 5461u * th + (((th + (t & 0x3FFFu)) * 21846u) >> 16);
+#endif
+}
+
 #if !STP_HAVE_MUL64
-/* u >= 2^30 (rare: coordinate sums are smaller) out of line, so that the
- * inline form stays short */
 #if defined(__GNUC__)
 __attribute__((noinline, unused))
 #endif
@@ -275,19 +295,12 @@ static uint32_t stp_div3_large(uint32_t u)
 static inline uint32_t stp_div3_u32(uint32_t u)
 {
 #if !STP_HAVE_MUL64
-    uint32_t h, hq, t;
     if (u < 0x10000u) /* a small triangle's coordinate sums: one product */
         return (u * 0xAAABu) >> 17;
-    if (u < 0x40000000u) {
-        h = u >> 14;
-        hq = (h * 0xAAABu) >> 17;
-        t = ((h - 3u * hq) << 14) | (u & 0x3FFFu);
-        return (hq << 14) + ((t * 0xAAABu) >> 17);
-    }
-    return stp_div3_large(u);
-#else
-    return (uint32_t)(stp_umul32x32(u, 0xAAAAAAABu) >> 33);
+    if (u >= 0x40000000u)
+        return stp_div3_large(u);
 #endif
+    return stp_div3_u30(u);
 }
 
 /* v / 3 truncated toward zero, as C's operator, for any int32 v */

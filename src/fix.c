@@ -413,19 +413,30 @@ static inline int32_t round_unit(int32_t x, uint32_t inv, int e)
 }
 #endif
 
-int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
+/* (x, y, z) (not all 0, |.| < 2^62) scaled by 2^up so the largest
+ * component has 30 bits (its bit length is that of the three ORed; floor
+ * shifts when up < 0) into v[]: |v[i]| <= 2^30.  Returns up.  Values
+ * within int32, a mesh's cross products, are scaled in 32 bits (the same
+ * values: exact products by 2^up, the same floors) where 64-bit words
+ * cost more (STP_NARROW_FORMS). */
+STP_HOT_INLINE int unit_scale(int64_t x, int64_t y, int64_t z, int32_t v[3])
 {
-    uint64_t ax = (uint64_t)(x < 0 ? -x : x), ay = (uint64_t)(y < 0 ? -y : y),
-             az = (uint64_t)(z < 0 ? -z : z);
-    uint64_t s, len;
-    int up, e, sh;
-    int64_t inv;
-    out->x = out->y = out->z = 0;
-    if ((ax | ay | az) == 0)
-        return 0;
-    /* scale so the largest component has 30 bits (its bit length is that
-     * of the three ORed): the squares' sum is in [2^58, 3 2^60) */
-    up = 30 - stp_bit_length64(ax | ay | az);
+    uint64_t m = stp_abs64u(x) | stp_abs64u(y) | stp_abs64u(z);
+    int up;
+    if (STP_NARROW_FORMS && (m >> 31) == 0) {
+        up = 30 - stp_bit_length32((uint32_t)m);
+        if (up >= 0) {
+            v[0] = (int32_t)((uint32_t)(int32_t)x << up);
+            v[1] = (int32_t)((uint32_t)(int32_t)y << up);
+            v[2] = (int32_t)((uint32_t)(int32_t)z << up);
+        } else {
+            v[0] = stp_asr32((int32_t)x, 1); /* up = -1 */
+            v[1] = stp_asr32((int32_t)y, 1);
+            v[2] = stp_asr32((int32_t)z, 1);
+        }
+        return up;
+    }
+    up = 30 - stp_bit_length64(m);
     if (up >= 0) {
         x *= (int64_t)1 << up;
         y *= (int64_t)1 << up;
@@ -435,31 +446,57 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
         y = stp_asr64(y, -up);
         z = stp_asr64(z, -up);
     }
-    /* |x|, |y|, |z| <= 2^30 now: exact 32 x 32 products */
+    v[0] = (int32_t)x;
+    v[1] = (int32_t)y;
+    v[2] = (int32_t)z;
+    return up;
+}
+
+/* 1/sqrt(s) = inv 2^-(e + 30) for s = v.v (v scaled by unit_scale): s is
+ * in [2^58, 3 2^60), a bit length of 59..62, so rsqrt64's even shift is
+ * 28 or 30 and e (to STP_UNIT) is 29 or 30; *squares = s. */
+STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint64_t *squares, int *e)
+{
+    uint64_t s;
+    int sh;
+    /* |v[i]| <= 2^30: exact 32 x 32 products */
 #if STP_HAVE_MUL64
-    s = (uint64_t)STP_SMUL_FIT32(x, x) + (uint64_t)STP_SMUL_FIT32(y, y) + (uint64_t)STP_SMUL_FIT32(z, z);
+    s = (uint64_t)STP_SMUL_FIT32(v[0], v[0]) + (uint64_t)STP_SMUL_FIT32(v[1], v[1]) +
+        (uint64_t)STP_SMUL_FIT32(v[2], v[2]);
 #else
-    s = square30(abs32((int32_t)x)) + square30(abs32((int32_t)y)) + square30(abs32((int32_t)z));
+    s = square30(abs32(v[0])) + square30(abs32(v[1])) + square30(abs32(v[2]));
 #endif
-    /* rsqrt64 for s in [2^58, 3 2^60), a bit length of 59..62: its even
-     * shift is 28 or 30, and 1/sqrt(s) = inv 2^-e with e = 59 or 60 */
     sh = s >= ((uint64_t)1 << 60) ? 30 : 28;
-    inv = (int64_t)rsqrt_q30((uint32_t)(s >> sh));
-    e = 45 + sh / 2 - 30; /* to STP_UNIT */
-    /* |x inv| < 2^60 */
+    *squares = s;
+    *e = 45 + sh / 2 - 30;
+    return (int64_t)rsqrt_q30((uint32_t)(s >> sh));
+}
+
+int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
+{
+    int32_t v[3];
+    uint64_t s, len;
+    int up, e;
+    int64_t inv;
+    out->x = out->y = out->z = 0;
+    if ((x | y | z) == 0)
+        return 0;
+    up = unit_scale(x, y, z, v);
+    inv = unit_inverse(v, &s, &e);
+    /* |v inv| < 2^60 */
 #if STP_HAVE_MUL64
     {
         const int64_t half = (int64_t)1 << (e - 1);
-        out->x = (int32_t)floor_shift(STP_SMUL_FIT32(x, inv) + half, e);
-        out->y = (int32_t)floor_shift(STP_SMUL_FIT32(y, inv) + half, e);
-        out->z = (int32_t)floor_shift(STP_SMUL_FIT32(z, inv) + half, e);
+        out->x = (int32_t)floor_shift(STP_SMUL_FIT32(v[0], inv) + half, e);
+        out->y = (int32_t)floor_shift(STP_SMUL_FIT32(v[1], inv) + half, e);
+        out->z = (int32_t)floor_shift(STP_SMUL_FIT32(v[2], inv) + half, e);
     }
     /* |v| scaled = s / sqrt(s): s >> 30 < 2^32 times inv < 2^31 */
     len = STP_UMUL_FIT32(s >> 30, inv) >> e;
 #else
-    out->x = round_unit((int32_t)x, (uint32_t)inv, e);
-    out->y = round_unit((int32_t)y, (uint32_t)inv, e);
-    out->z = round_unit((int32_t)z, (uint32_t)inv, e);
+    out->x = round_unit(v[0], (uint32_t)inv, e);
+    out->y = round_unit(v[1], (uint32_t)inv, e);
+    out->z = round_unit(v[2], (uint32_t)inv, e);
     len = mul_shr32((uint32_t)(s >> 30), (uint32_t)inv, e); /* < 2^32: |v| scaled < 2^30 sqrt 3 */
 #endif
     /* to the input's units, rounded to nearest (len may sit 2^-29 below an
@@ -467,6 +504,33 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
     if (up > 0)
         return (int64_t)((len + ((uint64_t)1 << (up - 1))) >> up);
     return up == 0 ? (int64_t)len : (int64_t)(len << -up);
+}
+
+int stp_unit_q14_from64(int64_t x, int64_t y, int64_t z, int16_t out[3])
+{
+    int32_t v[3];
+    uint64_t s;
+    int e;
+    int64_t inv;
+    if ((x | y | z) == 0)
+        return 0;
+    (void)unit_scale(x, y, z, v);
+    inv = unit_inverse(v, &s, &e);
+#if STP_HAVE_MUL64
+    {
+        /* floor((floor((v inv + 2^(e-1)) / 2^e) + 2^15) / 2^16) in one
+         * floor: an integer added inside a floor may be added outside */
+        const int64_t half = ((int64_t)1 << (e - 1)) + ((int64_t)1 << (e + 15));
+        out[0] = (int16_t)floor_shift(STP_SMUL_FIT32(v[0], inv) + half, e + 16);
+        out[1] = (int16_t)floor_shift(STP_SMUL_FIT32(v[1], inv) + half, e + 16);
+        out[2] = (int16_t)floor_shift(STP_SMUL_FIT32(v[2], inv) + half, e + 16);
+    }
+#else
+    out[0] = (int16_t)stp_asr32(round_unit(v[0], (uint32_t)inv, e) + ((int32_t)1 << 15), 16);
+    out[1] = (int16_t)stp_asr32(round_unit(v[1], (uint32_t)inv, e) + ((int32_t)1 << 15), 16);
+    out[2] = (int16_t)stp_asr32(round_unit(v[2], (uint32_t)inv, e) + ((int32_t)1 << 15), 16);
+#endif
+    return 1;
 }
 
 uint32_t stp_sqrt64_fast(uint64_t v)

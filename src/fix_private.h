@@ -122,6 +122,11 @@ typedef struct stp_unit3 {
  * 1/sqrt and refined by two Newton steps (relative error below 2^-29).
  * A zero vector returns 0 and leaves *out = 0. */
 int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out);
+/* The same direction as Q1.14 in out[] (STP_UNIT rounded to nearest:
+ * floor((u + 2^15) / 2^16) of stp_unit_from64's u, formed without u's
+ * own rounding step where 64-bit products are native, and without the
+ * length); 1, or 0 for a zero vector (out unset). */
+int stp_unit_q14_from64(int64_t x, int64_t y, int64_t z, int16_t out[3]);
 
 /* 1/sqrt(v) for v > 0: returns y in (2^29, 2^30] and *exponent with
  * 1/sqrt(v) = y 2^-exponent (relative error below 2^-29; table seed and

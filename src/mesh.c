@@ -201,20 +201,6 @@ static void vertex_project(const mesh_context *c, stp_mesh_vertex *s)
     s->state |= PROJECTED;
 }
 
-/* The vertex average, truncated toward zero as render.c's Newell step
- * forms it (the same quotients); small: each value below 2^28 in
- * magnitude (box_inside), so the sum fits int32. */
-STP_HOT_INLINE stp_fix average3(int small, int32_t a, int32_t b, int32_t c)
-{
-    int64_t s;
-    if (small) /* each value below 2^28 in magnitude: the sum fits int32 */
-        return (stp_fix)stp_div3_toward_zero(a + b + c);
-    s = (int64_t)a + b + c;
-    if (s >= INT32_MIN && s <= INT32_MAX)
-        return (stp_fix)stp_div3_toward_zero((int32_t)s);
-    return (stp_fix)(s / 3);
-}
-
 /* Triangle t through stp_renderer_polygon (mesh.h: the fallback). */
 static int enter_fallback(const mesh_context *c, uint16_t t)
 {
@@ -232,49 +218,18 @@ static int enter_fallback(const mesh_context *c, uint16_t t)
 #endif
 }
 
-/* The display-file record of projected vertex *s (op: 3 opening the
- * triangle, else STP_OP_LINE). */
-STP_HOT_INLINE void put_vertex(stp_instr *out, int32_t op, const stp_mesh_vertex *s)
-{
-    out->op = op;
-    out->x = s->dx;
-    out->y = s->dy;
-    out->z = s->dz;
-#if STP_WITH_GOURAUD
-    out->shade = -1;
-#endif
-}
-
 /* The display-file records of a front face inside the view (scratch
  * entries s[0..2], projected): SHADE when the style changed, then its
- * three vertices. */
+ * three vertices (the open segment's end: set once per call,
+ * stp_renderer_mesh). */
 static int store_face(mesh_context *c, stp_mesh_vertex *const s[3], int style)
 {
-    stp_renderer *r = c->r;
-    uint32_t used = r->used;
-    int change = style != r->current_style || r->current_colour != 0;
-    stp_instr *out;
-    if (r->capacity - used < (change ? 4u : 3u))
+    stp_instr *out = stp_render_triangle_records(c->r, style);
+    if (out == 0)
         return STP_ERR_FULL;
-    out = &r->df[used];
-    if (change) {
-        out->op = STP_OP_SHADE;
-        out->x = style;
-        out->y = r->last_shade;
-        out->z = 0;
-#if STP_WITH_GOURAUD
-        out->shade = -1;
-#endif
-        out++;
-        used++;
-        r->current_style = style;
-        r->current_colour = 0;
-    }
-    put_vertex(&out[0], 3, s[0]);
-    put_vertex(&out[1], STP_OP_LINE, s[1]);
-    put_vertex(&out[2], STP_OP_LINE, s[2]);
-    used += 3;
-    r->used = used; /* the open segment's end: set once per call (stp_renderer_mesh) */
+    stp_render_put_vertex(&out[0], 3, s[0]->dx, s[0]->dy, s[0]->dz);
+    stp_render_put_vertex(&out[1], STP_OP_LINE, s[1]->dx, s[1]->dy, s[1]->dz);
+    stp_render_put_vertex(&out[2], STP_OP_LINE, s[2]->dx, s[2]->dy, s[2]->dz);
     return STP_OK;
 }
 
@@ -304,7 +259,7 @@ static int enter_face(mesh_context *c, uint16_t t)
     const int16_t *n = &c->mesh->normals[3 * (uint32_t)t];
     stp_mesh_vertex *s[3];
     int16_t nv[3];
-    int32_t code0, code1, code2, all, any, rows;
+    int32_t code0, code1, code2, all, any;
     stp_vec3 centre;
     int style, side = face_side(c, n, &c->mesh->vertices[k[0]]);
     r->last_shade = -1;
@@ -330,20 +285,13 @@ static int enter_face(mesh_context *c, uint16_t t)
         vertex_project(c, s[1]);
     if ((s[2]->state & PROJECTED) == 0)
         vertex_project(c, s[2]);
-    rows = stp_render_row_count(s[0]->dy, s[1]->dy, s[2]->dy);
-    if (rows == 0)
-        return STP_OK; /* between two row centres: draws nothing */
-    if (STP_UNLIKELY(rows <= c->test_rows) &&
-        !stp_render_centre_reached(s[0]->dx, s[0]->dy, s[1]->dx, s[1]->dy, s[2]->dx, s[2]->dy)) {
-        /* pixel culling: no pixel centre in its spans, draws nothing; the
-         * segment has lost a sliver edge AA would draw (render.h) */
-        r->segments[r->open_segment].pixel_culled = 1;
-        return STP_OK;
-    }
+    if (!stp_render_triangle_shows(r, c->test_rows, s[0]->dx, s[0]->dy, s[1]->dx, s[1]->dy, s[2]->dx,
+                                   s[2]->dy))
+        return STP_OK; /* between two row centres, or pixel culling: draws nothing */
     stp_render_view_normal(c->frame, n, side, nv);
-    centre.x = average3(c->inside, s[0]->view.x, s[1]->view.x, s[2]->view.x);
-    centre.y = average3(c->inside, s[0]->view.y, s[1]->view.y, s[2]->view.y);
-    centre.z = average3(c->inside, s[0]->view.z, s[1]->view.z, s[2]->view.z);
+    centre.x = stp_render_average3(c->inside, s[0]->view.x, s[1]->view.x, s[2]->view.x);
+    centre.y = stp_render_average3(c->inside, s[0]->view.y, s[1]->view.y, s[2]->view.y);
+    centre.z = stp_render_average3(c->inside, s[0]->view.z, s[1]->view.z, s[2]->view.z);
     style = stp_render_face_style(r, c->shade, nv, centre, side);
     return store_face(c, s, style);
 }

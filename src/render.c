@@ -626,7 +626,7 @@ static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
     out->y = (int32_t)(y < 0 ? 0 : (y > hq ? hq : y));
 }
 
-static int check_open(stp_renderer *r)
+static inline int check_open(stp_renderer *r)
 {
     if (r == 0)
         return STP_ERR_ARG;
@@ -719,18 +719,14 @@ const stp_model_frame *stp_render_model_frame(stp_renderer *r)
     return r->frame.usable ? &r->frame : 0;
 }
 
-const stp_shade_fast *stp_render_face_shader(stp_renderer *r)
+void stp_render_face_shader_prepare(stp_renderer *r, int parallel)
 {
-    int parallel = r->projection == STP_PARALLEL;
-    if (!r->fast_shade_valid || r->fast_shade_parallel != parallel) {
-        /* the eye at the view's origin; parallel: towards it along -z */
-        stp_vec3 origin = {0, 0, 0}, towards_eye = {0, 0, -ONE};
-        stp_shade_fast_prepare(&r->fast_shade, &r->segment_lighting, &r->material, origin,
-                               parallel, towards_eye);
-        r->fast_shade_valid = 1;
-        r->fast_shade_parallel = parallel;
-    }
-    return &r->fast_shade;
+    /* the eye at the view's origin; parallel: towards it along -z */
+    stp_vec3 origin = {0, 0, 0}, towards_eye = {0, 0, -ONE};
+    stp_shade_fast_prepare(&r->fast_shade, &r->segment_lighting, &r->material, origin, parallel,
+                           towards_eye);
+    r->fast_shade_valid = 1;
+    r->fast_shade_parallel = parallel;
 }
 
 static void append(stp_renderer *r, int32_t op, int32_t x, int32_t y, int32_t z, int32_t shade)
@@ -854,26 +850,32 @@ typedef struct stp_entry {
 static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e)
 {
     int i;
+    const int n = e->n;
     unsigned range = 0;
 #if STP_VERTEX_CACHE
-    uint16_t serial = ++r->cache_polygon; /* wraps: a stale match only skips the cache */
+    /* locals: the stores below may alias r's fields for the compiler */
+    const uint16_t serial = ++r->cache_polygon; /* wraps: a stale match only skips the cache */
+    const uint32_t stamp = r->cache_stamp;
+    stp_vertex_entry *const cache = r->cache;
+    stp_vec3 *const view_out = r->clip_a;
     unsigned all = 31u, any = 0;
-    for (i = 0; i < e->n; i++) {
-        stp_vec3 p = vertices[i];
+    for (i = 0; i < n; i++) {
+        /* the coordinates as scalars: a copy of the point is taken only
+         * by a miss */
+        const stp_fix px = vertices[i].x, py = vertices[i].y, pz = vertices[i].z;
         /* a multiplicative hash of the exact coordinates, rotated apart
          * and mixed by one product (compilers for cores without a fast
          * multiplier expand each constant product into ~20 shifts) */
-        uint32_t ux = (uint32_t)p.x, uy = (uint32_t)p.y, uz = (uint32_t)p.z;
+        uint32_t ux = (uint32_t)px, uy = (uint32_t)py, uz = (uint32_t)pz;
         uint32_t h = (ux ^ ((uy << 11) | (uy >> 21)) ^ ((uz << 22) | (uz >> 10))) * 0x9E3779B1u;
         uint32_t slot = (h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1);
-        stp_vertex_entry *c = &r->cache[slot];
-        if (c->stamp != r->cache_stamp || c->point.x != p.x || c->point.y != p.y ||
-            c->point.z != p.z) {
+        stp_vertex_entry *c = &cache[slot];
+        if (c->stamp != stamp || c->point.x != px || c->point.y != py || c->point.z != pz) {
             unsigned code;
             stp_vec3 *view = &c->view;
             if (c->used_by == serial) /* the slot holds an earlier vertex of this polygon */
-                view = &r->clip_a[i];
-            vertex_to_view(r, p, view);
+                view = &view_out[i];
+            vertex_to_view(r, vertices[i], view);
             code = stp_view_saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode(&r->clip_volume, *view);
             if (c->used_by == serial) {
                 all &= code;
@@ -881,22 +883,22 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
                 r->cached[i] = (uint16_t)STP_CACHE_NONE;
                 continue;
             }
-            c->stamp = r->cache_stamp;
-            c->point = p;
+            c->stamp = stamp;
+            c->point = vertices[i];
             c->code = (int16_t)code;
             c->dx = STP_CACHE_NOT_PROJECTED;
         }
         c->used_by = serial;
         all &= (unsigned)c->code;
         any |= (unsigned)c->code;
-        r->clip_a[i] = c->view;
+        view_out[i] = c->view;
         r->cached[i] = (uint16_t)slot;
     }
     range = any & STP_CODE_RANGE;
     e->outside_all = all;
     e->outside_any = any;
 #else
-    for (i = 0; i < e->n; i++) {
+    for (i = 0; i < n; i++) {
         vertex_to_view(r, vertices[i], &r->clip_a[i]);
         range |= (unsigned)stp_view_saturated(r->clip_a[i]);
     }
@@ -1262,31 +1264,35 @@ static inline void store_records(stp_renderer *r, const stp_instr *record, int r
 }
 #endif
 
-/* The device positions of the first n vertices of r->clip_a (inside the
- * view volume), through the vertex cache: each cached vertex projected
- * once. */
+/* The device position of vertex i of r->clip_a (inside the view volume),
+ * through the vertex cache: each cached vertex projected once. */
+STP_HOT_INLINE void project_entered_vertex(stp_renderer *r, int i, stp_instr *out)
+{
+#if STP_VERTEX_CACHE
+    stp_vertex_entry *c = r->cached[i] != STP_CACHE_NONE ? &r->cache[r->cached[i]] : 0;
+    if (c && c->dx != STP_CACHE_NOT_PROJECTED) {
+        out->x = c->dx;
+        out->y = c->dy;
+        out->z = c->dz;
+        return;
+    }
+    project(r, r->clip_a[i], out);
+    if (c) {
+        c->dx = out->x;
+        c->dy = out->y;
+        c->dz = out->z;
+    }
+#else
+    project(r, r->clip_a[i], out);
+#endif
+}
+
+/* The device positions of the first n vertices of r->clip_a. */
 static void project_entered(stp_renderer *r, int n, stp_instr *out)
 {
     int i;
-    for (i = 0; i < n; i++) {
-#if STP_VERTEX_CACHE
-        stp_vertex_entry *c = r->cached[i] != STP_CACHE_NONE ? &r->cache[r->cached[i]] : 0;
-        if (c && c->dx != STP_CACHE_NOT_PROJECTED) {
-            out[i].x = c->dx;
-            out[i].y = c->dy;
-            out[i].z = c->dz;
-            continue;
-        }
-        project(r, r->clip_a[i], &out[i]);
-        if (c) {
-            c->dx = out[i].x;
-            c->dy = out[i].y;
-            c->dz = out[i].z;
-        }
-#else
-        project(r, r->clip_a[i], &out[i]);
-#endif
-    }
+    for (i = 0; i < n; i++)
+        project_entered_vertex(r, i, &out[i]);
 }
 
 /* Step 5: clip (only a polygon that crosses a plane), project and store:
@@ -1469,79 +1475,115 @@ static int model_normal_and_side(const stp_renderer *r, const stp_vec3 *v, int c
     return 1;
 }
 
+/* A front triangle inside the view on the model route (enter_model_face,
+ * its vertices in r->clip_a and the cache): the face stage's last steps as
+ * stp_renderer_mesh takes them (mesh.c's enter_face): projected, left out
+ * when it draws nothing, shaded from model normal n, its three records
+ * stored (enter_store's, where a transmission instruction is due). */
+static int enter_model_triangle(stp_renderer *r, stp_entry *e, const stp_model_frame *f,
+                                const int16_t n[3], int side)
+{
+    stp_instr p[3];
+    stp_instr *out;
+    stp_vec3 centre;
+    int16_t nv[3];
+    int style;
+    project_entered_vertex(r, 0, &p[0]);
+    project_entered_vertex(r, 1, &p[1]);
+    project_entered_vertex(r, 2, &p[2]);
+    if (!stp_render_triangle_shows(r, r->pixel_cull ? STP_CENTRE_TEST_MAX : 0, p[0].x, p[0].y, p[1].x,
+                                   p[1].y, p[2].x, p[2].y))
+        return STP_OK; /* between two row centres, or pixel culling: draws nothing */
+    stp_render_view_normal(f, n, side, nv);
+    {
+        const stp_vec3 *v = r->clip_a;
+        /* where 32 x 32 -> 64 products are library calls and 32-bit
+         * ones are not, view points below 2^28 (the usual) take mesh
+         * entry's 32-bit quotient */
+        int small = STP_NARROW_FORMS &&
+                    (stp_abs32(v[0].x) | stp_abs32(v[0].y) | stp_abs32(v[0].z) | stp_abs32(v[1].x) |
+                     stp_abs32(v[1].y) | stp_abs32(v[1].z) | stp_abs32(v[2].x) | stp_abs32(v[2].y) |
+                     stp_abs32(v[2].z)) < ((uint32_t)1 << 28);
+        centre.x = stp_render_average3(small, v[0].x, v[1].x, v[2].x);
+        centre.y = stp_render_average3(small, v[0].y, v[1].y, v[2].y);
+        centre.z = stp_render_average3(small, v[0].z, v[1].z, v[2].z);
+    }
+    style = stp_render_face_style(r, r->shading ? stp_render_face_shader(r) : 0, nv, centre, side);
+    if (STP_UNLIKELY(r->current_transmission != 0)) {
+        e->style = style;
+        e->colour = 0;
+        e->transmission = 0;
+        e->projected = p;
+        return enter_store(r, e);
+    }
+    out = stp_render_triangle_records(r, style);
+    if (out == 0)
+        return STP_ERR_FULL;
+    stp_render_put_vertex(&out[0], 3, p[0].x, p[0].y, p[0].z);
+    stp_render_put_vertex(&out[1], STP_OP_LINE, p[1].x, p[1].y, p[1].z);
+    stp_render_put_vertex(&out[2], STP_OP_LINE, p[2].x, p[2].y, p[2].z);
+    r->segments[r->open_segment].end = r->used;
+    return STP_OK;
+}
+
+/* The front (or two-sided) flat polygon of enter_model_face with model
+ * normal n and side: transformed, clipped, shaded and stored.  A call of
+ * its own, so that a back face removed saves its registers' stores. */
+STP_NOINLINE int enter_model_front(stp_renderer *r, const stp_vec3 *vertices, int count,
+                                   const stp_model_frame *f, const int16_t n[3], int side)
+{
+    stp_entry e;
+    int16_t nv[3];
+    e.n = count;
+    e.shading = STP_ENTER_FLAT;
+    e.projected = 0;
+    enter_transform(r, vertices, &e);
+    if (e.range)
+        return STP_ERR_RANGE;
+#if !STP_VERTEX_CACHE
+    enter_outcodes(r, &e);
+#endif
+    if (e.outside_all != 0)
+        return STP_OK; /* wholly outside one plane: not shaded */
+    if (count == 3 && e.outside_any == 0)
+        return enter_model_triangle(r, &e, f, n, side);
+    stp_render_view_normal(f, n, side, nv);
+    e.style = stp_render_face_style(r, r->shading ? stp_render_face_shader(r) : 0, nv,
+                                    vertex_average(r->clip_a, count), side);
+    e.colour = 0;
+    e.transmission = 0;
+    return enter_store(r, &e);
+}
+
 /* DISPLAY-FILE-ENTER of a flat polygon on the model route: the face
  * stage's normal (of the entered points), side, view normal and shade, as
  * stp_renderer_mesh enters a triangle; then clip, project and store.  A
  * back face removed is not transformed. */
-static int enter_model_face(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e,
+static int enter_model_face(stp_renderer *r, const stp_vec3 *vertices, int count,
                             const stp_model_frame *f)
 {
-    int16_t n[3] = {0, 0, 0}, nv[3];
-    stp_instr projected[3];
-    int side = 0, found = model_normal_and_side(r, vertices, e->n, f, n, &side);
+    int16_t n[3] = {0, 0, 0};
+    int side = 0, found = model_normal_and_side(r, vertices, count, f, n, &side);
     if (found != 1)
         return found == 0 ? STP_OK : found;
     if (side <= 0 && r->backface_removal)
         return STP_OK;
-    enter_transform(r, vertices, e);
-    if (e->range)
-        return STP_ERR_RANGE;
-#if STP_VERTEX_CACHE
-    if (e->outside_all != 0)
-        return STP_OK; /* wholly outside one plane: not shaded */
-#else
-    enter_outcodes(r, e);
-    if (e->outside_all != 0)
-        return STP_OK;
-#endif
-    if (e->n == 3 && e->outside_any == 0) {
-        /* as stp_renderer_mesh: a triangle between two row centres draws
-         * nothing, so it is left out before it is shaded */
-        project_entered(r, e->n, projected);
-        int32_t rows = stp_render_row_count(projected[0].y, projected[1].y, projected[2].y);
-        if (rows == 0)
-            return STP_OK;
-        if (r->pixel_cull && rows <= STP_CENTRE_TEST_MAX &&
-            !stp_render_centre_reached(projected[0].x, projected[0].y, projected[1].x, projected[1].y,
-                                       projected[2].x, projected[2].y)) {
-            /* no pixel centre in its spans: nothing drawn; the segment
-             * has lost a sliver edge AA would draw (render.h) */
-            r->segments[r->open_segment].pixel_culled = 1;
-            return STP_OK;
-        }
-        e->projected = projected;
-    }
-    stp_render_view_normal(f, n, side, nv);
-    e->style = stp_render_face_style(r, r->shading ? stp_render_face_shader(r) : 0, nv,
-                                     vertex_average(r->clip_a, e->n), side);
-    e->colour = 0;
-    e->transmission = 0;
-    return enter_store(r, e);
+    return enter_model_front(r, vertices, count, f, n, side);
 }
 
-/* DISPLAY-FILE-ENTER of a polygon: the steps above in order. */
-static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
-                            stp_enter_shading shading, const stp_vec3 *normals,
-                            const stp_fix *shades)
+/* DISPLAY-FILE-ENTER of a polygon off the model route: the steps above
+ * in order.  A call of its own, apart from the model route's. */
+STP_NOINLINE int enter_view_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,
+                                    stp_enter_shading shading, const stp_vec3 *normals,
+                                    const stp_fix *shades)
 {
     stp_entry e;
-    const stp_model_frame *frame;
     int status;
-    if (r == 0 || vertices == 0 || n < 3)
-        return n < 3 && n >= 0 && r != 0 ? STP_ERR_DEGENERATE : STP_ERR_ARG;
-    if (n > STP_MAX_POLYGON_VERTICES)
-        return STP_ERR_TOO_MANY_VERTICES;
-    /* an implicit segment is opened only for a call that can draw */
-    if ((status = check_open(r)) != STP_OK)
-        return status;
     e.n = n;
     e.shading = shading;
     e.normals = normals;
     e.projected = 0;
     e.shades = shades;
-    r->last_shade = -1;
-    if (shading == STP_ENTER_FLAT && (frame = model_route(r)) != 0)
-        return enter_model_face(r, vertices, &e, frame);
     /* off the model route, a triangle's side is known before the transform
      * when back faces are removed and there is no model transform */
     e.face = n == 3 && r->backface_removal && !r->model_on ? world_facing(r, vertices)
@@ -1562,6 +1604,27 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     enter_outcodes(r, &e);
 #endif
     return enter_store(r, &e);
+}
+
+/* DISPLAY-FILE-ENTER of a polygon: the checks, then the model route
+ * (enter_model_face) or the view route. */
+static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
+                            stp_enter_shading shading, const stp_vec3 *normals,
+                            const stp_fix *shades)
+{
+    const stp_model_frame *frame;
+    int status;
+    if (r == 0 || vertices == 0 || n < 3)
+        return n < 3 && n >= 0 && r != 0 ? STP_ERR_DEGENERATE : STP_ERR_ARG;
+    if (n > STP_MAX_POLYGON_VERTICES)
+        return STP_ERR_TOO_MANY_VERTICES;
+    /* an implicit segment is opened only for a call that can draw */
+    if ((status = check_open(r)) != STP_OK)
+        return status;
+    r->last_shade = -1;
+    if (shading == STP_ENTER_FLAT && (frame = model_route(r)) != 0)
+        return enter_model_face(r, vertices, n, frame);
+    return enter_view_polygon(r, vertices, n, shading, normals, shades);
 }
 
 static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,

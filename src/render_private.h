@@ -38,13 +38,7 @@ int stp_render_model_normal(const stp_vec3 *v, int n, int16_t out[3]);
  * zero vector; */
 static inline int stp_render_unit_q14(int64_t a, int64_t b, int64_t c, int16_t out[3])
 {
-    stp_unit3 u;
-    if (stp_unit_from64(a, b, c, &u) == 0)
-        return 0;
-    out[0] = (int16_t)stp_asr64((int64_t)u.x + ((int64_t)1 << 15), 16);
-    out[1] = (int16_t)stp_asr64((int64_t)u.y + ((int64_t)1 << 15), 16);
-    out[2] = (int16_t)stp_asr64((int64_t)u.z + ((int64_t)1 << 15), 16);
-    return 1;
+    return stp_unit_q14_from64(a, b, c, out);
 }
 
 /* a triangle's cross product (v1 - v0) x (v2 - v0) in c[] (model
@@ -59,6 +53,17 @@ static inline void stp_render_triangle_cross(const stp_vec3 *v, int64_t c[3])
             z2 = (int64_t)v[2].z - v[0].z;
     uint64_t spread = stp_abs64u(x1) | stp_abs64u(y1) | stp_abs64u(z1) | stp_abs64u(x2) |
                       stp_abs64u(y2) | stp_abs64u(z2);
+#if STP_NARROW_FORMS
+    if (spread < ((uint64_t)1 << 15)) {
+        /* edges below 2^15 (half a unit: a mesh's triangle): products
+         * below 2^30, their differences below 2^31, the same values in
+         * int32 without the 64-bit multiply library call */
+        c[0] = (int32_t)y1 * (int32_t)z2 - (int32_t)z1 * (int32_t)y2;
+        c[1] = (int32_t)z1 * (int32_t)x2 - (int32_t)x1 * (int32_t)z2;
+        c[2] = (int32_t)x1 * (int32_t)y2 - (int32_t)y1 * (int32_t)x2;
+        return;
+    }
+#endif
     if (spread >> 30) {
         int bits = stp_bit_length64(spread) - 30;
         x1 = stp_asr64(x1, bits);
@@ -90,8 +95,17 @@ void stp_render_geometry_update(stp_renderer *r);
  * after either changes), or NULL when it is not usable (see above). */
 const stp_model_frame *stp_render_model_frame(stp_renderer *r);
 /* The face shader of the segment's lighting and the material
- * (stp_shade_fast_prepare), prepared when out of date. */
-const stp_shade_fast *stp_render_face_shader(stp_renderer *r);
+ * (stp_shade_fast_prepare), prepared when out of date (by
+ * stp_render_face_shader_prepare, out of line: the check stays inline for
+ * a polygon's entry). */
+void stp_render_face_shader_prepare(stp_renderer *r, int parallel);
+STP_HOT_INLINE const stp_shade_fast *stp_render_face_shader(stp_renderer *r)
+{
+    int parallel = r->projection == STP_PARALLEL;
+    if (!r->fast_shade_valid || r->fast_shade_parallel != parallel)
+        stp_render_face_shader_prepare(r, parallel);
+    return &r->fast_shade;
+}
 
 /* The exact sign (-1, 0, 1) of N.(eye - v0) in model coordinates: which
  * side of a face with Q1.14 model normal n through model point v0 the eye
@@ -119,8 +133,58 @@ STP_HOT_INLINE int stp_render_face_side(const stp_model_frame *f, const int16_t 
  * the magnitudes: certain when |cs.ds| > 3 C + 3 D + 3 + (3 C + 3)(3 D + 3)
  * / 2^13.  Ranges: |cs|, |ds| <= 2^29, so C, D < 2^30, cs.ds below
  * 3 2^58 and (3 C + 3)(3 D + 3) below 2^64 (unsigned). */
+#if STP_NARROW_FORMS
+/* stp_render_certain_side's test in 32-bit arithmetic, where 64-bit
+ * products are library calls: c below 2^31 and v0 within 2^30 (so d =
+ * eye - v0 below 2^31), both cut to 13 bits (|cs|, |ds| <= 2^13, C, D <
+ * 2^14): cs.ds below 3 2^26 and (3 C + 3)(3 D + 3) below 2^32.  1 or -1
+ * when certain, else 0 (the 64-bit test, with more bits, decides). */
+static inline int stp_render_certain_side32(const stp_model_frame *f, const int64_t c[3], stp_vec3 v0)
+{
+    const uint32_t lim = (uint32_t)1 << 30;
+    int32_t cx, cy, cz, dx, dy, dz, dot;
+    uint32_t c_or, d_or, bound;
+    int a, b;
+    if (((stp_abs64u(c[0]) | stp_abs64u(c[1]) | stp_abs64u(c[2])) >> 31) != 0 ||
+        (((uint32_t)v0.x + lim) | ((uint32_t)v0.y + lim) | ((uint32_t)v0.z + lim)) >= 2 * lim)
+        return 0;
+    cx = (int32_t)c[0];
+    cy = (int32_t)c[1];
+    cz = (int32_t)c[2];
+    dx = f->eye[0] - v0.x; /* |eye| < 2^30 (stp_model_frame) */
+    dy = f->eye[1] - v0.y;
+    dz = f->eye[2] - v0.z;
+    c_or = stp_abs32(cx) | stp_abs32(cy) | stp_abs32(cz);
+    d_or = stp_abs32(dx) | stp_abs32(dy) | stp_abs32(dz);
+    a = stp_bit_length32(c_or) - 13;
+    b = stp_bit_length32(d_or) - 13;
+    if (a > 0) {
+        cx = stp_asr32(cx, a);
+        cy = stp_asr32(cy, a);
+        cz = stp_asr32(cz, a);
+        c_or = stp_abs32(cx) | stp_abs32(cy) | stp_abs32(cz);
+    }
+    if (b > 0) {
+        dx = stp_asr32(dx, b);
+        dy = stp_asr32(dy, b);
+        dz = stp_asr32(dz, b);
+        d_or = stp_abs32(dx) | stp_abs32(dy) | stp_abs32(dz);
+    }
+    dot = cx * dx + cy * dy + cz * dz;
+    bound = 3u * (c_or + d_or + 1u) + (((3u * c_or + 3u) * (3u * d_or + 3u)) >> 13) + 1u;
+    if (stp_abs32(dot) <= bound)
+        return 0;
+    return dot > 0 ? 1 : -1;
+}
+#endif
+
 static inline int stp_render_certain_side(const stp_model_frame *f, const int64_t c[3], stp_vec3 v0)
 {
+#if STP_NARROW_FORMS
+    int sure = stp_render_certain_side32(f, c, v0);
+    if (sure != 0)
+        return sure;
+#endif
     int64_t cx = c[0], cy = c[1], cz = c[2], dot;
     int64_t dx = (int64_t)f->eye[0] - v0.x, dy = (int64_t)f->eye[1] - v0.y,
             dz = (int64_t)f->eye[2] - v0.z;
@@ -197,6 +261,86 @@ STP_HOT_INLINE int32_t stp_render_row_count(int32_t a, int32_t b, int32_t c)
  * A call of its own (render.c), so that the callers' path without the cull
  * stays as it is. */
 int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2, int32_t y2);
+
+/* Whether a flat triangle inside the view with device vertices (x0, y0),
+ * (x1, y1), (x2, y2) (Q27.4, >= 0) may draw: it spans a row centre
+ * (stp_render_row_count) and, spanning at most test_rows (pixel culling's
+ * STP_CENTRE_TEST_MAX, 0 when off), reaches a pixel centre.  A culled one
+ * marks the open segment (it lost a sliver edge AA would draw: render.h).
+ * Both entries test their triangles so before shading them. */
+STP_HOT_INLINE int stp_render_triangle_shows(stp_renderer *r, int32_t test_rows, int32_t x0, int32_t y0,
+                                             int32_t x1, int32_t y1, int32_t x2, int32_t y2)
+{
+    int32_t rows = stp_render_row_count(y0, y1, y2);
+    if (rows == 0)
+        return 0;
+    if (STP_UNLIKELY(rows <= test_rows) && !stp_render_centre_reached(x0, y0, x1, y1, x2, y2)) {
+        r->segments[r->open_segment].pixel_culled = 1;
+        return 0;
+    }
+    return 1;
+}
+
+/* A triangle's vertex average (one coordinate of its three view points),
+ * each sum divided by 3 truncated toward zero: both entries' face centre
+ * (render.c's vertex_average, the same quotients).  small: each value
+ * below 2^28 in magnitude (mesh.c's box_inside), so the sum fits int32. */
+STP_HOT_INLINE stp_fix stp_render_average3(int small, int32_t a, int32_t b, int32_t c)
+{
+    int64_t s;
+    if (small) {
+        int32_t sum = a + b + c; /* below 3 2^28 < 2^30 in magnitude */
+        return sum >= 0 ? (stp_fix)stp_div3_u30((uint32_t)sum) : -(stp_fix)stp_div3_u30(0u - (uint32_t)sum);
+    }
+    s = (int64_t)a + b + c;
+    if (s >= INT32_MIN && s <= INT32_MAX)
+        return (stp_fix)stp_div3_toward_zero((int32_t)s);
+    return (stp_fix)(s / 3);
+}
+
+/* A flat opaque triangle's display-file records, as both entries store
+ * them: SHADE (style, r->last_shade, colour 0) when the style or colour
+ * changed, written here, then room for its three vertex records, which
+ * the caller writes (stp_render_put_vertex: op 3, then STP_OP_LINE twice);
+ * r->used counts them all.  NULL when the display file has no room for
+ * them (nothing written).  The caller keeps the open segment's end and
+ * the transmission (0: the caller's test). */
+STP_HOT_INLINE stp_instr *stp_render_triangle_records(stp_renderer *r, int style)
+{
+    uint32_t used = r->used;
+    int change = style != r->current_style || r->current_colour != 0;
+    stp_instr *out;
+    if (r->capacity - used < (change ? 4u : 3u))
+        return 0;
+    out = &r->df[used];
+    if (change) {
+        out->op = STP_OP_SHADE;
+        out->x = style;
+        out->y = r->last_shade;
+        out->z = 0;
+#if STP_WITH_GOURAUD
+        out->shade = -1;
+#endif
+        out++;
+        used++;
+        r->current_style = style;
+        r->current_colour = 0;
+    }
+    r->used = used + 3;
+    return out;
+}
+
+/* A flat polygon's vertex record: device position (x, y) and depth key z. */
+STP_HOT_INLINE void stp_render_put_vertex(stp_instr *out, int32_t op, int32_t x, int32_t y, int32_t z)
+{
+    out->op = op;
+    out->x = x;
+    out->y = y;
+    out->z = z;
+#if STP_WITH_GOURAUD
+    out->shade = -1;
+#endif
+}
 
 /* The model normal n in view coordinates (Q1.14, rounded), turned to the
  * eye when side <= 0 (the other side of an open surface shows): each row

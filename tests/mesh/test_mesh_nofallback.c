@@ -4,8 +4,9 @@
  * compiled once more here under other names, beside the library's own
  * (fallback on).  A triangle inside the view enters as with the fallback;
  * one that needs clipping, or a state only stp_renderer_polygon handles, is
- * STP_ERR_UNSUPPORTED.  Also mesh.c's vertex average and the division by 3
- * against C's operators (the projection is view.c's, tested by
+ * STP_ERR_UNSUPPORTED.  Also the vertex average both entries share
+ * (render_private.h) and its division by 3 (arith_private.h) against C's
+ * operators (the projection is view.c's, tested by
  * test_view_narrow).
  */
 #define STP_WITH_MESH_FALLBACK 0
@@ -83,7 +84,8 @@ static void test_fallback_refused(void **state)
     torus_bench_free(&b);
 }
 
-/* mesh.c's vertex average against C's division of the 64-bit sum. */
+/* The entries' vertex average (render_private.h) against C's division of
+ * the 64-bit sum. */
 static void test_average_exact(void **state)
 {
     static const int32_t edge[] = {0, 1, 2, 3, 4, 5, -1, -2, -3, INT32_MAX, INT32_MIN,
@@ -95,16 +97,16 @@ static void test_average_exact(void **state)
     for (i = 0; i < sizeof edge / sizeof edge[0]; i++)
         for (j = 0; j < sizeof edge / sizeof edge[0]; j++)
             for (k = 0; k < sizeof edge / sizeof edge[0]; k++)
-                assert_int_equal(average3(0, edge[i], edge[j], edge[k]),
+                assert_int_equal(stp_render_average3(0, edge[i], edge[j], edge[k]),
                                  ((int64_t)edge[i] + edge[j] + edge[k]) / 3);
     /* the division by 3 (arith_private.h): every u below 2^22 and from there
      * to 2^30 in steps that visit every residue */
     for (n = 0; n < (1L << 22); n++)
-        assert_int_equal(stp_div3_u32((uint32_t)n), (uint32_t)n / 3u);
+        assert_int_equal(stp_div3_u30((uint32_t)n), (uint32_t)n / 3u);
     for (n = 1L << 22; n < (1L << 30); n += 253)
-        assert_int_equal(stp_div3_u32((uint32_t)n), (uint32_t)n / 3u);
+        assert_int_equal(stp_div3_u30((uint32_t)n), (uint32_t)n / 3u);
     for (n = (1L << 30) - 1000; n < (1L << 30); n++)
-        assert_int_equal(stp_div3_u32((uint32_t)n), (uint32_t)n / 3u);
+        assert_int_equal(stp_div3_u30((uint32_t)n), (uint32_t)n / 3u);
     for (n = 0; n < 3000000; n++) {
         int32_t v[3];
         int shift;
@@ -115,10 +117,10 @@ static void test_average_exact(void **state)
         shift = (int)(x >> 27); /* magnitudes of every size */
         for (k = 0; k < 3; k++)
             v[k] = v[k] / ((int32_t)1 << (shift > 30 ? 30 : shift));
-        assert_int_equal(average3(0, v[0], v[1], v[2]), ((int64_t)v[0] + v[1] + v[2]) / 3);
+        assert_int_equal(stp_render_average3(0, v[0], v[1], v[2]), ((int64_t)v[0] + v[1] + v[2]) / 3);
         for (k = 0; k < 3; k++)
             v[k] /= 8; /* below 2^28: the small case */
-        assert_int_equal(average3(1, v[0], v[1], v[2]), ((int64_t)v[0] + v[1] + v[2]) / 3);
+        assert_int_equal(stp_render_average3(1, v[0], v[1], v[2]), ((int64_t)v[0] + v[1] + v[2]) / 3);
     }
 }
 
