@@ -6,7 +6,7 @@
  *   s = min(1, BRIGHT (B R + sum_j P_j (R (N.L_j) + Ks D G F/(N.E)) / (C + U_j)))
  * computed with 32 x 32 -> 32-bit products only (a 32 x 32 -> 64 product is
  * formed from four of them where 30 bits are needed) and no division: unit
- * vectors through a reciprocal square root (table seed and Newton steps),
+ * vectors through a reciprocal square root (a table chord and a Newton step),
  * reciprocals through a table seed and Newton steps, Fresnel's F from a
  * per-material table (built by prepare from the exact F), D, F and G/(N.E)
  * in fixed formats where E.H >= 1/4 bounds them, and BRIGHT P_j/(C + U)
