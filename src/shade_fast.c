@@ -210,6 +210,44 @@ STP_HOT_INLINE stp_sf16 sf_recip(stp_sf16 a)
     return r;
 }
 
+/* Significant bits of v for v in [2^26, 2^30): 26 + those of v >> 26, in
+ * [1, 16), one step of a 16-entry table where stp_bit_length32 takes
+ * three halvings before its table (about 8 instructions fewer on ARMv6-M) */
+STP_HOT_INLINE int bit_length_26(uint32_t v)
+{
+#if STP_HAVE_CLZ
+    return stp_bit_length32(v);
+#else
+    static const uint16_t len4[16] STP_TABLE = {0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4};
+    return 26 + (int)STP_TABLE_U16(&len4[v >> 26]);
+#endif
+}
+
+/* 1/c for a Q30 cosine c in (0, 2^31) as stp_sf16, and in Q26 (*q26,
+ * saturated at 2^31 - 1): sf_recip(sf_make(c, 30)) and sf_to_fixed(., 26,
+ * 2^31 - 1) with the ranges known.  c is brought to [2^26, 2^31) by steps
+ * of 4 bits (none from N.E >= 1/20, the face's where the exact route is
+ * set), which leave the mantissa as it was; its reciprocal's exponent
+ * is then at most 26, so the Q26 value is a left shift, and below 2^31 for
+ * a shift below 16. */
+STP_HOT_INLINE stp_sf16 recip_cos(uint32_t c, uint32_t *q26)
+{
+    stp_sf16 a;
+    int n, sh;
+    a.e = 30;
+    while (c < ((uint32_t)1 << 26)) {
+        c <<= 4;
+        a.e += 4;
+    }
+    n = (c >= (uint32_t)Q30 ? 31 : bit_length_26(c)) - 16; /* 11 .. 15 */
+    a.m = c >> n;
+    a.e -= n;
+    a = sf_recip(a);
+    sh = 26 - a.e; /* >= 10 */
+    *q26 = sh >= 16 ? 0x7FFFFFFFu : a.m << sh;
+    return a;
+}
+
 /* a with b's exponent difference d >= 0 (a >= b) aligned: b.m >> d */
 static uint32_t sf_aligned(stp_sf16 b, int d)
 {
@@ -378,7 +416,14 @@ STP_HOT_INLINE int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t n
 /* The length of d's vector in raw stp_fix units: 2 sqrt(q) 2^shift */
 STP_HOT_INLINE stp_sf16 dir_length(const stp_shade_fast_dir *d)
 {
-    return sf_make(stp_umulhi32_approx(d->q, d->r), 13 - d->j - d->shift);
+    /* sqrt(q) 2^(14 - j) in [2^27, 2^29.8) less the product's 2 units:
+     * 27 to 30 bits */
+    uint32_t v = stp_umulhi32_approx(d->q, d->r);
+    int n = bit_length_26(v) - 16;
+    stp_sf16 a;
+    a.m = v >> n;
+    a.e = 13 - d->j - d->shift - n;
+    return a;
 }
 
 #if STP_WITH_SPECULAR
@@ -1426,8 +1471,7 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
             return s->ambient_shade;
         if (s->exact && n_dot_e < s->fast_min_cos)
             return s->exact(s, normal, point);
-        inv_ne = sf_recip(sf_make((uint32_t)n_dot_e, 30));
-        inv_ne_q26 = sf_to_fixed(inv_ne, 26, 0x7FFFFFFFu);
+        inv_ne = recip_cos((uint32_t)n_dot_e, &inv_ne_q26);
     }
 #endif
     for (j = 0; j < s->count; j++) {
