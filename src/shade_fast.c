@@ -568,7 +568,7 @@ static uint32_t gloss_q30(const stp_shade_fast *s, uint32_t omx)
     if (x >= 0x80000000u)
         return 0;
     t = ((uint32_t)1 << 16) + x;
-    n = stp_bit_length32(t) - 16; /* 1 .. 16 */
+    n = stp_bit_length32(t >> 16); /* 1 .. 16: one halving fewer */
     y = recip16(t >> n);
     if (y > 0xFFFFu) /* m = 2^15: D = 2^(32 - 2n) 2^-30 */
         return n >= 16 ? 0u : (uint32_t)1 << (32 - 2 * n);
@@ -1263,7 +1263,7 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
  * |R| (N.L)/(C + U), signed as R, plus the highlight; 0 when the light is
  * behind the face.  nd: normal_deviation; e the eye's direction, n_dot_e
  * N.E (Q30), inv_ne 1/(N.E) and inv_ne_q26 the same in Q26. */
-STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t normal[3], stp_vec3 point,
+STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t normal[3], const stp_vec3 *point,
                                    int point_big, int near, int32_t nd, const stp_shade_fast_dir *e, int32_t n_dot_e,
                                    stp_sf16 inv_ne, uint32_t inv_ne_q26)
 {
@@ -1271,7 +1271,7 @@ STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
     int32_t n_dot_l, share;
     stp_sf16 w;
     /* near: the near face (face_body), where no light is big */
-    int at_point = !dir_make(&l, &s->light[j], &point, near ? 0 : s->light_big[j] | point_big, 1);
+    int at_point = !dir_make(&l, &s->light[j], point, near ? 0 : s->light_big[j] | point_big, 1);
     if (!at_point) {
         n_dot_l = cos_n(dot_n(normal, &l), &l, nd);
         if (n_dot_l <= 0)
@@ -1475,7 +1475,7 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
     }
 #endif
     for (j = 0; j < s->count; j++) {
-        int32_t share = light_share(s, j, normal, point, point_big, near, nd, e, n_dot_e, inv_ne, inv_ne_q26);
+        int32_t share = light_share(s, j, normal, &point, point_big, near, nd, e, n_dot_e, inv_ne, inv_ne_q26);
         if (share > 0) {
             lit = 1;
             sum += share;
