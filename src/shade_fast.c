@@ -454,8 +454,10 @@ STP_HOT_INLINE stp_sf16 dir_length(const stp_shade_fast_dir *d)
 #if STP_WITH_SPECULAR
 /* E.L in Q30 from two scaled directions: the products w_i w'_i can reach
  * 2^32, so each is formed as w (w' >> 1) 2^-2 + w (w' & 1) 2^-3 (~ w w'/8,
- * the sum below 1.5 2^30), then times both 1/lengths. */
-static int32_t cos_dirs(const stp_shade_fast_dir *a, const stp_shade_fast_dir *b)
+ * the sum below 1.5 2^30), then times both 1/lengths.  A call: inlined
+ * into the face, its operands took registers the face then spilled (20
+ * instructions a face more on ARMv6-M at -O2). */
+STP_NOINLINE int32_t cos_dirs(const stp_shade_fast_dir *a, const stp_shade_fast_dir *b)
 {
     const int32_t *aw = a->w, *bw = b->w;
     /* |a_i (b_i >> 1)| < 2^16 2^15; b_i & 1 is 0 or 1 */
