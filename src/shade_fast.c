@@ -459,12 +459,17 @@ STP_HOT_INLINE stp_sf16 dir_length(const stp_shade_fast_dir *d)
  * instructions a face more on ARMv6-M at -O2). */
 STP_NOINLINE int32_t cos_dirs(const stp_shade_fast_dir *a, const stp_shade_fast_dir *b)
 {
-    const int32_t *aw = a->w, *bw = b->w;
-    /* |a_i (b_i >> 1)| < 2^16 2^15; b_i & 1 is 0 or 1 */
-    int32_t s = stp_asr32(aw[0] * stp_asr32(bw[0], 1), 2) + stp_asr32(aw[1] * stp_asr32(bw[1], 1), 2) +
-                stp_asr32(aw[2] * stp_asr32(bw[2], 1), 2) +
-                stp_asr32(aw[0] * (bw[0] & 1) + aw[1] * (bw[1] & 1) + aw[2] * (bw[2] & 1), 3);
+    int32_t s = 0, odd = 0;
     uint32_t m;
+    int i;
+    /* |a_i (b_i >> 1)| < 2^16 2^15; b_i & 1 is 0 or 1 (a_i or nothing) */
+    STP_UNROLL3
+    for (i = 0; i < 3; i++) {
+        int32_t ai = a->w[i], bi = b->w[i];
+        s += stp_asr32(ai * stp_asr32(bi, 1), 2);
+        odd += ai & -(bi & 1);
+    }
+    s += stp_asr32(odd, 3);
     m = s < 0 ? 0u - (uint32_t)s : (uint32_t)s;
     m = stp_umulhi32_approx(stp_umulhi32_approx(m, a->r), b->r) << (3 + a->j + b->j);
     if (m > (uint32_t)Q30)
