@@ -90,12 +90,15 @@ static inline int32_t mul_q16(int32_t a, uint32_t m)
 
 /* ---- reciprocal square root and reciprocal ---- */
 
-/* 2^31 / sqrt(x) at the middle of [16 + i, 17 + i) 2^26 */
-static const uint16_t rsqrt_seed[48] STP_TABLE = {
-    64535, 62664, 60947, 59364, 57898, 56535, 55265, 54076, 52961, 51912, 50923, 49989,
-    49104, 48265, 47467, 46707, 45983, 45292, 44630, 43997, 43390, 42808, 42248, 41710,
-    41192, 40693, 40211, 39746, 39297, 38863, 38443, 38036, 37642, 37260, 36889, 36529,
-    36179, 35840, 35509, 35188, 34875, 34571, 34274, 33985, 33703, 33427, 33159, 32897,
+/* The seed's chord nodes: 2^18 / sqrt(16 + i) (2^31 / sqrt(q) at q =
+ * (16 + i) 2^26), each lowered by 3/(64 (16 + i)^2) of itself, so that the
+ * chord between neighbours, which lies above the convex 1/sqrt by up to
+ * 3/(32 x^2), is within 2^-12.3 of it on either side; all below 2^16. */
+static const uint16_t rsqrt_node[49] STP_TABLE = {
+    65524, 63569, 61779, 60132, 58610, 57198, 55884, 54656, 53506, 52425, 51407, 50446, 49538,
+    48676, 47858, 47080, 46339, 45631, 44956, 44309, 43689, 43095, 42524, 41975, 41447, 40939,
+    40449, 39976, 39519, 39077, 38650, 38237, 37836, 37448, 37072, 36707, 36352, 36008, 35673,
+    35347, 35030, 34721, 34421, 34128, 33842, 33564, 33292, 33027, 32768,
 };
 
 /* The reciprocal's seed: 2^31 / x at the middle of [256 + i, 257 + i) 2^7,
@@ -135,25 +138,27 @@ static const uint16_t recip_seed[256] STP_TABLE = {
 #endif
 
 /* 1/sqrt(q) for q in [2^30, 2^32): r in (2^30, 2^31] with 1/sqrt(q) =
- * r 2^-46, relative error below 2^-20.  The seed (2^-6) is refined by one
- * Newton step on 16-bit operands (2^-11) and one with the exact high word
- * of q y^2, which keeps the 15 more bits of its correction in r. */
+ * r 2^-46, relative error below 2^-23 (2^-24.2 over 300 000 random q).
+ * The seed y ~ 2^31/sqrt(q) is the chord of two nodes at q's 16-bit
+ * fraction of its step (2^-12.3; the nodes differ by less than 2^11, so
+ * the product stays below 2^27), refined by one Newton step with the
+ * high word of q y^2, which keeps the 15 more bits of its correction in r.
+ * A table step and a product where a first Newton step on 16-bit operands
+ * (2^-6 to 2^-11) cost twice as many instructions on ARMv6-M. */
 STP_HOT_INLINE uint32_t rsqrt_norm(uint32_t q)
 {
-    uint32_t y = STP_TABLE_U16(&rsqrt_seed[(q >> 26) - 16u]); /* ~ 2^31/sqrt(q) < 2^16 */
-    /* (q 2^-16)(y^2 2^-16) ~ 2^30: both factors below 2^16 */
-    int32_t e = Q30 - (int32_t)((q >> 16) * ((y * y) >> 16));
-    y = (uint32_t)((int32_t)y + stp_asr32(mul_q16(e, y), 15)); /* y (1 + e 2^-31), |e| < 2^26 */
-    if (y > 0xFFFFu)
-        y = 0xFFFFu;
-    /* q y^2 2^-32 ~ 2^30, y^2 < 2^32; e is now below 2^20 */
-    e = Q30 - (int32_t)stp_umulhi32_approx(q, y * y);
+    uint32_t i = (q >> 26) - 16u, y0 = STP_TABLE_U16(&rsqrt_node[i]);
+    uint32_t y = y0 - (((y0 - STP_TABLE_U16(&rsqrt_node[i + 1u])) * ((q >> 10) & 0xFFFFu)) >> 16);
+    /* q y^2 2^-32 ~ 2^30 (y < 2^16: y^2 < 2^32); |e| < 2^19 */
+    int32_t e = Q30 - (int32_t)stp_umulhi32_approx(q, y * y);
     return (y << 15) + (uint32_t)mul_q16(e, y);
 }
 
 /* 2^31 / m for m in [2^15, 2^16): in (2^15, 2^16], error below 2^-15
- * relative: a seed (2^-9) and one Newton step y (2 - m y 2^-31). */
-STP_NOINLINE uint32_t recip16(uint32_t m)
+ * relative: a seed (2^-9) and one Newton step y (2 - m y 2^-31).  Inlined
+ * at the face's three reciprocals (recip16_hot, sf_recip_hot: 9
+ * instructions a face fewer on ARMv6-M), a call elsewhere (recip16). */
+STP_HOT_INLINE uint32_t recip16_hot(uint32_t m)
 {
     uint32_t y = RECIP_SEED(m >> 7);
     uint32_t p = m * y; /* ~ 2^31, < 2^32 */
@@ -161,6 +166,11 @@ STP_NOINLINE uint32_t recip16(uint32_t m)
      * (2^30 - 2^23, 2^30 + 2^23), so the signed value needs no branch */
     int32_t e = (int32_t)(0xC0000000u - p) - 0x40000000;
     return (uint32_t)((int32_t)y + stp_asr32(mul_q16(e, y), 15)); /* |e| < 2^23 */
+}
+
+STP_NOINLINE uint32_t recip16(uint32_t m)
+{
+    return recip16_hot(m);
 }
 
 /* ---- stp_sf16: m 2^-e, m = 0 or in [2^15, 2^16) ---- */
@@ -194,17 +204,73 @@ static stp_sf16 sf_mul(stp_sf16 a, stp_sf16 b)
     return r;
 }
 
-/* 1/a for a != 0: m = recip16's 2^31 / a.m, in (2^15, 2^16] */
-STP_HOT_INLINE stp_sf16 sf_recip(stp_sf16 a)
+/* 1/a for a != 0 from y = 2^31 / a.m (recip16), in (2^15, 2^16] */
+STP_HOT_INLINE stp_sf16 sf_recip_of(stp_sf16 a, uint32_t y)
 {
     stp_sf16 r;
-    r.m = recip16(a.m);
+    r.m = y;
     r.e = 31 - a.e;
     if (r.m > 0xFFFFu) { /* a.m = 2^15 exactly */
         r.m >>= 1;
         r.e--;
     }
     return r;
+}
+
+/* 1/a for a != 0 */
+STP_HOT_INLINE stp_sf16 sf_recip(stp_sf16 a)
+{
+    return sf_recip_of(a, recip16(a.m));
+}
+
+/* The same with recip16 inlined (the face's reciprocals); builds for size
+ * keep the one copy */
+#if defined(__OPTIMIZE_SIZE__)
+#define sf_recip_hot sf_recip
+#define recip16_hot recip16
+#else
+STP_HOT_INLINE stp_sf16 sf_recip_hot(stp_sf16 a)
+{
+    return sf_recip_of(a, recip16_hot(a.m));
+}
+#endif
+
+/* Significant bits of v for v in [2^26, 2^30): 26 + those of v >> 26, in
+ * [1, 16), one step of a 16-entry table where stp_bit_length32 takes
+ * three halvings before its table (about 8 instructions fewer on ARMv6-M) */
+STP_HOT_INLINE int bit_length_26(uint32_t v)
+{
+#if STP_HAVE_CLZ
+    return stp_bit_length32(v);
+#else
+    static const uint16_t len4[16] STP_TABLE = {0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4};
+    return 26 + (int)STP_TABLE_U16(&len4[v >> 26]);
+#endif
+}
+
+/* 1/c for a Q30 cosine c in (0, 2^31) as stp_sf16, and in Q26 (*q26,
+ * saturated at 2^31 - 1): sf_recip(sf_make(c, 30)) and sf_to_fixed(., 26,
+ * 2^31 - 1) with the ranges known.  c is brought to [2^26, 2^31) by steps
+ * of 4 bits (none from N.E >= 1/20, the face's where the exact route is
+ * set), which leave the mantissa as it was; its reciprocal's exponent
+ * is then at most 26, so the Q26 value is a left shift, and below 2^31 for
+ * a shift below 16. */
+STP_HOT_INLINE stp_sf16 recip_cos(uint32_t c, uint32_t *q26)
+{
+    stp_sf16 a;
+    int n, sh;
+    a.e = 30;
+    while (c < ((uint32_t)1 << 26)) {
+        c <<= 4;
+        a.e += 4;
+    }
+    n = (c >= (uint32_t)Q30 ? 31 : bit_length_26(c)) - 16; /* 11 .. 15 */
+    a.m = c >> n;
+    a.e -= n;
+    a = sf_recip_hot(a);
+    sh = 26 - a.e; /* >= 10 */
+    *q26 = sh >= 16 ? 0x7FFFFFFFu : a.m << sh;
+    return a;
 }
 
 /* a with b's exponent difference d >= 0 (a >= b) aligned: b.m >> d */
@@ -375,21 +441,35 @@ STP_HOT_INLINE int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t n
 /* The length of d's vector in raw stp_fix units: 2 sqrt(q) 2^shift */
 STP_HOT_INLINE stp_sf16 dir_length(const stp_shade_fast_dir *d)
 {
-    return sf_make(stp_umulhi32_approx(d->q, d->r), 13 - d->j - d->shift);
+    /* sqrt(q) 2^(14 - j) in [2^27, 2^29.8) less the product's 2 units:
+     * 27 to 30 bits */
+    uint32_t v = stp_umulhi32_approx(d->q, d->r);
+    int n = bit_length_26(v) - 16;
+    stp_sf16 a;
+    a.m = v >> n;
+    a.e = 13 - d->j - d->shift - n;
+    return a;
 }
 
 #if STP_WITH_SPECULAR
 /* E.L in Q30 from two scaled directions: the products w_i w'_i can reach
  * 2^32, so each is formed as w (w' >> 1) 2^-2 + w (w' & 1) 2^-3 (~ w w'/8,
- * the sum below 1.5 2^30), then times both 1/lengths. */
-static int32_t cos_dirs(const stp_shade_fast_dir *a, const stp_shade_fast_dir *b)
+ * the sum below 1.5 2^30), then times both 1/lengths.  A call: inlined
+ * into the face, its operands took registers the face then spilled (20
+ * instructions a face more on ARMv6-M at -O2). */
+STP_NOINLINE int32_t cos_dirs(const stp_shade_fast_dir *a, const stp_shade_fast_dir *b)
 {
-    const int32_t *aw = a->w, *bw = b->w;
-    /* |a_i (b_i >> 1)| < 2^16 2^15; b_i & 1 is 0 or 1 */
-    int32_t s = stp_asr32(aw[0] * stp_asr32(bw[0], 1), 2) + stp_asr32(aw[1] * stp_asr32(bw[1], 1), 2) +
-                stp_asr32(aw[2] * stp_asr32(bw[2], 1), 2) +
-                stp_asr32(aw[0] * (bw[0] & 1) + aw[1] * (bw[1] & 1) + aw[2] * (bw[2] & 1), 3);
+    int32_t s = 0, odd = 0;
     uint32_t m;
+    int i;
+    /* |a_i (b_i >> 1)| < 2^16 2^15; b_i & 1 is 0 or 1 (a_i or nothing) */
+    STP_UNROLL3
+    for (i = 0; i < 3; i++) {
+        int32_t ai = a->w[i], bi = b->w[i];
+        s += stp_asr32(ai * stp_asr32(bi, 1), 2);
+        odd += ai & -(bi & 1);
+    }
+    s += stp_asr32(odd, 3);
     m = s < 0 ? 0u - (uint32_t)s : (uint32_t)s;
     m = stp_umulhi32_approx(stp_umulhi32_approx(m, a->r), b->r) << (3 + a->j + b->j);
     if (m > (uint32_t)Q30)
@@ -520,8 +600,8 @@ static uint32_t gloss_q30(const stp_shade_fast *s, uint32_t omx)
     if (x >= 0x80000000u)
         return 0;
     t = ((uint32_t)1 << 16) + x;
-    n = stp_bit_length32(t) - 16; /* 1 .. 16 */
-    y = recip16(t >> n);
+    n = stp_bit_length32(t >> 16); /* 1 .. 16: one halving fewer */
+    y = recip16_hot(t >> n);
     if (y > 0xFFFFu) /* m = 2^15: D = 2^(32 - 2n) 2^-30 */
         return n >= 16 ? 0u : (uint32_t)1 << (32 - 2 * n);
     return n >= 16 ? 0u : (y * y) >> (2 * n);
@@ -1215,7 +1295,7 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
  * |R| (N.L)/(C + U), signed as R, plus the highlight; 0 when the light is
  * behind the face.  nd: normal_deviation; e the eye's direction, n_dot_e
  * N.E (Q30), inv_ne 1/(N.E) and inv_ne_q26 the same in Q26. */
-STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t normal[3], stp_vec3 point,
+STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t normal[3], const stp_vec3 *point,
                                    int point_big, int near, int32_t nd, const stp_shade_fast_dir *e, int32_t n_dot_e,
                                    stp_sf16 inv_ne, uint32_t inv_ne_q26)
 {
@@ -1223,12 +1303,12 @@ STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
     int32_t n_dot_l, share;
     stp_sf16 w;
     /* near: the near face (face_body), where no light is big */
-    int at_point = !dir_make(&l, &s->light[j], &point, near ? 0 : s->light_big[j] | point_big, 1);
+    int at_point = !dir_make(&l, &s->light[j], point, near ? 0 : s->light_big[j] | point_big, 1);
     if (!at_point) {
         n_dot_l = cos_n(dot_n(normal, &l), &l, nd);
         if (n_dot_l <= 0)
             return 0;
-        w = sf_recip(sf_add(s->attenuation_c, dir_length(&l)));
+        w = sf_recip_hot(sf_add(s->attenuation_c, dir_length(&l)));
     } else {
         n_dot_l = Q30; /* the light on the face: lit head-on (L = N), U = 0 */
         w = sf_recip(s->attenuation_c);
@@ -1423,12 +1503,11 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
             return s->ambient_shade;
         if (s->exact && n_dot_e < s->fast_min_cos)
             return s->exact(s, normal, point);
-        inv_ne = sf_recip(sf_make((uint32_t)n_dot_e, 30));
-        inv_ne_q26 = sf_to_fixed(inv_ne, 26, 0x7FFFFFFFu);
+        inv_ne = recip_cos((uint32_t)n_dot_e, &inv_ne_q26);
     }
 #endif
     for (j = 0; j < s->count; j++) {
-        int32_t share = light_share(s, j, normal, point, point_big, near, nd, e, n_dot_e, inv_ne, inv_ne_q26);
+        int32_t share = light_share(s, j, normal, &point, point_big, near, nd, e, n_dot_e, inv_ne, inv_ne_q26);
         if (share > 0) {
             lit = 1;
             sum += share;

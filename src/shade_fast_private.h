@@ -6,7 +6,7 @@
  *   s = min(1, BRIGHT (B R + sum_j P_j (R (N.L_j) + Ks D G F/(N.E)) / (C + U_j)))
  * computed with 32 x 32 -> 32-bit products only (a 32 x 32 -> 64 product is
  * formed from four of them where 30 bits are needed) and no division: unit
- * vectors through a reciprocal square root (table seed and Newton steps),
+ * vectors through a reciprocal square root (a table chord and a Newton step),
  * reciprocals through a table seed and Newton steps, Fresnel's F from a
  * per-material table (built by prepare from the exact F), D, F and G/(N.E)
  * in fixed formats where E.H >= 1/4 bounds them, and BRIGHT P_j/(C + U)
@@ -117,8 +117,8 @@ typedef struct stp_shade_fast {
  * but 0; 0 gives (0, 0, -1)).  Meant to be cached: call it only when the
  * lighting, the material or the view changes, and keep the struct (about
  * 320 bytes) across frames; with the highlight (Ks > 0, n >= 1) it builds
- * the 49-node Fresnel table from the exact F, about 27 000 Cortex-M0+
- * instructions (-O2; 39 400 at -Os), a few hundred otherwise. */
+ * the 49-node Fresnel table from the exact F, about 26 000 Cortex-M0+
+ * instructions (-O2; 39 300 at -Os), a few hundred otherwise. */
 void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
                             const stp_material *material, stp_vec3 eye, int parallel,
                             stp_vec3 parallel_dir);
