@@ -22,11 +22,12 @@
  *   sums     Q26 in int32 (one = 2^26): each light's share is saturated at
  *            8 and the sum returns 1 as soon as it reaches 1 (every share
  *            is >= 0), so at most 2^26 + 2 2^29 < 2^31 is ever formed.
- * High words of 32 x 32 products: stp_umulhi32_approx (fix_private.h:
- * three 16 x 16 products on ARMv6-M, up to 2 units low; exact with STP_WIDE_ARITH) on the face path,
- * where each product is used at 2^28 or more or only as an absolute
- * error; mul_hi (four, exact) in prepare and the exact Fresnel; mul_u16
- * where one factor has 16 bits (two products, exact).
+ * High words of 32 x 32 products (arith_private.h): stp_umulhi32_approx
+ * (three 16 x 16 products on ARMv6-M, up to 2 units low; exact with a
+ * 64-bit multiply) on the face path, where each product is used at 2^28
+ * or more or only as an absolute error; stp_umulhi32x32 (four, exact) in
+ * prepare and the exact Fresnel; mul_u16 where one factor has 16 bits
+ * (two products, exact).
  */
 #include "shade_fast_private.h"
 
@@ -53,23 +54,6 @@ STP_HOT_INLINE stp_fix shade_of_sum(const stp_shade_fast *s, int lit, int32_t su
         return 0;
     return (stp_fix)((sum + ((int32_t)1 << (SUM_BITS - F - 1))) >> (SUM_BITS - F));
 }
-
-#if STP_WITH_SPECULAR /* used by prepare's Fresnel table and the exact Fresnel */
-/* floor(a b / 2^32), exact: one 64-bit product where that is one
- * instruction (STP_WIDE_ARITH), else four 16 x 16 -> 32 products (the same
- * value). */
-static inline uint32_t mul_hi(uint32_t a, uint32_t b)
-{
-#if STP_WIDE_ARITH
-    return (uint32_t)(((uint64_t)a * b) >> 32);
-#else
-    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-    uint32_t lh = al * bh, hl = ah * bl;
-    uint32_t mid = ((al * bl) >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
-    return ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
-#endif
-}
-#endif
 
 /* floor(a m / 2^16) for m < 2^16, exact: two 32-bit products */
 STP_HOT_INLINE uint32_t mul_u16(uint32_t a, uint32_t m)
@@ -533,7 +517,7 @@ static uint32_t sqrt_q30(uint32_t x)
     int j;
     uint32_t r = rsqrt_any(x, &j);
     /* sqrt(x 2^-30) 2^30 = x r 2^(j - 46) 2^15 */
-    return mul_hi(x, r) << (j + 1);
+    return stp_umulhi32x32(x, r) << (j + 1);
 }
 
 /* Fresnel (10.6)-(10.8) at c = E.H (Q30, in (0, 2^30]) for the prepared
@@ -547,7 +531,7 @@ static stp_sf16 fresnel_sf(const stp_shade_fast *s, uint32_t c, uint32_t u)
 {
     stp_sf16 g, cs, us, r, p, den;
     if (s->refraction_ge_1) {
-        uint32_t w = (uint32_t)Q30 - (mul_hi(u, s->inv_n2) << 1); /* in [0, 2^30] */
+        uint32_t w = (uint32_t)Q30 - (stp_umulhi32x32(u, s->inv_n2) << 1); /* in [0, 2^30] */
         g = w == 0 ? sf_make(0, 0) : sf_mul(s->refraction, sf_make(sqrt_q30(w), 30));
     } else {
         if (s->n2 <= u)
@@ -1230,7 +1214,7 @@ static void prepare_specular(stp_shade_fast *s, const stp_material *material)
      * each on ARMv6-M: the reason prepare is meant to be cached) */
     for (j = 0; j < STP_SHADE_FAST_FRESNEL_NODES; j++) {
         uint32_t c = FRESNEL_C0 + ((uint32_t)j << 24); /* <= 2^30 */
-        uint32_t u = (uint32_t)Q30 - (mul_hi(c << 1, c << 1)); /* 1 - c^2 in Q30 */
+        uint32_t u = (uint32_t)Q30 - (stp_umulhi32x32(c << 1, c << 1)); /* 1 - c^2 in Q30 */
         s->fresnel[j] = (uint16_t)sf_to_fixed(fresnel_sf(s, c, u), 16, 0xFFFFu);
     }
 }
