@@ -311,6 +311,7 @@ static stp_fix finish_coordinate(const point_halves *p, const stp_vec3 *a, const
                                  const int64_t *from, int narrow, int32_t small, int32_t r)
 {
     int64_t v;
+    (void)r; /* F < 16 only */
     if (narrow)
         v = p->h[0] * a->x + p->h[1] * a->y + p->h[2] * a->z - x->from_high32 + small;
     else
@@ -322,8 +323,6 @@ static stp_fix finish_coordinate(const point_halves *p, const stp_vec3 *a, const
 #elif F < 16
     /* |v| < 2^35 (|S| < 2^51): times 2^(16 - F) well inside 64 bits */
     v = v * ((int64_t)1 << (F < 16 ? 16 - F : 0)) + (int64_t)(((uint32_t)r & 0xFFFFu) >> (F < 16 ? F : 0));
-#else
-    (void)r;
 #endif
     return stp_fix_sat64(v);
 }
