@@ -369,9 +369,9 @@ void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 
     split_point(p.x, &ph.h[0], &ph.l[0]);
     split_point(p.y, &ph.h[1], &ph.l[1]);
     split_point(p.z, &ph.h[2], &ph.l[2]);
-    /* |h| <= 2^12 (|p_i| < 2^28 + 2^15) */
-    narrow = t->narrow && (uint32_t)(ph.h[0] + 4096) <= 8192u && (uint32_t)(ph.h[1] + 4096) <= 8192u &&
-             (uint32_t)(ph.h[2] + 4096) <= 8192u;
+    /* every p_i in [-2^28, 2^28): |h| <= 2^12 */
+    narrow = t->narrow && (((uint32_t)p.x + 0x10000000u) | ((uint32_t)p.y + 0x10000000u) |
+                           ((uint32_t)p.z + 0x10000000u)) < 0x20000000u;
     out->x = axis_coordinate(&ph, &t->right, &t->axis32[0], &t->from_right, narrow);
     out->y = axis_coordinate(&ph, &t->up, &t->axis32[1], &t->from_up, narrow);
     out->z = axis_coordinate(&ph, &t->forward, &t->axis32[2], &t->from_forward, narrow);
