@@ -24,46 +24,73 @@ typedef struct stp_view_lens {
 
 #if !STP_WIDE_ARITH
 /* The reciprocal of z, scaled by f (f / z as w 2^-sh, 2^31 <= w < 2^32, 0
- * < f < 2^31): z = dn 2^-s with dn in [2^31, 2^32) and 2^32 + v =
- * floor((2^64 - 1) / dn) (stp_recip32), so P = f (2^32 + v) < 2^64
- * approximates f 2^64 / dn from below within f + 1 (relative 2^-31); w =
- * P's top 32 bits (P >> t, w >= 2^31) and sh = 64 - t - s. */
+ * < f < 2^31): z = dn 2^-s with dn in [2^31, 2^32) and 2^32 + v within 2
+ * below floor((2^64 - 1) / dn) (stp_recip32_estimate), so P = f (2^32 +
+ * v) < 2^64 approximates f 2^64 / dn from below within 4 f (relative
+ * 2^-30); w = P's top 32 bits (P >> t, w >= 2^31) and sh = 64 - t - s, at
+ * least 1 (t <= 32, s <= 31). */
 static inline void stp_project_scale(uint32_t f, uint32_t v, int s, uint32_t *w, int *sh)
 {
-    uint64_t p = ((uint64_t)f << 32) + stp_umul32x32(f, v);
-    uint32_t ph = (uint32_t)(p >> 32), pl = (uint32_t)p; /* ph >= f >= 1 */
+    uint32_t ph = f + stp_umulhi32x32(f, v), pl = f * v; /* ph in [f, 2 f) */
     int t = stp_bit_length32(ph);
     *w = t == 32 ? ph : (ph << (32 - t)) | (pl >> t);
     *sh = 64 - t - s;
 }
 
-/* floor(f m / z) exactly, for m < 2^31 (n_low = f m mod 2^32) and z <
- * 2^29, from the estimate e = floor(m w / 2^sh): every step rounds down, so
- * e <= the quotient Q, and Q - e <= 6 Q 2^-32 + 1 (w 2^-sh is below f / z
- * by at most (2 f + 2^t) 2^(s - 64) <= 6 f 2^(s - 64), and m f 2^(s - 64)
- * <= Q 2^-32), below 5 for Q < 2^31: the remainder f m - e z is in
- * [0, 5 z), below 2^32, so taken mod 2^32 it corrects e.  0 when the
- * quotient is 2^31 or more. */
-static inline int stp_project_quotient(uint32_t m, uint32_t w, int sh, uint32_t n_low, uint32_t z, uint32_t *q)
+/* q = floor(n / z) from an estimate e in [q - 5, q] and n_low = n mod 2^32
+ * (z < 2^29): the remainder n - e z is in [0, 6 z), below 2^32, so taken
+ * mod 2^32 it corrects e.  0 when the quotient is 2^31 or more. */
+static inline int stp_project_correct(uint32_t e, uint32_t n_low, uint32_t z, uint32_t *q)
 {
-    uint64_t prod = stp_umul32x32(m, w);
-    uint32_t hi = (uint32_t)(prod >> 32), lo = (uint32_t)prod, e, rem;
-    if (sh >= 32) {
-        e = sh - 32 >= 32 ? 0u : hi >> (sh - 32);
-    } else {
-        if ((hi >> sh) != 0)
-            return 0;
-        e = (hi << (32 - sh)) | (lo >> sh);
-    }
+    uint32_t rem;
     if (e >= 0x80000000u)
         return 0;
-    rem = n_low - e * z; /* in [0, 5 z): below 2^32 */
+    rem = n_low - e * z;
     while (rem >= z) {
         e++;
         rem -= z;
     }
     *q = e;
     return e < 0x80000000u;
+}
+
+/* floor(f m / z) exactly, for m < 2^31 (n_low = f m mod 2^32) and z <
+ * 2^29, from the estimate e = floor(m w / 2^sh): every step rounds down, so
+ * e <= the quotient Q, and Q - e <= 8 Q 2^-32 + 2 (w 2^-sh is below f / z
+ * by at most (4 f + 2^t) 2^(s - 64) <= 8 f 2^(s - 64), and m f 2^(s - 64)
+ * <= Q 2^-32), at most 5 for Q < 2^31 (stp_project_correct).  The
+ * estimate is the high word of one product: m w / 2^sh is below 2^31 only
+ * when m < 2^sh (w >= 2^31), so for sh <= 32 m 2^(32 - sh) fits 32 bits
+ * and e = floor(m 2^(32 - sh) w / 2^32); for sh > 32 e = floor(m w / 2^32)
+ * / 2^(sh - 32).  0 when the quotient is 2^31 or more. */
+static inline int stp_project_quotient(uint32_t m, uint32_t w, int sh, uint32_t n_low, uint32_t z, uint32_t *q)
+{
+    uint32_t e;
+    if (sh <= 32) {
+        if ((m >> (sh - 1)) > 1u) /* m >= 2^sh, m < 2^31 */
+            return 0;
+        e = stp_umulhi32x32(m << (32 - sh), w);
+    } else {
+        e = sh - 32 >= 32 ? 0u : stp_umulhi32x32(m, w) >> (sh - 32);
+    }
+    return stp_project_correct(e, n_low, z, q);
+}
+
+/* floor(h 2^30 / z) exactly for 0 < h < 2^31 and 0 < z < 2^29 (z = dn
+ * 2^-s, s >= 3, v as for stp_project_scale): P = h (2^32 + v) approximates
+ * h 2^64 / dn from below within 3 h, so e = floor(P / 2^(34 - s)) is below
+ * the quotient Q = h 2^(30 + s) / dn by at most 3 h 2^(s - 2) 2^-32 + 1 <=
+ * 3 Q 2^-32 + 1 (h 2^(s - 2) < Q), under 3 for Q < 2^31
+ * (stp_project_correct): P's high word and one product fewer than
+ * stp_project_scale and stp_project_quotient take.  0 when the quotient is
+ * 2^31 or more. */
+static inline int stp_project_key(uint32_t h, uint32_t v, int s, uint32_t z, uint32_t *q)
+{
+    uint32_t ph = h + stp_umulhi32x32(h, v), pl = h * v; /* P = ph 2^32 + pl, ph < 2^32 */
+    int k = 34 - s; /* in [3, 31] */
+    if ((ph >> k) != 0)
+        return 0; /* e >= 2^32 */
+    return stp_project_correct((ph << (32 - k)) | (pl >> k), h << 30, z, q);
 }
 
 /* The offset from the quotient q = floor(f |c| / z): floor of the signed
@@ -158,19 +185,18 @@ static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, int32_t 
     return 1;
 #else
     uint32_t mx = px < 0 ? 0u - (uint32_t)px : (uint32_t)px;
-    uint32_t my = py < 0 ? 0u - (uint32_t)py : (uint32_t)py, qx, qy, qk, w, wh, v;
-    int sz, sh, shh;
+    uint32_t my = py < 0 ? 0u - (uint32_t)py : (uint32_t)py, qx, qy, qk, w, v;
+    int sz, sh;
     if (z >= ((uint32_t)1 << 29) || mx >= 0x80000000u || my >= 0x80000000u || f >= 0x80000000u ||
         h >= 0x80000000u)
         return 0;
     sz = 32 - stp_bit_length32(z);
-    v = stp_recip32(z << sz);
+    v = stp_recip32_estimate(z << sz);
     stp_project_scale(f, v, sz, &w, &sh);
     if (!stp_project_quotient(mx, w, sh, f * mx, z, &qx) || !stp_project_quotient(my, w, sh, f * my, z, &qy))
         return 0;
     if (key) {
-        stp_project_scale(h, v, sz, &wh, &shh);
-        if (!stp_project_quotient((uint32_t)1 << 30, wh, shh, h << 30, z, &qk))
+        if (!stp_project_key(h, v, sz, z, &qk))
             return 0;
         *key = (int32_t)qk;
     }

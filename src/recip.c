@@ -54,10 +54,10 @@ static const uint16_t RECIP_SEED[128] STP_TABLE = {
     33757u, 33622u, 33487u, 33354u, 33222u, 33091u, 32961u, 32832u,
 };
 
-uint32_t stp_recip32(uint32_t d)
+uint32_t stp_recip32_estimate(uint32_t d)
 {
     uint32_t y0, y1, u, dh = d >> 16, dl = d & 0xFFFFu, at, corr, v;
-    uint64_t p, r;
+    uint64_t p;
     if (d < 0x80000000u)
         return 0;
     y0 = STP_TABLE_U16(&RECIP_SEED[(d >> 24) & 127u]); /* ~ 2^47 / d */
@@ -79,7 +79,8 @@ uint32_t stp_recip32(uint32_t d)
      * three partial products (stp_umulhi32_approx, fix_private.h).
      * Newton's step lands below 2^64 / d by the square of y1's error
      * (under a unit here) and every rounding is downwards: over all 2^31 values of d, v is the floor or
-     * up to 2 below it (0.14 corrections on average), corrected below */
+     * up to 2 below it (0.14 corrections on average; stp_recip32 corrects
+     * it) */
     if (d == 0x80000000u)
         return 0xFFFFFFFFu; /* 2^64 / d - 2^32 = 2^32 exactly: the floor is one less */
     if (y1 < 0x80000000u)
@@ -93,6 +94,15 @@ uint32_t stp_recip32(uint32_t d)
         uint32_t c = (stp_umulhi32_approx(y1, (uint32_t)((p - ((uint64_t)1 << 63)) >> 15)) >> 15) + 2u;
         v = c > v ? 0u : v - c;
     }
+    return v;
+}
+
+uint32_t stp_recip32(uint32_t d)
+{
+    uint32_t v = stp_recip32_estimate(d);
+    uint64_t p, r;
+    if (d < 0x80000000u)
+        return 0;
     /* (2^32 + v) d brought to at most 2^64 - 1 (a wrapped sum is below
      * d 2^32), then r = 2^64 - 1 - (2^32 + v) d below d */
     p = stp_umul32x32(d, v) + ((uint64_t)d << 32);

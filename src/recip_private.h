@@ -21,6 +21,14 @@
  * correction.  d outside the range returns 0. */
 uint32_t stp_recip32(uint32_t d);
 
+#if STP_HAVE_MUL32
+/* stp_recip32's value or up to 2 below it (its seed and Newton steps
+ * without the remainder's correction, a 32 x 32 -> 64-bit product and a
+ * comparison of 64-bit values fewer), for a quotient that corrects its
+ * own estimate (project_private.h).  d outside [2^31, 2^32) returns 0. */
+uint32_t stp_recip32_estimate(uint32_t d);
+#endif
+
 /* floor(n / d) for d > 0, any n: exact, without a divide instruction:
  * word-by-word division by the normalised divisor's top word, one
  * stp_recip32 and a 2-by-1 step per quotient word (one or two), corrected

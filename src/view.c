@@ -78,18 +78,40 @@ int stp_view_frame_make(const stp_view *v, uint32_t width, uint32_t height, stp_
     return STP_OK;
 }
 
-/* from . axis (2F fractional bits) split as from_high 2^16 + from_low for
- * the 32-bit form */
+/* The 32-bit form's halves (view_private.h's stp_view_axis32), and
+ * whether every |from_high| is below 2^28 (view.c's
+ * stp_view_transform_point then sums in 32 bits). */
 static void split_from(stp_view_transform *out)
 {
     const int64_t *d[3];
+    const stp_vec3 *axis[3];
     int k;
     d[0] = &out->from_right;
     d[1] = &out->from_up;
     d[2] = &out->from_forward;
+    axis[0] = &out->right;
+    axis[1] = &out->up;
+    axis[2] = &out->forward;
+    out->narrow = 1;
     for (k = 0; k < 3; k++) {
-        out->from_high[k] = stp_asr64(*d[k], 16);
-        out->from_low[k] = (int32_t)(*d[k] - out->from_high[k] * 65536);
+        stp_view_axis32 *h = &out->axis32[k];
+        int64_t high = stp_asr64(*d[k], 16);
+        int32_t a[3];
+        int i;
+        h->from_low = (int32_t)(*d[k] - high * 65536);
+        h->from_high32 = 0;
+        if (high >= ((int64_t)1 << 28) || high <= -((int64_t)1 << 28))
+            out->narrow = 0;
+        else
+            h->from_high32 = (int32_t)high;
+        a[0] = axis[k]->x;
+        a[1] = axis[k]->y;
+        a[2] = axis[k]->z;
+        for (i = 0; i < 3; i++) {
+            int32_t low = (int32_t)(((uint32_t)a[i] & 0x7FFFu) ^ 0x4000u) - 0x4000;
+            h->low[i] = (stp_view_half)low;
+            h->high[i] = (stp_view_half)((a[i] - low) / 32768); /* exact */
+        }
     }
 }
 
@@ -271,51 +293,31 @@ static int32_t high16(int32_t v)
     return v >= 0 ? v >> 16 : (int32_t)~(~(uint32_t)v >> 16);
 }
 
-/* A point split in 16-bit halves: v = h 2^16 + l, h signed, l in [0, 2^16). */
+/* A point split in signed 16-bit halves: v = h 2^16 + l, l in [-2^15,
+ * 2^15), h in [-2^15, 2^15]. */
 typedef struct point_halves {
-    int32_t h[3];
-    uint32_t l[3];
+    int32_t h[3], l[3];
 } point_halves;
 
-/* floor((p . a - from) / 2^F) saturated (from = from_high 2^16 +
- * from_low), the same value as the 64-bit formula's, for an axis a
- * (|a_i| < 2^17), from 32-bit products of 16-bit halves (ARMv6-M has no
- * 32 x 32 -> 64 multiply; the library's costs ~40 instructions a call).
- * With a_i = ah 2^16 + al (ah in [-2, 1]), p_i a_i = 2^16 ph a_i +
- * 2^16 pl ah + pl al, and pl al = 2^16 (pl al >> 16) + (pl al & 0xFFFF),
- * so the floor is
- *   sum ph a_i - from_high + small,
- *   small = sum pl ah + sum (pl al >> 16)
- *           + floor((sum (pl al & 0xFFFF) - from_low) / 2^16)
- * with |pl ah| < 2^17, pl al < 2^32 (unsigned), |small| < 2^19.  small:
- * every |p_i| < 2^28 (|ph| < 2^12): |ph a_i| < 2^29, the sum below
- * 1.5 2^30, all in 32 bits; else ph a_i = 2^16 ph ah + ph al, |ph ah| <=
- * 2^16, |ph al| < 2^31, summed in 64 bits.  That is floor(S / 2^16) for
- * the exact S = p . a - from; F != 16: F > 16 shifts it further (a floor
- * of a floor), F < 16 appends the top 16 - F bits of S mod 2^16, the low
- * sum's (r & 0xFFFF).  (Till this was written for any F, the 32-bit form
- * divided by 2^16 at every precision: at F = 12 every view coordinate
- * came out 16 times too small, the light's included.) */
-static stp_fix axis_coordinate(const point_halves *p, int small_point, stp_vec3 a,
-                               int64_t from_high, int32_t from_low)
+/* The exact floor((p . a - from) / 2^F) saturated from floor(S / 2^16)
+ * as axis_coordinate's sums give it, for any F and point (the narrow case
+ * at F = 16 is axis_coordinate's): sum h a_i = 2^15 sum h high + sum h low,
+ * below 1.5 2^18 and 1.5 2^30, from . a (*from) in 64 bits.  F > 16 shifts
+ * further (a floor of a floor); F < 16 appends the top 16 - F bits of
+ * S mod 2^16 = r mod 2^16.  (Till this was written for any F, the 32-bit
+ * form divided by 2^16 at every precision: at F = 12 every view
+ * coordinate came out 16 times too small, the light's included.) */
+static stp_fix finish_coordinate(const point_halves *p, const stp_vec3 *a, const stp_view_axis32 *x,
+                                 const int64_t *from, int narrow, int32_t small, int32_t r)
 {
-    int32_t ah0 = high16(a.x), ah1 = high16(a.y), ah2 = high16(a.z);
-    uint32_t al0 = (uint32_t)a.x & 0xFFFFu, al1 = (uint32_t)a.y & 0xFFFFu,
-             al2 = (uint32_t)a.z & 0xFFFFu;
-    uint32_t l0 = p->l[0] * al0, l1 = p->l[1] * al1, l2 = p->l[2] * al2;
-    /* r in (-2^16, 3 2^16): S mod 2^16 = r mod 2^16 */
-    int32_t r = (int32_t)(l0 & 0xFFFFu) + (int32_t)(l1 & 0xFFFFu) + (int32_t)(l2 & 0xFFFFu) - from_low;
-    int32_t small = (int32_t)p->l[0] * ah0 + (int32_t)p->l[1] * ah1 + (int32_t)p->l[2] * ah2 +
-                    (int32_t)(l0 >> 16) + (int32_t)(l1 >> 16) + (int32_t)(l2 >> 16) + high16(r);
     int64_t v;
-    if (small_point) {
-        v = (int64_t)(p->h[0] * a.x + p->h[1] * a.y + p->h[2] * a.z + small) - from_high;
-    } else {
-        int32_t high = p->h[0] * ah0 + p->h[1] * ah1 + p->h[2] * ah2;
-        v = (int64_t)high * 65536 + (int64_t)(p->h[0] * (int32_t)al0) +
-            (int64_t)(p->h[1] * (int32_t)al1) + (int64_t)(p->h[2] * (int32_t)al2) +
-            ((int64_t)small - from_high);
-    }
+    (void)r; /* F < 16 only */
+    if (narrow)
+        v = p->h[0] * a->x + p->h[1] * a->y + p->h[2] * a->z - x->from_high32 + small;
+    else
+        v = (int64_t)(p->h[0] * x->high[0] + p->h[1] * x->high[1] + p->h[2] * x->high[2]) * 32768 +
+            (int64_t)(p->h[0] * x->low[0] + p->h[1] * x->low[1] + p->h[2] * x->low[2]) +
+            ((int64_t)small - stp_asr64(*from, 16));
 #if F > 16
     v = stp_asr64(v, F > 16 ? F - 16 : 0);
 #elif F < 16
@@ -325,22 +327,54 @@ static stp_fix axis_coordinate(const point_halves *p, int small_point, stp_vec3 
     return stp_fix_sat64(v);
 }
 
+/* floor((p . a - from) / 2^F) saturated, the same value as the 64-bit
+ * formula's, for axis a (|a_i| < 2^17) with halves *x and from . a
+ * (*from), from 32-bit products (ARMv6-M has no 32 x 32 -> 64 multiply;
+ * the library's costs ~40 instructions a call).  With p_i = h 2^16 + l
+ * and a_i = high 2^15 + low (stp_view_axis32),
+ *   p_i a_i = 2^16 h a_i + 2^15 l high + l low,
+ * so with g = sum l high (|g| <= 1.5 2^17) and r = sum l low - from_low +
+ * 2^15 (g mod 2), |r| < 1.5 2^30 + 2^16,
+ *   S = p . a - from = 2^16 (sum h a_i - from_high + floor(g / 2)) + r,
+ *   floor(S / 2^16) = sum h a_i - from_high + floor(g / 2) + floor(r / 2^16).
+ * narrow (every |h| <= 2^12 and the transform's |from_high| < 2^28):
+ * |sum h a_i| < 1.5 2^30, and every partial sum stays below 2^31 - 1 in
+ * magnitude, so at F = 16 the value is exact in 32 bits and never
+ * saturates; else finish_coordinate. */
+STP_HOT_INLINE stp_fix axis_coordinate(const point_halves *p, const stp_vec3 *a, const stp_view_axis32 *x,
+                                       const int64_t *from, int narrow)
+{
+    int32_t g = p->l[0] * x->high[0] + p->l[1] * x->high[1] + p->l[2] * x->high[2];
+    int32_t r = p->l[0] * x->low[0] + p->l[1] * x->low[1] + p->l[2] * x->low[2] - x->from_low +
+                (int32_t)(((uint32_t)g & 1u) << 15);
+    int32_t small = stp_asr32(g, 1) + high16(r);
+#if F == 16
+    if (narrow)
+        return p->h[0] * a->x + p->h[1] * a->y + p->h[2] * a->z - x->from_high32 + small;
+#endif
+    return finish_coordinate(p, a, x, from, narrow, small, r);
+}
+
+/* v's signed halves (point_halves) */
+static void split_point(int32_t v, int32_t *h, int32_t *l)
+{
+    *l = (int32_t)(((uint32_t)v & 0xFFFFu) ^ 0x8000u) - 0x8000;
+    *h = high16(v) + (int32_t)(((uint32_t)v >> 15) & 1u);
+}
+
 void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out)
 {
     point_halves ph;
-    int small_point;
-    ph.h[0] = high16(p.x);
-    ph.h[1] = high16(p.y);
-    ph.h[2] = high16(p.z);
-    ph.l[0] = (uint32_t)p.x & 0xFFFFu;
-    ph.l[1] = (uint32_t)p.y & 0xFFFFu;
-    ph.l[2] = (uint32_t)p.z & 0xFFFFu;
-    /* |p_i| < 2^28: ph in [-2^12, 2^12) */
-    small_point = (uint32_t)(ph.h[0] + 4096) < 8192u && (uint32_t)(ph.h[1] + 4096) < 8192u &&
-                  (uint32_t)(ph.h[2] + 4096) < 8192u;
-    out->x = axis_coordinate(&ph, small_point, t->right, t->from_high[0], t->from_low[0]);
-    out->y = axis_coordinate(&ph, small_point, t->up, t->from_high[1], t->from_low[1]);
-    out->z = axis_coordinate(&ph, small_point, t->forward, t->from_high[2], t->from_low[2]);
+    int narrow;
+    split_point(p.x, &ph.h[0], &ph.l[0]);
+    split_point(p.y, &ph.h[1], &ph.l[1]);
+    split_point(p.z, &ph.h[2], &ph.l[2]);
+    /* every p_i in [-2^28, 2^28): |h| <= 2^12 */
+    narrow = t->narrow && (((uint32_t)p.x + 0x10000000u) | ((uint32_t)p.y + 0x10000000u) |
+                           ((uint32_t)p.z + 0x10000000u)) < 0x20000000u;
+    out->x = axis_coordinate(&ph, &t->right, &t->axis32[0], &t->from_right, narrow);
+    out->y = axis_coordinate(&ph, &t->up, &t->axis32[1], &t->from_up, narrow);
+    out->z = axis_coordinate(&ph, &t->forward, &t->axis32[2], &t->from_forward, narrow);
 }
 #endif
 

@@ -25,16 +25,33 @@ typedef struct stp_view_frame {
  * *out is written only on success. */
 int stp_view_frame_make(const stp_view *v, uint32_t width, uint32_t height, stp_view_frame *out);
 
+/* One view axis in halves for 32-bit targets (view.c): each component
+ * a[i] = high[i] 2^15 + low[i] (low in [-2^14, 2^14), high in [-4, 4]
+ * for |a[i]| < 2^17), and from . axis (2F fractional bits, below 2^49) =
+ * from_high 2^16 + from_low (low in [0, 2^16)), from_high32 the high part
+ * where it is below 2^28 in magnitude, else 0.  16-bit halves where a
+ * 32-bit product is a library call (AVR: RAM is short; the renderer holds
+ * two transforms); 32-bit ones elsewhere (ARMv6-M loads a signed 16-bit
+ * value only with a register offset). */
+#if STP_HAVE_MUL32
+typedef int32_t stp_view_half;
+#else
+typedef int16_t stp_view_half;
+#endif
+typedef struct stp_view_axis32 {
+    stp_view_half high[3], low[3];
+    int32_t from_high32, from_low;
+} stp_view_axis32;
+
 /* World to view coordinates: the view's axes and the eye's coordinate
  * along each (from . axis, 2F fractional bits, below 2^49), so a point's
  * view coordinates are p . axis - from . axis, exact in 64 bits. */
 typedef struct stp_view_transform {
     stp_vec3 right, up, forward;
     int64_t from_right, from_up, from_forward;
-    /* the same split for 32-bit targets (view.c): from . axis = high 2^16
-     * + low, low in [0, 2^16), for right, up, forward */
-    int64_t from_high[3];
-    int32_t from_low[3];
+    /* the 32-bit targets' form (view.c) of each axis k (right, up, forward) */
+    stp_view_axis32 axis32[3];
+    int narrow; /* every from_high below 2^28 in magnitude */
 } stp_view_transform;
 
 /* The view's axes (view_frame_make's, the one place they are formed):

@@ -32,6 +32,14 @@ static void check_recip(uint32_t m)
 {
     uint32_t got = stp_recip32(m);
     uint64_t want = UINT64_MAX / m - ((uint64_t)1 << 32);
+#if STP_HAVE_MUL32
+    /* the estimate the projection corrects itself: the floor or up to 2
+     * below it */
+    uint32_t estimate = stp_recip32_estimate(m);
+    if (estimate > want || want - estimate > 2u)
+        fail_msg("stp_recip32_estimate(%lu) = %lu, the floor %llu", (unsigned long)m, (unsigned long)estimate,
+                 (unsigned long long)want);
+#endif
     /* against double: (2^32 + r) 2^-64 approximates 1/m */
     double rel = ((4294967296.0 + (double)got) / 18446744073709551616.0 - 1.0 / (double)m) * (double)m;
     if (rel < 0)

@@ -159,12 +159,54 @@ static void test_perspective(void **state)
     }
 }
 
+/* The same at the 32-bit form's edges: focal and hither lengths from 1 to
+ * 2^31 - 1, z from 1 (raised to hither) to past 2^29 (the 64-bit
+ * quotients), |x| up to 2^31 - 1 and -2^31, each quotient near 2^31 and
+ * each power of two of z and its neighbours (the reciprocal's
+ * normalisation and its seed intervals' ends). */
+static void test_perspective_edges(void **state)
+{
+    static const stp_fix lengths[] = {1, 2, 3, 4096, 65535, 65536, 65537, 3604480, 0x00FFFFFF, 0x40000000,
+                                      0x7FFFFFFE, 0x7FFFFFFF};
+    static const int32_t coords[] = {0, 1, -1, 4095, -65536, 65536, 0x0FFFFFFF, -0x10000000, 0x7FFFFFFF,
+                                     -0x7FFFFFFF, INT32_MIN};
+    size_t a, b, c, k;
+    (void)state;
+    for (k = 0; k < 31; k++) {
+        int d;
+        for (d = -1; d <= 1; d++) {
+            int32_t z = (int32_t)(((uint32_t)1 << k) + (uint32_t)d);
+            for (a = 0; a < sizeof lengths / sizeof lengths[0]; a++)
+                for (b = 0; b < sizeof lengths / sizeof lengths[0]; b += 3)
+                    for (c = 0; c < sizeof coords / sizeof coords[0]; c++) {
+                        stp_fix focal = lengths[a], hither = lengths[b];
+                        stp_vec3 p;
+                        int64_t x, y, zz, wx, wy;
+                        int32_t key;
+                        if (z <= 0)
+                            continue;
+                        p.x = coords[c];
+                        p.y = coords[(c + 3) % (sizeof coords / sizeof coords[0])];
+                        p.z = z;
+                        stp_view_perspective(focal, hither, p, &x, &y, &key);
+                        zz = p.z < hither ? hither : p.z;
+                        wx = floor_div_pow2(((int64_t)focal * p.x) / zz, STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
+                        wy = floor_div_pow2(((int64_t)focal * p.y) / zz, STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
+                        assert_true(x == wx);
+                        assert_true(y == wy);
+                        assert_true(key == (int32_t)((((int64_t)hither) << 30) / zz));
+                    }
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_exact),
         cmocka_unit_test(test_edges),
         cmocka_unit_test(test_perspective),
+        cmocka_unit_test(test_perspective_edges),
     };
     return cmocka_run_group_tests(tests, 0, 0);
 }
