@@ -1301,6 +1301,15 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
     return nn > 0x10020000u ? 0x20000 : (nn < 0x0FFE0000u ? -0x20000 : (int32_t)(nn - 0x10000000u));
 }
 
+#if STP_WITH_SPECULAR
+/* N.E (Q30) below GRAZE_FLOOR, where the face takes the exact route (none
+ * in a struct filled by hand, which has no exact route) */
+STP_HOT_INLINE int below_floor(const stp_shade_fast *s, int32_t n_dot_e)
+{
+    return s->exact && n_dot_e < GRAZE_FLOOR(s);
+}
+#endif
+
 #if defined(__GNUC__)
 #define STP_FACE_BODY static inline __attribute__((always_inline))
 #else
@@ -1521,7 +1530,7 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
         n_dot_e = cos_n(dot_e, e, nd);
         if (n_dot_e <= 0)
             return s->ambient_shade;
-        if (s->exact && n_dot_e < GRAZE_FLOOR(s))
+        if (below_floor(s, n_dot_e))
             return s->exact(s, normal, point);
         inv_ne = recip_cos((uint32_t)n_dot_e, &inv_ne_q26);
     }
@@ -1533,7 +1542,7 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
             sum += share; /* GRAZE_EXACT too: at most 2^29 + 2^30 + 1 */
             if (sum >= SUM_ONE) {
 #if STP_WITH_SPECULAR
-                if (share == GRAZE_EXACT)
+                if (!near && share == GRAZE_EXACT) /* near: no highlight */
                     return s->exact(s, normal, point);
 #endif
                 return ONE; /* every later share is >= 0 */
