@@ -878,7 +878,6 @@ typedef struct wide_eye {
     wide_dir e;
     int64_t ne;
     uint64_t inv_ne;
-    int graze; /* N.E below fast_min_cos (face_body's graze) */
 } wide_eye;
 
 /* N.E in Q30 for the highlight (dot_e = N.E > 0, ve not 0), e the
@@ -908,8 +907,8 @@ STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_e
         int64_t dot = we->e.v[0] * l->v[0] + we->e.v[1] * l->v[1] + we->e.v[2] * l->v[2];
         el = (dot * ((int64_t)2 << (we->e.j + l->j))) / (int64_t)((we->e.len * l->len) >> 29);
         el = el > Q30 ? Q30 : el; /* below -1: x <= 0 in wide_specular */
-        if (we->graze && el < NEAR_OPPOSITE)
-            return GRAZE_EXACT;
+        if (el < NEAR_OPPOSITE && we->ne < s->fast_min_cos)
+            return GRAZE_EXACT; /* a light nearly opposite a grazing eye */
     }
     dfg = wide_specular(s, nl, we->ne, el, we->inv_ne);
     if (dfg == 0)
@@ -930,7 +929,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
     int32_t sum = s->ambient;
     int j, lit = 0;
 #if STP_WITH_SPECULAR
-    wide_eye we = {{{0, 0, 0}, 0, 0, 0}, 0, 0, 0};
+    wide_eye we = {{{0, 0, 0}, 0, 0, 0}, 0, 0};
 #endif
     if (s->count == 0)
         return s->ambient_shade;
@@ -945,8 +944,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
         we.ne = wide_eye_cos(normal, ve, dot_e, nlen28, &we.e);
         if (we.ne <= 0)
             return s->ambient_shade;
-        we.graze = we.ne < s->fast_min_cos;
-        if (we.graze && we.ne < GRAZE_FLOOR(s))
+        if (we.ne < GRAZE_FLOOR(s))
             return s->exact(s, normal, point);
         we.inv_ne = ((uint64_t)1 << 56) / (uint64_t)we.ne;
     }
