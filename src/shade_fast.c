@@ -21,7 +21,8 @@
  *            truncates (relative error below 2^-15)
  *   sums     Q26 in int32 (one = 2^26): each light's share is saturated at
  *            8 and the sum returns 1 as soon as it reaches 1 (every share
- *            is >= 0), so at most 2^26 + 2 2^29 < 2^31 is ever formed.
+ *            is >= 0), so at most 2^29 + 2^30 + 1 < 2^31 is ever formed
+ *            (the ambient term, at most 2^29, and a share or GRAZE_EXACT).
  * High words of 32 x 32 products (arith_private.h): stp_umulhi32_approx
  * (three 16 x 16 products on ARMv6-M, up to 2 units low; exact with a
  * 64-bit multiply) on the face path, where each product is used at 2^28
@@ -40,6 +41,24 @@
 #define SUM_BITS 26
 #define SUM_ONE ((int32_t)1 << SUM_BITS)
 #define SHARE_CAP ((uint32_t)1 << 29)
+
+/* A grazing eye (N.E below fast_min_cos, 1/20, exact_prepare): a light
+ * nearly opposite the eye (|L + E| < 1/2, 1 + E.L < 1/8: specular_share's
+ * stp_sf16 branch; E.L < NEAR_OPPOSITE on the host path) takes N.H =
+ * N.(L + E)/|L + E| and E.H = |L + E|/2 from 1 + E.L, whose absolute
+ * error (the scaled directions' 2^-15) is relative to E.H^2 ~ (N.E)^2 near
+ * the mirror direction, so the face takes the exact route
+ * (light_share returns GRAZE_EXACT, 2^30 + 1, never a share: each share
+ * is within +-2^30, and added to a sum in [-2^29, 2^29] (the ambient
+ * term, then below 2^26) it reaches SUM_ONE without overflow, so
+ * face_body tests it only there); with the
+ * other lights the cosines' errors stay absolute (G/(N.E) = 4 N.H
+ * min(N.E, N.L)/(|L + E| N.E) <= 8 N.L/|L + E|^2: no 1/(N.E)), so the
+ * fast route keeps them down to GRAZE_FLOOR, 1/1280, where N.E's own
+ * error (below 2^-14, the direction's truncation) still leaves its sign. */
+#define NEAR_OPPOSITE (-((int32_t)7 << 27)) /* E.L = -7/8 in Q30 */
+#define GRAZE_EXACT (((int32_t)1 << 30) + 1)
+#define GRAZE_FLOOR(s) ((s)->fast_min_cos >> 6)
 
 /* ---- integer helpers ---- */
 
@@ -235,10 +254,10 @@ STP_HOT_INLINE int bit_length_26(uint32_t v)
 /* 1/c for a Q30 cosine c in (0, 2^31) as stp_sf16, and in Q26 (*q26,
  * saturated at 2^31 - 1): sf_recip(sf_make(c, 30)) and sf_to_fixed(., 26,
  * 2^31 - 1) with the ranges known.  c is brought to [2^26, 2^31) by steps
- * of 4 bits (none from N.E >= 1/20, the face's where the exact route is
- * set), which leave the mantissa as it was; its reciprocal's exponent
- * is then at most 26, so the Q26 value is a left shift, and below 2^31 for
- * a shift below 16. */
+ * of 4 bits (at most two from N.E >= 1/1280, GRAZE_FLOOR, below which
+ * the face takes the exact route), which leave the mantissa as it was;
+ * its reciprocal's exponent is then at most 26, so the Q26 value is a
+ * left shift, and below 2^31 for a shift below 16. */
 STP_HOT_INLINE stp_sf16 recip_cos(uint32_t c, uint32_t *q26)
 {
     stp_sf16 a;
@@ -620,7 +639,8 @@ static uint32_t specular_fixed(const stp_shade_fast *s, int32_t n_dot_l, int32_t
 }
 
 /* Ks D F G/(N.E) of one light, from the cosines (Q30, N.L and N.E > 0)
- * and inv_ne = 1/(N.E):
+ * and inv_ne = 1/(N.E); -1 (light_share's GRAZE_EXACT) for a light
+ * nearly opposite a grazing eye, tested on the stp_sf16 branch only:
  *   |L + E|^2 = 2 (1 + E.L) = X, N.H = (N.L + N.E)/|L + E|,
  *   E.H = |L + E|/2, 1/(E.H) = 2/|L + E| (one reciprocal square root);
  *   D = (1/(1 + (1 - N.H)/k))^2;
@@ -644,6 +664,8 @@ static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t 
         nh = (uint32_t)Q30;
     if (eh >= FRESNEL_C0 && j <= 1) /* j <= 1: |L + E| >= 1/2 */
         return share_times(specular_fixed(s, n_dot_l, n_dot_e, nh, r, j, eh, e_dot_l, inv_ne, inv_ne_q26), 27, wk);
+    if (n_dot_e < s->fast_min_cos && s->exact)
+        return -1; /* a light nearly opposite a grazing eye: GRAZE_EXACT */
     omx = (uint32_t)Q30 - nh;
     d = sf_one;
     if (omx != 0) {
@@ -885,6 +907,8 @@ STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_e
         int64_t dot = we->e.v[0] * l->v[0] + we->e.v[1] * l->v[1] + we->e.v[2] * l->v[2];
         el = (dot * ((int64_t)2 << (we->e.j + l->j))) / (int64_t)((we->e.len * l->len) >> 29);
         el = el > Q30 ? Q30 : el; /* below -1: x <= 0 in wide_specular */
+        if (el < NEAR_OPPOSITE && we->ne < s->fast_min_cos)
+            return GRAZE_EXACT; /* a light nearly opposite a grazing eye */
     }
     dfg = wide_specular(s, nl, we->ne, el, we->inv_ne);
     if (dfg == 0)
@@ -920,7 +944,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
         we.ne = wide_eye_cos(normal, ve, dot_e, nlen28, &we.e);
         if (we.ne <= 0)
             return s->ambient_shade;
-        if (we.ne < s->fast_min_cos)
+        if (we.ne < GRAZE_FLOOR(s))
             return s->exact(s, normal, point);
         we.inv_ne = ((uint64_t)1 << 56) / (uint64_t)we.ne;
     }
@@ -961,8 +985,12 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
         if (s->refl_negative)
             share = -share;
 #if STP_WITH_SPECULAR
-        if (s->specular)
-            share += wide_light_specular(s, &we, &l, at_point, nl, w, c);
+        if (s->specular) {
+            int32_t highlight = wide_light_specular(s, &we, &l, at_point, nl, w, c);
+            if (highlight == GRAZE_EXACT)
+                return s->exact(s, normal, point);
+            share += highlight;
+        }
 #endif
         if (share > 0) {
             lit = 1;
@@ -1061,8 +1089,10 @@ static stp_fix face_exact(const stp_shade_fast *s, const int16_t normal[3], stp_
  *   with the highlight: k >= FAST_MIN_GLOSS (a sharp highlight moves by
  *     more than the scaled directions resolve), n >= FAST_MIN_REFRACTION
  *     (near 1 the Fresnel table's interpolation and Q16 steps lose F's
- *     relative precision) and, per face, N.E >= FAST_MIN_COS (1/(N.E)
- *     multiplies the cosines' absolute error). */
+ *     relative precision) and, per face, N.E >= FAST_MIN_COS or, below
+ *     it down to 1/64 of it (GRAZE_FLOOR), no light nearly opposite the
+ *     eye (GRAZE_EXACT: there 1 + E.L's absolute error is relative to
+ *     (N.E)^2). */
 #define FAST_MAX_GAIN 16
 #define FAST_MIN_GLOSS (ONE / 20)
 #define FAST_MIN_REFRACTION (ONE + ONE / 4)
@@ -1269,6 +1299,15 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
     return nn > 0x10020000u ? 0x20000 : (nn < 0x0FFE0000u ? -0x20000 : (int32_t)(nn - 0x10000000u));
 }
 
+#if STP_WITH_SPECULAR
+/* N.E (Q30) below GRAZE_FLOOR, where the face takes the exact route (none
+ * in a struct filled by hand, which has no exact route) */
+STP_HOT_INLINE int below_floor(const stp_shade_fast *s, int32_t n_dot_e)
+{
+    return s->exact && n_dot_e < GRAZE_FLOOR(s);
+}
+#endif
+
 #if defined(__GNUC__)
 #define STP_FACE_BODY static inline __attribute__((always_inline))
 #else
@@ -1278,7 +1317,8 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
 /* Light j's share of the shade in Q26 (stp_shade_fast_face): BRIGHT P_j
  * |R| (N.L)/(C + U), signed as R, plus the highlight; 0 when the light is
  * behind the face.  nd: normal_deviation; e the eye's direction, n_dot_e
- * N.E (Q30), inv_ne 1/(N.E) and inv_ne_q26 the same in Q26. */
+ * N.E (Q30), inv_ne 1/(N.E) and inv_ne_q26 the same in Q26; GRAZE_EXACT
+ * (the face's exact route) for a light nearly opposite a grazing eye. */
 STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t normal[3], const stp_vec3 *point,
                                    int point_big, int near, int32_t nd, const stp_shade_fast_dir *e, int32_t n_dot_e,
                                    stp_sf16 inv_ne, uint32_t inv_ne_q26)
@@ -1303,7 +1343,10 @@ STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
 #if STP_WITH_SPECULAR
     if (!near && s->specular) { /* near: no highlight (and no call left to it there) */
         int32_t e_dot_l = at_point ? n_dot_e : cos_dirs(e, &l);
-        share += specular_share(s, n_dot_l, n_dot_e, e_dot_l, inv_ne, inv_ne_q26, sf_mul(w, s->power_ks[j]));
+        int32_t highlight = specular_share(s, n_dot_l, n_dot_e, e_dot_l, inv_ne, inv_ne_q26, sf_mul(w, s->power_ks[j]));
+        if (highlight < 0)
+            return GRAZE_EXACT;
+        share += highlight;
     }
 #else
     (void)e;
@@ -1485,7 +1528,7 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
         n_dot_e = cos_n(dot_e, e, nd);
         if (n_dot_e <= 0)
             return s->ambient_shade;
-        if (s->exact && n_dot_e < s->fast_min_cos)
+        if (below_floor(s, n_dot_e))
             return s->exact(s, normal, point);
         inv_ne = recip_cos((uint32_t)n_dot_e, &inv_ne_q26);
     }
@@ -1494,9 +1537,14 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
         int32_t share = light_share(s, j, normal, &point, point_big, near, nd, e, n_dot_e, inv_ne, inv_ne_q26);
         if (share > 0) {
             lit = 1;
-            sum += share;
-            if (sum >= SUM_ONE)
+            sum += share; /* GRAZE_EXACT too: at most 2^29 + 2^30 + 1 */
+            if (sum >= SUM_ONE) {
+#if STP_WITH_SPECULAR
+                if (!near && share == GRAZE_EXACT) /* near: no highlight */
+                    return s->exact(s, normal, point);
+#endif
                 return ONE; /* every later share is >= 0 */
+            }
         }
     }
     return shade_of_sum(s, lit, sum);

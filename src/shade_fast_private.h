@@ -86,7 +86,9 @@ typedef struct stp_shade_fast {
     uint8_t exact_always; /* the lighting or the material is outside the
                              fast route's range: every lit face exact */
     int32_t fast_min_cos; /* Q30: a face with N.E below it (highlight on)
-                             takes the exact route */
+                             takes the exact route when a light is nearly
+                             opposite the eye or N.E is below 1/64 of it
+                             (shade_fast.c GRAZE_EXACT); 0: never */
     stp_fix x_bright, x_background, x_c, x_refl, x_refraction, x_gloss, x_ks;
     stp_fix x_power[STP_MAX_LIGHTS];
     stp_vec3 x_dir;       /* parallel: the direction towards the eye */

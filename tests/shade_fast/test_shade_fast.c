@@ -554,8 +554,10 @@ static void test_stiff_cases(void **state)
 }
 
 /* Faces seen nearly edge-on, N.E from 0.021 to 0.079 in steps of 0.002:
- * across the face shader's hand-over to its exact route (N.E below 1/20,
- * shade_fast.c), which the random faces and the grid reach only by chance.
+ * across the face shader's hand-over to its exact route (N.E below 1/20
+ * with a light nearly opposite the eye, here the mirror light; the other
+ * two stay on the fast route: shade_fast.c GRAZE_EXACT), which the random
+ * faces and the grid reach only by chance.
  * The eye at the origin, the face at (0, 0, 4), N = (sqrt(1 - c^2), 0, -c);
  * one light in the mirror direction of the eye (the strongest highlight),
  * one along the normal, one to the side; three glosses. */
