@@ -105,10 +105,14 @@
 
 /* A 32-bit form beside a 64-bit one (the same values for operands in its
  * range) pays where 64-bit products are library calls and 32-bit ones
- * single instructions (ARMv6-M, ARMv8-M Baseline); on an 8-bit core every
- * product is a library call, and the 64-bit form alone is the smaller
- * code. */
-#define STP_NARROW_FORMS (!STP_HAVE_MUL64 && STP_HAVE_MUL32)
+ * single instructions (ARMv6-M, ARMv8-M Baseline), in a build for speed;
+ * on an 8-bit core every product is a library call, and there and in a
+ * build for size (-Os) the 64-bit form alone is the smaller code. */
+#if !STP_HAVE_MUL64 && STP_HAVE_MUL32 && !defined(__OPTIMIZE_SIZE__)
+#define STP_NARROW_FORMS 1
+#else
+#define STP_NARROW_FORMS 0
+#endif
 
 /* ---- target helpers ---- */
 

@@ -8,18 +8,12 @@
 #define Q14 14
 #define COORD_LIMIT ((int32_t)1 << 23) /* direct.h: coordinates below 2^23 raw */
 
-/* v scaled to unit length in Q1.14: the core's one unit vector
- * (fix.c's stp_unit_from64, Q30), rounded to Q14 as mesh.c rounds the
- * normals (<= 2^14: fits int16).  0 for a zero vector (out untouched). */
+/* v scaled to unit length in Q1.14: the core's one unit vector in the
+ * form mesh.c's normals take (fix.c's stp_unit_q14_from64: stp_unit_from64
+ * rounded to Q14).  0 for a zero vector (out untouched). */
 static int unit14(const int32_t v[3], int16_t out[3])
 {
-    stp_unit3 u;
-    if (stp_unit_from64(v[0], v[1], v[2], &u) == 0)
-        return 0;
-    out[0] = (int16_t)stp_asr32(u.x + ((int32_t)1 << 15), 16);
-    out[1] = (int16_t)stp_asr32(u.y + ((int32_t)1 << 15), 16);
-    out[2] = (int16_t)stp_asr32(u.z + ((int32_t)1 << 15), 16);
-    return 1;
+    return stp_unit_q14_from64(v[0], v[1], v[2], out);
 }
 
 /* a x b of Q1.14 vectors: Q2.28, each component below 2^29 */
