@@ -128,6 +128,19 @@ static int64_t floor_div_pow2(int64_t v, int s)
     return (v % d != 0 && v < 0) ? q - 1 : q;
 }
 
+/* stp_view_perspective of p against C's 64-bit division: the offsets
+ * floor(trunc(focal x / z) 2^-12) and the key trunc(hither 2^30 / z), z
+ * raised to hither */
+static void check_perspective(stp_fix focal, stp_fix hither, stp_vec3 p)
+{
+    int64_t x, y, z = p.z < hither ? hither : p.z;
+    int32_t key;
+    stp_view_perspective(focal, hither, p, &x, &y, &key);
+    assert_true(x == floor_div_pow2(((int64_t)focal * p.x) / z, STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS));
+    assert_true(y == floor_div_pow2(((int64_t)focal * p.y) / z, STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS));
+    assert_true(key == (int32_t)((((int64_t)hither) << 30) / z));
+}
+
 /* stp_view_perspective's 32-bit form (the exact 32-bit quotients and the
  * 64-bit fallback by a reciprocal) against C's 64-bit division: the same
  * offsets and depth key for random points, near and far, focal lengths and
@@ -141,21 +154,13 @@ static void test_perspective(void **state)
         stp_fix hither = (stp_fix)(1 + next_random() % (1u << (8 + i % 16)));
         int zbits = 1 + (int)(next_random() % 31), xbits = 1 + (int)(next_random() % 31);
         stp_vec3 p;
-        int64_t x, y, z, wx, wy;
-        int32_t key;
         p.x = (int32_t)(next_random() & (0xFFFFFFFFu >> (32 - xbits)));
         p.x = (next_random() & 1) ? p.x : -p.x;
         p.y = (int32_t)next_random() >> (next_random() % 32);
         p.z = (int32_t)(next_random() >> (32 - zbits)) & 0x7FFFFFFF;
         if (i % 7 == 0)
             p.z = -(int32_t)(next_random() >> 8); /* behind: raised to hither */
-        stp_view_perspective(focal, hither, p, &x, &y, &key);
-        z = p.z < hither ? hither : p.z;
-        wx = floor_div_pow2(((int64_t)focal * p.x) / z, STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
-        wy = floor_div_pow2(((int64_t)focal * p.y) / z, STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
-        assert_true(x == wx);
-        assert_true(y == wy);
-        assert_true(key == (int32_t)((((int64_t)hither) << 30) / z));
+        check_perspective(focal, hither, p);
     }
 }
 
@@ -181,20 +186,12 @@ static void test_perspective_edges(void **state)
                     for (c = 0; c < sizeof coords / sizeof coords[0]; c++) {
                         stp_fix focal = lengths[a], hither = lengths[b];
                         stp_vec3 p;
-                        int64_t x, y, zz, wx, wy;
-                        int32_t key;
                         if (z <= 0)
                             continue;
                         p.x = coords[c];
                         p.y = coords[(c + 3) % (sizeof coords / sizeof coords[0])];
                         p.z = z;
-                        stp_view_perspective(focal, hither, p, &x, &y, &key);
-                        zz = p.z < hither ? hither : p.z;
-                        wx = floor_div_pow2(((int64_t)focal * p.x) / zz, STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
-                        wy = floor_div_pow2(((int64_t)focal * p.y) / zz, STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
-                        assert_true(x == wx);
-                        assert_true(y == wy);
-                        assert_true(key == (int32_t)((((int64_t)hither) << 30) / zz));
+                        check_perspective(focal, hither, p);
                     }
         }
     }
