@@ -19,6 +19,9 @@ void stp_spans_start(const stp_spans *spans, stp_spans_cursor *cursor)
     cursor->y = 0;
 }
 
+/* The call's arguments; the cursor's place in the data is checked by each
+ * run's read (stp_spans_draw: rows >= 1, so at least one run is read, and
+ * the first is checked before anything is written). */
 static int spans_ok(const stp_spans *spans, const stp_spans_cursor *cursor, const uint8_t *band,
                     size_t stride, uint32_t rows)
 {
@@ -30,18 +33,17 @@ static int spans_ok(const stp_spans *spans, const stp_spans_cursor *cursor, cons
     return rows > 0 && cursor->y <= spans->height && rows <= (uint32_t)spans->height - cursor->y &&
            spans->width >= 1u && spans->width <= 256u && stride >= ((size_t)spans->width + 7u) / 8u &&
            spans->cell_rows != 0 && cell_mask <= 7u && (spans->cell_rows & cell_mask) == 0 &&
-           cursor->next >= spans->runs && (size_t)(cursor->next - spans->runs) <= spans->run_bytes;
+           spans->run_bytes != 0;
 }
 
 int stp_spans_draw(const stp_spans *spans, stp_spans_cursor *cursor, uint8_t *band, size_t stride,
                    uint32_t rows)
 {
-    const uint8_t *p, *end;
+    const uint8_t *p;
     uint8_t cell_mask, right;
     if (!spans_ok(spans, cursor, band, stride, rows))
         return STP_ERR_ARG;
     p = cursor->next;
-    end = spans->runs + spans->run_bytes;
     cell_mask = (uint8_t)(spans->cell_rows - 1u);
     right = (uint8_t)(spans->width - 1u);
     for (; rows > 0; rows--, band += stride) {
@@ -50,11 +52,15 @@ int stp_spans_draw(const stp_spans *spans, stp_spans_cursor *cursor, uint8_t *ba
         const uint8_t *pattern_row = spans->patterns + (cursor->y & cell_mask);
         do {
             uint8_t shade;
-            if (end - p < 2)
-                return STP_ERR_ARG; /* the data ends inside the row */
+            /* both bytes below run_bytes, in one unsigned comparison of the
+             * run's offset (run_bytes >= 1): a cursor before the data wraps
+             * to a large offset, one past it is refused as data that ends
+             * inside the row */
+            if ((uintptr_t)p - (uintptr_t)spans->runs >= spans->run_bytes - 1u)
+                return STP_ERR_ARG;
             last = read_byte(p);
             shade = read_byte(p + 1);
-            if (last < x || last > right || shade >= spans->shade_count)
+            if (last < x || last >= spans->width || shade >= spans->shade_count)
                 return STP_ERR_ARG;
             stp_halftone_fill_bits(band, 0, x, last,
                                    read_byte(pattern_row + (uint16_t)shade * spans->cell_rows));
