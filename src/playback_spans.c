@@ -19,6 +19,9 @@ void stp_spans_start(const stp_spans *spans, stp_spans_cursor *cursor)
     cursor->y = 0;
 }
 
+/* The call's arguments, and a cursor not before the data; one past it is
+ * refused by the first run's read (rows >= 1: at least one run is read,
+ * and checked before anything is written). */
 static int spans_ok(const stp_spans *spans, const stp_spans_cursor *cursor, const uint8_t *band,
                     size_t stride, uint32_t rows)
 {
@@ -30,18 +33,19 @@ static int spans_ok(const stp_spans *spans, const stp_spans_cursor *cursor, cons
     return rows > 0 && cursor->y <= spans->height && rows <= (uint32_t)spans->height - cursor->y &&
            spans->width >= 1u && spans->width <= 256u && stride >= ((size_t)spans->width + 7u) / 8u &&
            spans->cell_rows != 0 && cell_mask <= 7u && (spans->cell_rows & cell_mask) == 0 &&
-           cursor->next >= spans->runs && (size_t)(cursor->next - spans->runs) <= spans->run_bytes;
+           spans->run_bytes != 0 && cursor->next >= spans->runs;
 }
 
 int stp_spans_draw(const stp_spans *spans, stp_spans_cursor *cursor, uint8_t *band, size_t stride,
                    uint32_t rows)
 {
-    const uint8_t *p, *end;
+    const uint8_t *p, *last_run;
     uint8_t cell_mask, right;
     if (!spans_ok(spans, cursor, band, stride, rows))
         return STP_ERR_ARG;
     p = cursor->next;
-    end = spans->runs + spans->run_bytes;
+    /* a run's two bytes below run_bytes (>= 1): it starts before this */
+    last_run = spans->runs + spans->run_bytes - 1u;
     cell_mask = (uint8_t)(spans->cell_rows - 1u);
     right = (uint8_t)(spans->width - 1u);
     for (; rows > 0; rows--, band += stride) {
@@ -50,11 +54,11 @@ int stp_spans_draw(const stp_spans *spans, stp_spans_cursor *cursor, uint8_t *ba
         const uint8_t *pattern_row = spans->patterns + (cursor->y & cell_mask);
         do {
             uint8_t shade;
-            if (end - p < 2)
+            if (p >= last_run)
                 return STP_ERR_ARG; /* the data ends inside the row */
             last = read_byte(p);
             shade = read_byte(p + 1);
-            if (last < x || last > right || shade >= spans->shade_count)
+            if (last < x || last >= spans->width || shade >= spans->shade_count)
                 return STP_ERR_ARG;
             stp_halftone_fill_bits(band, 0, x, last,
                                    read_byte(pattern_row + (uint16_t)shade * spans->cell_rows));

@@ -62,11 +62,6 @@ size_t stp_panel_row_bytes(const stp_panel_controller *c, uint32_t width)
     return c->packing == STP_PANEL_GREY4_LEFT_HIGH ? ((size_t)width + 1u) / 2u : width;
 }
 
-static unsigned mono_bit(const uint8_t *row, uint32_t x)
-{
-    return (row[x >> 3] >> (7u - (x & 7u))) & 1u;
-}
-
 void stp_panel_pack_mono_row(const stp_panel_controller *c, const uint8_t *mono,
                              uint32_t width, uint8_t *out)
 {
@@ -81,10 +76,11 @@ void stp_panel_pack_mono_row(const stp_panel_controller *c, const uint8_t *mono,
             out[n - 1] = (uint8_t)(out[n - 1] | ((1u << pad) - 1u));
         return;
     }
+    /* x even: pixels x and x + 1 are bits 7 and 6 of their byte shifted
+     * left by x & 7; they become bits 4 and 0, times the ON level */
     for (x = 0; x < width; x += 2) {
-        unsigned left = mono_bit(mono, x) ? STP_PANEL_GREY4_ON : 0u;
-        unsigned right = x + 1 < width && mono_bit(mono, x + 1) ? STP_PANEL_GREY4_ON : 0u;
-        out[x >> 1] = (uint8_t)(left << 4 | right);
+        unsigned pair = ((unsigned)mono[x >> 3] << (x & 7u)) & (x + 1u < width ? 0xC0u : 0x80u);
+        out[x >> 1] = (uint8_t)(((pair >> 3 | pair >> 6) & 0x11u) * STP_PANEL_GREY4_ON);
     }
 }
 

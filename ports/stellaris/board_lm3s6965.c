@@ -29,16 +29,16 @@ static int panel_start(void)
  * small. */
 static int flush(stp_port *port, uint32_t y0, uint32_t rows, const uint8_t *pixels, size_t stride)
 {
-    uint32_t y, x;
     (void)port;
     (void)y0; /* bands come top to bottom and the window was set for the frame */
-    for (y = 0; y < rows; y++)
-        for (x = 0; x < PANEL_W; x += CHUNK_PIXELS) {
-            stp_panel_pack_mono_row(&stp_panel_ssd0323, pixels + (size_t)y * stride + x / 8u,
-                                    CHUNK_PIXELS, packed);
+    for (; rows > 0; rows--, pixels += stride) {
+        const uint8_t *chunk;
+        for (chunk = pixels; chunk < pixels + PANEL_W / 8u; chunk += CHUNK_PIXELS / 8u) {
+            stp_panel_pack_mono_row(&stp_panel_ssd0323, chunk, CHUNK_PIXELS, packed);
             if (stp_lm3s6965_oled_bus.data(stp_lm3s6965_oled_bus.ctx, packed, sizeof packed) != 0)
                 return -1;
         }
+    }
     return 0;
 }
 

@@ -6,7 +6,8 @@
  * argument, and a sequence cut short, a step without a step function, a
  * bus error or a step error stops it with the right status.  The SSD1306's
  * own init sequence walked to the end: its records' bytes, in order, are
- * the sequence's bytes less the counts and steps.
+ * the sequence's bytes less the counts and steps.  Rows packed into 4-bit
+ * grey against their pixels.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -130,12 +131,43 @@ static void test_ssd1306_init(void **state)
     assert_int_equal(b.bytes[n - 1], 0xAF); /* display on last */
 }
 
+/* stp_panel_pack_mono_row into 4-bit grey (the SSD0323's packing), every
+ * width 1..24 (odd ones end on a half byte, its right pixel 0) and several
+ * rows, against the pixels one by one; nothing past the packed bytes. */
+static void test_grey4_rows(void **state)
+{
+    static const uint8_t rows[][3] = {
+        {0x00, 0x00, 0x00}, {0xFF, 0xFF, 0xFF}, {0xA5, 0x3C, 0x81}, {0x5A, 0xC3, 0x7E}};
+    stp_panel_controller c;
+    uint8_t out[14];
+    uint32_t width, x;
+    size_t r;
+    (void)state;
+    memset(&c, 0, sizeof c);
+    c.packing = STP_PANEL_GREY4_LEFT_HIGH;
+    for (r = 0; r < sizeof rows / sizeof rows[0]; r++)
+        for (width = 1; width <= 24u; width++) {
+            memset(out, 0x99, sizeof out);
+            stp_panel_pack_mono_row(&c, rows[r], width, out);
+            for (x = 0; x < 24u; x++) {
+                unsigned on = x < width && (rows[r][x / 8u] >> (7u - x % 8u)) & 1u;
+                unsigned got = (out[x / 2u] >> (x % 2u ? 0u : 4u)) & 15u;
+                if (x < (width + 1u) / 2u * 2u)
+                    assert_int_equal(got, on ? STP_PANEL_GREY4_ON : 0u);
+                else
+                    assert_int_equal(got, 9u);
+            }
+            assert_int_equal(out[12], 0x99);
+        }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_records_and_steps),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_ssd1306_init),
+        cmocka_unit_test(test_grey4_rows),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

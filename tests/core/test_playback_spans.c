@@ -206,6 +206,43 @@ static void test_short_runs_refused(void **state)
     assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, H), STP_ERR_ARG);
 }
 
+/* A cursor outside the data is refused before anything is written: before
+ * the runs, at their end, and past it (the arrays around the runs are
+ * real, so every pointer here is valid to form). */
+static void test_cursor_outside_refused(void **state)
+{
+    static const uint8_t data[] = {20, 0, 20, 1, 20, 2, 20, 0, 20, 1};
+    stp_spans s = make();
+    stp_spans_cursor c;
+    uint8_t band[STRIDE];
+    (void)state;
+    s.runs = data + 2;
+    s.run_bytes = 4; /* rows {20, 1} and {20, 2} */
+    memset(band, 0x5A, sizeof band);
+    stp_spans_start(&s, &c);
+    c.next = data;
+    assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 1), STP_ERR_ARG);
+    c.next = data + 1;
+    assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 1), STP_ERR_ARG);
+    c.next = data + 6; /* the end of the data */
+    assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 1), STP_ERR_ARG);
+    c.next = data + 8;
+    assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 1), STP_ERR_ARG);
+    c.next = data + 5; /* one byte of data left */
+    assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 1), STP_ERR_ARG);
+    c.next = s.runs; /* no data at all */
+    s.run_bytes = 0;
+    assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 1), STP_ERR_ARG);
+    s.run_bytes = 4;
+    assert_int_equal(band[0], 0x5A);
+    assert_int_equal(c.y, 0);
+    /* inside: drawn, and the cursor moves on to the end */
+    c.next = data + 4;
+    assert_int_equal(stp_spans_draw(&s, &c, band, STRIDE, 1), STP_OK);
+    assert_ptr_equal(c.next, data + 6);
+    assert_int_equal(band[0], 0x81);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -215,6 +252,7 @@ int main(void)
         cmocka_unit_test(test_null_refused),
         cmocka_unit_test(test_sizes_refused),
         cmocka_unit_test(test_short_runs_refused),
+        cmocka_unit_test(test_cursor_outside_refused),
     };
     return cmocka_run_group_tests(tests, 0, 0);
 }
