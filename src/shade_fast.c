@@ -1304,7 +1304,7 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
  * in a struct filled by hand, which has no exact route) */
 STP_HOT_INLINE int below_floor(const stp_shade_fast *s, int32_t n_dot_e)
 {
-    return s->exact && n_dot_e < GRAZE_FLOOR(s);
+    return n_dot_e < GRAZE_FLOOR(s) && s->exact;
 }
 #endif
 
@@ -1487,7 +1487,7 @@ STP_FACE_BODY stp_fix face_compact(const stp_shade_fast *s, const int16_t normal
 #if STP_WITH_SPECULAR
 /* The lighting or the material outside the fast route's range: every
  * lit face takes the exact route (each entry's first test) */
-#define FACE_EXACT_ALWAYS(s) ((s)->exact && (s)->exact_always && (s)->count != 0)
+#define FACE_EXACT_ALWAYS(s) ((s)->exact_always && (s)->exact && (s)->count != 0)
 #endif
 STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int point_big,
                                 int near)
