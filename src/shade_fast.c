@@ -135,7 +135,7 @@ static const uint16_t recip_seed[256] STP_TABLE = {
     33791, 33723, 33655, 33588, 33521, 33454, 33387, 33321, 33255, 33189, 33124, 33059,
     32994, 32929, 32864, 32800,
 };
-#define RECIP_SEED(k) STP_TABLE_U16(&recip_seed[(k) - 256u])
+#define RECIP_SEED(k) STP_TABLE_U16(&recip_seed[(k) & 0xFFu]) /* k in [256, 512): k - 256 */
 #else
 #define RECIP_SEED(k) ((((uint32_t)1 << 25) + (k)) / (2u * (k) + 1u))
 #endif
@@ -150,8 +150,9 @@ static const uint16_t recip_seed[256] STP_TABLE = {
  * (2^-6 to 2^-11) cost twice as many instructions on ARMv6-M. */
 STP_HOT_INLINE uint32_t rsqrt_norm(uint32_t q)
 {
-    uint32_t i = (q >> 26) - 16u, y0 = STP_TABLE_U16(&rsqrt_node[i]);
-    uint32_t y = y0 - (((y0 - STP_TABLE_U16(&rsqrt_node[i + 1u])) * ((q >> 10) & 0xFFFFu)) >> 16);
+    const uint16_t *node = &rsqrt_node[(q >> 26) - 16u]; /* both nodes from one address */
+    uint32_t y0 = STP_TABLE_U16(node);
+    uint32_t y = y0 - (((y0 - STP_TABLE_U16(node + 1)) * ((q >> 10) & 0xFFFFu)) >> 16);
     /* q y^2 2^-32 ~ 2^30 (y < 2^16: y^2 < 2^32); |e| < 2^19 */
     int32_t e = Q30 - (int32_t)stp_umulhi32_approx(q, y * y);
     return (y << 15) + (uint32_t)mul_q16(e, y);
