@@ -239,6 +239,11 @@ STP_HOT_INLINE stp_sf16 sf_recip_hot(stp_sf16 a)
 }
 #endif
 
+#if !STP_HAVE_CLZ
+/* the significant bits of 0 .. 15 */
+static const uint16_t len4[16] STP_TABLE = {0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4};
+#endif
+
 /* Significant bits of v for v in [2^26, 2^30): 26 + those of v >> 26, in
  * [1, 16), one step of a 16-entry table where stp_bit_length32 takes
  * three halvings before its table (about 8 instructions fewer on ARMv6-M) */
@@ -247,8 +252,25 @@ STP_HOT_INLINE int bit_length_26(uint32_t v)
 #if STP_HAVE_CLZ
     return stp_bit_length32(v);
 #else
-    static const uint16_t len4[16] STP_TABLE = {0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4};
     return 26 + (int)STP_TABLE_U16(&len4[v >> 26]);
+#endif
+}
+
+/* Significant bits of any v, with one table step where v >> s is in
+ * [1, 16), the common case where it is used: a direction's largest
+ * component (s = 16: 2^16 to 2^20 raw units, a scene of a few units) and
+ * gloss_q30's 1 + (1 - N.H)/k (s = 0, below 16).  Builds for size keep
+ * the one form. */
+STP_HOT_INLINE int bit_length_near(uint32_t v, int s)
+{
+#if STP_HAVE_CLZ || STP_LEAN_CODE
+    (void)s;
+    return stp_bit_length32(v);
+#else
+    uint32_t t = v >> s;
+    if (t - 1u < 15u)
+        return s + (int)STP_TABLE_U16(&len4[t]);
+    return stp_bit_length32(v);
 #endif
 }
 
@@ -370,7 +392,7 @@ static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b,
         any |= stp_abs32(v);
     }
     /* the bit length of the largest |v_i| is that of their OR */
-    n = stp_bit_length32(any) - 16; /* the largest 2^-n in [2^15, 2^16) */
+    n = bit_length_near(any, 16) - 16; /* the largest 2^-n in [2^15, 2^16) */
     if (n == -16)
         return 0; /* d->w = 0 */
     d->shift = n + big;
@@ -604,7 +626,7 @@ static uint32_t gloss_q30(const stp_shade_fast *s, uint32_t omx)
     if (x >= 0x80000000u)
         return 0;
     t = ((uint32_t)1 << 16) + x;
-    n = stp_bit_length32(t >> 16); /* 1 .. 16: one halving fewer */
+    n = bit_length_near(t >> 16, 0); /* 1 .. 16: one halving fewer */
     y = recip16_hot(t >> n);
     if (y > 0xFFFFu) /* m = 2^15: D = 2^(32 - 2n) 2^-30 */
         return n >= 16 ? 0u : (uint32_t)1 << (32 - 2 * n);
