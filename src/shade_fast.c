@@ -307,25 +307,28 @@ static uint32_t sf_aligned(stp_sf16 b, int d)
 
 STP_HOT_INLINE stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
 {
-    stp_sf16 t;
+    stp_sf16 r;
     uint32_t sum;
     if (b.m == 0)
         return a;
     if (a.m == 0)
         return b;
-    if (a.e > b.e) { /* a the one with the larger scale */
-        t = a;
-        a = b;
-        b = t;
-    }
-    sum = a.m + sf_aligned(b, b.e - a.e); /* < 2^17 */
-    if (sum > 0xFFFFu) {
-        a.m = sum >> 1;
-        a.e--;
+    /* the one with the larger scale (the smaller e) keeps its mantissa,
+     * the other is aligned to it (no swap of the pair) */
+    if (a.e > b.e) {
+        sum = b.m + sf_aligned(a, a.e - b.e); /* < 2^17 */
+        r.e = b.e;
     } else {
-        a.m = sum;
+        sum = a.m + sf_aligned(b, b.e - a.e);
+        r.e = a.e;
     }
-    return a;
+    if (sum > 0xFFFFu) {
+        r.m = sum >> 1;
+        r.e--;
+    } else {
+        r.m = sum;
+    }
+    return r;
 }
 
 #if STP_WITH_SPECULAR
