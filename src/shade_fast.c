@@ -263,7 +263,7 @@ STP_HOT_INLINE int bit_length_26(uint32_t v)
  * the one form. */
 STP_HOT_INLINE int bit_length_near(uint32_t v, int s)
 {
-#if STP_HAVE_CLZ || STP_LEAN_CODE
+#if STP_HAVE_CLZ || defined(__OPTIMIZE_SIZE__)
     (void)s;
     return stp_bit_length32(v);
 #else
