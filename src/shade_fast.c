@@ -135,7 +135,7 @@ static const uint16_t recip_seed[256] STP_TABLE = {
     33791, 33723, 33655, 33588, 33521, 33454, 33387, 33321, 33255, 33189, 33124, 33059,
     32994, 32929, 32864, 32800,
 };
-#define RECIP_SEED(k) STP_TABLE_U16(&recip_seed[(k) - 256u])
+#define RECIP_SEED(k) STP_TABLE_U16(&recip_seed[(k) & 0xFFu]) /* k in [256, 512): k - 256 */
 #else
 #define RECIP_SEED(k) ((((uint32_t)1 << 25) + (k)) / (2u * (k) + 1u))
 #endif
@@ -150,8 +150,9 @@ static const uint16_t recip_seed[256] STP_TABLE = {
  * (2^-6 to 2^-11) cost twice as many instructions on ARMv6-M. */
 STP_HOT_INLINE uint32_t rsqrt_norm(uint32_t q)
 {
-    uint32_t i = (q >> 26) - 16u, y0 = STP_TABLE_U16(&rsqrt_node[i]);
-    uint32_t y = y0 - (((y0 - STP_TABLE_U16(&rsqrt_node[i + 1u])) * ((q >> 10) & 0xFFFFu)) >> 16);
+    const uint16_t *node = &rsqrt_node[(q >> 26) - 16u]; /* both nodes from one address */
+    uint32_t y0 = STP_TABLE_U16(node);
+    uint32_t y = y0 - (((y0 - STP_TABLE_U16(node + 1)) * ((q >> 10) & 0xFFFFu)) >> 16);
     /* q y^2 2^-32 ~ 2^30 (y < 2^16: y^2 < 2^32); |e| < 2^19 */
     int32_t e = Q30 - (int32_t)stp_umulhi32_approx(q, y * y);
     return (y << 15) + (uint32_t)mul_q16(e, y);
@@ -238,6 +239,11 @@ STP_HOT_INLINE stp_sf16 sf_recip_hot(stp_sf16 a)
 }
 #endif
 
+#if !STP_HAVE_CLZ
+/* the significant bits of 0 .. 15 */
+static const uint16_t len4[16] STP_TABLE = {0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4};
+#endif
+
 /* Significant bits of v for v in [2^26, 2^30): 26 + those of v >> 26, in
  * [1, 16), one step of a 16-entry table where stp_bit_length32 takes
  * three halvings before its table (about 8 instructions fewer on ARMv6-M) */
@@ -246,8 +252,25 @@ STP_HOT_INLINE int bit_length_26(uint32_t v)
 #if STP_HAVE_CLZ
     return stp_bit_length32(v);
 #else
-    static const uint16_t len4[16] STP_TABLE = {0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4};
     return 26 + (int)STP_TABLE_U16(&len4[v >> 26]);
+#endif
+}
+
+/* Significant bits of any v, with one table step where v >> s is in
+ * [1, 16), the common case where it is used: a direction's largest
+ * component (s = 16: 2^16 to 2^20 raw units, a scene of a few units) and
+ * gloss_q30's 1 + (1 - N.H)/k (s = 0, below 16).  Builds for size keep
+ * the one form. */
+STP_HOT_INLINE int bit_length_near(uint32_t v, int s)
+{
+#if STP_HAVE_CLZ || defined(__OPTIMIZE_SIZE__)
+    (void)s;
+    return stp_bit_length32(v);
+#else
+    uint32_t t = v >> s;
+    if (t - 1u < 15u)
+        return s + (int)STP_TABLE_U16(&len4[t]);
+    return stp_bit_length32(v);
 #endif
 }
 
@@ -284,25 +307,28 @@ static uint32_t sf_aligned(stp_sf16 b, int d)
 
 STP_HOT_INLINE stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
 {
-    stp_sf16 t;
+    stp_sf16 r;
     uint32_t sum;
     if (b.m == 0)
         return a;
     if (a.m == 0)
         return b;
-    if (a.e > b.e) { /* a the one with the larger scale */
-        t = a;
-        a = b;
-        b = t;
-    }
-    sum = a.m + sf_aligned(b, b.e - a.e); /* < 2^17 */
-    if (sum > 0xFFFFu) {
-        a.m = sum >> 1;
-        a.e--;
+    /* the one with the larger scale (the smaller e) keeps its mantissa,
+     * the other is aligned to it (no swap of the pair) */
+    if (a.e > b.e) {
+        sum = b.m + sf_aligned(a, a.e - b.e); /* < 2^17 */
+        r.e = b.e;
     } else {
-        a.m = sum;
+        sum = a.m + sf_aligned(b, b.e - a.e);
+        r.e = a.e;
     }
-    return a;
+    if (sum > 0xFFFFu) {
+        r.m = sum >> 1;
+        r.e--;
+    } else {
+        r.m = sum;
+    }
+    return r;
 }
 
 #if STP_WITH_SPECULAR
@@ -369,7 +395,7 @@ static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b,
         any |= stp_abs32(v);
     }
     /* the bit length of the largest |v_i| is that of their OR */
-    n = stp_bit_length32(any) - 16; /* the largest 2^-n in [2^15, 2^16) */
+    n = bit_length_near(any, 16) - 16; /* the largest 2^-n in [2^15, 2^16) */
     if (n == -16)
         return 0; /* d->w = 0 */
     d->shift = n + big;
@@ -603,7 +629,7 @@ static uint32_t gloss_q30(const stp_shade_fast *s, uint32_t omx)
     if (x >= 0x80000000u)
         return 0;
     t = ((uint32_t)1 << 16) + x;
-    n = stp_bit_length32(t >> 16); /* 1 .. 16: one halving fewer */
+    n = bit_length_near(t >> 16, 0); /* 1 .. 16: one halving fewer */
     y = recip16_hot(t >> n);
     if (y > 0xFFFFu) /* m = 2^15: D = 2^(32 - 2n) 2^-30 */
         return n >= 16 ? 0u : (uint32_t)1 << (32 - 2 * n);
@@ -1304,7 +1330,7 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
  * in a struct filled by hand, which has no exact route) */
 STP_HOT_INLINE int below_floor(const stp_shade_fast *s, int32_t n_dot_e)
 {
-    return s->exact && n_dot_e < GRAZE_FLOOR(s);
+    return n_dot_e < GRAZE_FLOOR(s) && s->exact;
 }
 #endif
 
@@ -1487,7 +1513,7 @@ STP_FACE_BODY stp_fix face_compact(const stp_shade_fast *s, const int16_t normal
 #if STP_WITH_SPECULAR
 /* The lighting or the material outside the fast route's range: every
  * lit face takes the exact route (each entry's first test) */
-#define FACE_EXACT_ALWAYS(s) ((s)->exact && (s)->exact_always && (s)->count != 0)
+#define FACE_EXACT_ALWAYS(s) ((s)->exact_always && (s)->exact && (s)->count != 0)
 #endif
 STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int point_big,
                                 int near)

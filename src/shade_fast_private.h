@@ -47,26 +47,40 @@ typedef struct stp_shade_fast_dir {
 
 /* Per-call constants of stp_shade_fast_face. */
 typedef struct stp_shade_fast {
+    /* The fields each face reads first, so that a Cortex-M0+ reaches each
+     * with one load (its byte loads take offsets below 32, its word loads
+     * below 128; a field beyond costs two instructions more a load). */
     uint8_t count;       /* lights that can reach a face (0 when BRIGHT <= 0) */
     uint8_t parallel;    /* E constant (parallel projection) */
     uint8_t specular;    /* the highlight is on (Ks > 0, STP_WITH_SPECULAR) */
     uint8_t refl_negative; /* R < 0: the diffuse term subtracts */
+    uint8_t eye_big;     /* a component of eye outside [-2^30, 2^30) */
+    uint8_t light_big[STP_MAX_LIGHTS];
+#if STP_WITH_SPECULAR
+    uint8_t refraction_ge_1; /* n >= 1: g = n sqrt(1 - (1 - c^2)/n^2) */
+    uint8_t exact_always; /* the lighting or the material is outside the
+                             fast route's range: every lit face exact
+                             (the exact route: below) */
+#endif
     stp_fix ambient_shade; /* the shade of a face no light reaches (exactly
                               as stp_shade_unit rounds it) */
     int32_t ambient;     /* BRIGHT B R in Q26 (one = 2^26), in [-2^29, 2^29] */
-    stp_vec3 eye;        /* perspective: the centre of projection */
-    uint8_t eye_big;     /* a component of eye outside [-2^30, 2^30) */
-    stp_shade_fast_dir e; /* parallel: the direction towards the eye */
-    stp_vec3 light[STP_MAX_LIGHTS];
-    uint8_t light_big[STP_MAX_LIGHTS];
-    stp_sf16 power_refl[STP_MAX_LIGHTS]; /* BRIGHT P_j |R| 2^F (per raw unit of C + U) */
     stp_sf16 attenuation_c; /* C in raw stp_fix units */
+    stp_sf16 power_refl[STP_MAX_LIGHTS]; /* BRIGHT P_j |R| 2^F (per raw unit of C + U) */
 #if STP_WITH_SPECULAR
     stp_sf16 power_ks[STP_MAX_LIGHTS]; /* BRIGHT P_j Ks 2^F (per raw unit of C + U) */
-    stp_sf16 inv_gloss;  /* 1/k */
     uint32_t inv_gloss_q16; /* 1/k in Q16, at most 2^32 - 1 */
+    int32_t fast_min_cos; /* Q30: a face with N.E below it (highlight on)
+                             takes the exact route when a light is nearly
+                             opposite the eye or N.E is below 1/64 of it
+                             (shade_fast.c GRAZE_EXACT); 0: never */
+#endif
+    stp_vec3 eye;        /* perspective: the centre of projection */
+    stp_shade_fast_dir e; /* parallel: the direction towards the eye */
+    stp_vec3 light[STP_MAX_LIGHTS];
+#if STP_WITH_SPECULAR
+    stp_sf16 inv_gloss;  /* 1/k */
     stp_sf16 refraction; /* n (>= 1 branch) */
-    uint8_t refraction_ge_1; /* n >= 1: g = n sqrt(1 - (1 - c^2)/n^2) */
     uint32_t inv_n2;     /* n >= 1: 1/n^2 in Q31 */
     uint32_t n2;         /* n < 1: n^2 in Q30 */
     /* n >= 1: F(c) in Q16 (capped at 65535) at c = 1/4 + i/64, i = 0..48
@@ -76,19 +90,14 @@ typedef struct stp_shade_fast {
 #if STP_WITH_SPECULAR
     /* The exact route (stp_shade_unit, shade.c) for the faces where the
      * fast formats cannot promise the error bound (stp_shade_fast_face):
-     * the lighting's and the material's values as given.  Builds without
+     * the lighting's and the material's values as given (with
+     * exact_always and fast_min_cos above).  Builds without
      * the highlight (STP_WITH_SPECULAR 0, the lean microcontroller
      * configuration) have no exact route: neither these fields nor the
      * code that fills and reads them (shade_fast.c). */
     /* the exact route, set by stp_shade_fast_prepare (NULL in a struct
      * filled by hand: the fast route always, and no link to shade.c) */
     stp_fix (*exact)(const struct stp_shade_fast *s, const int16_t normal[3], stp_vec3 point);
-    uint8_t exact_always; /* the lighting or the material is outside the
-                             fast route's range: every lit face exact */
-    int32_t fast_min_cos; /* Q30: a face with N.E below it (highlight on)
-                             takes the exact route when a light is nearly
-                             opposite the eye or N.E is below 1/64 of it
-                             (shade_fast.c GRAZE_EXACT); 0: never */
     stp_fix x_bright, x_background, x_c, x_refl, x_refraction, x_gloss, x_ks;
     stp_fix x_power[STP_MAX_LIGHTS];
     stp_vec3 x_dir;       /* parallel: the direction towards the eye */
