@@ -707,16 +707,27 @@ int stp_render_model_normal(const stp_vec3 *v, int n, int16_t out[3])
     return stp_render_unit_q14(a, b, c, out);
 }
 
+/* r->frame for the transforms in force (once after either changes). */
+STP_NOINLINE void model_frame_prepare(stp_renderer *r)
+{
+    if (r->projection != STP_PERSPECTIVE)
+        r->frame.usable = 0;
+    else
+        (void)stp_model_frame_make(&r->to_view, r->from, r->model_on ? &r->model : 0, &r->frame);
+    r->frame_valid = 1;
+}
+
+/* stp_render_model_frame, inline for a polygon's entry */
+STP_HOT_INLINE const stp_model_frame *model_frame(stp_renderer *r)
+{
+    if (!r->frame_valid)
+        model_frame_prepare(r);
+    return r->frame.usable ? &r->frame : 0;
+}
+
 const stp_model_frame *stp_render_model_frame(stp_renderer *r)
 {
-    if (!r->frame_valid) {
-        if (r->projection != STP_PERSPECTIVE)
-            r->frame.usable = 0;
-        else
-            (void)stp_model_frame_make(&r->to_view, r->from, r->model_on ? &r->model : 0, &r->frame);
-        r->frame_valid = 1;
-    }
-    return r->frame.usable ? &r->frame : 0;
+    return model_frame(r);
 }
 
 void stp_render_face_shader_prepare(stp_renderer *r, int parallel)
@@ -1445,7 +1456,7 @@ static const stp_model_frame *model_route(stp_renderer *r)
 #endif
     if (r->colour)
         return 0;
-    return stp_render_model_frame(r);
+    return model_frame(r);
 }
 
 #if STP_NARROW_FORMS
