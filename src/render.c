@@ -603,21 +603,23 @@ static int clip_polygon(stp_renderer *r, int n, int smooth, stp_vec3 **result, s
  * one perspective projection (view.c), or the parallel one. */
 static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
 {
-    int64_t x, y;
-    int64_t wq = (int64_t)r->width << STP_SUBPIXEL_BITS, hq = (int64_t)r->height << STP_SUBPIXEL_BITS;
+    int64_t x, y, wq, hq;
     if (r->projection == STP_PERSPECTIVE) {
         stp_view_lens lens;
         int32_t d[3];
         lens.focal = r->focal;
         lens.hither = r->hither;
-        lens.half_width = (int32_t)(wq / 2);
-        lens.half_height = (int32_t)(hq / 2);
+        /* width, height <= 32767 (stp_renderer_create): in int32 */
+        lens.half_width = (int32_t)r->width << (STP_SUBPIXEL_BITS - 1);
+        lens.half_height = (int32_t)r->height << (STP_SUBPIXEL_BITS - 1);
         stp_view_perspective_device(&lens, &p, d);
         out->x = d[0];
         out->y = d[1];
         out->z = d[2];
         return;
     }
+    wq = (int64_t)r->width << STP_SUBPIXEL_BITS;
+    hq = (int64_t)r->height << STP_SUBPIXEL_BITS;
     x = wq / 2 + stp_asr64((int64_t)r->focal * p.x, 2 * F - STP_SUBPIXEL_BITS);
     y = hq / 2 - stp_asr64((int64_t)r->focal * p.y, 2 * F - STP_SUBPIXEL_BITS);
     out->z = -p.z;
