@@ -852,6 +852,13 @@ typedef struct stp_entry {
     const stp_instr *projected; /* an unclipped polygon's device vertices, or NULL */
 } stp_entry;
 
+/* A build for size: a triangle's steps are not unrolled apart. */
+#if defined(__OPTIMIZE_SIZE__)
+#define STP_SIZE_BUILD 1
+#else
+#define STP_SIZE_BUILD 0
+#endif
+
 /* Step 1: the vertices to view coordinates (r->clip_a), through the
  * vertex cache when there is one, and whether one of them saturated.  A
  * cache entry this polygon already holds is never taken by a later vertex
@@ -860,10 +867,9 @@ typedef struct stp_entry {
  * found with its view coordinates (a later polygon sharing the vertex is
  * likely to face the eye and need it), so the polygon's outcodes are
  * known here. */
-static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e)
+STP_HOT_INLINE void enter_transform_n(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e, const int n)
 {
     int i;
-    const int n = e->n;
     unsigned range = 0;
 #if STP_VERTEX_CACHE
     /* locals: the stores below may alias r's fields for the compiler */
@@ -917,6 +923,11 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
     }
 #endif
     e->range = range != 0;
+}
+
+static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e)
+{
+    enter_transform_n(r, vertices, e, e->n);
 }
 
 #if !STP_VERTEX_CACHE
@@ -1641,7 +1652,10 @@ STP_NOINLINE int enter_model_front(stp_renderer *r, const stp_vec3 *vertices, in
     e.n = count;
     e.shading = STP_ENTER_FLAT;
     e.projected = 0;
-    enter_transform(r, vertices, &e);
+    if (count == 3 && !STP_SIZE_BUILD)
+        enter_transform_n(r, vertices, &e, 3); /* a triangle's: unrolled */
+    else
+        enter_transform(r, vertices, &e);
     if (e.range)
         return STP_ERR_RANGE;
 #if !STP_VERTEX_CACHE
