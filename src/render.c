@@ -1614,11 +1614,14 @@ static int enter_model_triangle(stp_renderer *r, stp_entry *e, const stp_model_f
         const stp_vec3 *v = r->clip_a;
         /* where 32 x 32 -> 64 products are library calls and 32-bit
          * ones are not, view points below 2^28 (the usual) take mesh
-         * entry's 32-bit quotient */
+         * entry's 32-bit quotient: tested as each in [-2^27, 2^27), one
+         * addition each */
+        const uint32_t half = (uint32_t)1 << 27;
         int small = STP_NARROW_FORMS &&
-                    (stp_abs32(v[0].x) | stp_abs32(v[0].y) | stp_abs32(v[0].z) | stp_abs32(v[1].x) |
-                     stp_abs32(v[1].y) | stp_abs32(v[1].z) | stp_abs32(v[2].x) | stp_abs32(v[2].y) |
-                     stp_abs32(v[2].z)) < ((uint32_t)1 << 28);
+                    (((uint32_t)v[0].x + half) | ((uint32_t)v[0].y + half) | ((uint32_t)v[0].z + half) |
+                     ((uint32_t)v[1].x + half) | ((uint32_t)v[1].y + half) | ((uint32_t)v[1].z + half) |
+                     ((uint32_t)v[2].x + half) | ((uint32_t)v[2].y + half) | ((uint32_t)v[2].z + half)) <
+                        2 * half;
         centre.x = stp_render_average3(small, v[0].x, v[1].x, v[2].x);
         centre.y = stp_render_average3(small, v[0].y, v[1].y, v[2].y);
         centre.z = stp_render_average3(small, v[0].z, v[1].z, v[2].z);
