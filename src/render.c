@@ -1683,7 +1683,7 @@ STP_NOINLINE int enter_model_front(stp_renderer *r, const stp_vec3 *vertices, in
 static int enter_model_face(stp_renderer *r, const stp_vec3 *vertices, int count,
                             const stp_model_frame *f)
 {
-    int16_t n[3] = {0, 0, 0};
+    int16_t n[3];
     int side = 0, found = model_normal_and_side(r, vertices, count, f, n, &side);
     if (found != 1)
         return found == 0 ? STP_OK : found;
