@@ -693,6 +693,19 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
  * depth_scale = floor(65534 2^12 2^s / range) < 2^29 with 2^s > range (s =
  * depth_shift), so u depth_scale / 2^s is less than one short of the
  * quotient and one correction makes it exact. */
+#if !STP_WIDE_ARITH
+/* key_quotient for key ranges of 2^31 or more (depth_shift 32): out of
+ * line, so the common case's call saves no high registers for it */
+STP_NOINLINE uint32_t key_quotient_wide(const frame *fr, uint32_t u)
+{
+    uint64_t num = stp_umul32x32(u, (uint32_t)65534 << 12);
+    uint32_t q = (uint32_t)(stp_umul32x32(u, fr->depth_scale) >> fr->depth_shift);
+    if (stp_umul32x32(q + 1u, fr->key_range) <= num)
+        q++;
+    return q;
+}
+#endif
+
 static uint32_t key_quotient(const frame *fr, uint32_t u)
 {
     const uint32_t k = (uint32_t)65534 << 12;
@@ -700,19 +713,14 @@ static uint32_t key_quotient(const frame *fr, uint32_t u)
     return (uint32_t)(stp_umul32x32(u, k) / fr->key_range);
 #else
     uint32_t q;
-    if (fr->depth_shift < 32) {
-        /* u < 2^s: u 2^(32 - s) < 2^32, and its high product word is the
-         * estimate; the remainder u k - q range is in [0, 2 range), below
-         * 2^32 (range < 2^31 here), so its 32-bit wrap is exact */
-        q = stp_umulhi32x32(u << (32 - fr->depth_shift), fr->depth_scale);
-        if (u * k - q * fr->key_range >= fr->key_range)
-            q++;
-    } else {
-        uint64_t num = stp_umul32x32(u, k);
-        q = (uint32_t)(stp_umul32x32(u, fr->depth_scale) >> fr->depth_shift);
-        if (stp_umul32x32(q + 1u, fr->key_range) <= num)
-            q++;
-    }
+    if (fr->depth_shift >= 32)
+        return key_quotient_wide(fr, u);
+    /* u < 2^s: u 2^(32 - s) < 2^32, and its high product word is the
+     * estimate; the remainder u k - q range is in [0, 2 range), below
+     * 2^32 (range < 2^31 here), so its 32-bit wrap is exact */
+    q = stp_umulhi32x32(u << (32 - fr->depth_shift), fr->depth_scale);
+    if (u * k - q * fr->key_range >= fr->key_range)
+        q++;
     return q;
 #endif
 }
@@ -743,7 +751,7 @@ static inline int32_t depth_q12(frame *fr, int32_t key)
 {
 #if KEY_CACHE > 0
     const key_mapping *m = &fr->cached[KEY_SLOT(key)];
-    if (m->key == key && m->q12 != 0)
+    if (m->key == key) /* every slot holds a true mapping (render_prepare_fill) */
         return m->q12;
     return depth_q12_keep(fr, key);
 #else
@@ -1747,8 +1755,12 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
 #endif
     }
 #if KEY_CACHE > 0
-    for (i = 0; i < KEY_CACHE; i++)
-        fr->cached[i].q12 = 0;
+    /* each slot starts as key_min's mapping: right wherever it is found,
+     * so a lookup tests the key alone */
+    fr->cached[0].key = fr->key_min;
+    fr->cached[0].q12 = depth_q12_made(fr, fr->key_min);
+    for (i = 1; i < KEY_CACHE; i++)
+        fr->cached[i] = fr->cached[0];
 #endif
     fr->mono_fill = one_bit(port->format) && fr->cell->kind == STP_CELL_THRESHOLD &&
                     fr->cell->width > 0 && 8u % fr->cell->width == 0 && fr->cell->height > 0 &&
