@@ -695,8 +695,13 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
  * quotient and one correction makes it exact. */
 #if !STP_WIDE_ARITH
 /* key_quotient for key ranges of 2^31 or more (depth_shift 32): out of
- * line, so the common case's call saves no high registers for it */
+ * line where speed comes first, so the common case's call saves no high
+ * registers for it (inline in builds for size: one call less) */
+#if defined(__OPTIMIZE_SIZE__)
+static uint32_t key_quotient_wide(const frame *fr, uint32_t u)
+#else
 STP_NOINLINE uint32_t key_quotient_wide(const frame *fr, uint32_t u)
+#endif
 {
     uint64_t num = stp_umul32x32(u, (uint32_t)65534 << 12);
     uint32_t q = (uint32_t)(stp_umul32x32(u, fr->depth_scale) >> fr->depth_shift);
@@ -1755,12 +1760,14 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
 #endif
     }
 #if KEY_CACHE > 0
-    /* each slot starts as key_min's mapping: right wherever it is found,
-     * so a lookup tests the key alone */
-    fr->cached[0].key = fr->key_min;
-    fr->cached[0].q12 = depth_q12_made(fr, fr->key_min);
-    for (i = 1; i < KEY_CACHE; i++)
-        fr->cached[i] = fr->cached[0];
+    /* each slot starts as key_max's mapping, 65535 2^12 (depth_q12_made's:
+     * u = range gives quotient 65534 2^12 exactly; with no range every key
+     * maps there), right wherever it is found, so a lookup tests the key
+     * alone */
+    for (i = 0; i < KEY_CACHE; i++) {
+        fr->cached[i].key = fr->key_max;
+        fr->cached[i].q12 = (int32_t)65535 << 12;
+    }
 #endif
     fr->mono_fill = one_bit(port->format) && fr->cell->kind == STP_CELL_THRESHOLD &&
                     fr->cell->width > 0 && 8u % fr->cell->width == 0 && fr->cell->height > 0 &&
