@@ -800,7 +800,7 @@ static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, 
  * trunc(-a 4096 / c) and trunc(-b 4096 / c) for |a|, |b| < 2^19 and c !=
  * 0: quotients of 32-bit magnitudes (n = |a| 4096 < 2^31, so they fit
  * int32), both from one reciprocal r = floor((2^32 - 1) / |c|)
- * (stp_quotient_by_recip): a 32-bit division is a ~130-instruction library
+ * (stp_quotient_q12_by_recip): a 32-bit division is a ~130-instruction library
  * call on ARMv6-M. */
 static void gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t *gb)
 {
@@ -808,8 +808,8 @@ static void gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_
              uc = c < 0 ? 0u - (uint32_t)c : (uint32_t)c, qa = ua, qb = ub;
     if (uc > 1) {
         uint32_t r = 0xFFFFFFFFu / uc;
-        qa = stp_quotient_by_recip(ua, uc, r);
-        qb = stp_quotient_by_recip(ub, uc, r);
+        qa = stp_quotient_q12_by_recip(ua, uc, r);
+        qb = stp_quotient_q12_by_recip(ub, uc, r);
     }
     /* -a and c of opposite signs: negative */
     *ga = (a > 0) == (c > 0) ? -(int64_t)qa : (int64_t)qa;
