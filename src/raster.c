@@ -994,7 +994,7 @@ static int depth_terms_short(const depth_plane *pl, const stp_instr *v, int32_t 
  * (d_row32), per subpixel in x (gx) and per row (gy_row); else general Q12
  * ones at device x = 0 of the row centre (d_row). */
 typedef struct tri_depth {
-    int64_t d_row;
+    int64_t d_row, d_step; /* d_step: d_row's change a row (general ones, STP_NARROW_FORMS) */
     uint32_t d_row32, gx, gy_row;
     int short_depth;
 } tri_depth;
@@ -1013,6 +1013,10 @@ STP_HOT_INLINE void tri_depth_start(tri_depth *td, const depth_plane *pl, const 
         td->d_row = 0; /* unused: set for the compiler's flow analysis */
     } else {
         td->d_row = pl->dc - mul_wide(pl->ddx, pl->xc) + mul_wide(pl->ddy, yc - pl->yc);
+        /* kept where speed comes first: else the compiler forms it ahead of
+         * the rows' loop, for every triangle, short ones too */
+        if (STP_NARROW_FORMS)
+            td->d_step = pl->ddy * (1 << SUB);
         td->d_row32 = td->gx = td->gy_row = 0; /* unused, likewise */
     }
 }
@@ -1023,7 +1027,7 @@ STP_HOT_INLINE void tri_depth_step(tri_depth *td, const depth_plane *pl)
     if (td->short_depth)
         td->d_row32 += td->gy_row;
     else
-        td->d_row += pl->ddy * (1 << SUB);
+        td->d_row += STP_NARROW_FORMS ? td->d_step : pl->ddy * (1 << SUB);
 }
 
 /* The band row a triangle's direct spans go to (span_z_direct): its Z
