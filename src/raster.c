@@ -994,10 +994,22 @@ static int depth_terms_short(const depth_plane *pl, const stp_instr *v, int32_t 
  * (d_row32), per subpixel in x (gx) and per row (gy_row); else general Q12
  * ones at device x = 0 of the row centre (d_row). */
 typedef struct tri_depth {
-    int64_t d_row, d_step; /* d_step: d_row's change a row (general ones, STP_NARROW_FORMS) */
+    int64_t d_row;
+#if STP_NARROW_FORMS
+    int64_t d_step; /* d_row's change a row (general ones) */
+#endif
     uint32_t d_row32, gx, gy_row;
     int short_depth;
 } tri_depth;
+
+/* the general depths' step a row: kept where speed comes first, else the
+ * compiler forms it ahead of the rows' loop, for every triangle, short
+ * ones too; formed at each step elsewhere (a smaller frame on AVR) */
+#if STP_NARROW_FORMS
+#define TRI_DEPTH_STEP(td, pl) ((void)(pl), (td)->d_step)
+#else
+#define TRI_DEPTH_STEP(td, pl) ((pl)->ddy * (1 << SUB))
+#endif
 
 /* The depths of the triangle v (plane pl, y_extent high) from row centre
  * yc down. */
@@ -1013,10 +1025,9 @@ STP_HOT_INLINE void tri_depth_start(tri_depth *td, const depth_plane *pl, const 
         td->d_row = 0; /* unused: set for the compiler's flow analysis */
     } else {
         td->d_row = pl->dc - mul_wide(pl->ddx, pl->xc) + mul_wide(pl->ddy, yc - pl->yc);
-        /* kept where speed comes first: else the compiler forms it ahead of
-         * the rows' loop, for every triangle, short ones too */
-        if (STP_NARROW_FORMS)
-            td->d_step = pl->ddy * (1 << SUB);
+#if STP_NARROW_FORMS
+        td->d_step = pl->ddy * (1 << SUB);
+#endif
         td->d_row32 = td->gx = td->gy_row = 0; /* unused, likewise */
     }
 }
@@ -1027,7 +1038,7 @@ STP_HOT_INLINE void tri_depth_step(tri_depth *td, const depth_plane *pl)
     if (td->short_depth)
         td->d_row32 += td->gy_row;
     else
-        td->d_row += STP_NARROW_FORMS ? td->d_step : pl->ddy * (1 << SUB);
+        td->d_row += TRI_DEPTH_STEP(td, pl);
 }
 
 /* The band row a triangle's direct spans go to (span_z_direct): its Z
