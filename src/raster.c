@@ -1139,8 +1139,9 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
 
 /* TRIANGLE_PAINT_READY's other case: style's pattern rows kept (use_style's
  * cache), made current without paint_setup's call (a torus's neighbouring
- * faces alternate styles: 190 calls a frame at 128x64). */
-#if STP_PATTERN_CACHE > 0
+ * faces alternate styles: 190 calls a frame at 128x64); not in a build for
+ * size, where the call is the smaller code (lm3s6965: 72 bytes). */
+#if STP_PATTERN_CACHE > 0 && !defined(__OPTIMIZE_SIZE__)
 STP_HOT_INLINE int style_kept(frame *fr, paint style)
 {
     uint32_t slot = (uint32_t)style & (STP_PATTERN_CACHE - 1);
