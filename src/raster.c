@@ -191,6 +191,19 @@ static uint8_t style_code(const frame *fr, paint index)
     return stp_output_style_code(fr->out, fr->r->levels, (int)index);
 }
 
+#if STP_PATTERN_CACHE > 0
+/* Make style, kept in slot, the current pattern style: four byte copies
+ * (compilers merge them). */
+STP_HOT_INLINE void style_from_slot(frame *fr, paint style, uint32_t slot)
+{
+    fr->patterns[0] = fr->cached_rows[slot][0];
+    fr->patterns[1] = fr->cached_rows[slot][1];
+    fr->patterns[2] = fr->cached_rows[slot][2];
+    fr->patterns[3] = fr->cached_rows[slot][3];
+    fr->pattern_style = style;
+}
+#endif
+
 /* Make style the one put_span fills MONO1 spans of from pattern bytes:
  * one byte per cell row, built once for a run of polygons of that style
  * rather than per span. */
@@ -209,12 +222,7 @@ static void use_style(frame *fr, paint style)
                 fr->cached_rows[slot][cy] = cy < fr->cell->height ? stp_halftone_pattern_byte(fr->cell, cy, level) : 0;
             fr->cached_style[slot] = style;
         }
-        /* four byte copies (compilers merge them) */
-        fr->patterns[0] = fr->cached_rows[slot][0];
-        fr->patterns[1] = fr->cached_rows[slot][1];
-        fr->patterns[2] = fr->cached_rows[slot][2];
-        fr->patterns[3] = fr->cached_rows[slot][3];
-        fr->pattern_style = style;
+        style_from_slot(fr, style, slot);
         return;
     }
 #endif
@@ -822,8 +830,15 @@ static void gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_
  * depths (below 2^28) sum below 2^30.  Without wide arithmetic a small
  * triangle (relative x in [-2^14, 2^14), y in [-2^13, 2^13): products
  * below 2^30, so the sums fit int32, and |a|, |b| < 2^19) in 32 bits: no
- * clamp (|a|, |b| < 2^28), the same values. */
-static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
+ * clamp (|a|, |b| < 2^28), the same values.  With wide arithmetic the
+ * body is short (no 32-bit route) and the draw path inlines it: its call
+ * cost a fifth of it (the host's torus). */
+#if STP_WIDE_ARITH
+#define DEPTH_TRIANGLE_FN STP_HOT_INLINE
+#else
+#define DEPTH_TRIANGLE_FN static
+#endif
+DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
 {
     int32_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z), d2 = depth_q12(fr, v[2].z);
     int32_t x1 = v[1].x - v[0].x, y1 = v[1].y - v[0].y, x2 = v[2].x - v[0].x, y2 = v[2].y - v[0].y;
@@ -1118,9 +1133,29 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
 #else
 #define TRIANGLE_SHADOWLESS(fr) 1
 #endif
+#if STP_PATTERN_CACHE > 0 && !defined(__OPTIMIZE_SIZE__)
+#define TRIANGLE_PAINT_READY(fr, style, t)                                                                       \
+    ((t) == 0 && (fr)->pattern_port && !((style)&STP_COLOUR_FLAG) && TRIANGLE_SHADOWLESS(fr) &&                   \
+     ((style) == (fr)->pattern_style || style_kept(fr, style)))
+
+/* TRIANGLE_PAINT_READY's other case: style's pattern rows kept (use_style's
+ * cache), made current without paint_setup's call (a torus's neighbouring
+ * faces alternate styles: 190 calls a frame at 128x64); not in a build for
+ * size, where the call is the smaller code (lm3s6965: 72 bytes), and the
+ * test keeps its order there (ATmega2560: 10 bytes, 260 cycles). */
+STP_HOT_INLINE int style_kept(frame *fr, paint style)
+{
+    uint32_t slot = (uint32_t)style & (STP_PATTERN_CACHE - 1);
+    if (fr->cached_style[slot] != style) /* slots stay empty for taller cells */
+        return 0;
+    style_from_slot(fr, style, slot);
+    return 1;
+}
+#else
 #define TRIANGLE_PAINT_READY(fr, style, t)                                                                       \
     ((t) == 0 && (style) == (fr)->pattern_style && (fr)->pattern_port && !((style)&STP_COLOUR_FLAG) &&            \
      TRIANGLE_SHADOWLESS(fr))
+#endif
 
 #if STP_WITH_ZBUFFER
 /* The rows of tri_draw_z that go straight to the band from w's row (span
@@ -1200,7 +1235,8 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
     if (!stp_tri_walk_start(&v[0], &v[1], &v[2], &fr->rows, &w))
         return;
 #if STP_WITH_ZBUFFER
-    if (use_z && fr->setup && ordinal != UINT32_MAX && w.top->y >= fr->rows.top)
+    /* (setup tested first: one test and branch without kept setups) */
+    if (fr->setup && use_z && ordinal != UINT32_MAX && w.top->y >= fr->rows.top)
         fr->setup[ordinal].centre[0] = SETUP_NOT_MADE; /* its first band: made at the first span */
 #endif
     while (!stp_tri_walk_span(&w, width, &p1, &p2))
