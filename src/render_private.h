@@ -345,12 +345,10 @@ STP_HOT_INLINE void stp_render_put_vertex(stp_instr *out, int32_t op, int32_t x,
 /* The model normal n in view coordinates (Q1.14, rounded), turned to the
  * eye when side <= 0 (the other side of an open surface shows): each row
  * product Q15 x Q14, the sum below 2^29 (1 + rounding), to Q14 rounded
- * (floor of the sum plus a half: >> of a negative value is
- * implementation-defined, so the shift is taken on a value made positive). */
+ * (floor of the sum plus a half: stp_asr32, one shift on ARMv6-M). */
 STP_HOT_INLINE int16_t stp_render_view_normal_row(const int32_t row[3], const int16_t n[3], int side)
 {
-    int32_t s = row[0] * n[0] + row[1] * n[1] + row[2] * n[2] + ((int32_t)1 << 14);
-    s = (int32_t)(((uint32_t)s + ((uint32_t)1 << 30)) >> 15) - ((int32_t)1 << 15);
+    int32_t s = stp_asr32(row[0] * n[0] + row[1] * n[1] + row[2] * n[2] + ((int32_t)1 << 14), 15);
     return (int16_t)(side > 0 ? s : -s);
 }
 

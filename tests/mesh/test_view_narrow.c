@@ -197,6 +197,43 @@ static void test_perspective_edges(void **state)
     }
 }
 
+/* The offsets where floor(focal |x| / z) is at or near a multiple of
+ * 2^(F - STP_SUBPIXEL_BITS) (the 32-bit form's estimate decides the
+ * offset without its correction only away from those, and must agree with
+ * the exact quotient there): points whose quotient is that multiple plus
+ * -8..8, either sign, random focal lengths and depths. */
+static void test_perspective_subpixel_edges(void **state)
+{
+    const int64_t unit = (int64_t)1 << (STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
+    int i, d;
+    (void)state;
+    for (i = 0; i < 20000; i++) {
+        stp_fix focal = (stp_fix)(1 + next_random() % (1u << (i % 3 == 0 ? 30 : 24)));
+        stp_fix hither = (stp_fix)(1 + next_random() % (1u << 12));
+        int32_t z = (int32_t)(hither + (int32_t)(next_random() % (1u << (4 + i % 25))));
+        int64_t k = (int64_t)(next_random() % (1u << (4 + i % 16)));
+        for (d = -8; d <= 8; d++) {
+            /* the least x with floor(focal x / z) >= k unit + d */
+            int64_t target = k * unit + d, x;
+            stp_vec3 p;
+            if (target < 0)
+                continue;
+            x = (target * z + focal - 1) / focal;
+            if (x >= INT32_MAX)
+                continue;
+            p.x = (int32_t)x;
+            p.y = -(int32_t)x;
+            p.z = z;
+            check_perspective(focal, hither, p);
+            if (x > 0) {
+                p.x = (int32_t)x - 1;
+                p.y = 1 - (int32_t)x;
+                check_perspective(focal, hither, p);
+            }
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -204,6 +241,7 @@ int main(void)
         cmocka_unit_test(test_edges),
         cmocka_unit_test(test_perspective),
         cmocka_unit_test(test_perspective_edges),
+        cmocka_unit_test(test_perspective_subpixel_edges),
     };
     return cmocka_run_group_tests(tests, 0, 0);
 }
