@@ -90,6 +90,50 @@ static void test_exact(void **state)
     assert_true(small > 100000 && small < 1900000);
 }
 
+/* Axes of squared length up to 5 2^30 (view.c's short form for a unit
+ * transform) and just past it, points up to the short form's edges
+ * (-2^28 and 2^28 - 1 per coordinate, signs with and against the axis)
+ * and eyes below and at the narrow bound: the same values as the 64-bit
+ * formula, and the short form was taken. */
+static void test_unit_axes(void **state)
+{
+    static const int32_t ends[] = {-(1 << 28), (1 << 28) - 1, -(1 << 28) + 1, (1 << 28) - 16385, 16383, -16384, 0};
+    long i, unit = 0;
+    (void)state;
+    for (i = 0; i < 400000; i++) {
+        stp_view_transform t;
+        stp_vec3 p, out, axis[3], from;
+        int k;
+        for (k = 0; k < 3; k++) {
+            /* a random direction scaled to about 73271 (sqrt(5 2^30)), or
+             * one component that large */
+            int32_t big = 73271 + (int32_t)(next_random() % 5u) - 2;
+            if (next_random() % 3u == 0) {
+                axis[k].x = (next_random() & 1u) ? big : -big;
+                axis[k].y = (int32_t)(next_random() % 9u) - 4;
+                axis[k].z = 0;
+            } else {
+                axis[k].x = (int32_t)(next_random() % 84601u) - 42300;
+                axis[k].y = (int32_t)(next_random() % 84601u) - 42300;
+                axis[k].z = (int32_t)(next_random() % 84601u) - 42300;
+            }
+        }
+        from.x = (int32_t)(next_random() % 0x20000001u) - 0x10000000;
+        from.y = i % 5 == 0 ? INT32_MAX : (int32_t)(next_random() % 0x20000001u) - 0x10000000;
+        from.z = (int32_t)(next_random() % 0x20000001u) - 0x10000000;
+        stp_view_transform_of_axes(axis[0], axis[1], axis[2], from, &t);
+        unit += t.unit;
+        p.x = (next_random() & 1u) ? ends[next_random() % 7u] : random_coordinate();
+        p.y = (next_random() & 1u) ? ends[next_random() % 7u] : random_coordinate();
+        p.z = (next_random() & 1u) ? ends[next_random() % 7u] : random_coordinate();
+        stp_view_transform_point(&t, p, &out);
+        assert_int_equal(out.x, reference(p, t.right, t.from_right));
+        assert_int_equal(out.y, reference(p, t.up, t.from_up));
+        assert_int_equal(out.z, reference(p, t.forward, t.from_forward));
+    }
+    assert_true(unit > 10000 && unit < 390000);
+}
+
 /* The 32-bit difference of a point below 2^28 and an eye within int32
  * at its edges: exactly -2^31 (saturated to STP_FIX_MIN, -(2^31 - 1)),
  * wrapping below and above int32, and just inside it. */
@@ -239,6 +283,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_exact),
         cmocka_unit_test(test_edges),
+        cmocka_unit_test(test_unit_axes),
         cmocka_unit_test(test_perspective),
         cmocka_unit_test(test_perspective_edges),
         cmocka_unit_test(test_perspective_subpixel_edges),
