@@ -319,20 +319,19 @@ static int enter_faces(mesh_context *c, uint16_t count)
 static int check_mesh(const stp_renderer *r, const stp_mesh *mesh, const stp_mesh_vertex *scratch,
                       size_t scratch_count)
 {
-    uint32_t i, n;
+    const uint16_t *k, *end;
+    uint16_t count;
     if (r == 0 || mesh == 0 || scratch == 0 || scratch_count < mesh->vertex_count)
         return STP_ERR_ARG;
     if (mesh->triangle_count == 0)
         return STP_OK;
     if (mesh->vertices == 0 || mesh->triangles == 0)
         return STP_ERR_ARG;
-    n = 3 * (uint32_t)mesh->triangle_count;
-    for (i = 0; i < n; i += 3) {
-        const uint16_t *k = &mesh->triangles[i];
-        if (k[0] >= mesh->vertex_count || k[1] >= mesh->vertex_count ||
-            k[2] >= mesh->vertex_count)
+    count = mesh->vertex_count;
+    end = mesh->triangles + 3 * (uint32_t)mesh->triangle_count;
+    for (k = mesh->triangles; k != end; k += 3)
+        if (k[0] >= count || k[1] >= count || k[2] >= count)
             return STP_ERR_ARG;
-    }
     return STP_OK;
 }
 
