@@ -339,7 +339,8 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
                       size_t scratch_count)
 {
     mesh_context c;
-    uint16_t t, v, count;
+    stp_mesh_vertex *sv, *end;
+    uint16_t t, count;
     int status = check_mesh(r, mesh, scratch, scratch_count), fast;
     if (status != STP_OK)
         return status;
@@ -359,8 +360,8 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
     if (!fast)
         return STP_ERR_UNSUPPORTED;
 #endif
-    for (v = 0; v < mesh->vertex_count; v++)
-        scratch[v].state = STATE_NEW;
+    for (sv = scratch, end = scratch + mesh->vertex_count; sv != end; sv++)
+        sv->state = STATE_NEW;
     count = mesh->triangle_count; /* once: the stores below may alias the mesh */
     /* one loop per route: no choice per triangle */
     if (fast) {
