@@ -78,6 +78,25 @@ int stp_view_frame_make(const stp_view *v, uint32_t width, uint32_t height, stp_
     return STP_OK;
 }
 
+#if STP_NARROW_FORMS && F == 16
+/* Whether axis a (|a_i| < 2^17) is short enough for the short form
+ * (view_private.h's unit): a^2 <= 5 2^30, tested in 32 bits on b_i =
+ * floor(|a_i| / 4) + 1 > |a_i| / 4 (each at most 2^15, its square at most
+ * 2^30, the sum below 2^32): sum b_i^2 <= 5 2^26 implies it. */
+static int unit_axis(const int32_t a[3])
+{
+    uint32_t sum = 0;
+    int i;
+    for (i = 0; i < 3; i++) {
+        uint32_t b = (stp_abs32(a[i]) >> 2) + 1u;
+        if (b > ((uint32_t)1 << 15))
+            return 0; /* |a_i| >= 2^17 */
+        sum += b * b;
+    }
+    return sum <= ((uint32_t)5 << 26);
+}
+#endif
+
 /* The 32-bit form's halves (view_private.h's stp_view_axis32), and
  * whether every |from_high| is below 2^28 (view.c's
  * stp_view_transform_point then sums in 32 bits). */
@@ -108,8 +127,12 @@ static void split_from(stp_view_transform *out)
         a[0] = axis[k]->x;
         a[1] = axis[k]->y;
         a[2] = axis[k]->z;
-        if ((int64_t)a[0] * a[0] + (int64_t)a[1] * a[1] + (int64_t)a[2] * a[2] > ((int64_t)5 << 30))
+#if STP_NARROW_FORMS && F == 16
+        if (!unit_axis(a))
             out->unit = 0;
+#else
+        out->unit = 0; /* no short form (builds for size: less code) */
+#endif
         for (i = 0; i < 3; i++) {
             int32_t low = (int32_t)(((uint32_t)a[i] & 0x7FFFu) ^ 0x4000u) - 0x4000;
             h->low[i] = (stp_view_half)low;
@@ -359,7 +382,7 @@ STP_HOT_INLINE stp_fix axis_coordinate(const point_halves *p, const stp_vec3 *a,
     return finish_coordinate(p, a, x, from, narrow, small, r);
 }
 
-#if F == 16
+#if STP_NARROW_FORMS && F == 16
 /* The short form of axis_coordinate for a unit transform (view_private.h:
  * |a| <= sqrt(5 / 4) 2^16) and every p_i in [-2^28, 2^28): with p_i = h_i
  * 2^14 + l_i (h_i in [-2^14, 2^14), l_i in [0, 2^14)), H = sum h_i a_i and
@@ -392,7 +415,7 @@ void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 
     /* every p_i in [-2^28, 2^28) */
     int small = (((uint32_t)p.x + 0x10000000u) | ((uint32_t)p.y + 0x10000000u) | ((uint32_t)p.z + 0x10000000u)) <
                 0x20000000u;
-#if F == 16
+#if STP_NARROW_FORMS && F == 16
     if (t->unit && small) {
         /* unit_coordinate's halves */
         int32_t h[3], l[3];
