@@ -255,10 +255,12 @@ static inline uint32_t stp_umulhi32x32(uint32_t a, uint32_t b)
 #if STP_HAVE_MUL64 || !STP_HAVE_MUL32 /* as stp_umul32x32 */
     return (uint32_t)(((uint64_t)a * b) >> 32);
 #else
+    /* the middle products added one at a time, each sum below 2^32
+     * (2^16 + (2^16 - 1)^2): fewer values live at once */
     uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-    uint32_t lh = al * bh, hl = ah * bl;
-    uint32_t mid = ((al * bl) >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
-    return ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+    uint32_t t = ((al * bl) >> 16) + al * bh;
+    uint32_t u = (t & 0xFFFFu) + ah * bl;
+    return ah * bh + (t >> 16) + (u >> 16);
 #endif
 }
 
@@ -266,12 +268,11 @@ static inline uint32_t stp_umulhi32x32(uint32_t a, uint32_t b)
  * instructions on ARMv6-M).  With a 64-bit product: u ceil(2^33 / 3) /
  * 2^33 (0xAAAAAAAB exceeds 2^33 / 3 by 1/3, and that times u / 2^33 < 1/2
  * stays below the 1/3 gap to the next integer).  Without one, from 32-bit
- * products: stp_div3_u30 for u < 2^30 (a coordinate sum's size): u = h
- * 2^15 + l with 2^15 = 3 10922 + 2 gives floor(u / 3) = 10922 h +
- * floor(t / 3), t = 2 h + l < 3 2^15; t = th 2^14 + tl with 2^14 = 3 5461
- * + 1 gives floor(t / 3) = 5461 th + floor(x / 3), x = th + tl < 2^14 + 6;
- * and for x < 2^15, (x 21846) >> 16 = floor(x / 3 + x / 98304) is
- * floor(x / 3) (x / 98304 < 1/3): three products, no branch.
+ * products: stp_div3_u30 for u < 2^30 (a coordinate sum's size): u = a
+ * 2^14 + b with 2^14 = 3 5461 + 1 gives floor(u / 3) = 5461 a +
+ * floor(x / 3), x = a + b < 2^16 + 2^14; and for x < 2^17, (x 0xAAAB) >>
+ * 17 = floor(x / 3 + x / (3 2^17)) is floor(x / 3) (the excess below 1/3),
+ * the product below 1.25 2^16 0xAAAB < 2^32: two products, no branch.
  * stp_div3_u32 takes any u: below 2^16 one product ((u 0xAAAB) >> 17:
  * 3 0xAAAB = 2^17 + 1, the excess u / (3 2^17) below 1/3), up to 2^30
  * stp_div3_u30, beyond the 64-bit product from halves out of line
@@ -281,8 +282,8 @@ static inline uint32_t stp_div3_u30(uint32_t u)
 #if STP_HAVE_MUL64
     return (uint32_t)(stp_umul32x32(u, 0xAAAAAAABu) >> 33);
 #else
-    uint32_t h = u >> 15, t = 2u * h + (u & 0x7FFFu), th = t >> 14;
-    return 10922u * h + 5461u * th + (((th + (t & 0x3FFFu)) * 21846u) >> 16);
+    uint32_t a = u >> 14;
+    return 5461u * a + (((a + (u & 0x3FFFu)) * 0xAAABu) >> 17);
 #endif
 }
 

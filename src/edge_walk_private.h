@@ -20,14 +20,24 @@
 #include "recip_private.h" /* STP_WIDE_ARITH; a test defines it 0 to check the narrow arithmetic on the host */
 #include "div64_private.h" /* STP_DIV64 */
 
-/* floor(n / d) for n < 2^31 and 2 <= d < 2^31 from r = floor((2^32 - 1) /
- * d): r > (2^32 - d) / d, so n r / 2^32 lies less than n / 2^32 < 1/2
- * below n / d and not above it; its floor is the quotient or one short,
- * and the remainder (below 2 d < 2^32) corrects it.  One division (r)
- * serves every n with the same d. */
-static inline uint32_t stp_quotient_by_recip(uint32_t n, uint32_t d, uint32_t r)
+/* floor(n / d) for n = a 2^12, a < 2^19, and 2 <= d < 2^31 from r =
+ * floor((2^32 - 1) / d) (< 2^31): n < 2^31 and r > (2^32 - d) / d, so n r
+ * / 2^32 lies less than n / 2^32 < 1/2 below n / d and not above it; its
+ * floor is the quotient or one short, and the remainder (below 2 d <
+ * 2^32) corrects it.  One division (r) serves every n with the same d.
+ * floor(n r / 2^32) = floor(a r / 2^20) from 32-bit products, n's twelve
+ * zero bits spared: r = rh 2^20 + rl and a = ah 2^12 + al give a rh (<
+ * 2^30) plus floor((ah rl 2^12 + al rl) / 2^20) = floor((ah rl + floor(al
+ * rl / 2^12)) / 2^8), ah rl < 2^27 and al rl < 2^32: three products where
+ * the high word of a full 32 x 32-bit one takes four (STP_NARROW_FORMS;
+ * builds for size keep the product every caller shares). */
+static inline uint32_t stp_quotient_q12_by_recip(uint32_t n, uint32_t d, uint32_t r)
 {
+#if STP_NARROW_FORMS
+    uint32_t rl = r & 0xFFFFFu, a = n >> 12, q = a * (r >> 20) + (((a >> 12) * rl + (((a & 0xFFFu) * rl) >> 12)) >> 8);
+#else
     uint32_t q = stp_umulhi32x32(n, r);
+#endif
     return n - q * d >= d ? q + 1u : q;
 }
 

@@ -26,6 +26,8 @@
 typedef struct mesh_context {
     stp_renderer *r;
     const stp_mesh *mesh;
+    const stp_vec3 *vertices; /* mesh->vertices */
+    int cull; /* back faces are removed (r->backface_removal) */
     stp_mesh_vertex *scratch;
     const stp_model_frame *frame; /* the face stage's (render_private.h) */
     /* the eye in model coordinates, floor-shifted right by `shift`, so
@@ -201,11 +203,11 @@ static void vertex_project(const mesh_context *c, stp_mesh_vertex *s)
     s->state |= PROJECTED;
 }
 
-/* Triangle t through stp_renderer_polygon (mesh.h: the fallback). */
-static int enter_fallback(const mesh_context *c, uint16_t t)
+/* The triangle of indices k through stp_renderer_polygon (mesh.h: the
+ * fallback). */
+static int enter_fallback(const mesh_context *c, const uint16_t *k)
 {
 #if STP_WITH_MESH_FALLBACK
-    const uint16_t *k = &c->mesh->triangles[3 * (uint32_t)t];
     stp_vec3 v[3];
     v[0] = c->mesh->vertices[k[0]];
     v[1] = c->mesh->vertices[k[1]];
@@ -213,7 +215,7 @@ static int enter_fallback(const mesh_context *c, uint16_t t)
     return stp_renderer_polygon(c->r, v, 3);
 #else
     (void)c;
-    (void)t;
+    (void)k;
     return STP_ERR_UNSUPPORTED;
 #endif
 }
@@ -251,20 +253,17 @@ static int face_side(const mesh_context *c, const int16_t *n, const stp_vec3 *a)
     return stp_render_face_side(c->frame, n, *a);
 }
 
-/* Triangle t on the fast path. */
-static int enter_face(mesh_context *c, uint16_t t)
+/* The triangle of indices k and normal n on the fast path, not removed as
+ * a back face (face_side's side: enter_faces). */
+static int enter_face(mesh_context *c, const uint16_t *k, const int16_t *n, int side)
 {
     stp_renderer *r = c->r;
-    const uint16_t *k = &c->mesh->triangles[3 * (uint32_t)t];
-    const int16_t *n = &c->mesh->normals[3 * (uint32_t)t];
     stp_mesh_vertex *s[3];
     int16_t nv[3];
     int32_t code0, code1, code2, all, any;
     stp_vec3 centre;
-    int style, side = face_side(c, n, &c->mesh->vertices[k[0]]);
+    int style;
     r->last_shade = -1;
-    if (side <= 0 && r->backface_removal)
-        return STP_OK; /* a back face (or edge-on): removed */
     s[0] = &c->scratch[k[0]];
     s[1] = &c->scratch[k[1]];
     s[2] = &c->scratch[k[2]];
@@ -278,7 +277,7 @@ static int enter_face(mesh_context *c, uint16_t t)
     if (all != 0)
         return STP_OK; /* wholly outside one plane */
     if (any != 0)
-        return enter_fallback(c, t); /* crosses a plane: to be clipped */
+        return enter_fallback(c, k); /* crosses a plane: to be clipped */
     if ((s[0]->state & PROJECTED) == 0)
         vertex_project(c, s[0]);
     if ((s[1]->state & PROJECTED) == 0)
@@ -296,24 +295,43 @@ static int enter_face(mesh_context *c, uint16_t t)
     return store_face(c, s, style);
 }
 
+/* The fast path's loop over count triangles, by pointers to their indices
+ * and normals: a back face (or edge-on one) is removed before enter_face
+ * (and its last_shade is -1 as there). */
+static int enter_faces(mesh_context *c, uint16_t count)
+{
+    const uint16_t *k = c->mesh->triangles, *end = k + 3 * (uint32_t)count;
+    const int16_t *n = c->mesh->normals;
+    int status;
+    for (; k != end; k += 3, n += 3) {
+        int side = face_side(c, n, &c->vertices[k[0]]);
+        if (side <= 0 && c->cull) {
+            c->r->last_shade = -1; /* removed: stp_renderer_last_shade */
+            continue;
+        }
+        if ((status = enter_face(c, k, n, side)) != STP_OK)
+            return status;
+    }
+    return STP_OK;
+}
+
 /* The arguments and every index, before anything is entered. */
 static int check_mesh(const stp_renderer *r, const stp_mesh *mesh, const stp_mesh_vertex *scratch,
                       size_t scratch_count)
 {
-    uint32_t i, n;
+    const uint16_t *k, *end;
+    uint16_t count;
     if (r == 0 || mesh == 0 || scratch == 0 || scratch_count < mesh->vertex_count)
         return STP_ERR_ARG;
     if (mesh->triangle_count == 0)
         return STP_OK;
     if (mesh->vertices == 0 || mesh->triangles == 0)
         return STP_ERR_ARG;
-    n = 3 * (uint32_t)mesh->triangle_count;
-    for (i = 0; i < n; i += 3) {
-        const uint16_t *k = &mesh->triangles[i];
-        if (k[0] >= mesh->vertex_count || k[1] >= mesh->vertex_count ||
-            k[2] >= mesh->vertex_count)
+    count = mesh->vertex_count;
+    end = mesh->triangles + 3 * (uint32_t)mesh->triangle_count;
+    for (k = mesh->triangles; k != end; k += 3)
+        if (k[0] >= count || k[1] >= count || k[2] >= count)
             return STP_ERR_ARG;
-    }
     return STP_OK;
 }
 
@@ -321,7 +339,8 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
                       size_t scratch_count)
 {
     mesh_context c;
-    uint16_t t, v, count;
+    stp_mesh_vertex *sv, *end;
+    uint16_t t, count;
     int status = check_mesh(r, mesh, scratch, scratch_count), fast;
     if (status != STP_OK)
         return status;
@@ -331,6 +350,8 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
         return status;
     c.r = r;
     c.mesh = mesh;
+    c.vertices = mesh->vertices;
+    c.cull = r->backface_removal;
     c.scratch = scratch;
     fast = fast_state(r, mesh) && prepare_call(&c);
     c.shade = fast && r->shading ? stp_render_face_shader(r) : 0;
@@ -339,17 +360,15 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
     if (!fast)
         return STP_ERR_UNSUPPORTED;
 #endif
-    for (v = 0; v < mesh->vertex_count; v++)
-        scratch[v].state = STATE_NEW;
+    for (sv = scratch, end = scratch + mesh->vertex_count; sv != end; sv++)
+        sv->state = STATE_NEW;
     count = mesh->triangle_count; /* once: the stores below may alias the mesh */
     /* one loop per route: no choice per triangle */
     if (fast) {
-        for (t = 0; t < count; t++)
-            if ((status = enter_face(&c, t)) != STP_OK)
-                break;
+        status = enter_faces(&c, count);
     } else {
         for (t = 0; t < count; t++)
-            if ((status = enter_fallback(&c, t)) != STP_OK)
+            if ((status = enter_fallback(&c, &mesh->triangles[3 * (uint32_t)t])) != STP_OK)
                 break;
     }
     /* the open segment ends where the display file does (store_face

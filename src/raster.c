@@ -191,6 +191,19 @@ static uint8_t style_code(const frame *fr, paint index)
     return stp_output_style_code(fr->out, fr->r->levels, (int)index);
 }
 
+#if STP_PATTERN_CACHE > 0
+/* Make style, kept in slot, the current pattern style: four byte copies
+ * (compilers merge them). */
+STP_HOT_INLINE void style_from_slot(frame *fr, paint style, uint32_t slot)
+{
+    fr->patterns[0] = fr->cached_rows[slot][0];
+    fr->patterns[1] = fr->cached_rows[slot][1];
+    fr->patterns[2] = fr->cached_rows[slot][2];
+    fr->patterns[3] = fr->cached_rows[slot][3];
+    fr->pattern_style = style;
+}
+#endif
+
 /* Make style the one put_span fills MONO1 spans of from pattern bytes:
  * one byte per cell row, built once for a run of polygons of that style
  * rather than per span. */
@@ -209,12 +222,7 @@ static void use_style(frame *fr, paint style)
                 fr->cached_rows[slot][cy] = cy < fr->cell->height ? stp_halftone_pattern_byte(fr->cell, cy, level) : 0;
             fr->cached_style[slot] = style;
         }
-        /* four byte copies (compilers merge them) */
-        fr->patterns[0] = fr->cached_rows[slot][0];
-        fr->patterns[1] = fr->cached_rows[slot][1];
-        fr->patterns[2] = fr->cached_rows[slot][2];
-        fr->patterns[3] = fr->cached_rows[slot][3];
-        fr->pattern_style = style;
+        style_from_slot(fr, style, slot);
         return;
     }
 #endif
@@ -693,6 +701,24 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
  * depth_scale = floor(65534 2^12 2^s / range) < 2^29 with 2^s > range (s =
  * depth_shift), so u depth_scale / 2^s is less than one short of the
  * quotient and one correction makes it exact. */
+#if !STP_WIDE_ARITH
+/* key_quotient for key ranges of 2^31 or more (depth_shift 32): out of
+ * line where speed comes first, so the common case's call saves no high
+ * registers for it (inline in builds for size: one call less) */
+#if defined(__OPTIMIZE_SIZE__)
+static uint32_t key_quotient_wide(const frame *fr, uint32_t u)
+#else
+STP_NOINLINE uint32_t key_quotient_wide(const frame *fr, uint32_t u)
+#endif
+{
+    uint64_t num = stp_umul32x32(u, (uint32_t)65534 << 12);
+    uint32_t q = (uint32_t)(stp_umul32x32(u, fr->depth_scale) >> fr->depth_shift);
+    if (stp_umul32x32(q + 1u, fr->key_range) <= num)
+        q++;
+    return q;
+}
+#endif
+
 static uint32_t key_quotient(const frame *fr, uint32_t u)
 {
     const uint32_t k = (uint32_t)65534 << 12;
@@ -700,19 +726,14 @@ static uint32_t key_quotient(const frame *fr, uint32_t u)
     return (uint32_t)(stp_umul32x32(u, k) / fr->key_range);
 #else
     uint32_t q;
-    if (fr->depth_shift < 32) {
-        /* u < 2^s: u 2^(32 - s) < 2^32, and its high product word is the
-         * estimate; the remainder u k - q range is in [0, 2 range), below
-         * 2^32 (range < 2^31 here), so its 32-bit wrap is exact */
-        q = stp_umulhi32x32(u << (32 - fr->depth_shift), fr->depth_scale);
-        if (u * k - q * fr->key_range >= fr->key_range)
-            q++;
-    } else {
-        uint64_t num = stp_umul32x32(u, k);
-        q = (uint32_t)(stp_umul32x32(u, fr->depth_scale) >> fr->depth_shift);
-        if (stp_umul32x32(q + 1u, fr->key_range) <= num)
-            q++;
-    }
+    if (fr->depth_shift >= 32)
+        return key_quotient_wide(fr, u);
+    /* u < 2^s: u 2^(32 - s) < 2^32, and its high product word is the
+     * estimate; the remainder u k - q range is in [0, 2 range), below
+     * 2^32 (range < 2^31 here), so its 32-bit wrap is exact */
+    q = stp_umulhi32x32(u << (32 - fr->depth_shift), fr->depth_scale);
+    if (u * k - q * fr->key_range >= fr->key_range)
+        q++;
     return q;
 #endif
 }
@@ -743,7 +764,7 @@ static inline int32_t depth_q12(frame *fr, int32_t key)
 {
 #if KEY_CACHE > 0
     const key_mapping *m = &fr->cached[KEY_SLOT(key)];
-    if (m->key == key && m->q12 != 0)
+    if (m->key == key) /* every slot holds a true mapping (render_prepare_fill) */
         return m->q12;
     return depth_q12_keep(fr, key);
 #else
@@ -787,7 +808,7 @@ static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, 
  * trunc(-a 4096 / c) and trunc(-b 4096 / c) for |a|, |b| < 2^19 and c !=
  * 0: quotients of 32-bit magnitudes (n = |a| 4096 < 2^31, so they fit
  * int32), both from one reciprocal r = floor((2^32 - 1) / |c|)
- * (stp_quotient_by_recip): a 32-bit division is a ~130-instruction library
+ * (stp_quotient_q12_by_recip): a 32-bit division is a ~130-instruction library
  * call on ARMv6-M. */
 static void gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t *gb)
 {
@@ -795,8 +816,8 @@ static void gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_
              uc = c < 0 ? 0u - (uint32_t)c : (uint32_t)c, qa = ua, qb = ub;
     if (uc > 1) {
         uint32_t r = 0xFFFFFFFFu / uc;
-        qa = stp_quotient_by_recip(ua, uc, r);
-        qb = stp_quotient_by_recip(ub, uc, r);
+        qa = stp_quotient_q12_by_recip(ua, uc, r);
+        qb = stp_quotient_q12_by_recip(ub, uc, r);
     }
     /* -a and c of opposite signs: negative */
     *ga = (a > 0) == (c > 0) ? -(int64_t)qa : (int64_t)qa;
@@ -809,8 +830,15 @@ static void gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_
  * depths (below 2^28) sum below 2^30.  Without wide arithmetic a small
  * triangle (relative x in [-2^14, 2^14), y in [-2^13, 2^13): products
  * below 2^30, so the sums fit int32, and |a|, |b| < 2^19) in 32 bits: no
- * clamp (|a|, |b| < 2^28), the same values. */
-static int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
+ * clamp (|a|, |b| < 2^28), the same values.  With wide arithmetic the
+ * body is short (no 32-bit route) and the draw path inlines it: its call
+ * cost a fifth of it (the host's torus). */
+#if STP_WIDE_ARITH
+#define DEPTH_TRIANGLE_FN STP_HOT_INLINE
+#else
+#define DEPTH_TRIANGLE_FN static
+#endif
+DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
 {
     int32_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z), d2 = depth_q12(fr, v[2].z);
     int32_t x1 = v[1].x - v[0].x, y1 = v[1].y - v[0].y, x2 = v[2].x - v[0].x, y2 = v[2].y - v[0].y;
@@ -982,9 +1010,21 @@ static int depth_terms_short(const depth_plane *pl, const stp_instr *v, int32_t 
  * ones at device x = 0 of the row centre (d_row). */
 typedef struct tri_depth {
     int64_t d_row;
+#if STP_NARROW_FORMS
+    int64_t d_step; /* d_row's change a row (general ones) */
+#endif
     uint32_t d_row32, gx, gy_row;
     int short_depth;
 } tri_depth;
+
+/* the general depths' step a row: kept where speed comes first, else the
+ * compiler forms it ahead of the rows' loop, for every triangle, short
+ * ones too; formed at each step elsewhere (a smaller frame on AVR) */
+#if STP_NARROW_FORMS
+#define TRI_DEPTH_STEP(td, pl) ((void)(pl), (td)->d_step)
+#else
+#define TRI_DEPTH_STEP(td, pl) ((pl)->ddy * (1 << SUB))
+#endif
 
 /* The depths of the triangle v (plane pl, y_extent high) from row centre
  * yc down. */
@@ -1000,6 +1040,9 @@ STP_HOT_INLINE void tri_depth_start(tri_depth *td, const depth_plane *pl, const 
         td->d_row = 0; /* unused: set for the compiler's flow analysis */
     } else {
         td->d_row = pl->dc - mul_wide(pl->ddx, pl->xc) + mul_wide(pl->ddy, yc - pl->yc);
+#if STP_NARROW_FORMS
+        td->d_step = pl->ddy * (1 << SUB);
+#endif
         td->d_row32 = td->gx = td->gy_row = 0; /* unused, likewise */
     }
 }
@@ -1010,7 +1053,7 @@ STP_HOT_INLINE void tri_depth_step(tri_depth *td, const depth_plane *pl)
     if (td->short_depth)
         td->d_row32 += td->gy_row;
     else
-        td->d_row += pl->ddy * (1 << SUB);
+        td->d_row += TRI_DEPTH_STEP(td, pl);
 }
 
 /* The band row a triangle's direct spans go to (span_z_direct): its Z
@@ -1090,9 +1133,29 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
 #else
 #define TRIANGLE_SHADOWLESS(fr) 1
 #endif
+#if STP_PATTERN_CACHE > 0 && !defined(__OPTIMIZE_SIZE__)
+#define TRIANGLE_PAINT_READY(fr, style, t)                                                                       \
+    ((t) == 0 && (fr)->pattern_port && !((style)&STP_COLOUR_FLAG) && TRIANGLE_SHADOWLESS(fr) &&                   \
+     ((style) == (fr)->pattern_style || style_kept(fr, style)))
+
+/* TRIANGLE_PAINT_READY's other case: style's pattern rows kept (use_style's
+ * cache), made current without paint_setup's call (a torus's neighbouring
+ * faces alternate styles: 190 calls a frame at 128x64); not in a build for
+ * size, where the call is the smaller code (lm3s6965: 72 bytes), and the
+ * test keeps its order there (ATmega2560: 10 bytes, 260 cycles). */
+STP_HOT_INLINE int style_kept(frame *fr, paint style)
+{
+    uint32_t slot = (uint32_t)style & (STP_PATTERN_CACHE - 1);
+    if (fr->cached_style[slot] != style) /* slots stay empty for taller cells */
+        return 0;
+    style_from_slot(fr, style, slot);
+    return 1;
+}
+#else
 #define TRIANGLE_PAINT_READY(fr, style, t)                                                                       \
     ((t) == 0 && (style) == (fr)->pattern_style && (fr)->pattern_port && !((style)&STP_COLOUR_FLAG) &&            \
      TRIANGLE_SHADOWLESS(fr))
+#endif
 
 #if STP_WITH_ZBUFFER
 /* The rows of tri_draw_z that go straight to the band from w's row (span
@@ -1172,7 +1235,8 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
     if (!stp_tri_walk_start(&v[0], &v[1], &v[2], &fr->rows, &w))
         return;
 #if STP_WITH_ZBUFFER
-    if (use_z && fr->setup && ordinal != UINT32_MAX && w.top->y >= fr->rows.top)
+    /* (setup tested first: one test and branch without kept setups) */
+    if (fr->setup && use_z && ordinal != UINT32_MAX && w.top->y >= fr->rows.top)
         fr->setup[ordinal].centre[0] = SETUP_NOT_MADE; /* its first band: made at the first span */
 #endif
     while (!stp_tri_walk_span(&w, width, &p1, &p2))
@@ -1747,8 +1811,14 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
 #endif
     }
 #if KEY_CACHE > 0
-    for (i = 0; i < KEY_CACHE; i++)
-        fr->cached[i].q12 = 0;
+    /* each slot starts as key_max's mapping, 65535 2^12 (depth_q12_made's:
+     * u = range gives quotient 65534 2^12 exactly; with no range every key
+     * maps there), right wherever it is found, so a lookup tests the key
+     * alone */
+    for (i = 0; i < KEY_CACHE; i++) {
+        fr->cached[i].key = fr->key_max;
+        fr->cached[i].q12 = (int32_t)65535 << 12;
+    }
 #endif
     fr->mono_fill = one_bit(port->format) && fr->cell->kind == STP_CELL_THRESHOLD &&
                     fr->cell->width > 0 && 8u % fr->cell->width == 0 && fr->cell->height > 0 &&

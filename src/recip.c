@@ -85,7 +85,9 @@ uint32_t stp_recip32_estimate(uint32_t d)
         return 0xFFFFFFFFu; /* 2^64 / d - 2^32 = 2^32 exactly: the floor is one less */
     if (y1 < 0x80000000u)
         y1 = 0x80000000u; /* 2^63 / d > 2^31: clamping moves towards it */
-    p = stp_umul32x32(d, y1);
+    /* d y1 as its high word and low word (cheaper on ARMv6-M than
+     * stp_umul32x32's 64-bit assembly; the same product) */
+    p = ((uint64_t)stp_umulhi32x32(d, y1) << 32) | (uint64_t)(d * y1);
     v = y1 << 1; /* 2 y1 - 2^32 */
     if (p <= ((uint64_t)1 << 63)) {
         uint32_t c = stp_umulhi32_approx(y1, (uint32_t)((((uint64_t)1 << 63) - p) >> 15)) >> 15;

@@ -344,13 +344,32 @@ STP_HOT_INLINE void stp_render_put_vertex(stp_instr *out, int32_t op, int32_t x,
 
 /* The model normal n in view coordinates (Q1.14, rounded), turned to the
  * eye when side <= 0 (the other side of an open surface shows): each row
- * product Q15 x Q14, the sum below 2^29 (1 + rounding), to Q14 rounded
- * (floor of the sum plus a half: >> of a negative value is
- * implementation-defined, so the shift is taken on a value made positive). */
+ * product Q15 x Q14, the sum S below 2^29 (1 + rounding), to Q14 rounded
+ * (floor((S + 2^14) / 2^15): stp_asr32, one shift on ARMv6-M).  Where the
+ * 32-bit forms are taken (STP_NARROW_FORMS: ARMv6-M's -O2) the turned
+ * value -floor((S + 2^14) / 2^15) = floor((-S + 2^14 - 1) / 2^15) is the
+ * same rounding of -n's sum with the half one less, no choice per row;
+ * elsewhere (a 64-bit host, builds for size) each row is turned, the
+ * shorter code there. */
+#if STP_NARROW_FORMS
+STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16_t n[3], int side,
+                                           int16_t nv[3])
+{
+    int32_t n0 = n[0], n1 = n[1], n2 = n[2], half = (int32_t)1 << 14;
+    if (side <= 0) {
+        n0 = -n0;
+        n1 = -n1;
+        n2 = -n2;
+        half--;
+    }
+    nv[0] = (int16_t)stp_asr32(f->rot[0][0] * n0 + f->rot[0][1] * n1 + f->rot[0][2] * n2 + half, 15);
+    nv[1] = (int16_t)stp_asr32(f->rot[1][0] * n0 + f->rot[1][1] * n1 + f->rot[1][2] * n2 + half, 15);
+    nv[2] = (int16_t)stp_asr32(f->rot[2][0] * n0 + f->rot[2][1] * n1 + f->rot[2][2] * n2 + half, 15);
+}
+#else
 STP_HOT_INLINE int16_t stp_render_view_normal_row(const int32_t row[3], const int16_t n[3], int side)
 {
-    int32_t s = row[0] * n[0] + row[1] * n[1] + row[2] * n[2] + ((int32_t)1 << 14);
-    s = (int32_t)(((uint32_t)s + ((uint32_t)1 << 30)) >> 15) - ((int32_t)1 << 15);
+    int32_t s = stp_asr32(row[0] * n[0] + row[1] * n[1] + row[2] * n[2] + ((int32_t)1 << 14), 15);
     return (int16_t)(side > 0 ? s : -s);
 }
 
@@ -361,6 +380,7 @@ STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16
     nv[1] = stp_render_view_normal_row(f->rot[1], n, side);
     nv[2] = stp_render_view_normal_row(f->rot[2], n, side);
 }
+#endif
 
 /* A flat face's INTENSITY style (1..levels) with shading on (its shade by
  * the face shader s from view normal nv and vertex average centre; the

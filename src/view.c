@@ -78,6 +78,25 @@ int stp_view_frame_make(const stp_view *v, uint32_t width, uint32_t height, stp_
     return STP_OK;
 }
 
+#if STP_NARROW_FORMS && F == 16
+/* Whether axis a (|a_i| < 2^17) is short enough for the short form
+ * (view_private.h's unit): a^2 <= 5 2^30, tested in 32 bits on b_i =
+ * floor(|a_i| / 4) + 1 > |a_i| / 4 (each at most 2^15, its square at most
+ * 2^30, the sum below 2^32): sum b_i^2 <= 5 2^26 implies it. */
+static int unit_axis(const int32_t a[3])
+{
+    uint32_t sum = 0;
+    int i;
+    for (i = 0; i < 3; i++) {
+        uint32_t b = (stp_abs32(a[i]) >> 2) + 1u;
+        if (b > ((uint32_t)1 << 15))
+            return 0; /* |a_i| >= 2^17 */
+        sum += b * b;
+    }
+    return sum <= ((uint32_t)5 << 26);
+}
+#endif
+
 /* The 32-bit form's halves (view_private.h's stp_view_axis32), and
  * whether every |from_high| is below 2^28 (view.c's
  * stp_view_transform_point then sums in 32 bits). */
@@ -93,6 +112,7 @@ static void split_from(stp_view_transform *out)
     axis[1] = &out->up;
     axis[2] = &out->forward;
     out->narrow = 1;
+    out->unit = 1;
     for (k = 0; k < 3; k++) {
         stp_view_axis32 *h = &out->axis32[k];
         int64_t high = stp_asr64(*d[k], 16);
@@ -107,12 +127,19 @@ static void split_from(stp_view_transform *out)
         a[0] = axis[k]->x;
         a[1] = axis[k]->y;
         a[2] = axis[k]->z;
+#if STP_NARROW_FORMS && F == 16
+        if (!unit_axis(a))
+            out->unit = 0;
+#else
+        out->unit = 0; /* no short form (builds for size: less code) */
+#endif
         for (i = 0; i < 3; i++) {
             int32_t low = (int32_t)(((uint32_t)a[i] & 0x7FFFu) ^ 0x4000u) - 0x4000;
             h->low[i] = (stp_view_half)low;
             h->high[i] = (stp_view_half)((a[i] - low) / 32768); /* exact */
         }
     }
+    out->unit &= out->narrow;
 }
 
 static int64_t dot64(stp_vec3 a, stp_vec3 b)
@@ -355,6 +382,25 @@ STP_HOT_INLINE stp_fix axis_coordinate(const point_halves *p, const stp_vec3 *a,
     return finish_coordinate(p, a, x, from, narrow, small, r);
 }
 
+#if STP_NARROW_FORMS && F == 16
+/* The short form of axis_coordinate for a unit transform (view_private.h:
+ * |a| <= sqrt(5 / 4) 2^16) and every p_i in [-2^28, 2^28): with p_i = h_i
+ * 2^14 + l_i (h_i in [-2^14, 2^14), l_i in [0, 2^14)), H = sum h_i a_i and
+ * L = sum l_i a_i are each below sqrt(3) 2^14 sqrt(5 / 4) 2^16 < 0.97
+ * 2^31 in magnitude (Cauchy-Schwarz), and
+ *   S = p . a - from = 2^16 (floor(H / 4) - from_high) + r,
+ *   r = 2^14 (H mod 4) + L - from_low, |r| < 0.97 2^31 + 2^16,
+ * so floor(S / 2^16) = floor(H / 4) - from_high + floor(r / 2^16): six
+ * products where axis_coordinate takes nine, the same value. */
+STP_HOT_INLINE stp_fix unit_coordinate(const int32_t h[3], const int32_t l[3], const stp_vec3 *a,
+                                       const stp_view_axis32 *x)
+{
+    int32_t hs = h[0] * a->x + h[1] * a->y + h[2] * a->z;
+    int32_t r = (int32_t)(((uint32_t)hs & 3u) << 14) + (l[0] * a->x + l[1] * a->y + l[2] * a->z) - x->from_low;
+    return stp_asr32(hs, 2) - x->from_high32 + high16(r);
+}
+#endif
+
 /* v's signed halves (point_halves) */
 static void split_point(int32_t v, int32_t *h, int32_t *l)
 {
@@ -366,12 +412,29 @@ void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 
 {
     point_halves ph;
     int narrow;
+    /* every p_i in [-2^28, 2^28) */
+    int small = (((uint32_t)p.x + 0x10000000u) | ((uint32_t)p.y + 0x10000000u) | ((uint32_t)p.z + 0x10000000u)) <
+                0x20000000u;
+#if STP_NARROW_FORMS && F == 16
+    if (t->unit && small) {
+        /* unit_coordinate's halves */
+        int32_t h[3], l[3];
+        h[0] = stp_asr32(p.x, 14);
+        h[1] = stp_asr32(p.y, 14);
+        h[2] = stp_asr32(p.z, 14);
+        l[0] = (int32_t)((uint32_t)p.x & 0x3FFFu);
+        l[1] = (int32_t)((uint32_t)p.y & 0x3FFFu);
+        l[2] = (int32_t)((uint32_t)p.z & 0x3FFFu);
+        out->x = unit_coordinate(h, l, &t->right, &t->axis32[0]);
+        out->y = unit_coordinate(h, l, &t->up, &t->axis32[1]);
+        out->z = unit_coordinate(h, l, &t->forward, &t->axis32[2]);
+        return;
+    }
+#endif
     split_point(p.x, &ph.h[0], &ph.l[0]);
     split_point(p.y, &ph.h[1], &ph.l[1]);
     split_point(p.z, &ph.h[2], &ph.l[2]);
-    /* every p_i in [-2^28, 2^28): |h| <= 2^12 */
-    narrow = t->narrow && (((uint32_t)p.x + 0x10000000u) | ((uint32_t)p.y + 0x10000000u) |
-                           ((uint32_t)p.z + 0x10000000u)) < 0x20000000u;
+    narrow = t->narrow && small; /* |h| <= 2^12 */
     out->x = axis_coordinate(&ph, &t->right, &t->axis32[0], &t->from_right, narrow);
     out->y = axis_coordinate(&ph, &t->up, &t->axis32[1], &t->from_up, narrow);
     out->z = axis_coordinate(&ph, &t->forward, &t->axis32[2], &t->from_forward, narrow);

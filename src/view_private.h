@@ -52,6 +52,9 @@ typedef struct stp_view_transform {
     /* the 32-bit targets' form (view.c) of each axis k (right, up, forward) */
     stp_view_axis32 axis32[3];
     int narrow; /* every from_high below 2^28 in magnitude */
+    int unit;   /* narrow, and every axis's squared length at most 5 2^30
+                   (1.25 units squared): view.c's short form (with
+                   STP_NARROW_FORMS, else 0) */
 } stp_view_transform;
 
 /* The view's axes (view_frame_make's, the one place they are formed):

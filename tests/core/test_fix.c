@@ -765,6 +765,30 @@ static void test_div3_toward_zero_matches_operator(void **state)
     }
 }
 
+/* stp_div3_u30 (two 32-bit products on the 32-bit targets) equals C's
+ * u / 3 for every u below 2^20, around every split u = a 2^14 + b (b at
+ * either end, every a) and at random values up to 2^30 */
+static void test_div3_u30_matches_operator(void **state)
+{
+    uint32_t u, a, seed = 777u;
+    int32_t k;
+    (void)state;
+    for (u = 0; u < ((uint32_t)1 << 20); u++)
+        assert_int_equal(stp_div3_u30(u), u / 3u);
+    for (a = 0; a < ((uint32_t)1 << 16); a++)
+        for (k = 0; k < 4; k++) {
+            u = (a << 14) + (uint32_t)k;
+            assert_int_equal(stp_div3_u30(u), u / 3u);
+            u = (a << 14) + 0x3FFFu - (uint32_t)k;
+            assert_int_equal(stp_div3_u30(u), u / 3u);
+        }
+    for (k = 0; k < 1000000; k++) {
+        seed = seed * 1664525u + 1013904223u;
+        u = seed >> 2;
+        assert_int_equal(stp_div3_u30(u), u / 3u);
+    }
+}
+
 /* STP_UNIT normalisation (fix_private.h) against double: random vectors of
  * every magnitude from 1 to 2^61, each component within 4 units of Q30
  * (4e-9) of the exact direction and the length within 2^-27 relative plus
@@ -846,6 +870,7 @@ int main(void)
         cmocka_unit_test(test_vec3_unity_tiny_and_huge),
         cmocka_unit_test(test_transform_against_double),
         cmocka_unit_test(test_div3_toward_zero_matches_operator),
+        cmocka_unit_test(test_div3_u30_matches_operator),
         cmocka_unit_test(test_unit_from64_against_double),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

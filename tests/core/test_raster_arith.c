@@ -3,7 +3,7 @@
  * RV32, AVR), compiled here on the host with STP_WIDE_ARITH 0: the 32 x
  * 32-bit products from 16-bit halves (with their one- and two-product
  * shortcuts), the slopes of short edges from the reciprocal table, the
- * quotients through one reciprocal and the division by 3 (arith_private.h)
+ * Q12 quotients through one reciprocal and the division by 3 (arith_private.h)
  * from 32-bit products, against the host's own 64-bit operators. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -106,41 +106,52 @@ static void test_short_slopes_against_division(void **state)
     }
 }
 
-static void check_recip_quotient(uint32_t n, uint32_t d)
+static void check_recip_quotient(uint32_t a, uint32_t d)
 {
-    uint32_t got = stp_quotient_by_recip(n, d, 0xFFFFFFFFu / d);
-    if (got != n / d)
-        fail_msg("stp_quotient_by_recip(%u, %u) = %u, want %u", n, d, got, n / d);
+    uint32_t got = stp_quotient_q12_by_recip(a << 12, d, 0xFFFFFFFFu / d), want = (a << 12) / d;
+    if (got != want)
+        fail_msg("stp_quotient_q12_by_recip(%u, %u) = %u, want %u", a, d, got, want);
 }
 
-/* stp_umulhi32 against the 64-bit product; stp_quotient_by_recip (n <
- * 2^31, 2 <= d < 2^31) and stp_div3_u32 (s < 2^30) against C's division:
- * the edges of their ranges, every small value, random ones of every size */
+/* stp_umulhi32 against the 64-bit product; stp_quotient_q12_by_recip (a <
+ * 2^19, 2 <= d < 2^31: every a for divisors at the edges of the range and
+ * of its products' parts, the quotient's steps for every small d, random
+ * ones of every size) and stp_div3_u32 (s < 2^30) against C's division */
 static void test_reciprocal_quotients_against_division(void **state)
 {
     static const uint32_t big[] = {0x7FFFFFFFu, 0x7FFFFFFEu, 0x40000000u, 0x3FFFFFFFu, 0x10000u, 0xFFFFu, 0x1FFFFu};
+    static const uint32_t edge_d[] = {2u, 3u, 5u, 7u, 4095u, 4096u, 4097u, 0xFFFFu, 0x10000u, 0x10001u,
+                                      0xFFFFFu, 0x100000u, 0x100001u, 0x7FFFFFFu, 0x8000001u, 0x3FFFFFFFu,
+                                      0x40000000u, 0x7FFFFFFEu, 0x7FFFFFFFu};
     uint32_t s = 3141592653u, n, d;
     size_t i, j;
     int k;
     (void)state;
     for (i = 0; i < sizeof big / sizeof big[0]; i++)
         for (j = 0; j < sizeof big / sizeof big[0]; j++) {
-            check_recip_quotient(big[i], big[j]);
+            check_recip_quotient(big[i] & 0x7FFFFu, big[j]);
+            check_recip_quotient(big[i] >> 12, big[j]);
             assert_true(stp_umulhi32x32(big[i], big[j] << 1) == (uint32_t)(((uint64_t)big[i] * (big[j] << 1)) >> 32));
         }
+    for (i = 0; i < sizeof edge_d / sizeof edge_d[0]; i++)
+        for (n = 0; n < (1u << 19); n++)
+            check_recip_quotient(n, edge_d[i]);
     for (d = 2; d < 3000; d++) {
-        check_recip_quotient(0x7FFFFFFFu, d);
-        for (n = 0; n < 3 * d + 5; n++)
-            check_recip_quotient(n, d);
+        check_recip_quotient(0x7FFFFu, d);
+        /* a 2^12 just below and at each multiple of d the quotient reaches */
         for (n = 1; n < 64; n++) {
-            check_recip_quotient(n * d - 1u, d);
-            check_recip_quotient(0x7FFFFFFFu - n * d, d);
+            uint32_t a = (n * d + 4095u) >> 12;
+            check_recip_quotient(a, d);
+            check_recip_quotient(a - 1u, d);
+            check_recip_quotient(0x7FFFFu - n, d);
         }
+        for (n = 0; n < 600; n++)
+            check_recip_quotient(n, d);
     }
     for (k = 0; k < 1000000; k++) {
         uint32_t a = next_random(&s), b = next_random(&s);
         assert_true(stp_umulhi32x32(a, b) == (uint32_t)(((uint64_t)a * b) >> 32));
-        n = a >> 1 >> (k % 31);
+        n = (a & 0x7FFFFu) >> (k % 19);
         d = (b >> 1 >> ((k >> 5) % 30)) | 2u;
         check_recip_quotient(n, d);
         assert_true(stp_div3_u32(a >> 2) == (a >> 2) / 3u);

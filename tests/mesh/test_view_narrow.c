@@ -90,6 +90,54 @@ static void test_exact(void **state)
     assert_true(small > 100000 && small < 1900000);
 }
 
+/* Axes of squared length up to 5 2^30 (view.c's short form for a unit
+ * transform) and just past it, points up to the short form's edges
+ * (-2^28 and 2^28 - 1 per coordinate, signs with and against the axis)
+ * and eyes below and at the narrow bound: the same values as the 64-bit
+ * formula, and the short form was taken. */
+static void test_unit_axes(void **state)
+{
+    static const int32_t ends[] = {-(1 << 28), (1 << 28) - 1, -(1 << 28) + 1, (1 << 28) - 16385, 16383, -16384, 0};
+    long i, unit = 0;
+    (void)state;
+    for (i = 0; i < 400000; i++) {
+        stp_view_transform t;
+        stp_vec3 p, out, axis[3], from;
+        int k;
+        for (k = 0; k < 3; k++) {
+            /* a random direction scaled to about 73271 (sqrt(5 2^30)), or
+             * one component that large */
+            int32_t big = 73271 + (int32_t)(next_random() % 5u) - 2;
+            if (next_random() % 3u == 0) {
+                axis[k].x = (next_random() & 1u) ? big : -big;
+                axis[k].y = (int32_t)(next_random() % 9u) - 4;
+                axis[k].z = 0;
+            } else {
+                axis[k].x = (int32_t)(next_random() % 84601u) - 42300;
+                axis[k].y = (int32_t)(next_random() % 84601u) - 42300;
+                axis[k].z = (int32_t)(next_random() % 84601u) - 42300;
+            }
+        }
+        from.x = (int32_t)(next_random() % 0x20000001u) - 0x10000000;
+        from.y = i % 5 == 0 ? INT32_MAX : (int32_t)(next_random() % 0x20000001u) - 0x10000000;
+        from.z = (int32_t)(next_random() % 0x20000001u) - 0x10000000;
+        stp_view_transform_of_axes(axis[0], axis[1], axis[2], from, &t);
+        unit += t.unit;
+        p.x = (next_random() & 1u) ? ends[next_random() % 7u] : random_coordinate();
+        p.y = (next_random() & 1u) ? ends[next_random() % 7u] : random_coordinate();
+        p.z = (next_random() & 1u) ? ends[next_random() % 7u] : random_coordinate();
+        stp_view_transform_point(&t, p, &out);
+        assert_int_equal(out.x, reference(p, t.right, t.from_right));
+        assert_int_equal(out.y, reference(p, t.up, t.from_up));
+        assert_int_equal(out.z, reference(p, t.forward, t.from_forward));
+    }
+#if STP_NARROW_FORMS
+    assert_true(unit > 10000 && unit < 390000);
+#else
+    assert_true(unit == 0);
+#endif
+}
+
 /* The 32-bit difference of a point below 2^28 and an eye within int32
  * at its edges: exactly -2^31 (saturated to STP_FIX_MIN, -(2^31 - 1)),
  * wrapping below and above int32, and just inside it. */
@@ -197,13 +245,52 @@ static void test_perspective_edges(void **state)
     }
 }
 
+/* The offsets where floor(focal |x| / z) is at or near a multiple of
+ * 2^(F - STP_SUBPIXEL_BITS) (the 32-bit form's estimate decides the
+ * offset without its correction only away from those, and must agree with
+ * the exact quotient there): points whose quotient is that multiple plus
+ * -8..8, either sign, random focal lengths and depths. */
+static void test_perspective_subpixel_edges(void **state)
+{
+    const int64_t unit = (int64_t)1 << (STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
+    int i, d;
+    (void)state;
+    for (i = 0; i < 20000; i++) {
+        stp_fix focal = (stp_fix)(1 + next_random() % (1u << (i % 3 == 0 ? 30 : 24)));
+        stp_fix hither = (stp_fix)(1 + next_random() % (1u << 12));
+        int32_t z = (int32_t)(hither + (int32_t)(next_random() % (1u << (4 + i % 25))));
+        int64_t k = (int64_t)(next_random() % (1u << (4 + i % 16)));
+        for (d = -8; d <= 8; d++) {
+            /* the least x with floor(focal x / z) >= k unit + d */
+            int64_t target = k * unit + d, x;
+            stp_vec3 p;
+            if (target < 0)
+                continue;
+            x = (target * z + focal - 1) / focal;
+            if (x >= INT32_MAX)
+                continue;
+            p.x = (int32_t)x;
+            p.y = -(int32_t)x;
+            p.z = z;
+            check_perspective(focal, hither, p);
+            if (x > 0) {
+                p.x = (int32_t)x - 1;
+                p.y = 1 - (int32_t)x;
+                check_perspective(focal, hither, p);
+            }
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_exact),
         cmocka_unit_test(test_edges),
+        cmocka_unit_test(test_unit_axes),
         cmocka_unit_test(test_perspective),
         cmocka_unit_test(test_perspective_edges),
+        cmocka_unit_test(test_perspective_subpixel_edges),
     };
     return cmocka_run_group_tests(tests, 0, 0);
 }
