@@ -29,8 +29,36 @@ int64_t stp_clip_distance(const stp_clip_volume *v, int plane, stp_vec3 p)
     }
 }
 
+#if STP_NARROW_FORMS
+/* Whether perspective view point p is clearly inside the four
+ * side planes, in 32-bit products (64-bit ones are library calls here):
+ * with hw = floor(W z / 2) and fx = floor(f x / 2^16), |fx| <= hw when
+ * f |x| / 2^16 + 2 <= W z / 2 (|fx| exceeds f |x| / 2^16 by less than 1,
+ * hw falls short of W z / 2 by at most 1/2).  For f, |x| < 2^23 and z <
+ * 2^25, u = ((f >> 8) + 1)((|x| >> 8) + 1) >= f |x| / 2^16 (below 2^31)
+ * and l = W (z >> 8) <= W z / 2^8 (below 2^32: W < 2^15), so
+ * ceil((u + 2) / 2^7) <= l is enough; likewise y with H.  0 means not
+ * shown (the exact test decides): points within about 1% of a side
+ * plane, or out of those ranges. */
+static int inside_sides(const stp_clip_volume *v, stp_vec3 p)
+{
+    const uint32_t lim = (uint32_t)1 << 23;
+    uint32_t f = (uint32_t)v->focal, ax = stp_abs32(p.x), ay = stp_abs32(p.y), fs, zs;
+    if ((f | ax | ay) >= lim || (uint32_t)p.z >= ((uint32_t)1 << 25))
+        return 0; /* a negative focal or z too (as unsigned, at least 2^31) */
+    fs = (f >> 8) + 1u;
+    zs = (uint32_t)p.z >> 8;
+    return ((fs * ((ax >> 8) + 1u) + 129u) >> 7) <= v->width * zs &&
+           ((fs * ((ay >> 8) + 1u) + 129u) >> 7) <= v->height * zs;
+}
+#endif
+
 unsigned stp_clip_outcode(const stp_clip_volume *v, stp_vec3 p)
 {
+#if STP_NARROW_FORMS
+    if (!v->parallel && inside_sides(v, p))
+        return p.z < v->near ? 1u : 0u; /* only the near plane can cut */
+#endif
     /* stp_clip_distance's five planes at once */
     int64_t fx = stp_asr64((int64_t)v->focal * p.x, F), fy = stp_asr64((int64_t)v->focal * p.y, F);
     int64_t hw, hh;

@@ -603,21 +603,23 @@ static int clip_polygon(stp_renderer *r, int n, int smooth, stp_vec3 **result, s
  * one perspective projection (view.c), or the parallel one. */
 static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
 {
-    int64_t x, y;
-    int64_t wq = (int64_t)r->width << STP_SUBPIXEL_BITS, hq = (int64_t)r->height << STP_SUBPIXEL_BITS;
+    int64_t x, y, wq, hq;
     if (r->projection == STP_PERSPECTIVE) {
         stp_view_lens lens;
         int32_t d[3];
         lens.focal = r->focal;
         lens.hither = r->hither;
-        lens.half_width = (int32_t)(wq / 2);
-        lens.half_height = (int32_t)(hq / 2);
+        /* width, height <= 32767 (stp_renderer_create): in int32 */
+        lens.half_width = (int32_t)r->width << (STP_SUBPIXEL_BITS - 1);
+        lens.half_height = (int32_t)r->height << (STP_SUBPIXEL_BITS - 1);
         stp_view_perspective_device(&lens, &p, d);
         out->x = d[0];
         out->y = d[1];
         out->z = d[2];
         return;
     }
+    wq = (int64_t)r->width << STP_SUBPIXEL_BITS;
+    hq = (int64_t)r->height << STP_SUBPIXEL_BITS;
     x = wq / 2 + stp_asr64((int64_t)r->focal * p.x, 2 * F - STP_SUBPIXEL_BITS);
     y = hq / 2 - stp_asr64((int64_t)r->focal * p.y, 2 * F - STP_SUBPIXEL_BITS);
     out->z = -p.z;
@@ -707,16 +709,27 @@ int stp_render_model_normal(const stp_vec3 *v, int n, int16_t out[3])
     return stp_render_unit_q14(a, b, c, out);
 }
 
+/* r->frame for the transforms in force (once after either changes). */
+STP_NOINLINE void model_frame_prepare(stp_renderer *r)
+{
+    if (r->projection != STP_PERSPECTIVE)
+        r->frame.usable = 0;
+    else
+        (void)stp_model_frame_make(&r->to_view, r->from, r->model_on ? &r->model : 0, &r->frame);
+    r->frame_valid = 1;
+}
+
+/* stp_render_model_frame, inline for a polygon's entry */
+STP_HOT_INLINE const stp_model_frame *model_frame(stp_renderer *r)
+{
+    if (!r->frame_valid)
+        model_frame_prepare(r);
+    return r->frame.usable ? &r->frame : 0;
+}
+
 const stp_model_frame *stp_render_model_frame(stp_renderer *r)
 {
-    if (!r->frame_valid) {
-        if (r->projection != STP_PERSPECTIVE)
-            r->frame.usable = 0;
-        else
-            (void)stp_model_frame_make(&r->to_view, r->from, r->model_on ? &r->model : 0, &r->frame);
-        r->frame_valid = 1;
-    }
-    return r->frame.usable ? &r->frame : 0;
+    return model_frame(r);
 }
 
 void stp_render_face_shader_prepare(stp_renderer *r, int parallel)
@@ -839,6 +852,13 @@ typedef struct stp_entry {
     const stp_instr *projected; /* an unclipped polygon's device vertices, or NULL */
 } stp_entry;
 
+/* A build for size: a triangle's steps are not unrolled apart. */
+#if defined(__OPTIMIZE_SIZE__)
+#define STP_SIZE_BUILD 1
+#else
+#define STP_SIZE_BUILD 0
+#endif
+
 /* Step 1: the vertices to view coordinates (r->clip_a), through the
  * vertex cache when there is one, and whether one of them saturated.  A
  * cache entry this polygon already holds is never taken by a later vertex
@@ -847,10 +867,9 @@ typedef struct stp_entry {
  * found with its view coordinates (a later polygon sharing the vertex is
  * likely to face the eye and need it), so the polygon's outcodes are
  * known here. */
-static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e)
+STP_HOT_INLINE void enter_transform_n(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e, const int n)
 {
     int i;
-    const int n = e->n;
     unsigned range = 0;
 #if STP_VERTEX_CACHE
     /* locals: the stores below may alias r's fields for the compiler */
@@ -904,6 +923,11 @@ static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry
     }
 #endif
     e->range = range != 0;
+}
+
+static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e)
+{
+    enter_transform_n(r, vertices, e, e->n);
 }
 
 #if !STP_VERTEX_CACHE
@@ -1445,16 +1469,86 @@ static const stp_model_frame *model_route(stp_renderer *r)
 #endif
     if (r->colour)
         return 0;
-    return stp_render_model_frame(r);
+    return model_frame(r);
 }
+
+#if STP_NARROW_FORMS
+/* small_triangle_side's test for c (|c_i| < 2^31) and d (|d_i| <= 2^29)
+ * without 64-bit products (library calls here): c and d cut by floor
+ * shifts to cs = c / 2^a, |cs_i| <= 2^14, and ds = d / 2^b, |ds_i| <=
+ * 2^15, so cs.ds fits int32.  With the remainders below 2^a and
+ * 2^b, |c.d - 2^(a+b) cs.ds| < 2^(a+b) (|cs|1 + |ds|1 + 3), |c|1 < 2^a
+ * (|cs|1 + 3) and |d|1 < 2^b (|ds|1 + 3); cn and dn bound |cs|1 and |ds|1
+ * (each |cs_i| <= (max |c_i| >> a) + 1).  |cs.ds| > cn + dn + 3 + (cn +
+ * 3)(dn + 3) / 2^13 (the quotient bounded above by the shifted factors
+ * plus one, all below 2^10) gives the sign of c.d and 2^13 |c.d| > |c|1
+ * |d|1. */
+STP_HOT_INLINE int small_side_of(const int32_t c[3], int32_t dx, int32_t dy, int32_t dz)
+{
+    uint32_t cm = stp_abs32(c[0]) | stp_abs32(c[1]) | stp_abs32(c[2]);
+    uint32_t dm = stp_abs32(dx) | stp_abs32(dy) | stp_abs32(dz), cn, dn;
+    int a = stp_bit_length32(cm) - 14, b = stp_bit_length32(dm) - 15;
+    int32_t dot;
+    if (a < 0)
+        a = 0;
+    if (b < 0)
+        b = 0;
+    dot = stp_asr32(c[0], a) * stp_asr32(dx, b) + stp_asr32(c[1], a) * stp_asr32(dy, b) +
+          stp_asr32(c[2], a) * stp_asr32(dz, b);
+    cn = 3u * ((cm >> a) + 1u);
+    dn = 3u * ((dm >> b) + 1u);
+    if (stp_abs32(dot) <= cn + dn + 3u + (((cn + 3u) >> 6) + 1u) * (((dn + 3u) >> 7) + 1u))
+        return 0;
+    return dot > 0 ? 1 : -1;
+}
+
+/* The side stp_render_certain_side finds for triangle v, in fewer steps
+ * for a small triangle near the eye (the usual): edge components in
+ * [1 - 2^15, 2^15] and d = eye - v0 in [-2^29, 2^29) (formed mod 2^32,
+ * exact: |eye| < 2^30, so a wrapped d would be 2^31 + 2^30 away, and v0
+ * within 2^31 - 2^29 keeps the edges unwrapped too).  The cross product c
+ * (each product in [2^15 - 2^30, 2^30], each component within 2^31 -
+ * 2^15) is then exact in int32: stp_render_triangle_cross's value.  The side of the
+ * rounded normal n (stp_render_face_side) is that of c.d when 2^13 |c.d| >
+ * |c|1 |d|1 (render_private.h: n = 2^14 c / |c| + delta, |delta_i| < 1,
+ * with stp_render_certain_side's margin of 2).  Returns 1 or -1 then (c in
+ * c[]), else 0: the caller takes the general path. */
+STP_HOT_INLINE int small_triangle_side(const stp_model_frame *f, const stp_vec3 *v, int32_t c[3])
+{
+    const uint32_t edge = ((uint32_t)1 << 15) - 1u, near = (uint32_t)1 << 29;
+    uint32_t dx = (uint32_t)f->eye[0] - (uint32_t)v[0].x, dy = (uint32_t)f->eye[1] - (uint32_t)v[0].y,
+             dz = (uint32_t)f->eye[2] - (uint32_t)v[0].z;
+    /* the edges plus 2^15 - 1: each below 2^16 when in range */
+    uint32_t x1 = (uint32_t)v[1].x - (uint32_t)v[0].x + edge, y1 = (uint32_t)v[1].y - (uint32_t)v[0].y + edge,
+             z1 = (uint32_t)v[1].z - (uint32_t)v[0].z + edge;
+    uint32_t x2 = (uint32_t)v[2].x - (uint32_t)v[0].x + edge, y2 = (uint32_t)v[2].y - (uint32_t)v[0].y + edge,
+             z2 = (uint32_t)v[2].z - (uint32_t)v[0].z + edge;
+    int32_t ax, ay, az, bx, by, bz, ex, ey, ez;
+    if ((x1 | y1 | z1 | x2 | y2 | z2) > 0xFFFFu || ((dx + near) | (dy + near) | (dz + near)) >= 2 * near)
+        return 0;
+    ax = (int32_t)x1 - (int32_t)edge;
+    ay = (int32_t)y1 - (int32_t)edge;
+    az = (int32_t)z1 - (int32_t)edge;
+    bx = (int32_t)x2 - (int32_t)edge;
+    by = (int32_t)y2 - (int32_t)edge;
+    bz = (int32_t)z2 - (int32_t)edge;
+    ex = (int32_t)(dx + near) - (int32_t)near;
+    ey = (int32_t)(dy + near) - (int32_t)near;
+    ez = (int32_t)(dz + near) - (int32_t)near;
+    c[0] = ay * bz - az * by;
+    c[1] = az * bx - ax * bz;
+    c[2] = ax * by - ay * bx;
+    return small_side_of(c, ex, ey, ez);
+}
+#endif
 
 /* The model normal n (Q1.14) of polygon v (e->n points) and the side of
  * it the eye sees (stp_render_face_side); for a triangle with back faces
  * removed the side is found first (stp_render_certain_side), so a certain back face
  * is not normalised: returns 0 for such a face (n unset), 1 otherwise,
  * STP_ERR_DEGENERATE for a zero normal. */
-static int model_normal_and_side(const stp_renderer *r, const stp_vec3 *v, int count,
-                                 const stp_model_frame *f, int16_t n[3], int *side)
+STP_HOT_INLINE int general_normal_and_side(const stp_renderer *r, const stp_vec3 *v, int count,
+                                         const stp_model_frame *f, int16_t n[3], int *side)
 {
     if (count == 3 && r->backface_removal) {
         int64_t c[3];
@@ -1473,6 +1567,27 @@ static int model_normal_and_side(const stp_renderer *r, const stp_vec3 *v, int c
         return STP_ERR_DEGENERATE;
     *side = stp_render_face_side(f, n, v[0]);
     return 1;
+}
+
+/* general_normal_and_side's result, for a small triangle with back faces
+ * removed whose side is certain (small_triangle_side) found directly. */
+STP_HOT_INLINE int model_normal_and_side(const stp_renderer *r, const stp_vec3 *v, int count,
+                                         const stp_model_frame *f, int16_t n[3], int *side)
+{
+#if STP_NARROW_FORMS
+    if (count == 3 && r->backface_removal) {
+        int32_t c[3];
+        int sure = small_triangle_side(f, v, c);
+        if (sure < 0)
+            return 0; /* a back face: not normalised */
+        if (sure > 0) {
+            (void)stp_render_unit_q14(c[0], c[1], c[2], n);
+            *side = 1;
+            return 1;
+        }
+    }
+#endif
+    return general_normal_and_side(r, v, count, f, n, side);
 }
 
 /* A front triangle inside the view on the model route (enter_model_face,
@@ -1499,11 +1614,14 @@ static int enter_model_triangle(stp_renderer *r, stp_entry *e, const stp_model_f
         const stp_vec3 *v = r->clip_a;
         /* where 32 x 32 -> 64 products are library calls and 32-bit
          * ones are not, view points below 2^28 (the usual) take mesh
-         * entry's 32-bit quotient */
+         * entry's 32-bit quotient: tested as each in [-2^27, 2^27), one
+         * addition each */
+        const uint32_t half = (uint32_t)1 << 27;
         int small = STP_NARROW_FORMS &&
-                    (stp_abs32(v[0].x) | stp_abs32(v[0].y) | stp_abs32(v[0].z) | stp_abs32(v[1].x) |
-                     stp_abs32(v[1].y) | stp_abs32(v[1].z) | stp_abs32(v[2].x) | stp_abs32(v[2].y) |
-                     stp_abs32(v[2].z)) < ((uint32_t)1 << 28);
+                    (((uint32_t)v[0].x + half) | ((uint32_t)v[0].y + half) | ((uint32_t)v[0].z + half) |
+                     ((uint32_t)v[1].x + half) | ((uint32_t)v[1].y + half) | ((uint32_t)v[1].z + half) |
+                     ((uint32_t)v[2].x + half) | ((uint32_t)v[2].y + half) | ((uint32_t)v[2].z + half)) <
+                        2 * half;
         centre.x = stp_render_average3(small, v[0].x, v[1].x, v[2].x);
         centre.y = stp_render_average3(small, v[0].y, v[1].y, v[2].y);
         centre.z = stp_render_average3(small, v[0].z, v[1].z, v[2].z);
@@ -1537,7 +1655,10 @@ STP_NOINLINE int enter_model_front(stp_renderer *r, const stp_vec3 *vertices, in
     e.n = count;
     e.shading = STP_ENTER_FLAT;
     e.projected = 0;
-    enter_transform(r, vertices, &e);
+    if (count == 3 && !STP_SIZE_BUILD)
+        enter_transform_n(r, vertices, &e, 3); /* a triangle's: unrolled */
+    else
+        enter_transform(r, vertices, &e);
     if (e.range)
         return STP_ERR_RANGE;
 #if !STP_VERTEX_CACHE
@@ -1562,7 +1683,7 @@ STP_NOINLINE int enter_model_front(stp_renderer *r, const stp_vec3 *vertices, in
 static int enter_model_face(stp_renderer *r, const stp_vec3 *vertices, int count,
                             const stp_model_frame *f)
 {
-    int16_t n[3] = {0, 0, 0};
+    int16_t n[3];
     int side = 0, found = model_normal_and_side(r, vertices, count, f, n, &side);
     if (found != 1)
         return found == 0 ? STP_OK : found;
