@@ -509,8 +509,8 @@ STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint64_t *squares, int *
 #else
     s = square30(abs32(v[0])) + square30(abs32(v[1])) + square30(abs32(v[2]));
 #endif
-    *squares = s;
 #if STP_NARROW_FORMS
+    *squares = s;
     /* the same shifts by constants: no 64-bit shift by a variable (a
      * library call on ARMv6-M) */
     {
@@ -521,6 +521,7 @@ STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint64_t *squares, int *
     }
 #else
     sh = s >= ((uint64_t)1 << 60) ? 30 : 28;
+    *squares = s;
     *e = 45 + sh / 2 - 30;
     return (int64_t)rsqrt_q30((uint32_t)(s >> sh));
 #endif
