@@ -440,20 +440,6 @@ static inline int32_t round_unit(int32_t x, uint32_t inv, int e)
 }
 #endif
 
-#if STP_NARROW_FORMS
-/* floor((round_unit(x, inv, e) + 2^15) / 2^16) in one floor: with M =
- * floor(q / 2^(e-1)) as in round_unit (< 2^31 + 2^16: |v inv| <= 2^(e+30)
- * to 2^-28), floor((floor((M + 1) / 2) + k) / 2^16) = floor((M + 1 + 2k) /
- * 2^17); for x < 0 the result is -floor((R + 2^15 - 1) / 2^16) of the
- * magnitude R = floor((M + 1) / 2), so floor((M + 2^16 - 1) / 2^17) */
-static inline int16_t round_q14(int32_t x, uint32_t inv, int e)
-{
-    if (x >= 0)
-        return (int16_t)((mul_shr32((uint32_t)x, inv, e - 1) + 1u + (1u << 16)) >> 17);
-    return (int16_t)(0 - (int32_t)((mul_shr32_less1(0u - (uint32_t)x, inv, e - 1) + (1u << 16) - 1u) >> 17));
-}
-#endif
-
 /* (x, y, z) (not all 0, |.| < 2^62) scaled by 2^up so the largest
  * component has 30 bits (its bit length is that of the three ORed; floor
  * shifts when up < 0) into v[]: |v[i]| <= 2^30.  Returns up.  Values
@@ -580,10 +566,6 @@ int stp_unit_q14_from64(int64_t x, int64_t y, int64_t z, int16_t out[3])
         out[1] = (int16_t)floor_shift(STP_SMUL_FIT32(v[1], inv) + half, e + 16);
         out[2] = (int16_t)floor_shift(STP_SMUL_FIT32(v[2], inv) + half, e + 16);
     }
-#elif STP_NARROW_FORMS
-    out[0] = round_q14(v[0], (uint32_t)inv, e);
-    out[1] = round_q14(v[1], (uint32_t)inv, e);
-    out[2] = round_q14(v[2], (uint32_t)inv, e);
 #else
     out[0] = (int16_t)stp_asr32(round_unit(v[0], (uint32_t)inv, e) + ((int32_t)1 << 15), 16);
     out[1] = (int16_t)stp_asr32(round_unit(v[1], (uint32_t)inv, e) + ((int32_t)1 << 15), 16);
