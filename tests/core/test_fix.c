@@ -848,10 +848,12 @@ static void test_unit_from64_against_double(void **state)
 /* stp_unit_from64 and stp_unit_q14_from64 against their definition in
  * native 64-bit words: v scaled so the largest component has 30 bits,
  * inv = stp_rsqrt64(v.v) (2^-(e + 30)), each component floor((v inv +
- * 2^(e-1)) / 2^e) and q14 floor((that + 2^15) / 2^16).  The builds without
- * a 64-bit product (STP_ARITH32; STP_NARROW_FORMS) form these in 32-bit
- * words: millions of int32 vectors of every bit length (the length drawn
- * first), with zero components, the extremes and tiny vectors. */
+ * 2^(e-1)) / 2^e) and q14 floor((that + 2^15) / 2^16).  The builds with
+ * a 32-bit but no 64-bit product (STP_NARROW_FORMS: test_fix_narrow in the
+ * plain build, ARMv6-M) form these in 32-bit words: millions of int32
+ * vectors of every bit length (the length drawn first), with zero
+ * components, the extremes and tiny vectors; the special vectors meet
+ * ties of both roundings. */
 static int64_t unit_reference(int64_t x, int64_t y, int64_t z, int64_t out[3])
 {
     uint64_t m = 0, s;
