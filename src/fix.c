@@ -329,6 +329,21 @@ static inline uint32_t mul_shr32(uint32_t a, uint32_t b, int s)
     uint32_t low = (mid << 16) | (ll & 0xFFFFu);
     return (uint32_t)(high << (32 - s)) | (low >> s);
 }
+
+#if STP_NARROW_FORMS
+/* floor((a b - 1) / 2^s) for a b >= 1, as mul_shr32 */
+static inline uint32_t mul_shr32_less1(uint32_t a, uint32_t b, int s)
+{
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl;
+    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    uint32_t high = ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16); /* a b / 2^32 */
+    uint32_t low = (mid << 16) | (ll & 0xFFFFu);
+    high -= low == 0 ? 1u : 0u; /* the borrow of low - 1 */
+    low -= 1u;
+    return (uint32_t)(high << (32 - s)) | (low >> s);
+}
+#endif
 #endif
 
 /* 1/sqrt(m / 2^30) in Q30 for m in [2^30, 2^32). */
@@ -406,10 +421,22 @@ static inline uint64_t square30(uint32_t a)
  * x < 0 it is -ceil((p - 2^(e-1)) / 2^e) = -floor((p + 2^(e-1) - 1) / 2^e) */
 static inline int32_t round_unit(int32_t x, uint32_t inv, int e)
 {
+#if STP_NARROW_FORMS
+    /* the same values in 32-bit words: with q = p or p - 1 (q >= 0: p >= 1
+     * for x < 0, inv > 0), floor((q + 2^(e-1)) / 2^e) =
+     * floor((floor(q / 2^(e-1)) + 1) / 2) (an integer added inside a floor
+     * and a floor inside a floor by an integer change nothing), and
+     * floor(q / 2^(e-1)) < 2^32 (p < 2^60, e - 1 >= 28): mul_shr32's exact
+     * floor, p - 1 borrowing from its high word when its low word is 0 */
+    if (x >= 0)
+        return (int32_t)((mul_shr32((uint32_t)x, inv, e - 1) + 1u) >> 1);
+    return 0 - (int32_t)((mul_shr32_less1(0u - (uint32_t)x, inv, e - 1) + 1u) >> 1);
+#else
     uint64_t half = (uint64_t)1 << (e - 1);
     if (x >= 0)
         return (int32_t)((stp_umul32x32((uint32_t)x, inv) + half) >> e);
     return 0 - (int32_t)((stp_umul32x32(0u - (uint32_t)x, inv) + half - 1u) >> e);
+#endif
 }
 #endif
 
@@ -458,7 +485,9 @@ STP_HOT_INLINE int unit_scale(int64_t x, int64_t y, int64_t z, int32_t v[3])
 STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint64_t *squares, int *e)
 {
     uint64_t s;
+#if !STP_NARROW_FORMS
     int sh;
+#endif
     /* |v[i]| <= 2^30: exact 32 x 32 products */
 #if STP_HAVE_MUL64
     s = (uint64_t)STP_SMUL_FIT32(v[0], v[0]) + (uint64_t)STP_SMUL_FIT32(v[1], v[1]) +
@@ -466,10 +495,22 @@ STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint64_t *squares, int *
 #else
     s = square30(abs32(v[0])) + square30(abs32(v[1])) + square30(abs32(v[2]));
 #endif
+#if STP_NARROW_FORMS
+    *squares = s;
+    /* the same shifts by constants: no 64-bit shift by a variable (a
+     * library call on ARMv6-M) */
+    {
+        int wide = s >= ((uint64_t)1 << 60);
+        uint32_t m = wide ? (uint32_t)(s >> 30) : (uint32_t)(s >> 28);
+        *e = wide ? 30 : 29;
+        return (int64_t)rsqrt_q30(m);
+    }
+#else
     sh = s >= ((uint64_t)1 << 60) ? 30 : 28;
     *squares = s;
     *e = 45 + sh / 2 - 30;
     return (int64_t)rsqrt_q30((uint32_t)(s >> sh));
+#endif
 }
 
 int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)

@@ -845,6 +845,91 @@ static void test_unit_from64_against_double(void **state)
     }
 }
 
+/* stp_unit_from64 and stp_unit_q14_from64 against their definition in
+ * native 64-bit words: v scaled so the largest component has 30 bits,
+ * inv = stp_rsqrt64(v.v) (2^-(e + 30)), each component floor((v inv +
+ * 2^(e-1)) / 2^e) and q14 floor((that + 2^15) / 2^16).  The builds with
+ * a 32-bit but no 64-bit product (STP_NARROW_FORMS: test_fix_narrow in the
+ * plain build, ARMv6-M) form these in 32-bit words: millions of int32
+ * vectors of every bit length (the length drawn first), with zero
+ * components, the extremes and tiny vectors; the special vectors meet
+ * ties of both roundings. */
+static int64_t unit_reference(int64_t x, int64_t y, int64_t z, int64_t out[3])
+{
+    uint64_t m = 0, s;
+    int64_t v[3] = {x, y, z}, inv;
+    int k, bits = 0, up, ex;
+    for (k = 0; k < 3; k++)
+        m |= v[k] < 0 ? 0u - (uint64_t)v[k] : (uint64_t)v[k];
+    while (bits < 64 && (m >> bits) != 0)
+        bits++;
+    up = 30 - bits;
+    for (k = 0; k < 3; k++)
+        v[k] = up >= 0 ? v[k] * ((int64_t)1 << up) : v[k] >> -up; /* floor */
+    s = (uint64_t)(v[0] * v[0]) + (uint64_t)(v[1] * v[1]) + (uint64_t)(v[2] * v[2]);
+    inv = (int64_t)stp_rsqrt64(s, &ex);
+    ex -= 30;
+    for (k = 0; k < 3; k++)
+        out[k] = (v[k] * inv + ((int64_t)1 << (ex - 1))) >> ex;
+    return ex;
+}
+
+static void check_unit_exact(int64_t x, int64_t y, int64_t z)
+{
+    int64_t ref[3];
+    int16_t q[3];
+    stp_unit3 u;
+    int k;
+    if ((x | y | z) == 0) {
+        assert_int_equal(stp_unit_q14_from64(x, y, z, q), 0);
+        return;
+    }
+    (void)unit_reference(x, y, z, ref);
+    (void)stp_unit_from64(x, y, z, &u);
+    assert_true(u.x == ref[0] && u.y == ref[1] && u.z == ref[2]);
+    assert_int_equal(stp_unit_q14_from64(x, y, z, q), 1);
+    for (k = 0; k < 3; k++)
+        if (q[k] != (int16_t)((ref[k] + (1 << 15)) >> 16))
+            fail_msg("q14 (%lld %lld %lld)[%d]: %d, expected %lld", (long long)x, (long long)y,
+                     (long long)z, k, q[k], (long long)((ref[k] + (1 << 15)) >> 16));
+}
+
+static void test_unit_exact_int32(void **state)
+{
+    static const int32_t special[] = {0, 1, -1, 2, -2, 3, 0x7FFFFFFF, -0x7FFFFFFF, INT32_MIN,
+                                      0x40000000, -0x40000000, 0x3FFFFFFF, 46341, -46341};
+    const int ns = (int)(sizeof special / sizeof special[0]);
+    uint64_t seed = 0x9E3779B97F4A7C15ull;
+    long i;
+    int a, b, c, k;
+    (void)state;
+    for (a = 0; a < ns; a++)
+        for (b = 0; b < ns; b++)
+            for (c = 0; c < ns; c++)
+                check_unit_exact(special[a], special[b], special[c]);
+    for (i = 0; i < 3000000; i++) {
+        int64_t v[3];
+        for (k = 0; k < 3; k++) {
+            int bits;
+            seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+            bits = (int)((seed >> 59) % 32); /* 0..31 bits */
+            switch ((seed >> 40) & 15) {
+            case 0:
+                v[k] = 0;
+                break;
+            case 1:
+                v[k] = (seed & 1) ? 0x7FFFFFFF : -0x7FFFFFFF;
+                break;
+            default:
+                v[k] = bits == 0 ? 0 : (int64_t)((seed >> 8) & ((1ull << bits) - 1));
+                if (seed & 2)
+                    v[k] = -v[k];
+            }
+        }
+        check_unit_exact(v[0], v[1], v[2]);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -872,6 +957,7 @@ int main(void)
         cmocka_unit_test(test_div3_toward_zero_matches_operator),
         cmocka_unit_test(test_div3_u30_matches_operator),
         cmocka_unit_test(test_unit_from64_against_double),
+        cmocka_unit_test(test_unit_exact_int32),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
