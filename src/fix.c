@@ -320,13 +320,20 @@ static const uint16_t rsqrt_seed[192] STP_TABLE = {
  * four 32-bit products of 16-bit halves put together in 32-bit words (no
  * 64-bit shifts or adds). */
 #if !STP_HAVE_MUL64
-static inline uint32_t mul_shr32(uint32_t a, uint32_t b, int s)
+/* a b as two 32-bit words: *high = floor(a b / 2^32), *low = a b mod 2^32 */
+static inline void mul_words32(uint32_t a, uint32_t b, uint32_t *high, uint32_t *low)
 {
     uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
     uint32_t ll = al * bl, lh = al * bh, hl = ah * bl;
     uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
-    uint32_t high = ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16); /* a b / 2^32 */
-    uint32_t low = (mid << 16) | (ll & 0xFFFFu);
+    *high = ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+    *low = (mid << 16) | (ll & 0xFFFFu);
+}
+
+static inline uint32_t mul_shr32(uint32_t a, uint32_t b, int s)
+{
+    uint32_t high, low;
+    mul_words32(a, b, &high, &low);
     return (uint32_t)(high << (32 - s)) | (low >> s);
 }
 
@@ -334,11 +341,8 @@ static inline uint32_t mul_shr32(uint32_t a, uint32_t b, int s)
 /* floor((a b - 1) / 2^s) for a b >= 1, as mul_shr32 */
 static inline uint32_t mul_shr32_less1(uint32_t a, uint32_t b, int s)
 {
-    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl;
-    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
-    uint32_t high = ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16); /* a b / 2^32 */
-    uint32_t low = (mid << 16) | (ll & 0xFFFFu);
+    uint32_t high, low;
+    mul_words32(a, b, &high, &low);
     high -= low == 0 ? 1u : 0u; /* the borrow of low - 1 */
     low -= 1u;
     return (uint32_t)(high << (32 - s)) | (low >> s);
