@@ -1473,46 +1473,16 @@ static const stp_model_frame *model_route(stp_renderer *r)
 }
 
 #if STP_NARROW_FORMS
-/* small_triangle_side's test for c (|c_i| < 2^31) and d (|d_i| <= 2^29)
- * without 64-bit products (library calls here): c and d cut by floor
- * shifts to cs = c / 2^a, |cs_i| <= 2^14, and ds = d / 2^b, |ds_i| <=
- * 2^15, so cs.ds fits int32.  With the remainders below 2^a and
- * 2^b, |c.d - 2^(a+b) cs.ds| < 2^(a+b) (|cs|1 + |ds|1 + 3), |c|1 < 2^a
- * (|cs|1 + 3) and |d|1 < 2^b (|ds|1 + 3); cn and dn bound |cs|1 and |ds|1
- * (each |cs_i| <= (max |c_i| >> a) + 1).  |cs.ds| > cn + dn + 3 + (cn +
- * 3)(dn + 3) / 2^13 (the quotient bounded above by the shifted factors
- * plus one, all below 2^10) gives the sign of c.d and 2^13 |c.d| > |c|1
- * |d|1. */
-STP_HOT_INLINE int small_side_of(const int32_t c[3], int32_t dx, int32_t dy, int32_t dz)
-{
-    uint32_t cm = stp_abs32(c[0]) | stp_abs32(c[1]) | stp_abs32(c[2]);
-    uint32_t dm = stp_abs32(dx) | stp_abs32(dy) | stp_abs32(dz), cn, dn;
-    int a = stp_bit_length32(cm) - 14, b = stp_bit_length32(dm) - 15;
-    int32_t dot;
-    if (a < 0)
-        a = 0;
-    if (b < 0)
-        b = 0;
-    dot = stp_asr32(c[0], a) * stp_asr32(dx, b) + stp_asr32(c[1], a) * stp_asr32(dy, b) +
-          stp_asr32(c[2], a) * stp_asr32(dz, b);
-    cn = 3u * ((cm >> a) + 1u);
-    dn = 3u * ((dm >> b) + 1u);
-    if (stp_abs32(dot) <= cn + dn + 3u + (((cn + 3u) >> 6) + 1u) * (((dn + 3u) >> 7) + 1u))
-        return 0;
-    return dot > 0 ? 1 : -1;
-}
-
 /* The side stp_render_certain_side finds for triangle v, in fewer steps
  * for a small triangle near the eye (the usual): edge components in
  * [1 - 2^15, 2^15] and d = eye - v0 in [-2^29, 2^29) (formed mod 2^32,
  * exact: |eye| < 2^30, so a wrapped d would be 2^31 + 2^30 away, and v0
  * within 2^31 - 2^29 keeps the edges unwrapped too).  The cross product c
  * (each product in [2^15 - 2^30, 2^30], each component within 2^31 -
- * 2^15) is then exact in int32: stp_render_triangle_cross's value.  The side of the
- * rounded normal n (stp_render_face_side) is that of c.d when 2^13 |c.d| >
- * |c|1 |d|1 (render_private.h: n = 2^14 c / |c| + delta, |delta_i| < 1,
- * with stp_render_certain_side's margin of 2).  Returns 1 or -1 then (c in
- * c[]), else 0: the caller takes the general path. */
+ * 2^15) is then exact in int32: stp_render_triangle_cross's value, and
+ * stp_render_certain_side's 32-bit test decides the side of the rounded
+ * normal where it is certain.  Returns 1 or -1 then (c in c[]), else 0: the
+ * caller takes the general path. */
 STP_HOT_INLINE int small_triangle_side(const stp_model_frame *f, const stp_vec3 *v, int32_t c[3])
 {
     const uint32_t edge = ((uint32_t)1 << 15) - 1u, near = (uint32_t)1 << 29;
@@ -1538,7 +1508,7 @@ STP_HOT_INLINE int small_triangle_side(const stp_model_frame *f, const stp_vec3 
     c[0] = ay * bz - az * by;
     c[1] = az * bx - ax * bz;
     c[2] = ax * by - ay * bx;
-    return small_side_of(c, ex, ey, ez);
+    return stp_render_certain_side_int32(c[0], c[1], c[2], ex, ey, ez);
 }
 #endif
 

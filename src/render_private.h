@@ -135,46 +135,46 @@ STP_HOT_INLINE int stp_render_face_side(const stp_model_frame *f, const int16_t 
  * 3 2^58 and (3 C + 3)(3 D + 3) below 2^64 (unsigned). */
 #if STP_NARROW_FORMS
 /* stp_render_certain_side's test in 32-bit arithmetic, where 64-bit
- * products are library calls: c below 2^31 and v0 within 2^30 (so d =
- * eye - v0 below 2^31), both cut to 13 bits (|cs|, |ds| <= 2^13, C, D <
- * 2^14): cs.ds below 3 2^26 and (3 C + 3)(3 D + 3) below 2^32.  1 or -1
- * when certain, else 0 (the 64-bit test, with more bits, decides). */
+ * products are library calls, for c and d = eye - v0 already in int32
+ * (|c_i|, |d_i| < 2^31): c and d cut by floor shifts to cs = c / 2^a,
+ * |cs_i| <= 2^14, and ds = d / 2^b, |ds_i| <= 2^15, so cs.ds fits int32.
+ * With the remainders below 2^a and 2^b, |c.d - 2^(a+b) cs.ds| < 2^(a+b)
+ * (|cs|1 + |ds|1 + 3), |c|1 < 2^a (|cs|1 + 3) and |d|1 < 2^b (|ds|1 + 3);
+ * cn and dn bound |cs|1 and |ds|1 (each |cs_i| <= (max |c_i| >> a) + 1).
+ * |cs.ds| > cn + dn + 3 + (cn + 3)(dn + 3) / 2^13 (the quotient bounded
+ * above by the shifted factors plus one, all below 2^10) gives the sign of
+ * c.d and 2^13 |c.d| > |c|1 |d|1, the margin above.  1 or -1 when
+ * certain, else 0 (the 64-bit test, with more bits, decides). */
+STP_HOT_INLINE int stp_render_certain_side_int32(int32_t cx, int32_t cy, int32_t cz, int32_t dx, int32_t dy,
+                                               int32_t dz)
+{
+    uint32_t cm = stp_abs32(cx) | stp_abs32(cy) | stp_abs32(cz);
+    uint32_t dm = stp_abs32(dx) | stp_abs32(dy) | stp_abs32(dz), cn, dn;
+    int a = stp_bit_length32(cm) - 14, b = stp_bit_length32(dm) - 15;
+    int32_t dot;
+    if (a < 0)
+        a = 0;
+    if (b < 0)
+        b = 0;
+    dot = stp_asr32(cx, a) * stp_asr32(dx, b) + stp_asr32(cy, a) * stp_asr32(dy, b) +
+          stp_asr32(cz, a) * stp_asr32(dz, b);
+    cn = 3u * ((cm >> a) + 1u);
+    dn = 3u * ((dm >> b) + 1u);
+    if (stp_abs32(dot) <= cn + dn + 3u + (((cn + 3u) >> 6) + 1u) * (((dn + 3u) >> 7) + 1u))
+        return 0;
+    return dot > 0 ? 1 : -1;
+}
+
+/* stp_render_certain_side_int32 for c below 2^31 and v0 within 2^30 (so
+ * d = eye - v0 below 2^31: |eye| < 2^30, stp_model_frame); 0 outside. */
 static inline int stp_render_certain_side32(const stp_model_frame *f, const int64_t c[3], stp_vec3 v0)
 {
     const uint32_t lim = (uint32_t)1 << 30;
-    int32_t cx, cy, cz, dx, dy, dz, dot;
-    uint32_t c_or, d_or, bound;
-    int a, b;
     if (((stp_abs64u(c[0]) | stp_abs64u(c[1]) | stp_abs64u(c[2])) >> 31) != 0 ||
         (((uint32_t)v0.x + lim) | ((uint32_t)v0.y + lim) | ((uint32_t)v0.z + lim)) >= 2 * lim)
         return 0;
-    cx = (int32_t)c[0];
-    cy = (int32_t)c[1];
-    cz = (int32_t)c[2];
-    dx = f->eye[0] - v0.x; /* |eye| < 2^30 (stp_model_frame) */
-    dy = f->eye[1] - v0.y;
-    dz = f->eye[2] - v0.z;
-    c_or = stp_abs32(cx) | stp_abs32(cy) | stp_abs32(cz);
-    d_or = stp_abs32(dx) | stp_abs32(dy) | stp_abs32(dz);
-    a = stp_bit_length32(c_or) - 13;
-    b = stp_bit_length32(d_or) - 13;
-    if (a > 0) {
-        cx = stp_asr32(cx, a);
-        cy = stp_asr32(cy, a);
-        cz = stp_asr32(cz, a);
-        c_or = stp_abs32(cx) | stp_abs32(cy) | stp_abs32(cz);
-    }
-    if (b > 0) {
-        dx = stp_asr32(dx, b);
-        dy = stp_asr32(dy, b);
-        dz = stp_asr32(dz, b);
-        d_or = stp_abs32(dx) | stp_abs32(dy) | stp_abs32(dz);
-    }
-    dot = cx * dx + cy * dy + cz * dz;
-    bound = 3u * (c_or + d_or + 1u) + (((3u * c_or + 3u) * (3u * d_or + 3u)) >> 13) + 1u;
-    if (stp_abs32(dot) <= bound)
-        return 0;
-    return dot > 0 ? 1 : -1;
+    return stp_render_certain_side_int32((int32_t)c[0], (int32_t)c[1], (int32_t)c[2], f->eye[0] - v0.x,
+                                         f->eye[1] - v0.y, f->eye[2] - v0.z);
 }
 #endif
 
