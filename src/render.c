@@ -75,6 +75,7 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     forget_fast_shade(r);
     r->fast_shade_parallel = 0;
     r->frame_valid = 0;
+    r->model_route_ok = 0;
     r->shading = 0;
     r->levels = 16;
     r->fill_style = 16;
@@ -99,6 +100,7 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     }
     r->cache_stamp = 1;
     r->cache_polygon = 0;
+    r->cache_hash = STP_CACHE_HASH;
 #endif
 #if STP_WITH_SHADOWS
     for (i = 0; i < STP_MAX_LIGHTS; i++) {
@@ -251,6 +253,7 @@ int stp_renderer_set_colour(stp_renderer *r, int on)
         return STP_ERR_ARG;
 #if STP_WITH_COLOUR
     r->colour = on != 0;
+    r->model_route_ok = 0; /* model_route decides again */
     return STP_OK;
 #else
     return on ? STP_ERR_UNSUPPORTED : STP_OK;
@@ -266,6 +269,7 @@ int stp_renderer_set_transparency(stp_renderer *r, stp_fix t_min, stp_fix t_max,
 #if STP_WITH_TRANSPARENCY
     r->t_min = t_min;
     r->t_max = t_max;
+    r->model_route_ok = 0; /* model_route decides again */
     r->t_power = power;
     /* e^(-a d) = 2^(-a d log2 e) */
     {
@@ -507,6 +511,7 @@ static void cache_forget(stp_renderer *r)
     int i;
 #endif
     r->frame_valid = 0; /* the model frame too */
+    r->model_route_ok = 0;
 #if STP_VERTEX_CACHE
     if (++r->cache_stamp == 0) {
         /* wrapped: clear the entries so an old stamp cannot match */
@@ -876,6 +881,11 @@ STP_HOT_INLINE void enter_transform_n(stp_renderer *r, const stp_vec3 *vertices,
     const uint16_t serial = ++r->cache_polygon; /* wraps: a stale match only skips the cache */
     const uint32_t stamp = r->cache_stamp;
     stp_vertex_entry *const cache = r->cache;
+#if STP_NARROW_FORMS
+    const uint32_t hash = r->cache_hash;
+#else
+    const uint32_t hash = STP_CACHE_HASH; /* a constant: one instruction fewer on the host */
+#endif
     stp_vec3 *const view_out = r->clip_a;
     unsigned all = 31u, any = 0;
     for (i = 0; i < n; i++) {
@@ -883,10 +893,12 @@ STP_HOT_INLINE void enter_transform_n(stp_renderer *r, const stp_vec3 *vertices,
          * by a miss */
         const stp_fix px = vertices[i].x, py = vertices[i].y, pz = vertices[i].z;
         /* a multiplicative hash of the exact coordinates, rotated apart
-         * and mixed by one product (compilers for cores without a fast
-         * multiplier expand each constant product into ~20 shifts) */
+         * and mixed by one product; on ARMv6-M the multiplier
+         * STP_CACHE_HASH is read from the state, where the compiler cannot
+         * see it: gcc expands a constant product into 14 shifts and
+         * additions there, one MULS otherwise */
         uint32_t ux = (uint32_t)px, uy = (uint32_t)py, uz = (uint32_t)pz;
-        uint32_t h = (ux ^ ((uy << 11) | (uy >> 21)) ^ ((uz << 22) | (uz >> 10))) * 0x9E3779B1u;
+        uint32_t h = (ux ^ ((uy << 11) | (uy >> 21)) ^ ((uz << 22) | (uz >> 10))) * hash;
         uint32_t slot = (h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1);
         stp_vertex_entry *c = &cache[slot];
         if (c->stamp != stamp || c->point.x != px || c->point.y != py || c->point.z != pz) {
@@ -1453,23 +1465,34 @@ static stp_face world_facing(const stp_renderer *r, const stp_vec3 *v)
     return side > 0 ? STP_FACE_FRONT : (side < 0 ? STP_FACE_BACK : STP_FACE_UNKNOWN);
 }
 
-/* The model frame when a flat polygon takes the face stage's model route
- * (the route of every face stp_renderer_mesh enters without the fallback:
- * a usable model frame, monochrome, no transparency, no shadow map), or
- * NULL. */
-static const stp_model_frame *model_route(stp_renderer *r)
+/* model_route's test but the shadow maps', when model_route_ok is clear:
+ * sets model_route_ok when it passes. */
+STP_NOINLINE int model_route_decide(stp_renderer *r)
 {
 #if STP_WITH_TRANSPARENCY
     if (r->t_max > 0 || r->t_min > 0)
         return 0;
 #endif
+    if (r->colour || model_frame(r) == 0)
+        return 0;
+    r->model_route_ok = 1;
+    return 1;
+}
+
+/* The model frame when a flat polygon takes the face stage's model route
+ * (the route of every face stp_renderer_mesh enters without the fallback:
+ * a usable model frame, monochrome, no transparency, no shadow map), or
+ * NULL.  All but the shadow maps (set in shadow.c) are known from
+ * model_route_ok, one test, while the state they depend on stays. */
+STP_HOT_INLINE const stp_model_frame *model_route(stp_renderer *r)
+{
 #if STP_WITH_SHADOWS
     if (shadows_on(r))
         return 0;
 #endif
-    if (r->colour)
+    if (STP_UNLIKELY(!r->model_route_ok) && !model_route_decide(r))
         return 0;
-    return model_frame(r);
+    return &r->frame;
 }
 
 #if STP_NARROW_FORMS
@@ -1705,10 +1728,15 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
 {
     const stp_model_frame *frame;
     int status;
-    if (r == 0 || vertices == 0 || n < 3)
-        return n < 3 && n >= 0 && r != 0 ? STP_ERR_DEGENERATE : STP_ERR_ARG;
-    if (n > STP_MAX_POLYGON_VERTICES)
-        return STP_ERR_TOO_MANY_VERTICES;
+    /* one test for good arguments (n in [3, STP_MAX_POLYGON_VERTICES]),
+     * the error's kind after */
+    if (STP_UNLIKELY(r == 0 || vertices == 0 || (unsigned)n - 3u > STP_MAX_POLYGON_VERTICES - 3u)) {
+        if (r == 0 || n < 0)
+            return STP_ERR_ARG;
+        if (n < 3)
+            return STP_ERR_DEGENERATE; /* with vertices NULL too */
+        return vertices == 0 ? STP_ERR_ARG : STP_ERR_TOO_MANY_VERTICES;
+    }
     /* an implicit segment is opened only for a call that can draw */
     if ((status = check_open(r)) != STP_OK)
         return status;

@@ -94,6 +94,7 @@ typedef struct stp_vertex_entry {
 #define STP_CACHE_NOT_PROJECTED INT32_MIN /* dx of an entry not projected yet */
 #define STP_CODE_RANGE 32    /* code of a saturated view point (STP_ERR_RANGE) */
 #define STP_CACHE_NONE 0xFFFFu /* cached[i] of a vertex kept outside the cache */
+#define STP_CACHE_HASH 0x9E3779B1u /* the cache hash's multiplier (cache_hash) */
 #endif
 
 
@@ -152,6 +153,11 @@ struct stp_renderer {
      * cache (cache_forget) */
     stp_model_frame frame;
     int frame_valid;
+    /* a flat polygon's entry may take the model route (render.c's
+     * model_route: frame valid and usable, no colour, no transparency;
+     * the shadow maps are tested apart): set by model_route_decide,
+     * cleared with frame_valid and by set_colour and set_transparency */
+    int model_route_ok;
 
     int pen_valid;
     stp_vec3 pen; /* view coordinates */
@@ -179,6 +185,7 @@ struct stp_renderer {
     uint32_t cache_stamp; /* >= 1 */
     uint16_t cache_polygon; /* serial of the polygon being entered (wraps) */
     uint16_t cached[STP_MAX_POLYGON_VERTICES]; /* clip_a[i]'s entry in cache[] */
+    uint32_t cache_hash; /* STP_CACHE_HASH, set by stp_renderer_create */
 #endif
 #endif /* !STP_PLAYBACK_ONLY */
     stp_edge edges[STP_CLIP_VERTICES];
