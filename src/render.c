@@ -864,6 +864,58 @@ typedef struct stp_entry {
 #define STP_SIZE_BUILD 0
 #endif
 
+#if STP_VERTEX_CACHE
+/* A miss of cache_vertex: point p to view coordinates and its outcode,
+ * into entry c (slot) unless this polygon's vertex i - 1 or earlier holds
+ * it (then p stays outside the cache, its view point in r->clip_a[i]).
+ * Returns the outcode.  Out of line: a miss is the rarer case. */
+STP_NOINLINE unsigned cache_fill(stp_renderer *r, stp_vertex_entry *c, uint32_t slot, const stp_vec3 *p,
+                                 int i, uint16_t serial)
+{
+    unsigned code;
+    int held = c->used_by == serial; /* the slot holds an earlier vertex of this polygon */
+    stp_vec3 *view = held ? &r->clip_a[i] : &c->view;
+    vertex_to_view(r, *p, view);
+    code = stp_view_saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode(&r->clip_volume, *view);
+    if (held) {
+        r->cached[i] = (uint16_t)STP_CACHE_NONE;
+        return code;
+    }
+    c->stamp = r->cache_stamp;
+    c->point = *p;
+    c->code = (int16_t)code;
+    c->dx = STP_CACHE_NOT_PROJECTED;
+    c->used_by = serial;
+    r->clip_a[i] = c->view;
+    r->cached[i] = (uint16_t)slot;
+    return code;
+}
+
+/* Vertex i of the polygon being entered (serial), point p, through the
+ * vertex cache: its view point in r->clip_a[i], its entry in
+ * r->cached[i]; returns its outcode. */
+STP_HOT_INLINE unsigned cache_vertex(stp_renderer *r, const stp_vec3 *p, int i, uint16_t serial, uint32_t hash,
+                                     uint32_t stamp, stp_vertex_entry *cache, stp_vec3 *view_out,
+                                     uint16_t *cached)
+{
+    /* the coordinates as scalars: a copy of the point is taken only by a
+     * miss */
+    const stp_fix px = p->x, py = p->y, pz = p->z;
+    /* a multiplicative hash of the exact coordinates, rotated apart and
+     * mixed by one product */
+    uint32_t ux = (uint32_t)px, uy = (uint32_t)py, uz = (uint32_t)pz;
+    uint32_t h = (ux ^ ((uy << 11) | (uy >> 21)) ^ ((uz << 22) | (uz >> 10))) * hash;
+    uint32_t slot = (h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1);
+    stp_vertex_entry *c = &cache[slot];
+    if (c->stamp != stamp || c->point.x != px || c->point.y != py || c->point.z != pz)
+        return cache_fill(r, c, slot, p, i, serial);
+    c->used_by = serial;
+    view_out[i] = c->view;
+    cached[i] = (uint16_t)slot;
+    return (unsigned)c->code;
+}
+#endif
+
 /* Step 1: the vertices to view coordinates (r->clip_a), through the
  * vertex cache when there is one, and whether one of them saturated.  A
  * cache entry this polygon already holds is never taken by a later vertex
@@ -871,59 +923,42 @@ typedef struct stp_entry {
  * until the polygon is stored.  With the cache each entry's outcode is
  * found with its view coordinates (a later polygon sharing the vertex is
  * likely to face the eye and need it), so the polygon's outcodes are
- * known here. */
+ * known here.  A triangle's three vertices are taken in line, apart from
+ * the loop. */
 STP_HOT_INLINE void enter_transform_n(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e, const int n)
 {
     int i;
     unsigned range = 0;
 #if STP_VERTEX_CACHE
-    /* locals: the stores below may alias r's fields for the compiler */
     const uint16_t serial = ++r->cache_polygon; /* wraps: a stale match only skips the cache */
-    const uint32_t stamp = r->cache_stamp;
-    stp_vertex_entry *const cache = r->cache;
+    /* on ARMv6-M the multiplier STP_CACHE_HASH is read from the state,
+     * where the compiler cannot see it: gcc expands a constant product
+     * into 14 shifts and additions there, one MULS otherwise */
 #if STP_NARROW_FORMS
     const uint32_t hash = r->cache_hash;
 #else
     const uint32_t hash = STP_CACHE_HASH; /* a constant: one instruction fewer on the host */
 #endif
+    /* locals: the stores may alias r's fields for the compiler */
+    const uint32_t stamp = r->cache_stamp;
+    stp_vertex_entry *const cache = r->cache;
     stp_vec3 *const view_out = r->clip_a;
-    unsigned all = 31u, any = 0;
-    for (i = 0; i < n; i++) {
-        /* the coordinates as scalars: a copy of the point is taken only
-         * by a miss */
-        const stp_fix px = vertices[i].x, py = vertices[i].y, pz = vertices[i].z;
-        /* a multiplicative hash of the exact coordinates, rotated apart
-         * and mixed by one product; on ARMv6-M the multiplier
-         * STP_CACHE_HASH is read from the state, where the compiler cannot
-         * see it: gcc expands a constant product into 14 shifts and
-         * additions there, one MULS otherwise */
-        uint32_t ux = (uint32_t)px, uy = (uint32_t)py, uz = (uint32_t)pz;
-        uint32_t h = (ux ^ ((uy << 11) | (uy >> 21)) ^ ((uz << 22) | (uz >> 10))) * hash;
-        uint32_t slot = (h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1);
-        stp_vertex_entry *c = &cache[slot];
-        if (c->stamp != stamp || c->point.x != px || c->point.y != py || c->point.z != pz) {
-            unsigned code;
-            stp_vec3 *view = &c->view;
-            if (c->used_by == serial) /* the slot holds an earlier vertex of this polygon */
-                view = &view_out[i];
-            vertex_to_view(r, vertices[i], view);
-            code = stp_view_saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode(&r->clip_volume, *view);
-            if (c->used_by == serial) {
-                all &= code;
-                any |= code;
-                r->cached[i] = (uint16_t)STP_CACHE_NONE;
-                continue;
-            }
-            c->stamp = stamp;
-            c->point = vertices[i];
-            c->code = (int16_t)code;
-            c->dx = STP_CACHE_NOT_PROJECTED;
+    uint16_t *const cached = r->cached;
+    unsigned all, any;
+    if (n == 3 && !STP_SIZE_BUILD) {
+        unsigned c0 = cache_vertex(r, &vertices[0], 0, serial, hash, stamp, cache, view_out, cached);
+        unsigned c1 = cache_vertex(r, &vertices[1], 1, serial, hash, stamp, cache, view_out, cached);
+        unsigned c2 = cache_vertex(r, &vertices[2], 2, serial, hash, stamp, cache, view_out, cached);
+        all = c0 & c1 & c2;
+        any = c0 | c1 | c2;
+    } else {
+        all = 31u;
+        any = 0;
+        for (i = 0; i < n; i++) {
+            unsigned code = cache_vertex(r, &vertices[i], i, serial, hash, stamp, cache, view_out, cached);
+            all &= code;
+            any |= code;
         }
-        c->used_by = serial;
-        all &= (unsigned)c->code;
-        any |= (unsigned)c->code;
-        view_out[i] = c->view;
-        r->cached[i] = (uint16_t)slot;
     }
     range = any & STP_CODE_RANGE;
     e->outside_all = all;
