@@ -855,6 +855,10 @@ typedef struct stp_entry {
     int32_t colour;
     stp_fix transmission;
     const stp_instr *projected; /* an unclipped polygon's device vertices, or NULL */
+#if STP_VERTEX_CACHE
+    stp_vertex_entry *entry[3]; /* a triangle's cache entries (r->cached[] as
+                                   pointers, NULL outside), when not STP_SIZE_BUILD */
+#endif
 } stp_entry;
 
 /* A build for size: a triangle's steps are not unrolled apart. */
@@ -868,9 +872,10 @@ typedef struct stp_entry {
 /* A miss of cache_vertex: point p to view coordinates and its outcode,
  * into entry c (slot) unless this polygon's vertex i - 1 or earlier holds
  * it (then p stays outside the cache, its view point in r->clip_a[i]).
- * Returns the outcode.  Out of line: a miss is the rarer case. */
+ * Returns the outcode, the entry taken (or NULL) in *entry.  Out of line:
+ * a miss is the rarer case. */
 STP_NOINLINE unsigned cache_fill(stp_renderer *r, stp_vertex_entry *c, uint32_t slot, const stp_vec3 *p,
-                                 int i, uint16_t serial)
+                                 int i, uint16_t serial, stp_vertex_entry **entry)
 {
     unsigned code;
     int held = c->used_by == serial; /* the slot holds an earlier vertex of this polygon */
@@ -879,6 +884,7 @@ STP_NOINLINE unsigned cache_fill(stp_renderer *r, stp_vertex_entry *c, uint32_t 
     code = stp_view_saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode(&r->clip_volume, *view);
     if (held) {
         r->cached[i] = (uint16_t)STP_CACHE_NONE;
+        *entry = 0;
         return code;
     }
     c->stamp = r->cache_stamp;
@@ -888,15 +894,16 @@ STP_NOINLINE unsigned cache_fill(stp_renderer *r, stp_vertex_entry *c, uint32_t 
     c->used_by = serial;
     r->clip_a[i] = c->view;
     r->cached[i] = (uint16_t)slot;
+    *entry = c;
     return code;
 }
 
 /* Vertex i of the polygon being entered (serial), point p, through the
  * vertex cache: its view point in r->clip_a[i], its entry in
- * r->cached[i]; returns its outcode. */
+ * r->cached[i] and *entry (NULL outside); returns its outcode. */
 STP_HOT_INLINE unsigned cache_vertex(stp_renderer *r, const stp_vec3 *p, int i, uint16_t serial, uint32_t hash,
                                      uint32_t stamp, stp_vertex_entry *cache, stp_vec3 *view_out,
-                                     uint16_t *cached)
+                                     uint16_t *cached, stp_vertex_entry **entry)
 {
     /* the coordinates as scalars: a copy of the point is taken only by a
      * miss */
@@ -908,10 +915,11 @@ STP_HOT_INLINE unsigned cache_vertex(stp_renderer *r, const stp_vec3 *p, int i, 
     uint32_t slot = (h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1);
     stp_vertex_entry *c = &cache[slot];
     if (c->stamp != stamp || c->point.x != px || c->point.y != py || c->point.z != pz)
-        return cache_fill(r, c, slot, p, i, serial);
+        return cache_fill(r, c, slot, p, i, serial, entry);
     c->used_by = serial;
     view_out[i] = c->view;
     cached[i] = (uint16_t)slot;
+    *entry = c;
     return (unsigned)c->code;
 }
 #endif
@@ -946,16 +954,17 @@ STP_HOT_INLINE void enter_transform_n(stp_renderer *r, const stp_vec3 *vertices,
     uint16_t *const cached = r->cached;
     unsigned all, any;
     if (n == 3 && !STP_SIZE_BUILD) {
-        unsigned c0 = cache_vertex(r, &vertices[0], 0, serial, hash, stamp, cache, view_out, cached);
-        unsigned c1 = cache_vertex(r, &vertices[1], 1, serial, hash, stamp, cache, view_out, cached);
-        unsigned c2 = cache_vertex(r, &vertices[2], 2, serial, hash, stamp, cache, view_out, cached);
+        unsigned c0 = cache_vertex(r, &vertices[0], 0, serial, hash, stamp, cache, view_out, cached, &e->entry[0]);
+        unsigned c1 = cache_vertex(r, &vertices[1], 1, serial, hash, stamp, cache, view_out, cached, &e->entry[1]);
+        unsigned c2 = cache_vertex(r, &vertices[2], 2, serial, hash, stamp, cache, view_out, cached, &e->entry[2]);
         all = c0 & c1 & c2;
         any = c0 | c1 | c2;
     } else {
         all = 31u;
         any = 0;
         for (i = 0; i < n; i++) {
-            unsigned code = cache_vertex(r, &vertices[i], i, serial, hash, stamp, cache, view_out, cached);
+            stp_vertex_entry *entry;
+            unsigned code = cache_vertex(r, &vertices[i], i, serial, hash, stamp, cache, view_out, cached, &entry);
             all &= code;
             any |= code;
         }
@@ -1335,12 +1344,11 @@ static inline void store_records(stp_renderer *r, const stp_instr *record, int r
 }
 #endif
 
-/* The device position of vertex i of r->clip_a (inside the view volume),
- * through the vertex cache: each cached vertex projected once. */
-STP_HOT_INLINE void project_entered_vertex(stp_renderer *r, int i, stp_instr *out)
-{
 #if STP_VERTEX_CACHE
-    stp_vertex_entry *c = r->cached[i] != STP_CACHE_NONE ? &r->cache[r->cached[i]] : 0;
+/* project_entered_vertex for vertex i's cache entry c (NULL: outside the
+ * cache), as enter_transform_n found it for a triangle. */
+STP_HOT_INLINE void project_cached_vertex(stp_renderer *r, stp_vertex_entry *c, int i, stp_instr *out)
+{
     if (c && c->dx != STP_CACHE_NOT_PROJECTED) {
         out->x = c->dx;
         out->y = c->dy;
@@ -1353,6 +1361,15 @@ STP_HOT_INLINE void project_entered_vertex(stp_renderer *r, int i, stp_instr *ou
         c->dy = out->y;
         c->dz = out->z;
     }
+}
+#endif
+
+/* The device position of vertex i of r->clip_a (inside the view volume),
+ * through the vertex cache: each cached vertex projected once. */
+STP_HOT_INLINE void project_entered_vertex(stp_renderer *r, int i, stp_instr *out)
+{
+#if STP_VERTEX_CACHE
+    project_cached_vertex(r, r->cached[i] != STP_CACHE_NONE ? &r->cache[r->cached[i]] : 0, i, out);
 #else
     project(r, r->clip_a[i], out);
 #endif
@@ -1631,9 +1648,16 @@ static int enter_model_triangle(stp_renderer *r, stp_entry *e, const stp_model_f
     stp_vec3 centre;
     int16_t nv[3];
     int style;
+#if STP_VERTEX_CACHE && !STP_SIZE_BUILD
+    /* the entries enter_transform_n's triangle case found */
+    project_cached_vertex(r, e->entry[0], 0, &p[0]);
+    project_cached_vertex(r, e->entry[1], 1, &p[1]);
+    project_cached_vertex(r, e->entry[2], 2, &p[2]);
+#else
     project_entered_vertex(r, 0, &p[0]);
     project_entered_vertex(r, 1, &p[1]);
     project_entered_vertex(r, 2, &p[2]);
+#endif
     if (!stp_render_triangle_shows(r, r->pixel_cull ? STP_CENTRE_TEST_MAX : 0, p[0].x, p[0].y, p[1].x,
                                    p[1].y, p[2].x, p[2].y))
         return STP_OK; /* between two row centres, or pixel culling: draws nothing */
