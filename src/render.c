@@ -75,6 +75,7 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     forget_fast_shade(r);
     r->fast_shade_parallel = 0;
     r->frame_valid = 0;
+    r->model_route_ok = 0;
     r->shading = 0;
     r->levels = 16;
     r->fill_style = 16;
@@ -99,6 +100,7 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     }
     r->cache_stamp = 1;
     r->cache_polygon = 0;
+    r->cache_hash = STP_CACHE_HASH;
 #endif
 #if STP_WITH_SHADOWS
     for (i = 0; i < STP_MAX_LIGHTS; i++) {
@@ -251,6 +253,7 @@ int stp_renderer_set_colour(stp_renderer *r, int on)
         return STP_ERR_ARG;
 #if STP_WITH_COLOUR
     r->colour = on != 0;
+    r->model_route_ok = 0; /* model_route decides again */
     return STP_OK;
 #else
     return on ? STP_ERR_UNSUPPORTED : STP_OK;
@@ -266,6 +269,7 @@ int stp_renderer_set_transparency(stp_renderer *r, stp_fix t_min, stp_fix t_max,
 #if STP_WITH_TRANSPARENCY
     r->t_min = t_min;
     r->t_max = t_max;
+    r->model_route_ok = 0; /* model_route decides again */
     r->t_power = power;
     /* e^(-a d) = 2^(-a d log2 e) */
     {
@@ -507,6 +511,7 @@ static void cache_forget(stp_renderer *r)
     int i;
 #endif
     r->frame_valid = 0; /* the model frame too */
+    r->model_route_ok = 0;
 #if STP_VERTEX_CACHE
     if (++r->cache_stamp == 0) {
         /* wrapped: clear the entries so an old stamp cannot match */
@@ -850,6 +855,10 @@ typedef struct stp_entry {
     int32_t colour;
     stp_fix transmission;
     const stp_instr *projected; /* an unclipped polygon's device vertices, or NULL */
+#if STP_VERTEX_CACHE
+    stp_vertex_entry *entry[3]; /* a triangle's cache entries (r->cached[] as
+                                   pointers, NULL outside), when not STP_SIZE_BUILD */
+#endif
 } stp_entry;
 
 /* A build for size: a triangle's steps are not unrolled apart. */
@@ -859,6 +868,62 @@ typedef struct stp_entry {
 #define STP_SIZE_BUILD 0
 #endif
 
+#if STP_VERTEX_CACHE
+/* A miss of cache_vertex: point p to view coordinates and its outcode,
+ * into entry c (slot) unless this polygon's vertex i - 1 or earlier holds
+ * it (then p stays outside the cache, its view point in r->clip_a[i]).
+ * Returns the outcode, the entry taken (or NULL) in *entry.  Out of line:
+ * a miss is the rarer case. */
+STP_NOINLINE unsigned cache_fill(stp_renderer *r, stp_vertex_entry *c, uint32_t slot, const stp_vec3 *p,
+                                 int i, uint16_t serial, stp_vertex_entry **entry)
+{
+    unsigned code;
+    int held = c->used_by == serial; /* the slot holds an earlier vertex of this polygon */
+    stp_vec3 *view = held ? &r->clip_a[i] : &c->view;
+    vertex_to_view(r, *p, view);
+    code = stp_view_saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode(&r->clip_volume, *view);
+    if (held) {
+        r->cached[i] = (uint16_t)STP_CACHE_NONE;
+        *entry = 0;
+        return code;
+    }
+    c->stamp = r->cache_stamp;
+    c->point = *p;
+    c->code = (int16_t)code;
+    c->dx = STP_CACHE_NOT_PROJECTED;
+    c->used_by = serial;
+    r->clip_a[i] = c->view;
+    r->cached[i] = (uint16_t)slot;
+    *entry = c;
+    return code;
+}
+
+/* Vertex i of the polygon being entered (serial), point p, through the
+ * vertex cache: its view point in r->clip_a[i], its entry in
+ * r->cached[i] and *entry (NULL outside); returns its outcode. */
+STP_HOT_INLINE unsigned cache_vertex(stp_renderer *r, const stp_vec3 *p, int i, uint16_t serial, uint32_t hash,
+                                     uint32_t stamp, stp_vertex_entry *cache, stp_vec3 *view_out,
+                                     uint16_t *cached, stp_vertex_entry **entry)
+{
+    /* the coordinates as scalars: a copy of the point is taken only by a
+     * miss */
+    const stp_fix px = p->x, py = p->y, pz = p->z;
+    /* a multiplicative hash of the exact coordinates, rotated apart and
+     * mixed by one product */
+    uint32_t ux = (uint32_t)px, uy = (uint32_t)py, uz = (uint32_t)pz;
+    uint32_t h = (ux ^ ((uy << 11) | (uy >> 21)) ^ ((uz << 22) | (uz >> 10))) * hash;
+    uint32_t slot = (h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1);
+    stp_vertex_entry *c = &cache[slot];
+    if (c->stamp != stamp || c->point.x != px || c->point.y != py || c->point.z != pz)
+        return cache_fill(r, c, slot, p, i, serial, entry);
+    c->used_by = serial;
+    view_out[i] = c->view;
+    cached[i] = (uint16_t)slot;
+    *entry = c;
+    return (unsigned)c->code;
+}
+#endif
+
 /* Step 1: the vertices to view coordinates (r->clip_a), through the
  * vertex cache when there is one, and whether one of them saturated.  A
  * cache entry this polygon already holds is never taken by a later vertex
@@ -866,52 +931,43 @@ typedef struct stp_entry {
  * until the polygon is stored.  With the cache each entry's outcode is
  * found with its view coordinates (a later polygon sharing the vertex is
  * likely to face the eye and need it), so the polygon's outcodes are
- * known here. */
+ * known here.  A triangle's three vertices are taken in line, apart from
+ * the loop. */
 STP_HOT_INLINE void enter_transform_n(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e, const int n)
 {
     int i;
     unsigned range = 0;
 #if STP_VERTEX_CACHE
-    /* locals: the stores below may alias r's fields for the compiler */
     const uint16_t serial = ++r->cache_polygon; /* wraps: a stale match only skips the cache */
+    /* on ARMv6-M the multiplier STP_CACHE_HASH is read from the state,
+     * where the compiler cannot see it: gcc expands a constant product
+     * into 14 shifts and additions there, one MULS otherwise */
+#if STP_NARROW_FORMS
+    const uint32_t hash = r->cache_hash;
+#else
+    const uint32_t hash = STP_CACHE_HASH; /* a constant: one instruction fewer on the host */
+#endif
+    /* locals: the stores may alias r's fields for the compiler */
     const uint32_t stamp = r->cache_stamp;
     stp_vertex_entry *const cache = r->cache;
     stp_vec3 *const view_out = r->clip_a;
-    unsigned all = 31u, any = 0;
-    for (i = 0; i < n; i++) {
-        /* the coordinates as scalars: a copy of the point is taken only
-         * by a miss */
-        const stp_fix px = vertices[i].x, py = vertices[i].y, pz = vertices[i].z;
-        /* a multiplicative hash of the exact coordinates, rotated apart
-         * and mixed by one product (compilers for cores without a fast
-         * multiplier expand each constant product into ~20 shifts) */
-        uint32_t ux = (uint32_t)px, uy = (uint32_t)py, uz = (uint32_t)pz;
-        uint32_t h = (ux ^ ((uy << 11) | (uy >> 21)) ^ ((uz << 22) | (uz >> 10))) * 0x9E3779B1u;
-        uint32_t slot = (h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1);
-        stp_vertex_entry *c = &cache[slot];
-        if (c->stamp != stamp || c->point.x != px || c->point.y != py || c->point.z != pz) {
-            unsigned code;
-            stp_vec3 *view = &c->view;
-            if (c->used_by == serial) /* the slot holds an earlier vertex of this polygon */
-                view = &view_out[i];
-            vertex_to_view(r, vertices[i], view);
-            code = stp_view_saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode(&r->clip_volume, *view);
-            if (c->used_by == serial) {
-                all &= code;
-                any |= code;
-                r->cached[i] = (uint16_t)STP_CACHE_NONE;
-                continue;
-            }
-            c->stamp = stamp;
-            c->point = vertices[i];
-            c->code = (int16_t)code;
-            c->dx = STP_CACHE_NOT_PROJECTED;
+    uint16_t *const cached = r->cached;
+    unsigned all, any;
+    if (n == 3 && !STP_SIZE_BUILD) {
+        unsigned c0 = cache_vertex(r, &vertices[0], 0, serial, hash, stamp, cache, view_out, cached, &e->entry[0]);
+        unsigned c1 = cache_vertex(r, &vertices[1], 1, serial, hash, stamp, cache, view_out, cached, &e->entry[1]);
+        unsigned c2 = cache_vertex(r, &vertices[2], 2, serial, hash, stamp, cache, view_out, cached, &e->entry[2]);
+        all = c0 & c1 & c2;
+        any = c0 | c1 | c2;
+    } else {
+        all = 31u;
+        any = 0;
+        for (i = 0; i < n; i++) {
+            stp_vertex_entry *entry;
+            unsigned code = cache_vertex(r, &vertices[i], i, serial, hash, stamp, cache, view_out, cached, &entry);
+            all &= code;
+            any |= code;
         }
-        c->used_by = serial;
-        all &= (unsigned)c->code;
-        any |= (unsigned)c->code;
-        view_out[i] = c->view;
-        r->cached[i] = (uint16_t)slot;
     }
     range = any & STP_CODE_RANGE;
     e->outside_all = all;
@@ -1288,12 +1344,11 @@ static inline void store_records(stp_renderer *r, const stp_instr *record, int r
 }
 #endif
 
-/* The device position of vertex i of r->clip_a (inside the view volume),
- * through the vertex cache: each cached vertex projected once. */
-STP_HOT_INLINE void project_entered_vertex(stp_renderer *r, int i, stp_instr *out)
-{
 #if STP_VERTEX_CACHE
-    stp_vertex_entry *c = r->cached[i] != STP_CACHE_NONE ? &r->cache[r->cached[i]] : 0;
+/* project_entered_vertex for vertex i's cache entry c (NULL: outside the
+ * cache), as enter_transform_n found it for a triangle. */
+STP_HOT_INLINE void project_cached_vertex(stp_renderer *r, stp_vertex_entry *c, int i, stp_instr *out)
+{
     if (c && c->dx != STP_CACHE_NOT_PROJECTED) {
         out->x = c->dx;
         out->y = c->dy;
@@ -1306,6 +1361,15 @@ STP_HOT_INLINE void project_entered_vertex(stp_renderer *r, int i, stp_instr *ou
         c->dy = out->y;
         c->dz = out->z;
     }
+}
+#endif
+
+/* The device position of vertex i of r->clip_a (inside the view volume),
+ * through the vertex cache: each cached vertex projected once. */
+STP_HOT_INLINE void project_entered_vertex(stp_renderer *r, int i, stp_instr *out)
+{
+#if STP_VERTEX_CACHE
+    project_cached_vertex(r, r->cached[i] != STP_CACHE_NONE ? &r->cache[r->cached[i]] : 0, i, out);
 #else
     project(r, r->clip_a[i], out);
 #endif
@@ -1453,23 +1517,34 @@ static stp_face world_facing(const stp_renderer *r, const stp_vec3 *v)
     return side > 0 ? STP_FACE_FRONT : (side < 0 ? STP_FACE_BACK : STP_FACE_UNKNOWN);
 }
 
-/* The model frame when a flat polygon takes the face stage's model route
- * (the route of every face stp_renderer_mesh enters without the fallback:
- * a usable model frame, monochrome, no transparency, no shadow map), or
- * NULL. */
-static const stp_model_frame *model_route(stp_renderer *r)
+/* model_route's test but the shadow maps', when model_route_ok is clear:
+ * sets model_route_ok when it passes. */
+STP_NOINLINE int model_route_decide(stp_renderer *r)
 {
 #if STP_WITH_TRANSPARENCY
     if (r->t_max > 0 || r->t_min > 0)
         return 0;
 #endif
+    if (r->colour || model_frame(r) == 0)
+        return 0;
+    r->model_route_ok = 1;
+    return 1;
+}
+
+/* The model frame when a flat polygon takes the face stage's model route
+ * (the route of every face stp_renderer_mesh enters without the fallback:
+ * a usable model frame, monochrome, no transparency, no shadow map), or
+ * NULL.  All but the shadow maps (set in shadow.c) are known from
+ * model_route_ok, one test, while the state they depend on stays. */
+STP_HOT_INLINE const stp_model_frame *model_route(stp_renderer *r)
+{
 #if STP_WITH_SHADOWS
     if (shadows_on(r))
         return 0;
 #endif
-    if (r->colour)
+    if (STP_UNLIKELY(!r->model_route_ok) && !model_route_decide(r))
         return 0;
-    return model_frame(r);
+    return &r->frame;
 }
 
 #if STP_NARROW_FORMS
@@ -1573,9 +1648,16 @@ static int enter_model_triangle(stp_renderer *r, stp_entry *e, const stp_model_f
     stp_vec3 centre;
     int16_t nv[3];
     int style;
+#if STP_VERTEX_CACHE && !STP_SIZE_BUILD
+    /* the entries enter_transform_n's triangle case found */
+    project_cached_vertex(r, e->entry[0], 0, &p[0]);
+    project_cached_vertex(r, e->entry[1], 1, &p[1]);
+    project_cached_vertex(r, e->entry[2], 2, &p[2]);
+#else
     project_entered_vertex(r, 0, &p[0]);
     project_entered_vertex(r, 1, &p[1]);
     project_entered_vertex(r, 2, &p[2]);
+#endif
     if (!stp_render_triangle_shows(r, r->pixel_cull ? STP_CENTRE_TEST_MAX : 0, p[0].x, p[0].y, p[1].x,
                                    p[1].y, p[2].x, p[2].y))
         return STP_OK; /* between two row centres, or pixel culling: draws nothing */
@@ -1705,10 +1787,15 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
 {
     const stp_model_frame *frame;
     int status;
-    if (r == 0 || vertices == 0 || n < 3)
-        return n < 3 && n >= 0 && r != 0 ? STP_ERR_DEGENERATE : STP_ERR_ARG;
-    if (n > STP_MAX_POLYGON_VERTICES)
-        return STP_ERR_TOO_MANY_VERTICES;
+    /* one test for good arguments (n in [3, STP_MAX_POLYGON_VERTICES]),
+     * the error's kind after */
+    if (STP_UNLIKELY(r == 0 || vertices == 0 || (unsigned)n - 3u > STP_MAX_POLYGON_VERTICES - 3u)) {
+        if (r == 0 || n < 0)
+            return STP_ERR_ARG;
+        if (n < 3)
+            return STP_ERR_DEGENERATE; /* with vertices NULL too */
+        return vertices == 0 ? STP_ERR_ARG : STP_ERR_TOO_MANY_VERTICES;
+    }
     /* an implicit segment is opened only for a call that can draw */
     if ((status = check_open(r)) != STP_OK)
         return status;

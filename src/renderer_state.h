@@ -94,6 +94,7 @@ typedef struct stp_vertex_entry {
 #define STP_CACHE_NOT_PROJECTED INT32_MIN /* dx of an entry not projected yet */
 #define STP_CODE_RANGE 32    /* code of a saturated view point (STP_ERR_RANGE) */
 #define STP_CACHE_NONE 0xFFFFu /* cached[i] of a vertex kept outside the cache */
+#define STP_CACHE_HASH 0x9E3779B1u /* the cache hash's multiplier (cache_hash) */
 #endif
 
 
@@ -102,9 +103,43 @@ struct stp_renderer {
     uint32_t capacity, used;
     uint32_t width, height;
 
-    stp_segment segments[STP_MAX_SEGMENTS];
     int open_segment; /* index into segments, -1 when none */
     int fill_style, levels;
+#if !STP_PLAYBACK_ONLY
+    /* the fields a polygon's or a mesh's entry reads per face come first:
+     * ARMv6-M loads and stores reach 124 bytes past the base with an
+     * immediate offset (62 for halfwords), farther fields take one or two
+     * instructions more each (the rest of the entry side's state below) */
+#if STP_VERTEX_CACHE
+    uint16_t cache_polygon; /* (the vertex cache, below) serial of the polygon being entered (wraps) */
+    uint32_t cache_stamp;   /* >= 1 */
+    uint32_t cache_hash;    /* STP_CACHE_HASH, set by stp_renderer_create */
+#endif
+    int shading, backface_removal;
+    /* stp_renderer_set_pixel_cull: triangles reaching no pixel centre are
+     * left out at entry (stp_render_centre_reached) */
+    int pixel_cull;
+    int current_style;      /* polygon style last entered in the open segment, -1 none */
+    int current_line_style; /* line style likewise */
+    int colour;             /* colour shading on */
+    stp_fix current_transmission; /* t last entered in the open segment */
+    int32_t current_colour; /* colour last entered with current_style */
+    stp_fix last_shade;
+    int fast_shade_valid;   /* (the face stage's shading constants, below) */
+    int fast_shade_parallel;
+    int frame_valid;        /* (the model frame, below) */
+    /* a flat polygon's entry may take the model route (render.c's
+     * model_route: frame valid and usable, no colour, no transparency;
+     * the shadow maps are tested apart): set by model_route_decide,
+     * cleared with frame_valid and by set_colour and set_transparency */
+    int model_route_ok;
+    int model_on;           /* 0: the model transform is the identity, skipped */
+#endif
+#if STP_WITH_SHADOWS
+    uint32_t shadow_set;    /* bit j: shadow[j].depth != 0 */
+#endif
+
+    stp_segment segments[STP_MAX_SEGMENTS];
 
 #if !STP_PLAYBACK_ONLY /* the entry side's state: playback.c sets none of it */
     /* view: orthonormal basis (world units), centre of projection */
@@ -123,19 +158,9 @@ struct stp_renderer {
     stp_lighting user_lighting;    /* what SET-LIGHT last said (world) */
     stp_lighting segment_lighting; /* COPY-LIGHT of the open segment (view) */
     stp_material material;
-    int shading, backface_removal;
-    /* stp_renderer_set_pixel_cull: triangles reaching no pixel centre are
-     * left out at entry (stp_render_centre_reached) */
-    int pixel_cull;
-    int current_style;      /* polygon style last entered in the open segment, -1 none */
-    int current_line_style; /* line style likewise */
-    int colour;             /* colour shading on */
     stp_fix t_min, t_max, t_attenuation; /* transparency (t_attenuation:
                                             e^(-a d), 1 when none) */
     int t_power;
-    stp_fix current_transmission; /* t last entered in the open segment */
-    int32_t current_colour; /* colour last entered with current_style */
-    stp_fix last_shade;
     /* the face stage's shading constants (stp_render_face_shader:
      * stp_shade_fast_prepare of segment_lighting, material and the eye at
      * the view origin, or the direction towards the eye of a parallel
@@ -145,18 +170,14 @@ struct stp_renderer {
      * set_view when the projection changes; fast_shade_parallel: the
      * projection they were prepared for */
     stp_shade_fast fast_shade;
-    int fast_shade_valid;
-    int fast_shade_parallel;
     /* the face stage's model frame (stp_render_model_frame), for the view
      * and model transform in force; frame_valid cleared with the vertex
      * cache (cache_forget) */
     stp_model_frame frame;
-    int frame_valid;
 
     int pen_valid;
     stp_vec3 pen; /* view coordinates */
     stp_transform model; /* of the open segment's points (stp_renderer_set_transform) */
-    int model_on;        /* 0: the identity, skipped */
     /* the geometry stage (view_private.h, geometry_stage_private.h) for
      * the open segment's points: STP_GEOMETRY_VIEW (no model transform:
      * point_view is to_view), STP_GEOMETRY_COMPOSED (point_view: model
@@ -176,8 +197,6 @@ struct stp_renderer {
 #endif
 #if STP_VERTEX_CACHE
     stp_vertex_entry cache[STP_VERTEX_CACHE];
-    uint32_t cache_stamp; /* >= 1 */
-    uint16_t cache_polygon; /* serial of the polygon being entered (wraps) */
     uint16_t cached[STP_MAX_POLYGON_VERTICES]; /* clip_a[i]'s entry in cache[] */
 #endif
 #endif /* !STP_PLAYBACK_ONLY */
@@ -187,7 +206,6 @@ struct stp_renderer {
 #if STP_WITH_SHADOWS
     stp_shadow_map shadow[STP_MAX_LIGHTS];
     uint32_t shadow_generation; /* of the last map set */
-    uint32_t shadow_set;        /* bit j: shadow[j].depth != 0 */
     uint32_t shadow_record[STP_MAX_LIGHTS]; /* display-file entry of the
                                                polygon being entered's record
                                                for light j, or UINT32_MAX */
