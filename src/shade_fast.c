@@ -388,29 +388,33 @@ STP_INDEX_INLINE int32_t diff_comp(const stp_vec3 *a, const stp_vec3 *b, int i, 
 static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b, int big, int need_r)
 {
     uint32_t any = 0, q = 0;
+    /* v = a - b: in registers where the core has them (32-bit), else in
+     * d->w, scaled there in place (an 8-bit core's copy would be on the
+     * stack) */
+    int32_t held[3], *v = STP_HAVE_MUL32 ? held : d->w;
     int i, n;
-    /* v = a - b in d->w, then scaled there in place (no copy on the stack) */
     STP_UNROLL3
     for (i = 0; i < 3; i++) {
-        int32_t v = diff_comp(a, b, i, big);
-        d->w[i] = v;
-        any |= stp_abs32(v);
+        v[i] = diff_comp(a, b, i, big);
+        any |= stp_abs32(v[i]);
     }
     /* the bit length of the largest |v_i| is that of their OR */
     n = bit_length_near(any, 16) - 16; /* the largest 2^-n in [2^15, 2^16) */
-    if (n == -16)
-        return 0; /* d->w = 0 */
+    if (n == -16) {
+        d->w[0] = d->w[1] = d->w[2] = 0;
+        return 0;
+    }
     d->shift = n + big;
     /* |v_i| 2^-n truncated, below 2^16: the direction moves by at most
      * 2^-15 radian, which moves a cosine near 1 only to second order */
     if (n > 0) {
         STP_UNROLL3
         for (i = 0; i < 3; i++)
-            d->w[i] = d->w[i] < 0 ? -(int32_t)(stp_abs32(d->w[i]) >> n) : d->w[i] >> n;
+            d->w[i] = v[i] < 0 ? -(int32_t)(stp_abs32(v[i]) >> n) : v[i] >> n;
     } else {
         STP_UNROLL3
         for (i = 0; i < 3; i++)
-            d->w[i] *= (int32_t)1 << -n; /* |v_i| 2^-n < 2^16: no overflow */
+            d->w[i] = v[i] * ((int32_t)1 << -n); /* |v_i| 2^-n < 2^16: no overflow */
     }
     STP_UNROLL3
     for (i = 0; i < 3; i++) {
