@@ -463,14 +463,13 @@ static int32_t dot_n(const int16_t n[3], const stp_shade_fast_dir *d)
     return dot;
 }
 
-/* The cosine N.w/|w| in Q30 from dot = N.w (N in Q14), corrected for
- * |N|^2 = 1 + nd 2^-28 (|nd| <= 2^17): cos (1 - nd 2^-29). */
+/* The cosine N.w/|w| in Q30 from dot = N.w > 0 (N in Q14), corrected
+ * for |N|^2 = 1 + nd 2^-28 (|nd| <= 2^17): cos (1 - nd 2^-29), >= 0.
+ * (A dot <= 0 needs no cosine: every caller takes it as "not lit".) */
 STP_HOT_INLINE int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t nd)
 {
-    uint32_t a = dot < 0 ? 0u - (uint32_t)dot : (uint32_t)dot;
-    int32_t c = (int32_t)(stp_umulhi32_approx(a, d->r) << (1 + d->j)); /* <= 2^30 (1 + 2^-12) */
-    c -= stp_asr32(stp_asr32(c, 15) * stp_asr32(nd, 2), 12); /* 2^15 2^15: fits */
-    return dot < 0 ? -c : c;
+    int32_t c = (int32_t)(stp_umulhi32_approx((uint32_t)dot, d->r) << (1 + d->j)); /* <= 2^30 (1 + 2^-12) */
+    return c - stp_asr32(stp_asr32(c, 15) * stp_asr32(nd, 2), 12); /* 2^15 2^15: fits */
 }
 
 /* The length of d's vector in raw stp_fix units: 2 sqrt(q) 2^shift */
@@ -1361,7 +1360,10 @@ STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
     /* near: the near face (face_body), where no light is big */
     int at_point = !dir_make(&l, &s->light[j], point, near ? 0 : s->light_big[j] | point_big, 1);
     if (!at_point) {
-        n_dot_l = cos_n(dot_n(normal, &l), &l, nd);
+        n_dot_l = dot_n(normal, &l);
+        if (n_dot_l <= 0)
+            return 0; /* the light behind the face, or in its plane */
+        n_dot_l = cos_n(n_dot_l, &l, nd);
         if (n_dot_l <= 0)
             return 0;
         w = sf_recip_hot(sf_add(s->attenuation_c, dir_length(&l)));
