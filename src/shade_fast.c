@@ -1548,7 +1548,11 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
             return s->ambient_shade;
     } else {
         if (!s->parallel) {
-            if (!dir_make(&e_local, &s->eye, &point, s->eye_big | point_big, s->specular))
+            /* the eye's 1/length: for the highlight, and on 32-bit cores
+             * always (every call then asks for it, and the flag is not
+             * passed: fewer instructions a call than the rare diffuse
+             * eye's root; on 8-bit cores a root of library products) */
+            if (!dir_make(&e_local, &s->eye, &point, s->eye_big | point_big, STP_HAVE_MUL32 || s->specular))
                 return s->ambient_shade; /* the eye on the face */
             e = &e_local;
         }
