@@ -1529,7 +1529,7 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
     stp_shade_fast_dir e_local;
     const stp_shade_fast_dir *e = &s->e;
     int32_t nd, dot_e = 0, sum = s->ambient;
-    int j, lit = 0;
+    int j;
     int32_t n_dot_e = 0;
     stp_sf16 inv_ne = {0, 0};
     uint32_t inv_ne_q26 = 0;
@@ -1574,7 +1574,6 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
     for (j = 0; j < s->count; j++) {
         int32_t share = light_share(s, j, normal, &point, point_big, near, nd, e, n_dot_e, inv_ne, inv_ne_q26);
         if (share > 0) {
-            lit = 1;
             sum += share; /* GRAZE_EXACT too: at most 2^29 + 2^30 + 1 */
             if (sum >= SUM_ONE) {
 #if STP_WITH_SPECULAR
@@ -1585,7 +1584,9 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
             }
         }
     }
-    return shade_of_sum(s, lit, sum);
+    /* a light reached the face iff its share moved the sum (each share
+     * added is > 0, and the sum stays below 2^31) */
+    return shade_of_sum(s, sum != s->ambient, sum);
 }
 
 /* The 32-bit targets' entries; on a host (kept compiled there: its
