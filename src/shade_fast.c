@@ -401,7 +401,8 @@ static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b,
     /* the bit length of the largest |v_i| is that of their OR */
     n = bit_length_near(any, 16) - 16; /* the largest 2^-n in [2^15, 2^16) */
     if (n == -16) {
-        d->w[0] = d->w[1] = d->w[2] = 0;
+        if (v != d->w) /* in place they are 0 already */
+            d->w[0] = d->w[1] = d->w[2] = 0;
         return 0;
     }
     d->shift = n + big;
