@@ -385,6 +385,13 @@ STP_INDEX_INLINE int32_t diff_comp(const stp_vec3 *a, const stp_vec3 *b, int i, 
 /* a - b scaled to 16 bits (stp_shade_fast_dir) and, when need_r, its
  * 1/length; halved first when either has a component beyond 2^30 (big).
  * Returns 0 for a zero difference (d->w = 0 then). */
+/* need_r for the eye's direction (face_body): the highlight needs it; on
+ * 32-bit cores every call asks for it, so that the flag, the same at each
+ * call, is not passed (a fifth argument, on the stack: more instructions
+ * a call than the rare diffuse eye's root); on 8-bit cores a root is of
+ * library products */
+#define EYE_NEEDS_R(s) (STP_HAVE_MUL32 || (s)->specular)
+
 static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b, int big, int need_r)
 {
     uint32_t any = 0, q = 0;
@@ -1549,11 +1556,7 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
             return s->ambient_shade;
     } else {
         if (!s->parallel) {
-            /* the eye's 1/length: for the highlight, and on 32-bit cores
-             * always (every call then asks for it, and the flag is not
-             * passed: fewer instructions a call than the rare diffuse
-             * eye's root; on 8-bit cores a root of library products) */
-            if (!dir_make(&e_local, &s->eye, &point, s->eye_big | point_big, STP_HAVE_MUL32 || s->specular))
+            if (!dir_make(&e_local, &s->eye, &point, s->eye_big | point_big, EYE_NEEDS_R(s)))
                 return s->ambient_shade; /* the eye on the face */
             e = &e_local;
         }
