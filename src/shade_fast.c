@@ -385,32 +385,44 @@ STP_INDEX_INLINE int32_t diff_comp(const stp_vec3 *a, const stp_vec3 *b, int i, 
 /* a - b scaled to 16 bits (stp_shade_fast_dir) and, when need_r, its
  * 1/length; halved first when either has a component beyond 2^30 (big).
  * Returns 0 for a zero difference (d->w = 0 then). */
+/* need_r for the eye's direction (face_body): the highlight needs it; on
+ * 32-bit cores every call asks for it, so that the flag, the same at each
+ * call, is not passed (a fifth argument, on the stack: more instructions
+ * a call than the rare diffuse eye's root); on 8-bit cores a root is of
+ * library products */
+#define EYE_NEEDS_R(s) (STP_HAVE_MUL32 || (s)->specular)
+
 static int dir_make(stp_shade_fast_dir *d, const stp_vec3 *a, const stp_vec3 *b, int big, int need_r)
 {
     uint32_t any = 0, q = 0;
+    /* v = a - b: in registers where the core has them (32-bit), else in
+     * d->w, scaled there in place (an 8-bit core's copy would be on the
+     * stack) */
+    int32_t held[3], *v = STP_HAVE_MUL32 ? held : d->w;
     int i, n;
-    /* v = a - b in d->w, then scaled there in place (no copy on the stack) */
     STP_UNROLL3
     for (i = 0; i < 3; i++) {
-        int32_t v = diff_comp(a, b, i, big);
-        d->w[i] = v;
-        any |= stp_abs32(v);
+        v[i] = diff_comp(a, b, i, big);
+        any |= stp_abs32(v[i]);
     }
     /* the bit length of the largest |v_i| is that of their OR */
     n = bit_length_near(any, 16) - 16; /* the largest 2^-n in [2^15, 2^16) */
-    if (n == -16)
-        return 0; /* d->w = 0 */
+    if (n == -16) {
+        if (v != d->w) /* in place they are 0 already */
+            d->w[0] = d->w[1] = d->w[2] = 0;
+        return 0;
+    }
     d->shift = n + big;
     /* |v_i| 2^-n truncated, below 2^16: the direction moves by at most
      * 2^-15 radian, which moves a cosine near 1 only to second order */
     if (n > 0) {
         STP_UNROLL3
         for (i = 0; i < 3; i++)
-            d->w[i] = d->w[i] < 0 ? -(int32_t)(stp_abs32(d->w[i]) >> n) : d->w[i] >> n;
+            d->w[i] = v[i] < 0 ? -(int32_t)(stp_abs32(v[i]) >> n) : v[i] >> n;
     } else {
         STP_UNROLL3
         for (i = 0; i < 3; i++)
-            d->w[i] *= (int32_t)1 << -n; /* |v_i| 2^-n < 2^16: no overflow */
+            d->w[i] = v[i] * ((int32_t)1 << -n); /* |v_i| 2^-n < 2^16: no overflow */
     }
     STP_UNROLL3
     for (i = 0; i < 3; i++) {
@@ -459,14 +471,13 @@ static int32_t dot_n(const int16_t n[3], const stp_shade_fast_dir *d)
     return dot;
 }
 
-/* The cosine N.w/|w| in Q30 from dot = N.w (N in Q14), corrected for
- * |N|^2 = 1 + nd 2^-28 (|nd| <= 2^17): cos (1 - nd 2^-29). */
+/* The cosine N.w/|w| in Q30 from dot = N.w > 0 (N in Q14), corrected
+ * for |N|^2 = 1 + nd 2^-28 (|nd| <= 2^17): cos (1 - nd 2^-29), >= 0.
+ * (A dot <= 0 needs no cosine: every caller takes it as "not lit".) */
 STP_HOT_INLINE int32_t cos_n(int32_t dot, const stp_shade_fast_dir *d, int32_t nd)
 {
-    uint32_t a = dot < 0 ? 0u - (uint32_t)dot : (uint32_t)dot;
-    int32_t c = (int32_t)(stp_umulhi32_approx(a, d->r) << (1 + d->j)); /* <= 2^30 (1 + 2^-12) */
-    c -= stp_asr32(stp_asr32(c, 15) * stp_asr32(nd, 2), 12); /* 2^15 2^15: fits */
-    return dot < 0 ? -c : c;
+    int32_t c = (int32_t)(stp_umulhi32_approx((uint32_t)dot, d->r) << (1 + d->j)); /* <= 2^30 (1 + 2^-12) */
+    return c - stp_asr32(stp_asr32(c, 15) * stp_asr32(nd, 2), 12); /* 2^15 2^15: fits */
 }
 
 /* The length of d's vector in raw stp_fix units: 2 sqrt(q) 2^shift */
@@ -1357,7 +1368,10 @@ STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
     /* near: the near face (face_body), where no light is big */
     int at_point = !dir_make(&l, &s->light[j], point, near ? 0 : s->light_big[j] | point_big, 1);
     if (!at_point) {
-        n_dot_l = cos_n(dot_n(normal, &l), &l, nd);
+        n_dot_l = dot_n(normal, &l);
+        if (n_dot_l <= 0)
+            return 0; /* the light behind the face, or in its plane */
+        n_dot_l = cos_n(n_dot_l, &l, nd);
         if (n_dot_l <= 0)
             return 0;
         w = sf_recip_hot(sf_add(s->attenuation_c, dir_length(&l)));
@@ -1523,7 +1537,7 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
     stp_shade_fast_dir e_local;
     const stp_shade_fast_dir *e = &s->e;
     int32_t nd, dot_e = 0, sum = s->ambient;
-    int j, lit = 0;
+    int j;
     int32_t n_dot_e = 0;
     stp_sf16 inv_ne = {0, 0};
     uint32_t inv_ne_q26 = 0;
@@ -1542,7 +1556,7 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
             return s->ambient_shade;
     } else {
         if (!s->parallel) {
-            if (!dir_make(&e_local, &s->eye, &point, s->eye_big | point_big, s->specular))
+            if (!dir_make(&e_local, &s->eye, &point, s->eye_big | point_big, EYE_NEEDS_R(s)))
                 return s->ambient_shade; /* the eye on the face */
             e = &e_local;
         }
@@ -1564,7 +1578,6 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
     for (j = 0; j < s->count; j++) {
         int32_t share = light_share(s, j, normal, &point, point_big, near, nd, e, n_dot_e, inv_ne, inv_ne_q26);
         if (share > 0) {
-            lit = 1;
             sum += share; /* GRAZE_EXACT too: at most 2^29 + 2^30 + 1 */
             if (sum >= SUM_ONE) {
 #if STP_WITH_SPECULAR
@@ -1575,7 +1588,9 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
             }
         }
     }
-    return shade_of_sum(s, lit, sum);
+    /* a light reached the face iff its share moved the sum (each share
+     * added is > 0, and the sum stays below 2^31) */
+    return shade_of_sum(s, sum != s->ambient, sum);
 }
 
 /* The 32-bit targets' entries; on a host (kept compiled there: its
