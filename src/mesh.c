@@ -16,11 +16,13 @@
 #define ONE STP_FIX_ONE
 
 /* stp_mesh_vertex.state: -1 not transformed in this call; else the outcode
- * (bits 0..4, clip.c) or CODE_RANGE, plus PROJECTED once dx, dy, dz hold
- * the device position. */
+ * (bits 0..4, clip.c) or CODE_RANGE, plus UNPROJECTED until dx, dy, dz
+ * hold the device position: 0 is a vertex inside the view volume and
+ * projected, so one test (enter_face) finds a face whose three vertices
+ * are ready, the common case. */
 #define STATE_NEW (-1)
 #define CODE_RANGE 32
-#define PROJECTED 64
+#define UNPROJECTED 64
 
 /* What one call finds once for all its triangles. */
 typedef struct mesh_context {
@@ -176,10 +178,11 @@ static void vertex_transform(mesh_context *c, stp_mesh_vertex *s, uint16_t i)
     const stp_renderer *r = c->r;
     int range = stp_render_point_to_view(r, c->mesh->vertices[i], &s->view);
     if (c->inside)
-        s->state = 0; /* box_inside: no vertex is outside or saturated */
+        s->state = UNPROJECTED; /* box_inside: no vertex is outside or saturated */
     else
-        s->state = range || stp_view_saturated(s->view) ? CODE_RANGE
-                                               : (int32_t)stp_clip_outcode(&r->clip_volume, s->view);
+        s->state = UNPROJECTED | (range || stp_view_saturated(s->view)
+                                      ? CODE_RANGE
+                                      : (int32_t)stp_clip_outcode(&r->clip_volume, s->view));
 }
 
 /* Vertex i's outcode (or CODE_RANGE), transformed once per call; the
@@ -200,7 +203,7 @@ static void vertex_project(const mesh_context *c, stp_mesh_vertex *s)
     s->dx = d[0];
     s->dy = d[1];
     s->dz = d[2];
-    s->state |= PROJECTED;
+    s->state = 0; /* its outcode was 0 */
 }
 
 /* The triangle of indices k through stp_renderer_polygon (mesh.h: the
@@ -240,50 +243,61 @@ static int store_face(mesh_context *c, stp_mesh_vertex *const s[3], int style)
  * estimated in 32 bits on the shifted eye and v0: products below 2^29, the
  * sum below 2^31 (|N| <= 1, |eye - v0| < 2^15 sqrt 3), off the exact sum
  * over 2^shift by less than |n0| + |n1| + |n2| < 2^15 (each floor less
- * than 1), so a larger estimate has the exact sign. */
-static int face_side(const mesh_context *c, const int16_t *n, const stp_vec3 *a)
+ * than 1), so an estimate outside [-2^15, 2^15) has the exact sign (the
+ * test: (side >> 15) + 1 not 0 or 1, one shift). */
+STP_HOT_INLINE int face_side(const mesh_context *c, const int16_t *n, const stp_vec3 *a)
 {
 #if !STP_WIDE_ARITH
-    int32_t side = (int32_t)n[0] * (c->eye[0] - stp_asr32(a->x, c->shift)) +
-                   (int32_t)n[1] * (c->eye[1] - stp_asr32(a->y, c->shift)) +
-                   (int32_t)n[2] * (c->eye[2] - stp_asr32(a->z, c->shift));
-    if (side >= ((int32_t)1 << 15) || side <= -((int32_t)1 << 15))
+    int shift = c->shift;
+    int32_t side = (int32_t)n[0] * (c->eye[0] - stp_asr32(a->x, shift)) +
+                   (int32_t)n[1] * (c->eye[1] - stp_asr32(a->y, shift)) +
+                   (int32_t)n[2] * (c->eye[2] - stp_asr32(a->z, shift));
+    if ((uint32_t)(stp_asr32(side, 15) + 1) > 1u)
         return side > 0 ? 1 : -1;
 #endif
     return stp_render_face_side(c->frame, n, *a);
 }
 
+/* Whether the triangle of indices k (scratch entries s[0..2]) is to be
+ * drawn, its vertices now transformed and projected (1), or else the
+ * status to return for it (STP_OK: wholly outside one plane; an error; the
+ * fallback's status for one crossing a plane): enter_face's path for a
+ * face with a vertex not ready. */
+static int ready_vertices(mesh_context *c, const uint16_t *k, stp_mesh_vertex *const s[3])
+{
+    int32_t code0 = vertex_code(c, s[0], k[0]), code1 = vertex_code(c, s[1], k[1]),
+            code2 = vertex_code(c, s[2], k[2]);
+    int32_t any = code0 | code1 | code2;
+    if (any & CODE_RANGE)
+        return STP_ERR_RANGE;
+    if ((code0 & code1 & code2) != 0)
+        return STP_OK; /* wholly outside one plane */
+    if (any != 0)
+        return enter_fallback(c, k); /* crosses a plane: to be clipped */
+    if (s[0]->state != 0)
+        vertex_project(c, s[0]);
+    if (s[1]->state != 0)
+        vertex_project(c, s[1]);
+    if (s[2]->state != 0)
+        vertex_project(c, s[2]);
+    return 1;
+}
+
 /* The triangle of indices k and normal n on the fast path, not removed as
  * a back face (face_side's side: enter_faces). */
-static int enter_face(mesh_context *c, const uint16_t *k, const int16_t *n, int side)
+STP_HOT_INLINE int enter_face(mesh_context *c, const uint16_t *k, const int16_t *n, int side)
 {
     stp_renderer *r = c->r;
     stp_mesh_vertex *s[3];
     int16_t nv[3];
-    int32_t code0, code1, code2, all, any;
     stp_vec3 centre;
-    int style;
+    int style, ready;
     r->last_shade = -1;
     s[0] = &c->scratch[k[0]];
     s[1] = &c->scratch[k[1]];
     s[2] = &c->scratch[k[2]];
-    code0 = vertex_code(c, s[0], k[0]);
-    code1 = vertex_code(c, s[1], k[1]);
-    code2 = vertex_code(c, s[2], k[2]);
-    all = code0 & code1 & code2;
-    any = code0 | code1 | code2;
-    if (any & CODE_RANGE)
-        return STP_ERR_RANGE;
-    if (all != 0)
-        return STP_OK; /* wholly outside one plane */
-    if (any != 0)
-        return enter_fallback(c, k); /* crosses a plane: to be clipped */
-    if ((s[0]->state & PROJECTED) == 0)
-        vertex_project(c, s[0]);
-    if ((s[1]->state & PROJECTED) == 0)
-        vertex_project(c, s[1]);
-    if ((s[2]->state & PROJECTED) == 0)
-        vertex_project(c, s[2]);
+    if ((s[0]->state | s[1]->state | s[2]->state) != 0 && (ready = ready_vertices(c, k, s)) != 1)
+        return ready;
     if (!stp_render_triangle_shows(r, c->test_rows, s[0]->dx, s[0]->dy, s[1]->dx, s[1]->dy, s[2]->dx,
                                    s[2]->dy))
         return STP_OK; /* between two row centres, or pixel culling: draws nothing */
@@ -295,23 +309,26 @@ static int enter_face(mesh_context *c, const uint16_t *k, const int16_t *n, int 
     return store_face(c, s, style);
 }
 
-/* The fast path's loop over count triangles, by pointers to their indices
- * and normals: a back face (or edge-on one) is removed before enter_face
- * (and its last_shade is -1 as there). */
+/* The fast path's loop over count (> 0) triangles, by pointers to their
+ * indices and normals: a back face (or edge-on one) is removed before
+ * enter_face.  Its last_shade (-1, as enter_face's) is set only for the
+ * last triangle, the one stp_renderer_last_shade reports (face_side is
+ * pure: asked again after the loop). */
 static int enter_faces(mesh_context *c, uint16_t count)
 {
     const uint16_t *k = c->mesh->triangles, *end = k + 3 * (uint32_t)count;
     const int16_t *n = c->mesh->normals;
+    const stp_vec3 *vertices = c->vertices;
     int status;
     for (; k != end; k += 3, n += 3) {
-        int side = face_side(c, n, &c->vertices[k[0]]);
-        if (side <= 0 && c->cull) {
-            c->r->last_shade = -1; /* removed: stp_renderer_last_shade */
+        int side = face_side(c, n, &vertices[k[0]]);
+        if (side <= 0 && c->cull)
             continue;
-        }
         if ((status = enter_face(c, k, n, side)) != STP_OK)
             return status;
     }
+    if (c->cull && face_side(c, n - 3, &vertices[k[-3]]) <= 0)
+        c->r->last_shade = -1; /* removed: stp_renderer_last_shade */
     return STP_OK;
 }
 
