@@ -299,16 +299,17 @@ STP_HOT_INLINE stp_fix stp_render_average3(int small, int32_t a, int32_t b, int3
 }
 
 /* A flat opaque triangle's display-file records, as both entries store
- * them: SHADE (style, r->last_shade, colour 0) when the style or colour
- * changed, written here, then room for its three vertex records, which
- * the caller writes (stp_render_put_vertex: op 3, then STP_OP_LINE twice);
- * r->used counts them all.  NULL when the display file has no room for
- * them (nothing written).  The caller keeps the open segment's end and
- * the transmission (0: the caller's test). */
-STP_HOT_INLINE stp_instr *stp_render_triangle_records(stp_renderer *r, int style)
+ * them: SHADE (style, shade, colour 0) when change (the style or colour
+ * in force differs), written here, then room for its three vertex
+ * records, which the caller writes (stp_render_put_vertex: op 3, then
+ * STP_OP_LINE twice); r->used counts them all.  NULL when the display file
+ * has no room for them (nothing written).  The caller keeps the style in
+ * force (r->current_style and r->current_colour, or a local for many
+ * faces: mesh.c), the open segment's end and the transmission (0: the
+ * caller's test). */
+STP_HOT_INLINE stp_instr *stp_render_face_records(stp_renderer *r, int change, int style, stp_fix shade)
 {
     uint32_t used = r->used;
-    int change = style != r->current_style || r->current_colour != 0;
     stp_instr *out;
     if (r->capacity - used < (change ? 4u : 3u))
         return 0;
@@ -316,17 +317,36 @@ STP_HOT_INLINE stp_instr *stp_render_triangle_records(stp_renderer *r, int style
     if (change) {
         out->op = STP_OP_SHADE;
         out->x = style;
-        out->y = r->last_shade;
+        out->y = shade;
         out->z = 0;
 #if STP_WITH_GOURAUD
         out->shade = -1;
 #endif
         out++;
         used++;
+    }
+    r->used = used + 3;
+    return out;
+}
+
+/* The style in force for a caller keeping it in a local: r->current_style,
+ * or -1 while a colour is (r->current_colour), which no style (>= 1)
+ * matches. */
+STP_HOT_INLINE int stp_render_current_style(const stp_renderer *r)
+{
+    return r->current_colour != 0 ? -1 : r->current_style;
+}
+
+/* stp_render_face_records on the renderer's style in force, the shade
+ * r->last_shade. */
+STP_HOT_INLINE stp_instr *stp_render_triangle_records(stp_renderer *r, int style)
+{
+    int change = style != r->current_style || r->current_colour != 0;
+    stp_instr *out = stp_render_face_records(r, change, style, r->last_shade);
+    if (out != 0 && change) {
         r->current_style = style;
         r->current_colour = 0;
     }
-    r->used = used + 3;
     return out;
 }
 
@@ -382,19 +402,28 @@ STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16
 }
 #endif
 
-/* A flat face's INTENSITY style (1..levels) with shading on (its shade by
- * the face shader s from view normal nv and vertex average centre; the
- * ambient share only, as for N.E = 0, when side is 0: its plane passes
- * through the eye) or off (the fill style); r->last_shade set to its
- * shade. */
+/* A flat face's INTENSITY style (1..steps + 1) by the face shader s from
+ * view normal nv and vertex average centre (the ambient share only, as
+ * for N.E = 0, when side is 0: its plane passes through the eye), its
+ * shade in *shade; steps: stp_intensity_steps of the levels, which a
+ * caller entering many faces finds once. */
+STP_HOT_INLINE int stp_render_face_shade_style(const stp_shade_fast *s, int32_t steps, const int16_t nv[3],
+                                               stp_vec3 centre, int side, stp_fix *shade)
+{
+    *shade = side != 0 ? stp_shade_fast_face(s, nv, centre) : s->ambient_shade;
+    return stp_intensity_index_steps(*shade, steps);
+}
+
+/* A flat face's INTENSITY style (1..levels) with shading on
+ * (stp_render_face_shade_style) or off (the fill style); r->last_shade set
+ * to its shade. */
 STP_HOT_INLINE int stp_render_face_style(stp_renderer *r, const stp_shade_fast *s, const int16_t nv[3],
                                          stp_vec3 centre, int side)
 {
     int style;
-    if (r->shading) {
-        r->last_shade = side != 0 ? stp_shade_fast_face(s, nv, centre) : s->ambient_shade;
-        return stp_intensity_index_inline(r->last_shade, r->levels);
-    }
+    if (r->shading)
+        return stp_render_face_shade_style(s, stp_intensity_steps(r->levels), nv, centre, side,
+                                           &r->last_shade);
     style = r->fill_style;
     r->last_shade = stp_intensity_shade(style, r->levels);
     return style;
