@@ -30,6 +30,7 @@ typedef struct mesh_context {
     const stp_mesh *mesh;
     const stp_vec3 *vertices; /* mesh->vertices */
     int cull; /* back faces are removed (r->backface_removal) */
+    int least_side; /* the least face side entered: 1 with cull, else -1 */
     stp_mesh_vertex *scratch;
     const stp_model_frame *frame; /* the face stage's (render_private.h) */
     /* the eye in model coordinates, floor-shifted right by `shift`, so
@@ -381,8 +382,8 @@ static int enter_faces(mesh_context *c, uint16_t count)
     take_state(c);
     for (; k != end; k += 3, n += 3) {
         int side = face_side(c, n, &vertices[k[0]]);
-        if (side <= 0 && c->cull)
-            continue;
+        if (side < c->least_side)
+            continue; /* a back face removed */
         if ((status = enter_face(c, k, n, side)) != STP_OK)
             break;
     }
@@ -433,6 +434,7 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
     c.mesh = mesh;
     c.vertices = mesh->vertices;
     c.cull = r->backface_removal;
+    c.least_side = c.cull ? 1 : -1;
     c.scratch = scratch;
     fast = fast_state(r, mesh) && prepare_call(&c);
     c.shade = fast && r->shading ? stp_render_face_shader(r) : 0;
