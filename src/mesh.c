@@ -291,6 +291,14 @@ static int store_face(mesh_context *c, stp_mesh_vertex *const s[3], int style)
     return STP_OK;
 }
 
+#if !STP_WIDE_ARITH
+/* stp_render_face_side for face_side's uncertain estimates. */
+STP_NOINLINE int exact_side(const mesh_context *c, const int16_t *n, const stp_vec3 *a)
+{
+    return stp_render_face_side(c->frame, n, *a);
+}
+#endif
+
 /* The face stage's side of triangle t (stp_render_face_side: the exact
  * sign of N.(eye - v0)); where 64-bit products are library calls, first
  * estimated in 32 bits on the shifted eye and v0: products below 2^29, the
@@ -307,8 +315,10 @@ STP_HOT_INLINE int face_side(const mesh_context *c, const int16_t *n, const stp_
                    (int32_t)n[2] * (c->eye[2] - stp_asr32(a->z, shift));
     if ((uint32_t)(stp_asr32(side, 15) + 1) > 1u)
         return side > 0 ? 1 : -1;
-#endif
+    return exact_side(c, n, a); /* rare: out of line */
+#else
     return stp_render_face_side(c->frame, n, *a);
+#endif
 }
 
 /* Whether the triangle of indices k (scratch entries s[0..2]) is to be
