@@ -381,24 +381,24 @@ STP_HOT_INLINE int enter_face(mesh_context *c, const uint16_t *k, const int16_t 
 /* The fast path's loop over count (> 0) triangles, by pointers to their
  * indices and normals: a back face (or edge-on one) is removed before
  * enter_face.  Its last_shade (-1, as enter_face's) counts only for the
- * last triangle, the one stp_renderer_last_shade reports: set after the
- * loop, from the last side found. */
+ * last triangle, the one stp_renderer_last_shade reports (face_side is
+ * pure: asked again after the loop). */
 static int enter_faces(mesh_context *c, uint16_t count)
 {
     const uint16_t *k = c->mesh->triangles, *end = k + 3 * (uint32_t)count;
     const int16_t *n = c->mesh->normals;
     const stp_vec3 *vertices = c->vertices;
-    int status = STP_OK, side = 1;
+    int status = STP_OK;
     take_state(c);
     for (; k != end; k += 3, n += 3) {
-        side = face_side(c, n, &vertices[k[0]]);
+        int side = face_side(c, n, &vertices[k[0]]);
         if (side < c->least_side)
             continue; /* a back face removed */
         if ((status = enter_face(c, k, n, side)) != STP_OK)
             break;
     }
-    if (side < c->least_side)
-        c->last_shade = -1; /* the last triangle removed: stp_renderer_last_shade */
+    if (status == STP_OK && c->cull && face_side(c, n - 3, &vertices[k[-3]]) <= 0)
+        c->last_shade = -1; /* removed: stp_renderer_last_shade */
     keep_state(c);
     return status;
 }
