@@ -408,6 +408,9 @@ static int check_mesh(const stp_renderer *r, const stp_mesh *mesh, const stp_mes
                       size_t scratch_count)
 {
     const uint16_t *k, *end;
+#if !STP_LEAN_CODE
+    const uint16_t *pair_end;
+#endif
     uint16_t count;
     if (r == 0 || mesh == 0 || scratch == 0 || scratch_count < mesh->vertex_count)
         return STP_ERR_ARG;
@@ -416,14 +419,19 @@ static int check_mesh(const stp_renderer *r, const stp_mesh *mesh, const stp_mes
     if (mesh->vertices == 0 || mesh->triangles == 0)
         return STP_ERR_ARG;
     count = mesh->vertex_count;
-    /* two triangles a step (half the loop's own cost), then an odd one */
-    end = mesh->triangles + 6 * (uint32_t)(mesh->triangle_count >> 1);
-    for (k = mesh->triangles; k != end; k += 6)
+    k = mesh->triangles;
+    end = k + 3 * (uint32_t)mesh->triangle_count;
+#if !STP_LEAN_CODE
+    /* two triangles a step (half the loop's own cost) where time is
+     * dearer than code; the loop below takes an odd count's last */
+    for (pair_end = k + 6 * (uint32_t)(mesh->triangle_count >> 1); k != pair_end; k += 6)
         if (k[0] >= count || k[1] >= count || k[2] >= count || k[3] >= count || k[4] >= count ||
             k[5] >= count)
             return STP_ERR_ARG;
-    if ((mesh->triangle_count & 1) && (k[0] >= count || k[1] >= count || k[2] >= count))
-        return STP_ERR_ARG;
+#endif
+    for (; k != end; k += 3)
+        if (k[0] >= count || k[1] >= count || k[2] >= count)
+            return STP_ERR_ARG;
     return STP_OK;
 }
 
