@@ -370,7 +370,8 @@ STP_HOT_INLINE int enter_face(mesh_context *c, const uint16_t *k, const int16_t 
     centre.y = stp_render_average3(c->inside, s[0]->view.y, s[1]->view.y, s[2]->view.y);
     centre.z = stp_render_average3(c->inside, s[0]->view.z, s[1]->view.z, s[2]->view.z);
     if (c->shade) {
-        style = stp_render_face_shade_style(c->shade, c->steps, nv, centre, side, &c->last_shade);
+        c->last_shade = stp_render_face_shade(c->shade, nv, centre, side);
+        style = stp_intensity_index_steps(c->last_shade, c->steps);
     } else {
         style = c->fill_style;
         c->last_shade = c->fill_shade;

@@ -402,28 +402,26 @@ STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16
 }
 #endif
 
-/* A flat face's INTENSITY style (1..steps + 1) by the face shader s from
- * view normal nv and vertex average centre (the ambient share only, as
- * for N.E = 0, when side is 0: its plane passes through the eye), its
- * shade in *shade; steps: stp_intensity_steps of the levels, which a
- * caller entering many faces finds once. */
-STP_HOT_INLINE int stp_render_face_shade_style(const stp_shade_fast *s, int32_t steps, const int16_t nv[3],
-                                               stp_vec3 centre, int side, stp_fix *shade)
+/* A flat face's shade by the face shader s from view normal nv and vertex
+ * average centre: the ambient share only, as for N.E = 0, when side is 0
+ * (its plane passes through the eye). */
+STP_HOT_INLINE stp_fix stp_render_face_shade(const stp_shade_fast *s, const int16_t nv[3], stp_vec3 centre,
+                                             int side)
 {
-    *shade = side != 0 ? stp_shade_fast_face(s, nv, centre) : s->ambient_shade;
-    return stp_intensity_index_steps(*shade, steps);
+    return side != 0 ? stp_shade_fast_face(s, nv, centre) : s->ambient_shade;
 }
 
-/* A flat face's INTENSITY style (1..levels) with shading on
- * (stp_render_face_shade_style) or off (the fill style); r->last_shade set
- * to its shade. */
+/* A flat face's INTENSITY style (1..levels) with shading on (its shade:
+ * stp_render_face_shade) or off (the fill style); r->last_shade set to its
+ * shade. */
 STP_HOT_INLINE int stp_render_face_style(stp_renderer *r, const stp_shade_fast *s, const int16_t nv[3],
                                          stp_vec3 centre, int side)
 {
     int style;
-    if (r->shading)
-        return stp_render_face_shade_style(s, stp_intensity_steps(r->levels), nv, centre, side,
-                                           &r->last_shade);
+    if (r->shading) {
+        r->last_shade = stp_render_face_shade(s, nv, centre, side);
+        return stp_intensity_index_inline(r->last_shade, r->levels);
+    }
     style = r->fill_style;
     r->last_shade = stp_intensity_shade(style, r->levels);
     return style;
