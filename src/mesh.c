@@ -192,10 +192,10 @@ static int prepare_call(mesh_context *c)
 /* Vertex i (not transformed yet, scratch entry *s) in view coordinates
  * with its outcode (or CODE_RANGE): the geometry stage, as
  * stp_renderer_polygon's. */
-static void vertex_transform(mesh_context *c, stp_mesh_vertex *s, uint16_t i)
+static void vertex_transform(const mesh_context *c, stp_mesh_vertex *s, uint16_t i)
 {
     const stp_renderer *r = c->r;
-    int range = stp_render_point_to_view(r, c->mesh->vertices[i], &s->view);
+    int range = stp_render_point_to_view(r, c->vertices[i], &s->view);
     if (c->inside)
         s->state = UNPROJECTED; /* box_inside: no vertex is outside or saturated */
     else
@@ -321,6 +321,17 @@ STP_HOT_INLINE int face_side(const mesh_context *c, const int16_t *n, const stp_
 #endif
 }
 
+/* Vertex i (scratch entry *s) transformed and projected, when every
+ * vertex is inside the view volume (c->inside). */
+STP_HOT_INLINE void ready_inside(const mesh_context *c, stp_mesh_vertex *s, uint16_t i)
+{
+    if (s->state != 0) {
+        if (s->state == STATE_NEW)
+            vertex_transform(c, s, i);
+        vertex_project(c, s);
+    }
+}
+
 /* Whether the triangle of indices k (scratch entries s[0..2]) is to be
  * drawn, its vertices now transformed and projected (1), or else the
  * status to return for it (STP_OK: wholly outside one plane; an error; the
@@ -328,10 +339,18 @@ STP_HOT_INLINE int face_side(const mesh_context *c, const int16_t *n, const stp_
  * face with a vertex not ready. */
 static int ready_vertices(mesh_context *c, const uint16_t *k, stp_mesh_vertex *const s[3])
 {
+    int32_t code0, code1, code2, any;
+    if (c->inside) { /* box_inside: every outcode 0 */
+        ready_inside(c, s[0], k[0]);
+        ready_inside(c, s[1], k[1]);
+        ready_inside(c, s[2], k[2]);
+        return 1;
+    }
     c->last_shade = -1; /* but for the fallback's */
-    int32_t code0 = vertex_code(c, s[0], k[0]), code1 = vertex_code(c, s[1], k[1]),
-            code2 = vertex_code(c, s[2], k[2]);
-    int32_t any = code0 | code1 | code2;
+    code0 = vertex_code(c, s[0], k[0]);
+    code1 = vertex_code(c, s[1], k[1]);
+    code2 = vertex_code(c, s[2], k[2]);
+    any = code0 | code1 | code2;
     if (any & CODE_RANGE)
         return STP_ERR_RANGE;
     if ((code0 & code1 & code2) != 0)
