@@ -30,7 +30,7 @@ typedef struct mesh_context {
     const stp_mesh *mesh;
     const stp_vec3 *vertices; /* mesh->vertices */
     int cull; /* back faces are removed (r->backface_removal) */
-    int least_side; /* the least face side entered: 1 with cull, else -1 */
+    int32_t least_side; /* the least face side entered: 1 with cull, else INT32_MIN */
     stp_mesh_vertex *scratch;
     const stp_model_frame *frame; /* the face stage's (render_private.h) */
     /* the eye in model coordinates, floor-shifted right by `shift`, so
@@ -305,8 +305,10 @@ STP_NOINLINE int exact_side(const mesh_context *c, const int16_t *n, const stp_v
  * sum below 2^31 (|N| <= 1, |eye - v0| < 2^15 sqrt 3), off the exact sum
  * over 2^shift by less than |n0| + |n1| + |n2| < 2^15 (each floor less
  * than 1), so an estimate outside [-2^15, 2^15) has the exact sign (the
- * test: (side >> 15) + 1 not 0 or 1, one shift). */
-STP_HOT_INLINE int face_side(const mesh_context *c, const int16_t *n, const stp_vec3 *a)
+ * test: (side >> 15) + 1 not 0 or 1, one shift).  The result: a value of
+ * that sign (the estimate itself, or -1, 0, 1), which is all its users
+ * (the removal test, stp_render_view_normal, stp_render_face_shade) ask. */
+STP_HOT_INLINE int32_t face_side(const mesh_context *c, const int16_t *n, const stp_vec3 *a)
 {
 #if !STP_WIDE_ARITH
     int shift = c->shift;
@@ -314,7 +316,7 @@ STP_HOT_INLINE int face_side(const mesh_context *c, const int16_t *n, const stp_
                    (int32_t)n[1] * (c->eye[1] - stp_asr32(a->y, shift)) +
                    (int32_t)n[2] * (c->eye[2] - stp_asr32(a->z, shift));
     if ((uint32_t)(stp_asr32(side, 15) + 1) > 1u)
-        return side > 0 ? 1 : -1;
+        return side;
     return exact_side(c, n, a); /* rare: out of line */
 #else
     return stp_render_face_side(c->frame, n, *a);
@@ -368,7 +370,7 @@ static int ready_vertices(mesh_context *c, const uint16_t *k, stp_mesh_vertex *c
 
 /* The triangle of indices k and normal n on the fast path, not removed as
  * a back face (face_side's side: enter_faces). */
-STP_HOT_INLINE int enter_face(mesh_context *c, const uint16_t *k, const int16_t *n, int side)
+STP_HOT_INLINE int enter_face(mesh_context *c, const uint16_t *k, const int16_t *n, int32_t side)
 {
     stp_mesh_vertex *s[3];
     int16_t nv[3];
@@ -411,7 +413,7 @@ static int enter_faces(mesh_context *c, uint16_t count)
     int status = STP_OK;
     take_state(c);
     for (; k != end; k += 3, n += 3) {
-        int side = face_side(c, n, &vertices[k[0]]);
+        int32_t side = face_side(c, n, &vertices[k[0]]);
         if (side < c->least_side)
             continue; /* a back face removed */
         if ((status = enter_face(c, k, n, side)) != STP_OK)
@@ -472,7 +474,7 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
     c.mesh = mesh;
     c.vertices = mesh->vertices;
     c.cull = r->backface_removal;
-    c.least_side = c.cull ? 1 : -1;
+    c.least_side = c.cull ? 1 : INT32_MIN;
     c.scratch = scratch;
     fast = fast_state(r, mesh) && prepare_call(&c);
     c.shade = fast && r->shading ? stp_render_face_shader(r) : 0;

@@ -372,7 +372,7 @@ STP_HOT_INLINE void stp_render_put_vertex(stp_instr *out, int32_t op, int32_t x,
  * elsewhere (a 64-bit host, builds for size) each row is turned, the
  * shorter code there. */
 #if STP_NARROW_FORMS
-STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16_t n[3], int side,
+STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16_t n[3], int32_t side,
                                            int16_t nv[3])
 {
     int32_t n0 = n[0], n1 = n[1], n2 = n[2], half = (int32_t)1 << 14;
@@ -387,13 +387,13 @@ STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16
     nv[2] = (int16_t)stp_asr32(f->rot[2][0] * n0 + f->rot[2][1] * n1 + f->rot[2][2] * n2 + half, 15);
 }
 #else
-STP_HOT_INLINE int16_t stp_render_view_normal_row(const int32_t row[3], const int16_t n[3], int side)
+STP_HOT_INLINE int16_t stp_render_view_normal_row(const int32_t row[3], const int16_t n[3], int32_t side)
 {
     int32_t s = stp_asr32(row[0] * n[0] + row[1] * n[1] + row[2] * n[2] + ((int32_t)1 << 14), 15);
     return (int16_t)(side > 0 ? s : -s);
 }
 
-STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16_t n[3], int side,
+STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16_t n[3], int32_t side,
                                            int16_t nv[3])
 {
     nv[0] = stp_render_view_normal_row(f->rot[0], n, side);
@@ -406,7 +406,7 @@ STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16
  * average centre: the ambient share only, as for N.E = 0, when side is 0
  * (its plane passes through the eye). */
 STP_HOT_INLINE stp_fix stp_render_face_shade(const stp_shade_fast *s, const int16_t nv[3], stp_vec3 centre,
-                                             int side)
+                                             int32_t side)
 {
     return side != 0 ? stp_shade_fast_face(s, nv, centre) : s->ambient_shade;
 }
