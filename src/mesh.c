@@ -15,12 +15,13 @@
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
 
-/* stp_mesh_vertex.state: -1 not transformed in this call; else the outcode
- * (bits 0..4, clip.c) or CODE_RANGE, plus UNPROJECTED until dx, dy, dz
- * hold the device position: 0 is a vertex inside the view volume and
- * projected, so one test (enter_face) finds a face whose three vertices
- * are ready, the common case. */
-#define STATE_NEW (-1)
+/* stp_mesh_vertex.state: STATE_NEW not transformed in this call (a
+ * constant one Thumb instruction makes: every vertex is marked so); else
+ * the outcode (bits 0..4, clip.c) or CODE_RANGE, plus UNPROJECTED until
+ * dx, dy, dz hold the device position: 0 is a vertex inside the view
+ * volume and projected, so one test (enter_face) finds a face whose three
+ * vertices are ready, the common case. */
+#define STATE_NEW 128
 #define CODE_RANGE 32
 #define UNPROJECTED 64
 
