@@ -15,12 +15,15 @@
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
 
-/* stp_mesh_vertex.state: -1 not transformed in this call; else the outcode
- * (bits 0..4, clip.c) or CODE_RANGE, plus PROJECTED once dx, dy, dz hold
- * the device position. */
-#define STATE_NEW (-1)
+/* stp_mesh_vertex.state: STATE_NEW not transformed in this call (a
+ * constant one Thumb instruction makes: every vertex is marked so); else
+ * the outcode (bits 0..4, clip.c) or CODE_RANGE, plus UNPROJECTED until
+ * dx, dy, dz hold the device position: 0 is a vertex inside the view
+ * volume and projected, so one test (enter_face) finds a face whose three
+ * vertices are ready, the common case. */
+#define STATE_NEW 128
 #define CODE_RANGE 32
-#define PROJECTED 64
+#define UNPROJECTED 64
 
 /* What one call finds once for all its triangles. */
 typedef struct mesh_context {
@@ -28,6 +31,7 @@ typedef struct mesh_context {
     const stp_mesh *mesh;
     const stp_vec3 *vertices; /* mesh->vertices */
     int cull; /* back faces are removed (r->backface_removal) */
+    int32_t least_side; /* the least face side entered: 1 with cull, else INT32_MIN */
     stp_mesh_vertex *scratch;
     const stp_model_frame *frame; /* the face stage's (render_private.h) */
     /* the eye in model coordinates, floor-shifted right by `shift`, so
@@ -38,8 +42,17 @@ typedef struct mesh_context {
     int inside; /* 1: every vertex is inside the view volume (no outcodes)
                    and its view coordinates are below 2^29 in magnitude */
     stp_view_lens lens; /* the projection's constants (view.c) */
-    const stp_shade_fast *shade; /* the face stage's shader (stp_render_face_shader) */
+    const stp_shade_fast *shade; /* the face stage's shader (stp_render_face_shader), NULL: shading off */
     int32_t test_rows; /* rows of a triangle pixel culling (render.h) tests: STP_CENTRE_TEST_MAX, or 0 when off */
+    /* the face stage's per-call values, kept here rather than in r (whose
+     * fields lie beyond the ARMv6-M load's reach): the intensity steps
+     * (stp_intensity_steps), the fill style and its shade (shading off),
+     * the style in force (stp_render_current_style; entered: its value
+     * at the call's start or the last fallback) and r->last_shade, both
+     * written back by keep_state */
+    int32_t steps;
+    int fill_style, current, entered;
+    stp_fix fill_shade, last_shade;
 } mesh_context;
 
 /* ---- normals, once ---- */
@@ -132,7 +145,8 @@ static int prepare_call(mesh_context *c)
     const stp_model_frame *f = stp_render_model_frame(c->r);
     uint32_t big = 0;
     stp_vec3 lo, hi;
-    uint16_t v;
+    const stp_vec3 *p, *end;
+    stp_mesh_vertex *sv;
     int j, k;
     if (f == 0)
         return 0;
@@ -140,16 +154,24 @@ static int prepare_call(mesh_context *c)
     for (j = 0; j < 3; j++)
         big |= stp_abs32(f->eye[j]);
     /* the scale of the back-face test (every coordinate below 2^14) and
-     * the model's bounding box */
+     * the model's bounding box; the scratch entries marked new in the
+     * same pass */
     lo = hi = c->mesh->vertices[0];
-    for (v = 0; v < c->mesh->vertex_count; v++) {
-        const stp_vec3 *p = &c->mesh->vertices[v];
-        lo.x = p->x < lo.x ? p->x : lo.x;
-        lo.y = p->y < lo.y ? p->y : lo.y;
-        lo.z = p->z < lo.z ? p->z : lo.z;
-        hi.x = p->x > hi.x ? p->x : hi.x;
-        hi.y = p->y > hi.y ? p->y : hi.y;
-        hi.z = p->z > hi.z ? p->z : hi.z;
+    sv = c->scratch;
+    for (p = c->mesh->vertices, end = p + c->mesh->vertex_count; p != end; p++, sv++) {
+        if (p->x < lo.x)
+            lo.x = p->x;
+        else if (p->x > hi.x)
+            hi.x = p->x;
+        if (p->y < lo.y)
+            lo.y = p->y;
+        else if (p->y > hi.y)
+            hi.y = p->y;
+        if (p->z < lo.z)
+            lo.z = p->z;
+        else if (p->z > hi.z)
+            hi.z = p->z;
+        sv->state = STATE_NEW;
     }
     /* the box's corners bound every coordinate's magnitude */
     big |= stp_abs32(lo.x) | stp_abs32(lo.y) | stp_abs32(lo.z) | stp_abs32(hi.x) |
@@ -171,15 +193,16 @@ static int prepare_call(mesh_context *c)
 /* Vertex i (not transformed yet, scratch entry *s) in view coordinates
  * with its outcode (or CODE_RANGE): the geometry stage, as
  * stp_renderer_polygon's. */
-static void vertex_transform(mesh_context *c, stp_mesh_vertex *s, uint16_t i)
+static void vertex_transform(const mesh_context *c, stp_mesh_vertex *s, uint16_t i)
 {
     const stp_renderer *r = c->r;
-    int range = stp_render_point_to_view(r, c->mesh->vertices[i], &s->view);
+    int range = stp_render_point_to_view(r, c->vertices[i], &s->view);
     if (c->inside)
-        s->state = 0; /* box_inside: no vertex is outside or saturated */
+        s->state = UNPROJECTED; /* box_inside: no vertex is outside or saturated */
     else
-        s->state = range || stp_view_saturated(s->view) ? CODE_RANGE
-                                               : (int32_t)stp_clip_outcode(&r->clip_volume, s->view);
+        s->state = UNPROJECTED | (range || stp_view_saturated(s->view)
+                                      ? CODE_RANGE
+                                      : (int32_t)stp_clip_outcode(&r->clip_volume, s->view));
 }
 
 /* Vertex i's outcode (or CODE_RANGE), transformed once per call; the
@@ -200,7 +223,7 @@ static void vertex_project(const mesh_context *c, stp_mesh_vertex *s)
     s->dx = d[0];
     s->dy = d[1];
     s->dz = d[2];
-    s->state |= PROJECTED;
+    s->state = 0; /* its outcode was 0 */
 }
 
 /* The triangle of indices k through stp_renderer_polygon (mesh.h: the
@@ -220,99 +243,187 @@ static int enter_fallback(const mesh_context *c, const uint16_t *k)
 #endif
 }
 
+/* The fast path's style in force and last shade (mesh_context) into the
+ * renderer. */
+static void keep_state(const mesh_context *c)
+{
+    stp_renderer *r = c->r;
+    r->last_shade = c->last_shade;
+    if (c->current != c->entered) {
+        r->current_style = c->current; /* a SHADE was stored: colour 0 */
+        r->current_colour = 0;
+    }
+}
+
+/* The style in force and last shade of the renderer into the fast path's
+ * (mesh_context). */
+static void take_state(mesh_context *c)
+{
+    c->current = c->entered = stp_render_current_style(c->r);
+    c->last_shade = c->r->last_shade;
+}
+
+/* enter_fallback on the fast path, which keeps the renderer's state in
+ * its context. */
+static int fast_fallback(mesh_context *c, const uint16_t *k)
+{
+    int status;
+    keep_state(c);
+    status = enter_fallback(c, k);
+    take_state(c);
+    return status;
+}
+
 /* The display-file records of a front face inside the view (scratch
- * entries s[0..2], projected): SHADE when the style changed, then its
- * three vertices (the open segment's end: set once per call,
- * stp_renderer_mesh). */
+ * entries s[0..2], projected) in the given style: SHADE when the style
+ * changed, then its three vertices (the open segment's end: set once per
+ * call, stp_renderer_mesh). */
 static int store_face(mesh_context *c, stp_mesh_vertex *const s[3], int style)
 {
-    stp_instr *out = stp_render_triangle_records(c->r, style);
+    int change = style != c->current;
+    stp_instr *out = stp_render_face_records(c->r, change, style, c->last_shade);
     if (out == 0)
         return STP_ERR_FULL;
+    if (change)
+        c->current = style;
     stp_render_put_vertex(&out[0], 3, s[0]->dx, s[0]->dy, s[0]->dz);
     stp_render_put_vertex(&out[1], STP_OP_LINE, s[1]->dx, s[1]->dy, s[1]->dz);
     stp_render_put_vertex(&out[2], STP_OP_LINE, s[2]->dx, s[2]->dy, s[2]->dz);
     return STP_OK;
 }
 
+#if !STP_WIDE_ARITH
+/* stp_render_face_side for face_side's uncertain estimates. */
+STP_NOINLINE int exact_side(const mesh_context *c, const int16_t *n, const stp_vec3 *a)
+{
+    return stp_render_face_side(c->frame, n, *a);
+}
+#endif
+
 /* The face stage's side of triangle t (stp_render_face_side: the exact
  * sign of N.(eye - v0)); where 64-bit products are library calls, first
  * estimated in 32 bits on the shifted eye and v0: products below 2^29, the
  * sum below 2^31 (|N| <= 1, |eye - v0| < 2^15 sqrt 3), off the exact sum
  * over 2^shift by less than |n0| + |n1| + |n2| < 2^15 (each floor less
- * than 1), so a larger estimate has the exact sign. */
-static int face_side(const mesh_context *c, const int16_t *n, const stp_vec3 *a)
+ * than 1), so an estimate outside [-2^15, 2^15) has the exact sign (the
+ * test: (side >> 15) + 1 not 0 or 1, one shift).  The result: a value of
+ * that sign (the estimate itself, or -1, 0, 1), which is all its users
+ * (the removal test, stp_render_view_normal, stp_render_face_shade) ask. */
+STP_HOT_INLINE int32_t face_side(const mesh_context *c, const int16_t *n, const stp_vec3 *a)
 {
 #if !STP_WIDE_ARITH
-    int32_t side = (int32_t)n[0] * (c->eye[0] - stp_asr32(a->x, c->shift)) +
-                   (int32_t)n[1] * (c->eye[1] - stp_asr32(a->y, c->shift)) +
-                   (int32_t)n[2] * (c->eye[2] - stp_asr32(a->z, c->shift));
-    if (side >= ((int32_t)1 << 15) || side <= -((int32_t)1 << 15))
-        return side > 0 ? 1 : -1;
-#endif
+    int shift = c->shift;
+    int32_t side = (int32_t)n[0] * (c->eye[0] - stp_asr32(a->x, shift)) +
+                   (int32_t)n[1] * (c->eye[1] - stp_asr32(a->y, shift)) +
+                   (int32_t)n[2] * (c->eye[2] - stp_asr32(a->z, shift));
+    if ((uint32_t)(stp_asr32(side, 15) + 1) > 1u)
+        return side;
+    return exact_side(c, n, a); /* rare: out of line */
+#else
     return stp_render_face_side(c->frame, n, *a);
+#endif
+}
+
+/* Vertex i (scratch entry *s) transformed and projected, when every
+ * vertex is inside the view volume (c->inside). */
+STP_HOT_INLINE void ready_inside(const mesh_context *c, stp_mesh_vertex *s, uint16_t i)
+{
+    if (s->state != 0) {
+        if (s->state == STATE_NEW)
+            vertex_transform(c, s, i);
+        vertex_project(c, s);
+    }
+}
+
+/* Whether the triangle of indices k (scratch entries s[0..2]) is to be
+ * drawn, its vertices now transformed and projected (1), or else the
+ * status to return for it (STP_OK: wholly outside one plane; an error; the
+ * fallback's status for one crossing a plane): enter_face's path for a
+ * face with a vertex not ready. */
+static int ready_vertices(mesh_context *c, const uint16_t *k, stp_mesh_vertex *const s[3])
+{
+    int32_t code0, code1, code2, any;
+    if (c->inside) { /* box_inside: every outcode 0 */
+        ready_inside(c, s[0], k[0]);
+        ready_inside(c, s[1], k[1]);
+        ready_inside(c, s[2], k[2]);
+        return 1;
+    }
+    c->last_shade = -1; /* but for the fallback's */
+    code0 = vertex_code(c, s[0], k[0]);
+    code1 = vertex_code(c, s[1], k[1]);
+    code2 = vertex_code(c, s[2], k[2]);
+    any = code0 | code1 | code2;
+    if (any & CODE_RANGE)
+        return STP_ERR_RANGE;
+    if ((code0 & code1 & code2) != 0)
+        return STP_OK; /* wholly outside one plane */
+    if (any != 0)
+        return fast_fallback(c, k); /* crosses a plane: to be clipped */
+    if (s[0]->state != 0)
+        vertex_project(c, s[0]);
+    if (s[1]->state != 0)
+        vertex_project(c, s[1]);
+    if (s[2]->state != 0)
+        vertex_project(c, s[2]);
+    return 1;
 }
 
 /* The triangle of indices k and normal n on the fast path, not removed as
  * a back face (face_side's side: enter_faces). */
-static int enter_face(mesh_context *c, const uint16_t *k, const int16_t *n, int side)
+STP_HOT_INLINE int enter_face(mesh_context *c, const uint16_t *k, const int16_t *n, int32_t side)
 {
-    stp_renderer *r = c->r;
     stp_mesh_vertex *s[3];
     int16_t nv[3];
-    int32_t code0, code1, code2, all, any;
     stp_vec3 centre;
-    int style;
-    r->last_shade = -1;
+    int style, ready;
     s[0] = &c->scratch[k[0]];
     s[1] = &c->scratch[k[1]];
     s[2] = &c->scratch[k[2]];
-    code0 = vertex_code(c, s[0], k[0]);
-    code1 = vertex_code(c, s[1], k[1]);
-    code2 = vertex_code(c, s[2], k[2]);
-    all = code0 & code1 & code2;
-    any = code0 | code1 | code2;
-    if (any & CODE_RANGE)
-        return STP_ERR_RANGE;
-    if (all != 0)
-        return STP_OK; /* wholly outside one plane */
-    if (any != 0)
-        return enter_fallback(c, k); /* crosses a plane: to be clipped */
-    if ((s[0]->state & PROJECTED) == 0)
-        vertex_project(c, s[0]);
-    if ((s[1]->state & PROJECTED) == 0)
-        vertex_project(c, s[1]);
-    if ((s[2]->state & PROJECTED) == 0)
-        vertex_project(c, s[2]);
-    if (!stp_render_triangle_shows(r, c->test_rows, s[0]->dx, s[0]->dy, s[1]->dx, s[1]->dy, s[2]->dx,
-                                   s[2]->dy))
+    if ((s[0]->state | s[1]->state | s[2]->state) != 0 && (ready = ready_vertices(c, k, s)) != 1)
+        return ready;
+    if (!stp_render_triangle_shows(c->r, c->test_rows, s[0]->dx, s[0]->dy, s[1]->dx, s[1]->dy, s[2]->dx,
+                                   s[2]->dy)) {
+        c->last_shade = -1;
         return STP_OK; /* between two row centres, or pixel culling: draws nothing */
+    }
     stp_render_view_normal(c->frame, n, side, nv);
     centre.x = stp_render_average3(c->inside, s[0]->view.x, s[1]->view.x, s[2]->view.x);
     centre.y = stp_render_average3(c->inside, s[0]->view.y, s[1]->view.y, s[2]->view.y);
     centre.z = stp_render_average3(c->inside, s[0]->view.z, s[1]->view.z, s[2]->view.z);
-    style = stp_render_face_style(r, c->shade, nv, centre, side);
+    if (c->shade) {
+        c->last_shade = stp_render_face_shade(c->shade, nv, centre, side);
+        style = stp_intensity_index_steps(c->last_shade, c->steps);
+    } else {
+        style = c->fill_style;
+        c->last_shade = c->fill_shade;
+    }
     return store_face(c, s, style);
 }
 
-/* The fast path's loop over count triangles, by pointers to their indices
- * and normals: a back face (or edge-on one) is removed before enter_face
- * (and its last_shade is -1 as there). */
+/* The fast path's loop over count (> 0) triangles, by pointers to their
+ * indices and normals: a back face (or edge-on one) is removed before
+ * enter_face.  Its last_shade (-1, as enter_face's) counts only for the
+ * last triangle, the one stp_renderer_last_shade reports (face_side is
+ * pure: asked again after the loop). */
 static int enter_faces(mesh_context *c, uint16_t count)
 {
     const uint16_t *k = c->mesh->triangles, *end = k + 3 * (uint32_t)count;
     const int16_t *n = c->mesh->normals;
-    int status;
+    const stp_vec3 *vertices = c->vertices;
+    int status = STP_OK;
+    take_state(c);
     for (; k != end; k += 3, n += 3) {
-        int side = face_side(c, n, &c->vertices[k[0]]);
-        if (side <= 0 && c->cull) {
-            c->r->last_shade = -1; /* removed: stp_renderer_last_shade */
-            continue;
-        }
+        int32_t side = face_side(c, n, &vertices[k[0]]);
+        if (side < c->least_side)
+            continue; /* a back face removed */
         if ((status = enter_face(c, k, n, side)) != STP_OK)
-            return status;
+            break;
     }
-    return STP_OK;
+    if (status == STP_OK && c->cull && face_side(c, n - 3, &vertices[k[-3]]) <= 0)
+        c->last_shade = -1; /* removed: stp_renderer_last_shade */
+    keep_state(c);
+    return status;
 }
 
 /* The arguments and every index, before anything is entered. */
@@ -320,6 +431,9 @@ static int check_mesh(const stp_renderer *r, const stp_mesh *mesh, const stp_mes
                       size_t scratch_count)
 {
     const uint16_t *k, *end;
+#if !STP_LEAN_CODE
+    const uint16_t *pair_end;
+#endif
     uint16_t count;
     if (r == 0 || mesh == 0 || scratch == 0 || scratch_count < mesh->vertex_count)
         return STP_ERR_ARG;
@@ -328,8 +442,17 @@ static int check_mesh(const stp_renderer *r, const stp_mesh *mesh, const stp_mes
     if (mesh->vertices == 0 || mesh->triangles == 0)
         return STP_ERR_ARG;
     count = mesh->vertex_count;
-    end = mesh->triangles + 3 * (uint32_t)mesh->triangle_count;
-    for (k = mesh->triangles; k != end; k += 3)
+    k = mesh->triangles;
+    end = k + 3 * (uint32_t)mesh->triangle_count;
+#if !STP_LEAN_CODE
+    /* two triangles a step (half the loop's own cost) where time is
+     * dearer than code; the loop below takes an odd count's last */
+    for (pair_end = k + 6 * (uint32_t)(mesh->triangle_count >> 1); k != pair_end; k += 6)
+        if (k[0] >= count || k[1] >= count || k[2] >= count || k[3] >= count || k[4] >= count ||
+            k[5] >= count)
+            return STP_ERR_ARG;
+#endif
+    for (; k != end; k += 3)
         if (k[0] >= count || k[1] >= count || k[2] >= count)
             return STP_ERR_ARG;
     return STP_OK;
@@ -352,16 +475,21 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
     c.mesh = mesh;
     c.vertices = mesh->vertices;
     c.cull = r->backface_removal;
+    c.least_side = c.cull ? 1 : INT32_MIN;
     c.scratch = scratch;
     fast = fast_state(r, mesh) && prepare_call(&c);
     c.shade = fast && r->shading ? stp_render_face_shader(r) : 0;
     c.test_rows = r->pixel_cull ? STP_CENTRE_TEST_MAX : 0;
+    c.steps = stp_intensity_steps(r->levels);
+    c.fill_style = r->fill_style;
+    c.fill_shade = fast && !r->shading ? stp_intensity_shade(r->fill_style, r->levels) : 0;
 #if !STP_WITH_MESH_FALLBACK
     if (!fast)
         return STP_ERR_UNSUPPORTED;
 #endif
-    for (sv = scratch, end = scratch + mesh->vertex_count; sv != end; sv++)
-        sv->state = STATE_NEW;
+    if (!fast) /* else prepare_call did */
+        for (sv = scratch, end = scratch + mesh->vertex_count; sv != end; sv++)
+            sv->state = STATE_NEW;
     count = mesh->triangle_count; /* once: the stores below may alias the mesh */
     /* one loop per route: no choice per triangle */
     if (fast) {

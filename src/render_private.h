@@ -299,16 +299,17 @@ STP_HOT_INLINE stp_fix stp_render_average3(int small, int32_t a, int32_t b, int3
 }
 
 /* A flat opaque triangle's display-file records, as both entries store
- * them: SHADE (style, r->last_shade, colour 0) when the style or colour
- * changed, written here, then room for its three vertex records, which
- * the caller writes (stp_render_put_vertex: op 3, then STP_OP_LINE twice);
- * r->used counts them all.  NULL when the display file has no room for
- * them (nothing written).  The caller keeps the open segment's end and
- * the transmission (0: the caller's test). */
-STP_HOT_INLINE stp_instr *stp_render_triangle_records(stp_renderer *r, int style)
+ * them: SHADE (style, shade, colour 0) when change (the style or colour
+ * in force differs), written here, then room for its three vertex
+ * records, which the caller writes (stp_render_put_vertex: op 3, then
+ * STP_OP_LINE twice); r->used counts them all.  NULL when the display file
+ * has no room for them (nothing written).  The caller keeps the style in
+ * force (r->current_style and r->current_colour, or a local for many
+ * faces: mesh.c), the open segment's end and the transmission (0: the
+ * caller's test). */
+STP_HOT_INLINE stp_instr *stp_render_face_records(stp_renderer *r, int change, int style, stp_fix shade)
 {
     uint32_t used = r->used;
-    int change = style != r->current_style || r->current_colour != 0;
     stp_instr *out;
     if (r->capacity - used < (change ? 4u : 3u))
         return 0;
@@ -316,17 +317,36 @@ STP_HOT_INLINE stp_instr *stp_render_triangle_records(stp_renderer *r, int style
     if (change) {
         out->op = STP_OP_SHADE;
         out->x = style;
-        out->y = r->last_shade;
+        out->y = shade;
         out->z = 0;
 #if STP_WITH_GOURAUD
         out->shade = -1;
 #endif
         out++;
         used++;
+    }
+    r->used = used + 3;
+    return out;
+}
+
+/* The style in force for a caller keeping it in a local: r->current_style,
+ * or -1 while a colour is (r->current_colour), which no style (>= 1)
+ * matches. */
+STP_HOT_INLINE int stp_render_current_style(const stp_renderer *r)
+{
+    return r->current_colour != 0 ? -1 : r->current_style;
+}
+
+/* stp_render_face_records on the renderer's style in force, the shade
+ * r->last_shade. */
+STP_HOT_INLINE stp_instr *stp_render_triangle_records(stp_renderer *r, int style)
+{
+    int change = style != r->current_style || r->current_colour != 0;
+    stp_instr *out = stp_render_face_records(r, change, style, r->last_shade);
+    if (out != 0 && change) {
         r->current_style = style;
         r->current_colour = 0;
     }
-    r->used = used + 3;
     return out;
 }
 
@@ -352,7 +372,7 @@ STP_HOT_INLINE void stp_render_put_vertex(stp_instr *out, int32_t op, int32_t x,
  * elsewhere (a 64-bit host, builds for size) each row is turned, the
  * shorter code there. */
 #if STP_NARROW_FORMS
-STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16_t n[3], int side,
+STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16_t n[3], int32_t side,
                                            int16_t nv[3])
 {
     int32_t n0 = n[0], n1 = n[1], n2 = n[2], half = (int32_t)1 << 14;
@@ -367,13 +387,13 @@ STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16
     nv[2] = (int16_t)stp_asr32(f->rot[2][0] * n0 + f->rot[2][1] * n1 + f->rot[2][2] * n2 + half, 15);
 }
 #else
-STP_HOT_INLINE int16_t stp_render_view_normal_row(const int32_t row[3], const int16_t n[3], int side)
+STP_HOT_INLINE int16_t stp_render_view_normal_row(const int32_t row[3], const int16_t n[3], int32_t side)
 {
     int32_t s = stp_asr32(row[0] * n[0] + row[1] * n[1] + row[2] * n[2] + ((int32_t)1 << 14), 15);
     return (int16_t)(side > 0 ? s : -s);
 }
 
-STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16_t n[3], int side,
+STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16_t n[3], int32_t side,
                                            int16_t nv[3])
 {
     nv[0] = stp_render_view_normal_row(f->rot[0], n, side);
@@ -382,17 +402,24 @@ STP_HOT_INLINE void stp_render_view_normal(const stp_model_frame *f, const int16
 }
 #endif
 
-/* A flat face's INTENSITY style (1..levels) with shading on (its shade by
- * the face shader s from view normal nv and vertex average centre; the
- * ambient share only, as for N.E = 0, when side is 0: its plane passes
- * through the eye) or off (the fill style); r->last_shade set to its
+/* A flat face's shade by the face shader s from view normal nv and vertex
+ * average centre: the ambient share only, as for N.E = 0, when side is 0
+ * (its plane passes through the eye). */
+STP_HOT_INLINE stp_fix stp_render_face_shade(const stp_shade_fast *s, const int16_t nv[3], stp_vec3 centre,
+                                             int32_t side)
+{
+    return side != 0 ? stp_shade_fast_face(s, nv, centre) : s->ambient_shade;
+}
+
+/* A flat face's INTENSITY style (1..levels) with shading on (its shade:
+ * stp_render_face_shade) or off (the fill style); r->last_shade set to its
  * shade. */
 STP_HOT_INLINE int stp_render_face_style(stp_renderer *r, const stp_shade_fast *s, const int16_t nv[3],
                                          stp_vec3 centre, int side)
 {
     int style;
     if (r->shading) {
-        r->last_shade = side != 0 ? stp_shade_fast_face(s, nv, centre) : s->ambient_shade;
+        r->last_shade = stp_render_face_shade(s, nv, centre, side);
         return stp_intensity_index_inline(r->last_shade, r->levels);
     }
     style = r->fill_style;

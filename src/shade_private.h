@@ -16,12 +16,22 @@ stp_fix stp_shade_unit(const stp_lighting *lighting, const stp_material *materia
 
 /* stp_intensity_index (shade.h) inline, for the mesh path's per-face
  * step: INT(s (N - 1) + 1) with s clamped to [0, 1] and N to 2..256;
- * s (N - 1) <= 2^F 255 < 2^28 (F <= 20), so 32 bits hold it. */
+ * s (N - 1) <= 2^F 255 < 2^28 (F <= 20), so 32 bits hold it.  In two
+ * parts, so that a caller entering many faces finds N - 1 once. */
+STP_HOT_INLINE int32_t stp_intensity_steps(int levels)
+{
+    return levels < 2 ? 1 : (levels > 256 ? 255 : (int32_t)levels - 1);
+}
+
+STP_HOT_INLINE int stp_intensity_index_steps(stp_fix shade, int32_t steps)
+{
+    stp_fix s = shade < 0 ? 0 : (shade > STP_FIX_ONE ? STP_FIX_ONE : shade);
+    return (int)((s * steps) >> STP_FIX_FRAC_BITS) + 1;
+}
+
 STP_HOT_INLINE int stp_intensity_index_inline(stp_fix shade, int levels)
 {
-    int32_t n1 = levels < 2 ? 1 : (levels > 256 ? 255 : (int32_t)levels - 1);
-    stp_fix s = shade < 0 ? 0 : (shade > STP_FIX_ONE ? STP_FIX_ONE : shade);
-    return (int)((s * n1) >> STP_FIX_FRAC_BITS) + 1;
+    return stp_intensity_index_steps(shade, stp_intensity_steps(levels));
 }
 
 #endif
