@@ -174,7 +174,7 @@ static int prepare_call(mesh_context *c)
 static void vertex_transform(mesh_context *c, stp_mesh_vertex *s, uint16_t i)
 {
     const stp_renderer *r = c->r;
-    int range = stp_render_point_to_view(r, c->mesh->vertices[i], &s->view);
+    int range = stp_render_point_to_view(r, c->vertices[i], &s->view);
     if (c->inside)
         s->state = 0; /* box_inside: no vertex is outside or saturated */
     else
