@@ -63,10 +63,30 @@ static inline int stp_project_correct(uint32_t e, uint32_t n_low, uint32_t z, ui
  * when m < 2^sh (w >= 2^31), so for sh <= 32 m 2^(32 - sh) fits 32 bits
  * (one test for both: mx | my < 2^sh) and e = floor(m 2^(32 - sh) w /
  * 2^32); for sh > 32 e = floor(m w / 2^32) / 2^(sh - 32).  0 when a
- * quotient is 2^31 or more. */
+ * quotient is 2^31 or more.  Both coordinates in one step with
+ * STP_NARROW_FORMS (fewer values live on ARMv6-M), else one a call. */
+#if !STP_NARROW_FORMS
+/* A build for size (or without 32-bit forms beside 64-bit ones): one
+ * quotient a call, which the compiler keeps out of line for x and y (less
+ * code than the two-coordinate step below). */
+static inline int stp_project_quotient(uint32_t m, uint32_t w, int sh, uint32_t n_low, uint32_t z, uint32_t *q)
+{
+    uint32_t e;
+    if (sh <= 32) {
+        if ((m >> (sh - 1)) > 1u) /* m >= 2^sh, m < 2^31 */
+            return 0;
+        e = stp_umulhi32x32(m << (32 - sh), w);
+    } else {
+        e = sh - 32 >= 32 ? 0u : stp_umulhi32x32(m, w) >> (sh - 32);
+    }
+    return stp_project_correct(e, n_low, z, q);
+}
+#endif
+
 static inline int stp_project_quotients(uint32_t mx, uint32_t my, uint32_t f, uint32_t w, int sh, uint32_t z,
                                         uint32_t *qx, uint32_t *qy)
 {
+#if STP_NARROW_FORMS
     uint32_t ex, ey;
     if (sh <= 32) {
         if (((mx | my) >> (sh - 1)) > 1u) /* mx or my >= 2^sh */
@@ -80,6 +100,9 @@ static inline int stp_project_quotients(uint32_t mx, uint32_t my, uint32_t f, ui
         ey = stp_umulhi32x32(my, w) >> (sh & 31);
     }
     return stp_project_correct(ex, f * mx, z, qx) && stp_project_correct(ey, f * my, z, qy);
+#else
+    return stp_project_quotient(mx, w, sh, f * mx, z, qx) && stp_project_quotient(my, w, sh, f * my, z, qy);
+#endif
 }
 
 /* floor(h 2^30 / z) exactly for 0 < h < 2^31 and 0 < z < 2^29 (z = dn
