@@ -54,15 +54,21 @@ static inline int stp_project_correct(uint32_t e, uint32_t n_low, uint32_t z, ui
     return e < 0x80000000u;
 }
 
-/* floor(f m / z) exactly, for m < 2^31 (n_low = f m mod 2^32) and z <
- * 2^29, from the estimate e = floor(m w / 2^sh): every step rounds down, so
- * e <= the quotient Q, and Q - e <= 8 Q 2^-32 + 2 (w 2^-sh is below f / z
- * by at most (4 f + 2^t) 2^(s - 64) <= 8 f 2^(s - 64), and m f 2^(s - 64)
- * <= Q 2^-32), at most 5 for Q < 2^31 (stp_project_correct).  The
+/* floor(f mx / z) and floor(f my / z) exactly, for mx, my < 2^31 and z <
+ * 2^29, from the estimates e = floor(m w / 2^sh): every step rounds down,
+ * so e <= the quotient Q, and Q - e <= 8 Q 2^-32 + 2 (w 2^-sh is below f
+ * / z by at most (4 f + 2^t) 2^(s - 64) <= 8 f 2^(s - 64), and m f 2^(s -
+ * 64) <= Q 2^-32), at most 5 for Q < 2^31 (stp_project_correct).  Each
  * estimate is the high word of one product: m w / 2^sh is below 2^31 only
  * when m < 2^sh (w >= 2^31), so for sh <= 32 m 2^(32 - sh) fits 32 bits
- * and e = floor(m 2^(32 - sh) w / 2^32); for sh > 32 e = floor(m w / 2^32)
- * / 2^(sh - 32).  0 when the quotient is 2^31 or more. */
+ * (one test for both: mx | my < 2^sh) and e = floor(m 2^(32 - sh) w /
+ * 2^32); for sh > 32 e = floor(m w / 2^32) / 2^(sh - 32).  0 when a
+ * quotient is 2^31 or more.  Both coordinates in one step with
+ * STP_NARROW_FORMS (fewer values live on ARMv6-M), else one a call. */
+#if !STP_NARROW_FORMS
+/* A build for size (or without 32-bit forms beside 64-bit ones): one
+ * quotient a call, which the compiler keeps out of line for x and y (less
+ * code than the two-coordinate step below). */
 static inline int stp_project_quotient(uint32_t m, uint32_t w, int sh, uint32_t n_low, uint32_t z, uint32_t *q)
 {
     uint32_t e;
@@ -75,6 +81,29 @@ static inline int stp_project_quotient(uint32_t m, uint32_t w, int sh, uint32_t 
     }
     return stp_project_correct(e, n_low, z, q);
 }
+#endif
+
+static inline int stp_project_quotients(uint32_t mx, uint32_t my, uint32_t f, uint32_t w, int sh, uint32_t z,
+                                        uint32_t *qx, uint32_t *qy)
+{
+#if STP_NARROW_FORMS
+    uint32_t ex, ey;
+    if (sh <= 32) {
+        if (((mx | my) >> (sh - 1)) > 1u) /* mx or my >= 2^sh */
+            return 0;
+        ex = stp_umulhi32x32(mx << (32 - sh), w);
+        ey = stp_umulhi32x32(my << (32 - sh), w);
+    } else {
+        if (sh - 32 >= 32)
+            w = 0u; /* the quotients 0 */
+        ex = stp_umulhi32x32(mx, w) >> (sh & 31); /* sh - 32 while sh < 64 */
+        ey = stp_umulhi32x32(my, w) >> (sh & 31);
+    }
+    return stp_project_correct(ex, f * mx, z, qx) && stp_project_correct(ey, f * my, z, qy);
+#else
+    return stp_project_quotient(mx, w, sh, f * mx, z, qx) && stp_project_quotient(my, w, sh, f * my, z, qy);
+#endif
+}
 
 /* floor(h 2^30 / z) exactly for 0 < h < 2^31 and 0 < z < 2^29 (z = dn
  * 2^-s, s >= 3, v as for stp_project_scale): P = h (2^32 + v) approximates
@@ -82,7 +111,7 @@ static inline int stp_project_quotient(uint32_t m, uint32_t w, int sh, uint32_t 
  * the quotient Q = h 2^(30 + s) / dn by at most 3 h 2^(s - 2) 2^-32 + 1 <=
  * 3 Q 2^-32 + 1 (h 2^(s - 2) < Q), under 3 for Q < 2^31
  * (stp_project_correct): P's high word and one product fewer than
- * stp_project_scale and stp_project_quotient take.  0 when the quotient is
+ * stp_project_scale and stp_project_quotients take.  0 when the quotient is
  * 2^31 or more. */
 static inline int stp_project_key(uint32_t h, uint32_t v, int s, uint32_t z, uint32_t *q)
 {
@@ -108,7 +137,7 @@ static inline int32_t stp_project_subpixel(int negative, uint32_t q)
  * from a shift-and-add product over m's bits, one quotient bit a step.
  * The quotient is below 2^31 exactly when floor(f m / 2^31) is below z
  * (f m < 2^62); the remainder r then stays below z < 2^29, so 2 r + 1
- * fits.  0 when the quotient is 2^31 or more (stp_project_quotient's
+ * fits.  0 when the quotient is 2^31 or more (stp_project_quotients'
  * cases: the same values). */
 static inline int stp_project_divide(uint32_t f, uint32_t m, uint32_t z, uint32_t *q)
 {
@@ -193,7 +222,7 @@ static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, int32_t 
     sz = 32 - stp_bit_length32(z);
     v = stp_recip32_estimate(z << sz);
     stp_project_scale(f, v, sz, &w, &sh);
-    if (!stp_project_quotient(mx, w, sh, f * mx, z, &qx) || !stp_project_quotient(my, w, sh, f * my, z, &qy))
+    if (!stp_project_quotients(mx, my, f, w, sh, z, &qx, &qy))
         return 0;
     if (key) {
         if (!stp_project_key(h, v, sz, z, &qk))

@@ -124,6 +124,10 @@ static void split_from(stp_view_transform *out)
             out->narrow = 0;
         else
             h->from_high32 = (int32_t)high;
+#if STP_NARROW_FORMS
+        h->unit_high = h->from_high32 + 0x8000;
+        h->unit_low = ((uint32_t)h->from_high32 << 16) + (uint32_t)h->from_low;
+#endif
         a[0] = axis[k]->x;
         a[1] = axis[k]->y;
         a[2] = axis[k]->z;
@@ -387,17 +391,26 @@ STP_HOT_INLINE stp_fix axis_coordinate(const point_halves *p, const stp_vec3 *a,
  * |a| <= sqrt(5 / 4) 2^16) and every p_i in [-2^28, 2^28): with p_i = h_i
  * 2^14 + l_i (h_i in [-2^14, 2^14), l_i in [0, 2^14)), H = sum h_i a_i and
  * L = sum l_i a_i are each below sqrt(3) 2^14 sqrt(5 / 4) 2^16 < 0.97
- * 2^31 in magnitude (Cauchy-Schwarz), and
- *   S = p . a - from = 2^16 (floor(H / 4) - from_high) + r,
- *   r = 2^14 (H mod 4) + L - from_low, |r| < 0.97 2^31 + 2^16,
- * so floor(S / 2^16) = floor(H / 4) - from_high + floor(r / 2^16): six
- * products where axis_coordinate takes nine, the same value. */
-STP_HOT_INLINE stp_fix unit_coordinate(const int32_t h[3], const int32_t l[3], const stp_vec3 *a,
-                                       const stp_view_axis32 *x)
+ * 2^31 in magnitude (Cauchy-Schwarz), and with S = p . a - from,
+ *   S / 2^16 - (floor(H / 4) - from_high)
+ *     = (H mod 4) / 4 + (L - from_low) / 2^16,
+ * in (-0.97 2^15 - 1, 0.97 2^15 + 1): floor(S / 2^16) is in [0, 2^16)
+ * above the estimate e = floor(H / 4) - from_high - 2^15 (unit_estimate),
+ * and its low 16 bits are those of (S mod 2^32) / 2^16, S mod 2^32 the
+ * wrapped sum of p_i a_i less from's low word (unit_coordinate): e plus
+ * their difference from e's taken mod 2^16.  Six products, the same
+ * value, in two passes over the axes that each hold few values (ARMv6-M:
+ * eight registers for products). */
+STP_HOT_INLINE int32_t unit_estimate(const int32_t h[3], const stp_vec3 *a, const stp_view_axis32 *x)
 {
-    int32_t hs = h[0] * a->x + h[1] * a->y + h[2] * a->z;
-    int32_t r = (int32_t)(((uint32_t)hs & 3u) << 14) + (l[0] * a->x + l[1] * a->y + l[2] * a->z) - x->from_low;
-    return stp_asr32(hs, 2) - x->from_high32 + high16(r);
+    return stp_asr32(h[0] * a->x + h[1] * a->y + h[2] * a->z, 2) - x->unit_high;
+}
+
+STP_HOT_INLINE stp_fix unit_coordinate(const stp_vec3 *p, const stp_vec3 *a, const stp_view_axis32 *x, int32_t e)
+{
+    uint32_t s = (uint32_t)p->x * (uint32_t)a->x + (uint32_t)p->y * (uint32_t)a->y +
+                 (uint32_t)p->z * (uint32_t)a->z - x->unit_low;
+    return e + (int32_t)(((s >> 16) - (uint32_t)e) & 0xFFFFu);
 }
 #endif
 
@@ -417,17 +430,18 @@ void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 
                 0x20000000u;
 #if STP_NARROW_FORMS && F == 16
     if (t->unit && small) {
-        /* unit_coordinate's halves */
-        int32_t h[3], l[3];
+        /* unit_coordinate's estimates (the high parts' products), then
+         * its low words (the point's) */
+        int32_t h[3];
         h[0] = stp_asr32(p.x, 14);
         h[1] = stp_asr32(p.y, 14);
         h[2] = stp_asr32(p.z, 14);
-        l[0] = (int32_t)((uint32_t)p.x & 0x3FFFu);
-        l[1] = (int32_t)((uint32_t)p.y & 0x3FFFu);
-        l[2] = (int32_t)((uint32_t)p.z & 0x3FFFu);
-        out->x = unit_coordinate(h, l, &t->right, &t->axis32[0]);
-        out->y = unit_coordinate(h, l, &t->up, &t->axis32[1]);
-        out->z = unit_coordinate(h, l, &t->forward, &t->axis32[2]);
+        out->x = unit_estimate(h, &t->right, &t->axis32[0]);
+        out->y = unit_estimate(h, &t->up, &t->axis32[1]);
+        out->z = unit_estimate(h, &t->forward, &t->axis32[2]);
+        out->x = unit_coordinate(&p, &t->right, &t->axis32[0], out->x);
+        out->y = unit_coordinate(&p, &t->up, &t->axis32[1], out->y);
+        out->z = unit_coordinate(&p, &t->forward, &t->axis32[2], out->z);
         return;
     }
 #endif

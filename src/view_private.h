@@ -41,6 +41,11 @@ typedef int16_t stp_view_half;
 typedef struct stp_view_axis32 {
     stp_view_half high[3], low[3];
     int32_t from_high32, from_low;
+#if STP_NARROW_FORMS
+    /* view.c's short form: from_high32 + 2^15, and from . axis mod 2^32 */
+    int32_t unit_high;
+    uint32_t unit_low;
+#endif
 } stp_view_axis32;
 
 /* World to view coordinates: the view's axes and the eye's coordinate

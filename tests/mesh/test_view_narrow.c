@@ -138,6 +138,56 @@ static void test_unit_axes(void **state)
 #endif
 }
 
+/* view.c's short form at its extremes: axes of three components of
+ * magnitude 42299 (the longest equal components view.c takes as unit),
+ * points whose low 14 bits are all 0 or all 16383 (the part below the
+ * estimate's 2^14 steps at its largest, |L| = 0.968 2^31: the estimate
+ * is then 31724 below or 31723 above the value, against the 2^15 it may
+ * be off), high parts up to the edges of [-2^28, 2^28), signs with and
+ * against the axis, and eyes over the narrow range: the 64-bit formula's
+ * values, and the short form taken. */
+static void test_unit_extremes(void **state)
+{
+    long i, unit = 0;
+    (void)state;
+    for (i = 0; i < 1000000; i++) {
+        stp_view_transform t;
+        stp_vec3 p, out, axis[3], from;
+        int32_t c[3];
+        int k;
+        for (k = 0; k < 3; k++) {
+            axis[k].x = (next_random() & 1u) ? 42299 : -42299;
+            axis[k].y = (next_random() & 1u) ? 42299 : -42299;
+            axis[k].z = (next_random() & 1u) ? 42299 : -42299;
+        }
+        for (k = 0; k < 3; k++) {
+            /* h in [-2^14, 2^14): the edges one time in four */
+            int32_t h = (next_random() % 4u == 0) ? ((next_random() & 1u) ? 16383 : -16384)
+                                                  : (int32_t)(next_random() % 32768u) - 16384;
+            int32_t l = (next_random() % 8u == 0) ? (int32_t)(next_random() % 16384u)
+                                                  : ((next_random() & 1u) ? 16383 : 0);
+            c[k] = h * 16384 + l;
+        }
+        p.x = c[0];
+        p.y = c[1];
+        p.z = c[2];
+        from.x = (int32_t)(next_random() % 0x2001u) - 0x1000;
+        from.y = (int32_t)(next_random() % 0x2001u) - 0x1000;
+        from.z = (int32_t)(next_random() % 0x2001u) - 0x1000;
+        stp_view_transform_of_axes(axis[0], axis[1], axis[2], from, &t);
+        unit += t.unit;
+        stp_view_transform_point(&t, p, &out);
+        assert_int_equal(out.x, reference(p, t.right, t.from_right));
+        assert_int_equal(out.y, reference(p, t.up, t.from_up));
+        assert_int_equal(out.z, reference(p, t.forward, t.from_forward));
+    }
+#if STP_NARROW_FORMS
+    assert_true(unit == 1000000);
+#else
+    assert_true(unit == 0);
+#endif
+}
+
 /* The 32-bit difference of a point below 2^28 and an eye within int32
  * at its edges: exactly -2^31 (saturated to STP_FIX_MIN, -(2^31 - 1)),
  * wrapping below and above int32, and just inside it. */
@@ -288,6 +338,7 @@ int main(void)
         cmocka_unit_test(test_exact),
         cmocka_unit_test(test_edges),
         cmocka_unit_test(test_unit_axes),
+        cmocka_unit_test(test_unit_extremes),
         cmocka_unit_test(test_perspective),
         cmocka_unit_test(test_perspective_edges),
         cmocka_unit_test(test_perspective_subpixel_edges),
