@@ -817,10 +817,11 @@ static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, 
  * 0: quotients of 32-bit magnitudes (n = |a| 4096 < 2^31, so they fit
  * int32), both from one reciprocal r = floor((2^32 - 1) / |c|)
  * (stp_quotient_q12_by_recip): a 32-bit division is a ~130-instruction library
- * call on ARMv6-M.  Returns depth_terms_short's answer for the triangle
- * (x extent x_ext, y extent y_ext), from the quotients' magnitudes:
- * depth_term_short of a g within int32 tests |g| < 2^29, then
- * depth_magnitude_short(|g|). */
+ * call on ARMv6-M.  Returns 1 when the triangle's depth terms are short
+ * (depth_terms_short) by the quotients' magnitudes and extents at least
+ * its own (x_ext, y_ext): depth_term_short of a g within int32 tests |g|
+ * < 2^29, then depth_magnitude_short(|g|), which a larger extent passes
+ * only where the true one does; 0: not known. */
 static int gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t *gb, int32_t x_ext, int32_t y_ext)
 {
     uint32_t ua = (a < 0 ? 0u - (uint32_t)a : (uint32_t)a) << 12, ub = (b < 0 ? 0u - (uint32_t)b : (uint32_t)b) << 12,
@@ -830,18 +831,19 @@ static int gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t
         qa = stp_quotient_q12_by_recip(ua, uc, r);
         qb = stp_quotient_q12_by_recip(ub, uc, r);
     }
-    /* -a and c of opposite signs: negative */
-    *ga = (a > 0) == (c > 0) ? -(int64_t)qa : (int64_t)qa;
-    *gb = (b > 0) == (c > 0) ? -(int64_t)qb : (int64_t)qb;
+    /* -a and c of opposite signs: negative (a = 0: qa = 0 either way);
+     * qa, qb <= ua, ub < 2^31, so the signed quotients are int32s */
+    *ga = (a ^ c) >= 0 ? -(int32_t)qa : (int32_t)qa;
+    *gb = (b ^ c) >= 0 ? -(int32_t)qb : (int32_t)qb;
     return (qa | qb) < ((uint32_t)1 << 29) && depth_magnitude_short(qa, x_ext) && depth_magnitude_short(qb, y_ext);
 }
 
-/* max(0, p, q) - min(0, p, q): the extent of three coordinates relative
- * to the first (|p|, |q| < 2^14) */
-static int32_t extent_of(int32_t p, int32_t q)
+/* |p| + |q| (|p|, |q| < 2^14): at least max(0, p, q) - min(0, p, q), the
+ * extent of three coordinates relative to the first (equal to it when p
+ * and q differ in sign, at most twice it), fewer instructions */
+static int32_t extent_bound(int32_t p, int32_t q)
 {
-    int32_t lo = p < q ? p : q, hi = p < q ? q : p;
-    return (hi > 0 ? hi : 0) - (lo < 0 ? lo : 0);
+    return (p < 0 ? -p : p) + (q < 0 ? -q : q);
 }
 #endif
 
@@ -882,7 +884,7 @@ DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_
         ((((uint32_t)y1 + ys) | ((uint32_t)y2 + ys)) >> 14) == 0) {
         int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
         if (c32 != 0 && (uint32_t)a32 + (gs - 1u) < 2u * gs - 1u && (uint32_t)b32 + (gs - 1u) < 2u * gs - 1u) {
-            int terms = gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy, extent_of(x1, x2), extent_of(y1, y2));
+            int terms = gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy, extent_bound(x1, x2), extent_bound(y1, y2));
             pl->xc = (int32_t)stp_div3_u32(sx); /* coordinates below 2^20 */
             pl->yc = (int32_t)stp_div3_u32(sy);
             pl->dc = stp_div3_u32(sd);
