@@ -52,13 +52,8 @@ static int64_t mul_wide(int64_t a, int32_t b)
 }
 #endif
 
-#if STP_WITH_TRIANGLE_PATH
-/* |g| extent < 2^29 (extent >= 0): a depth gradient g (Q12 per subpixel)
- * over a triangle's extent in x or y, so each term of dc + ddx (x - xc) +
- * ddy (y - yc) at its pixel centres (x and xc within the vertices' x
- * extent, y and yc within their y extent) is below 2^29 and the sum, with
- * dc < 2^28 + 2^12, fits int32. */
-/* depth_term_short for g's magnitude m < 2^29 (extent >= 0) */
+/* depth_term_short (below) for g's magnitude m < 2^29 (extent >= 0);
+ * also gradients_short's */
 STP_HOT_INLINE int depth_magnitude_short(uint32_t m, int32_t extent)
 {
     uint32_t hi;
@@ -69,6 +64,12 @@ STP_HOT_INLINE int depth_magnitude_short(uint32_t m, int32_t extent)
     return hi < (1u << 14) && (hi << 15) + (m & 0x7FFFu) * (uint32_t)extent < ((uint32_t)1 << 29);
 }
 
+#if STP_WITH_TRIANGLE_PATH
+/* |g| extent < 2^29 (extent >= 0): a depth gradient g (Q12 per subpixel)
+ * over a triangle's extent in x or y, so each term of dc + ddx (x - xc) +
+ * ddy (y - yc) at its pixel centres (x and xc within the vertices' x
+ * extent, y and yc within their y extent) is below 2^29 and the sum, with
+ * dc < 2^28 + 2^12, fits int32. */
 STP_HOT_INLINE int depth_term_short(int64_t g, int32_t extent)
 {
     uint32_t low = (uint32_t)g;
@@ -835,7 +836,13 @@ static int gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t
      * qa, qb <= ua, ub < 2^31, so the signed quotients are int32s */
     *ga = (a ^ c) >= 0 ? -(int32_t)qa : (int32_t)qa;
     *gb = (b ^ c) >= 0 ? -(int32_t)qb : (int32_t)qb;
+#if defined(__OPTIMIZE_SIZE__) /* builds for size: depth_terms_short's one copy asks */
+    (void)x_ext;
+    (void)y_ext;
+    return 0;
+#else
     return (qa | qb) < ((uint32_t)1 << 29) && depth_magnitude_short(qa, x_ext) && depth_magnitude_short(qb, y_ext);
+#endif
 }
 
 /* |p| + |q| (|p|, |q| < 2^14): at least max(0, p, q) - min(0, p, q), the
@@ -941,7 +948,8 @@ static int depth_setup(frame *fr, const stp_instr *v, int n, depth_plane *pl)
  * taken from there in the bands after.  Returns 0 for an edge-on polygon
  * (kept as centre x = -1: device coordinates are >= 0).  A triangle makes
  * its plane at its first span with pixels, so a band may end without it:
- * kept as centre x = SETUP_NOT_MADE, made by the next band that needs it. */
+ * kept as centre x = SETUP_NOT_MADE (tri_setup_mark), made by the next
+ * band that needs it. */
 #define SETUP_NOT_MADE (-2)
 static int depth_plane_for(frame *fr, const stp_instr *v, int n, uint32_t ordinal, int32_t ymin,
                            depth_plane *pl)
