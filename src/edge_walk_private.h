@@ -174,8 +174,9 @@ static inline uint32_t stp_edge_acc_short(const stp_tri_vertex *a, const stp_tri
  * is 2^16 times a point of [xa, xb] less (yc - ya) times the slope's
  * truncation (below one), so within (-2^20, 2^30 + 2^20); a step taken (the
  * next row is the edge's too) is the difference of two such values, below
- * 2^31.  A slope of 2^27 or more is never stepped by: its step is stored
- * as 0. */
+ * 2^31.  A slope of 2^27 or more is never stepped by (|xb - xa| < 2^14,
+ * so yb - ya < 8: one row centre at most), so its step, 16 slopes modulo
+ * 2^32, is stored without a test (unsigned: no overflow). */
 #if STP_WIDE_ARITH /* 64-bit registers: no limit, no narrowing */
 typedef int64_t stp_tri_acc;
 typedef int32_t stp_tri_x; /* a crossing's x, Q27.4 */
@@ -202,10 +203,12 @@ static inline void stp_tri_edge_start(stp_tri_edge *e, const stp_tri_vertex *a, 
 #else
     /* |xb - xa| < 2^14: the slope fits 32 bits (|slope| <= 2^30), and the
      * accumulator's value lies within int32 (above), so its sum taken
-     * modulo 2^32 in unsigned arithmetic is its value's two's complement */
+     * modulo 2^32 in unsigned arithmetic is its value's two's complement;
+     * its step is used only while |slope| < 2^27 (above), where it is
+     * 16 slopes exactly */
     int32_t slope;
     e->acc = stp_edge_acc_short(a, b, yc, &slope);
-    e->step = slope > -((int32_t)1 << 27) && slope < ((int32_t)1 << 27) ? (uint32_t)slope * 16u : 0u;
+    e->step = (uint32_t)slope * 16u;
 #endif
 }
 

@@ -1070,6 +1070,92 @@ static void test_triangle_path_matches_general_path(void **state)
     assert_true(drawn > 10000);   /* and painted pixels */
 }
 
+/* The triangle path's depths (src/raster.c: depth_setup_triangle,
+ * tri_depth_start, tri_span_z) decide which of many interpenetrating
+ * random triangles shows at each pixel: small ones of a few pixels (the
+ * mesh torus's), larger and needle-thin ones, steep depth slopes among
+ * them, and diagonal slivers two subpixels wide (gradients' factors short
+ * enough for 32 bits, their depth terms not).  Their frames (STYLE8, and
+ * MONO1 through the direct pattern spans) hash to the value the scan
+ * converter gave before its set-up was made cheaper, in the host's and
+ * the 32-bit targets' arithmetic alike (test_raster_narrow), whole, in
+ * 5-row bands and with kept setups (the latter found triangles whose top
+ * lay in a band above their first row drawn from an unmade setup). */
+static uint32_t frame_hash(uint32_t h, const uint8_t *p, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        h = (h ^ p[i]) * 16777619u; /* FNV-1a */
+    return h;
+}
+
+static void test_triangle_depths_unchanged(void **state)
+{
+    static const stp_pixel_format formats[] = {STP_PIXEL_STYLE8, STP_PIXEL_MONO1};
+    static const uint32_t bands[] = {0, 5};
+    fixture f;
+    uint32_t seed = 2024u, h = 2166136261u;
+    int k, fm, b, keep;
+    (void)state;
+    fixture_open(&f, 64, 48, 4096);
+    for (k = 0; k < 600; k++) {
+        stp_vec3 v[3];
+        double cx, cy, size = k % 5 == 0 ? 40.0 : (k % 5 == 1 ? 12.0 : 4.0);
+        int i;
+        seed = seed * 1103515245u + 12345u;
+        cx = (double)((seed >> 8) % 1024) / 16.0;
+        seed = seed * 1103515245u + 12345u;
+        cy = (double)((seed >> 8) % 768) / 16.0;
+        if (k % 11 == 5) { /* a diagonal sliver's long edge through pixel centres */
+            cx = floor(cx / 2.0) + 0.5;
+            cy = floor(cy / 4.0) + 0.5;
+        }
+        for (i = 0; i < 3; i++) {
+            double dx, dy, z;
+            seed = seed * 1103515245u + 12345u;
+            dx = ((double)((seed >> 4) % 1024) / 1023.0 - 0.5) * size;
+            dy = ((double)((seed >> 16) % 1024) / 1023.0 - 0.5) * size;
+            if (k % 7 == 3)
+                dx *= 0.05; /* a needle */
+            seed = seed * 1103515245u + 12345u;
+            z = ((double)((seed >> 8) % 4096) / 4096.0 - 0.5) * (k % 3 == 0 ? 9.0 : 1.5);
+            if (k % 11 == 5) { /* steep gradients across it: long depth terms */
+                dx = i == 0 ? 0.0 : (i == 1 ? 15.0 + 2.0 / 16.0 : 30.0);
+                dy = i == 0 ? 0.0 : (i == 1 ? 15.0 : 30.0);
+                z *= 0.3 / (k % 3 == 0 ? 9.0 : 1.5);
+            }
+            v[i] = dev(&f, floor((cx + dx) * 16.0) / 16.0, floor((cy + dy) * 16.0) / 16.0, z);
+        }
+        stp_renderer_set_fill_style(f.r, 1 + k % 7);
+        assert_int_equal(stp_renderer_polygon(f.r, v, 3), STP_OK);
+    }
+    for (fm = 0; fm < 2; fm++) {
+        render_opts o = opts(formats[fm], STP_HIDDEN_ZBUFFER);
+        size_t size = stp_row_bytes(formats[fm], f.w) * f.h;
+        uint8_t *whole;
+        int status;
+        whole = render(&f, &o, &status);
+        assert_int_equal(status, STP_OK);
+        h = frame_hash(h, whole, size);
+        for (b = 0; b < 2; b++)
+            for (keep = 0; keep < 2; keep++) {
+                uint8_t *banded;
+                o.band_rows = bands[b];
+                o.keep_setup = keep;
+                banded = render(&f, &o, &status);
+                assert_int_equal(status, STP_OK);
+                if (memcmp(whole, banded, size) != 0)
+                    fail_msg("format %d, band_rows %u, kept setups %d: differs from the whole frame", (int)formats[fm],
+                             bands[b], keep);
+                free(banded);
+            }
+        free(whole);
+    }
+    fixture_close(&f);
+    print_message("triangle depths: frame hash %08x\n", h);
+    assert_int_equal(h, 0x49a757a2u);
+}
+
 /* A setup array shorter than the polygon count is refused, not overrun. */
 static void test_short_setup_array_is_refused(void **state)
 {
@@ -1632,6 +1718,7 @@ int main(void)
         cmocka_unit_test(test_backface_removal_out_of_range_is_refused),
         cmocka_unit_test(test_bands_give_the_same_frame),
         cmocka_unit_test(test_triangle_path_matches_general_path),
+        cmocka_unit_test(test_triangle_depths_unchanged),
         cmocka_unit_test(test_short_setup_array_is_refused),
         cmocka_unit_test(test_mono1_row_padding_is_zero),
         cmocka_unit_test(test_display_file_full_leaves_it_unchanged),
