@@ -444,6 +444,27 @@ static inline int32_t round_unit(int32_t x, uint32_t inv, int e)
 }
 #endif
 
+#if STP_NARROW_FORMS
+/* stp_unit_q14_from64's rounding, floor((floor((x inv + 2^(e-1)) / 2^e) +
+ * 2^15) / 2^16) = floor((x inv + 2^(e-1) + 2^(e+15)) / 2^(e+16)) (one
+ * floor: integers added inside a floor, either sign of x), for |x| <=
+ * 2^30, inv = ih 2^15 + il <= 2^30 (Newton's floors from below: ih <=
+ * 2^15, il < 2^15), e = 29 or 30, in 32-bit words.  With x = xh 2^15 + xl
+ * (floor: |xh| <= 2^15, 0 <= xl < 2^15), x inv = xh ih 2^30 + mid 2^15 +
+ * xl il, mid = xh il + xl ih in (-2^30, 2^31 - 2^16]; the floor by 2^30 is
+ * xh ih + 2^(e-15) + floor((mid + floor((xl il + 2^(e-1)) / 2^15)) /
+ * 2^15), the inner sum below 2^31, then a floor by 2^(e-14). */
+STP_HOT_INLINE int16_t round_q14(int32_t x, uint32_t ih, uint32_t il, int e)
+{
+    int32_t xh = stp_asr32(x, 15);
+    uint32_t xl = (uint32_t)x & 0x7FFFu;
+    int32_t mid = xh * (int32_t)il + (int32_t)(xl * ih);
+    int32_t low = (int32_t)((xl * il + ((uint32_t)1 << (e - 1))) >> 15);
+    int32_t q = xh * (int32_t)ih + ((int32_t)1 << (e - 15)) + stp_asr32(mid + low, 15);
+    return (int16_t)stp_asr32(q, e - 14);
+}
+#endif
+
 /* (x, y, z) (not all 0, |.| < 2^62) scaled by 2^up so the largest
  * component has 30 bits (its bit length is that of the three ORed; floor
  * shifts when up < 0) into v[]: |v[i]| <= 2^30.  Returns up.  Values
@@ -485,13 +506,39 @@ STP_HOT_INLINE int unit_scale(int64_t x, int64_t y, int64_t z, int32_t v[3])
 
 /* 1/sqrt(s) = inv 2^-(e + 30) for s = v.v (v scaled by unit_scale): s is
  * in [2^58, 3 2^60), a bit length of 59..62, so rsqrt64's even shift is
- * 28 or 30 and e (to STP_UNIT) is 29 or 30; *squares = s. */
-STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint64_t *squares, int *e)
+ * 28 or 30 and e (to STP_UNIT) is 29 or 30; *s30 = floor(s / 2^30) (below
+ * 3 2^30), the part of s the callers use. */
+STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint32_t *s30, int *e)
 {
+#if STP_NARROW_FORMS
+    /* s in 32-bit words, no 64-bit sum: each |v_i| <= 2^30 as h 2^15 + l
+     * (h <= 2^15, l < 2^15), v_i^2 = h^2 2^30 + h l 2^16 + l^2, so s =
+     * hh 2^30 + hl 2^16 + ll with the three sums below 3 2^30; floor(s /
+     * 2^k) for k = 30, 28 is hh 2^(30-k) + floor((hl + floor(ll / 2^16)) /
+     * 2^(k-16)) (floors inside floors by integers), the sum inside below
+     * 3 2^30 + 3 2^14.  s >= 2^60 when floor(s / 2^30) >= 2^30; else hh <
+     * 2^30 and floor(s / 2^28) < 2^32. */
+    uint32_t hh = 0, hl = 0, ll = 0, mid, m;
+    int k;
+    for (k = 0; k < 3; k++) {
+        uint32_t a = abs32(v[k]), h = a >> 15, l = a & 0x7FFFu;
+        hh += h * h;
+        hl += h * l;
+        ll += l * l;
+    }
+    mid = hl + (ll >> 16);
+    m = hh + (mid >> 14);
+    *s30 = m;
+    if (m >= (uint32_t)1 << 30) {
+        *e = 30;
+    } else {
+        *e = 29;
+        m = (hh << 2) + (mid >> 12);
+    }
+    return (int64_t)rsqrt_q30(m);
+#else
     uint64_t s;
-#if !STP_NARROW_FORMS
     int sh;
-#endif
     /* |v[i]| <= 2^30: exact 32 x 32 products */
 #if STP_HAVE_MUL64
     s = (uint64_t)STP_SMUL_FIT32(v[0], v[0]) + (uint64_t)STP_SMUL_FIT32(v[1], v[1]) +
@@ -499,19 +546,8 @@ STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint64_t *squares, int *
 #else
     s = square30(abs32(v[0])) + square30(abs32(v[1])) + square30(abs32(v[2]));
 #endif
-#if STP_NARROW_FORMS
-    *squares = s;
-    /* the same shifts by constants: no 64-bit shift by a variable (a
-     * library call on ARMv6-M) */
-    {
-        int wide = s >= ((uint64_t)1 << 60);
-        uint32_t m = wide ? (uint32_t)(s >> 30) : (uint32_t)(s >> 28);
-        *e = wide ? 30 : 29;
-        return (int64_t)rsqrt_q30(m);
-    }
-#else
     sh = s >= ((uint64_t)1 << 60) ? 30 : 28;
-    *squares = s;
+    *s30 = (uint32_t)(s >> 30);
     *e = 45 + sh / 2 - 30;
     return (int64_t)rsqrt_q30((uint32_t)(s >> sh));
 #endif
@@ -520,14 +556,15 @@ STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint64_t *squares, int *
 int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
 {
     int32_t v[3];
-    uint64_t s, len;
+    uint32_t s30;
+    uint64_t len;
     int up, e;
     int64_t inv;
     out->x = out->y = out->z = 0;
     if ((x | y | z) == 0)
         return 0;
     up = unit_scale(x, y, z, v);
-    inv = unit_inverse(v, &s, &e);
+    inv = unit_inverse(v, &s30, &e);
     /* |v inv| < 2^60 */
 #if STP_HAVE_MUL64
     {
@@ -536,13 +573,13 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
         out->y = (int32_t)floor_shift(STP_SMUL_FIT32(v[1], inv) + half, e);
         out->z = (int32_t)floor_shift(STP_SMUL_FIT32(v[2], inv) + half, e);
     }
-    /* |v| scaled = s / sqrt(s): s >> 30 < 2^32 times inv < 2^31 */
-    len = STP_UMUL_FIT32(s >> 30, inv) >> e;
+    /* |v| scaled = s / sqrt(s): s30 < 2^32 times inv < 2^31 */
+    len = STP_UMUL_FIT32(s30, inv) >> e;
 #else
     out->x = round_unit(v[0], (uint32_t)inv, e);
     out->y = round_unit(v[1], (uint32_t)inv, e);
     out->z = round_unit(v[2], (uint32_t)inv, e);
-    len = mul_shr32((uint32_t)(s >> 30), (uint32_t)inv, e); /* < 2^32: |v| scaled < 2^30 sqrt 3 */
+    len = mul_shr32(s30, (uint32_t)inv, e); /* < 2^32: |v| scaled < 2^30 sqrt 3 */
 #endif
     /* to the input's units, rounded to nearest (len may sit 2^-29 below an
      * exact integer length, which a floor would take a whole unit down) */
@@ -554,13 +591,13 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
 int stp_unit_q14_from64(int64_t x, int64_t y, int64_t z, int16_t out[3])
 {
     int32_t v[3];
-    uint64_t s;
+    uint32_t s30;
     int e;
     int64_t inv;
     if ((x | y | z) == 0)
         return 0;
     (void)unit_scale(x, y, z, v);
-    inv = unit_inverse(v, &s, &e);
+    inv = unit_inverse(v, &s30, &e);
 #if STP_HAVE_MUL64
     {
         /* floor((floor((v inv + 2^(e-1)) / 2^e) + 2^15) / 2^16) in one
@@ -569,6 +606,13 @@ int stp_unit_q14_from64(int64_t x, int64_t y, int64_t z, int16_t out[3])
         out[0] = (int16_t)floor_shift(STP_SMUL_FIT32(v[0], inv) + half, e + 16);
         out[1] = (int16_t)floor_shift(STP_SMUL_FIT32(v[1], inv) + half, e + 16);
         out[2] = (int16_t)floor_shift(STP_SMUL_FIT32(v[2], inv) + half, e + 16);
+    }
+#elif STP_NARROW_FORMS
+    {
+        uint32_t ih = (uint32_t)inv >> 15, il = (uint32_t)inv & 0x7FFFu;
+        out[0] = round_q14(v[0], ih, il, e);
+        out[1] = round_q14(v[1], ih, il, e);
+        out[2] = round_q14(v[2], ih, il, e);
     }
 #else
     out[0] = (int16_t)stp_asr32(round_unit(v[0], (uint32_t)inv, e) + ((int32_t)1 << 15), 16);
