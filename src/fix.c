@@ -350,6 +350,30 @@ static inline uint32_t mul_shr32_less1(uint32_t a, uint32_t b, int s)
 #endif
 #endif
 
+#if STP_NARROW_FORMS
+/* rsqrt_q30's second Newton step, floor(y (3 2^30 - my2) / 2^31) with
+ * y2 = floor(y^2 / 2^30) and my2 = floor(m y2 / 2^30), the same floors in
+ * fewer 32-bit products: y (the first step's, in [2^29 - 768, 2^30)) =
+ * a 2^16 + b gives y2 = 4 a^2 + floor((a b + floor(b^2 / 2^17)) / 2^13)
+ * (three products).  The first step leaves m y^2 within 2^-14 of 2^60:
+ * g = 2^30 - my2 is in [-1, 48707] for every m (all 3 2^30 checked against
+ * the 64-bit definition; tests/core/test_fix.c's test_rsqrt_exact samples
+ * them), so my2 is known from floor(m y2 / 2^30) mod 2^18, bits 14..31 of
+ * floor(m y2 / 2^16) mod 2^32 (wrapping 32-bit sums of the four partial
+ * products) read as a signed 18-bit value.  Then the step is y +
+ * floor(y g / 2^31) with y = ya 2^15 + yb: ya g and yb g below 2^31. */
+STP_HOT_INLINE uint32_t rsqrt_step_narrow(uint32_t m, uint32_t y)
+{
+    uint32_t a = y >> 16, b = y & 0xFFFFu;
+    uint32_t y2 = ((a * a) << 2) + ((a * b + ((b * b) >> 17)) >> 13);
+    uint32_t mh = m >> 16, ml = m & 0xFFFFu, yh = y2 >> 16, yl = y2 & 0xFFFFu;
+    uint32_t w = ((mh * yh) << 16) + mh * yl + ml * yh + ((ml * yl) >> 16);
+    int32_t g = 0 - stp_asr32((int32_t)w, 14);
+    int32_t ya = (int32_t)(y >> 15), yb = (int32_t)(y & 0x7FFFu);
+    return y + (uint32_t)stp_asr32(ya * g + stp_asr32(yb * g, 15), 16);
+}
+#endif
+
 /* 1/sqrt(m / 2^30) in Q30 for m in [2^30, 2^32). */
 static inline uint64_t rsqrt_q30(uint32_t m)
 {
@@ -377,11 +401,16 @@ static inline uint64_t rsqrt_q30(uint32_t m)
         uint32_t t = ((uint32_t)3 << 30) - mul_shr32(m, y2, 30);
         y = (seed * (t >> 16) + ((seed * (t & 0xFFFFu)) >> 16)) >> 1;
     }
+#if STP_NARROW_FORMS
+    (void)k;
+    y = rsqrt_step_narrow(m, (uint32_t)y);
+#else
     for (k = 1; k < 2; k++) {
         uint32_t y2 = mul_shr32((uint32_t)y, (uint32_t)y, 30);
         uint32_t my2 = mul_shr32(m, y2, 30);
         y = mul_shr32((uint32_t)y, ((uint32_t)3 << 30) - my2, 31);
     }
+#endif
 #endif
     return y;
 }
