@@ -535,9 +535,9 @@ STP_HOT_INLINE int unit_scale(int64_t x, int64_t y, int64_t z, int32_t v[3])
 
 /* 1/sqrt(s) = inv 2^-(e + 30) for s = v.v (v scaled by unit_scale): s is
  * in [2^58, 3 2^60), a bit length of 59..62, so rsqrt64's even shift is
- * 28 or 30 and e (to STP_UNIT) is 29 or 30; *s30 = floor(s / 2^30) (below
- * 3 2^30), the part of s the callers use. */
-STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint32_t *s30, int *e)
+ * 28 or 30 and e (to STP_UNIT) is 29 or 30; *squares = s (with
+ * STP_NARROW_FORMS s less s mod 2^30: the callers use s >> 30 alone). */
+STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint64_t *squares, int *e)
 {
 #if STP_NARROW_FORMS
     /* s in 32-bit words, no 64-bit sum: each |v_i| <= 2^30 as h 2^15 + l
@@ -557,7 +557,7 @@ STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint32_t *s30, int *e)
     }
     mid = hl + (ll >> 16);
     m = hh + (mid >> 14);
-    *s30 = m;
+    *squares = (uint64_t)m << 30;
     if (m >= (uint32_t)1 << 30) {
         *e = 30;
     } else {
@@ -576,7 +576,7 @@ STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint32_t *s30, int *e)
     s = square30(abs32(v[0])) + square30(abs32(v[1])) + square30(abs32(v[2]));
 #endif
     sh = s >= ((uint64_t)1 << 60) ? 30 : 28;
-    *s30 = (uint32_t)(s >> 30);
+    *squares = s;
     *e = 45 + sh / 2 - 30;
     return (int64_t)rsqrt_q30((uint32_t)(s >> sh));
 #endif
@@ -585,15 +585,14 @@ STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint32_t *s30, int *e)
 int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
 {
     int32_t v[3];
-    uint32_t s30;
-    uint64_t len;
+    uint64_t s, len;
     int up, e;
     int64_t inv;
     out->x = out->y = out->z = 0;
     if ((x | y | z) == 0)
         return 0;
     up = unit_scale(x, y, z, v);
-    inv = unit_inverse(v, &s30, &e);
+    inv = unit_inverse(v, &s, &e);
     /* |v inv| < 2^60 */
 #if STP_HAVE_MUL64
     {
@@ -602,13 +601,13 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
         out->y = (int32_t)floor_shift(STP_SMUL_FIT32(v[1], inv) + half, e);
         out->z = (int32_t)floor_shift(STP_SMUL_FIT32(v[2], inv) + half, e);
     }
-    /* |v| scaled = s / sqrt(s): s30 < 2^32 times inv < 2^31 */
-    len = STP_UMUL_FIT32(s30, inv) >> e;
+    /* |v| scaled = s / sqrt(s): s >> 30 < 2^32 times inv < 2^31 */
+    len = STP_UMUL_FIT32(s >> 30, inv) >> e;
 #else
     out->x = round_unit(v[0], (uint32_t)inv, e);
     out->y = round_unit(v[1], (uint32_t)inv, e);
     out->z = round_unit(v[2], (uint32_t)inv, e);
-    len = mul_shr32(s30, (uint32_t)inv, e); /* < 2^32: |v| scaled < 2^30 sqrt 3 */
+    len = mul_shr32((uint32_t)(s >> 30), (uint32_t)inv, e); /* < 2^32: |v| scaled < 2^30 sqrt 3 */
 #endif
     /* to the input's units, rounded to nearest (len may sit 2^-29 below an
      * exact integer length, which a floor would take a whole unit down) */
@@ -620,13 +619,13 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out)
 int stp_unit_q14_from64(int64_t x, int64_t y, int64_t z, int16_t out[3])
 {
     int32_t v[3];
-    uint32_t s30;
+    uint64_t s;
     int e;
     int64_t inv;
     if ((x | y | z) == 0)
         return 0;
     (void)unit_scale(x, y, z, v);
-    inv = unit_inverse(v, &s30, &e);
+    inv = unit_inverse(v, &s, &e);
 #if STP_HAVE_MUL64
     {
         /* floor((floor((v inv + 2^(e-1)) / 2^e) + 2^15) / 2^16) in one
