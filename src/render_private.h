@@ -150,14 +150,10 @@ STP_HOT_INLINE int stp_render_certain_side_int32(int32_t cx, int32_t cy, int32_t
 {
     uint32_t cm = stp_abs32(cx) | stp_abs32(cy) | stp_abs32(cz);
     uint32_t dm = stp_abs32(dx) | stp_abs32(dy) | stp_abs32(dz), cn, dn;
-    int a = stp_bit_length32(cm) - 14, b = stp_bit_length32(dm) - 15;
-    int32_t dot;
-    if (a < 0)
-        a = 0;
-    if (b < 0)
-        b = 0;
-    dot = stp_asr32(cx, a) * stp_asr32(dx, b) + stp_asr32(cy, a) * stp_asr32(dy, b) +
-          stp_asr32(cz, a) * stp_asr32(dz, b);
+    /* the shifts max(0, bit length - 14 or 15), from the bits above */
+    int a = stp_bit_length32(cm >> 14), b = stp_bit_length32(dm >> 15);
+    int32_t dot = stp_asr32(cx, a) * stp_asr32(dx, b) + stp_asr32(cy, a) * stp_asr32(dy, b) +
+                  stp_asr32(cz, a) * stp_asr32(dz, b);
     cn = 3u * ((cm >> a) + 1u);
     dn = 3u * ((dm >> b) + 1u);
     if (stp_abs32(dot) <= cn + dn + 3u + (((cn + 3u) >> 6) + 1u) * (((dn + 3u) >> 7) + 1u))
