@@ -547,15 +547,11 @@ STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint64_t *squares, int *
      * 2^(k-16)) (floors inside floors by integers), the sum inside below
      * 3 2^30 + 3 2^14.  s >= 2^60 when floor(s / 2^30) >= 2^30; else hh <
      * 2^30 and floor(s / 2^28) < 2^32. */
-    uint32_t hh = 0, hl = 0, ll = 0, mid, m;
-    int k;
-    for (k = 0; k < 3; k++) {
-        uint32_t a = abs32(v[k]), h = a >> 15, l = a & 0x7FFFu;
-        hh += h * h;
-        hl += h * l;
-        ll += l * l;
-    }
-    mid = hl + (ll >> 16);
+    uint32_t a0 = abs32(v[0]), a1 = abs32(v[1]), a2 = abs32(v[2]);
+    uint32_t h0 = a0 >> 15, h1 = a1 >> 15, h2 = a2 >> 15;
+    uint32_t l0 = a0 & 0x7FFFu, l1 = a1 & 0x7FFFu, l2 = a2 & 0x7FFFu;
+    uint32_t hh = h0 * h0 + h1 * h1 + h2 * h2, hl = h0 * l0 + h1 * l1 + h2 * l2;
+    uint32_t mid = hl + ((l0 * l0 + l1 * l1 + l2 * l2) >> 16), m;
     m = hh + (mid >> 14);
     *squares = (uint64_t)m << 30;
     if (m >= (uint32_t)1 << 30) {
