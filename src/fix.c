@@ -350,6 +350,30 @@ static inline uint32_t mul_shr32_less1(uint32_t a, uint32_t b, int s)
 #endif
 #endif
 
+#if STP_NARROW_FORMS
+/* rsqrt_q30's second Newton step, floor(y (3 2^30 - my2) / 2^31) with
+ * y2 = floor(y^2 / 2^30) and my2 = floor(m y2 / 2^30), the same floors in
+ * fewer 32-bit products: y (the first step's, in [2^29 - 768, 2^30)) =
+ * a 2^16 + b gives y2 = 4 a^2 + floor((a b + floor(b^2 / 2^17)) / 2^13)
+ * (three products).  The first step leaves m y^2 within 2^-14 of 2^60:
+ * g = 2^30 - my2 is in [-1, 48707] for every m (all 3 2^30 checked against
+ * the 64-bit definition; tests/core/test_fix.c's test_rsqrt_exact samples
+ * them), so my2 is known from floor(m y2 / 2^30) mod 2^18, bits 14..31 of
+ * floor(m y2 / 2^16) mod 2^32 (wrapping 32-bit sums of the four partial
+ * products) read as a signed 18-bit value.  Then the step is y +
+ * floor(y g / 2^31) with y = ya 2^15 + yb: ya g and yb g below 2^31. */
+STP_HOT_INLINE uint32_t rsqrt_step_narrow(uint32_t m, uint32_t y)
+{
+    uint32_t a = y >> 16, b = y & 0xFFFFu;
+    uint32_t y2 = ((a * a) << 2) + ((a * b + ((b * b) >> 17)) >> 13);
+    uint32_t mh = m >> 16, ml = m & 0xFFFFu, yh = y2 >> 16, yl = y2 & 0xFFFFu;
+    uint32_t w = ((mh * yh) << 16) + mh * yl + ml * yh + ((ml * yl) >> 16);
+    int32_t g = 0 - stp_asr32((int32_t)w, 14);
+    int32_t ya = (int32_t)(y >> 15), yb = (int32_t)(y & 0x7FFFu);
+    return y + (uint32_t)stp_asr32(ya * g + stp_asr32(yb * g, 15), 16);
+}
+#endif
+
 /* 1/sqrt(m / 2^30) in Q30 for m in [2^30, 2^32). */
 static inline uint64_t rsqrt_q30(uint32_t m)
 {
@@ -377,11 +401,16 @@ static inline uint64_t rsqrt_q30(uint32_t m)
         uint32_t t = ((uint32_t)3 << 30) - mul_shr32(m, y2, 30);
         y = (seed * (t >> 16) + ((seed * (t & 0xFFFFu)) >> 16)) >> 1;
     }
+#if STP_NARROW_FORMS
+    (void)k;
+    y = rsqrt_step_narrow(m, (uint32_t)y);
+#else
     for (k = 1; k < 2; k++) {
         uint32_t y2 = mul_shr32((uint32_t)y, (uint32_t)y, 30);
         uint32_t my2 = mul_shr32(m, y2, 30);
         y = mul_shr32((uint32_t)y, ((uint32_t)3 << 30) - my2, 31);
     }
+#endif
 #endif
     return y;
 }
@@ -444,6 +473,27 @@ static inline int32_t round_unit(int32_t x, uint32_t inv, int e)
 }
 #endif
 
+#if STP_NARROW_FORMS
+/* stp_unit_q14_from64's rounding, floor((floor((x inv + 2^(e-1)) / 2^e) +
+ * 2^15) / 2^16) = floor((x inv + 2^(e-1) + 2^(e+15)) / 2^(e+16)) (one
+ * floor: integers added inside a floor, either sign of x), for |x| <=
+ * 2^30, inv = ih 2^15 + il <= 2^30 (Newton's floors from below: ih <=
+ * 2^15, il < 2^15), e = 29 or 30, in 32-bit words.  With x = xh 2^15 + xl
+ * (floor: |xh| <= 2^15, 0 <= xl < 2^15), x inv = xh ih 2^30 + mid 2^15 +
+ * xl il, mid = xh il + xl ih in (-2^30, 2^31 - 2^16]; the floor by 2^30 is
+ * xh ih + 2^(e-15) + floor((mid + floor((xl il + 2^(e-1)) / 2^15)) /
+ * 2^15), the inner sum below 2^31, then a floor by 2^(e-14). */
+STP_HOT_INLINE int16_t round_q14(int32_t x, uint32_t ih, uint32_t il, int e)
+{
+    int32_t xh = stp_asr32(x, 15);
+    uint32_t xl = (uint32_t)x & 0x7FFFu;
+    int32_t mid = xh * (int32_t)il + (int32_t)(xl * ih);
+    int32_t low = (int32_t)((xl * il + ((uint32_t)1 << (e - 1))) >> 15);
+    int32_t q = xh * (int32_t)ih + ((int32_t)1 << (e - 15)) + stp_asr32(mid + low, 15);
+    return (int16_t)stp_asr32(q, e - 14);
+}
+#endif
+
 /* (x, y, z) (not all 0, |.| < 2^62) scaled by 2^up so the largest
  * component has 30 bits (its bit length is that of the three ORed; floor
  * shifts when up < 0) into v[]: |v[i]| <= 2^30.  Returns up.  Values
@@ -485,13 +535,35 @@ STP_HOT_INLINE int unit_scale(int64_t x, int64_t y, int64_t z, int32_t v[3])
 
 /* 1/sqrt(s) = inv 2^-(e + 30) for s = v.v (v scaled by unit_scale): s is
  * in [2^58, 3 2^60), a bit length of 59..62, so rsqrt64's even shift is
- * 28 or 30 and e (to STP_UNIT) is 29 or 30; *squares = s. */
+ * 28 or 30 and e (to STP_UNIT) is 29 or 30; *squares = s (with
+ * STP_NARROW_FORMS s less s mod 2^30: the callers use s >> 30 alone). */
 STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint64_t *squares, int *e)
 {
+#if STP_NARROW_FORMS
+    /* s in 32-bit words, no 64-bit sum: each |v_i| <= 2^30 as h 2^15 + l
+     * (h <= 2^15, l < 2^15), v_i^2 = h^2 2^30 + h l 2^16 + l^2, so s =
+     * hh 2^30 + hl 2^16 + ll with the three sums below 3 2^30; floor(s /
+     * 2^k) for k = 30, 28 is hh 2^(30-k) + floor((hl + floor(ll / 2^16)) /
+     * 2^(k-16)) (floors inside floors by integers), the sum inside below
+     * 3 2^30 + 3 2^14.  s >= 2^60 when floor(s / 2^30) >= 2^30; else hh <
+     * 2^30 and floor(s / 2^28) < 2^32. */
+    uint32_t a0 = abs32(v[0]), a1 = abs32(v[1]), a2 = abs32(v[2]);
+    uint32_t h0 = a0 >> 15, h1 = a1 >> 15, h2 = a2 >> 15;
+    uint32_t l0 = a0 & 0x7FFFu, l1 = a1 & 0x7FFFu, l2 = a2 & 0x7FFFu;
+    uint32_t hh = h0 * h0 + h1 * h1 + h2 * h2, hl = h0 * l0 + h1 * l1 + h2 * l2;
+    uint32_t mid = hl + ((l0 * l0 + l1 * l1 + l2 * l2) >> 16), m;
+    m = hh + (mid >> 14);
+    *squares = (uint64_t)m << 30;
+    if (m >= (uint32_t)1 << 30) {
+        *e = 30;
+    } else {
+        *e = 29;
+        m = (hh << 2) + (mid >> 12);
+    }
+    return (int64_t)rsqrt_q30(m);
+#else
     uint64_t s;
-#if !STP_NARROW_FORMS
     int sh;
-#endif
     /* |v[i]| <= 2^30: exact 32 x 32 products */
 #if STP_HAVE_MUL64
     s = (uint64_t)STP_SMUL_FIT32(v[0], v[0]) + (uint64_t)STP_SMUL_FIT32(v[1], v[1]) +
@@ -499,17 +571,6 @@ STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint64_t *squares, int *
 #else
     s = square30(abs32(v[0])) + square30(abs32(v[1])) + square30(abs32(v[2]));
 #endif
-#if STP_NARROW_FORMS
-    *squares = s;
-    /* the same shifts by constants: no 64-bit shift by a variable (a
-     * library call on ARMv6-M) */
-    {
-        int wide = s >= ((uint64_t)1 << 60);
-        uint32_t m = wide ? (uint32_t)(s >> 30) : (uint32_t)(s >> 28);
-        *e = wide ? 30 : 29;
-        return (int64_t)rsqrt_q30(m);
-    }
-#else
     sh = s >= ((uint64_t)1 << 60) ? 30 : 28;
     *squares = s;
     *e = 45 + sh / 2 - 30;
@@ -569,6 +630,13 @@ int stp_unit_q14_from64(int64_t x, int64_t y, int64_t z, int16_t out[3])
         out[0] = (int16_t)floor_shift(STP_SMUL_FIT32(v[0], inv) + half, e + 16);
         out[1] = (int16_t)floor_shift(STP_SMUL_FIT32(v[1], inv) + half, e + 16);
         out[2] = (int16_t)floor_shift(STP_SMUL_FIT32(v[2], inv) + half, e + 16);
+    }
+#elif STP_NARROW_FORMS
+    {
+        uint32_t ih = (uint32_t)inv >> 15, il = (uint32_t)inv & 0x7FFFu;
+        out[0] = round_q14(v[0], ih, il, e);
+        out[1] = round_q14(v[1], ih, il, e);
+        out[2] = round_q14(v[2], ih, il, e);
     }
 #else
     out[0] = (int16_t)stp_asr32(round_unit(v[0], (uint32_t)inv, e) + ((int32_t)1 << 15), 16);

@@ -51,27 +51,36 @@ static inline void stp_render_triangle_cross(const stp_vec3 *v, int64_t c[3])
             z1 = (int64_t)v[1].z - v[0].z;
     int64_t x2 = (int64_t)v[2].x - v[0].x, y2 = (int64_t)v[2].y - v[0].y,
             z2 = (int64_t)v[2].z - v[0].z;
-    uint64_t spread = stp_abs64u(x1) | stp_abs64u(y1) | stp_abs64u(z1) | stp_abs64u(x2) |
-                      stp_abs64u(y2) | stp_abs64u(z2);
-#if STP_NARROW_FORMS
-    if (spread < ((uint64_t)1 << 15)) {
-        /* edges below 2^15 (half a unit: a mesh's triangle): products
-         * below 2^30, their differences below 2^31, the same values in
-         * int32 without the 64-bit multiply library call */
-        c[0] = (int32_t)y1 * (int32_t)z2 - (int32_t)z1 * (int32_t)y2;
-        c[1] = (int32_t)z1 * (int32_t)x2 - (int32_t)x1 * (int32_t)z2;
-        c[2] = (int32_t)x1 * (int32_t)y2 - (int32_t)y1 * (int32_t)x2;
-        return;
-    }
+#if STP_HAVE_MUL64
+    /* the usual triangle needs no cut: edges in [-2^29, 2^29) (a window
+     * test by offsets, fewer steps than the magnitudes) */
+    const uint64_t h = (uint64_t)1 << 29;
+    if ((((uint64_t)x1 + h) | ((uint64_t)y1 + h) | ((uint64_t)z1 + h) | ((uint64_t)x2 + h) |
+         ((uint64_t)y2 + h) | ((uint64_t)z2 + h)) >= 2 * h)
 #endif
-    if (spread >> 30) {
-        int bits = stp_bit_length64(spread) - 30;
-        x1 = stp_asr64(x1, bits);
-        y1 = stp_asr64(y1, bits);
-        z1 = stp_asr64(z1, bits);
-        x2 = stp_asr64(x2, bits);
-        y2 = stp_asr64(y2, bits);
-        z2 = stp_asr64(z2, bits);
+    {
+        uint64_t spread = stp_abs64u(x1) | stp_abs64u(y1) | stp_abs64u(z1) | stp_abs64u(x2) |
+                          stp_abs64u(y2) | stp_abs64u(z2);
+#if STP_NARROW_FORMS
+        if (spread < ((uint64_t)1 << 15)) {
+            /* edges below 2^15 (half a unit: a mesh's triangle): products
+             * below 2^30, their differences below 2^31, the same values in
+             * int32 without the 64-bit multiply library call */
+            c[0] = (int32_t)y1 * (int32_t)z2 - (int32_t)z1 * (int32_t)y2;
+            c[1] = (int32_t)z1 * (int32_t)x2 - (int32_t)x1 * (int32_t)z2;
+            c[2] = (int32_t)x1 * (int32_t)y2 - (int32_t)y1 * (int32_t)x2;
+            return;
+        }
+#endif
+        if (spread >> 30) {
+            int bits = stp_bit_length64(spread) - 30;
+            x1 = stp_asr64(x1, bits);
+            y1 = stp_asr64(y1, bits);
+            z1 = stp_asr64(z1, bits);
+            x2 = stp_asr64(x2, bits);
+            y2 = stp_asr64(y2, bits);
+            z2 = stp_asr64(z2, bits);
+        }
     }
     c[0] = y1 * z2 - z1 * y2;
     c[1] = z1 * x2 - x1 * z2;
@@ -150,14 +159,10 @@ STP_HOT_INLINE int stp_render_certain_side_int32(int32_t cx, int32_t cy, int32_t
 {
     uint32_t cm = stp_abs32(cx) | stp_abs32(cy) | stp_abs32(cz);
     uint32_t dm = stp_abs32(dx) | stp_abs32(dy) | stp_abs32(dz), cn, dn;
-    int a = stp_bit_length32(cm) - 14, b = stp_bit_length32(dm) - 15;
-    int32_t dot;
-    if (a < 0)
-        a = 0;
-    if (b < 0)
-        b = 0;
-    dot = stp_asr32(cx, a) * stp_asr32(dx, b) + stp_asr32(cy, a) * stp_asr32(dy, b) +
-          stp_asr32(cz, a) * stp_asr32(dz, b);
+    /* the shifts max(0, bit length - 14 or 15), from the bits above */
+    int a = stp_bit_length32(cm >> 14), b = stp_bit_length32(dm >> 15);
+    int32_t dot = stp_asr32(cx, a) * stp_asr32(dx, b) + stp_asr32(cy, a) * stp_asr32(dy, b) +
+                  stp_asr32(cz, a) * stp_asr32(dz, b);
     cn = 3u * ((cm >> a) + 1u);
     dn = 3u * ((dm >> b) + 1u);
     if (stp_abs32(dot) <= cn + dn + 3u + (((cn + 3u) >> 6) + 1u) * (((dn + 3u) >> 7) + 1u))

@@ -930,6 +930,60 @@ static void test_unit_exact_int32(void **state)
     }
 }
 
+/* stp_rsqrt64 for m in [2^30, 2^32) (rsqrt_q30's range: bit length 31 or
+ * 32, no shift, exponent 45) against its definition in native 64-bit
+ * words: the seed 1/sqrt(1 + (i + 1/2) / 64) in Q16 rounded (fix.c's
+ * table), two Newton steps y <- floor(y (3 2^30 - floor(m floor(y^2 /
+ * 2^30) / 2^30)) / 2^31).  The builds without a 64-bit product form the
+ * second step from m y^2's distance to 2^60 (fix.c's rsqrt_step_narrow):
+ * both ends of every seed's interval, the m where that distance is
+ * greatest, and millions of random m. */
+static uint32_t rsqrt_reference(uint32_t m)
+{
+    double i = (double)((m >> 24) - 64);
+    uint64_t y = (uint64_t)floor(65536.0 / sqrt(1.0 + (i + 0.5) / 64.0) + 0.5) << 14;
+    int k;
+    for (k = 0; k < 2; k++) {
+        uint64_t y2 = (y * y) >> 30;
+        uint64_t my2 = ((uint64_t)m * y2) >> 30;
+        y = (y * (((uint64_t)3 << 30) - my2)) >> 31;
+    }
+    return (uint32_t)y;
+}
+
+static void check_rsqrt_exact(uint32_t m)
+{
+    int e = 0;
+    uint32_t got = stp_rsqrt64(m, &e), want = rsqrt_reference(m);
+    if (got != want || e != 45)
+        fail_msg("rsqrt(%lu): %lu 2^-%d, expected %lu 2^-45", (unsigned long)m, (unsigned long)got, e,
+                 (unsigned long)want);
+}
+
+static void test_rsqrt_exact(void **state)
+{
+    /* the greatest and least 2^30 - my2 (48707 and -1), halfway */
+    static const uint32_t special[] = {1073741826u, 1098903240u, 0x80000000u, 0xC0000000u};
+    uint64_t seed = 0xD1B54A32D192ED03ull;
+    uint32_t i, d;
+    (void)state;
+    for (i = 0; i < sizeof special / sizeof special[0]; i++)
+        for (d = 0; d < 64; d++) {
+            if (special[i] - d >= 0x40000000u)
+                check_rsqrt_exact(special[i] - d);
+            check_rsqrt_exact(special[i] + d);
+        }
+    for (i = 64; i < 256; i++)
+        for (d = 0; d < 4096; d++) {
+            check_rsqrt_exact((i << 24) + d);
+            check_rsqrt_exact((i << 24) + 0xFFFFFFu - d);
+        }
+    for (i = 0; i < 4000000; i++) {
+        seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+        check_rsqrt_exact((uint32_t)(((seed >> 32) * 3u) >> 2) + 0x40000000u);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -958,6 +1012,7 @@ int main(void)
         cmocka_unit_test(test_div3_u30_matches_operator),
         cmocka_unit_test(test_unit_from64_against_double),
         cmocka_unit_test(test_unit_exact_int32),
+        cmocka_unit_test(test_rsqrt_exact),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
