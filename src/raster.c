@@ -1151,10 +1151,12 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
         uint32_t d = td->d_row32 + td->gx * ((p1 << SUB) + HALF_PIXEL), d_end = d + (td->gx << SUB) * (p2 - p1);
         const uint32_t depths = (uint32_t)(DEPTH_Q12_END - DEPTH_Q12_MIN);
         if (tr && d - (uint32_t)DEPTH_Q12_MIN < depths && d_end - (uint32_t)DEPTH_Q12_MIN < depths)
-            /* 1..65535 at both ends; two pixel centres 16 apart lie
-             * within the x extent: 16 |ddx| < 2^29 */
+            /* 1..65535 at both ends; the step a pixel is added only
+             * where the span has two (span_z_direct), whose centres 16
+             * apart lie within the x extent: 16 |ddx| < 2^29 (from_twos
+             * maps every other value too: no test for one pixel) */
             span_z_direct(tr->z, tr->band, page_bit, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
-                          p2 > p1 ? from_twos(td->gx << SUB) : 0);
+                          from_twos(td->gx << SUB));
         else
             put_span_z(fr, row, p1, p2, style, from_twos(d), pl->ddx * (1 << SUB), 0, 0, 0, t, tr != 0);
     } else {
