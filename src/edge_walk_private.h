@@ -49,6 +49,16 @@ static inline uint32_t stp_quotient_q12_by_recip(uint32_t n, uint32_t d, uint32_
 #define STP_SLOPE_RECIP 0
 #endif
 
+/* |num| den < 2^16, the table's condition, tested as un < m / 2^16 with m
+ * = stp_slope_recip[den] = floor(2^32 / den) + 1 (2 <= den < 2^16): the
+ * shift the quotient takes anyway instead of a product and a constant.
+ * floor(m / 2^16) den <= 2^16: were k = floor(m / 2^16) above 2^16 / den,
+ * k 2^16 (<= m) would exceed 2^32 / den, so equal m, while k den >= 2^16
+ * + 1 gives m den >= 2^32 + 2^16 > 2^32 + den >= m den; so un < k gives
+ * un den < 2^16.  It refuses only un = k where den is no power of two (a
+ * division gives those). */
+#define STP_SLOPE_RECIP_FITS(un, m) ((un) < (m) >> 16)
+
 /* floor(v / 16) for -2^27 <= v < 2^31 - 2^27 (Q4 coordinates and their
  * half-pixel offsets): a shift of the offset value, no division */
 static inline int32_t stp_floor16(int32_t v)
@@ -65,12 +75,15 @@ static inline int64_t stp_slope_q16(int32_t num, int32_t den)
 #if STP_SLOPE_RECIP > 0
     /* n = |num| 2^16 and m = stp_slope_recip[den]: n m / 2^32 (= |num| m
      * / 2^16) exceeds
-     * n / den by less than n / 2^32, below 1 / den while |num| den < 2^16,
-     * so its floor is the quotient */
+     * n / den by less than n / 2^32, below 1 / den while |num| den < 2^16
+     * (STP_SLOPE_RECIP_FITS), so its floor is the quotient */
     uint32_t un = num < 0 ? 0u - (uint32_t)num : (uint32_t)num;
-    if (den >= 2 && den < STP_SLOPE_RECIP && un * (uint32_t)den < 65536u) {
-        uint32_t q = (uint32_t)(stp_umul32x32(un, stp_slope_recip[den]) >> 16); /* un < 2^15 */
-        return num < 0 ? -(int64_t)q : (int64_t)q;
+    if (den >= 2 && den < STP_SLOPE_RECIP) {
+        uint32_t m = stp_slope_recip[den];
+        if (STP_SLOPE_RECIP_FITS(un, m)) {
+            uint32_t q = (uint32_t)(stp_umul32x32(un, m) >> 16); /* un < 2^15 */
+            return num < 0 ? -(int64_t)q : (int64_t)q;
+        }
     }
 #endif
     if (num > -32768 && num < 32768)
@@ -86,9 +99,12 @@ static inline int32_t stp_slope_q16_short(int32_t num, int32_t den)
 {
 #if STP_SLOPE_RECIP > 0
     uint32_t un = num < 0 ? 0u - (uint32_t)num : (uint32_t)num;
-    if (den >= 2 && den < STP_SLOPE_RECIP && un * (uint32_t)den < 65536u) {
-        uint32_t m = stp_slope_recip[den], q = un * (m >> 16) + ((un * (m & 0xFFFFu)) >> 16);
-        return num < 0 ? -(int32_t)q : (int32_t)q;
+    if (den >= 2 && den < STP_SLOPE_RECIP) {
+        uint32_t m = stp_slope_recip[den];
+        if (STP_SLOPE_RECIP_FITS(un, m)) {
+            uint32_t q = un * (m >> 16) + ((un * (m & 0xFFFFu)) >> 16);
+            return num < 0 ? -(int32_t)q : (int32_t)q;
+        }
     }
 #endif
 #if STP_UDIV32_LOOP || !STP_HAVE_MUL32

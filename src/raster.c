@@ -1051,15 +1051,15 @@ static int depth_terms_short(const depth_plane *pl, const stp_instr *v, int32_t 
 
 #if STP_WITH_ZBUFFER
 /* A flat triangle's depths down its rows (draw_triangle): short ones
- * (depth_terms_short) modulo 2^32 at device x = 0 of the row centre
- * (d_row32), per subpixel in x (gx) and per row (gy_row); else general Q12
- * ones at device x = 0 of the row centre (d_row). */
+ * (depth_terms_short) modulo 2^32 at pixel 0's centre on the row centre
+ * (d_row32), per pixel in x (gx_pixel) and per row (gy_row); else general
+ * Q12 ones at device x = 0 of the row centre (d_row). */
 typedef struct tri_depth {
     int64_t d_row;
 #if STP_NARROW_FORMS
     int64_t d_step; /* d_row's change a row (general ones) */
 #endif
-    uint32_t d_row32, gx, gy_row;
+    uint32_t d_row32, gx_pixel, gy_row;
     int short_depth;
 } tri_depth;
 
@@ -1080,16 +1080,17 @@ STP_HOT_INLINE void tri_depth_start(tri_depth *td, const depth_plane *pl, const 
     /* (64-bit hosts: 64-bit depths cost what 32-bit ones do) */
     td->short_depth = !STP_WIDE_ARITH && (made == PLANE_SHORT || depth_terms_short(pl, v, y_extent));
     if (td->short_depth) {
-        td->gx = (uint32_t)pl->ddx;
+        td->gx_pixel = (uint32_t)pl->ddx << SUB;
         td->gy_row = (uint32_t)pl->ddy << SUB;
-        td->d_row32 = (uint32_t)pl->dc - td->gx * (uint32_t)pl->xc + (uint32_t)pl->ddy * (uint32_t)(yc - pl->yc);
+        td->d_row32 = (uint32_t)pl->dc + (uint32_t)pl->ddx * (uint32_t)(HALF_PIXEL - pl->xc) +
+                      (uint32_t)pl->ddy * (uint32_t)(yc - pl->yc);
         td->d_row = 0; /* unused: set for the compiler's flow analysis */
     } else {
         td->d_row = pl->dc - mul_wide(pl->ddx, pl->xc) + mul_wide(pl->ddy, yc - pl->yc);
 #if STP_NARROW_FORMS
         td->d_step = pl->ddy * (1 << SUB);
 #endif
-        td->d_row32 = td->gx = td->gy_row = 0; /* unused, likewise */
+        td->d_row32 = td->gx_pixel = td->gy_row = 0; /* unused, likewise */
     }
 }
 
@@ -1148,13 +1149,15 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
     uint8_t page_bit = pages && tr ? tr->page_bit : 0;
     if (td->short_depth) {
         /* the depths at the span's first and last pixel centres, modulo 2^32 */
-        uint32_t d = td->d_row32 + td->gx * ((p1 << SUB) + HALF_PIXEL), d_end = d + (td->gx << SUB) * (p2 - p1);
+        uint32_t d = td->d_row32 + td->gx_pixel * p1, d_end = td->d_row32 + td->gx_pixel * p2;
         const uint32_t depths = (uint32_t)(DEPTH_Q12_END - DEPTH_Q12_MIN);
         if (tr && d - (uint32_t)DEPTH_Q12_MIN < depths && d_end - (uint32_t)DEPTH_Q12_MIN < depths)
-            /* 1..65535 at both ends; two pixel centres 16 apart lie
-             * within the x extent: 16 |ddx| < 2^29 */
+            /* 1..65535 at both ends; the step a pixel is added only
+             * where the span has two (span_z_direct), whose centres 16
+             * apart lie within the x extent: 16 |ddx| < 2^29 (from_twos
+             * maps every other value too: no test for one pixel) */
             span_z_direct(tr->z, tr->band, page_bit, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
-                          p2 > p1 ? from_twos(td->gx << SUB) : 0);
+                          from_twos(td->gx_pixel));
         else
             put_span_z(fr, row, p1, p2, style, from_twos(d), pl->ddx * (1 << SUB), 0, 0, 0, t, tr != 0);
     } else {
