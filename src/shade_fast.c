@@ -1531,7 +1531,7 @@ STP_FACE_BODY stp_fix face_compact(const stp_shade_fast *s, const int16_t normal
  * lit face takes the exact route (each entry's first test) */
 #define FACE_EXACT_ALWAYS(s) ((s)->exact_always && (s)->exact && (s)->count != 0)
 #endif
-STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int point_big,
+STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3], const stp_vec3 *point, int point_big,
                                 int near)
 {
     stp_shade_fast_dir e_local;
@@ -1543,7 +1543,7 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
     uint32_t inv_ne_q26 = 0;
 #if STP_SHADE_COMPACT
     if (FACE_COMPACT(s))
-        return face_compact(s, normal, point, point_big, near);
+        return face_compact(s, normal, *point, point_big, near);
 #endif
     if (s->count == 0)
         return s->ambient_shade;
@@ -1552,11 +1552,11 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
      * or a big or parallel eye needs it (kept in this function: as a
      * helper writing through pointers it cost an AVR image 510 B) */
     if (near || (!s->parallel && !s->specular && !(s->eye_big | point_big))) {
-        if (!faces_point(normal, &s->eye, &point)) /* diffuse only: E matters only through N.E's sign */
+        if (!faces_point(normal, &s->eye, point)) /* diffuse only: E matters only through N.E's sign */
             return s->ambient_shade;
     } else {
         if (!s->parallel) {
-            if (!dir_make(&e_local, &s->eye, &point, s->eye_big | point_big, EYE_NEEDS_R(s)))
+            if (!dir_make(&e_local, &s->eye, point, s->eye_big | point_big, EYE_NEEDS_R(s)))
                 return s->ambient_shade; /* the eye on the face */
             e = &e_local;
         }
@@ -1571,18 +1571,18 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
         if (n_dot_e <= 0)
             return s->ambient_shade;
         if (below_floor(s, n_dot_e))
-            return s->exact(s, normal, point);
+            return s->exact(s, normal, *point);
         inv_ne = recip_cos((uint32_t)n_dot_e, &inv_ne_q26);
     }
 #endif
     for (j = 0; j < s->count; j++) {
-        int32_t share = light_share(s, j, normal, &point, point_big, near, nd, e, n_dot_e, inv_ne, inv_ne_q26);
+        int32_t share = light_share(s, j, normal, point, point_big, near, nd, e, n_dot_e, inv_ne, inv_ne_q26);
         if (share > 0) {
             sum += share; /* GRAZE_EXACT too: at most 2^29 + 2^30 + 1 */
             if (sum >= SUM_ONE) {
 #if STP_WITH_SPECULAR
                 if (!near && share == GRAZE_EXACT) /* near: no highlight */
-                    return s->exact(s, normal, point);
+                    return s->exact(s, normal, *point);
 #endif
                 return ONE; /* every later share is >= 0 */
             }
@@ -1607,7 +1607,7 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     if (FACE_EXACT_ALWAYS(s))
         return s->exact(s, normal, point);
 #endif
-    return face_body(s, normal, point, is_big(point), 0);
+    return face_body(s, normal, &point, is_big(point), 0);
 }
 
 #if !STP_WIDE_ARITH
@@ -1617,7 +1617,7 @@ stp_fix stp_shade_fast_face_near(const stp_shade_fast *s, const int16_t normal[3
     if (FACE_EXACT_ALWAYS(s))
         return s->exact(s, normal, point);
 #endif
-    return face_body(s, normal, point, 0, 1);
+    return face_body(s, normal, &point, 0, 1);
 }
 #endif
 
