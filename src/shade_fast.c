@@ -637,24 +637,8 @@ static uint32_t fresnel_q16(const stp_shade_fast *s, uint32_t c, int32_t e_dot_l
  * y = 2^31/m (recip16), D = y^2 2^(-30 - 2n).  0 when x >= 2^31 (D < 2^-30). */
 static uint32_t gloss_q30(const stp_shade_fast *s, uint32_t omx)
 {
-    uint32_t x, t, y;
+    uint32_t x = stp_umulhi32_approx(omx << 2, s->inv_gloss_q16), t, y;
     int n;
-#if STP_HAVE_MUL32 && !STP_HAVE_MUL64 && !defined(__OPTIMIZE_SIZE__)
-    /* stp_umulhi32_approx(omx << 2, 1/k) written out (ARMv6-M's form), so
-     * that k > 1 (1/k below 2^16, the usual gloss) leaves its one
-     * non-zero product: then x < 2^16, and t = 2^16 + x has n = 1.
-     * Not on 8-bit cores (AVR's face shade 36 074 -> 36 100 cycles) nor
-     * in builds for size (18 bytes). */
-    uint32_t ah = omx >> 14, bh = s->inv_gloss_q16 >> 16; /* omx < 2^30: ah < 2^16 */
-    x = (ah * (s->inv_gloss_q16 & 0xFFFFu)) >> 16;
-    if (bh == 0) {
-        y = recip16_hot((((uint32_t)1 << 16) + x) >> 1);
-        return y > 0xFFFFu ? (uint32_t)1 << 30 : (y * y) >> 2;
-    }
-    x += ah * bh + ((((omx << 2) & 0xFFFFu) * bh) >> 16);
-#else
-    x = stp_umulhi32_approx(omx << 2, s->inv_gloss_q16);
-#endif
     if (x >= 0x80000000u)
         return 0;
     t = ((uint32_t)1 << 16) + x;
