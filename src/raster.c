@@ -1536,6 +1536,25 @@ static void draw_line(const frame *fr, const stp_instr *a, const stp_instr *b, p
 }
 #endif
 
+/* The display file's line instruction in (any other op: nothing) with the
+ * line style and pen (the line's start) it changes. */
+static inline void replay_line_op(const frame *fr, const stp_instr *in, const stp_instr **pen, paint *line_style)
+{
+    if (in->op == STP_OP_LINE_STYLE) {
+        *line_style = in->x;
+    } else if (in->op == STP_OP_MOVE) {
+        *pen = in;
+    } else if (in->op == STP_OP_LINE) {
+#if STP_WITH_LINES
+        if (*pen)
+            draw_line(fr, *pen, in, *line_style);
+#else
+        (void)fr;
+#endif
+        *pen = in;
+    }
+}
+
 /* Walk the visible segments in display order: polygons (unless skip_polygons)
  * and lines, each with the style in force. */
 /* pass: which polygons to draw: 0 all, 1 opaque only, 2 transparent only. */
@@ -1549,44 +1568,44 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
         const stp_segment *seg = &r->segments[s];
         paint style = r->fill_style, line_style = r->fill_style;
         stp_fix t = 0;
-        const stp_instr *pen = 0;
-        uint32_t k;
-        /* whether this pass draws the polygons that follow (t as it stands) */
-        int draw = !skip_polygons && pass != 2;
+        const stp_instr *pen = 0; /* a line's start */
+        /* locals, not r's fields: the draws store through pointers that
+         * may alias r, which would reload them every record */
+        const stp_instr *in = &r->df[seg->start];
+        uint32_t k, end = seg->end;
+        /* whether this pass draws the polygons that follow (t as it
+         * stands); tri: and flat narrow triangles by draw_triangle */
+        int draw = !skip_polygons && pass != 2, tri = draw && triangle_path;
         if (!seg->used || !seg->visible)
             continue;
-        for (k = seg->start; k < seg->end; k++) {
-            const stp_instr *in = &r->df[k];
-            if (in->op >= 3) {
-                if (!draw)
-                    ;
+        for (k = seg->start; k < end; k++, in++) {
+            int32_t op = in->op;
 #if STP_WITH_TRIANGLE_PATH
-                else if (in->op == 3 && triangle_path && !polygon_smooth(in) && STP_TRIANGLE_NARROW(in))
-                    draw_triangle(fr, k, in, style, use_z, t, ordinal);
+            if (op == 3 && tri && !polygon_smooth(in) && STP_TRIANGLE_NARROW(in)) {
+                /* the common record first, its advance a constant */
+                draw_triangle(fr, k, in, style, use_z, t, ordinal);
+                ordinal++;
+                k += 2;
+                in += 2;
+            } else
 #endif
-                else
+            if (op >= 3) {
+                if (draw)
                     draw_polygon(fr, k, style, use_z, t, ordinal);
                 ordinal++;
-                k += (uint32_t)in->op - 1;
-            } else if (in->op == STP_OP_TRANSPARENCY) {
+                k += (uint32_t)op - 1;
+                in += op - 1;
+            } else if (op == STP_OP_TRANSPARENCY) {
                 t = in->x;
                 draw = !skip_polygons && (pass == 0 || (pass == 1) == (t == 0));
-            } else if (in->op == STP_OP_SHADE) {
+                tri = draw && triangle_path;
+                (void)tri; /* read only with the triangle path compiled in */
+            } else if (op == STP_OP_SHADE) {
                 style = paint_of(fr, in);
-            } else if (in->op == STP_OP_LINE_STYLE) {
-                line_style = in->x;
-            } else if (in->op == STP_OP_MOVE) {
-                pen = in;
-            } else if (in->op == STP_OP_LINE) {
-#if STP_WITH_LINES
-                if (pen)
-                    draw_line(fr, pen, in, line_style);
-#endif
-                pen = in;
+            } else {
+                replay_line_op(fr, in, &pen, &line_style);
             }
-            (void)pen; /* read only when lines are compiled in */
         }
-        (void)line_style;
     }
 }
 
@@ -1628,24 +1647,54 @@ static void sort_entries(stp_sort_entry *e, size_t n)
 #endif
 
 /* The extent of the visible polygons' vertices: device x and y (Q27.4)
- * and depth keys. */
+ * and depth keys, each as its least value and its width (the greatest
+ * minus the least, modulo 2^32: the int32 range's width fits a uint32).
+ * One unsigned test, v - lo > width, finds a value outside [lo, lo +
+ * width]: a mesh's vertices mostly fall inside, and the test costs one
+ * compare-and-branch where a minimum and a maximum take two. */
 typedef struct extent {
-    int32_t x_lo, x_hi, y_lo, y_hi, key_min, key_max;
+    int32_t x_lo, y_lo, key_min;
+    uint32_t x_width, y_width, key_width;
 } extent;
 
-/* Widen ex by the n vertices of the polygon in[0..n-1]. */
-static inline void extent_add(extent *ex, const stp_instr *in, int32_t n)
+/* lo and width widened to include v; made v alone when first (the
+ * frame's first vertex: lo and width are 0 before it, which is already v
+ * alone when v is 0, the one value the test finds inside). */
+static inline void extent_widen(int32_t *lo, uint32_t *width, int32_t v, int first)
+{
+    uint32_t d = (uint32_t)v - (uint32_t)*lo;
+    if (d > *width) {
+        if (first) {
+            *width = 0;
+            *lo = v;
+        } else if (v < *lo) {
+            *width += (uint32_t)*lo - (uint32_t)v;
+            *lo = v;
+        } else {
+            *width = d;
+        }
+    }
+}
+
+/* Widen ex by vertex v, the frame's first when first. */
+static inline void extent_vertex(extent *ex, const stp_instr *v, int first)
+{
+    extent_widen(&ex->key_min, &ex->key_width, v->z, first);
+    extent_widen(&ex->x_lo, &ex->x_width, v->x, first);
+    extent_widen(&ex->y_lo, &ex->y_width, v->y, first);
+}
+
+/* Widen ex by the n >= 3 vertices of the polygon in[0..n-1], the frame's
+ * first polygon when count is 0.  A triangle's three without a loop:
+ * ARMv6-M has too few registers for the extent, a counter and a limit. */
+static inline void extent_add(extent *ex, const stp_instr *in, int32_t n, uint32_t count)
 {
     int32_t i;
-    for (i = 0; i < n; i++) {
-        int32_t z = in[i].z, x = in[i].x, y = in[i].y;
-        ex->key_min = z < ex->key_min ? z : ex->key_min;
-        ex->key_max = z > ex->key_max ? z : ex->key_max;
-        ex->x_lo = x < ex->x_lo ? x : ex->x_lo;
-        ex->x_hi = x > ex->x_hi ? x : ex->x_hi;
-        ex->y_lo = y < ex->y_lo ? y : ex->y_lo;
-        ex->y_hi = y > ex->y_hi ? y : ex->y_hi;
-    }
+    extent_vertex(ex, &in[0], count == 0);
+    extent_vertex(ex, &in[1], 0);
+    extent_vertex(ex, &in[2], 0);
+    for (i = 3; i < n; i++)
+        extent_vertex(ex, &in[i], 0);
 }
 
 /* The painter's entry of the polygon df[k] (n vertices in[0..n-1]): keyed
@@ -1667,16 +1716,18 @@ static inline void sort_entry_set(stp_sort_entry *e, uint32_t k, const stp_instr
  * vertices' extent (coordinates are >= 0: project() clamps them). */
 static void frame_extent(frame *fr, uint32_t count, const extent *ex)
 {
-    fr->key_min = ex->key_min;
-    fr->key_max = ex->key_max;
+    fr->key_min = INT32_MAX;
+    fr->key_max = INT32_MIN;
     fr->x_min = fr->y_min = 1;
     fr->x_max = fr->y_max = 0;
     if (count == 0)
         return;
+    fr->key_min = ex->key_min;
+    fr->key_max = (int32_t)((uint32_t)ex->key_min + ex->key_width); /* within [key_min, INT32_MAX] */
     fr->x_min = (uint32_t)ex->x_lo >> SUB;
-    fr->x_max = (uint32_t)ex->x_hi >> SUB;
+    fr->x_max = ((uint32_t)ex->x_lo + ex->x_width) >> SUB;
     fr->y_min = (uint32_t)ex->y_lo >> SUB;
-    fr->y_max = (uint32_t)ex->y_hi >> SUB;
+    fr->y_max = ((uint32_t)ex->y_lo + ex->y_width) >> SUB;
     if (fr->x_max > fr->r->width - 1)
         fr->x_max = fr->r->width - 1;
     if (fr->y_max > fr->r->height - 1)
@@ -1688,35 +1739,41 @@ static void frame_extent(frame *fr, uint32_t count, const extent *ex)
 static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
 {
     stp_renderer *r = fr->r;
-    uint32_t count = 0, k;
+    const stp_instr *df = r->df;
+    uint32_t count = 0, t_count = 0; /* t_count: the count when t was set */
     int s;
-    /* a local, not fr's fields: a store through fr may alias the display file */
-    extent ex = {INT32_MAX, INT32_MIN, INT32_MAX, INT32_MIN, INT32_MAX, INT32_MIN};
+    /* a local, not fr's fields: a store through fr may alias the display
+     * file; 0 until the first polygon's first vertex (extent_widen) */
+    extent ex = {0, 0, 0, 0, 0, 0};
     int second_pass = 0;
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
+        const stp_instr *in, *end = df + seg->end;
         paint style = r->fill_style;
         stp_fix t = 0;
         if (!seg->used || !seg->visible)
             continue;
-        for (k = seg->start; k < seg->end; k++) {
-            const stp_instr *in = &r->df[k];
+        for (in = df + seg->start; in < end; in++) {
             int32_t op = in->op;
             if (op >= 3) {
-                extent_add(&ex, in, op);
-                second_pass |= t > 0;
+                extent_add(&ex, in, op, count);
                 if (sort)
-                    sort_entry_set(&sort[count], k, in, op, style, t);
+                    sort_entry_set(&sort[count], (uint32_t)(in - df), in, op, style, t);
                 count++;
-                k += (uint32_t)op - 1;
+                in += op - 1;
             } else if (op == STP_OP_SHADE) {
                 style = paint_of(fr, in);
             } else if (op == STP_OP_TRANSPARENCY) {
+                /* a second pass for the polygons drawn since under t > 0:
+                 * a test per change of t, not per polygon */
+                second_pass |= t > 0 && count != t_count;
                 t = in->x;
+                t_count = count;
             } else if (op == STP_OP_LINE) {
                 second_pass = 1;
             }
         }
+        second_pass |= t > 0 && count != t_count;
     }
     fr->second_pass = second_pass;
     frame_extent(fr, count, &ex);
