@@ -759,23 +759,23 @@ static int32_t depth_q12_made(frame *fr, int32_t key)
 /* its slot of the kept mappings: the key's low bits, mixed */
 #define KEY_SLOT(key) ((((uint32_t)(key)) ^ ((uint32_t)(key) >> 8)) & (KEY_CACHE - 1))
 
-static int32_t depth_q12_keep(frame *fr, int32_t key)
+static int32_t depth_q12_keep(frame *fr, key_mapping *m, int32_t key)
 {
-    key_mapping *m = &fr->cached[KEY_SLOT(key)];
     m->key = key;
     m->q12 = depth_q12_made(fr, key);
     return m->q12;
 }
 #endif
 
-/* a key's Q12 depth: kept, or made (and kept) */
+/* a key's Q12 depth: kept, or made (and kept); a hit (three in four on a
+ * mesh) falls through, a miss branches to its call */
 static inline int32_t depth_q12(frame *fr, int32_t key)
 {
 #if KEY_CACHE > 0
-    const key_mapping *m = &fr->cached[KEY_SLOT(key)];
-    if (m->key == key) /* every slot holds a true mapping (render_prepare_fill) */
-        return m->q12;
-    return depth_q12_keep(fr, key);
+    key_mapping *m = &fr->cached[KEY_SLOT(key)];
+    if (STP_UNLIKELY(m->key != key)) /* every slot holds a true mapping (render_prepare_fill) */
+        return depth_q12_keep(fr, m, key);
+    return m->q12;
 #else
     return depth_q12_made(fr, key);
 #endif
@@ -817,18 +817,23 @@ static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, 
  * trunc(-a 4096 / c) and trunc(-b 4096 / c) for |a|, |b| < 2^19 and c !=
  * 0: quotients of 32-bit magnitudes (n = |a| 4096 < 2^31, so they fit
  * int32), both from one reciprocal r = floor((2^32 - 1) / |c|)
- * (stp_quotient_q12_by_recip): a 32-bit division is a ~130-instruction library
- * call on ARMv6-M.  Returns 1 when the triangle's depth terms are short
- * (depth_terms_short) by the quotients' magnitudes and extents at least
- * its own (x_ext, y_ext): depth_term_short of a g within int32 tests |g|
- * < 2^29, then depth_magnitude_short(|g|), which a larger extent passes
- * only where the true one does; 0: not known. */
+ * (stp_quotient_q12_by_recip; on ARMv6-M r without a division,
+ * stp_recip_u32: the library's is ~150 instructions).  Returns 1 when the
+ * triangle's depth terms are short (depth_terms_short) by the quotients'
+ * magnitudes and extents at least its own (x_ext, y_ext): depth_term_short
+ * of a g within int32 tests |g| < 2^29, then depth_magnitude_short(|g|),
+ * which a larger extent passes only where the true one does; 0: not
+ * known. */
 static int gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t *gb, int32_t x_ext, int32_t y_ext)
 {
     uint32_t ua = (a < 0 ? 0u - (uint32_t)a : (uint32_t)a) << 12, ub = (b < 0 ? 0u - (uint32_t)b : (uint32_t)b) << 12,
              uc = c < 0 ? 0u - (uint32_t)c : (uint32_t)c, qa = ua, qb = ub;
     if (uc > 1) {
+#if STP_RECIP_U32
+        uint32_t r = stp_recip_u32(uc);
+#else
         uint32_t r = 0xFFFFFFFFu / uc;
+#endif
         qa = stp_quotient_q12_by_recip(ua, uc, r);
         qb = stp_quotient_q12_by_recip(ub, uc, r);
     }

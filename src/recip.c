@@ -34,7 +34,8 @@ uint32_t stp_recip32(uint32_t d)
 /* RECIP_SEED[i] = round(2^24 / (257 + 2 i)): 2^47 / m at the middle of the
  * i-th of 128 equal intervals of m in [2^31, 2^32) (m's bits 30..24 are i).
  * Relative error against 2^47 / m anywhere in the interval: below
- * 1/514 (2^-9.0) plus the rounding's 2^-16.  Values in [32832, 65281]. */
+ * 1/(257 + 2 i) plus the rounding's 2^-17, under 1/257 everywhere (at an
+ * interval's ends; half that in its middle).  Values in [32832, 65281]. */
 static const uint16_t RECIP_SEED[128] STP_TABLE = {
     65281u, 64777u, 64281u, 63792u, 63310u, 62836u, 62369u, 61909u,
     61455u, 61008u, 60568u, 60133u, 59705u, 59283u, 58867u, 58457u,
@@ -63,7 +64,7 @@ uint32_t stp_recip32_estimate(uint32_t d)
     y0 = STP_TABLE_U16(&RECIP_SEED[(d >> 24) & 127u]); /* ~ 2^47 / d */
     /* Newton step 1 in 32 bits: y1 = y0 2^16 + y0 (2^47 - d y0) / 2^31.
      * u = (2^47 - d y0) / 2^16 (mod 2^32; |u| < 2^23 as a signed value:
-     * the seed's error is below 2^-8.9); at / 2^8 keeps 15 bits of it, so
+     * the seed's error is below 1/257); at / 2^8 keeps 15 bits of it, so
      * y0 (at >> 8) < 2^31 */
     u = 0x80000000u - dh * y0 - ((dl * y0) >> 16);
     at = u >= 0x80000000u ? 0u - u : u;
@@ -73,7 +74,7 @@ uint32_t stp_recip32_estimate(uint32_t d)
         y1 -= corr;
     else
         y1 = corr > 0xFFFFFFFFu - y1 ? 0xFFFFFFFFu : y1 + corr;
-    /* y1 ~ 2^63 / d within 2^-17.  Step 2 straight into v's scale:
+    /* y1 ~ 2^63 / d within 2^-16.  Step 2 straight into v's scale:
      * v ~ 2 y1 - 2^32 + y1 e / 2^62 with the exact error e = 2^63 - d y1
      * (|e| < 2^47, so e / 2^15 fits 32 bits), the product's high word from
      * three partial products (stp_umulhi32_approx, fix_private.h).
@@ -98,6 +99,61 @@ uint32_t stp_recip32_estimate(uint32_t d)
     }
     return v;
 }
+
+#if STP_RECIP_U32
+/* y ~ 2^63 / dn for dn = d 2^s in [2^31, 2^32): with the seed's relative
+ * error e = 1 - dn y0 / 2^47 (|e| < 1/257), 2^63 / dn = y0 2^16 / (1 - e)
+ * = y0 2^16 (1 + e + e^2 + ...), taken to e^2: c1 = y0 2^16 e from u ~ e
+ * 2^30 (u's terms below 2^31, so int32 throughout) and c2 = c1 e, each
+ * from factors below 2^16 (products below 2^31).  The dropped terms and
+ * the floors are under 2^10 either way; u less 256 (y less 512 to 1024)
+ * puts y below 2^63 / dn by 493 to 1791 (over all 2^31 dn), so y < 2^63 /
+ * dn and q = floor(y / 2^t), t = 31 - s, is below 2^32 / d (q d < 2^32, r
+ * = 2^32 - 1 - q d exact) and short of the floor Q by less than 2^11 /
+ * 2^t + 1: by at most 1 for t >= 11.  For t <= 10 (d < 2^11) r < 2^11 d
+ * 2^-t + 2 d < 2^13, and dq = floor(r floor(y / 2^16) / 2^(t + 16)) is
+ * floor(r / d) or one short (r / d < 2^11, and floor(y / 2^16) is below
+ * 2^47 / dn by less than 2^-14.9 of it): either way one correction ends
+ * it. */
+uint32_t stp_recip_u32(uint32_t d)
+{
+    uint32_t dn = d, y0, y, q, r;
+    int32_t u, c1;
+    int t = 31; /* 31 - s for dn = d 2^s in [2^31, 2^32) */
+    if ((dn >> 16) == 0) {
+        dn <<= 16;
+        t -= 16;
+    }
+    if ((dn >> 24) == 0) {
+        dn <<= 8;
+        t -= 8;
+    }
+    if ((dn >> 28) == 0) {
+        dn <<= 4;
+        t -= 4;
+    }
+    if ((dn >> 30) == 0) {
+        dn <<= 2;
+        t -= 2;
+    }
+    if ((dn >> 31) == 0) {
+        dn <<= 1;
+        t -= 1;
+    }
+    y0 = STP_TABLE_U16(&RECIP_SEED[(dn >> 24) & 127u]);
+    u = (int32_t)(0x40000000u - 256u) - (int32_t)(((dn >> 16) * y0) >> 1) - (int32_t)(((dn & 0xFFFFu) * y0) >> 17);
+    c1 = stp_asr32((int32_t)y0 * stp_asr32(u, 7), 7);
+    y = (y0 << 16) + (uint32_t)(c1 + stp_asr32(stp_asr32(c1, 8) * stp_asr32(u, 7), 15));
+    q = y >> t;
+    r = ~(q * d);
+    if (t < 11) {
+        uint32_t dq = (r * (y >> 16)) >> (t + 16);
+        q += dq;
+        r -= dq * d;
+    }
+    return r >= d ? q + 1u : q;
+}
+#endif
 
 uint32_t stp_recip32(uint32_t d)
 {

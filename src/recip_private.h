@@ -16,7 +16,7 @@
 /* The reciprocal of d in [2^31, 2^32): floor((2^64 - 1) / d) - 2^32, in
  * [0, 2^32), so 2^32 + result approximates 2^64 / d to within one unit.
  * Exact (the floor, not an estimate): a 128-entry table of 16-bit seeds
- * (relative error below 2^-8.9), two Newton steps in 32-bit arithmetic
+ * (relative error below 1/257), two Newton steps in 32-bit arithmetic
  * (products from 16-bit halves on 32-bit targets) and a remainder
  * correction.  d outside the range returns 0. */
 uint32_t stp_recip32(uint32_t d);
@@ -27,6 +27,23 @@ uint32_t stp_recip32(uint32_t d);
  * comparison of 64-bit values fewer), for a quotient that corrects its
  * own estimate (project_private.h).  d outside [2^31, 2^32) returns 0. */
 uint32_t stp_recip32_estimate(uint32_t d);
+#endif
+
+/* floor((2^32 - 1) / d) for every d >= 1, exact (checked against C's
+ * division for all 2^32 - 1 of them), without a divide instruction: d
+ * normalised, the seed and a Newton step to the square of its error, one
+ * remainder step for d < 2^11 and one correction (recip.c).  Compiled
+ * where a 32-bit division is a library call and a build for speed has the
+ * 32-bit multiply (ARMv6-M at -O2: ~60 instructions against __udivsi3's
+ * ~150; STP_RECIP_U32). */
+#if STP_NARROW_FORMS && !STP_HAVE_DIV
+#define STP_RECIP_U32 1
+#if defined(__GNUC__)
+__attribute__((const)) /* a value of d alone (its seeds are constants): a caller's memory stays known */
+#endif
+uint32_t stp_recip_u32(uint32_t d);
+#else
+#define STP_RECIP_U32 0
 #endif
 
 /* floor(n / d) for d > 0, any n: exact, without a divide instruction:

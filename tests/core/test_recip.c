@@ -200,6 +200,47 @@ static void test_prepared_divisor(void **state)
     }
 }
 
+#if STP_RECIP_U32
+/* stp_recip_u32 against C's 32-bit division (the whole range [1, 2^32)
+ * was checked once off line; here a sample heavy at its edges) */
+static void check_recip_u32(uint32_t d)
+{
+    uint32_t got = stp_recip_u32(d), want = 0xFFFFFFFFu / d;
+    if (got != want)
+        fail_msg("stp_recip_u32(%lu) = %lu, floor((2^32 - 1) / d) = %lu", (unsigned long)d, (unsigned long)got,
+                 (unsigned long)want);
+}
+
+static void test_recip_u32_edges(void **state)
+{
+    uint32_t d, i;
+    int s;
+    (void)state;
+    /* every divisor below 2^17: every normalisation shift from 15 up,
+     * the remainder step's whole range (shifts above 20) among them */
+    for (d = 1; d < 0x20000u; d++)
+        check_recip_u32(d);
+    /* for every shift, the ends of every seed interval (the seed's worst
+     * error) and their neighbours, and the middle */
+    for (s = 0; s < 32; s++)
+        for (i = 0; i < 128; i++) {
+            uint32_t lo = (0x80000000u + (i << 24)) >> s, hi = (0x80000000u + (i << 24) + 0xFFFFFFu) >> s;
+            check_recip_u32(lo);
+            check_recip_u32(lo + 1u);
+            check_recip_u32(hi);
+            if (hi > 1u)
+                check_recip_u32(hi - 1u);
+            check_recip_u32((0x80800000u + (i << 24)) >> s);
+        }
+    check_recip_u32(0xFFFFFFFFu);
+    /* random divisors of every length */
+    for (i = 0; i < 2000000u; i++) {
+        d = (uint32_t)(next_random() >> 32) >> (i % 32u);
+        check_recip_u32(d != 0 ? d : 1u);
+    }
+}
+#endif
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -208,6 +249,9 @@ int main(void)
         cmocka_unit_test(test_udiv_edges),
         cmocka_unit_test(test_div_signs),
         cmocka_unit_test(test_prepared_divisor),
+#if STP_RECIP_U32
+        cmocka_unit_test(test_recip_u32_edges),
+#endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
