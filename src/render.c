@@ -1562,8 +1562,6 @@ STP_HOT_INLINE const stp_model_frame *model_route(stp_renderer *r)
 STP_HOT_INLINE int small_triangle_side(const stp_model_frame *f, const stp_vec3 *v, int32_t c[3])
 {
     const uint32_t edge = ((uint32_t)1 << 15) - 1u, near = (uint32_t)1 << 29;
-    uint32_t dx = (uint32_t)f->eye[0] - (uint32_t)v[0].x, dy = (uint32_t)f->eye[1] - (uint32_t)v[0].y,
-             dz = (uint32_t)f->eye[2] - (uint32_t)v[0].z;
     /* the edges plus 2^15 - 1: each below 2^16 when in range */
     uint32_t x1 = (uint32_t)v[1].x - (uint32_t)v[0].x + edge, y1 = (uint32_t)v[1].y - (uint32_t)v[0].y + edge,
              z1 = (uint32_t)v[1].z - (uint32_t)v[0].z + edge;
@@ -1581,7 +1579,9 @@ STP_HOT_INLINE int small_triangle_side(const stp_model_frame *f, const stp_vec3 
     c[0] = ay * bz - az * by;
     c[1] = az * bx - ax * bz;
     c[2] = ax * by - ay * bx;
-    return stp_render_certain_side_int32(c[0], c[1], c[2], (int32_t)dx, (int32_t)dy, (int32_t)dz, near);
+    return stp_render_certain_side_int32(c[0], c[1], c[2], (int32_t)((uint32_t)f->eye[0] - (uint32_t)v[0].x),
+                                         (int32_t)((uint32_t)f->eye[1] - (uint32_t)v[0].y),
+                                         (int32_t)((uint32_t)f->eye[2] - (uint32_t)v[0].z), near);
 }
 #endif
 
