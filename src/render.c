@@ -1550,9 +1550,10 @@ STP_HOT_INLINE const stp_model_frame *model_route(stp_renderer *r)
 #if STP_NARROW_FORMS
 /* The side stp_render_certain_side finds for triangle v, in fewer steps
  * for a small triangle near the eye (the usual): edge components in
- * [1 - 2^15, 2^15] and d = eye - v0 in [-2^29, 2^29) (formed mod 2^32,
- * exact: |eye| < 2^30, so a wrapped d would be 2^31 + 2^30 away, and v0
- * within 2^31 - 2^29 keeps the edges unwrapped too).  The cross product c
+ * [1 - 2^15, 2^15] and d = eye - v0 below 2^29 (formed mod 2^32, tested by
+ * stp_render_certain_side_int32 on the magnitudes it forms anyway: |eye| <
+ * 2^30, so a d that wraps is at least 2^30 from 0; v0 then within 2^30 +
+ * 2^29 keeps the edges unwrapped too).  The cross product c
  * (each product in [2^15 - 2^30, 2^30], each component within 2^31 -
  * 2^15) is then exact in int32: stp_render_triangle_cross's value, and
  * stp_render_certain_side's 32-bit test decides the side of the rounded
@@ -1561,15 +1562,13 @@ STP_HOT_INLINE const stp_model_frame *model_route(stp_renderer *r)
 STP_HOT_INLINE int small_triangle_side(const stp_model_frame *f, const stp_vec3 *v, int32_t c[3])
 {
     const uint32_t edge = ((uint32_t)1 << 15) - 1u, near = (uint32_t)1 << 29;
-    uint32_t dx = (uint32_t)f->eye[0] - (uint32_t)v[0].x, dy = (uint32_t)f->eye[1] - (uint32_t)v[0].y,
-             dz = (uint32_t)f->eye[2] - (uint32_t)v[0].z;
     /* the edges plus 2^15 - 1: each below 2^16 when in range */
     uint32_t x1 = (uint32_t)v[1].x - (uint32_t)v[0].x + edge, y1 = (uint32_t)v[1].y - (uint32_t)v[0].y + edge,
              z1 = (uint32_t)v[1].z - (uint32_t)v[0].z + edge;
     uint32_t x2 = (uint32_t)v[2].x - (uint32_t)v[0].x + edge, y2 = (uint32_t)v[2].y - (uint32_t)v[0].y + edge,
              z2 = (uint32_t)v[2].z - (uint32_t)v[0].z + edge;
-    int32_t ax, ay, az, bx, by, bz, ex, ey, ez;
-    if ((x1 | y1 | z1 | x2 | y2 | z2) > 0xFFFFu || ((dx + near) | (dy + near) | (dz + near)) >= 2 * near)
+    int32_t ax, ay, az, bx, by, bz;
+    if ((x1 | y1 | z1 | x2 | y2 | z2) > 0xFFFFu)
         return 0;
     ax = (int32_t)x1 - (int32_t)edge;
     ay = (int32_t)y1 - (int32_t)edge;
@@ -1577,13 +1576,12 @@ STP_HOT_INLINE int small_triangle_side(const stp_model_frame *f, const stp_vec3 
     bx = (int32_t)x2 - (int32_t)edge;
     by = (int32_t)y2 - (int32_t)edge;
     bz = (int32_t)z2 - (int32_t)edge;
-    ex = (int32_t)(dx + near) - (int32_t)near;
-    ey = (int32_t)(dy + near) - (int32_t)near;
-    ez = (int32_t)(dz + near) - (int32_t)near;
     c[0] = ay * bz - az * by;
     c[1] = az * bx - ax * bz;
     c[2] = ax * by - ay * bx;
-    return stp_render_certain_side_int32(c[0], c[1], c[2], ex, ey, ez);
+    return stp_render_certain_side_int32(c[0], c[1], c[2], (int32_t)((uint32_t)f->eye[0] - (uint32_t)v[0].x),
+                                         (int32_t)((uint32_t)f->eye[1] - (uint32_t)v[0].y),
+                                         (int32_t)((uint32_t)f->eye[2] - (uint32_t)v[0].z), near);
 }
 #endif
 

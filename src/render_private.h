@@ -153,33 +153,44 @@ STP_HOT_INLINE int stp_render_face_side(const stp_model_frame *f, const int16_t 
  * |cs.ds| > cn + dn + 3 + (cn + 3)(dn + 3) / 2^13 (the quotient bounded
  * above by the shifted factors plus one, all below 2^10) gives the sign of
  * c.d and 2^13 |c.d| > |c|1 |d|1, the margin above.  1 or -1 when
- * certain, else 0 (the 64-bit test, with more bits, decides). */
+ * certain, else 0 (the 64-bit test, with more bits, decides); 0 too when
+ * some |d_i| >= d_limit (a power of two, at most 2^31): the callers' range
+ * test of d, from the magnitudes formed here anyway. */
 STP_HOT_INLINE int stp_render_certain_side_int32(int32_t cx, int32_t cy, int32_t cz, int32_t dx, int32_t dy,
-                                               int32_t dz)
+                                               int32_t dz, uint32_t d_limit)
 {
     uint32_t cm = stp_abs32(cx) | stp_abs32(cy) | stp_abs32(cz);
-    uint32_t dm = stp_abs32(dx) | stp_abs32(dy) | stp_abs32(dz), cn, dn;
+    uint32_t dm = stp_abs32(dx) | stp_abs32(dy) | stp_abs32(dz);
+    /* the bound below at its largest, cn = 3 2^14 and dn = 3 2^15 (the
+     * shifts make cm >> a < 2^14 and dm >> b < 2^15): a constant, fewer
+     * steps than the bound of these c and d, and within about four times
+     * it where both were cut (cm >> a >= 2^13, dm >> b >= 2^14): against
+     * |cs.ds| up to 3 2^29, few more faces are left to the caller's 64-bit
+     * test */
+    const uint32_t cn = 3u << 14, dn = 3u << 15;
+    if (dm >= d_limit)
+        return 0;
     /* the shifts max(0, bit length - 14 or 15), from the bits above */
     int a = stp_bit_length32(cm >> 14), b = stp_bit_length32(dm >> 15);
     int32_t dot = stp_asr32(cx, a) * stp_asr32(dx, b) + stp_asr32(cy, a) * stp_asr32(dy, b) +
                   stp_asr32(cz, a) * stp_asr32(dz, b);
-    cn = 3u * ((cm >> a) + 1u);
-    dn = 3u * ((dm >> b) + 1u);
     if (stp_abs32(dot) <= cn + dn + 3u + (((cn + 3u) >> 6) + 1u) * (((dn + 3u) >> 7) + 1u))
         return 0;
     return dot > 0 ? 1 : -1;
 }
 
-/* stp_render_certain_side_int32 for c below 2^31 and v0 within 2^30 (so
- * d = eye - v0 below 2^31: |eye| < 2^30, stp_model_frame); 0 outside. */
+/* stp_render_certain_side_int32 for c below 2^31 and d = eye - v0 below
+ * 2^30, else 0.  d is formed mod 2^32: |eye| < 2^30 (stp_model_frame), so
+ * an exact d is below 2^31 + 2^30 and one that wraps is at least 2^30 from
+ * 0; below 2^30 after the wrap, it is exact. */
 static inline int stp_render_certain_side32(const stp_model_frame *f, const int64_t c[3], stp_vec3 v0)
 {
-    const uint32_t lim = (uint32_t)1 << 30;
-    if (((stp_abs64u(c[0]) | stp_abs64u(c[1]) | stp_abs64u(c[2])) >> 31) != 0 ||
-        (((uint32_t)v0.x + lim) | ((uint32_t)v0.y + lim) | ((uint32_t)v0.z + lim)) >= 2 * lim)
+    if (((stp_abs64u(c[0]) | stp_abs64u(c[1]) | stp_abs64u(c[2])) >> 31) != 0)
         return 0;
-    return stp_render_certain_side_int32((int32_t)c[0], (int32_t)c[1], (int32_t)c[2], f->eye[0] - v0.x,
-                                         f->eye[1] - v0.y, f->eye[2] - v0.z);
+    return stp_render_certain_side_int32((int32_t)c[0], (int32_t)c[1], (int32_t)c[2],
+                                         (int32_t)((uint32_t)f->eye[0] - (uint32_t)v0.x),
+                                         (int32_t)((uint32_t)f->eye[1] - (uint32_t)v0.y),
+                                         (int32_t)((uint32_t)f->eye[2] - (uint32_t)v0.z), (uint32_t)1 << 30);
 }
 #endif
 
