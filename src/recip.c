@@ -120,6 +120,9 @@ uint32_t stp_recip_u32(uint32_t d)
     uint32_t dn = d, y0, y, q, r;
     int32_t u, c1;
     int t = 31; /* 31 - s for dn = d 2^s in [2^31, 2^32) */
+    /* normalised by five halving tests written out, which leave dn itself:
+     * through stp_bit_length32 (its table) the Cortex-M0+ torus took 2 840
+     * instructions more a frame, as a loop 13 840 more (not unrolled) */
     if ((dn >> 16) == 0) {
         dn <<= 16;
         t -= 16;
