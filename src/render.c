@@ -1695,10 +1695,12 @@ static int enter_model_triangle(stp_renderer *r, stp_entry *e, const stp_model_f
 }
 
 /* The front (or two-sided) flat polygon of enter_model_face with model
- * normal n and side: transformed, clipped, shaded and stored.  A call of
- * its own, so that a back face removed saves its registers' stores. */
-STP_NOINLINE int enter_model_front(stp_renderer *r, const stp_vec3 *vertices, int count,
-                                   const stp_model_frame *f, const int16_t n[3], int side)
+ * normal n and side: transformed, clipped, shaded and stored.  In line:
+ * the back-face test before it already saves every register it takes
+ * (measured, torus 128x64: host 0.995 -> 0.978 M instructions, Cortex-M0+
+ * 1 893 840 -> 1 880 160, against a call of its own). */
+STP_HOT_INLINE int enter_model_front(stp_renderer *r, const stp_vec3 *vertices, int count,
+                                     const stp_model_frame *f, const int16_t n[3], int side)
 {
     stp_entry e;
     int16_t nv[3];
