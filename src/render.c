@@ -1624,7 +1624,8 @@ STP_HOT_INLINE int model_normal_and_side(const stp_renderer *r, const stp_vec3 *
         if (sure < 0)
             return 0; /* a back face: not normalised */
         if (sure > 0) {
-            (void)stp_render_unit_q14(c[0], c[1], c[2], n);
+            /* stp_render_unit_q14's value from the int32 c */
+            (void)stp_unit_q14_from32(c[0], c[1], c[2], n);
             *side = 1;
             return 1;
         }
