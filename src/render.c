@@ -1781,10 +1781,11 @@ STP_NOINLINE int enter_view_polygon(stp_renderer *r, const stp_vec3 *vertices, i
 }
 
 /* DISPLAY-FILE-ENTER of a polygon: the checks, then the model route
- * (enter_model_face) or the view route. */
-static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
-                            stp_enter_shading shading, const stp_vec3 *normals,
-                            const stp_fix *shades)
+ * (enter_model_face: no shadow map is set there) or the view route, after
+ * which every polygon entered casts into the maps, in view or not, back
+ * face or not (render.h). */
+STP_HOT_INLINE int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,
+                                 stp_enter_shading shading, const stp_vec3 *normals, const stp_fix *shades)
 {
     const stp_model_frame *frame;
     int status;
@@ -1803,16 +1804,8 @@ static int enter_polygon_df(stp_renderer *r, const stp_vec3 *vertices, int n,
     r->last_shade = -1;
     if (shading == STP_ENTER_FLAT && (frame = model_route(r)) != 0)
         return enter_model_face(r, vertices, n, frame);
-    return enter_view_polygon(r, vertices, n, shading, normals, shades);
-}
-
-static int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int n,
-                         stp_enter_shading shading, const stp_vec3 *normals, const stp_fix *shades)
-{
-    int status = enter_polygon_df(r, vertices, n, shading, normals, shades);
+    status = enter_view_polygon(r, vertices, n, shading, normals, shades);
 #if STP_WITH_SHADOWS
-    /* every polygon entered casts into the maps, in view or not, back face
-     * or not (render.h) */
     if (status == STP_OK && shadows_on(r))
         stp_shadow_enter(r, vertices, n);
 #endif
