@@ -1789,10 +1789,13 @@ STP_HOT_INLINE int enter_polygon(stp_renderer *r, const stp_vec3 *vertices, int 
 {
     const stp_model_frame *frame;
     int status;
-    /* one test for good arguments (n in [3, STP_MAX_POLYGON_VERTICES]),
-     * the error's kind after */
-    if (STP_UNLIKELY(r == 0 || vertices == 0 || (unsigned)n - 3u > STP_MAX_POLYGON_VERTICES - 3u)) {
-        if (r == 0 || n < 0)
+    /* the good arguments' tests (n in [3, STP_MAX_POLYGON_VERTICES]) each
+     * a branch of its own (fewer steps than one test of three), the
+     * error's kind after */
+    if (STP_UNLIKELY(r == 0))
+        return STP_ERR_ARG;
+    if (STP_UNLIKELY(vertices == 0) || STP_UNLIKELY((unsigned)n - 3u > STP_MAX_POLYGON_VERTICES - 3u)) {
+        if (n < 0)
             return STP_ERR_ARG;
         if (n < 3)
             return STP_ERR_DEGENERATE; /* with vertices NULL too */
