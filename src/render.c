@@ -899,8 +899,9 @@ STP_NOINLINE unsigned cache_fill(stp_renderer *r, stp_vertex_entry *c, uint32_t 
 }
 
 /* Vertex i of the polygon being entered (serial), point p, through the
- * vertex cache: its view point in r->clip_a[i], its entry in
- * r->cached[i] and *entry (NULL outside); returns its outcode. */
+ * vertex cache: its view point in r->clip_a[i], its entry in *entry
+ * (NULL outside) and, unless cached is NULL, r->cached[i] (a miss sets it
+ * either way); returns its outcode. */
 STP_HOT_INLINE unsigned cache_vertex(stp_renderer *r, const stp_vec3 *p, int i, uint16_t serial, uint32_t hash,
                                      uint32_t stamp, stp_vertex_entry *cache, stp_vec3 *view_out,
                                      uint16_t *cached, stp_vertex_entry **entry)
@@ -918,7 +919,8 @@ STP_HOT_INLINE unsigned cache_vertex(stp_renderer *r, const stp_vec3 *p, int i, 
         return cache_fill(r, c, slot, p, i, serial, entry);
     c->used_by = serial;
     view_out[i] = c->view;
-    cached[i] = (uint16_t)slot;
+    if (cached)
+        cached[i] = (uint16_t)slot;
     *entry = c;
     return (unsigned)c->code;
 }
@@ -932,8 +934,10 @@ STP_HOT_INLINE unsigned cache_vertex(stp_renderer *r, const stp_vec3 *p, int i, 
  * found with its view coordinates (a later polygon sharing the vertex is
  * likely to face the eye and need it), so the polygon's outcodes are
  * known here.  A triangle's three vertices are taken in line, apart from
- * the loop. */
-STP_HOT_INLINE void enter_transform_n(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e, const int n)
+ * the loop, their entries in e->entry[]; slots 0 leaves r->cached[] unset
+ * on a hit, for a caller reading e->entry[] alone. */
+STP_HOT_INLINE void enter_transform_n(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e, const int n,
+                                      const int slots)
 {
     int i;
     unsigned range = 0;
@@ -951,7 +955,7 @@ STP_HOT_INLINE void enter_transform_n(stp_renderer *r, const stp_vec3 *vertices,
     const uint32_t stamp = r->cache_stamp;
     stp_vertex_entry *const cache = r->cache;
     stp_vec3 *const view_out = r->clip_a;
-    uint16_t *const cached = r->cached;
+    uint16_t *const cached = slots ? r->cached : 0;
     unsigned all, any;
     if (n == 3 && !STP_SIZE_BUILD) {
         unsigned c0 = cache_vertex(r, &vertices[0], 0, serial, hash, stamp, cache, view_out, cached, &e->entry[0]);
@@ -973,6 +977,7 @@ STP_HOT_INLINE void enter_transform_n(stp_renderer *r, const stp_vec3 *vertices,
     e->outside_all = all;
     e->outside_any = any;
 #else
+    (void)slots;
     for (i = 0; i < n; i++) {
         vertex_to_view(r, vertices[i], &r->clip_a[i]);
         range |= (unsigned)stp_view_saturated(r->clip_a[i]);
@@ -983,7 +988,7 @@ STP_HOT_INLINE void enter_transform_n(stp_renderer *r, const stp_vec3 *vertices,
 
 static void enter_transform(stp_renderer *r, const stp_vec3 *vertices, stp_entry *e)
 {
-    enter_transform_n(r, vertices, e, e->n);
+    enter_transform_n(r, vertices, e, e->n, 1);
 }
 
 #if !STP_VERTEX_CACHE
@@ -1709,7 +1714,10 @@ STP_HOT_INLINE int enter_model_front(stp_renderer *r, const stp_vec3 *vertices, 
     e.shading = STP_ENTER_FLAT;
     e.projected = 0;
     if (count == 3 && !STP_SIZE_BUILD)
-        enter_transform_n(r, vertices, &e, 3); /* a triangle's: unrolled */
+        /* a triangle's: unrolled; its entries in e.entry[], r->cached[]
+         * left as it is (enter_model_triangle and enter_store's clipped
+         * and projected paths do not read it) */
+        enter_transform_n(r, vertices, &e, 3, 0);
     else
         enter_transform(r, vertices, &e);
     if (e.range)
