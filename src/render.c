@@ -910,9 +910,13 @@ STP_HOT_INLINE unsigned cache_vertex(stp_renderer *r, const stp_vec3 *p, int i, 
      * miss */
     const stp_fix px = p->x, py = p->y, pz = p->z;
     /* a multiplicative hash of the exact coordinates, rotated apart and
-     * mixed by one product */
+     * mixed by one product.  With up to 64 entries the slot reads the
+     * product's bits 0..20 alone, which only the factor's bits 0..20
+     * reach: there uz rotated left by 22 is uz >> 10, one shift (ARMv6-M
+     * has no rotation by an immediate count) */
     uint32_t ux = (uint32_t)px, uy = (uint32_t)py, uz = (uint32_t)pz;
-    uint32_t h = (ux ^ ((uy << 11) | (uy >> 21)) ^ ((uz << 22) | (uz >> 10))) * hash;
+    uint32_t rz = STP_VERTEX_CACHE <= 64 ? uz >> 10 : (uz << 22) | (uz >> 10);
+    uint32_t h = (ux ^ ((uy << 11) | (uy >> 21)) ^ rz) * hash;
     uint32_t slot = (h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1);
     stp_vertex_entry *c = &cache[slot];
     if (c->stamp != stamp || c->point.x != px || c->point.y != py || c->point.z != pz)
