@@ -1643,6 +1643,18 @@ STP_HOT_INLINE int model_normal_and_side(const stp_renderer *r, const stp_vec3 *
     return general_normal_and_side(r, v, count, f, n, side);
 }
 
+/* One coordinate of a triangle's vertex average (stp_render_average3):
+ * where 32 x 32 -> 64 products are library calls and 32-bit ones are not,
+ * values below 2^28 (the usual) take mesh entry's 32-bit quotient, tested
+ * as each in [-2^27, 2^27), one addition each; a coordinate at a time,
+ * fewer values held at once than one test of all nine. */
+STP_HOT_INLINE stp_fix centre_coordinate(int32_t a, int32_t b, int32_t c)
+{
+    const uint32_t half = (uint32_t)1 << 27;
+    int small = STP_NARROW_FORMS && (((uint32_t)a + half) | ((uint32_t)b + half) | ((uint32_t)c + half)) < 2 * half;
+    return stp_render_average3(small, a, b, c);
+}
+
 /* A front triangle inside the view on the model route (enter_model_face,
  * its vertices in r->clip_a and the cache): the face stage's last steps as
  * stp_renderer_mesh takes them (mesh.c's enter_face): projected, left out
@@ -1670,22 +1682,9 @@ static int enter_model_triangle(stp_renderer *r, stp_entry *e, const stp_model_f
                                    p[1].y, p[2].x, p[2].y))
         return STP_OK; /* between two row centres, or pixel culling: draws nothing */
     stp_render_view_normal(f, n, side, nv);
-    {
-        const stp_vec3 *v = r->clip_a;
-        /* where 32 x 32 -> 64 products are library calls and 32-bit
-         * ones are not, view points below 2^28 (the usual) take mesh
-         * entry's 32-bit quotient: tested as each in [-2^27, 2^27), one
-         * addition each */
-        const uint32_t half = (uint32_t)1 << 27;
-        int small = STP_NARROW_FORMS &&
-                    (((uint32_t)v[0].x + half) | ((uint32_t)v[0].y + half) | ((uint32_t)v[0].z + half) |
-                     ((uint32_t)v[1].x + half) | ((uint32_t)v[1].y + half) | ((uint32_t)v[1].z + half) |
-                     ((uint32_t)v[2].x + half) | ((uint32_t)v[2].y + half) | ((uint32_t)v[2].z + half)) <
-                        2 * half;
-        centre.x = stp_render_average3(small, v[0].x, v[1].x, v[2].x);
-        centre.y = stp_render_average3(small, v[0].y, v[1].y, v[2].y);
-        centre.z = stp_render_average3(small, v[0].z, v[1].z, v[2].z);
-    }
+    centre.x = centre_coordinate(r->clip_a[0].x, r->clip_a[1].x, r->clip_a[2].x);
+    centre.y = centre_coordinate(r->clip_a[0].y, r->clip_a[1].y, r->clip_a[2].y);
+    centre.z = centre_coordinate(r->clip_a[0].z, r->clip_a[1].z, r->clip_a[2].z);
     style = stp_render_face_style(r, r->shading ? stp_render_face_shader(r) : 0, nv, centre, side);
     if (STP_UNLIKELY(r->current_transmission != 0)) {
         e->style = style;
