@@ -21,9 +21,9 @@ table() {
 ## 1. Vectors and conventions
 UNITY (Algorithm 10.2) | a vector divided by its length, the length returned; a zero vector reported, never divided by | stp_vec3_unity | test_vec3_unity_random test_vec3_unity_tiny_and_huge
 (10.5) | the half-way vector H = (L+E)/\|L+E\| between the light and the eye | shade_parts | test_specular_terms_against_reference test_shade_highlight_sweep
-eye direction | E from the point to the centre of projection, or the fixed direction of a parallel projection | enter_polygon_df shade_parts | test_shade_grid_against_reference test_backface_removal_keeps_faces_towards_viewer
+eye direction | E from the point to the centre of projection, or the fixed direction of a parallel projection | enter_polygon shade_parts | test_shade_grid_against_reference test_backface_removal_keeps_faces_towards_viewer
 Newell's normal (Algorithm 10.4) | the polygon's normal from the sums over its edges of (y'-y)(z'+z) and its cyclic companions, and the vertex average as the point to shade | src/render.c:newell | tests/stiff/test_stiff.c:test_case test_pictures_of_clipped_polygons
-SHADE-CHECK | Newell's sums collected while a polygon is entered, its shade computed at the last vertex and entered before it as a fill style | enter_polygon_df src/render.c:newell | tests/stiff/test_stiff.c:test_case tests/golden/test_golden.c:test_golden_128x64
+SHADE-CHECK | Newell's sums collected while a polygon is entered, its shade computed at the last vertex and entered before it as a fill style | enter_polygon src/render.c:newell | tests/stiff/test_stiff.c:test_case tests/golden/test_golden.c:test_golden_128x64
 ## 2. The shading equation
 (10.1) | ambient light alone: v = B R | shade_parts | test_shade_back_face_is_ambient_only
 (10.3) | one diffuse point light: v = B R + P R (L.N) | shade_parts | test_shade_grid_against_reference
@@ -50,10 +50,10 @@ ordered dither of a picture | every pixel of a grey row against the tiled cell |
 ## 4. Smooth shading (Gouraud)
 Gouraud shading | a shade per vertex, stepped along edges and spans, each pixel through INTENSITY and its own threshold | stp_renderer_polygon_vertex_shades stp_renderer_polygon_smooth put_span_smooth | test_horizontal_ramp test_triangle_barycentric test_golden_smooth_teapot
 ## 5. Transparency, reflections, shadows, ray tracing
-(10.18) | transmission through material t e^(-a d) | enter_polygon_df src/raytrace.c:absorb | test_blend_over_opaque_and_background tests/raytrace/test_raytrace.c:test_scenes_against_reference
+(10.18) | transmission through material t e^(-a d) | enter_polygon src/raytrace.c:absorb | test_blend_over_opaque_and_background tests/raytrace/test_raytrace.c:test_scenes_against_reference
 (10.19) | Snell's law for the refracted ray | shade_hit | tests/raytrace/test_raytrace.c:test_scenes_against_reference tests/raytrace/test_raytrace.c:test_stiff_cases
 (10.20) | painter's transparency v = v_r + t v_t, v_t read back through the inverse of INTENSITY | blend index_of_level stp_intensity_shade | test_blend_over_opaque_and_background test_intensity_shade_is_inverse
-(10.21) | transparency by angle t = (t_max - t_min)(N.E)^a + t_min | enter_polygon_df | test_blend_over_opaque_and_background test_opaque_and_fully_transparent
+(10.21) | transparency by angle t = (t_max - t_min)(N.E)^a + t_min | enter_polygon | test_blend_over_opaque_and_background test_opaque_and_fully_transparent
 (10.22), (10.23) | light reflected from another surface, weighted by F with c = E.N | shade_hit secondary | tests/raytrace/test_raytrace.c:test_scenes_against_reference
 shadows | a shadow Z buffer per light; a point hidden from a light keeps only the background share | stp_shadow_enter stp_shadow_records stp_shadow_polygon | test_square_over_floor test_two_lights test_no_acne_at_grazing_light
 ray tracing | a ray per pixel, the nearest hit shaded by (10.16), shadow rays, reflected and refracted rays until they miss or weigh too little | stp_rt_render src/raytrace.c:trace shade_hit nearest_hit | tests/raytrace/test_raytrace.c:test_scenes_against_reference test_hierarchy_equals_every_object tests/raytrace/test_raytrace.c:test_stiff_cases
@@ -67,10 +67,10 @@ HSV (Algorithms 10.13, 10.14) | the hexcone | stp_rgb_to_hsv stp_hsv_to_rgb | te
 HLS | the double hexcone | stp_rgb_to_hls stp_hls_to_rgb | test_hsv_hls_hsi_known_values test_round_trips_over_the_cube
 colour tables | 256 entries of 24-bit colour indexed by the frame's values: grey, pseudocolour, gamma per primary | stp_colour_table_grey stp_colour_table_pseudocolour stp_colour_table_apply_gamma | test_colour_tables
 ## 7. The display file
-DISPLAY-FILE-ENTER (Algorithm 10.3) | each point to view coordinates, shaded, clipped, projected and stored as an instruction | enter_polygon_df stp_renderer_move stp_renderer_line | test_display_file_full_leaves_it_unchanged tests/golden/test_golden.c:test_golden_128x64
+DISPLAY-FILE-ENTER (Algorithm 10.3) | each point to view coordinates, shaded, clipped, projected and stored as an instruction | enter_polygon stp_renderer_move stp_renderer_line | test_display_file_full_leaves_it_unchanged tests/golden/test_golden.c:test_golden_128x64
 segments | created, closed, deleted, shown or hidden | stp_segment_create stp_segment_close stp_segment_delete stp_segment_visibility | test_segment_errors test_segment_delete_compacts_and_visibility test_segment_table_full
 clipping and projection | against the hither plane and the window, then perspective or parallel | clip_polygon project | test_hither_clipping test_polygon_behind_the_eye_enters_nothing test_pictures_of_clipped_polygons
-back-face removal | faces with N.E <= 0 dropped | enter_polygon_df | test_backface_removal_keeps_faces_towards_viewer test_backface_removal_single_polygon
+back-face removal | faces with N.E <= 0 dropped | enter_polygon | test_backface_removal_keeps_faces_towards_viewer test_backface_removal_single_polygon
 painter's algorithm | polygons drawn far to near | sort_entries | test_hidden_surfaces_nearer_square_wins
 Z buffer | the nearest surface per pixel | put_span_z | test_zbuffer_interpenetrating_polygons
 direct drawing | no display file: a mesh transformed, projected and shaded once per frame (32-bit), back faces by winding, painted in mesh order straight into bands with the same fill rule | stp_direct_frame_project project_point stp_direct_draw_band | tests/direct/test_direct.c:test_torus tests/direct/test_direct.c:test_bands

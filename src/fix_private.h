@@ -127,6 +127,11 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out);
  * own rounding step where 64-bit products are native, and without the
  * length); 1, or 0 for a zero vector (out unset). */
 int stp_unit_q14_from64(int64_t x, int64_t y, int64_t z, int16_t out[3]);
+#if STP_NARROW_FORMS
+/* stp_unit_q14_from64 for int32 components (the same values), where
+ * 64-bit arguments and magnitudes cost more (ARMv6-M's -O2) */
+int stp_unit_q14_from32(int32_t x, int32_t y, int32_t z, int16_t out[3]);
+#endif
 
 /* 1/sqrt(v) for v > 0: returns y in (2^29, 2^30] and *exponent with
  * 1/sqrt(v) = y 2^-exponent (relative error below 2^-29; table seed and

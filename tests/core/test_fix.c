@@ -882,6 +882,9 @@ static void check_unit_exact(int64_t x, int64_t y, int64_t z)
     int k;
     if ((x | y | z) == 0) {
         assert_int_equal(stp_unit_q14_from64(x, y, z, q), 0);
+#if STP_NARROW_FORMS
+        assert_int_equal(stp_unit_q14_from32(0, 0, 0, q), 0);
+#endif
         return;
     }
     (void)unit_reference(x, y, z, ref);
@@ -892,6 +895,14 @@ static void check_unit_exact(int64_t x, int64_t y, int64_t z)
         if (q[k] != (int16_t)((ref[k] + (1 << 15)) >> 16))
             fail_msg("q14 (%lld %lld %lld)[%d]: %d, expected %lld", (long long)x, (long long)y,
                      (long long)z, k, q[k], (long long)((ref[k] + (1 << 15)) >> 16));
+#if STP_NARROW_FORMS
+    /* the int32 entry: the same values */
+    if (x == (int32_t)x && y == (int32_t)y && z == (int32_t)z) {
+        int16_t q32[3];
+        assert_int_equal(stp_unit_q14_from32((int32_t)x, (int32_t)y, (int32_t)z, q32), 1);
+        assert_true(q32[0] == q[0] && q32[1] == q[1] && q32[2] == q[2]);
+    }
+#endif
 }
 
 static void test_unit_exact_int32(void **state)
