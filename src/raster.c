@@ -1739,6 +1739,61 @@ static void frame_extent(frame *fr, uint32_t count, const extent *ex)
         fr->y_max = fr->r->height - 1;
 }
 
+/* Whether vertex v lies outside the extent (lo, w) of each coordinate. */
+#define VERTEX_OUTSIDE(v, lo, w, xlo, xw, ylo, yw)                                                                   \
+    ((uint32_t)(v).z - (uint32_t)(lo) > (w) || (uint32_t)(v).x - (uint32_t)(xlo) > (xw) ||                         \
+     (uint32_t)(v).y - (uint32_t)(ylo) > (yw))
+
+/* Widen *ex by the run of triangles and SHADE records from in (a
+ * triangle), to end or the first other record, for the Z buffer's scan
+ * (no sort entries, so no styles); *count counts the triangles (0 before
+ * the frame's first: ex is then made its first vertex).  Returns where
+ * the run stopped.  Out of line, with the extent in locals: its six
+ * values, the record pointer and a scratch register are ARMv6-M's eight
+ * low registers, so a triangle within the extent costs nine loads,
+ * subtractions and compares, and no update. */
+STP_NOINLINE const stp_instr *scan_triangles(extent *ex_io, const stp_instr *in, const stp_instr *end,
+                                             uint32_t *count_io)
+{
+    const stp_instr *v;
+    uint32_t count = *count_io, w, xw, yw;
+    int32_t lo, xlo, ylo, i;
+    if (count == 0)
+        extent_vertex(ex_io, in, 1);
+    lo = ex_io->key_min;
+    w = ex_io->key_width;
+    xlo = ex_io->x_lo;
+    xw = ex_io->x_width;
+    ylo = ex_io->y_lo;
+    yw = ex_io->y_width;
+    for (v = in; v < end; v++) {
+        if (v->op == STP_OP_SHADE)
+            continue;
+        if (v->op != 3)
+            break;
+        /* the widening a loop: unrolled, the compiler keeps the loads of
+         * the test for it, which takes registers the test needs */
+        if (STP_UNLIKELY(VERTEX_OUTSIDE(v[0], lo, w, xlo, xw, ylo, yw) ||
+                         VERTEX_OUTSIDE(v[1], lo, w, xlo, xw, ylo, yw) ||
+                         VERTEX_OUTSIDE(v[2], lo, w, xlo, xw, ylo, yw)))
+            for (i = 0; i < 3; i++) {
+                extent_widen(&lo, &w, v[i].z, 0);
+                extent_widen(&xlo, &xw, v[i].x, 0);
+                extent_widen(&ylo, &yw, v[i].y, 0);
+            }
+        count++;
+        v += 2;
+    }
+    ex_io->key_min = lo;
+    ex_io->key_width = w;
+    ex_io->x_lo = xlo;
+    ex_io->x_width = xw;
+    ex_io->y_lo = ylo;
+    ex_io->y_width = yw;
+    *count_io = count;
+    return v;
+}
+
 /* Collect visible polygons for the painter (sort != NULL: entries keyed by
  * their farthest vertex) and the depth-key range. */
 static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
@@ -1760,7 +1815,9 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
             continue;
         for (in = df + seg->start; in < end; in++) {
             int32_t op = in->op;
-            if (op >= 3) {
+            if (op == 3 && !sort) { /* the usual run: a mesh's triangles */
+                in = scan_triangles(&ex, in, end, &count) - 1;
+            } else if (op >= 3) {
                 extent_add(&ex, in, op, count);
                 if (sort)
                     sort_entry_set(&sort[count], (uint32_t)(in - df), in, op, style, t);
