@@ -1560,6 +1560,17 @@ static inline void replay_line_op(const frame *fr, const stp_instr *in, const st
     }
 }
 
+#if STP_WITH_TRIANGLE_PATH && !STP_LEAN_CODE
+/* Whether triangle v lies above or below the band's rows (rows: band
+ * top and end, Q27.4): draw_triangle and draw_polygon would return at
+ * once, having changed nothing. */
+STP_HOT_INLINE int triangle_off_band(const stp_instr *v, const stp_band_rows *rows)
+{
+    int32_t top = rows->top, end = rows->end;
+    return (v[0].y <= top && v[1].y <= top && v[2].y <= top) || (v[0].y >= end && v[1].y >= end && v[2].y >= end);
+}
+#endif
+
 /* Walk the visible segments in display order: polygons (unless skip_polygons)
  * and lines, each with the style in force. */
 /* pass: which polygons to draw: 0 all, 1 opaque only, 2 transparent only. */
@@ -1567,8 +1578,11 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
 {
     stp_renderer *r = fr->r;
     uint32_t ordinal = 0;
-    int s, triangle_path = TRIANGLE_PATH(fr); /* once, not per polygon */
-    (void)triangle_path; /* read only with the triangle path compiled in */
+    /* tri_path: 1 the triangle path; 2 that with several bands, where a
+     * triangle off the band is skipped here rather than called (the
+     * call's arguments cost more than the test) */
+    int s, tri_path = TRIANGLE_PATH(fr) ? 1 + (!STP_LEAN_CODE && fr->rows.count < r->height) : 0;
+    (void)tri_path; /* read only with the triangle path compiled in */
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
         paint style = r->fill_style, line_style = r->fill_style;
@@ -1579,19 +1593,31 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
         const stp_instr *in = &r->df[seg->start];
         uint32_t k, end = seg->end;
         /* whether this pass draws the polygons that follow (t as it
-         * stands); tri: and flat narrow triangles by draw_triangle */
-        int draw = !skip_polygons && pass != 2, tri = draw && triangle_path;
+         * stands); tri: and triangles by the triangle path (tri_path) */
+        int draw = !skip_polygons && pass != 2, tri = draw ? tri_path : 0;
         if (!seg->used || !seg->visible)
             continue;
         for (k = seg->start; k < end; k++, in++) {
             int32_t op = in->op;
 #if STP_WITH_TRIANGLE_PATH
-            if (op == 3 && tri && !polygon_smooth(in) && STP_TRIANGLE_NARROW(in)) {
+            if (op == 3 && tri == 1 && !polygon_smooth(in) && STP_TRIANGLE_NARROW(in)) {
                 /* the common record first, its advance a constant */
                 draw_triangle(fr, k, in, style, use_z, t, ordinal);
                 ordinal++;
                 k += 2;
                 in += 2;
+#if !STP_LEAN_CODE
+            } else if (op == 3 && tri == 2) { /* several bands */
+                if (!triangle_off_band(in, &fr->rows)) {
+                    if (!polygon_smooth(in) && STP_TRIANGLE_NARROW(in))
+                        draw_triangle(fr, k, in, style, use_z, t, ordinal);
+                    else
+                        draw_polygon(fr, k, style, use_z, t, ordinal);
+                }
+                ordinal++;
+                k += 2;
+                in += 2;
+#endif
             } else
 #endif
             if (op >= 3) {
@@ -1603,7 +1629,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
             } else if (op == STP_OP_TRANSPARENCY) {
                 t = in->x;
                 draw = !skip_polygons && (pass == 0 || (pass == 1) == (t == 0));
-                tri = draw && triangle_path;
+                tri = draw ? tri_path : 0;
                 (void)tri; /* read only with the triangle path compiled in */
             } else if (op == STP_OP_SHADE) {
                 style = paint_of(fr, in);
@@ -2028,6 +2054,46 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
 #endif
 }
 
+/* count bytes from p set to v.  Builds for speed store eight a step: on
+ * a Cortex-M0+ a loop's count, compare and branch cost as much as two
+ * stores. */
+static void fill_bytes(uint8_t *p, size_t count, uint8_t v)
+{
+    size_t i = 0;
+#if !defined(__OPTIMIZE_SIZE__)
+    for (; count - i >= 8u; i += 8u) {
+        p[i] = v;
+        p[i + 1u] = v;
+        p[i + 2u] = v;
+        p[i + 3u] = v;
+        p[i + 4u] = v;
+        p[i + 5u] = v;
+        p[i + 6u] = v;
+        p[i + 7u] = v;
+    }
+#endif
+    for (; i < count; i++)
+        p[i] = v;
+}
+
+#if STP_WITH_ZBUFFER
+/* count Z-buffer entries from z set to 0, as fill_bytes. */
+static void zero_entries(uint16_t *z, size_t count)
+{
+    size_t i = 0;
+#if !defined(__OPTIMIZE_SIZE__)
+    for (; count - i >= 4u; i += 4u) {
+        z[i] = 0;
+        z[i + 1u] = 0;
+        z[i + 2u] = 0;
+        z[i + 3u] = 0;
+    }
+#endif
+    for (; i < count; i++)
+        z[i] = 0;
+}
+#endif
+
 /* Band y0's rows cleared to the background and, with the Z buffer, its
  * entries where a polygon can reach set farther than any polygon. */
 /* A MONO1 band whose rows hold no padding bits (width 8 stride) cleared
@@ -2036,9 +2102,9 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
  * row.  0 (nothing written) when the band is not so. */
 static int band_clear_uniform(frame *fr, const stp_port *drawn, paint background)
 {
-    size_t i, count = fr->stride * (size_t)fr->rows.count; /* below band_size */
+    size_t count = fr->stride * (size_t)fr->rows.count; /* below band_size */
     uint32_t cy;
-    uint8_t pattern, *band = fr->band; /* a local: a byte store may alias fr */
+    uint8_t pattern;
     if (drawn->format != STP_PIXEL_MONO1 || (size_t)fr->r->width != 8u * fr->stride)
         return 0;
     use_style(fr, background); /* patterns[] for the background, when mono_fill */
@@ -2048,8 +2114,7 @@ static int band_clear_uniform(frame *fr, const stp_port *drawn, paint background
     for (cy = 1; cy < fr->cell->height; cy++)
         if (fr->patterns[cy] != pattern)
             return 0;
-    for (i = 0; i < count; i++) /* a counted loop: compilers make it memset */
-        band[i] = pattern;
+    fill_bytes(fr->band, count, pattern);
     return 1;
 }
 
@@ -2080,13 +2145,12 @@ static void page_fill_background(const frame *fr, uint8_t *page, uint32_t k)
  * which set one bit of each byte (stp_halftone_fill_page_run). */
 static int band_clear_pages(frame *fr, paint background)
 {
-    size_t i, count = fr->stride * (((size_t)fr->rows.count + 7u) / 8u); /* within band_size */
+    size_t count = fr->stride * (((size_t)fr->rows.count + 7u) / 8u); /* within band_size */
     uint32_t k;
     uint8_t *band = fr->band; /* a local: a byte store may alias fr */
     use_style(fr, background); /* patterns[] for the background, when mono_fill */
     if (background != fr->pattern_style) {
-        for (i = 0; i < count; i++) /* a counted loop: compilers make it memset */
-            band[i] = 0;
+        fill_bytes(band, count, 0);
         return 0;
     }
     for (k = 0; 8u * k < fr->rows.count; k++)
@@ -2112,12 +2176,9 @@ static void render_band_clear(frame *fr, const stp_port *drawn, stp_hidden hidde
         /* farther than any polygon (they map to >= 1), where one can
          * reach: a Z test reads no other entry */
         uint32_t y_end = y0 + fr->rows.count - 1 < fr->y_max ? y0 + fr->rows.count - 1 : fr->y_max;
-        size_t i, count = (size_t)(fr->x_max - fr->x_min) + 1u;
-        for (y = y0 > fr->y_min ? y0 : fr->y_min; y <= y_end; y++) {
-            uint16_t *z = fr->zbuf + (size_t)(y - y0) * r->width + fr->x_min;
-            for (i = 0; i < count; i++) /* a counted loop: compilers make it memset */
-                z[i] = 0;
-        }
+        size_t count = (size_t)(fr->x_max - fr->x_min) + 1u;
+        for (y = y0 > fr->y_min ? y0 : fr->y_min; y <= y_end; y++)
+            zero_entries(fr->zbuf + (size_t)(y - y0) * r->width + fr->x_min, count);
     }
 #else
     (void)hidden;
