@@ -2082,11 +2082,15 @@ static void zero_entries(uint16_t *z, size_t count)
 {
     size_t i = 0;
 #if !defined(__OPTIMIZE_SIZE__)
-    for (; count - i >= 4u; i += 4u) {
+    for (; count - i >= 8u; i += 8u) {
         z[i] = 0;
         z[i + 1u] = 0;
         z[i + 2u] = 0;
         z[i + 3u] = 0;
+        z[i + 4u] = 0;
+        z[i + 5u] = 0;
+        z[i + 6u] = 0;
+        z[i + 7u] = 0;
     }
 #endif
     for (; i < count; i++)
