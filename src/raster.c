@@ -1560,6 +1560,24 @@ static inline void replay_line_op(const frame *fr, const stp_instr *in, const st
     }
 }
 
+/* Whether replay's pass (0 all, 1 opaque only, 2 transparent only) draws
+ * the polygons under transmission t. */
+static int replay_draws(int skip_polygons, int pass, stp_fix t)
+{
+    return !skip_polygons && (pass == 0 || (pass == 1) == (t == 0));
+}
+
+/* How replay draws the flat narrow triangles: 0 by draw_polygon; 1 by
+ * draw_triangle; 2 by draw_triangle with several bands, where a triangle
+ * off the band is skipped in replay rather than called (the call's
+ * arguments cost more than the test). */
+static int replay_triangle_path(const frame *fr)
+{
+    if (!TRIANGLE_PATH(fr))
+        return 0;
+    return !STP_LEAN_CODE && fr->rows.count < fr->r->height ? 2 : 1;
+}
+
 #if STP_WITH_TRIANGLE_PATH && !STP_LEAN_CODE
 /* Whether triangle v lies above or below the band's rows (rows: band
  * top and end, Q27.4): draw_triangle and draw_polygon would return at
@@ -1568,6 +1586,20 @@ STP_HOT_INLINE int triangle_off_band(const stp_instr *v, const stp_band_rows *ro
 {
     int32_t top = rows->top, end = rows->end;
     return (v[0].y <= top && v[1].y <= top && v[2].y <= top) || (v[0].y >= end && v[1].y >= end && v[2].y >= end);
+}
+
+/* replay's triangle record v (df[k]) with several bands: 1 when skipped
+ * off the band or drawn by draw_triangle, 0 when it is draw_polygon's
+ * (smooth, or too wide). */
+STP_HOT_INLINE int replay_banded_triangle(frame *fr, uint32_t k, const stp_instr *v, paint style, int use_z,
+                                          stp_fix t, uint32_t ordinal)
+{
+    if (triangle_off_band(v, &fr->rows))
+        return 1;
+    if (polygon_smooth(v) || !STP_TRIANGLE_NARROW(v))
+        return 0;
+    draw_triangle(fr, k, v, style, use_z, t, ordinal);
+    return 1;
 }
 #endif
 
@@ -1578,10 +1610,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
 {
     stp_renderer *r = fr->r;
     uint32_t ordinal = 0;
-    /* tri_path: 1 the triangle path; 2 that with several bands, where a
-     * triangle off the band is skipped here rather than called (the
-     * call's arguments cost more than the test) */
-    int s, tri_path = TRIANGLE_PATH(fr) ? 1 + (!STP_LEAN_CODE && fr->rows.count < r->height) : 0;
+    int s, tri_path = replay_triangle_path(fr); /* once, not per polygon */
     (void)tri_path; /* read only with the triangle path compiled in */
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
@@ -1594,7 +1623,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
         uint32_t k, end = seg->end;
         /* whether this pass draws the polygons that follow (t as it
          * stands); tri: and triangles by the triangle path (tri_path) */
-        int draw = !skip_polygons && pass != 2, tri = draw ? tri_path : 0;
+        int draw = replay_draws(skip_polygons, pass, 0), tri = draw ? tri_path : 0;
         if (!seg->used || !seg->visible)
             continue;
         for (k = seg->start; k < end; k++, in++) {
@@ -1607,13 +1636,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
                 k += 2;
                 in += 2;
 #if !STP_LEAN_CODE
-            } else if (op == 3 && tri == 2) { /* several bands */
-                if (!triangle_off_band(in, &fr->rows)) {
-                    if (!polygon_smooth(in) && STP_TRIANGLE_NARROW(in))
-                        draw_triangle(fr, k, in, style, use_z, t, ordinal);
-                    else
-                        draw_polygon(fr, k, style, use_z, t, ordinal);
-                }
+            } else if (op == 3 && tri == 2 && replay_banded_triangle(fr, k, in, style, use_z, t, ordinal)) {
                 ordinal++;
                 k += 2;
                 in += 2;
@@ -1628,7 +1651,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
                 in += op - 1;
             } else if (op == STP_OP_TRANSPARENCY) {
                 t = in->x;
-                draw = !skip_polygons && (pass == 0 || (pass == 1) == (t == 0));
+                draw = replay_draws(skip_polygons, pass, t);
                 tri = draw ? tri_path : 0;
                 (void)tri; /* read only with the triangle path compiled in */
             } else if (op == STP_OP_SHADE) {
@@ -1777,7 +1800,9 @@ static void frame_extent(frame *fr, uint32_t count, const extent *ex)
  * the run stopped.  Out of line, with the extent in locals: its six
  * values, the record pointer and a scratch register are ARMv6-M's eight
  * low registers, so a triangle within the extent costs nine loads,
- * subtractions and compares, and no update. */
+ * subtractions and compares, and no update.  Builds for size take the
+ * general loop (scan_polygons) alone. */
+#if !defined(__OPTIMIZE_SIZE__)
 STP_NOINLINE const stp_instr *scan_triangles(extent *ex_io, const stp_instr *in, const stp_instr *end,
                                              uint32_t *count_io)
 {
@@ -1819,6 +1844,7 @@ STP_NOINLINE const stp_instr *scan_triangles(extent *ex_io, const stp_instr *in,
     *count_io = count;
     return v;
 }
+#endif
 
 /* Collect visible polygons for the painter (sort != NULL: entries keyed by
  * their farthest vertex) and the depth-key range. */
@@ -1841,9 +1867,12 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
             continue;
         for (in = df + seg->start; in < end; in++) {
             int32_t op = in->op;
+#if !defined(__OPTIMIZE_SIZE__)
             if (op == 3 && !sort) { /* the usual run: a mesh's triangles */
                 in = scan_triangles(&ex, in, end, &count) - 1;
-            } else if (op >= 3) {
+            } else
+#endif
+            if (op >= 3) {
                 extent_add(&ex, in, op, count);
                 if (sort)
                     sort_entry_set(&sort[count], (uint32_t)(in - df), in, op, style, t);
