@@ -10,9 +10,11 @@ static void cell_clear(stp_cell *cell)
     int i = 0;
     cell->kind = STP_CELL_THRESHOLD;
     cell->width = cell->height = 1;
-#if !defined(__OPTIMIZE_SIZE__)
-    /* eight a step (the count is a multiple of 8): a renderer without a
-     * cell makes the default one every frame */
+#if !defined(__OPTIMIZE_SIZE__) && UINTPTR_MAX <= 0xFFFFFFFFu
+    /* eight a step (the count is a multiple of 8) on 32-bit targets, where
+     * the compiler leaves the plain loop a loop (64-bit hosts make it
+     * memset): a renderer without a cell makes the default one every
+     * frame */
     for (; i < STP_CELL_MAX * STP_CELL_MAX; i += 8) {
         cell->thresholds[i] = 0;
         cell->thresholds[i + 1] = 0;

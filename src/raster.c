@@ -2083,13 +2083,22 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
 #endif
 }
 
-/* count bytes from p set to v.  Builds for speed store eight a step: on
- * a Cortex-M0+ a loop's count, compare and branch cost as much as two
- * stores. */
+/* The clearing loops below eight stores a step on 32-bit targets (a
+ * Cortex-M0+ spends as much on a loop's count, compare and branch as on
+ * two stores, and the compiler leaves a counted loop a loop there); the
+ * plain loop elsewhere: 64-bit hosts make it memset, builds for size keep
+ * it small. */
+#if !defined(__OPTIMIZE_SIZE__) && UINTPTR_MAX <= 0xFFFFFFFFu
+#define STORES_UNROLLED 1
+#else
+#define STORES_UNROLLED 0
+#endif
+
+/* count bytes from p set to v. */
 static void fill_bytes(uint8_t *p, size_t count, uint8_t v)
 {
     size_t i = 0;
-#if !defined(__OPTIMIZE_SIZE__)
+#if STORES_UNROLLED
     for (; count - i >= 8u; i += 8u) {
         p[i] = v;
         p[i + 1u] = v;
@@ -2110,7 +2119,7 @@ static void fill_bytes(uint8_t *p, size_t count, uint8_t v)
 static void zero_entries(uint16_t *z, size_t count)
 {
     size_t i = 0;
-#if !defined(__OPTIMIZE_SIZE__)
+#if STORES_UNROLLED
     for (; count - i >= 8u; i += 8u) {
         z[i] = 0;
         z[i + 1u] = 0;
