@@ -2227,6 +2227,13 @@ static void render_band_clear(frame *fr, const stp_port *drawn, stp_hidden hidde
 #endif
 }
 
+/* Whether a visible polygon can reach the band's rows: the rows of their
+ * extent (frame_extent), none when there are no polygons. */
+static int band_reached(const frame *fr)
+{
+    return fr->y_min <= fr->y_max && fr->rows.y0 <= fr->y_max && fr->rows.y0 + fr->rows.count > fr->y_min;
+}
+
 /* The band's polygons and lines by the hidden-surface method. */
 static void render_band_draw(frame *fr, stp_hidden hidden, const stp_frame_memory *mem, uint32_t polygons)
 {
@@ -2242,6 +2249,8 @@ static void render_band_draw(frame *fr, stp_hidden hidden, const stp_frame_memor
     (void)mem;
     (void)polygons;
 #endif
+    if (!fr->second_pass && !band_reached(fr))
+        return; /* no line, and no polygon reaches the band: replay would draw nothing */
     if (hidden == STP_HIDDEN_ZBUFFER) {
         /* opaque first, then the transparent ones over them */
         replay(fr, 0, 1, 1);
