@@ -2227,12 +2227,15 @@ static void render_band_clear(frame *fr, const stp_port *drawn, stp_hidden hidde
 #endif
 }
 
+#if !STP_LEAN_CODE
 /* Whether a visible polygon can reach the band's rows: the rows of their
- * extent (frame_extent), none when there are no polygons. */
+ * extent (frame_extent), none when there are no polygons.  (Left out
+ * where 32-bit comparisons cost more code than they save time.) */
 static int band_reached(const frame *fr)
 {
     return fr->y_min <= fr->y_max && fr->rows.y0 <= fr->y_max && fr->rows.y0 + fr->rows.count > fr->y_min;
 }
+#endif
 
 /* The band's polygons and lines by the hidden-surface method. */
 static void render_band_draw(frame *fr, stp_hidden hidden, const stp_frame_memory *mem, uint32_t polygons)
@@ -2249,8 +2252,10 @@ static void render_band_draw(frame *fr, stp_hidden hidden, const stp_frame_memor
     (void)mem;
     (void)polygons;
 #endif
+#if !STP_LEAN_CODE
     if (!fr->second_pass && !band_reached(fr))
         return; /* no line, and no polygon reaches the band: replay would draw nothing */
+#endif
     if (hidden == STP_HIDDEN_ZBUFFER) {
         /* opaque first, then the transparent ones over them */
         replay(fr, 0, 1, 1);
