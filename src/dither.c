@@ -7,37 +7,51 @@
 
 static void cell_clear(stp_cell *cell)
 {
-    int i;
+    int i = 0;
     cell->kind = STP_CELL_THRESHOLD;
     cell->width = cell->height = 1;
-    for (i = 0; i < STP_CELL_MAX * STP_CELL_MAX; i++)
+#if !defined(__OPTIMIZE_SIZE__) && UINTPTR_MAX <= 0xFFFFFFFFu
+    /* eight a step (the count is a multiple of 8) on 32-bit targets, where
+     * the compiler leaves the plain loop a loop (64-bit hosts make it
+     * memset): a renderer without a cell makes the default one every
+     * frame */
+    for (; i < STP_CELL_MAX * STP_CELL_MAX; i += 8) {
+        cell->thresholds[i] = 0;
+        cell->thresholds[i + 1] = 0;
+        cell->thresholds[i + 2] = 0;
+        cell->thresholds[i + 3] = 0;
+        cell->thresholds[i + 4] = 0;
+        cell->thresholds[i + 5] = 0;
+        cell->thresholds[i + 6] = 0;
+        cell->thresholds[i + 7] = 0;
+    }
+#endif
+    for (; i < STP_CELL_MAX * STP_CELL_MAX; i++)
         cell->thresholds[i] = 0;
     for (i = 0; i < 5; i++)
         cell->patterns[i] = 0;
     cell->mask = 0;
 }
 
-/* Rank (0..n*n-1) of entry (x, y) in the Bayer matrix of side n, in the
- * orientation of ImageMagick's maps: the recursive construction
+/* The entry y n + x of rank r (0..n*n-1) in the Bayer matrix of side n,
+ * in the orientation of ImageMagick's maps: the recursive construction
  * B(2n)[y][x] = 4 B(n)[y mod n][x mod n] + B(2)[y div n][x div n], except that
- * the 8x8 map is that construction transposed. */
-static uint32_t bayer_rank(uint32_t n, uint32_t x, uint32_t y)
+ * the 8x8 map is that construction transposed.  Each 2x2 split
+ * contributes its quadrant's B(2) value, weighted 1, 4, 16, ... from the
+ * coarsest split to the finest, so r's base-4 digits, the most
+ * significant (at top_shift, 2 log2(n) - 2) first, give the quadrants
+ * from the finest split (bit 0 of x and y) up; B(2) = {{0, 2}, {3, 1}}
+ * puts value v at x = bit 0 of v ^ (v >> 1), y = bit 0 of v.  (Sizes are
+ * powers of two: no division, a library call on cores without a divide.) */
+static uint32_t bayer_entry(uint32_t n, uint32_t top_shift, uint32_t r)
 {
-    static const uint8_t b2[2][2] = {{0, 2}, {3, 1}};
-    uint32_t rank = 0, half;
-    if (n == 8) {
-        uint32_t t = x;
-        x = y;
-        y = t;
+    uint32_t x = 0, y = 0, half, shift = top_shift, v;
+    for (half = 1; half < n; half <<= 1, shift -= 2) {
+        v = (r >> shift) & 3u;
+        x |= ((v ^ (v >> 1)) & 1u) * half;
+        y |= (v & 1u) * half;
     }
-    /* Each 2x2 split contributes its quadrant's B(2) value, weighted 1, 4,
-     * 16, ... from the coarsest split to the finest: summed by Horner's
-     * rule from the finest; the quadrant is a bit test (sizes are powers
-     * of two: no division, a library call per step on cores without a
-     * divide). */
-    for (half = 1; half < n; half <<= 1)
-        rank = rank * 4u + b2[(y & half) != 0][(x & half) != 0];
-    return rank;
+    return n == 8 ? x * n + y : y * n + x;
 }
 
 /* Threshold of rank r out of m for a spacing, 0..255. */
@@ -70,16 +84,36 @@ static uint8_t spaced_threshold(uint32_t r, uint32_t m, stp_spacing spacing)
 
 int stp_cell_bayer_spaced(stp_cell *cell, int n, stp_spacing spacing)
 {
-    uint32_t x, y, m;
+    uint32_t r, m, d, q, rem, q_step, rem_step, top_shift = 0, half;
     if (cell == 0 || (n != 2 && n != 4 && n != 8 && n != 16))
         return -1;
     cell_clear(cell);
     cell->width = cell->height = (uint8_t)n;
     m = (uint32_t)(n * n);
-    for (y = 0; y < (uint32_t)n; y++)
-        for (x = 0; x < (uint32_t)n; x++)
-            cell->thresholds[y * (uint32_t)n + x] =
-                spaced_threshold(bayer_rank((uint32_t)n, x, y), m, spacing);
+    for (half = 2; half < (uint32_t)n; half <<= 1)
+        top_shift += 2;
+    if (spacing != STP_SPACING_LINEAR) {
+        for (r = 0; r < m; r++)
+            cell->thresholds[bayer_entry((uint32_t)n, top_shift, r)] = spaced_threshold(r, m, spacing);
+        return 0;
+    }
+    /* linear thresholds stepped rank by rank, not divided: the quotient
+     * and remainder of (255 (r + 1) + m) / (m + 1) (spaced_threshold) grow
+     * by those of 255 / (m + 1) a rank, the remainder carrying at most once */
+    d = m + 1u;
+    q = (255u + m) / d;
+    rem = (255u + m) % d;
+    q_step = 255u / d;
+    rem_step = 255u % d;
+    for (r = 0; r < m; r++) {
+        cell->thresholds[bayer_entry((uint32_t)n, top_shift, r)] = (uint8_t)(q - 1u);
+        q += q_step;
+        rem += rem_step;
+        if (rem >= d) {
+            rem -= d;
+            q++;
+        }
+    }
     return 0;
 }
 

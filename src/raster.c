@@ -1560,6 +1560,49 @@ static inline void replay_line_op(const frame *fr, const stp_instr *in, const st
     }
 }
 
+/* Whether replay's pass (0 all, 1 opaque only, 2 transparent only) draws
+ * the polygons under transmission t. */
+static int replay_draws(int skip_polygons, int pass, stp_fix t)
+{
+    return !skip_polygons && (pass == 0 || (pass == 1) == (t == 0));
+}
+
+/* How replay draws the flat narrow triangles: 0 by draw_polygon; 1 by
+ * draw_triangle; 2 by draw_triangle with several bands, where a triangle
+ * off the band is skipped in replay rather than called (the call's
+ * arguments cost more than the test). */
+static int replay_triangle_path(const frame *fr)
+{
+    if (!TRIANGLE_PATH(fr))
+        return 0;
+    return !STP_LEAN_CODE && fr->rows.count < fr->r->height ? 2 : 1;
+}
+
+#if STP_WITH_TRIANGLE_PATH && !STP_LEAN_CODE
+/* Whether triangle v lies above or below the band's rows (rows: band
+ * top and end, Q27.4): draw_triangle and draw_polygon would return at
+ * once, having changed nothing. */
+STP_HOT_INLINE int triangle_off_band(const stp_instr *v, const stp_band_rows *rows)
+{
+    int32_t top = rows->top, end = rows->end;
+    return (v[0].y <= top && v[1].y <= top && v[2].y <= top) || (v[0].y >= end && v[1].y >= end && v[2].y >= end);
+}
+
+/* replay's triangle record v (df[k]) with several bands: 1 when skipped
+ * off the band or drawn by draw_triangle, 0 when it is draw_polygon's
+ * (smooth, or too wide). */
+STP_HOT_INLINE int replay_banded_triangle(frame *fr, uint32_t k, const stp_instr *v, paint style, int use_z,
+                                          stp_fix t, uint32_t ordinal)
+{
+    if (triangle_off_band(v, &fr->rows))
+        return 1;
+    if (polygon_smooth(v) || !STP_TRIANGLE_NARROW(v))
+        return 0;
+    draw_triangle(fr, k, v, style, use_z, t, ordinal);
+    return 1;
+}
+#endif
+
 /* Walk the visible segments in display order: polygons (unless skip_polygons)
  * and lines, each with the style in force. */
 /* pass: which polygons to draw: 0 all, 1 opaque only, 2 transparent only. */
@@ -1567,8 +1610,8 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
 {
     stp_renderer *r = fr->r;
     uint32_t ordinal = 0;
-    int s, triangle_path = TRIANGLE_PATH(fr); /* once, not per polygon */
-    (void)triangle_path; /* read only with the triangle path compiled in */
+    int s, tri_path = replay_triangle_path(fr); /* once, not per polygon */
+    (void)tri_path; /* read only with the triangle path compiled in */
     for (s = 0; s < STP_MAX_SEGMENTS; s++) {
         const stp_segment *seg = &r->segments[s];
         paint style = r->fill_style, line_style = r->fill_style;
@@ -1579,19 +1622,25 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
         const stp_instr *in = &r->df[seg->start];
         uint32_t k, end = seg->end;
         /* whether this pass draws the polygons that follow (t as it
-         * stands); tri: and flat narrow triangles by draw_triangle */
-        int draw = !skip_polygons && pass != 2, tri = draw && triangle_path;
+         * stands); tri: and triangles by the triangle path (tri_path) */
+        int draw = replay_draws(skip_polygons, pass, 0), tri = draw ? tri_path : 0;
         if (!seg->used || !seg->visible)
             continue;
         for (k = seg->start; k < end; k++, in++) {
             int32_t op = in->op;
 #if STP_WITH_TRIANGLE_PATH
-            if (op == 3 && tri && !polygon_smooth(in) && STP_TRIANGLE_NARROW(in)) {
+            if (op == 3 && tri == 1 && !polygon_smooth(in) && STP_TRIANGLE_NARROW(in)) {
                 /* the common record first, its advance a constant */
                 draw_triangle(fr, k, in, style, use_z, t, ordinal);
                 ordinal++;
                 k += 2;
                 in += 2;
+#if !STP_LEAN_CODE
+            } else if (op == 3 && tri == 2 && replay_banded_triangle(fr, k, in, style, use_z, t, ordinal)) {
+                ordinal++;
+                k += 2;
+                in += 2;
+#endif
             } else
 #endif
             if (op >= 3) {
@@ -1602,8 +1651,8 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
                 in += op - 1;
             } else if (op == STP_OP_TRANSPARENCY) {
                 t = in->x;
-                draw = !skip_polygons && (pass == 0 || (pass == 1) == (t == 0));
-                tri = draw && triangle_path;
+                draw = replay_draws(skip_polygons, pass, t);
+                tri = draw ? tri_path : 0;
                 (void)tri; /* read only with the triangle path compiled in */
             } else if (op == STP_OP_SHADE) {
                 style = paint_of(fr, in);
@@ -1739,6 +1788,64 @@ static void frame_extent(frame *fr, uint32_t count, const extent *ex)
         fr->y_max = fr->r->height - 1;
 }
 
+/* Whether vertex v lies outside the extent (lo, w) of each coordinate. */
+#define VERTEX_OUTSIDE(v, lo, w, xlo, xw, ylo, yw)                                                                   \
+    ((uint32_t)(v).z - (uint32_t)(lo) > (w) || (uint32_t)(v).x - (uint32_t)(xlo) > (xw) ||                         \
+     (uint32_t)(v).y - (uint32_t)(ylo) > (yw))
+
+/* Widen *ex by the run of triangles and SHADE records from in (a
+ * triangle), to end or the first other record, for the Z buffer's scan
+ * (no sort entries, so no styles); *count counts the triangles (0 before
+ * the frame's first: ex is then made its first vertex).  Returns where
+ * the run stopped.  Out of line, with the extent in locals: its six
+ * values, the record pointer and a scratch register are ARMv6-M's eight
+ * low registers, so a triangle within the extent costs nine loads,
+ * subtractions and compares, and no update.  Builds for size take the
+ * general loop (scan_polygons) alone. */
+#if !defined(__OPTIMIZE_SIZE__)
+STP_NOINLINE const stp_instr *scan_triangles(extent *ex_io, const stp_instr *in, const stp_instr *end,
+                                             uint32_t *count_io)
+{
+    const stp_instr *v;
+    uint32_t count = *count_io, w, xw, yw;
+    int32_t lo, xlo, ylo, i;
+    if (count == 0)
+        extent_vertex(ex_io, in, 1);
+    lo = ex_io->key_min;
+    w = ex_io->key_width;
+    xlo = ex_io->x_lo;
+    xw = ex_io->x_width;
+    ylo = ex_io->y_lo;
+    yw = ex_io->y_width;
+    for (v = in; v < end; v++) {
+        if (v->op == STP_OP_SHADE)
+            continue;
+        if (v->op != 3)
+            break;
+        /* the widening a loop: unrolled, the compiler keeps the loads of
+         * the test for it, which takes registers the test needs */
+        if (STP_UNLIKELY(VERTEX_OUTSIDE(v[0], lo, w, xlo, xw, ylo, yw) ||
+                         VERTEX_OUTSIDE(v[1], lo, w, xlo, xw, ylo, yw) ||
+                         VERTEX_OUTSIDE(v[2], lo, w, xlo, xw, ylo, yw)))
+            for (i = 0; i < 3; i++) {
+                extent_widen(&lo, &w, v[i].z, 0);
+                extent_widen(&xlo, &xw, v[i].x, 0);
+                extent_widen(&ylo, &yw, v[i].y, 0);
+            }
+        count++;
+        v += 2;
+    }
+    ex_io->key_min = lo;
+    ex_io->key_width = w;
+    ex_io->x_lo = xlo;
+    ex_io->x_width = xw;
+    ex_io->y_lo = ylo;
+    ex_io->y_width = yw;
+    *count_io = count;
+    return v;
+}
+#endif
+
 /* Collect visible polygons for the painter (sort != NULL: entries keyed by
  * their farthest vertex) and the depth-key range. */
 static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
@@ -1760,6 +1867,11 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
             continue;
         for (in = df + seg->start; in < end; in++) {
             int32_t op = in->op;
+#if !defined(__OPTIMIZE_SIZE__)
+            if (op == 3 && !sort) { /* the usual run: a mesh's triangles */
+                in = scan_triangles(&ex, in, end, &count) - 1;
+            } else
+#endif
             if (op >= 3) {
                 extent_add(&ex, in, op, count);
                 if (sort)
@@ -1971,6 +2083,59 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
 #endif
 }
 
+/* The clearing loops below eight stores a step on 32-bit targets (a
+ * Cortex-M0+ spends as much on a loop's count, compare and branch as on
+ * two stores, and the compiler leaves a counted loop a loop there); the
+ * plain loop elsewhere: 64-bit hosts make it memset, builds for size keep
+ * it small. */
+#if !defined(__OPTIMIZE_SIZE__) && UINTPTR_MAX <= 0xFFFFFFFFu
+#define STORES_UNROLLED 1
+#else
+#define STORES_UNROLLED 0
+#endif
+
+/* count bytes from p set to v. */
+static void fill_bytes(uint8_t *p, size_t count, uint8_t v)
+{
+    size_t i = 0;
+#if STORES_UNROLLED
+    for (; count - i >= 8u; i += 8u) {
+        p[i] = v;
+        p[i + 1u] = v;
+        p[i + 2u] = v;
+        p[i + 3u] = v;
+        p[i + 4u] = v;
+        p[i + 5u] = v;
+        p[i + 6u] = v;
+        p[i + 7u] = v;
+    }
+#endif
+    for (; i < count; i++)
+        p[i] = v;
+}
+
+#if STP_WITH_ZBUFFER
+/* count Z-buffer entries from z set to 0, as fill_bytes. */
+static void zero_entries(uint16_t *z, size_t count)
+{
+    size_t i = 0;
+#if STORES_UNROLLED
+    for (; count - i >= 8u; i += 8u) {
+        z[i] = 0;
+        z[i + 1u] = 0;
+        z[i + 2u] = 0;
+        z[i + 3u] = 0;
+        z[i + 4u] = 0;
+        z[i + 5u] = 0;
+        z[i + 6u] = 0;
+        z[i + 7u] = 0;
+    }
+#endif
+    for (; i < count; i++)
+        z[i] = 0;
+}
+#endif
+
 /* Band y0's rows cleared to the background and, with the Z buffer, its
  * entries where a polygon can reach set farther than any polygon. */
 /* A MONO1 band whose rows hold no padding bits (width 8 stride) cleared
@@ -1979,9 +2144,9 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
  * row.  0 (nothing written) when the band is not so. */
 static int band_clear_uniform(frame *fr, const stp_port *drawn, paint background)
 {
-    size_t i, count = fr->stride * (size_t)fr->rows.count; /* below band_size */
+    size_t count = fr->stride * (size_t)fr->rows.count; /* below band_size */
     uint32_t cy;
-    uint8_t pattern, *band = fr->band; /* a local: a byte store may alias fr */
+    uint8_t pattern;
     if (drawn->format != STP_PIXEL_MONO1 || (size_t)fr->r->width != 8u * fr->stride)
         return 0;
     use_style(fr, background); /* patterns[] for the background, when mono_fill */
@@ -1991,8 +2156,7 @@ static int band_clear_uniform(frame *fr, const stp_port *drawn, paint background
     for (cy = 1; cy < fr->cell->height; cy++)
         if (fr->patterns[cy] != pattern)
             return 0;
-    for (i = 0; i < count; i++) /* a counted loop: compilers make it memset */
-        band[i] = pattern;
+    fill_bytes(fr->band, count, pattern);
     return 1;
 }
 
@@ -2023,13 +2187,12 @@ static void page_fill_background(const frame *fr, uint8_t *page, uint32_t k)
  * which set one bit of each byte (stp_halftone_fill_page_run). */
 static int band_clear_pages(frame *fr, paint background)
 {
-    size_t i, count = fr->stride * (((size_t)fr->rows.count + 7u) / 8u); /* within band_size */
+    size_t count = fr->stride * (((size_t)fr->rows.count + 7u) / 8u); /* within band_size */
     uint32_t k;
     uint8_t *band = fr->band; /* a local: a byte store may alias fr */
     use_style(fr, background); /* patterns[] for the background, when mono_fill */
     if (background != fr->pattern_style) {
-        for (i = 0; i < count; i++) /* a counted loop: compilers make it memset */
-            band[i] = 0;
+        fill_bytes(band, count, 0);
         return 0;
     }
     for (k = 0; 8u * k < fr->rows.count; k++)
@@ -2055,17 +2218,24 @@ static void render_band_clear(frame *fr, const stp_port *drawn, stp_hidden hidde
         /* farther than any polygon (they map to >= 1), where one can
          * reach: a Z test reads no other entry */
         uint32_t y_end = y0 + fr->rows.count - 1 < fr->y_max ? y0 + fr->rows.count - 1 : fr->y_max;
-        size_t i, count = (size_t)(fr->x_max - fr->x_min) + 1u;
-        for (y = y0 > fr->y_min ? y0 : fr->y_min; y <= y_end; y++) {
-            uint16_t *z = fr->zbuf + (size_t)(y - y0) * r->width + fr->x_min;
-            for (i = 0; i < count; i++) /* a counted loop: compilers make it memset */
-                z[i] = 0;
-        }
+        size_t count = (size_t)(fr->x_max - fr->x_min) + 1u;
+        for (y = y0 > fr->y_min ? y0 : fr->y_min; y <= y_end; y++)
+            zero_entries(fr->zbuf + (size_t)(y - y0) * r->width + fr->x_min, count);
     }
 #else
     (void)hidden;
 #endif
 }
+
+#if !STP_LEAN_CODE
+/* Whether a visible polygon can reach the band's rows: the rows of their
+ * extent (frame_extent), none when there are no polygons.  (Left out
+ * where 32-bit comparisons cost more code than they save time.) */
+static int band_reached(const frame *fr)
+{
+    return fr->y_min <= fr->y_max && fr->rows.y0 <= fr->y_max && fr->rows.y0 + fr->rows.count > fr->y_min;
+}
+#endif
 
 /* The band's polygons and lines by the hidden-surface method. */
 static void render_band_draw(frame *fr, stp_hidden hidden, const stp_frame_memory *mem, uint32_t polygons)
@@ -2081,6 +2251,10 @@ static void render_band_draw(frame *fr, stp_hidden hidden, const stp_frame_memor
 #else
     (void)mem;
     (void)polygons;
+#endif
+#if !STP_LEAN_CODE
+    if (!fr->second_pass && !band_reached(fr))
+        return; /* no line, and no polygon reaches the band: replay would draw nothing */
 #endif
     if (hidden == STP_HIDDEN_ZBUFFER) {
         /* opaque first, then the transparent ones over them */

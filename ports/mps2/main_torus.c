@@ -40,9 +40,12 @@ static stp_mesh_vertex scratch[TORUS_MESH_VERTICES];
 static stp_vec3 vertices[3 * TORUS_TRIANGLES];
 #define TORUS_ENTER(r) torus_enter(r, vertices)
 #endif
-static uint8_t band[STRIDE * STP_FW_BAND_ROWS];
+/* the band and the picture as words (STRIDE is a multiple of 4): keep_band
+ * copies a word at a time; the renderer writes the band's bytes, which
+ * may alias any object */
+static uint32_t band[STRIDE * STP_FW_BAND_ROWS / 4u];
 static uint16_t zbuf[WIDTH * STP_FW_BAND_ROWS];
-static uint8_t picture[STRIDE * HEIGHT];
+static uint32_t picture[STRIDE * HEIGHT / 4u];
 #ifndef STP_FW_KEEP_SETUP
 #define STP_FW_KEEP_SETUP (STP_FW_BAND_ROWS < HEIGHT)
 #endif
@@ -51,12 +54,19 @@ static uint8_t picture[STRIDE * HEIGHT];
 static stp_polygon_setup setup[TORUS_TRIANGLES];
 #endif
 
+/* pixels is band: read as the words it is, a row's four a step */
 static int keep_band(stp_port *port, uint32_t y0, uint32_t rows, const uint8_t *pixels, size_t stride)
 {
-    uint32_t i, n = rows * (uint32_t)stride;
+    const uint32_t *from = (const uint32_t *)(const void *)pixels;
+    uint32_t i, *to = &picture[y0 * STRIDE / 4u];
     (void)port;
-    for (i = 0; i < n; i++)
-        picture[y0 * STRIDE + i] = pixels[i];
+    (void)stride; /* STRIDE */
+    for (i = 0; i < 4u * rows; i += 4u) {
+        to[i] = from[i];
+        to[i + 1u] = from[i + 1u];
+        to[i + 2u] = from[i + 2u];
+        to[i + 3u] = from[i + 3u];
+    }
     return 0;
 }
 
@@ -75,11 +85,12 @@ static void dump_picture(void)
 {
     static const char digits[] = "0123456789abcdef";
     char line[2 * STRIDE + 2];
+    const uint8_t *bytes = (const uint8_t *)picture;
     uint32_t y, i;
     for (y = 0; y < HEIGHT; y++) {
         for (i = 0; i < STRIDE; i++) {
-            line[2 * i] = digits[picture[y * STRIDE + i] >> 4];
-            line[2 * i + 1] = digits[picture[y * STRIDE + i] & 15u];
+            line[2 * i] = digits[bytes[y * STRIDE + i] >> 4];
+            line[2 * i + 1] = digits[bytes[y * STRIDE + i] & 15u];
         }
         line[2 * STRIDE] = '\n';
         line[2 * STRIDE + 1] = '\0';
@@ -116,7 +127,7 @@ int main(void)
     port.format = STP_PIXEL_MONO1;
     port.flush = keep_band;
     port.user = 0;
-    mem.band = band;
+    mem.band = (uint8_t *)band;
     mem.band_size = sizeof band;
     mem.band_rows = STP_FW_BAND_ROWS;
     mem.zbuf = zbuf;
