@@ -52,8 +52,7 @@ static int64_t mul_wide(int64_t a, int32_t b)
 }
 #endif
 
-/* depth_term_short (below) for g's magnitude m < 2^29 (extent >= 0);
- * also gradients_short's */
+/* depth_term_short (below) for g's magnitude m < 2^29 (extent >= 0) */
 STP_HOT_INLINE int depth_magnitude_short(uint32_t m, int32_t extent)
 {
     uint32_t hi;
@@ -820,10 +819,9 @@ static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, 
  * (stp_quotient_q12_by_recip; on ARMv6-M r without a division,
  * stp_recip_u32: the library's is ~150 instructions).  Returns 1 when the
  * triangle's depth terms are short (depth_terms_short) by the quotients'
- * magnitudes and extents at least its own (x_ext, y_ext): depth_term_short
- * of a g within int32 tests |g| < 2^29, then depth_magnitude_short(|g|),
- * which a larger extent passes only where the true one does; 0: not
- * known. */
+ * magnitudes and extents at least its own (x_ext, y_ext < 2^14): |g| <
+ * 2^29 and |g| extent < 2^29, as depth_term_short asks, by a test that
+ * passes only where the true one does; 0: not known. */
 static int gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t *gb, int32_t x_ext, int32_t y_ext)
 {
     uint32_t ua = (a < 0 ? 0u - (uint32_t)a : (uint32_t)a) << 12, ub = (b < 0 ? 0u - (uint32_t)b : (uint32_t)b) << 12,
@@ -846,11 +844,16 @@ static int gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t
     (void)y_ext;
     return 0;
 #else
-    return (qa | qb) < ((uint32_t)1 << 29) && depth_magnitude_short(qa, x_ext) && depth_magnitude_short(qb, y_ext);
+    /* q extent < 2^29 from (floor(q / 2^12) + 1) extent < 2^17, which
+     * exceeds q extent / 2^12 (extents below 2^14: the product below
+     * 2^31): a product a term, short by at most 2^12 extent of the exact
+     * test (depth_magnitude_short), which a torus's faces never need */
+    return (qa | qb) < ((uint32_t)1 << 29) && ((qa >> 12) + 1u) * (uint32_t)x_ext < ((uint32_t)1 << 17) &&
+           ((qb >> 12) + 1u) * (uint32_t)y_ext < ((uint32_t)1 << 17);
 #endif
 }
 
-/* |p| + |q| (|p|, |q| < 2^14): at least max(0, p, q) - min(0, p, q), the
+/* |p| + |q| (|p|, |q| < 2^20): at least max(0, p, q) - min(0, p, q), the
  * extent of three coordinates relative to the first (equal to it when p
  * and q differ in sign, at most twice it), fewer instructions */
 static int32_t extent_bound(int32_t p, int32_t q)
@@ -862,8 +865,8 @@ static int32_t extent_bound(int32_t p, int32_t q)
 /* A triangle's plane: its Newell sums are its cross product, exactly
  * (relative coordinates below 2^20, depths below 2^16); its three Q12
  * depths (below 2^28) sum below 2^30.  Without wide arithmetic a small
- * triangle (relative x in [-2^14, 2^14), y in [-2^13, 2^13): products
- * below 2^30, so the sums fit int32, and |a|, |b| < 2^19) in 32 bits: no
+ * triangle (offsets from the first vertex with |x1| + |x2| < 2^14, |y1| +
+ * |y2| < 2^13: products below 2^30, so the sums fit int32, and |a|, |b| < 2^19) in 32 bits: no
  * clamp (|a|, |b| < 2^28), the same values.  With wide arithmetic the
  * body is short (no 32-bit route) and the draw path inlines it: its call
  * cost a fifth of it (the host's torus). */
@@ -887,16 +890,15 @@ DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_
              sd = (uint32_t)d0 + (uint32_t)d1 + (uint32_t)d2;
     int64_t a, b, c;
 #if !STP_WIDE_ARITH /* 64-bit hosts: 64-bit products and quotients cost what 32-bit ones do */
-    /* -2^14 <= x1, x2 < 2^14 and -2^13 <= y1, y2 < 2^13: each offset by
-     * the bound is below twice it, a power of two, so both by their OR
-     * (products below 2^30 still: |e| < 2^16); |a|, |b| < 2^19 by one
-     * unsigned comparison each */
-    const uint32_t xs = (uint32_t)1 << 14, ys = (uint32_t)1 << 13, gs = (uint32_t)1 << 19;
-    if (((((uint32_t)x1 + xs) | ((uint32_t)x2 + xs)) >> 15) == 0 &&
-        ((((uint32_t)y1 + ys) | ((uint32_t)y2 + ys)) >> 14) == 0) {
+    /* |x1| + |x2| < 2^14 and |y1| + |y2| < 2^13 (the extents
+     * gradients_short takes, a test each): products below 2^30 still (|e|
+     * < 2^16); |a|, |b| < 2^19 by one unsigned comparison each */
+    const uint32_t gs = (uint32_t)1 << 19;
+    int32_t x_ext = extent_bound(x1, x2), y_ext = extent_bound(y1, y2);
+    if (x_ext < ((int32_t)1 << 14) && y_ext < ((int32_t)1 << 13)) {
         int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
         if (c32 != 0 && (uint32_t)a32 + (gs - 1u) < 2u * gs - 1u && (uint32_t)b32 + (gs - 1u) < 2u * gs - 1u) {
-            int terms = gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy, extent_bound(x1, x2), extent_bound(y1, y2));
+            int terms = gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy, x_ext, y_ext);
             pl->xc = (int32_t)stp_div3_u32(sx); /* coordinates below 2^20 */
             pl->yc = (int32_t)stp_div3_u32(sy);
             pl->dc = stp_div3_u32(sd);
