@@ -767,18 +767,37 @@ static int32_t depth_q12_keep(frame *fr, key_mapping *m, int32_t key)
 #endif
 
 /* a key's Q12 depth: kept, or made (and kept); a hit (three in four on a
- * mesh) falls through, a miss branches to its call */
-static inline int32_t depth_q12(frame *fr, int32_t key)
+ * mesh) falls through, a miss branches to its call.  depth_q12_in: the
+ * kept mappings' address (fr->cached) a register the caller keeps for
+ * several keys (ARMv6-M: the field's offset costs two instructions a load,
+ * two loads a key). */
+static inline int32_t depth_q12_in(frame *fr, void *cache, int32_t key)
 {
 #if KEY_CACHE > 0
-    key_mapping *m = &fr->cached[KEY_SLOT(key)];
+    key_mapping *m = (key_mapping *)cache + KEY_SLOT(key);
     if (STP_UNLIKELY(m->key != key)) /* every slot holds a true mapping (render_prepare_fill) */
         return depth_q12_keep(fr, m, key);
     return m->q12;
 #else
+    (void)cache;
     return depth_q12_made(fr, key);
 #endif
 }
+
+static inline int32_t depth_q12(frame *fr, int32_t key)
+{
+#if KEY_CACHE > 0
+    return depth_q12_in(fr, fr->cached, key);
+#else
+    return depth_q12_made(fr, key);
+#endif
+}
+
+#if KEY_CACHE > 0
+#define DEPTH_KEPT(fr) ((void *)(fr)->cached)
+#else
+#define DEPTH_KEPT(fr) ((void *)0)
+#endif
 
 /* The polygon's depth plane, by Newell's sums on (x, y, depth) over its
  * projected vertices: exact for planar polygons, a best fit otherwise.
@@ -882,7 +901,8 @@ static int32_t extent_bound(int32_t p, int32_t q)
 #define PLANE_SHORT 2
 DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
 {
-    int32_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z), d2 = depth_q12(fr, v[2].z);
+    void *kept = DEPTH_KEPT(fr);
+    int32_t d0 = depth_q12_in(fr, kept, v[0].z), d1 = depth_q12_in(fr, kept, v[1].z), d2 = depth_q12_in(fr, kept, v[2].z);
     int32_t x1 = v[1].x - v[0].x, y1 = v[1].y - v[0].y, x2 = v[2].x - v[0].x, y2 = v[2].y - v[0].y;
     int32_t e1 = (d1 >> 12) - (d0 >> 12), e2 = (d2 >> 12) - (d0 >> 12);
     uint32_t sx = (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x,
