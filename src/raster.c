@@ -885,8 +885,8 @@ static int32_t extent_bound(int32_t p, int32_t q)
  * (relative coordinates below 2^20, depths below 2^16); its three Q12
  * depths (below 2^28) sum below 2^30.  Without wide arithmetic a small
  * triangle (offsets from the first vertex with |x1| + |x2| < 2^14, |y1| +
- * |y2| < 2^13: products below 2^30, so the sums fit int32, and |a|, |b| < 2^19) in 32 bits: no
- * clamp (|a|, |b| < 2^28), the same values.  With wide arithmetic the
+ * |y2| < 2^13: products below 2^30, so the sums fit int32, and |a|, |b| <
+ * 2^19) in 32 bits: no clamp (|a|, |b| < 2^28), the same values.  With wide arithmetic the
  * body is short (no 32-bit route) and the draw path inlines it: its call
  * cost a fifth of it (the host's torus). */
 #if STP_WIDE_ARITH
@@ -917,13 +917,13 @@ DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_
     int32_t x_ext = extent_bound(x1, x2), y_ext = extent_bound(y1, y2);
     if (x_ext < ((int32_t)1 << 14) && y_ext < ((int32_t)1 << 13)) {
         int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
-        if (c32 != 0 && (uint32_t)a32 + (gs - 1u) < 2u * gs - 1u && (uint32_t)b32 + (gs - 1u) < 2u * gs - 1u) {
-            int terms = gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy, x_ext, y_ext);
-            pl->xc = (int32_t)stp_div3_u32(sx); /* coordinates below 2^20 */
-            pl->yc = (int32_t)stp_div3_u32(sy);
-            pl->dc = stp_div3_u32(sd);
-            return terms ? PLANE_SHORT : PLANE_MADE;
-        }
+        /* the centre first, its sums not kept across the quotients (a
+         * route that falls through makes it again, the same) */
+        pl->xc = (int32_t)stp_div3_u32(sx); /* coordinates below 2^20 */
+        pl->yc = (int32_t)stp_div3_u32(sy);
+        pl->dc = stp_div3_u30(sd); /* below 2^30 */
+        if (c32 != 0 && (uint32_t)a32 + (gs - 1u) < 2u * gs - 1u && (uint32_t)b32 + (gs - 1u) < 2u * gs - 1u)
+            return gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy, x_ext, y_ext) ? PLANE_SHORT : PLANE_MADE;
         a = a32;
         b = b32;
         c = c32;
