@@ -875,10 +875,12 @@ static int gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t
 /* |p| + |q| (|p|, |q| < 2^20): at least max(0, p, q) - min(0, p, q), the
  * extent of three coordinates relative to the first (equal to it when p
  * and q differ in sign, at most twice it), fewer instructions */
+#if !defined(__OPTIMIZE_SIZE__)
 static int32_t extent_bound(int32_t p, int32_t q)
 {
     return (p < 0 ? -p : p) + (q < 0 ? -q : q);
 }
+#endif
 #endif
 
 /* A triangle's plane: its Newell sums are its cross product, exactly
@@ -901,8 +903,12 @@ static int32_t extent_bound(int32_t p, int32_t q)
 #define PLANE_SHORT 2
 DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
 {
+#if defined(__OPTIMIZE_SIZE__) /* builds for size: depth_q12's one copy, called (lm3s6965: 16 bytes) */
+    int32_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z), d2 = depth_q12(fr, v[2].z);
+#else
     void *kept = DEPTH_KEPT(fr);
     int32_t d0 = depth_q12_in(fr, kept, v[0].z), d1 = depth_q12_in(fr, kept, v[1].z), d2 = depth_q12_in(fr, kept, v[2].z);
+#endif
     int32_t x1 = v[1].x - v[0].x, y1 = v[1].y - v[0].y, x2 = v[2].x - v[0].x, y2 = v[2].y - v[0].y;
     int32_t e1 = (d1 >> 12) - (d0 >> 12), e2 = (d2 >> 12) - (d0 >> 12);
     uint32_t sx = (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x,
@@ -914,8 +920,19 @@ DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_
      * gradients_short takes, a test each): products below 2^30 still (|e|
      * < 2^16); |a|, |b| < 2^19 by one unsigned comparison each */
     const uint32_t gs = (uint32_t)1 << 19;
+#if defined(__OPTIMIZE_SIZE__)
+    /* builds for size (gradients_short takes no extents): -2^14 <= x1, x2
+     * < 2^14 and -2^13 <= y1, y2 < 2^13 (products below 2^30 as well),
+     * each offset by the bound below twice it, a power of two, so both by
+     * their OR (lm3s6965: 24 bytes fewer) */
+    const uint32_t xs = (uint32_t)1 << 14, ys = (uint32_t)1 << 13;
+    const int32_t x_ext = 0, y_ext = 0;
+    if (((((uint32_t)x1 + xs) | ((uint32_t)x2 + xs)) >> 15) == 0 &&
+        ((((uint32_t)y1 + ys) | ((uint32_t)y2 + ys)) >> 14) == 0) {
+#else
     int32_t x_ext = extent_bound(x1, x2), y_ext = extent_bound(y1, y2);
     if (x_ext < ((int32_t)1 << 14) && y_ext < ((int32_t)1 << 13)) {
+#endif
         int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
         /* the centre first, its sums not kept across the quotients (a
          * route that falls through makes it again, the same) */
