@@ -875,6 +875,21 @@ static int gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t
 /* |p| + |q| (|p|, |q| < 2^20): at least max(0, p, q) - min(0, p, q), the
  * extent of three coordinates relative to the first (equal to it when p
  * and q differ in sign, at most twice it), fewer instructions */
+/* A small triangle's centre (depth_plane_from_sums's, n = 3): coordinate
+ * sums below 2^22, its depths' below 2^30 (stp_div3_u30 without the
+ * tests; builds for size share stp_div3_u32) */
+#if defined(__OPTIMIZE_SIZE__)
+#define STP_CENTRE_DIV3(s) stp_div3_u32(s)
+#else
+#define STP_CENTRE_DIV3(s) stp_div3_u30(s)
+#endif
+STP_HOT_INLINE void triangle_centre(depth_plane *pl, uint32_t sx, uint32_t sy, uint32_t sd)
+{
+    pl->xc = (int32_t)stp_div3_u32(sx);
+    pl->yc = (int32_t)stp_div3_u32(sy);
+    pl->dc = STP_CENTRE_DIV3(sd);
+}
+
 #if !defined(__OPTIMIZE_SIZE__)
 static int32_t extent_bound(int32_t p, int32_t q)
 {
@@ -934,13 +949,19 @@ DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_
     if (x_ext < ((int32_t)1 << 14) && y_ext < ((int32_t)1 << 13)) {
 #endif
         int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
+#if !defined(__OPTIMIZE_SIZE__)
         /* the centre first, its sums not kept across the quotients (a
-         * route that falls through makes it again, the same) */
-        pl->xc = (int32_t)stp_div3_u32(sx); /* coordinates below 2^20 */
-        pl->yc = (int32_t)stp_div3_u32(sy);
-        pl->dc = stp_div3_u30(sd); /* below 2^30 */
-        if (c32 != 0 && (uint32_t)a32 + (gs - 1u) < 2u * gs - 1u && (uint32_t)b32 + (gs - 1u) < 2u * gs - 1u)
-            return gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy, x_ext, y_ext) ? PLANE_SHORT : PLANE_MADE;
+         * route that falls through makes it again; builds for size make
+         * it after them, as an ATmega2560's large triangles fall through) */
+        triangle_centre(pl, sx, sy, sd);
+#endif
+        if (c32 != 0 && (uint32_t)a32 + (gs - 1u) < 2u * gs - 1u && (uint32_t)b32 + (gs - 1u) < 2u * gs - 1u) {
+            int terms = gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy, x_ext, y_ext);
+#if defined(__OPTIMIZE_SIZE__)
+            triangle_centre(pl, sx, sy, sd);
+#endif
+            return terms ? PLANE_SHORT : PLANE_MADE;
+        }
         a = a32;
         b = b32;
         c = c32;
