@@ -863,12 +863,12 @@ static int gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t
     (void)y_ext;
     return 0;
 #else
-    /* q extent < 2^29 from (floor(q / 2^12) + 1) extent < 2^17, which
-     * exceeds q extent / 2^12 (extents below 2^14: the product below
-     * 2^31): a product a term, short by at most 2^12 extent of the exact
-     * test (depth_magnitude_short), which a torus's faces never need */
-    return (qa | qb) < ((uint32_t)1 << 29) && ((qa >> 12) + 1u) * (uint32_t)x_ext < ((uint32_t)1 << 17) &&
-           ((qb >> 12) + 1u) * (uint32_t)y_ext < ((uint32_t)1 << 17);
+    /* q extent < 2^29 from (floor(q / 2^14) + 1) extent < 2^15, which
+     * exceeds q extent / 2^14 (q < 2^31 and extents below 2^14: the
+     * product below 2^31), and with it q < 2^29 (extents >= 1, c != 0): a
+     * product a term, short by at most 2^14 extent of the exact test
+     * (depth_magnitude_short), which a torus's faces never need */
+    return ((((qa >> 14) + 1u) * (uint32_t)x_ext) | (((qb >> 14) + 1u) * (uint32_t)y_ext)) < ((uint32_t)1 << 15);
 #endif
 }
 
