@@ -98,11 +98,13 @@ static inline int64_t stp_slope_q16(int32_t num, int32_t den)
 static inline int32_t stp_slope_q16_short(int32_t num, int32_t den)
 {
 #if STP_SLOPE_RECIP > 0
+    /* (the table's case the likely one: the compiler lays it out straight,
+     * the division apart) */
     uint32_t un = num < 0 ? 0u - (uint32_t)num : (uint32_t)num;
-    if (den >= 2 && den < STP_SLOPE_RECIP) {
+    if (!STP_UNLIKELY(den < 2 || den >= STP_SLOPE_RECIP)) {
         uint32_t m = stp_slope_recip[den];
-        if (STP_SLOPE_RECIP_FITS(un, m)) {
-            uint32_t q = un * (m >> 16) + ((un * (m & 0xFFFFu)) >> 16);
+        if (!STP_UNLIKELY(!STP_SLOPE_RECIP_FITS(un, m))) {
+            uint32_t q = un * (m >> 16) + ((un * (uint16_t)m) >> 16);
             return num < 0 ? -(int32_t)q : (int32_t)q;
         }
     }

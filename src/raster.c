@@ -52,8 +52,7 @@ static int64_t mul_wide(int64_t a, int32_t b)
 }
 #endif
 
-/* depth_term_short (below) for g's magnitude m < 2^29 (extent >= 0);
- * also gradients_short's */
+/* depth_term_short (below) for g's magnitude m < 2^29 (extent >= 0) */
 STP_HOT_INLINE int depth_magnitude_short(uint32_t m, int32_t extent)
 {
     uint32_t hi;
@@ -768,18 +767,37 @@ static int32_t depth_q12_keep(frame *fr, key_mapping *m, int32_t key)
 #endif
 
 /* a key's Q12 depth: kept, or made (and kept); a hit (three in four on a
- * mesh) falls through, a miss branches to its call */
-static inline int32_t depth_q12(frame *fr, int32_t key)
+ * mesh) falls through, a miss branches to its call.  depth_q12_in: the
+ * kept mappings' address (fr->cached) a register the caller keeps for
+ * several keys (ARMv6-M: the field's offset costs two instructions a load,
+ * two loads a key). */
+static inline int32_t depth_q12_in(frame *fr, void *cache, int32_t key)
 {
 #if KEY_CACHE > 0
-    key_mapping *m = &fr->cached[KEY_SLOT(key)];
+    key_mapping *m = (key_mapping *)cache + KEY_SLOT(key);
     if (STP_UNLIKELY(m->key != key)) /* every slot holds a true mapping (render_prepare_fill) */
         return depth_q12_keep(fr, m, key);
     return m->q12;
 #else
+    (void)cache;
     return depth_q12_made(fr, key);
 #endif
 }
+
+static inline int32_t depth_q12(frame *fr, int32_t key)
+{
+#if KEY_CACHE > 0
+    return depth_q12_in(fr, fr->cached, key);
+#else
+    return depth_q12_made(fr, key);
+#endif
+}
+
+#if KEY_CACHE > 0
+#define DEPTH_KEPT(fr) ((void *)(fr)->cached)
+#else
+#define DEPTH_KEPT(fr) ((void *)0)
+#endif
 
 /* The polygon's depth plane, by Newell's sums on (x, y, depth) over its
  * projected vertices: exact for planar polygons, a best fit otherwise.
@@ -820,10 +838,9 @@ static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, 
  * (stp_quotient_q12_by_recip; on ARMv6-M r without a division,
  * stp_recip_u32: the library's is ~150 instructions).  Returns 1 when the
  * triangle's depth terms are short (depth_terms_short) by the quotients'
- * magnitudes and extents at least its own (x_ext, y_ext): depth_term_short
- * of a g within int32 tests |g| < 2^29, then depth_magnitude_short(|g|),
- * which a larger extent passes only where the true one does; 0: not
- * known. */
+ * magnitudes and extents at least its own (x_ext, y_ext < 2^14): |g| <
+ * 2^29 and |g| extent < 2^29, as depth_term_short asks, by a test that
+ * passes only where the true one does; 0: not known. */
 static int gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t *gb, int32_t x_ext, int32_t y_ext)
 {
     uint32_t ua = (a < 0 ? 0u - (uint32_t)a : (uint32_t)a) << 12, ub = (b < 0 ? 0u - (uint32_t)b : (uint32_t)b) << 12,
@@ -846,25 +863,47 @@ static int gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t
     (void)y_ext;
     return 0;
 #else
-    return (qa | qb) < ((uint32_t)1 << 29) && depth_magnitude_short(qa, x_ext) && depth_magnitude_short(qb, y_ext);
+    /* q extent < 2^29 from (floor(q / 2^14) + 1) extent < 2^15, which
+     * exceeds q extent / 2^14 (q < 2^31 and extents below 2^14: the
+     * product below 2^31), and with it q < 2^29 (extents >= 1, c != 0): a
+     * product a term, short by at most 2^14 extent of the exact test
+     * (depth_magnitude_short), which a torus's faces never need */
+    return ((((qa >> 14) + 1u) * (uint32_t)x_ext) | (((qb >> 14) + 1u) * (uint32_t)y_ext)) < ((uint32_t)1 << 15);
 #endif
 }
 
-/* |p| + |q| (|p|, |q| < 2^14): at least max(0, p, q) - min(0, p, q), the
+/* |p| + |q| (|p|, |q| < 2^20): at least max(0, p, q) - min(0, p, q), the
  * extent of three coordinates relative to the first (equal to it when p
  * and q differ in sign, at most twice it), fewer instructions */
+/* A small triangle's centre (depth_plane_from_sums's, n = 3): coordinate
+ * sums below 2^22, its depths' below 2^30 (stp_div3_u30 without the
+ * tests; builds for size share stp_div3_u32) */
+#if defined(__OPTIMIZE_SIZE__)
+#define STP_CENTRE_DIV3(s) stp_div3_u32(s)
+#else
+#define STP_CENTRE_DIV3(s) stp_div3_u30(s)
+#endif
+STP_HOT_INLINE void triangle_centre(depth_plane *pl, uint32_t sx, uint32_t sy, uint32_t sd)
+{
+    pl->xc = (int32_t)stp_div3_u32(sx);
+    pl->yc = (int32_t)stp_div3_u32(sy);
+    pl->dc = STP_CENTRE_DIV3(sd);
+}
+
+#if !defined(__OPTIMIZE_SIZE__)
 static int32_t extent_bound(int32_t p, int32_t q)
 {
     return (p < 0 ? -p : p) + (q < 0 ? -q : q);
 }
 #endif
+#endif
 
 /* A triangle's plane: its Newell sums are its cross product, exactly
  * (relative coordinates below 2^20, depths below 2^16); its three Q12
  * depths (below 2^28) sum below 2^30.  Without wide arithmetic a small
- * triangle (relative x in [-2^14, 2^14), y in [-2^13, 2^13): products
- * below 2^30, so the sums fit int32, and |a|, |b| < 2^19) in 32 bits: no
- * clamp (|a|, |b| < 2^28), the same values.  With wide arithmetic the
+ * triangle (offsets from the first vertex with |x1| + |x2| < 2^14, |y1| +
+ * |y2| < 2^13: products below 2^30, so the sums fit int32, and |a|, |b| <
+ * 2^19) in 32 bits: no clamp (|a|, |b| < 2^28), the same values.  With wide arithmetic the
  * body is short (no 32-bit route) and the draw path inlines it: its call
  * cost a fifth of it (the host's torus). */
 #if STP_WIDE_ARITH
@@ -879,7 +918,12 @@ static int32_t extent_bound(int32_t p, int32_t q)
 #define PLANE_SHORT 2
 DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
 {
+#if defined(__OPTIMIZE_SIZE__) /* builds for size: depth_q12's one copy, called (lm3s6965: 16 bytes) */
     int32_t d0 = depth_q12(fr, v[0].z), d1 = depth_q12(fr, v[1].z), d2 = depth_q12(fr, v[2].z);
+#else
+    void *kept = DEPTH_KEPT(fr);
+    int32_t d0 = depth_q12_in(fr, kept, v[0].z), d1 = depth_q12_in(fr, kept, v[1].z), d2 = depth_q12_in(fr, kept, v[2].z);
+#endif
     int32_t x1 = v[1].x - v[0].x, y1 = v[1].y - v[0].y, x2 = v[2].x - v[0].x, y2 = v[2].y - v[0].y;
     int32_t e1 = (d1 >> 12) - (d0 >> 12), e2 = (d2 >> 12) - (d0 >> 12);
     uint32_t sx = (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x,
@@ -887,19 +931,35 @@ DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_
              sd = (uint32_t)d0 + (uint32_t)d1 + (uint32_t)d2;
     int64_t a, b, c;
 #if !STP_WIDE_ARITH /* 64-bit hosts: 64-bit products and quotients cost what 32-bit ones do */
-    /* -2^14 <= x1, x2 < 2^14 and -2^13 <= y1, y2 < 2^13: each offset by
-     * the bound is below twice it, a power of two, so both by their OR
-     * (products below 2^30 still: |e| < 2^16); |a|, |b| < 2^19 by one
-     * unsigned comparison each */
-    const uint32_t xs = (uint32_t)1 << 14, ys = (uint32_t)1 << 13, gs = (uint32_t)1 << 19;
+    /* |x1| + |x2| < 2^14 and |y1| + |y2| < 2^13 (the extents
+     * gradients_short takes, a test each): products below 2^30 still (|e|
+     * < 2^16); |a|, |b| < 2^19 by one unsigned comparison each */
+    const uint32_t gs = (uint32_t)1 << 19;
+#if defined(__OPTIMIZE_SIZE__)
+    /* builds for size (gradients_short takes no extents): -2^14 <= x1, x2
+     * < 2^14 and -2^13 <= y1, y2 < 2^13 (products below 2^30 as well),
+     * each offset by the bound below twice it, a power of two, so both by
+     * their OR (lm3s6965: 24 bytes fewer) */
+    const uint32_t xs = (uint32_t)1 << 14, ys = (uint32_t)1 << 13;
+    const int32_t x_ext = 0, y_ext = 0;
     if (((((uint32_t)x1 + xs) | ((uint32_t)x2 + xs)) >> 15) == 0 &&
         ((((uint32_t)y1 + ys) | ((uint32_t)y2 + ys)) >> 14) == 0) {
+#else
+    int32_t x_ext = extent_bound(x1, x2), y_ext = extent_bound(y1, y2);
+    if (x_ext < ((int32_t)1 << 14) && y_ext < ((int32_t)1 << 13)) {
+#endif
         int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
+#if !defined(__OPTIMIZE_SIZE__)
+        /* the centre first, its sums not kept across the quotients (a
+         * route that falls through makes it again; builds for size make
+         * it after them, as an ATmega2560's large triangles fall through) */
+        triangle_centre(pl, sx, sy, sd);
+#endif
         if (c32 != 0 && (uint32_t)a32 + (gs - 1u) < 2u * gs - 1u && (uint32_t)b32 + (gs - 1u) < 2u * gs - 1u) {
-            int terms = gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy, extent_bound(x1, x2), extent_bound(y1, y2));
-            pl->xc = (int32_t)stp_div3_u32(sx); /* coordinates below 2^20 */
-            pl->yc = (int32_t)stp_div3_u32(sy);
-            pl->dc = stp_div3_u32(sd);
+            int terms = gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy, x_ext, y_ext);
+#if defined(__OPTIMIZE_SIZE__)
+            triangle_centre(pl, sx, sy, sd);
+#endif
             return terms ? PLANE_SHORT : PLANE_MADE;
         }
         a = a32;
