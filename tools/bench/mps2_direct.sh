@@ -27,7 +27,7 @@ host=$3
 cpu=${STP_FW_CPU:-cortex-m0plus}
 opt=${STP_MPS2_OPT:--O2}
 band_rows=${STP_FW_BAND_ROWS:-8}
-fw=$work/fw-$cpu$opt-$band_rows
+fw=$work/fw-$cpu$(printf %s "$opt" | tr -c 'A-Za-z0-9_-' _)-$band_rows
 
 echo "== building the mps2-an385 direct-drawing firmware ($cpu, $opt, $band_rows-row bands) in $fw"
 timeout "${STP_BUILD_TIMEOUT:-600}" cmake -S "$src/ports/mps2" -B "$fw" \

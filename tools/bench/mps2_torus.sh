@@ -32,7 +32,9 @@ opt=${STP_MPS2_OPT:--O2}
 band_rows=${STP_FW_BAND_ROWS:-64}
 keep=${STP_FW_KEEP_SETUP:-}
 mesh=${STP_FW_MESH:-0}
-fw=$work/fw-$cpu$opt-$band_rows${keep:+-keep$keep}-mesh$mesh
+# the options in the folder name without their separators (";" would end
+# a CMake list there)
+fw=$work/fw-$cpu$(printf %s "$opt" | tr -c 'A-Za-z0-9_-' _)-$band_rows${keep:+-keep$keep}-mesh$mesh
 
 echo "== building the mps2-an385 torus firmware ($cpu, $opt, $band_rows-row bands) in $fw"
 timeout "${STP_BUILD_TIMEOUT:-600}" cmake -S "$src/ports/mps2" -B "$fw" \
