@@ -213,22 +213,24 @@ static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, int32_t 
     }
     return 1;
 #else
-    uint32_t mx = px < 0 ? 0u - (uint32_t)px : (uint32_t)px;
-    uint32_t my = py < 0 ? 0u - (uint32_t)py : (uint32_t)py, qx, qy, qk, w, v;
+    uint32_t mx, my, qx, qy, qk, w, v;
     int sz, sh;
-    if (z >= ((uint32_t)1 << 29) || mx >= 0x80000000u || my >= 0x80000000u || f >= 0x80000000u ||
-        h >= 0x80000000u)
+    /* f, h < 2^31 (> 0 as stp_fix): one test for both */
+    if (z >= ((uint32_t)1 << 29) || ((f | h) & 0x80000000u) != 0)
         return 0;
     sz = 32 - stp_bit_length32(z);
     v = stp_recip32_estimate(z << sz);
-    stp_project_scale(f, v, sz, &w, &sh);
-    if (!stp_project_quotients(mx, my, f, w, sh, z, &qx, &qy))
-        return 0;
+    /* the key first: fewer values live (ARMv6-M) */
     if (key) {
         if (!stp_project_key(h, v, sz, z, &qk))
             return 0;
         *key = (int32_t)qk;
     }
+    stp_project_scale(f, v, sz, &w, &sh);
+    mx = px < 0 ? 0u - (uint32_t)px : (uint32_t)px;
+    my = py < 0 ? 0u - (uint32_t)py : (uint32_t)py;
+    if (((mx | my) & 0x80000000u) != 0 || !stp_project_quotients(mx, my, f, w, sh, z, &qx, &qy))
+        return 0;
     *x = stp_project_subpixel(px < 0, qx);
     *y = stp_project_subpixel(py < 0, qy);
     return 1;
@@ -274,27 +276,45 @@ static inline void stp_view_perspective(stp_fix focal, stp_fix hither, stp_vec3 
  * offset, out[1] = half_height - the offset, clamped to [0, 2 half_width]
  * and [0, 2 half_height] (the clipper keeps points inside up to rounding:
  * the clamp takes its last bit), out[2] the key. */
-static inline void stp_view_perspective_device(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3])
+static inline void stp_project_device_wide(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3])
 {
     int64_t dx, dy;
-#if !STP_WIDE_ARITH
-    int32_t x32, y32;
-    if (stp_project_exact((uint32_t)lens->focal, (uint32_t)lens->hither,
-                          (uint32_t)(p->z < lens->hither ? lens->hither : p->z), p->x, p->y, &x32, &y32,
-                          &out[2])) {
-        /* |offset| < 2^(31 - 12): the sums fit int32 */
-        x32 = lens->half_width + x32;
-        y32 = lens->half_height - y32;
-        out[0] = x32 < 0 ? 0 : (x32 > 2 * lens->half_width ? 2 * lens->half_width : x32);
-        out[1] = y32 < 0 ? 0 : (y32 > 2 * lens->half_height ? 2 * lens->half_height : y32);
-        return;
-    }
-#endif
     STP_PROJECT_WIDE(lens->focal, lens->hither, p, &dx, &dy, &out[2]);
     dx = lens->half_width + dx;
     dy = lens->half_height - dy;
     out[0] = (int32_t)(dx < 0 ? 0 : (dx > 2 * lens->half_width ? 2 * lens->half_width : dx));
     out[1] = (int32_t)(dy < 0 ? 0 : (dy > 2 * lens->half_height ? 2 * lens->half_height : dy));
 }
+
+#if STP_WIDE_ARITH
+#define stp_view_perspective_device stp_project_device_wide
+#else
+/* Where 64-bit division is a library call: the 32-bit form inline, the
+ * 64-bit quotients out of line (view.c: stp_project_device_wide), so the
+ * common path keeps fewer values live. */
+void stp_view_perspective_device_wide(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3]);
+
+/* c clamped to [0, limit] (limit >= 0): one unsigned test inside */
+STP_HOT_INLINE int32_t stp_project_clamp(int32_t c, int32_t limit)
+{
+    if ((uint32_t)c > (uint32_t)limit)
+        c = c < 0 ? 0 : limit;
+    return c;
+}
+
+static inline void stp_view_perspective_device(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3])
+{
+    int32_t x32, y32;
+    if (stp_project_exact((uint32_t)lens->focal, (uint32_t)lens->hither,
+                          (uint32_t)(p->z < lens->hither ? lens->hither : p->z), p->x, p->y, &x32, &y32,
+                          &out[2])) {
+        /* |offset| < 2^(31 - 12): the sums fit int32 */
+        out[0] = stp_project_clamp(lens->half_width + x32, 2 * lens->half_width);
+        out[1] = stp_project_clamp(lens->half_height - y32, 2 * lens->half_height);
+        return;
+    }
+    stp_view_perspective_device_wide(lens, p, out);
+}
+#endif
 
 #endif

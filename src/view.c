@@ -517,3 +517,10 @@ void stp_view_perspective_wide(stp_fix focal, stp_fix hither, const stp_vec3 *pp
         *key = (int32_t)stp_div64_by(&dz, ((int64_t)hither) << 30);
 #endif
 }
+
+#if !STP_WIDE_ARITH
+void stp_view_perspective_device_wide(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3])
+{
+    stp_project_device_wide(lens, p, out);
+}
+#endif
