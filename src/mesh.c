@@ -216,7 +216,7 @@ STP_HOT_INLINE int32_t vertex_code(mesh_context *c, stp_mesh_vertex *s, uint16_t
 
 /* Vertex *s's device position, projected once per call (it is inside the
  * view volume: its outcode is 0). */
-static void vertex_project(const mesh_context *c, stp_mesh_vertex *s)
+STP_HOT_INLINE void vertex_project(const mesh_context *c, stp_mesh_vertex *s)
 {
     int32_t d[3];
     stp_view_perspective_device(&c->lens, &s->view, d); /* perspective (fast_state) */
@@ -224,6 +224,17 @@ static void vertex_project(const mesh_context *c, stp_mesh_vertex *s)
     s->dy = d[1];
     s->dz = d[2];
     s->state = 0; /* its outcode was 0 */
+}
+
+/* Vertex i (scratch entry *s, inside the view volume) transformed if not
+ * yet, then projected: one call a vertex from the face loop.  A new one
+ * comes only with c->inside (else vertex_code transformed it), so its
+ * outcode is 0 and nothing saturates (box_inside). */
+static void vertex_ready(const mesh_context *c, stp_mesh_vertex *s, uint16_t i)
+{
+    if (s->state == STATE_NEW)
+        (void)stp_render_point_to_view(c->r, c->vertices[i], &s->view);
+    vertex_project(c, s);
 }
 
 /* The triangle of indices k through stp_renderer_polygon (mesh.h: the
@@ -328,11 +339,8 @@ STP_HOT_INLINE int32_t face_side(const mesh_context *c, const int16_t *n, const 
  * vertex is inside the view volume (c->inside). */
 STP_HOT_INLINE void ready_inside(const mesh_context *c, stp_mesh_vertex *s, uint16_t i)
 {
-    if (s->state != 0) {
-        if (s->state == STATE_NEW)
-            vertex_transform(c, s, i);
-        vertex_project(c, s);
-    }
+    if (s->state != 0)
+        vertex_ready(c, s, i);
 }
 
 /* Whether the triangle of indices k (scratch entries s[0..2]) is to be
@@ -361,11 +369,11 @@ static int ready_vertices(mesh_context *c, const uint16_t *k, stp_mesh_vertex *c
     if (any != 0)
         return fast_fallback(c, k); /* crosses a plane: to be clipped */
     if (s[0]->state != 0)
-        vertex_project(c, s[0]);
+        vertex_ready(c, s[0], k[0]); /* transformed: projected only */
     if (s[1]->state != 0)
-        vertex_project(c, s[1]);
+        vertex_ready(c, s[1], k[1]);
     if (s[2]->state != 0)
-        vertex_project(c, s[2]);
+        vertex_ready(c, s[2], k[2]);
     return 1;
 }
 
