@@ -54,6 +54,14 @@ static inline int stp_project_correct(uint32_t e, uint32_t n_low, uint32_t z, ui
     return e < 0x80000000u;
 }
 
+/* The offset from the quotient q = floor(f |c| / z): floor of the signed
+ * quotient truncated toward zero, at STP_SUBPIXEL_BITS. */
+static inline int32_t stp_project_subpixel(int negative, uint32_t q)
+{
+    const int shift = STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS;
+    return negative ? -(int32_t)((q + ((1u << shift) - 1u)) >> shift) : (int32_t)(q >> shift);
+}
+
 /* floor(f mx / z) and floor(f my / z) exactly, for mx, my < 2^31 and z <
  * 2^29, from the estimates e = floor(m w / 2^sh): every step rounds down,
  * so e <= the quotient Q, and Q - e <= 8 Q 2^-32 + 2 (w 2^-sh is below f
@@ -83,25 +91,59 @@ static inline int stp_project_quotient(uint32_t m, uint32_t w, int sh, uint32_t 
 }
 #endif
 
-static inline int stp_project_quotients(uint32_t mx, uint32_t my, uint32_t f, uint32_t w, int sh, uint32_t z,
-                                        uint32_t *qx, uint32_t *qy)
+#if STP_NARROW_FORMS
+/* The offset (stp_project_subpixel) of Q = floor(f m / z) from an estimate
+ * e with Q - e < 8 and n_low = f m mod 2^32: the offset is floor((Q + b) /
+ * 2^k), k = F - STP_SUBPIXEL_BITS and b = 0 or 2^k - 1 (negative), so
+ * when e + b's low k bits are at most 2^k - 9 every Q in [e, e + 7] gives
+ * e + b's, and e < 2^31 - 8 keeps Q below 2^31: no remainder, the common
+ * case (all but 8 in 2^k); else stp_project_correct.  0 when Q is 2^31 or
+ * more. */
+STP_HOT_INLINE int stp_project_offset_of(uint32_t e, int negative, uint32_t n_low, uint32_t z, int32_t *out)
+{
+    const int k = STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS;
+    const uint32_t mask = ((uint32_t)1 << k) - 1u;
+    uint32_t b = negative ? e + mask : e, q;
+    if (mask >= 15u && e < 0x80000000u - 8u && (b & mask) <= mask - 8u) {
+        *out = negative ? -(int32_t)(b >> k) : (int32_t)(b >> k);
+        return 1;
+    }
+    if (!stp_project_correct(e, n_low, z, &q))
+        return 0;
+    *out = stp_project_subpixel(negative, q);
+    return 1;
+}
+#endif
+
+/* The offsets (stp_project_subpixel) of floor(f mx / z) and floor(f my /
+ * z), px and py negative or not (nx, ny).  With STP_NARROW_FORMS each
+ * estimate from stp_umulhi32_approx (three products; short of the high
+ * word by at most 2, so Q - e < 8, and the remainder below 8 z < 2^32),
+ * then stp_project_offset_of. */
+static inline int stp_project_quotients(uint32_t mx, uint32_t my, int nx, int ny, uint32_t f, uint32_t w, int sh,
+                                        uint32_t z, int32_t *x, int32_t *y)
 {
 #if STP_NARROW_FORMS
     uint32_t ex, ey;
     if (sh <= 32) {
         if (((mx | my) >> (sh - 1)) > 1u) /* mx or my >= 2^sh */
             return 0;
-        ex = stp_umulhi32x32(mx << (32 - sh), w);
-        ey = stp_umulhi32x32(my << (32 - sh), w);
+        ex = stp_umulhi32_approx(mx << (32 - sh), w);
+        ey = stp_umulhi32_approx(my << (32 - sh), w);
     } else {
         if (sh - 32 >= 32)
             w = 0u; /* the quotients 0 */
-        ex = stp_umulhi32x32(mx, w) >> (sh & 31); /* sh - 32 while sh < 64 */
-        ey = stp_umulhi32x32(my, w) >> (sh & 31);
+        ex = stp_umulhi32_approx(mx, w) >> (sh & 31); /* sh - 32 while sh < 64 */
+        ey = stp_umulhi32_approx(my, w) >> (sh & 31);
     }
-    return stp_project_correct(ex, f * mx, z, qx) && stp_project_correct(ey, f * my, z, qy);
+    return stp_project_offset_of(ex, nx, f * mx, z, x) && stp_project_offset_of(ey, ny, f * my, z, y);
 #else
-    return stp_project_quotient(mx, w, sh, f * mx, z, qx) && stp_project_quotient(my, w, sh, f * my, z, qy);
+    uint32_t qx, qy;
+    if (!stp_project_quotient(mx, w, sh, f * mx, z, &qx) || !stp_project_quotient(my, w, sh, f * my, z, &qy))
+        return 0;
+    *x = stp_project_subpixel(nx, qx);
+    *y = stp_project_subpixel(ny, qy);
+    return 1;
 #endif
 }
 
@@ -120,14 +162,6 @@ static inline int stp_project_key(uint32_t h, uint32_t v, int s, uint32_t z, uin
     if ((ph >> k) != 0)
         return 0; /* e >= 2^32 */
     return stp_project_correct((ph << (32 - k)) | (pl >> k), h << 30, z, q);
-}
-
-/* The offset from the quotient q = floor(f |c| / z): floor of the signed
- * quotient truncated toward zero, at STP_SUBPIXEL_BITS. */
-static inline int32_t stp_project_subpixel(int negative, uint32_t q)
-{
-    const int shift = STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS;
-    return negative ? -(int32_t)((q + ((1u << shift) - 1u)) >> shift) : (int32_t)(q >> shift);
 }
 
 #if !STP_HAVE_MUL32
@@ -213,7 +247,7 @@ static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, int32_t 
     }
     return 1;
 #else
-    uint32_t mx, my, qx, qy, qk, w, v;
+    uint32_t mx, my, qk, w, v;
     int sz, sh;
     /* f, h < 2^31 (> 0 as stp_fix): one test for both */
     if (z >= ((uint32_t)1 << 29) || ((f | h) & 0x80000000u) != 0)
@@ -229,11 +263,7 @@ static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, int32_t 
     stp_project_scale(f, v, sz, &w, &sh);
     mx = px < 0 ? 0u - (uint32_t)px : (uint32_t)px;
     my = py < 0 ? 0u - (uint32_t)py : (uint32_t)py;
-    if (((mx | my) & 0x80000000u) != 0 || !stp_project_quotients(mx, my, f, w, sh, z, &qx, &qy))
-        return 0;
-    *x = stp_project_subpixel(px < 0, qx);
-    *y = stp_project_subpixel(py < 0, qy);
-    return 1;
+    return ((mx | my) & 0x80000000u) == 0 && stp_project_quotients(mx, my, px < 0, py < 0, f, w, sh, z, x, y);
 #endif
 }
 #endif
