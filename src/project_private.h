@@ -92,25 +92,27 @@ static inline int stp_project_quotient(uint32_t m, uint32_t w, int sh, uint32_t 
 #endif
 
 #if STP_NARROW_FORMS
-/* The offset (stp_project_subpixel) of Q = floor(f m / z) from an estimate
- * e with Q - e < 8 and n_low = f m mod 2^32: the offset is floor((Q + b) /
- * 2^k), k = F - STP_SUBPIXEL_BITS and b = 0 or 2^k - 1 (negative), so
- * when e + b's low k bits are at most 2^k - 9 every Q in [e, e + 7] gives
- * e + b's, and e < 2^31 - 8 keeps Q below 2^31: no remainder, the common
- * case (all but 8 in 2^k); else stp_project_correct.  0 when Q is 2^31 or
- * more. */
-STP_HOT_INLINE int stp_project_offset_of(uint32_t e, int negative, uint32_t n_low, uint32_t z, int32_t *out)
+/* The offset (stp_project_subpixel) of Q = floor(f m / z), sign -1 for a
+ * negative coordinate (else 0), from an estimate e with Q - e < 8 and
+ * n_low = f m mod 2^32: the offset is floor((Q + b) / 2^k), k = F -
+ * STP_SUBPIXEL_BITS and b = 2^k - 1 when negative (else 0), so when e +
+ * b's low k bits are at most 2^k - 9 every Q in [e, e + 7] gives e + b's;
+ * with e < 2^31 that test fails for e >= 2^31 - 7 (its low bits, or e -
+ * 1's, are then at least 2^k - 8), so Q < 2^31.  No remainder: the common
+ * case (all but 8 in 2^k), no branch on the sign; else
+ * stp_project_correct.  0 when Q is 2^31 or more. */
+STP_HOT_INLINE int stp_project_offset_of(uint32_t e, int32_t sign, uint32_t n_low, uint32_t z, int32_t *out)
 {
     const int k = STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS;
     const uint32_t mask = ((uint32_t)1 << k) - 1u;
-    uint32_t b = negative ? e + mask : e, q;
-    if (mask >= 15u && e < 0x80000000u - 8u && (b & mask) <= mask - 8u) {
-        *out = negative ? -(int32_t)(b >> k) : (int32_t)(b >> k);
+    uint32_t b = e + ((uint32_t)sign & mask), q;
+    if (mask >= 15u && e < 0x80000000u && ((~b & mask) >> 3) != 0) {
+        *out = ((int32_t)(b >> k) ^ sign) - sign;
         return 1;
     }
     if (!stp_project_correct(e, n_low, z, &q))
         return 0;
-    *out = stp_project_subpixel(negative, q);
+    *out = stp_project_subpixel(sign != 0, q);
     return 1;
 }
 #endif
@@ -136,7 +138,7 @@ static inline int stp_project_quotients(uint32_t mx, uint32_t my, int nx, int ny
         ex = stp_umulhi32_approx(mx, w) >> (sh & 31); /* sh - 32 while sh < 64 */
         ey = stp_umulhi32_approx(my, w) >> (sh & 31);
     }
-    return stp_project_offset_of(ex, nx, f * mx, z, x) && stp_project_offset_of(ey, ny, f * my, z, y);
+    return stp_project_offset_of(ex, -(int32_t)nx, f * mx, z, x) && stp_project_offset_of(ey, -(int32_t)ny, f * my, z, y);
 #else
     uint32_t qx, qy;
     if (!stp_project_quotient(mx, w, sh, f * mx, z, &qx) || !stp_project_quotient(my, w, sh, f * my, z, &qy))
