@@ -233,7 +233,7 @@ STP_HOT_INLINE void vertex_project(const mesh_context *c, stp_mesh_vertex *s)
 static void vertex_ready(const mesh_context *c, stp_mesh_vertex *s, uint16_t i)
 {
     if (s->state == STATE_NEW)
-        (void)stp_render_point_to_view(c->r, c->vertices[i], &s->view);
+        (void)stp_render_point_at_view(c->r, &c->vertices[i], &s->view);
     vertex_project(c, s);
 }
 

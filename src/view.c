@@ -313,6 +313,11 @@ void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 
 {
     stp_view_transform_point_wide(t, p, out); /* view_private.h */
 }
+
+void stp_view_transform_point_at(const stp_view_transform *t, const stp_vec3 *p, stp_vec3 *out)
+{
+    stp_view_transform_point_wide(t, *p, out);
+}
 #else
 /* floor(v / 2^16) (>> of a negative value is the implementation's: the
  * arithmetic shift on every compiler the project builds with, where the
@@ -423,6 +428,12 @@ static void split_point(int32_t v, int32_t *h, int32_t *l)
 
 void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out)
 {
+    stp_view_transform_point_at(t, &p, out);
+}
+
+void stp_view_transform_point_at(const stp_view_transform *t, const stp_vec3 *pp, stp_vec3 *out)
+{
+    stp_vec3 p = *pp;
     point_halves ph;
     int narrow;
     /* every p_i in [-2^28, 2^28) */

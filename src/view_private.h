@@ -76,8 +76,11 @@ void stp_view_transform_make(const stp_view_frame *vf, stp_view_transform *out);
 void stp_view_transform_of_axes(stp_vec3 right, stp_vec3 up, stp_vec3 forward, stp_vec3 from,
                                 stp_view_transform *out);
 
-/* p (world) in view coordinates, each floor((p - from) . axis), saturated. */
+/* p (world) in view coordinates, each floor((p - from) . axis), saturated;
+ * _at: the same of *p (out not p), which leaves p in memory rather than
+ * copying it (ARMv6-M: fewer values live in the 32-bit form). */
 void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out);
+void stp_view_transform_point_at(const stp_view_transform *t, const stp_vec3 *p, stp_vec3 *out);
 
 #if STP_WIDE_ARITH
 /* stp_view_transform_point where 64-bit products are single instructions,
