@@ -28,11 +28,13 @@ typedef struct stp_view_lens {
  * below floor((2^64 - 1) / dn) (stp_recip32_estimate), so P = f (2^32 +
  * v) < 2^64 approximates f 2^64 / dn from below within 4 f (relative
  * 2^-30); w = P's top 32 bits (P >> t, w >= 2^31) and sh = 64 - t - s, at
- * least 1 (t <= 32, s <= 31). */
-static inline void stp_project_scale(uint32_t f, uint32_t v, int s, uint32_t *w, int *sh)
+ * least 1 (t <= 32, s <= 31).  P's high word is in [f, 2 f), so t is f's
+ * bit length fb (stp_bit_length32, a caller's once for many points) or
+ * one more; fb -1: not known (t found from P). */
+static inline void stp_project_scale(uint32_t f, int fb, uint32_t v, int s, uint32_t *w, int *sh)
 {
     uint32_t ph = f + stp_umulhi32x32(f, v), pl = f * v; /* ph in [f, 2 f) */
-    int t = stp_bit_length32(ph);
+    int t = fb < 0 ? stp_bit_length32(ph) : fb + (int)((ph >> fb) != 0);
     *w = t == 32 ? ph : (ph << (32 - t)) | (pl >> t);
     *sh = 64 - t - s;
 }
@@ -233,12 +235,14 @@ static inline int stp_project_offset(uint32_t f, int32_t c, uint32_t z, int32_t 
 
 /* The 32-bit form (z already raised to hither): 1 on success, 0 when z or
  * a quotient is out of its range (then the 64-bit quotients; *x, *y and
- * *key may have been written). */
-static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, int32_t px, int32_t py, int32_t *x,
-                                    int32_t *y, int32_t *key)
+ * *key may have been written).  fb: stp_bit_length32(f), or -1 (not
+ * known: stp_project_scale). */
+static inline int stp_project_exact_bits(uint32_t f, int fb, uint32_t h, uint32_t z, int32_t px, int32_t py,
+                                         int32_t *x, int32_t *y, int32_t *key)
 {
 #if !STP_HAVE_MUL32
     uint32_t qk;
+    (void)fb;
     if (z >= ((uint32_t)1 << 29) || f >= 0x80000000u || h >= 0x80000000u ||
         !stp_project_offset(f, px, z, x) || !stp_project_offset(f, py, z, y))
         return 0;
@@ -262,11 +266,17 @@ static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, int32_t 
             return 0;
         *key = (int32_t)qk;
     }
-    stp_project_scale(f, v, sz, &w, &sh);
+    stp_project_scale(f, fb, v, sz, &w, &sh);
     mx = px < 0 ? 0u - (uint32_t)px : (uint32_t)px;
     my = py < 0 ? 0u - (uint32_t)py : (uint32_t)py;
     return ((mx | my) & 0x80000000u) == 0 && stp_project_quotients(mx, my, px < 0, py < 0, f, w, sh, z, x, y);
 #endif
+}
+
+static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, int32_t px, int32_t py, int32_t *x,
+                                    int32_t *y, int32_t *key)
+{
+    return stp_project_exact_bits(f, -1, h, z, px, py, x, y, key);
 }
 #endif
 
@@ -320,6 +330,7 @@ static inline void stp_project_device_wide(const stp_view_lens *lens, const stp_
 
 #if STP_WIDE_ARITH
 #define stp_view_perspective_device stp_project_device_wide
+#define stp_view_perspective_device_bits(lens, fb, p, out) stp_project_device_wide(lens, p, out)
 #else
 /* Where 64-bit division is a library call: the 32-bit form inline, the
  * 64-bit quotients out of line (view.c: stp_project_device_wide), so the
@@ -334,18 +345,26 @@ STP_HOT_INLINE int32_t stp_project_clamp(int32_t c, int32_t limit)
     return c;
 }
 
-static inline void stp_view_perspective_device(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3])
+/* fb: stp_bit_length32(lens->focal), found once for many points (or -1:
+ * stp_project_exact_bits) */
+static inline void stp_view_perspective_device_bits(const stp_view_lens *lens, int fb, const stp_vec3 *p,
+                                                    int32_t out[3])
 {
     int32_t x32, y32;
-    if (stp_project_exact((uint32_t)lens->focal, (uint32_t)lens->hither,
-                          (uint32_t)(p->z < lens->hither ? lens->hither : p->z), p->x, p->y, &x32, &y32,
-                          &out[2])) {
+    if (stp_project_exact_bits((uint32_t)lens->focal, fb, (uint32_t)lens->hither,
+                               (uint32_t)(p->z < lens->hither ? lens->hither : p->z), p->x, p->y, &x32, &y32,
+                               &out[2])) {
         /* |offset| < 2^(31 - 12): the sums fit int32 */
         out[0] = stp_project_clamp(lens->half_width + x32, 2 * lens->half_width);
         out[1] = stp_project_clamp(lens->half_height - y32, 2 * lens->half_height);
         return;
     }
     stp_view_perspective_device_wide(lens, p, out);
+}
+
+static inline void stp_view_perspective_device(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3])
+{
+    stp_view_perspective_device_bits(lens, -1, p, out);
 }
 #endif
 
