@@ -41,11 +41,6 @@ typedef int16_t stp_view_half;
 typedef struct stp_view_axis32 {
     stp_view_half high[3], low[3];
     int32_t from_high32, from_low;
-#if STP_NARROW_FORMS
-    /* view.c's short form: from_high32 + 2^15, and from . axis mod 2^32 */
-    int32_t unit_high;
-    uint32_t unit_low;
-#endif
 } stp_view_axis32;
 
 /* World to view coordinates: the view's axes and the eye's coordinate
@@ -53,13 +48,20 @@ typedef struct stp_view_axis32 {
  * view coordinates are p . axis - from . axis, exact in 64 bits. */
 typedef struct stp_view_transform {
     stp_vec3 right, up, forward;
-    int64_t from_right, from_up, from_forward;
-    /* the 32-bit targets' form (view.c) of each axis k (right, up, forward) */
-    stp_view_axis32 axis32[3];
-    int narrow; /* every from_high below 2^28 in magnitude */
     int unit;   /* narrow, and every axis's squared length at most 5 2^30
                    (1.25 units squared): view.c's short form (with
                    STP_NARROW_FORMS, else 0) */
+#if STP_NARROW_FORMS
+    /* view.c's short form of axis k (right, up, forward): from_high32 +
+     * 2^15, and from . axis mod 2^32; here, next to the axes, where every
+     * field the short form reads is within ARMv6-M's load offsets */
+    int32_t unit_high[3];
+    uint32_t unit_low[3];
+#endif
+    int narrow; /* every from_high below 2^28 in magnitude */
+    int64_t from_right, from_up, from_forward;
+    /* the 32-bit targets' form (view.c) of each axis k (right, up, forward) */
+    stp_view_axis32 axis32[3];
 } stp_view_transform;
 
 /* The view's axes (view_frame_make's, the one place they are formed):
