@@ -333,9 +333,9 @@ static inline void stp_project_device_wide(const stp_view_lens *lens, const stp_
 #define stp_view_perspective_device_bits(lens, fb, p, out) stp_project_device_wide(lens, p, out)
 #else
 /* Where 64-bit division is a library call: the 32-bit form inline, the
- * 64-bit quotients out of line (view.c: stp_project_device_wide), so the
- * common path keeps fewer values live. */
-void stp_view_perspective_device_wide(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3]);
+ * 64-bit quotients out of line (view_private.h's
+ * stp_view_perspective_device_wide), so the common path keeps fewer values
+ * live. */
 
 /* c clamped to [0, limit] (limit >= 0): one unsigned test inside */
 STP_HOT_INLINE int32_t stp_project_clamp(int32_t c, int32_t limit)

@@ -205,6 +205,11 @@ int stp_view_triangle_side(stp_vec3 from, stp_vec3 forward, int parallel, const 
 void stp_view_perspective_wide(stp_fix focal, stp_fix hither, const stp_vec3 *p, int64_t *x, int64_t *y,
                                int32_t *key);
 
+/* stp_project_device_wide (project_private.h) out of line, where 64-bit
+ * division is a library call: the 32-bit form's fallback. */
+struct stp_view_lens;
+void stp_view_perspective_device_wide(const struct stp_view_lens *lens, const stp_vec3 *p, int32_t out[3]);
+
 /* The one perspective projection: project_private.h. */
 #include "project_private.h"
 
