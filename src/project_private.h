@@ -39,8 +39,8 @@ static inline void stp_project_scale(uint32_t f, int fb, uint32_t v, int s, uint
     *sh = 64 - t - s;
 }
 
-/* q = floor(n / z) from an estimate e in [q - 5, q] and n_low = n mod 2^32
- * (z < 2^29): the remainder n - e z is in [0, 6 z), below 2^32, so taken
+/* q = floor(n / z) from an estimate e in [q - 7, q] and n_low = n mod 2^32
+ * (z < 2^29): the remainder n - e z is in [0, 8 z), below 2^32, so taken
  * mod 2^32 it corrects e.  0 when the quotient is 2^31 or more. */
 static inline int stp_project_correct(uint32_t e, uint32_t n_low, uint32_t z, uint32_t *q)
 {
@@ -68,7 +68,8 @@ static inline int32_t stp_project_subpixel(int negative, uint32_t q)
  * 2^29, from the estimates e = floor(m w / 2^sh): every step rounds down,
  * so e <= the quotient Q, and Q - e <= 8 Q 2^-32 + 2 (w 2^-sh is below f
  * / z by at most (4 f + 2^t) 2^(s - 64) <= 8 f 2^(s - 64), and m f 2^(s -
- * 64) <= Q 2^-32), at most 5 for Q < 2^31 (stp_project_correct).  Each
+ * 64) <= Q 2^-32), at most 5 for Q < 2^31 (7 from STP_NARROW_FORMS's
+ * three-product estimates below; stp_project_correct).  Each
  * estimate is the high word of one product: m w / 2^sh is below 2^31 only
  * when m < 2^sh (w >= 2^31), so for sh <= 32 m 2^(32 - sh) fits 32 bits
  * (one test for both: mx | my < 2^sh) and e = floor(m 2^(32 - sh) w /
