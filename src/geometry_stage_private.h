@@ -14,17 +14,28 @@
 #define STP_GEOMETRY_COMPOSED 1
 #define STP_GEOMETRY_TWO_STEPS 2
 
-/* The geometry stage for an entered point p (model coordinates): its view
- * coordinates in *out, each saturated; returns 1 when the model transform
+/* The geometry stage for an entered point *p (model coordinates, not out):
+ * its view coordinates in *out, each saturated; returns 1 when the model
+ * transform
  * (two steps: stp_view_point_two_steps, view.c) saturated it: the point
  * lies beyond what the coordinates hold (the caller reports
  * STP_ERR_RANGE), else 0. */
-STP_HOT_INLINE int stp_render_point_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
+STP_HOT_INLINE int stp_render_point_at_view(const stp_renderer *r, const stp_vec3 *p, stp_vec3 *out)
 {
     if (r->geometry == STP_GEOMETRY_TWO_STEPS)
-        return stp_view_point_two_steps(&r->model, &r->to_view, p, out);
-    STP_VIEW_TRANSFORM_POINT(&r->point_view, p, out); /* inline where 64-bit products are */
+        return stp_view_point_two_steps(&r->model, &r->to_view, *p, out);
+#if STP_WIDE_ARITH
+    stp_view_transform_point_wide(&r->point_view, *p, out); /* inline where 64-bit products are */
+#else
+    stp_view_transform_point_at(&r->point_view, p, out);
+#endif
     return 0;
+}
+
+/* stp_render_point_at_view of a point passed by value */
+STP_HOT_INLINE int stp_render_point_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
+{
+    return stp_render_point_at_view(r, &p, out);
 }
 #endif
 

@@ -42,6 +42,7 @@ typedef struct mesh_context {
     int inside; /* 1: every vertex is inside the view volume (no outcodes)
                    and its view coordinates are below 2^29 in magnitude */
     stp_view_lens lens; /* the projection's constants (view.c) */
+    int focal_bits;     /* stp_bit_length32(lens.focal), once a call */
     const stp_shade_fast *shade; /* the face stage's shader (stp_render_face_shader), NULL: shading off */
     int32_t test_rows; /* rows of a triangle pixel culling (render.h) tests: STP_CENTRE_TEST_MAX, or 0 when off */
     /* the face stage's per-call values, kept here rather than in r (whose
@@ -181,6 +182,7 @@ static int prepare_call(mesh_context *c)
     c->lens.hither = r->hither;
     c->lens.half_width = (int32_t)r->width << (STP_SUBPIXEL_BITS - 1);
     c->lens.half_height = (int32_t)r->height << (STP_SUBPIXEL_BITS - 1);
+    c->focal_bits = stp_bit_length32((uint32_t)r->focal);
     k = stp_bit_length32(big) - 14;
     c->shift = k > 0 ? k : 0;
     for (j = 0; j < 3; j++)
@@ -216,14 +218,25 @@ STP_HOT_INLINE int32_t vertex_code(mesh_context *c, stp_mesh_vertex *s, uint16_t
 
 /* Vertex *s's device position, projected once per call (it is inside the
  * view volume: its outcode is 0). */
-static void vertex_project(const mesh_context *c, stp_mesh_vertex *s)
+STP_HOT_INLINE void vertex_project(const mesh_context *c, stp_mesh_vertex *s)
 {
     int32_t d[3];
-    stp_view_perspective_device(&c->lens, &s->view, d); /* perspective (fast_state) */
+    stp_view_perspective_device_bits(&c->lens, c->focal_bits, &s->view, d); /* perspective (fast_state) */
     s->dx = d[0];
     s->dy = d[1];
     s->dz = d[2];
     s->state = 0; /* its outcode was 0 */
+}
+
+/* Vertex i (scratch entry *s, inside the view volume) transformed if not
+ * yet, then projected: one call a vertex from the face loop.  A new one
+ * comes only with c->inside (else vertex_code transformed it), so its
+ * outcode is 0 and nothing saturates (box_inside). */
+static void vertex_ready(const mesh_context *c, stp_mesh_vertex *s, uint16_t i)
+{
+    if (s->state == STATE_NEW)
+        (void)stp_render_point_at_view(c->r, &c->vertices[i], &s->view);
+    vertex_project(c, s);
 }
 
 /* The triangle of indices k through stp_renderer_polygon (mesh.h: the
@@ -328,11 +341,8 @@ STP_HOT_INLINE int32_t face_side(const mesh_context *c, const int16_t *n, const 
  * vertex is inside the view volume (c->inside). */
 STP_HOT_INLINE void ready_inside(const mesh_context *c, stp_mesh_vertex *s, uint16_t i)
 {
-    if (s->state != 0) {
-        if (s->state == STATE_NEW)
-            vertex_transform(c, s, i);
-        vertex_project(c, s);
-    }
+    if (s->state != 0)
+        vertex_ready(c, s, i);
 }
 
 /* Whether the triangle of indices k (scratch entries s[0..2]) is to be
@@ -361,11 +371,11 @@ static int ready_vertices(mesh_context *c, const uint16_t *k, stp_mesh_vertex *c
     if (any != 0)
         return fast_fallback(c, k); /* crosses a plane: to be clipped */
     if (s[0]->state != 0)
-        vertex_project(c, s[0]);
+        vertex_ready(c, s[0], k[0]); /* transformed: projected only */
     if (s[1]->state != 0)
-        vertex_project(c, s[1]);
+        vertex_ready(c, s[1], k[1]);
     if (s[2]->state != 0)
-        vertex_project(c, s[2]);
+        vertex_ready(c, s[2], k[2]);
     return 1;
 }
 

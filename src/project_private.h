@@ -28,17 +28,19 @@ typedef struct stp_view_lens {
  * below floor((2^64 - 1) / dn) (stp_recip32_estimate), so P = f (2^32 +
  * v) < 2^64 approximates f 2^64 / dn from below within 4 f (relative
  * 2^-30); w = P's top 32 bits (P >> t, w >= 2^31) and sh = 64 - t - s, at
- * least 1 (t <= 32, s <= 31). */
-static inline void stp_project_scale(uint32_t f, uint32_t v, int s, uint32_t *w, int *sh)
+ * least 1 (t <= 32, s <= 31).  P's high word is in [f, 2 f), so t is f's
+ * bit length fb (stp_bit_length32, a caller's once for many points) or
+ * one more; fb -1: not known (t found from P). */
+static inline void stp_project_scale(uint32_t f, int fb, uint32_t v, int s, uint32_t *w, int *sh)
 {
     uint32_t ph = f + stp_umulhi32x32(f, v), pl = f * v; /* ph in [f, 2 f) */
-    int t = stp_bit_length32(ph);
+    int t = fb < 0 ? stp_bit_length32(ph) : fb + (int)((ph >> fb) != 0);
     *w = t == 32 ? ph : (ph << (32 - t)) | (pl >> t);
     *sh = 64 - t - s;
 }
 
-/* q = floor(n / z) from an estimate e in [q - 5, q] and n_low = n mod 2^32
- * (z < 2^29): the remainder n - e z is in [0, 6 z), below 2^32, so taken
+/* q = floor(n / z) from an estimate e in [q - 7, q] and n_low = n mod 2^32
+ * (z < 2^29): the remainder n - e z is in [0, 8 z), below 2^32, so taken
  * mod 2^32 it corrects e.  0 when the quotient is 2^31 or more. */
 static inline int stp_project_correct(uint32_t e, uint32_t n_low, uint32_t z, uint32_t *q)
 {
@@ -54,11 +56,20 @@ static inline int stp_project_correct(uint32_t e, uint32_t n_low, uint32_t z, ui
     return e < 0x80000000u;
 }
 
+/* The offset from the quotient q = floor(f |c| / z): floor of the signed
+ * quotient truncated toward zero, at STP_SUBPIXEL_BITS. */
+static inline int32_t stp_project_subpixel(int negative, uint32_t q)
+{
+    const int shift = STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS;
+    return negative ? -(int32_t)((q + ((1u << shift) - 1u)) >> shift) : (int32_t)(q >> shift);
+}
+
 /* floor(f mx / z) and floor(f my / z) exactly, for mx, my < 2^31 and z <
  * 2^29, from the estimates e = floor(m w / 2^sh): every step rounds down,
  * so e <= the quotient Q, and Q - e <= 8 Q 2^-32 + 2 (w 2^-sh is below f
  * / z by at most (4 f + 2^t) 2^(s - 64) <= 8 f 2^(s - 64), and m f 2^(s -
- * 64) <= Q 2^-32), at most 5 for Q < 2^31 (stp_project_correct).  Each
+ * 64) <= Q 2^-32), at most 5 for Q < 2^31 (7 from STP_NARROW_FORMS's
+ * three-product estimates below; stp_project_correct).  Each
  * estimate is the high word of one product: m w / 2^sh is below 2^31 only
  * when m < 2^sh (w >= 2^31), so for sh <= 32 m 2^(32 - sh) fits 32 bits
  * (one test for both: mx | my < 2^sh) and e = floor(m 2^(32 - sh) w /
@@ -83,25 +94,61 @@ static inline int stp_project_quotient(uint32_t m, uint32_t w, int sh, uint32_t 
 }
 #endif
 
-static inline int stp_project_quotients(uint32_t mx, uint32_t my, uint32_t f, uint32_t w, int sh, uint32_t z,
-                                        uint32_t *qx, uint32_t *qy)
+#if STP_NARROW_FORMS
+/* The offset (stp_project_subpixel) of Q = floor(f m / z), sign -1 for a
+ * negative coordinate (else 0), from an estimate e with Q - e < 8 and
+ * n_low = f m mod 2^32: the offset is floor((Q + b) / 2^k), k = F -
+ * STP_SUBPIXEL_BITS and b = 2^k - 1 when negative (else 0), so when e +
+ * b's low k bits are at most 2^k - 9 every Q in [e, e + 7] gives e + b's;
+ * with e < 2^31 that test fails for e >= 2^31 - 7 (its low bits, or e -
+ * 1's, are then at least 2^k - 8), so Q < 2^31.  No remainder: the common
+ * case (all but 8 in 2^k), no branch on the sign; else
+ * stp_project_correct.  0 when Q is 2^31 or more. */
+STP_HOT_INLINE int stp_project_offset_of(uint32_t e, int32_t sign, uint32_t n_low, uint32_t z, int32_t *out)
+{
+    const int k = STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS;
+    const uint32_t mask = ((uint32_t)1 << k) - 1u;
+    uint32_t b = e + ((uint32_t)sign & mask), q;
+    if (mask >= 15u && e < 0x80000000u && ((~b & mask) >> 3) != 0) {
+        *out = ((int32_t)(b >> k) ^ sign) - sign;
+        return 1;
+    }
+    if (!stp_project_correct(e, n_low, z, &q))
+        return 0;
+    *out = stp_project_subpixel(sign != 0, q);
+    return 1;
+}
+#endif
+
+/* The offsets (stp_project_subpixel) of floor(f mx / z) and floor(f my /
+ * z), px and py negative or not (nx, ny).  With STP_NARROW_FORMS each
+ * estimate from stp_umulhi32_approx (three products; short of the high
+ * word by at most 2, so Q - e < 8, and the remainder below 8 z < 2^32),
+ * then stp_project_offset_of. */
+static inline int stp_project_quotients(uint32_t mx, uint32_t my, int nx, int ny, uint32_t f, uint32_t w, int sh,
+                                        uint32_t z, int32_t *x, int32_t *y)
 {
 #if STP_NARROW_FORMS
     uint32_t ex, ey;
     if (sh <= 32) {
         if (((mx | my) >> (sh - 1)) > 1u) /* mx or my >= 2^sh */
             return 0;
-        ex = stp_umulhi32x32(mx << (32 - sh), w);
-        ey = stp_umulhi32x32(my << (32 - sh), w);
+        ex = stp_umulhi32_approx(mx << (32 - sh), w);
+        ey = stp_umulhi32_approx(my << (32 - sh), w);
     } else {
         if (sh - 32 >= 32)
             w = 0u; /* the quotients 0 */
-        ex = stp_umulhi32x32(mx, w) >> (sh & 31); /* sh - 32 while sh < 64 */
-        ey = stp_umulhi32x32(my, w) >> (sh & 31);
+        ex = stp_umulhi32_approx(mx, w) >> (sh & 31); /* sh - 32 while sh < 64 */
+        ey = stp_umulhi32_approx(my, w) >> (sh & 31);
     }
-    return stp_project_correct(ex, f * mx, z, qx) && stp_project_correct(ey, f * my, z, qy);
+    return stp_project_offset_of(ex, -(int32_t)nx, f * mx, z, x) && stp_project_offset_of(ey, -(int32_t)ny, f * my, z, y);
 #else
-    return stp_project_quotient(mx, w, sh, f * mx, z, qx) && stp_project_quotient(my, w, sh, f * my, z, qy);
+    uint32_t qx, qy;
+    if (!stp_project_quotient(mx, w, sh, f * mx, z, &qx) || !stp_project_quotient(my, w, sh, f * my, z, &qy))
+        return 0;
+    *x = stp_project_subpixel(nx, qx);
+    *y = stp_project_subpixel(ny, qy);
+    return 1;
 #endif
 }
 
@@ -120,14 +167,6 @@ static inline int stp_project_key(uint32_t h, uint32_t v, int s, uint32_t z, uin
     if ((ph >> k) != 0)
         return 0; /* e >= 2^32 */
     return stp_project_correct((ph << (32 - k)) | (pl >> k), h << 30, z, q);
-}
-
-/* The offset from the quotient q = floor(f |c| / z): floor of the signed
- * quotient truncated toward zero, at STP_SUBPIXEL_BITS. */
-static inline int32_t stp_project_subpixel(int negative, uint32_t q)
-{
-    const int shift = STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS;
-    return negative ? -(int32_t)((q + ((1u << shift) - 1u)) >> shift) : (int32_t)(q >> shift);
 }
 
 #if !STP_HAVE_MUL32
@@ -197,12 +236,14 @@ static inline int stp_project_offset(uint32_t f, int32_t c, uint32_t z, int32_t 
 
 /* The 32-bit form (z already raised to hither): 1 on success, 0 when z or
  * a quotient is out of its range (then the 64-bit quotients; *x, *y and
- * *key may have been written). */
-static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, int32_t px, int32_t py, int32_t *x,
-                                    int32_t *y, int32_t *key)
+ * *key may have been written).  fb: stp_bit_length32(f), or -1 (not
+ * known: stp_project_scale). */
+static inline int stp_project_exact_bits(uint32_t f, int fb, uint32_t h, uint32_t z, int32_t px, int32_t py,
+                                         int32_t *x, int32_t *y, int32_t *key)
 {
 #if !STP_HAVE_MUL32
     uint32_t qk;
+    (void)fb;
     if (z >= ((uint32_t)1 << 29) || f >= 0x80000000u || h >= 0x80000000u ||
         !stp_project_offset(f, px, z, x) || !stp_project_offset(f, py, z, y))
         return 0;
@@ -213,26 +254,30 @@ static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, int32_t 
     }
     return 1;
 #else
-    uint32_t mx = px < 0 ? 0u - (uint32_t)px : (uint32_t)px;
-    uint32_t my = py < 0 ? 0u - (uint32_t)py : (uint32_t)py, qx, qy, qk, w, v;
+    uint32_t mx, my, qk, w, v;
     int sz, sh;
-    if (z >= ((uint32_t)1 << 29) || mx >= 0x80000000u || my >= 0x80000000u || f >= 0x80000000u ||
-        h >= 0x80000000u)
+    /* f, h < 2^31 (> 0 as stp_fix): one test for both */
+    if (z >= ((uint32_t)1 << 29) || ((f | h) & 0x80000000u) != 0)
         return 0;
     sz = 32 - stp_bit_length32(z);
     v = stp_recip32_estimate(z << sz);
-    stp_project_scale(f, v, sz, &w, &sh);
-    if (!stp_project_quotients(mx, my, f, w, sh, z, &qx, &qy))
-        return 0;
+    /* the key first: fewer values live (ARMv6-M) */
     if (key) {
         if (!stp_project_key(h, v, sz, z, &qk))
             return 0;
         *key = (int32_t)qk;
     }
-    *x = stp_project_subpixel(px < 0, qx);
-    *y = stp_project_subpixel(py < 0, qy);
-    return 1;
+    stp_project_scale(f, fb, v, sz, &w, &sh);
+    mx = px < 0 ? 0u - (uint32_t)px : (uint32_t)px;
+    my = py < 0 ? 0u - (uint32_t)py : (uint32_t)py;
+    return ((mx | my) & 0x80000000u) == 0 && stp_project_quotients(mx, my, px < 0, py < 0, f, w, sh, z, x, y);
 #endif
+}
+
+static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, int32_t px, int32_t py, int32_t *x,
+                                    int32_t *y, int32_t *key)
+{
+    return stp_project_exact_bits(f, -1, h, z, px, py, x, y, key);
 }
 #endif
 
@@ -274,27 +319,54 @@ static inline void stp_view_perspective(stp_fix focal, stp_fix hither, stp_vec3 
  * offset, out[1] = half_height - the offset, clamped to [0, 2 half_width]
  * and [0, 2 half_height] (the clipper keeps points inside up to rounding:
  * the clamp takes its last bit), out[2] the key. */
-static inline void stp_view_perspective_device(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3])
+static inline void stp_project_device_wide(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3])
 {
     int64_t dx, dy;
-#if !STP_WIDE_ARITH
-    int32_t x32, y32;
-    if (stp_project_exact((uint32_t)lens->focal, (uint32_t)lens->hither,
-                          (uint32_t)(p->z < lens->hither ? lens->hither : p->z), p->x, p->y, &x32, &y32,
-                          &out[2])) {
-        /* |offset| < 2^(31 - 12): the sums fit int32 */
-        x32 = lens->half_width + x32;
-        y32 = lens->half_height - y32;
-        out[0] = x32 < 0 ? 0 : (x32 > 2 * lens->half_width ? 2 * lens->half_width : x32);
-        out[1] = y32 < 0 ? 0 : (y32 > 2 * lens->half_height ? 2 * lens->half_height : y32);
-        return;
-    }
-#endif
     STP_PROJECT_WIDE(lens->focal, lens->hither, p, &dx, &dy, &out[2]);
     dx = lens->half_width + dx;
     dy = lens->half_height - dy;
     out[0] = (int32_t)(dx < 0 ? 0 : (dx > 2 * lens->half_width ? 2 * lens->half_width : dx));
     out[1] = (int32_t)(dy < 0 ? 0 : (dy > 2 * lens->half_height ? 2 * lens->half_height : dy));
 }
+
+#if STP_WIDE_ARITH
+#define stp_view_perspective_device stp_project_device_wide
+#define stp_view_perspective_device_bits(lens, fb, p, out) stp_project_device_wide(lens, p, out)
+#else
+/* Where 64-bit division is a library call: the 32-bit form inline, the
+ * 64-bit quotients out of line (view_private.h's
+ * stp_view_perspective_device_wide), so the common path keeps fewer values
+ * live. */
+
+/* c clamped to [0, limit] (limit >= 0): one unsigned test inside */
+STP_HOT_INLINE int32_t stp_project_clamp(int32_t c, int32_t limit)
+{
+    if ((uint32_t)c > (uint32_t)limit)
+        c = c < 0 ? 0 : limit;
+    return c;
+}
+
+/* fb: stp_bit_length32(lens->focal), found once for many points (or -1:
+ * stp_project_exact_bits) */
+static inline void stp_view_perspective_device_bits(const stp_view_lens *lens, int fb, const stp_vec3 *p,
+                                                    int32_t out[3])
+{
+    int32_t x32, y32;
+    if (stp_project_exact_bits((uint32_t)lens->focal, fb, (uint32_t)lens->hither,
+                               (uint32_t)(p->z < lens->hither ? lens->hither : p->z), p->x, p->y, &x32, &y32,
+                               &out[2])) {
+        /* |offset| < 2^(31 - 12): the sums fit int32 */
+        out[0] = stp_project_clamp(lens->half_width + x32, 2 * lens->half_width);
+        out[1] = stp_project_clamp(lens->half_height - y32, 2 * lens->half_height);
+        return;
+    }
+    stp_view_perspective_device_wide(lens, p, out);
+}
+
+static inline void stp_view_perspective_device(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3])
+{
+    stp_view_perspective_device_bits(lens, -1, p, out);
+}
+#endif
 
 #endif

@@ -125,8 +125,8 @@ static void split_from(stp_view_transform *out)
         else
             h->from_high32 = (int32_t)high;
 #if STP_NARROW_FORMS
-        h->unit_high = h->from_high32 + 0x8000;
-        h->unit_low = ((uint32_t)h->from_high32 << 16) + (uint32_t)h->from_low;
+        out->unit_high[k] = h->from_high32 + 0x8000;
+        out->unit_low[k] = ((uint32_t)h->from_high32 << 16) + (uint32_t)h->from_low;
 #endif
         a[0] = axis[k]->x;
         a[1] = axis[k]->y;
@@ -313,6 +313,11 @@ void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 
 {
     stp_view_transform_point_wide(t, p, out); /* view_private.h */
 }
+
+void stp_view_transform_point_at(const stp_view_transform *t, const stp_vec3 *p, stp_vec3 *out)
+{
+    stp_view_transform_point_wide(t, *p, out);
+}
 #else
 /* floor(v / 2^16) (>> of a negative value is the implementation's: the
  * arithmetic shift on every compiler the project builds with, where the
@@ -401,15 +406,15 @@ STP_HOT_INLINE stp_fix axis_coordinate(const point_halves *p, const stp_vec3 *a,
  * their difference from e's taken mod 2^16.  Six products, the same
  * value, in two passes over the axes that each hold few values (ARMv6-M:
  * eight registers for products). */
-STP_HOT_INLINE int32_t unit_estimate(const int32_t h[3], const stp_vec3 *a, const stp_view_axis32 *x)
+STP_HOT_INLINE int32_t unit_estimate(const int32_t h[3], const stp_vec3 *a, int32_t unit_high)
 {
-    return stp_asr32(h[0] * a->x + h[1] * a->y + h[2] * a->z, 2) - x->unit_high;
+    return stp_asr32(h[0] * a->x + h[1] * a->y + h[2] * a->z, 2) - unit_high;
 }
 
-STP_HOT_INLINE stp_fix unit_coordinate(const stp_vec3 *p, const stp_vec3 *a, const stp_view_axis32 *x, int32_t e)
+STP_HOT_INLINE stp_fix unit_coordinate(const stp_vec3 *p, const stp_vec3 *a, uint32_t unit_low, int32_t e)
 {
     uint32_t s = (uint32_t)p->x * (uint32_t)a->x + (uint32_t)p->y * (uint32_t)a->y +
-                 (uint32_t)p->z * (uint32_t)a->z - x->unit_low;
+                 (uint32_t)p->z * (uint32_t)a->z - unit_low;
     return e + (int32_t)(((s >> 16) - (uint32_t)e) & 0xFFFFu);
 }
 #endif
@@ -423,6 +428,12 @@ static void split_point(int32_t v, int32_t *h, int32_t *l)
 
 void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out)
 {
+    stp_view_transform_point_at(t, &p, out);
+}
+
+void stp_view_transform_point_at(const stp_view_transform *t, const stp_vec3 *pp, stp_vec3 *out)
+{
+    stp_vec3 p = *pp;
     point_halves ph;
     int narrow;
     /* every p_i in [-2^28, 2^28) */
@@ -436,12 +447,12 @@ void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 
         h[0] = stp_asr32(p.x, 14);
         h[1] = stp_asr32(p.y, 14);
         h[2] = stp_asr32(p.z, 14);
-        out->x = unit_estimate(h, &t->right, &t->axis32[0]);
-        out->y = unit_estimate(h, &t->up, &t->axis32[1]);
-        out->z = unit_estimate(h, &t->forward, &t->axis32[2]);
-        out->x = unit_coordinate(&p, &t->right, &t->axis32[0], out->x);
-        out->y = unit_coordinate(&p, &t->up, &t->axis32[1], out->y);
-        out->z = unit_coordinate(&p, &t->forward, &t->axis32[2], out->z);
+        out->x = unit_estimate(h, &t->right, t->unit_high[0]);
+        out->y = unit_estimate(h, &t->up, t->unit_high[1]);
+        out->z = unit_estimate(h, &t->forward, t->unit_high[2]);
+        out->x = unit_coordinate(&p, &t->right, t->unit_low[0], out->x);
+        out->y = unit_coordinate(&p, &t->up, t->unit_low[1], out->y);
+        out->z = unit_coordinate(&p, &t->forward, t->unit_low[2], out->z);
         return;
     }
 #endif
@@ -517,3 +528,10 @@ void stp_view_perspective_wide(stp_fix focal, stp_fix hither, const stp_vec3 *pp
         *key = (int32_t)stp_div64_by(&dz, ((int64_t)hither) << 30);
 #endif
 }
+
+#if !STP_WIDE_ARITH
+void stp_view_perspective_device_wide(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3])
+{
+    stp_project_device_wide(lens, p, out);
+}
+#endif

@@ -41,11 +41,6 @@ typedef int16_t stp_view_half;
 typedef struct stp_view_axis32 {
     stp_view_half high[3], low[3];
     int32_t from_high32, from_low;
-#if STP_NARROW_FORMS
-    /* view.c's short form: from_high32 + 2^15, and from . axis mod 2^32 */
-    int32_t unit_high;
-    uint32_t unit_low;
-#endif
 } stp_view_axis32;
 
 /* World to view coordinates: the view's axes and the eye's coordinate
@@ -53,13 +48,20 @@ typedef struct stp_view_axis32 {
  * view coordinates are p . axis - from . axis, exact in 64 bits. */
 typedef struct stp_view_transform {
     stp_vec3 right, up, forward;
-    int64_t from_right, from_up, from_forward;
-    /* the 32-bit targets' form (view.c) of each axis k (right, up, forward) */
-    stp_view_axis32 axis32[3];
-    int narrow; /* every from_high below 2^28 in magnitude */
     int unit;   /* narrow, and every axis's squared length at most 5 2^30
                    (1.25 units squared): view.c's short form (with
                    STP_NARROW_FORMS, else 0) */
+#if STP_NARROW_FORMS
+    /* view.c's short form of axis k (right, up, forward): from_high32 +
+     * 2^15, and from . axis mod 2^32; here, next to the axes, where every
+     * field the short form reads is within ARMv6-M's load offsets */
+    int32_t unit_high[3];
+    uint32_t unit_low[3];
+#endif
+    int narrow; /* every from_high below 2^28 in magnitude */
+    int64_t from_right, from_up, from_forward;
+    /* the 32-bit targets' form (view.c) of each axis k (right, up, forward) */
+    stp_view_axis32 axis32[3];
 } stp_view_transform;
 
 /* The view's axes (view_frame_make's, the one place they are formed):
@@ -76,8 +78,11 @@ void stp_view_transform_make(const stp_view_frame *vf, stp_view_transform *out);
 void stp_view_transform_of_axes(stp_vec3 right, stp_vec3 up, stp_vec3 forward, stp_vec3 from,
                                 stp_view_transform *out);
 
-/* p (world) in view coordinates, each floor((p - from) . axis), saturated. */
+/* p (world) in view coordinates, each floor((p - from) . axis), saturated;
+ * _at: the same of *p (out not p), which leaves p in memory rather than
+ * copying it (ARMv6-M: fewer values live in the 32-bit form). */
 void stp_view_transform_point(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out);
+void stp_view_transform_point_at(const stp_view_transform *t, const stp_vec3 *p, stp_vec3 *out);
 
 #if STP_WIDE_ARITH
 /* stp_view_transform_point where 64-bit products are single instructions,
@@ -199,6 +204,11 @@ int stp_view_triangle_side(stp_vec3 from, stp_vec3 forward, int parallel, const 
  * quotients (one reciprocal of z on targets without STP_WIDE_ARITH). */
 void stp_view_perspective_wide(stp_fix focal, stp_fix hither, const stp_vec3 *p, int64_t *x, int64_t *y,
                                int32_t *key);
+
+/* stp_project_device_wide (project_private.h) out of line, where 64-bit
+ * division is a library call: the 32-bit form's fallback. */
+struct stp_view_lens;
+void stp_view_perspective_device_wide(const struct stp_view_lens *lens, const stp_vec3 *p, int32_t out[3]);
 
 /* The one perspective projection: project_private.h. */
 #include "project_private.h"
