@@ -1335,7 +1335,10 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
     STP_UNROLL3
     for (i = 0; i < 3; i++)
         nn += (uint32_t)((int32_t)normal[i] * normal[i]);
-    return nn > 0x10020000u ? 0x20000 : (nn < 0x0FFE0000u ? -0x20000 : (int32_t)(nn - 0x10000000u));
+    /* one test for the common case, nn within 2^17 of 2^28 */
+    if (STP_UNLIKELY(nn - 0x0FFE0000u > 0x40000u))
+        return nn > 0x10020000u ? 0x20000 : -0x20000;
+    return (int32_t)(nn - 0x10000000u);
 }
 
 #if STP_WITH_SPECULAR
