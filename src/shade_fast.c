@@ -288,16 +288,16 @@ STP_HOT_INLINE stp_sf16 recip_cos(uint32_t c, uint32_t *q26)
     stp_sf16 a;
     int n, sh;
     a.e = 30;
-    while (c < ((uint32_t)1 << 26)) {
+    while (STP_UNLIKELY(c < ((uint32_t)1 << 26))) {
         c <<= 4;
         a.e += 4;
     }
-    n = (c >= (uint32_t)Q30 ? 31 : bit_length_26(c)) - 16; /* 11 .. 15 */
+    n = (STP_UNLIKELY(c >= (uint32_t)Q30) ? 31 : bit_length_26(c)) - 16; /* 11 .. 15 */
     a.m = c >> n;
     a.e -= n;
     a = sf_recip_hot(a);
     sh = 26 - a.e; /* >= 10 */
-    *q26 = sh >= 16 ? 0x7FFFFFFFu : a.m << sh;
+    *q26 = STP_UNLIKELY(sh >= 16) ? 0x7FFFFFFFu : a.m << sh;
     return a;
 }
 
