@@ -307,14 +307,11 @@ static uint32_t sf_aligned(stp_sf16 b, int d)
     return d > 16 ? 0 : b.m >> d;
 }
 
-STP_HOT_INLINE stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
+/* sf_add for a.m, b.m != 0 */
+STP_HOT_INLINE stp_sf16 sf_add_nz(stp_sf16 a, stp_sf16 b)
 {
     stp_sf16 r;
     uint32_t sum;
-    if (b.m == 0)
-        return a;
-    if (a.m == 0)
-        return b;
     /* the one with the larger scale (the smaller e) keeps its mantissa,
      * the other is aligned to it (no swap of the pair) */
     if (a.e > b.e) {
@@ -331,6 +328,15 @@ STP_HOT_INLINE stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
         r.m = sum;
     }
     return r;
+}
+
+STP_HOT_INLINE stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
+{
+    if (b.m == 0)
+        return a;
+    if (a.m == 0)
+        return b;
+    return sf_add_nz(a, b);
 }
 
 #if STP_WITH_SPECULAR
@@ -1377,7 +1383,8 @@ STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
         n_dot_l = cos_n(n_dot_l, &l, nd);
         if (n_dot_l <= 0)
             return 0;
-        w = sf_recip_hot(sf_add(s->attenuation_c, dir_length(&l)));
+        /* C >= 1 raw unit and |L| > 0: neither mantissa is 0 */
+        w = sf_recip_hot(sf_add_nz(s->attenuation_c, dir_length(&l)));
     } else {
         n_dot_l = Q30; /* the light on the face: lit head-on (L = N), U = 0 */
         w = sf_recip(s->attenuation_c);
