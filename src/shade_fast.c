@@ -270,9 +270,9 @@ STP_HOT_INLINE int bit_length_near(uint32_t v, int s)
     return stp_bit_length32(v);
 #else
     uint32_t t = v >> s;
-    if (t - 1u < 15u)
-        return s + (int)STP_TABLE_U16(&len4[t]);
-    return stp_bit_length32(v);
+    if (STP_UNLIKELY(t - 1u >= 15u))
+        return stp_bit_length32(v);
+    return s + (int)STP_TABLE_U16(&len4[t]);
 #endif
 }
 
