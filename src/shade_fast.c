@@ -214,7 +214,7 @@ STP_HOT_INLINE stp_sf16 sf_recip_of(stp_sf16 a, uint32_t y)
     stp_sf16 r;
     r.m = y;
     r.e = 31 - a.e;
-    if (r.m > 0xFFFFu) { /* a.m = 2^15 exactly */
+    if (STP_UNLIKELY(r.m > 0xFFFFu)) { /* a.m = 2^15 exactly */
         r.m >>= 1;
         r.e--;
     }
@@ -359,9 +359,9 @@ STP_HOT_INLINE int32_t share_of(uint32_t p, int sh)
 {
     if (p == 0)
         return 0; /* a zero product (a light of power 0) has any exponent */
-    if (sh >= 0)
+    if (STP_UNLIKELY(sh >= 0))
         return sh >= 31 || p > (SHARE_CAP >> sh) ? (int32_t)SHARE_CAP : (int32_t)(p << sh);
-    return sh <= -32 ? 0 : (int32_t)(p >> -sh);
+    return STP_UNLIKELY(sh <= -32) ? 0 : (int32_t)(p >> -sh);
 }
 
 /* a b in Q26 for a in Q(q) (a < 2^31), b = m 2^-e: floor(2 a m 2^-16)
