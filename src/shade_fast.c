@@ -628,7 +628,7 @@ static uint32_t fresnel_q16(const stp_shade_fast *s, uint32_t c, int32_t e_dot_l
         uint32_t i = (c - FRESNEL_C0) >> 24, frac = ((c - FRESNEL_C0) >> 8) & 0xFFFFu;
         uint32_t a = s->fresnel[i];
         int32_t d;
-        if (i >= STP_SHADE_FAST_FRESNEL_NODES - 1)
+        if (STP_UNLIKELY(i >= STP_SHADE_FAST_FRESNEL_NODES - 1))
             return a;
         d = (int32_t)s->fresnel[i + 1] - (int32_t)a; /* |d| < 2^16 */
         return (uint32_t)((int32_t)a + stp_asr32(d * (int32_t)frac, 16));
@@ -701,7 +701,7 @@ static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t 
     x = one_el >= 0x80000000u ? 0xFFFFFFFFu : one_el << 1;
     r = rsqrt_any(x, &j); /* 1/|L + E| = r 2^(j - 31) */
     nh = stp_umulhi32_approx((uint32_t)n_dot_l + (uint32_t)n_dot_e, r); /* the sum <= 2^31 + 8 */
-    nh = nh >= (0x80000000u >> (1 + j)) ? (uint32_t)Q30 : nh << (1 + j);
+    nh = STP_UNLIKELY(nh >= (0x80000000u >> (1 + j))) ? (uint32_t)Q30 : nh << (1 + j);
     eh = stp_umulhi32_approx(x, r) << j; /* sqrt(x) 2^14 <= 2^30 */
     if (nh == 0 || eh == 0)
         return 0;
@@ -1571,7 +1571,7 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
             e = &e_local;
         }
         dot_e = dot_n(normal, e);
-        if (dot_e <= 0)
+        if (STP_UNLIKELY(dot_e <= 0))
             return s->ambient_shade; /* a back face, or edge-on */
     }
     nd = normal_deviation(normal);
@@ -1587,9 +1587,9 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
 #endif
     for (j = 0; j < s->count; j++) {
         int32_t share = light_share(s, j, normal, point, point_big, near, nd, e, n_dot_e, inv_ne, inv_ne_q26);
-        if (share > 0) {
+        if (!STP_UNLIKELY(share <= 0)) {
             sum += share; /* GRAZE_EXACT too: at most 2^29 + 2^30 + 1 */
-            if (sum >= SUM_ONE) {
+            if (STP_UNLIKELY(sum >= SUM_ONE)) {
 #if STP_WITH_SPECULAR
                 if (!near && share == GRAZE_EXACT) /* near: no highlight */
                     return s->exact(s, normal, *point);
