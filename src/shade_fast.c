@@ -669,7 +669,7 @@ static uint32_t specular_fixed(const stp_shade_fast *s, int32_t n_dot_l, int32_t
         /* N.L/N.E < 1 in Q30: N.L m 2^-e (inv_ne = m 2^-e) */
         uint32_t p = mul_u16((uint32_t)n_dot_l << 1, inv_ne.m); /* N.L m 2^-15 */
         int sh = 15 - inv_ne.e;
-        uint32_t ratio = sh >= 0 ? (sh >= 16 ? (uint32_t)Q30 : p << sh) : (sh <= -32 ? 0u : p >> -sh);
+        uint32_t ratio = !STP_UNLIKELY(sh < 0) ? (STP_UNLIKELY(sh >= 16) ? (uint32_t)Q30 : p << sh) : (sh <= -32 ? 0u : p >> -sh);
         if (ratio > (uint32_t)Q30)
             ratio = (uint32_t)Q30;
         gne = stp_umulhi32_approx(g1 << 2, ratio); /* g1 ratio in Q26 */
