@@ -307,11 +307,23 @@ static uint32_t sf_aligned(stp_sf16 b, int d)
     return d > 16 ? 0 : b.m >> d;
 }
 
-/* sf_add for a.m, b.m != 0 */
-STP_HOT_INLINE stp_sf16 sf_add_nz(stp_sf16 a, stp_sf16 b)
+/* a + b; nz: a.m, b.m != 0 known (the face's C + U: no tests; builds
+ * for size keep the tests, one body) */
+#if defined(__OPTIMIZE_SIZE__)
+#define SF_ADD_TESTS 1
+#else
+#define SF_ADD_TESTS 0
+#endif
+STP_HOT_INLINE stp_sf16 sf_add_in(stp_sf16 a, stp_sf16 b, int nz)
 {
     stp_sf16 r;
     uint32_t sum;
+    if (!nz || SF_ADD_TESTS) {
+        if (b.m == 0)
+            return a;
+        if (a.m == 0)
+            return b;
+    }
     /* the one with the larger scale (the smaller e) keeps its mantissa,
      * the other is aligned to it (no swap of the pair) */
     if (a.e > b.e) {
@@ -330,14 +342,7 @@ STP_HOT_INLINE stp_sf16 sf_add_nz(stp_sf16 a, stp_sf16 b)
     return r;
 }
 
-STP_HOT_INLINE stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
-{
-    if (b.m == 0)
-        return a;
-    if (a.m == 0)
-        return b;
-    return sf_add_nz(a, b);
-}
+#define sf_add(a, b) sf_add_in(a, b, 0)
 
 #if STP_WITH_SPECULAR
 /* a 2^q truncated, saturated at cap (< 2^31) */
@@ -1384,7 +1389,7 @@ STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
         if (n_dot_l <= 0)
             return 0;
         /* C >= 1 raw unit and |L| > 0: neither mantissa is 0 */
-        w = sf_recip_hot(sf_add_nz(s->attenuation_c, dir_length(&l)));
+        w = sf_recip_hot(sf_add_in(s->attenuation_c, dir_length(&l), 1));
     } else {
         n_dot_l = Q30; /* the light on the face: lit head-on (L = N), U = 0 */
         w = sf_recip(s->attenuation_c);
