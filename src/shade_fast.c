@@ -62,6 +62,15 @@
 
 /* ---- integer helpers ---- */
 
+/* A rare branch of the face laid out of its common path in builds for
+ * speed; builds for size keep the compiler's layout (the hints cost AVR
+ * and -Os images bytes) */
+#if defined(__OPTIMIZE_SIZE__)
+#define HOT_UNLIKELY(c) (c)
+#else
+#define HOT_UNLIKELY(c) STP_UNLIKELY(c)
+#endif
+
 /* The face's shade from the Q26 sum of the ambient part and the shares
  * of the lights that reach it (lit: at least one did), rounded once to
  * stp_fix; a face no light reaches gets the prepared ambient shade. */
@@ -214,7 +223,7 @@ STP_HOT_INLINE stp_sf16 sf_recip_of(stp_sf16 a, uint32_t y)
     stp_sf16 r;
     r.m = y;
     r.e = 31 - a.e;
-    if (r.m > 0xFFFFu) { /* a.m = 2^15 exactly */
+    if (HOT_UNLIKELY(r.m > 0xFFFFu)) { /* a.m = 2^15 exactly */
         r.m >>= 1;
         r.e--;
     }
@@ -270,9 +279,9 @@ STP_HOT_INLINE int bit_length_near(uint32_t v, int s)
     return stp_bit_length32(v);
 #else
     uint32_t t = v >> s;
-    if (t - 1u < 15u)
-        return s + (int)STP_TABLE_U16(&len4[t]);
-    return stp_bit_length32(v);
+    if (HOT_UNLIKELY(t - 1u >= 15u))
+        return stp_bit_length32(v);
+    return s + (int)STP_TABLE_U16(&len4[t]);
 #endif
 }
 
@@ -288,16 +297,16 @@ STP_HOT_INLINE stp_sf16 recip_cos(uint32_t c, uint32_t *q26)
     stp_sf16 a;
     int n, sh;
     a.e = 30;
-    while (c < ((uint32_t)1 << 26)) {
+    while (HOT_UNLIKELY(c < ((uint32_t)1 << 26))) {
         c <<= 4;
         a.e += 4;
     }
-    n = (c >= (uint32_t)Q30 ? 31 : bit_length_26(c)) - 16; /* 11 .. 15 */
+    n = (HOT_UNLIKELY(c >= (uint32_t)Q30) ? 31 : bit_length_26(c)) - 16; /* 11 .. 15 */
     a.m = c >> n;
     a.e -= n;
     a = sf_recip_hot(a);
     sh = 26 - a.e; /* >= 10 */
-    *q26 = sh >= 16 ? 0x7FFFFFFFu : a.m << sh;
+    *q26 = HOT_UNLIKELY(sh >= 16) ? 0x7FFFFFFFu : a.m << sh;
     return a;
 }
 
@@ -307,14 +316,23 @@ static uint32_t sf_aligned(stp_sf16 b, int d)
     return d > 16 ? 0 : b.m >> d;
 }
 
-STP_HOT_INLINE stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
+/* a + b; nz: a.m, b.m != 0 known (the face's C + U: no tests; builds
+ * for size keep the tests, one body) */
+#if defined(__OPTIMIZE_SIZE__)
+#define SF_ADD_TESTS 1
+#else
+#define SF_ADD_TESTS 0
+#endif
+STP_HOT_INLINE stp_sf16 sf_add_in(stp_sf16 a, stp_sf16 b, int nz)
 {
     stp_sf16 r;
     uint32_t sum;
-    if (b.m == 0)
-        return a;
-    if (a.m == 0)
-        return b;
+    if (!nz || SF_ADD_TESTS) {
+        if (b.m == 0)
+            return a;
+        if (a.m == 0)
+            return b;
+    }
     /* the one with the larger scale (the smaller e) keeps its mantissa,
      * the other is aligned to it (no swap of the pair) */
     if (a.e > b.e) {
@@ -332,6 +350,8 @@ STP_HOT_INLINE stp_sf16 sf_add(stp_sf16 a, stp_sf16 b)
     }
     return r;
 }
+
+#define sf_add(a, b) sf_add_in(a, b, 0)
 
 #if STP_WITH_SPECULAR
 /* a 2^q truncated, saturated at cap (< 2^31) */
@@ -353,9 +373,9 @@ STP_HOT_INLINE int32_t share_of(uint32_t p, int sh)
 {
     if (p == 0)
         return 0; /* a zero product (a light of power 0) has any exponent */
-    if (sh >= 0)
+    if (HOT_UNLIKELY(sh >= 0))
         return sh >= 31 || p > (SHARE_CAP >> sh) ? (int32_t)SHARE_CAP : (int32_t)(p << sh);
-    return sh <= -32 ? 0 : (int32_t)(p >> -sh);
+    return HOT_UNLIKELY(sh <= -32) ? 0 : (int32_t)(p >> -sh);
 }
 
 /* a b in Q26 for a in Q(q) (a < 2^31), b = m 2^-e: floor(2 a m 2^-16)
@@ -622,7 +642,7 @@ static uint32_t fresnel_q16(const stp_shade_fast *s, uint32_t c, int32_t e_dot_l
         uint32_t i = (c - FRESNEL_C0) >> 24, frac = ((c - FRESNEL_C0) >> 8) & 0xFFFFu;
         uint32_t a = s->fresnel[i];
         int32_t d;
-        if (i >= STP_SHADE_FAST_FRESNEL_NODES - 1)
+        if (HOT_UNLIKELY(i >= STP_SHADE_FAST_FRESNEL_NODES - 1))
             return a;
         d = (int32_t)s->fresnel[i + 1] - (int32_t)a; /* |d| < 2^16 */
         return (uint32_t)((int32_t)a + stp_asr32(d * (int32_t)frac, 16));
@@ -663,7 +683,7 @@ static uint32_t specular_fixed(const stp_shade_fast *s, int32_t n_dot_l, int32_t
         /* N.L/N.E < 1 in Q30: N.L m 2^-e (inv_ne = m 2^-e) */
         uint32_t p = mul_u16((uint32_t)n_dot_l << 1, inv_ne.m); /* N.L m 2^-15 */
         int sh = 15 - inv_ne.e;
-        uint32_t ratio = sh >= 0 ? (sh >= 16 ? (uint32_t)Q30 : p << sh) : (sh <= -32 ? 0u : p >> -sh);
+        uint32_t ratio = !HOT_UNLIKELY(sh < 0) ? (HOT_UNLIKELY(sh >= 16) ? (uint32_t)Q30 : p << sh) : (sh <= -32 ? 0u : p >> -sh);
         if (ratio > (uint32_t)Q30)
             ratio = (uint32_t)Q30;
         gne = stp_umulhi32_approx(g1 << 2, ratio); /* g1 ratio in Q26 */
@@ -695,7 +715,7 @@ static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t 
     x = one_el >= 0x80000000u ? 0xFFFFFFFFu : one_el << 1;
     r = rsqrt_any(x, &j); /* 1/|L + E| = r 2^(j - 31) */
     nh = stp_umulhi32_approx((uint32_t)n_dot_l + (uint32_t)n_dot_e, r); /* the sum <= 2^31 + 8 */
-    nh = nh >= (0x80000000u >> (1 + j)) ? (uint32_t)Q30 : nh << (1 + j);
+    nh = HOT_UNLIKELY(nh >= (0x80000000u >> (1 + j))) ? (uint32_t)Q30 : nh << (1 + j);
     eh = stp_umulhi32_approx(x, r) << j; /* sqrt(x) 2^14 <= 2^30 */
     if (nh == 0 || eh == 0)
         return 0;
@@ -1335,7 +1355,14 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
     STP_UNROLL3
     for (i = 0; i < 3; i++)
         nn += (uint32_t)((int32_t)normal[i] * normal[i]);
+#if !defined(__OPTIMIZE_SIZE__)
+    /* one test for the common case, nn within 2^17 of 2^28 */
+    if (HOT_UNLIKELY(nn - 0x0FFE0000u > 0x40000u))
+        return nn > 0x10020000u ? 0x20000 : -0x20000;
+    return (int32_t)(nn - 0x10000000u);
+#else
     return nn > 0x10020000u ? 0x20000 : (nn < 0x0FFE0000u ? -0x20000 : (int32_t)(nn - 0x10000000u));
+#endif
 }
 
 #if STP_WITH_SPECULAR
@@ -1374,7 +1401,8 @@ STP_FACE_BODY int32_t light_share(const stp_shade_fast *s, int j, const int16_t 
         n_dot_l = cos_n(n_dot_l, &l, nd);
         if (n_dot_l <= 0)
             return 0;
-        w = sf_recip_hot(sf_add(s->attenuation_c, dir_length(&l)));
+        /* C >= 1 raw unit and |L| > 0: neither mantissa is 0 */
+        w = sf_recip_hot(sf_add_in(s->attenuation_c, dir_length(&l), 1));
     } else {
         n_dot_l = Q30; /* the light on the face: lit head-on (L = N), U = 0 */
         w = sf_recip(s->attenuation_c);
@@ -1561,7 +1589,7 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
             e = &e_local;
         }
         dot_e = dot_n(normal, e);
-        if (dot_e <= 0)
+        if (HOT_UNLIKELY(dot_e <= 0))
             return s->ambient_shade; /* a back face, or edge-on */
     }
     nd = normal_deviation(normal);
@@ -1577,9 +1605,9 @@ STP_FACE_BODY stp_fix face_body(const stp_shade_fast *s, const int16_t normal[3]
 #endif
     for (j = 0; j < s->count; j++) {
         int32_t share = light_share(s, j, normal, point, point_big, near, nd, e, n_dot_e, inv_ne, inv_ne_q26);
-        if (share > 0) {
+        if (!HOT_UNLIKELY(share <= 0)) {
             sum += share; /* GRAZE_EXACT too: at most 2^29 + 2^30 + 1 */
-            if (sum >= SUM_ONE) {
+            if (HOT_UNLIKELY(sum >= SUM_ONE)) {
 #if STP_WITH_SPECULAR
                 if (!near && share == GRAZE_EXACT) /* near: no highlight */
                     return s->exact(s, normal, *point);

@@ -65,7 +65,7 @@ typedef struct stp_shade_fast {
     stp_fix ambient_shade; /* the shade of a face no light reaches (exactly
                               as stp_shade_unit rounds it) */
     int32_t ambient;     /* BRIGHT B R in Q26 (one = 2^26), in [-2^29, 2^29] */
-    stp_sf16 attenuation_c; /* C in raw stp_fix units */
+    stp_sf16 attenuation_c; /* C in raw stp_fix units (C >= 1: m != 0) */
     stp_sf16 power_refl[STP_MAX_LIGHTS]; /* BRIGHT P_j |R| 2^F (per raw unit of C + U) */
 #if STP_WITH_SPECULAR
     stp_sf16 power_ks[STP_MAX_LIGHTS]; /* BRIGHT P_j Ks 2^F (per raw unit of C + U) */
