@@ -188,18 +188,19 @@ ONCE_A_CALL int prepare_call(mesh_context *c)
     lo = hi = c->mesh->vertices[0];
     sv = c->scratch;
     for (p = c->mesh->vertices, end = p + c->mesh->vertex_count; p != end; p++, sv++) {
-        if (p->x < lo.x)
-            lo.x = p->x;
-        else if (p->x > hi.x)
-            hi.x = p->x;
-        if (p->y < lo.y)
-            lo.y = p->y;
-        else if (p->y > hi.y)
-            hi.y = p->y;
-        if (p->z < lo.z)
-            lo.z = p->z;
-        else if (p->z > hi.z)
-            hi.z = p->z;
+        stp_fix x = p->x, y = p->y, z = p->z;
+        if (STP_UNLIKELY(x < lo.x))
+            lo.x = x;
+        if (STP_UNLIKELY(x > hi.x))
+            hi.x = x;
+        if (STP_UNLIKELY(y < lo.y))
+            lo.y = y;
+        if (STP_UNLIKELY(y > hi.y))
+            hi.y = y;
+        if (STP_UNLIKELY(z < lo.z))
+            lo.z = z;
+        if (STP_UNLIKELY(z > hi.z))
+            hi.z = z;
         sv->state = STATE_NEW;
     }
     /* the box's corners bound every coordinate's magnitude */
