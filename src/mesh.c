@@ -35,18 +35,21 @@
 #define SURE_BACK 0
 #endif
 
-/* The once-a-call steps (check_mesh, prepare_call, bound_and_mark) kept
- * out of stp_renderer_mesh where 64-bit products are library calls and
- * time counts, so that the face loop's function holds less (M0+ torus:
- * 80 instructions, 167 cycles a frame fewer for the first two); inline in
- * a build for size (16 bytes less at -Os) and on 64-bit hosts (5 K
- * instructions a frame fewer). */
+/* TIME_FIRST: a 32-bit core's build for speed (64-bit products library
+ * calls, not -Os), where code off the face loop's common path is kept out
+ * of stp_renderer_mesh (OUT_OF_LINE: the once-a-call steps check_mesh,
+ * prepare_call and bound_and_mark; a face crossing the view volume's
+ * planes, ready_clipped; wide_centre), so that the face loop's function
+ * holds less and its branches reach (M0+ torus: 80 instructions, 167
+ * cycles a frame fewer for the first two; ready_clipped 1 200 and 1 500);
+ * elsewhere inline: the shorter code at -Os, the faster on a 64-bit host
+ * (5 K instructions a frame fewer). */
 #if !STP_WIDE_ARITH && !defined(__OPTIMIZE_SIZE__)
 #define TIME_FIRST 1 /* also bound_and_mark's and enter_face's forms */
-#define ONCE_A_CALL STP_NOINLINE
+#define OUT_OF_LINE STP_NOINLINE
 #else
 #define TIME_FIRST 0
-#define ONCE_A_CALL static
+#define OUT_OF_LINE static
 #endif
 
 /* What one call finds once for all its triangles. */
@@ -183,14 +186,14 @@ STP_HOT_INLINE void box_grow(stp_fix v, stp_fix *lo, uint32_t *span)
 
 /* The bounding box [*lo_out, *hi_out] of the points p to end (at least
  * one), their scratch entries (from sv) marked new in the same pass.
- * Where time counts on a 32-bit core (ONCE_A_CALL) a function of its own,
+ * Where time counts on a 32-bit core (TIME_FIRST) a function of its own,
  * short, so that a bound's rare update lies within the short conditional
  * branch's reach (ARMv6-M), and a coordinate inside the box one unsigned
  * test of its offset from the low corner (the span hi - lo): the common
  * case falls through (M0+ torus, 500 vertices: 2 700 cycles a frame
  * fewer).  Elsewhere two tests a coordinate, the shorter code (-Os) and
  * the faster on a 64-bit host. */
-ONCE_A_CALL void bound_and_mark(const stp_vec3 *p, const stp_vec3 *end, stp_mesh_vertex *sv, stp_vec3 *lo_out,
+OUT_OF_LINE void bound_and_mark(const stp_vec3 *p, const stp_vec3 *end, stp_mesh_vertex *sv, stp_vec3 *lo_out,
                                 stp_vec3 *hi_out)
 {
 #if TIME_FIRST
@@ -237,7 +240,7 @@ ONCE_A_CALL void bound_and_mark(const stp_vec3 *p, const stp_vec3 *end, stp_mesh
 /* The per-call values of the fast path (mesh_context); 0 when the model
  * frame (render_private.h: the model transform, the eye's place) rules it
  * out. */
-ONCE_A_CALL int prepare_call(mesh_context *c)
+OUT_OF_LINE int prepare_call(mesh_context *c)
 {
     const stp_renderer *r = c->r;
     const stp_model_frame *f = stp_render_model_frame(c->r);
@@ -446,20 +449,18 @@ STP_HOT_INLINE void ready_inside(const mesh_context *c, stp_mesh_vertex *s, uint
         vertex_ready(c, s, i);
 }
 
-/* Whether the triangle of indices k (scratch entries s[0..2]) is to be
- * drawn, its vertices now transformed and projected (1), or else the
- * status to return for it (STP_OK: wholly outside one plane; an error; the
- * fallback's status for one crossing a plane): enter_face's path for a
- * face with a vertex not ready. */
-static int ready_vertices(mesh_context *c, const uint16_t *k, stp_mesh_vertex *const s[3])
+/* Whether the triangle of indices k is to be drawn, its vertices now
+ * transformed and projected (1), or else the status to return for it
+ * (STP_OK: wholly outside one plane; an error; the fallback's status for
+ * one crossing a plane), the model's box not inside the view volume
+ * (outcodes needed): ready_vertices' rare case. */
+OUT_OF_LINE int ready_clipped(mesh_context *c, const uint16_t *k)
 {
     int32_t code0, code1, code2, any;
-    if (c->inside) { /* box_inside: every outcode 0 */
-        ready_inside(c, s[0], k[0]);
-        ready_inside(c, s[1], k[1]);
-        ready_inside(c, s[2], k[2]);
-        return 1;
-    }
+    stp_mesh_vertex *s[3];
+    s[0] = &c->scratch[k[0]];
+    s[1] = &c->scratch[k[1]];
+    s[2] = &c->scratch[k[2]];
     c->last_shade = -1; /* but for the fallback's */
     code0 = vertex_code(c, s[0], k[0]);
     code1 = vertex_code(c, s[1], k[1]);
@@ -478,6 +479,20 @@ static int ready_vertices(mesh_context *c, const uint16_t *k, stp_mesh_vertex *c
     if (s[2]->state != 0)
         vertex_ready(c, s[2], k[2]);
     return 1;
+}
+
+/* ready_clipped's value for the triangle of indices k (scratch entries
+ * s[0..2]): enter_face's path for a face with a vertex not ready, the
+ * common case (every vertex inside the view volume: box_inside) here. */
+STP_HOT_INLINE int ready_vertices(mesh_context *c, const uint16_t *k, stp_mesh_vertex *const s[3])
+{
+    if (c->inside) { /* box_inside: every outcode 0 */
+        ready_inside(c, s[0], k[0]);
+        ready_inside(c, s[1], k[1]);
+        ready_inside(c, s[2], k[2]);
+        return 1;
+    }
+    return ready_clipped(c, k);
 }
 
 #if TIME_FIRST
@@ -576,7 +591,7 @@ static int enter_faces(mesh_context *c, uint16_t count)
 }
 
 /* The arguments and every index, before anything is entered. */
-ONCE_A_CALL int check_mesh(const stp_renderer *r, const stp_mesh *mesh, const stp_mesh_vertex *scratch,
+OUT_OF_LINE int check_mesh(const stp_renderer *r, const stp_mesh *mesh, const stp_mesh_vertex *scratch,
                       size_t scratch_count)
 {
     const uint16_t *k, *end;
