@@ -449,18 +449,21 @@ STP_HOT_INLINE void ready_inside(const mesh_context *c, stp_mesh_vertex *s, uint
         vertex_ready(c, s, i);
 }
 
-/* Whether the triangle of indices k is to be drawn, its vertices now
+/* Whether the triangle of indices k (scratch entries s0, s1, s2; passed
+ * one by one, not as enter_face's array, which a call would keep in
+ * memory) is to be drawn, its vertices now
  * transformed and projected (1), or else the status to return for it
  * (STP_OK: wholly outside one plane; an error; the fallback's status for
  * one crossing a plane), the model's box not inside the view volume
  * (outcodes needed): ready_vertices' rare case. */
-OUT_OF_LINE int ready_clipped(mesh_context *c, const uint16_t *k)
+OUT_OF_LINE int ready_clipped(mesh_context *c, const uint16_t *k, stp_mesh_vertex *s0, stp_mesh_vertex *s1,
+                              stp_mesh_vertex *s2)
 {
     int32_t code0, code1, code2, any;
     stp_mesh_vertex *s[3];
-    s[0] = &c->scratch[k[0]];
-    s[1] = &c->scratch[k[1]];
-    s[2] = &c->scratch[k[2]];
+    s[0] = s0;
+    s[1] = s1;
+    s[2] = s2;
     c->last_shade = -1; /* but for the fallback's */
     code0 = vertex_code(c, s[0], k[0]);
     code1 = vertex_code(c, s[1], k[1]);
@@ -484,7 +487,7 @@ OUT_OF_LINE int ready_clipped(mesh_context *c, const uint16_t *k)
 /* ready_clipped's value for the triangle of indices k (scratch entries
  * s[0..2]): enter_face's path for a face with a vertex not ready, the
  * common case (every vertex inside the view volume: box_inside) here. */
-STP_HOT_INLINE int ready_vertices(mesh_context *c, const uint16_t *k, stp_mesh_vertex *const s[3])
+static int ready_vertices(mesh_context *c, const uint16_t *k, stp_mesh_vertex *const s[3])
 {
     if (c->inside) { /* box_inside: every outcode 0 */
         ready_inside(c, s[0], k[0]);
@@ -492,7 +495,7 @@ STP_HOT_INLINE int ready_vertices(mesh_context *c, const uint16_t *k, stp_mesh_v
         ready_inside(c, s[2], k[2]);
         return 1;
     }
-    return ready_clipped(c, k);
+    return ready_clipped(c, k, s[0], s[1], s[2]);
 }
 
 #if TIME_FIRST
