@@ -593,6 +593,23 @@ static int enter_faces(mesh_context *c, uint16_t count)
     return status;
 }
 
+/* The fallback route for each of the count triangles (a call the fast
+ * path cannot take: fast_state, prepare_call), the scratch entries marked
+ * new first (prepare_call's pass on the fast path); a call of its own,
+ * out of the fast path's way. */
+STP_NOINLINE int enter_slow(const mesh_context *c, uint16_t count)
+{
+    const uint16_t *k = c->mesh->triangles, *end = k + 3 * (uint32_t)count;
+    stp_mesh_vertex *sv, *sv_end;
+    int status = STP_OK;
+    for (sv = c->scratch, sv_end = sv + c->mesh->vertex_count; sv != sv_end; sv++)
+        sv->state = STATE_NEW;
+    for (; k != end; k += 3)
+        if ((status = enter_fallback(c, k)) != STP_OK)
+            break;
+    return status;
+}
+
 /* The arguments and every index, before anything is entered. */
 OUT_OF_LINE int check_mesh(const stp_renderer *r, const stp_mesh *mesh, const stp_mesh_vertex *scratch,
                       size_t scratch_count)
@@ -629,8 +646,7 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
                       size_t scratch_count)
 {
     mesh_context c;
-    stp_mesh_vertex *sv, *end;
-    uint16_t t, count;
+    uint16_t count;
     int status = check_mesh(r, mesh, scratch, scratch_count), fast;
     if (status != STP_OK)
         return status;
@@ -657,18 +673,9 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
     if (!fast)
         return STP_ERR_UNSUPPORTED;
 #endif
-    if (!fast) /* else prepare_call did */
-        for (sv = scratch, end = scratch + mesh->vertex_count; sv != end; sv++)
-            sv->state = STATE_NEW;
     count = mesh->triangle_count; /* once: the stores below may alias the mesh */
     /* one loop per route: no choice per triangle */
-    if (fast) {
-        status = enter_faces(&c, count);
-    } else {
-        for (t = 0; t < count; t++)
-            if ((status = enter_fallback(&c, &mesh->triangles[3 * (uint32_t)t])) != STP_OK)
-                break;
-    }
+    status = fast ? enter_faces(&c, count) : enter_slow(&c, count);
     /* the open segment ends where the display file does (store_face
      * leaves this to here) */
     r->segments[r->open_segment].end = r->used;
