@@ -763,9 +763,9 @@ static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t 
  *   G/(N.E)  Q26 in uint64: min(1/(N.E), 4 N.H/|L + E| min(1, N.L/N.E)),
  *            at most 2^56 (N.E >= 2^-30)
  *   shares   BRIGHT P_j |R| (N.L)/(C + U) and BRIGHT P_j Ks D F G/(N.E)/(C
- *            + U): C + U brought to [2^28, 2^29) by a right shift, the prepared
- *            32-bit power mantissa times 2^28 divided by it (one quotient in (2^30,
- *            2^32)), times the Q30 cosine or the Q26 D F G/(N.E) brought to
+ *            + U): C + U brought to [2^28, 2^29) by a right shift, the
+ *            power's 24-bit mantissa times 2^36 (prepared) divided by it (one
+ *            quotient in (2^30, 2^32)), times the Q30 cosine or the Q26 D F G/(N.E) brought to
  *            32 bits (products below 2^64), shifted to Q26 saturated at
  *            SHARE_CAP; the sum as in the narrow path. */
 
@@ -872,7 +872,7 @@ STP_HOT_INLINE int32_t wide_share(uint64_t p, int t)
 static uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, int64_t el, uint64_t inv_ne)
 {
     uint64_t x = (uint64_t)(2 * (Q30 + el)), sum, nh, eh, omx, gk, d, f, g1, gne, df;
-    int r = (int)(s->wide_gloss >> 24);
+    int r = s->wide_gloss_r;
     if ((int64_t)x <= 0)
         return 0; /* L = -E: H undefined */
     /* x >= 2: |L + E| in Q30 in [2^15, 2^31], N.H in (0, 2^30], E.H > 0 */
@@ -883,18 +883,17 @@ static uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, i
     eh = sum >> 1;
     /* D: k in Q30 as gk 2^r (gk < 2^24), 1 - N.H in [0, 2^30] */
     omx = (uint64_t)Q30 - nh;
-    gk = s->wide_gloss & 0xFFFFFFu;
+    gk = s->wide_gloss;
     d = (gk << 30) / (gk + (omx >> r)); /* Q30, <= 2^30 */
     d = (d * d) >> 30;
-    /* F in Q16 */
-    if (eh >= FRESNEL_C0 && s->refraction_ge_1) {
+    /* F in Q16; n >= 1 here (n < FAST_MIN_REFRACTION takes the exact route,
+     * exact_always, before face_wide) */
+    if (eh >= FRESNEL_C0) {
         /* the prepared table, linearly interpolated (fresnel_q16 inline) */
         uint64_t i = (eh - FRESNEL_C0) >> 24, frac = ((eh - FRESNEL_C0) >> 8) & 0xFFFFu;
         f = s->fresnel[i];
         if (i < STP_SHADE_FAST_FRESNEL_NODES - 1)
             f = (uint64_t)((int64_t)f + asr64(((int64_t)s->fresnel[i + 1] - (int64_t)f) * (int64_t)frac, 16));
-    } else if (eh >= FRESNEL_C0) {
-        f = fresnel_q16(s, (uint32_t)eh, (int32_t)el);
     } else
         f = sf_to_fixed(fresnel_sf(s, (uint32_t)eh, el >= Q30 ? 0u : (uint32_t)((Q30 - el) >> 1)), 16, 0xFFFFu);
     /* G/(N.E) in Q26: g1 = 2 N.H/E.H = 4 N.H/|L + E| (< 2^59) */
@@ -1035,8 +1034,8 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
         t = bit_length64(cu) - 29;
         cu >>= t;
         c -= t;
-        w = ((uint64_t)(s->wide_power[j] & 0xFFFFFFu) << 36) / cu;
-        c -= (int)(s->wide_power[j] >> 24) - 64; /* c - e */
+        w = s->wide_power[j] / cu;
+        c -= s->wide_power_e[j]; /* c - e */
         /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: nl 2^-30 |R| 2^-16 w 2^(c - e -
          * 36) 2^26 = (w nl 2^-30) |R| 2^(c - e - 26); w nl 2^-30 < 2^32, times
          * |R| < 2^31 */
@@ -1088,7 +1087,8 @@ static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const 
         if (j < s->count && lighting->lights[j].power > 0 && bright > 0)
             bp = (uint64_t)(uint32_t)bright * (uint32_t)lighting->lights[j].power;
         n = bit_length64(bp) - 24;
-        s->wide_power[j] = bp == 0 ? 0u : (uint32_t)(n >= 0 ? bp >> n : bp << -n) + ((uint32_t)(16 - n + 64) << 24);
+        s->wide_power[j] = bp == 0 ? 0u : (n >= 0 ? bp >> n : bp << -n) << 36;
+        s->wide_power_e[j] = (int8_t)(bp == 0 ? -64 : 16 - n);
     }
 #if STP_WITH_SPECULAR
     s->wide_ks = material->specular > 0 ? (uint32_t)material->specular : 0u;
@@ -1098,7 +1098,8 @@ static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const 
         uint64_t k = (uint64_t)(material->gloss < 1 ? 1u : (uint32_t)material->gloss) << 14;
         int r = bit_length64(k) - 24;
         r = r < 0 ? 0 : r;
-        s->wide_gloss = (uint32_t)(k >> r) + ((uint32_t)r << 24);
+        s->wide_gloss = (uint32_t)(k >> r);
+        s->wide_gloss_r = (uint8_t)r;
     }
 #endif
 }
