@@ -915,16 +915,16 @@ static uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, i
 
 /* The direction towards the eye, ve, and N.E exactly (|N_i| <= 2^14 + 2,
  * |ve_i| < 2^32). */
-STP_HOT_INLINE int64_t wide_eye_dot(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int64_t ve[3])
+STP_HOT_INLINE int64_t wide_eye_dot(const stp_shade_fast *s, const int16_t normal[3], const int64_t p[3], int64_t ve[3])
 {
     if (s->parallel) {
         ve[0] = s->eye.x; /* the direction towards the eye (wide_prepare) */
         ve[1] = s->eye.y;
         ve[2] = s->eye.z;
     } else {
-        ve[0] = (int64_t)s->eye.x - point.x;
-        ve[1] = (int64_t)s->eye.y - point.y;
-        ve[2] = (int64_t)s->eye.z - point.z;
+        ve[0] = s->eye.x - p[0];
+        ve[1] = s->eye.y - p[1];
+        ve[2] = s->eye.z - p[2];
     }
     return normal[0] * ve[0] + normal[1] * ve[1] + normal[2] * ve[2];
 }
@@ -982,7 +982,7 @@ STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_e
 
 static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
 {
-    int64_t ve[3], dot_e;
+    int64_t ve[3], dot_e, p[3];
     uint64_t nn, nlen28;
     int32_t sum = s->ambient;
     int j, lit = 0;
@@ -991,7 +991,10 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
 #endif
     if (s->count == 0)
         return s->ambient_shade;
-    dot_e = wide_eye_dot(s, normal, point, ve);
+    p[0] = point.x;
+    p[1] = point.y;
+    p[2] = point.z;
+    dot_e = wide_eye_dot(s, normal, p, ve);
     if (dot_e <= 0)
         return s->ambient_shade; /* a back face, edge-on, or the eye on it */
     nn = (uint64_t)((int32_t)normal[0] * normal[0]) + (uint64_t)((int32_t)normal[1] * normal[1]) +
@@ -1013,8 +1016,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
         uint64_t cu, w;
         int c, t;
         int32_t share;
-        int at_point = !wide_make(&l, (int64_t)s->light[j].x - point.x, (int64_t)s->light[j].y - point.y,
-                                  (int64_t)s->light[j].z - point.z);
+        int at_point = !wide_make(&l, s->light[j].x - p[0], s->light[j].y - p[1], s->light[j].z - p[2]);
         if (!at_point) {
             nl = wide_cos_dot(normal[0] * l.v[0] + normal[1] * l.v[1] + normal[2] * l.v[2], &l, nlen28);
             if (nl <= 0)
