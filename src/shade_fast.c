@@ -980,6 +980,12 @@ STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_e
 }
 #endif
 
+/* stp_shade_fast_face's route on a host (wide_route, set by prepare) */
+#define WIDE_NARROW 0  /* the 32-bit path: a struct filled by hand, or F != 16 */
+#define WIDE_AMBIENT 1 /* no light: every face the ambient shade */
+#define WIDE_EXACT 2   /* exact_always with a light: every face exact */
+#define WIDE_FAST 3    /* face_wide, with at least one light */
+
 static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
 {
     int64_t ve[3], dot_e, p[3];
@@ -989,8 +995,6 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
 #if STP_WITH_SPECULAR
     wide_eye we = {{{0, 0, 0}, 0, 0, 0}, 0, 0};
 #endif
-    if (s->count == 0)
-        return s->ambient_shade;
     p[0] = point.x;
     p[1] = point.y;
     p[2] = point.z;
@@ -1010,7 +1014,8 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
         we.inv_ne = ((uint64_t)1 << 56) / (uint64_t)we.ne;
     }
 #endif
-    for (j = 0; j < s->count; j++) {
+    j = 0;
+    do { /* s->count >= 1 (WIDE_FAST) */
         wide_dir l;
         int64_t nl;
         uint64_t cu, w;
@@ -1058,7 +1063,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
             if (sum >= SUM_ONE)
                 return ONE; /* every later share is >= 0 */
         }
-    }
+    } while (++j < s->count);
     return shade_of_sum(s, lit, sum);
 }
 #endif
@@ -1078,7 +1083,11 @@ static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const 
     /* the wide path's formats are written for F = 16 (its powers and
      * attenuation scale by 2^-16); other precisions take the 32-bit path,
      * tested at F = 12, 16 and 20 */
-    s->wide_ready = STP_FIX_FRAC_BITS == 16;
+    s->wide_route = STP_FIX_FRAC_BITS != 16 ? WIDE_NARROW : (s->count == 0 ? WIDE_AMBIENT : WIDE_FAST);
+#if STP_WITH_SPECULAR
+    if (s->wide_route == WIDE_FAST && s->exact_always)
+        s->wide_route = WIDE_EXACT;
+#endif
     s->wide_c = lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u;
     s->wide_refl = refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl;
     for (j = 0; j < STP_MAX_LIGHTS; j++) {
@@ -1340,11 +1349,11 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
 #else
     s->specular = 0;
 #endif
-#if STP_WIDE_ARITH
-    wide_prepare(s, lighting, material, parallel, parallel_dir);
-#endif
 #if STP_WITH_SPECULAR
     exact_prepare(s, lighting, material, parallel, parallel_dir);
+#endif
+#if STP_WIDE_ARITH
+    wide_prepare(s, lighting, material, parallel, parallel_dir); /* after exact_always */
 #endif
 }
 
@@ -1664,16 +1673,18 @@ stp_fix stp_shade_fast_face_near(const stp_shade_fast *s, const int16_t normal[3
 #if STP_WIDE_ARITH
 stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
 {
-    if (!s->wide_ready)
-        return face_narrow(s, normal, point);
 #if STP_SHADE_COMPACT
     if (FACE_COMPACT(s))
         return face_narrow(s, normal, point); /* the compact route, on the 32-bit path's fields */
 #endif
+    if (s->wide_route == WIDE_FAST)
+        return face_wide(s, normal, point); /* the host path */
+    if (s->wide_route == WIDE_NARROW)
+        return face_narrow(s, normal, point);
 #if STP_WITH_SPECULAR
-    if (s->exact_always && s->count != 0)
-        return s->exact(s, normal, point); /* set with wide_ready */
+    if (s->wide_route == WIDE_EXACT)
+        return s->exact(s, normal, point);
 #endif
-    return face_wide(s, normal, point); /* the host path */
+    return s->ambient_shade; /* WIDE_AMBIENT: no light */
 }
 #endif

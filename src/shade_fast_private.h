@@ -105,9 +105,11 @@ typedef struct stp_shade_fast {
 #if STP_WIDE_ARITH /* the 64-bit host path (shade_fast.c "wide"); parallel
                       projection there keeps the direction towards the eye
                       (not 0) in eye */
-    uint8_t wide_ready;  /* 1: set by stp_shade_fast_prepare (the wide
-                            fields below hold); 0: a caller that filled the
-                            32-bit fields itself gets the 32-bit path */
+    uint8_t wide_route;  /* set by stp_shade_fast_prepare (shade_fast.c
+                            WIDE_*: the wide fields below hold unless
+                            WIDE_NARROW); 0 (WIDE_NARROW): a caller that
+                            filled the 32-bit fields itself gets the 32-bit
+                            path */
     uint32_t wide_c;     /* C in raw stp_fix units, >= 1 */
     uint32_t wide_refl;  /* |R| in raw units */
     /* BRIGHT P_j as m 2^-e = b p 2^-16 (b, p raw), m in [2^23, 2^24) or 0,
