@@ -986,7 +986,7 @@ STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_e
 #define WIDE_EXACT 2   /* exact_always with a light: every face exact */
 #define WIDE_FAST 3    /* face_wide, with at least one light */
 
-static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const stp_vec3 *point)
 {
     int64_t ve[3], dot_e, p[3];
     uint64_t nn, nlen28;
@@ -995,9 +995,9 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
 #if STP_WITH_SPECULAR
     wide_eye we = {{{0, 0, 0}, 0, 0, 0}, 0, 0};
 #endif
-    p[0] = point.x;
-    p[1] = point.y;
-    p[2] = point.z;
+    p[0] = point->x;
+    p[1] = point->y;
+    p[2] = point->z;
     dot_e = wide_eye_dot(s, normal, p, ve);
     if (dot_e <= 0)
         return s->ambient_shade; /* a back face, edge-on, or the eye on it */
@@ -1010,7 +1010,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
         if (we.ne <= 0)
             return s->ambient_shade;
         if (we.ne < GRAZE_FLOOR(s))
-            return s->exact(s, normal, point);
+            return s->exact(s, normal, *point);
         we.inv_ne = ((uint64_t)1 << 56) / (uint64_t)we.ne;
     }
 #endif
@@ -1053,7 +1053,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
         if (s->specular) {
             int32_t highlight = wide_light_specular(s, &we, &l, at_point, nl, w, c);
             if (highlight == GRAZE_EXACT)
-                return s->exact(s, normal, point);
+                return s->exact(s, normal, *point);
             share += highlight;
         }
 #endif
@@ -1678,7 +1678,7 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
         return face_narrow(s, normal, point); /* the compact route, on the 32-bit path's fields */
 #endif
     if (s->wide_route == WIDE_FAST)
-        return face_wide(s, normal, point); /* the host path */
+        return face_wide(s, normal, &point); /* the host path */
     if (s->wide_route == WIDE_NARROW)
         return face_narrow(s, normal, point);
 #if STP_WITH_SPECULAR
