@@ -819,17 +819,10 @@ typedef struct wide_dir {
     int j, k;
 } wide_dir;
 
-STP_HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
+/* wide_make's common part: v already scaled by 2^-s */
+STP_HOT_INLINE int wide_make_scaled(wide_dir *d, int64_t v0, int64_t v1, int64_t v2, int s)
 {
-    const uint64_t h = (uint64_t)1 << 30;
     uint64_t q;
-    int s = 0;
-    if ((((uint64_t)v0 + h) | ((uint64_t)v1 + h) | ((uint64_t)v2 + h)) >= 2 * h) {
-        v0 = asr64(v0, 2);
-        v1 = asr64(v1, 2);
-        v2 = asr64(v2, 2);
-        s = 2;
-    }
     d->v[0] = v0;
     d->v[1] = v1;
     d->v[2] = v2;
@@ -843,6 +836,20 @@ STP_HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
     d->k = d->j - s;
     d->len = wide_sqrt60(q << (2 * d->j));
     return 1;
+}
+
+/* wide_make for a component outside [-2^30, 2^30): out of the face's line */
+STP_NOINLINE int wide_make_big(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
+{
+    return wide_make_scaled(d, asr64(v0, 2), asr64(v1, 2), asr64(v2, 2), 2);
+}
+
+STP_HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
+{
+    const uint64_t h = (uint64_t)1 << 30;
+    if (HOT_UNLIKELY((((uint64_t)v0 + h) | ((uint64_t)v1 + h) | ((uint64_t)v2 + h)) >= 2 * h))
+        return wide_make_big(d, v0, v1, v2);
+    return wide_make_scaled(d, v0, v1, v2, 0);
 }
 
 /* N.v/(|N| |v|) in Q30 (clamped to [-2^30, 2^30]) from dot = N.v:
