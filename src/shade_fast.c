@@ -876,7 +876,7 @@ STP_HOT_INLINE int32_t wide_share(uint64_t p, int t)
 #if STP_WITH_SPECULAR
 /* Ks D F G/(N.E) in Q26 (uint64, <= 2^57) for one light: nl, ne, el Q30
  * cosines (nl, ne > 0), inv_ne = 1/(N.E) in Q26. */
-static uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, int64_t el, uint64_t inv_ne)
+STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, int64_t el, uint64_t inv_ne)
 {
     uint64_t x = (uint64_t)(2 * (Q30 + el)), sum, nh, eh, omx, gk, d, f, g1, gne, df;
     int r = s->wide_gloss_r;
@@ -936,15 +936,15 @@ STP_HOT_INLINE int64_t wide_eye_dot(const stp_shade_fast *s, const int16_t norma
     return normal[0] * ve[0] + normal[1] * ve[1] + normal[2] * ve[2];
 }
 
-#if STP_WITH_SPECULAR
 /* The eye's terms of the highlight on a face (face_wide): the direction
- * E, N.E in Q30 and 1/(N.E) in Q26. */
+ * E, N.E in Q30 and 1/(N.E) in Q26 (unused without the highlight). */
 typedef struct wide_eye {
     wide_dir e;
     int64_t ne;
     uint64_t inv_ne;
 } wide_eye;
 
+#if STP_WITH_SPECULAR
 /* N.E in Q30 for the highlight (dot_e = N.E > 0, ve not 0), e the
  * direction towards the eye. */
 STP_HOT_INLINE int64_t wide_eye_cos(const int16_t normal[3], const int64_t ve[3], int64_t dot_e, uint64_t nlen28,
@@ -958,24 +958,23 @@ STP_HOT_INLINE int64_t wide_eye_cos(const int16_t normal[3], const int64_t ve[3]
 #endif
 
 #if STP_WITH_SPECULAR
-/* Light j's highlight share in Q26 (face_wide): l its direction unless
- * at_point, nl N.L, w and c its BRIGHT P_j/(C + U) = w 2^(c - e - 36). */
-STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_eye *we, const wide_dir *l,
-                                           int at_point, int64_t nl, uint64_t w, int c)
+/* E.L in Q30 (at most 2^30) for the eye's and the light's directions:
+ * |e.l| 2^(je + jl) <= len_e len_l < 2^62, so twice it fits; len_e len_l
+ * >> 29 >= 2^31 */
+STP_HOT_INLINE int64_t wide_el(const wide_eye *we, const wide_dir *l)
 {
-    /* E.L: |e.l| 2^(je + jl) <= len_e len_l < 2^62, so twice it fits;
-     * len_e len_l >> 29 >= 2^31 */
-    int64_t el = we->ne;
-    uint64_t dfg, n;
+    int64_t dot = we->e.v[0] * l->v[0] + we->e.v[1] * l->v[1] + we->e.v[2] * l->v[2];
+    int64_t el = (dot * ((int64_t)2 << (we->e.j + l->j))) / (int64_t)((we->e.len * l->len) >> 29);
+    return el > Q30 ? Q30 : el; /* below -1: x <= 0 in wide_specular */
+}
+
+/* Light j's highlight share in Q26 (face_wide): nl N.L, el E.L, w and c
+ * its BRIGHT P_j/(C + U) = w 2^(c - e - 36). */
+STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_eye *we, int64_t el, int64_t nl,
+                                           uint64_t w, int c)
+{
+    uint64_t dfg = wide_specular(s, nl, we->ne, el, we->inv_ne), n;
     int sh;
-    if (!at_point) {
-        int64_t dot = we->e.v[0] * l->v[0] + we->e.v[1] * l->v[1] + we->e.v[2] * l->v[2];
-        el = (dot * ((int64_t)2 << (we->e.j + l->j))) / (int64_t)((we->e.len * l->len) >> 29);
-        el = el > Q30 ? Q30 : el; /* below -1: x <= 0 in wide_specular */
-        if (el < NEAR_OPPOSITE && we->ne < s->fast_min_cos)
-            return GRAZE_EXACT; /* a light nearly opposite a grazing eye */
-    }
-    dfg = wide_specular(s, nl, we->ne, el, we->inv_ne);
     if (dfg == 0)
         return 0;
     /* D F G/(N.E) = dfg 2^-26 = n 2^(sh - 26), n in [2^31, 2^32); the share
@@ -986,6 +985,48 @@ STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_e
     return wide_share(((n * w) >> 32) * s->wide_ks, sh + c - 20);
 }
 #endif
+
+/* Light j's share in Q26 (face_wide) from nl = N.L > 0 (Q30), C + U = cu
+ * 2^-c in raw units (cu >= 2^29) and el = E.L (with the highlight). */
+STP_HOT_INLINE int32_t wide_light_share(const stp_shade_fast *s, const wide_eye *we, int j, int64_t nl, uint64_t cu,
+                                        int c, int64_t el)
+{
+    uint64_t w;
+    int32_t share;
+    /* cu >= 2^29 brought to [2^28, 2^29) by a right shift (c -= t);
+     * BRIGHT P_j/(C + U) = (m 2^-e)/(cu 2^-c) = w 2^(c - e - 36) with
+     * w = m 2^36/cu in (2^30, 2^32) */
+    int t = bit_length64(cu) - 29;
+    cu >>= t;
+    c -= t;
+    w = s->wide_power[j] / cu;
+    c -= s->wide_power_e[j]; /* c - e */
+    /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: nl 2^-30 |R| 2^-16 w 2^(c - e -
+     * 36) 2^26 = (w nl 2^-30) |R| 2^(c - e - 26); w nl 2^-30 < 2^32, times
+     * |R| < 2^31 */
+    share = wide_share(((w * (uint64_t)nl) >> 30) * s->wide_refl, c - 26);
+    if (s->refl_negative)
+        share = -share;
+#if STP_WITH_SPECULAR
+    if (s->specular)
+        share += wide_light_specular(s, we, el, nl, w, c);
+#else
+    (void)we;
+    (void)el;
+#endif
+    return share;
+}
+
+/* wide_light_share for light j on the face (at the point): lit head-on
+ * (L = N, E.L = N.E), U = 0; out of the face's line */
+STP_NOINLINE int32_t wide_light_at_point(const stp_shade_fast *s, const wide_eye *we, int j)
+{
+#if STP_WITH_SPECULAR
+    return wide_light_share(s, we, j, Q30, (uint64_t)s->wide_c << 29, 29, we->ne);
+#else
+    return wide_light_share(s, we, j, Q30, (uint64_t)s->wide_c << 29, 29, 0);
+#endif
+}
 
 /* stp_shade_fast_face's route on a host (wide_route, set by prepare) */
 #define WIDE_NARROW 0  /* the 32-bit path: a struct filled by hand, or F != 16 */
@@ -999,9 +1040,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
     uint64_t nn, nlen28;
     int32_t sum = s->ambient;
     int j, lit = 0;
-#if STP_WITH_SPECULAR
     wide_eye we = {{{0, 0, 0}, 0, 0, 0}, 0, 0};
-#endif
     p[0] = point->x;
     p[1] = point->y;
     p[2] = point->z;
@@ -1024,46 +1063,26 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
     j = 0;
     do { /* s->count >= 1 (WIDE_FAST) */
         wide_dir l;
-        int64_t nl;
-        uint64_t cu, w;
-        int c, t;
         int32_t share;
-        int at_point = !wide_make(&l, s->light[j].x - p[0], s->light[j].y - p[1], s->light[j].z - p[2]);
-        if (!at_point) {
-            nl = wide_cos_dot(normal[0] * l.v[0] + normal[1] * l.v[1] + normal[2] * l.v[2], &l, nlen28);
+        if (wide_make(&l, s->light[j].x - p[0], s->light[j].y - p[1], s->light[j].z - p[2])) {
+            int64_t nl = wide_cos_dot(normal[0] * l.v[0] + normal[1] * l.v[1] + normal[2] * l.v[2], &l, nlen28), el = 0;
             if (nl <= 0)
                 continue;
+#if STP_WITH_SPECULAR
+            if (s->specular) {
+                el = wide_el(&we, &l);
+                if (el < NEAR_OPPOSITE && we.ne < s->fast_min_cos)
+                    return s->exact(s, normal, *point); /* a light nearly opposite a grazing eye */
+            }
+#endif
             /* C + U = cu 2^-c in raw units, cu >= len >= 2^30: C < 2^31 times
              * 2^k <= 2^30 */
-            cu = l.k >= 0 ? ((uint64_t)s->wide_c << l.k) + l.len : (uint64_t)s->wide_c + (l.len << -l.k);
-            c = l.k >= 0 ? l.k : 0;
-        } else {
-            nl = Q30; /* the light on the face: lit head-on (L = N), U = 0 */
-            cu = (uint64_t)s->wide_c << 29;
-            c = 29;
-        }
-        /* cu >= 2^29 brought to [2^28, 2^29) by a right shift (c -= t);
-         * BRIGHT P_j/(C + U) = (m 2^-e)/(cu 2^-c) = w 2^(c - e - 36) with
-         * w = m 2^36/cu in (2^30, 2^32) */
-        t = bit_length64(cu) - 29;
-        cu >>= t;
-        c -= t;
-        w = s->wide_power[j] / cu;
-        c -= s->wide_power_e[j]; /* c - e */
-        /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: nl 2^-30 |R| 2^-16 w 2^(c - e -
-         * 36) 2^26 = (w nl 2^-30) |R| 2^(c - e - 26); w nl 2^-30 < 2^32, times
-         * |R| < 2^31 */
-        share = wide_share(((w * (uint64_t)nl) >> 30) * s->wide_refl, c - 26);
-        if (s->refl_negative)
-            share = -share;
-#if STP_WITH_SPECULAR
-        if (s->specular) {
-            int32_t highlight = wide_light_specular(s, &we, &l, at_point, nl, w, c);
-            if (highlight == GRAZE_EXACT)
-                return s->exact(s, normal, *point);
-            share += highlight;
-        }
-#endif
+            share = wide_light_share(s, &we, j, nl,
+                                     l.k >= 0 ? ((uint64_t)s->wide_c << l.k) + l.len
+                                              : (uint64_t)s->wide_c + (l.len << -l.k),
+                                     l.k >= 0 ? l.k : 0, el);
+        } else
+            share = wide_light_at_point(s, &we, j);
         if (share > 0) {
             lit = 1;
             sum += share;
