@@ -852,13 +852,14 @@ STP_HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
     return wide_make_scaled(d, v0, v1, v2, 0);
 }
 
-/* N.v/(|N| |v|) in Q30 (clamped to [-2^30, 2^30]) from dot = N.v:
- * |N.v| 2^j <= |N| len < (2^14 + 3) 2^31, so N.v 2^(j + 17) < 2^63;
- * nlen28 len < 2^60, and >> 27 leaves at least 2^31 */
+/* N.v/(|N| |v|) in Q30 from dot = N.v, clamped to 2^30 above (not below:
+ * each caller only tests a cosine <= 0): |N.v| 2^j <= |N| len < (2^14 +
+ * 3) 2^31, so N.v 2^(j + 17) < 2^63; nlen28 len < 2^60, and >> 27 leaves
+ * at least 2^31 */
 STP_HOT_INLINE int64_t wide_cos_dot(int64_t dot, const wide_dir *d, uint64_t nlen28)
 {
     int64_t c = (dot * ((int64_t)1 << (d->j + 17))) / (int64_t)((nlen28 * d->len) >> 27);
-    return c > Q30 ? Q30 : (c < -Q30 ? -Q30 : c);
+    return c > Q30 ? Q30 : c;
 }
 
 /* p 2^t in Q26 (p < 2^64), saturated at SHARE_CAP */
