@@ -59,6 +59,7 @@
 #define NEAR_OPPOSITE (-((int32_t)7 << 27)) /* E.L = -7/8 in Q30 */
 #define GRAZE_EXACT (((int32_t)1 << 30) + 1)
 #define GRAZE_FLOOR(s) ((s)->fast_min_cos >> 6)
+#define FAST_MIN_COS (Q30 / 20) /* fast_min_cos with the highlight (exact_prepare) */
 
 /* ---- integer helpers ---- */
 
@@ -1053,11 +1054,10 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
     nlen28 = (nn + ((uint64_t)1 << 28)) >> 1;
 #if STP_WITH_SPECULAR
     if (s->specular) {
+        /* fast_min_cos is FAST_MIN_COS with the highlight (exact_prepare) */
         we.ne = wide_eye_cos(normal, ve, dot_e, nlen28, &we.e);
-        if (we.ne <= 0)
-            return s->ambient_shade;
-        if (we.ne < GRAZE_FLOOR(s))
-            return s->exact(s, normal, *point);
+        if (we.ne < (FAST_MIN_COS >> 6)) /* GRAZE_FLOOR */
+            return we.ne <= 0 ? s->ambient_shade : s->exact(s, normal, *point);
         we.inv_ne = ((uint64_t)1 << 56) / (uint64_t)we.ne;
     }
 #endif
@@ -1072,7 +1072,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
 #if STP_WITH_SPECULAR
             if (s->specular) {
                 el = wide_el(&we, &l);
-                if (el < NEAR_OPPOSITE && we.ne < s->fast_min_cos)
+                if (el < NEAR_OPPOSITE && we.ne < FAST_MIN_COS)
                     return s->exact(s, normal, *point); /* a light nearly opposite a grazing eye */
             }
 #endif
@@ -1194,7 +1194,6 @@ static stp_fix face_exact(const stp_shade_fast *s, const int16_t normal[3], stp_
 #define FAST_MAX_GAIN 16
 #define FAST_MIN_GLOSS (ONE / 20)
 #define FAST_MIN_REFRACTION (ONE + ONE / 4)
-#define FAST_MIN_COS (Q30 / 20)
 
 static int fast_keeps_bound(const stp_shade_fast *s, const stp_lighting *lighting, const stp_material *material)
 {
