@@ -1194,6 +1194,7 @@ static stp_fix face_exact(const stp_shade_fast *s, const int16_t normal[3], stp_
 #define FAST_MAX_GAIN 16
 #define FAST_MIN_GLOSS (ONE / 20)
 #define FAST_MIN_REFRACTION (ONE + ONE / 4)
+/* FAST_MIN_COS: at the top of the file (face_wide tests it) */
 
 static int fast_keeps_bound(const stp_shade_fast *s, const stp_lighting *lighting, const stp_material *material)
 {
