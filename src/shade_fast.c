@@ -1042,7 +1042,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
     uint64_t nn, nlen28;
     int32_t sum = s->ambient;
     int j, lit = 0;
-    wide_eye we = {{{0, 0, 0}, 0, 0, 0}, 0, 0};
+    wide_eye we; /* e, ne and inv_ne set with the highlight, else ne, inv_ne 0 */
     p[0] = point->x;
     p[1] = point->y;
     p[2] = point->z;
@@ -1059,8 +1059,12 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
         if (we.ne < (FAST_MIN_COS >> 6)) /* GRAZE_FLOOR */
             return we.ne <= 0 ? s->ambient_shade : s->exact(s, normal, *point);
         we.inv_ne = ((uint64_t)1 << 56) / (uint64_t)we.ne;
-    }
+    } else
 #endif
+    {
+        we.ne = 0;
+        we.inv_ne = 0;
+    }
     j = 0;
     do { /* s->count >= 1 (WIDE_FAST) */
         wide_dir l;
