@@ -985,12 +985,14 @@ STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_e
     int sh;
     if (dfg == 0)
         return 0;
-    /* D F G/(N.E) = dfg 2^-26 = n 2^(sh - 26), n in [2^31, 2^32); the share
-     * n w Ks 2^(sh + c - e - 52) = (n w 2^-32) Ks 2^(sh + c - e - 20),
-     * n w 2^-32 < 2^32, times Ks < 2^31 */
-    sh = bit_length64(dfg) - 32;
-    n = sh >= 0 ? dfg >> sh : dfg << -sh;
-    return wide_share(((n * w) >> 32) * s->wide_ks, sh + c - 20);
+    /* D F G/(N.E) = dfg 2^-26 = n 2^(6 - sh), n = floor(dfg 2^(sh - 32))
+     * in [2^31, 2^32) (sh = the leading zeros: dfg 2^sh has its top bit at
+     * 63, and its low 32 bits 0 where sh > 32); the share n w Ks 2^(c - e -
+     * 20 - sh) = (n w 2^-32) Ks 2^(12 - sh + c - e), n w 2^-32 < 2^32, times
+     * Ks < 2^31 */
+    sh = __builtin_clzll(dfg);
+    n = (dfg << sh) >> 32;
+    return wide_share(((n * w) >> 32) * s->wide_ks, 12 - sh + c);
 }
 #endif
 
@@ -1004,7 +1006,7 @@ STP_HOT_INLINE int32_t wide_light_share(const stp_shade_fast *s, const wide_eye 
     /* cu >= 2^29 brought to [2^28, 2^29) by a right shift (c -= t);
      * BRIGHT P_j/(C + U) = (m 2^-e)/(cu 2^-c) = w 2^(c - e - 36) with
      * w = m 2^36/cu in (2^30, 2^32) */
-    int t = bit_length64(cu) - 29;
+    int t = 35 - __builtin_clzll(cu); /* bit length - 29 (cu > 0) */
     cu >>= t;
     c -= t;
     w = s->wide_power[j] / cu;
