@@ -899,7 +899,7 @@ STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64
     /* D: k in Q30 as gk 2^r (gk < 2^24), 1 - N.H in [0, 2^30] */
     omx = (uint64_t)Q30 - nh;
     gk = s->wide_gloss;
-    d = (gk << 30) / (gk + (omx >> r)); /* Q30, <= 2^30 */
+    d = s->wide_gloss30 / (gk + (omx >> r)); /* gk 2^30/(...): Q30, <= 2^30 */
     d = (d * d) >> 30;
     /* F in Q16; n >= 1 here (n < FAST_MIN_REFRACTION takes the exact route,
      * exact_always, before face_wide) */
@@ -1149,6 +1149,7 @@ static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const 
         int r = bit_length64(k) - 24;
         r = r < 0 ? 0 : r;
         s->wide_gloss = (uint32_t)(k >> r);
+        s->wide_gloss30 = (uint64_t)s->wide_gloss << 30;
         s->wide_gloss_r = (uint8_t)r;
     }
 #endif

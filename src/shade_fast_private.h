@@ -120,6 +120,7 @@ typedef struct stp_shade_fast {
 #if STP_WITH_SPECULAR
     uint8_t wide_gloss_r; /* k in Q30 as g 2^r, g < 2^24: r, ... */
     uint32_t wide_gloss;  /* ... and g */
+    uint64_t wide_gloss30; /* g 2^30 */
     uint32_t wide_ks;    /* Ks in raw units, 0 when Ks <= 0 */
 #endif
 #endif
