@@ -1088,12 +1088,10 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
                     return s->exact(s, normal, *point); /* a light nearly opposite a grazing eye */
             }
 #endif
-            /* C + U = cu 2^-c in raw units, cu >= len >= 2^30: C < 2^31 times
-             * 2^k <= 2^30 */
-            share = wide_light_share(s, &we, j, nl,
-                                     l.k >= 0 ? ((uint64_t)s->wide_c << l.k) + l.len
-                                              : (uint64_t)s->wide_c + (l.len << -l.k),
-                                     l.k >= 0 ? l.k : 0, el);
+            /* C + U = cu 2^-c in raw units with c = k + 2 >= 0 (k >= -2), cu
+             * >= 4 len >= 2^32: C < 2^31 times 2^(k + 2) <= 2^32, plus 4 len
+             * < 2^33 (wide_light_share's t takes the 2^2 back, exactly) */
+            share = wide_light_share(s, &we, j, nl, ((uint64_t)s->wide_c << (l.k + 2)) + (l.len << 2), l.k + 2, el);
         } else
             share = wide_light_at_point(s, &we, j);
         if (share > 0) {
