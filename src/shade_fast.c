@@ -906,9 +906,7 @@ STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64
     if (eh >= FRESNEL_C0) {
         /* the prepared table, linearly interpolated (fresnel_q16 inline) */
         uint64_t i = (eh - FRESNEL_C0) >> 24, frac = ((eh - FRESNEL_C0) >> 8) & 0xFFFFu;
-        f = s->fresnel[i];
-        if (i < STP_SHADE_FAST_FRESNEL_NODES - 1)
-            f = (uint64_t)((int64_t)f + asr64(((int64_t)s->fresnel[i + 1] - (int64_t)f) * (int64_t)frac, 16));
+        f = (uint64_t)((int64_t)s->fresnel[i] + asr64((int64_t)s->wide_fresnel_step[i] * (int64_t)frac, 16));
     } else
         f = sf_to_fixed(fresnel_sf(s, (uint32_t)eh, el >= Q30 ? 0u : (uint32_t)((Q30 - el) >> 1)), 16, 0xFFFFu);
     /* G/(N.E) in Q26: g1 = 2 N.H/E.H = 4 N.H/|L + E| (< 2^59) */
@@ -1147,6 +1145,10 @@ static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const 
         int r = bit_length64(k) - 24;
         r = r < 0 ? 0 : r;
         s->wide_gloss = (uint32_t)(k >> r);
+        for (j = 0; j < STP_SHADE_FAST_FRESNEL_NODES; j++) /* the table, where prepare_specular made it */
+            s->wide_fresnel_step[j] = s->refraction_ge_1 && j + 1 < STP_SHADE_FAST_FRESNEL_NODES
+                                          ? (int32_t)s->fresnel[j + 1] - s->fresnel[j]
+                                          : 0;
         s->wide_gloss30 = (uint64_t)s->wide_gloss << 30;
         s->wide_gloss_r = (uint8_t)r;
     }

@@ -121,6 +121,8 @@ typedef struct stp_shade_fast {
     uint8_t wide_gloss_r; /* k in Q30 as g 2^r, g < 2^24: r, ... */
     uint32_t wide_gloss;  /* ... and g */
     uint64_t wide_gloss30; /* g 2^30 */
+    /* n >= 1: fresnel[i + 1] - fresnel[i], 0 at the last node */
+    int32_t wide_fresnel_step[STP_SHADE_FAST_FRESNEL_NODES];
     uint32_t wide_ks;    /* Ks in raw units, 0 when Ks <= 0 */
 #endif
 #endif
