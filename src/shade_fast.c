@@ -869,15 +869,14 @@ STP_HOT_INLINE int64_t wide_cos_dot(int64_t dot, const wide_dir *d, uint64_t nle
     return c > Q30 ? Q30 : c;
 }
 
-/* p 2^t in Q26 (p < 2^64), saturated at SHARE_CAP */
+/* p 2^t in Q26 (p < 2^63: a right shift by 63 leaves 0), saturated at
+ * SHARE_CAP */
 STP_HOT_INLINE int32_t wide_share(uint64_t p, int t)
 {
     if (t >= 0)
         return t >= 30 ? (p != 0 ? (int32_t)SHARE_CAP : 0)
                        : (p > ((uint64_t)SHARE_CAP >> t) ? (int32_t)SHARE_CAP : (int32_t)(p << t));
-    if (t <= -64)
-        return 0;
-    p >>= -t;
+    p >>= t < -63 ? 63 : -t;
     return p > SHARE_CAP ? (int32_t)SHARE_CAP : (int32_t)p;
 }
 
