@@ -1045,8 +1045,8 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
 {
     int64_t ve[3], dot_e, p[3];
     uint64_t nn, nlen28;
-    int32_t sum = s->ambient;
-    int j, lit = 0;
+    int32_t acc = 0; /* the shares added, each > 0: below SUM_ONE - ambient + 2^30 < 2^31 */
+    int j;
     wide_eye we; /* e, ne and inv_ne set with the highlight, else ne, inv_ne 0 */
     p[0] = point->x;
     p[1] = point->y;
@@ -1092,13 +1092,12 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
         } else
             share = wide_light_at_point(s, &we, j);
         if (share > 0) {
-            lit = 1;
-            sum += share;
-            if (sum >= SUM_ONE)
+            acc += share;
+            if (acc >= SUM_ONE - s->ambient)
                 return ONE; /* every later share is >= 0 */
         }
     } while (++j < s->count);
-    return shade_of_sum(s, lit, sum);
+    return shade_of_sum(s, acc != 0, s->ambient + acc);
 }
 #endif
 
