@@ -852,7 +852,7 @@ STP_NOINLINE wide_dir wide_make_big(int64_t v0, int64_t v1, int64_t v2)
 STP_HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
 {
     const uint64_t h = (uint64_t)1 << 30;
-    if (HOT_UNLIKELY((((uint64_t)v0 + h) | ((uint64_t)v1 + h) | ((uint64_t)v2 + h)) >= 2 * h)) {
+    if (HOT_UNLIKELY((((uint64_t)v0 + h) | ((uint64_t)v1 + h) | ((uint64_t)v2 + h)) >> 31 != 0)) {
         *d = wide_make_big(v0, v1, v2);
         return 1;
     }
