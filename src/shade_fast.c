@@ -865,7 +865,9 @@ STP_HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
  * at least 2^31 */
 STP_HOT_INLINE int64_t wide_cos_dot(int64_t dot, const wide_dir *d, uint64_t nlen28)
 {
-    int64_t c = (dot * ((int64_t)1 << (d->j + 17))) / (int64_t)((nlen28 * d->len) >> 27);
+    /* dot 2^(j + 17) as an unsigned shift (it fits: the conversion back
+     * gives it exactly, as in fix.c) */
+    int64_t c = (int64_t)((uint64_t)dot << (d->j + 17)) / (int64_t)((nlen28 * d->len) >> 27);
     return c > Q30 ? Q30 : c;
 }
 
@@ -969,7 +971,7 @@ STP_HOT_INLINE int64_t wide_eye_cos(const int16_t normal[3], const int64_t ve[3]
 STP_HOT_INLINE int64_t wide_el(const wide_eye *we, const wide_dir *l)
 {
     int64_t dot = we->e.v[0] * l->v[0] + we->e.v[1] * l->v[1] + we->e.v[2] * l->v[2];
-    int64_t el = (dot * ((int64_t)2 << (we->e.j + l->j))) / (int64_t)((we->e.len * l->len) >> 29);
+    int64_t el = (int64_t)((uint64_t)dot << (we->e.j + l->j + 1)) / (int64_t)((we->e.len * l->len) >> 29);
     return el > Q30 ? Q30 : el; /* below -1: x <= 0 in wide_specular */
 }
 
