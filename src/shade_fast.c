@@ -1104,12 +1104,49 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
 #endif
 
 #if STP_WIDE_ARITH
-/* The host path's prepared fields (face_wide). */
+/* BRIGHT P_j for the host path (wide_prepare): b p (raw, each < 2^31:
+ * below 2^62) = m 2^n, m in [2^23, 2^24) truncated: b p 2^-16 = m 2^-(16
+ * - n), 16 - n in [-22, 39] */
+static void wide_prepare_powers(stp_shade_fast *s, const stp_lighting *lighting)
+{
+    stp_fix bright = lighting->brightness;
+    int j;
+    for (j = 0; j < STP_MAX_LIGHTS; j++) {
+        uint64_t bp = 0;
+        int n;
+        if (j < s->count && lighting->lights[j].power > 0 && bright > 0)
+            bp = (uint64_t)(uint32_t)bright * (uint32_t)lighting->lights[j].power;
+        n = bit_length64(bp) - 24;
+        s->wide_power[j] = bp == 0 ? 0u : (n >= 0 ? bp >> n : bp << -n) << 36;
+        s->wide_power_e[j] = (int8_t)(bp == 0 ? -64 : 16 - n);
+    }
+}
+
+#if STP_WITH_SPECULAR
+/* The highlight's terms for the host path (wide_prepare), after
+ * prepare_specular */
+static void wide_prepare_specular(stp_shade_fast *s, const stp_material *material)
+{
+    /* k in Q30 (< 2^45), shifted below 2^24 (truncated: relative error
+     * below 2^-23) */
+    uint64_t k = (uint64_t)(material->gloss < 1 ? 1u : (uint32_t)material->gloss) << 14;
+    int r = bit_length64(k) - 24, j;
+    r = r < 0 ? 0 : r;
+    s->wide_ks = material->specular > 0 ? (uint32_t)material->specular : 0u;
+    s->wide_gloss = (uint32_t)(k >> r);
+    s->wide_gloss30 = (uint64_t)s->wide_gloss << 30;
+    s->wide_gloss_r = (uint8_t)r;
+    for (j = 0; j < STP_SHADE_FAST_FRESNEL_NODES; j++) /* the table, where prepare_specular made it */
+        s->wide_fresnel_step[j] =
+            s->refraction_ge_1 && j + 1 < STP_SHADE_FAST_FRESNEL_NODES ? (int32_t)s->fresnel[j + 1] - s->fresnel[j] : 0;
+}
+#endif
+
+/* The host path's prepared fields (face_wide), after exact_prepare. */
 static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const stp_material *material,
                          int parallel, stp_vec3 parallel_dir)
 {
-    stp_fix refl = material->reflectivity, bright = lighting->brightness;
-    int j;
+    stp_fix refl = material->reflectivity;
     if (parallel) {
         s->eye = parallel_dir;
         if (parallel_dir.x == 0 && parallel_dir.y == 0 && parallel_dir.z == 0)
@@ -1122,37 +1159,11 @@ static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const 
 #if STP_WITH_SPECULAR
     if (s->wide_route == WIDE_FAST && s->exact_always)
         s->wide_route = WIDE_EXACT;
+    wide_prepare_specular(s, material);
 #endif
     s->wide_c = lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u;
     s->wide_refl = refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl;
-    for (j = 0; j < STP_MAX_LIGHTS; j++) {
-        /* b p (raw, each < 2^31: below 2^62) = m 2^n, m in [2^23, 2^24)
-         * truncated: b p 2^-16 = m 2^-(16 - n), 16 - n in [-22, 39] */
-        uint64_t bp = 0;
-        int n;
-        if (j < s->count && lighting->lights[j].power > 0 && bright > 0)
-            bp = (uint64_t)(uint32_t)bright * (uint32_t)lighting->lights[j].power;
-        n = bit_length64(bp) - 24;
-        s->wide_power[j] = bp == 0 ? 0u : (n >= 0 ? bp >> n : bp << -n) << 36;
-        s->wide_power_e[j] = (int8_t)(bp == 0 ? -64 : 16 - n);
-    }
-#if STP_WITH_SPECULAR
-    s->wide_ks = material->specular > 0 ? (uint32_t)material->specular : 0u;
-    {
-        /* k in Q30 (< 2^45), shifted below 2^24 (truncated: relative error
-         * below 2^-23) */
-        uint64_t k = (uint64_t)(material->gloss < 1 ? 1u : (uint32_t)material->gloss) << 14;
-        int r = bit_length64(k) - 24;
-        r = r < 0 ? 0 : r;
-        s->wide_gloss = (uint32_t)(k >> r);
-        for (j = 0; j < STP_SHADE_FAST_FRESNEL_NODES; j++) /* the table, where prepare_specular made it */
-            s->wide_fresnel_step[j] = s->refraction_ge_1 && j + 1 < STP_SHADE_FAST_FRESNEL_NODES
-                                          ? (int32_t)s->fresnel[j + 1] - s->fresnel[j]
-                                          : 0;
-        s->wide_gloss30 = (uint64_t)s->wide_gloss << 30;
-        s->wide_gloss_r = (uint8_t)r;
-    }
-#endif
+    wide_prepare_powers(s, lighting);
 }
 #endif
 
