@@ -897,6 +897,16 @@ STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64
     if (nh > (uint64_t)Q30)
         nh = (uint64_t)Q30;
     eh = sum >> 1;
+    /* G/(N.E) in Q26: g1 = 2 N.H/E.H = 4 N.H/|L + E| (< 2^59) */
+    g1 = (nh << 28) / sum;
+    gne = g1 < inv_ne ? g1 : inv_ne;
+    if (nl < ne) {
+        /* g1 N.L/N.E is below 1/(N.E) iff g1 N.L < 2^56 (Q26 Q30) */
+        if (g1 >> 33 == 0 || g1 < ((uint64_t)1 << 56) / (uint64_t)nl) {
+            uint64_t t = (g1 * (uint64_t)nl) / (uint64_t)ne; /* g1 nl < 2^63 or < 2^56 */
+            gne = t < gne ? t : gne;
+        }
+    }
     /* D: k in Q30 as gk 2^r (gk < 2^24), 1 - N.H in [0, 2^30] */
     omx = (uint64_t)Q30 - nh;
     gk = s->wide_gloss;
@@ -910,16 +920,6 @@ STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64
         f = (uint64_t)((int64_t)s->fresnel[i] + asr64((int64_t)s->wide_fresnel_step[i] * (int64_t)frac, 16));
     } else
         f = sf_to_fixed(fresnel_sf(s, (uint32_t)eh, el >= Q30 ? 0u : (uint32_t)((Q30 - el) >> 1)), 16, 0xFFFFu);
-    /* G/(N.E) in Q26: g1 = 2 N.H/E.H = 4 N.H/|L + E| (< 2^59) */
-    g1 = (nh << 28) / sum;
-    gne = g1 < inv_ne ? g1 : inv_ne;
-    if (nl < ne) {
-        /* g1 N.L/N.E is below 1/(N.E) iff g1 N.L < 2^56 (Q26 Q30) */
-        if (g1 >> 33 == 0 || g1 < ((uint64_t)1 << 56) / (uint64_t)nl) {
-            uint64_t t = (g1 * (uint64_t)nl) / (uint64_t)ne; /* g1 nl < 2^63 or < 2^56 */
-            gne = t < gne ? t : gne;
-        }
-    }
     df = (d * f) >> 16; /* Q30, <= 2^30 */
     /* D F G/(N.E) in Q26, exactly floor(df gne 2^-30) in two parts */
     return df * (gne >> 30) + ((df * (gne & ((uint64_t)Q30 - 1))) >> 30);
