@@ -907,11 +907,6 @@ STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64
             gne = t < gne ? t : gne;
         }
     }
-    /* D: k in Q30 as gk 2^r (gk < 2^24), 1 - N.H in [0, 2^30] */
-    omx = (uint64_t)Q30 - nh;
-    gk = s->wide_gloss;
-    d = s->wide_gloss30 / (gk + (omx >> r)); /* gk 2^30/(...): Q30, <= 2^30 */
-    d = (d * d) >> 30;
     /* F in Q16; n >= 1 here (n < FAST_MIN_REFRACTION takes the exact route,
      * exact_always, before face_wide) */
     if (eh >= FRESNEL_C0) {
@@ -920,6 +915,11 @@ STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64
         f = (uint64_t)((int64_t)s->fresnel[i] + asr64((int64_t)s->wide_fresnel_step[i] * (int64_t)frac, 16));
     } else
         f = sf_to_fixed(fresnel_sf(s, (uint32_t)eh, el >= Q30 ? 0u : (uint32_t)((Q30 - el) >> 1)), 16, 0xFFFFu);
+    /* D: k in Q30 as gk 2^r (gk < 2^24), 1 - N.H in [0, 2^30] */
+    omx = (uint64_t)Q30 - nh;
+    gk = s->wide_gloss;
+    d = s->wide_gloss30 / (gk + (omx >> r)); /* gk 2^30/(...): Q30, <= 2^30 */
+    d = (d * d) >> 30;
     df = (d * f) >> 16; /* Q30, <= 2^30 */
     /* D F G/(N.E) in Q26, exactly floor(df gne 2^-30) in two parts */
     return df * (gne >> 30) + ((df * (gne & ((uint64_t)Q30 - 1))) >> 30);
