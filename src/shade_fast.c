@@ -897,6 +897,14 @@ STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64
     if (nh > (uint64_t)Q30)
         nh = (uint64_t)Q30;
     eh = sum >> 1;
+    /* F in Q16; n >= 1 here (n < FAST_MIN_REFRACTION takes the exact route,
+     * exact_always, before face_wide) */
+    if (eh >= FRESNEL_C0) {
+        /* the prepared table, linearly interpolated (fresnel_q16 inline) */
+        uint64_t i = (eh - FRESNEL_C0) >> 24, frac = ((eh - FRESNEL_C0) >> 8) & 0xFFFFu;
+        f = (uint64_t)((int64_t)s->fresnel[i] + asr64((int64_t)s->wide_fresnel_step[i] * (int64_t)frac, 16));
+    } else
+        f = sf_to_fixed(fresnel_sf(s, (uint32_t)eh, el >= Q30 ? 0u : (uint32_t)((Q30 - el) >> 1)), 16, 0xFFFFu);
     /* G/(N.E) in Q26: g1 = 2 N.H/E.H = 4 N.H/|L + E| (< 2^59) */
     g1 = (nh << 28) / sum;
     gne = g1 < inv_ne ? g1 : inv_ne;
@@ -907,14 +915,6 @@ STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64
             gne = t < gne ? t : gne;
         }
     }
-    /* F in Q16; n >= 1 here (n < FAST_MIN_REFRACTION takes the exact route,
-     * exact_always, before face_wide) */
-    if (eh >= FRESNEL_C0) {
-        /* the prepared table, linearly interpolated (fresnel_q16 inline) */
-        uint64_t i = (eh - FRESNEL_C0) >> 24, frac = ((eh - FRESNEL_C0) >> 8) & 0xFFFFu;
-        f = (uint64_t)((int64_t)s->fresnel[i] + asr64((int64_t)s->wide_fresnel_step[i] * (int64_t)frac, 16));
-    } else
-        f = sf_to_fixed(fresnel_sf(s, (uint32_t)eh, el >= Q30 ? 0u : (uint32_t)((Q30 - el) >> 1)), 16, 0xFFFFu);
     /* D: k in Q30 as gk 2^r (gk < 2^24), 1 - N.H in [0, 2^30] */
     omx = (uint64_t)Q30 - nh;
     gk = s->wide_gloss;
