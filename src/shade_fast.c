@@ -893,9 +893,6 @@ STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64
         return 0; /* L = -E: H undefined */
     /* x >= 2: |L + E| in Q30 in [2^15, 2^31], N.H in (0, 2^30], E.H > 0 */
     sum = wide_sqrt(x << 30);
-    nh = ((uint64_t)(nl + ne) << 30) / sum; /* (N.L + N.E) <= 2^31 */
-    if (nh > (uint64_t)Q30)
-        nh = (uint64_t)Q30;
     eh = sum >> 1;
     /* F in Q16; n >= 1 here (n < FAST_MIN_REFRACTION takes the exact route,
      * exact_always, before face_wide) */
@@ -905,6 +902,9 @@ STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64
         f = (uint64_t)((int64_t)s->fresnel[i] + asr64((int64_t)s->wide_fresnel_step[i] * (int64_t)frac, 16));
     } else
         f = sf_to_fixed(fresnel_sf(s, (uint32_t)eh, el >= Q30 ? 0u : (uint32_t)((Q30 - el) >> 1)), 16, 0xFFFFu);
+    nh = ((uint64_t)(nl + ne) << 30) / sum; /* (N.L + N.E) <= 2^31 */
+    if (nh > (uint64_t)Q30)
+        nh = (uint64_t)Q30;
     /* G/(N.E) in Q26: g1 = 2 N.H/E.H = 4 N.H/|L + E| (< 2^59) */
     g1 = (nh << 28) / sum;
     gne = g1 < inv_ne ? g1 : inv_ne;
