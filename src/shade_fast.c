@@ -995,21 +995,25 @@ STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_e
 }
 #endif
 
-/* Light j's share in Q26 (face_wide) from nl = N.L > 0 (Q30), C + U = cu
- * 2^-c in raw units (cu >= 2^29) and el = E.L (with the highlight). */
-STP_HOT_INLINE int32_t wide_light_share(const stp_shade_fast *s, const wide_eye *we, int j, int64_t nl, uint64_t cu,
-                                        int c, int64_t el)
+/* Light j's BRIGHT P_j/(C + U) = w 2^(c - e - 36) (w returned, *c set to
+ * c - e) from C + U = cu 2^-c in raw units (cu >= 2^29, c in *c) */
+STP_HOT_INLINE uint64_t wide_light_w(const stp_shade_fast *s, int j, uint64_t cu, int *c)
 {
-    uint64_t w;
-    int32_t share;
     /* cu >= 2^29 brought to [2^28, 2^29) by a right shift (c -= t);
      * BRIGHT P_j/(C + U) = (m 2^-e)/(cu 2^-c) = w 2^(c - e - 36) with
      * w = m 2^36/cu in (2^30, 2^32) */
     int t = 35 - __builtin_clzll(cu); /* bit length - 29 (cu > 0) */
-    cu >>= t;
-    c -= t;
-    w = s->wide_power[j] / cu;
-    c -= s->wide_power_e[j]; /* c - e */
+    *c -= t + s->wide_power_e[j]; /* c - e */
+    return s->wide_power[j] / (cu >> t);
+}
+
+/* Light j's share in Q26 (face_wide) from nl = N.L > 0 (Q30), BRIGHT
+ * P_j/(C + U) = w 2^(c - e - 36) (the argument c is c - e, wide_light_w's) and el = E.L
+ * (with the highlight). */
+STP_HOT_INLINE int32_t wide_light_share(const stp_shade_fast *s, const wide_eye *we, uint64_t w, int64_t nl, int c,
+                                        int64_t el)
+{
+    int32_t share;
     /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: nl 2^-30 |R| 2^-16 w 2^(c - e -
      * 36) 2^26 = (w nl 2^-30) |R| 2^(c - e - 26); w nl 2^-30 < 2^32, times
      * |R| < 2^31 */
@@ -1031,9 +1035,13 @@ STP_HOT_INLINE int32_t wide_light_share(const stp_shade_fast *s, const wide_eye 
 STP_NOINLINE int32_t wide_light_at_point(const stp_shade_fast *s, const wide_eye *we, int j)
 {
 #if STP_WITH_SPECULAR
-    return wide_light_share(s, we, j, Q30, (uint64_t)s->wide_c << 29, 29, we->ne);
+    int c = 29;
+    uint64_t w = wide_light_w(s, j, (uint64_t)s->wide_c << 29, &c);
+    return wide_light_share(s, we, w, Q30, c, we->ne);
 #else
-    return wide_light_share(s, we, j, Q30, (uint64_t)s->wide_c << 29, 29, 0);
+    int c = 29;
+    uint64_t w = wide_light_w(s, j, (uint64_t)s->wide_c << 29, &c);
+    return wide_light_share(s, we, w, Q30, c, 0);
 #endif
 }
 
@@ -1078,8 +1086,14 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
         int32_t share;
         if (wide_make(&l, s->light[j].x - p[0], s->light[j].y - p[1], s->light[j].z - p[2])) {
             int64_t nl = wide_cos_dot(normal[0] * l.v[0] + normal[1] * l.v[1] + normal[2] * l.v[2], &l, nlen28), el = 0;
+            int c = l.k + 2;
+            uint64_t w;
             if (nl <= 0)
                 continue;
+            /* C + U = cu 2^-c in raw units with c = k + 2 >= 0 (k >= -2), cu
+             * >= 4 len >= 2^32: C < 2^31 times 2^(k + 2) <= 2^32, plus 4 len
+             * < 2^33 (wide_light_w's t takes the 2^2 back, exactly) */
+            w = wide_light_w(s, j, ((uint64_t)s->wide_c << (l.k + 2)) + (l.len << 2), &c);
 #if STP_WITH_SPECULAR
             if (s->specular) {
                 el = wide_el(&we, &l);
@@ -1087,10 +1101,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
                     return s->exact(s, normal, *point); /* a light nearly opposite a grazing eye */
             }
 #endif
-            /* C + U = cu 2^-c in raw units with c = k + 2 >= 0 (k >= -2), cu
-             * >= 4 len >= 2^32: C < 2^31 times 2^(k + 2) <= 2^32, plus 4 len
-             * < 2^33 (wide_light_share's t takes the 2^2 back, exactly) */
-            share = wide_light_share(s, &we, j, nl, ((uint64_t)s->wide_c << (l.k + 2)) + (l.len << 2), l.k + 2, el);
+            share = wide_light_share(s, &we, w, nl, c, el);
         } else
             share = wide_light_at_point(s, &we, j);
         if (share > 0) {
