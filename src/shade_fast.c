@@ -839,23 +839,17 @@ STP_HOT_INLINE int wide_make_scaled(wide_dir *d, int64_t v0, int64_t v1, int64_t
     return 1;
 }
 
-/* wide_make for a component outside [-2^30, 2^30) (not 0 scaled: at
- * least 2^28), out of the face's line; returned by value, so that the
- * caller's direction stays out of memory */
-STP_NOINLINE wide_dir wide_make_big(int64_t v0, int64_t v1, int64_t v2)
+/* wide_make for a component outside [-2^30, 2^30): out of the face's line */
+STP_NOINLINE int wide_make_big(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
 {
-    wide_dir d;
-    (void)wide_make_scaled(&d, asr64(v0, 2), asr64(v1, 2), asr64(v2, 2), 2);
-    return d;
+    return wide_make_scaled(d, asr64(v0, 2), asr64(v1, 2), asr64(v2, 2), 2);
 }
 
 STP_HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
 {
     const uint64_t h = (uint64_t)1 << 30;
-    if (HOT_UNLIKELY((((uint64_t)v0 + h) | ((uint64_t)v1 + h) | ((uint64_t)v2 + h)) >> 31 != 0)) {
-        *d = wide_make_big(v0, v1, v2);
-        return 1;
-    }
+    if (HOT_UNLIKELY((((uint64_t)v0 + h) | ((uint64_t)v1 + h) | ((uint64_t)v2 + h)) >> 31 != 0))
+        return wide_make_big(d, v0, v1, v2);
     return wide_make_scaled(d, v0, v1, v2, 0);
 }
 
