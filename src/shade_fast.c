@@ -59,6 +59,7 @@
 #define NEAR_OPPOSITE (-((int32_t)7 << 27)) /* E.L = -7/8 in Q30 */
 #define GRAZE_EXACT (((int32_t)1 << 30) + 1)
 #define GRAZE_FLOOR(s) ((s)->fast_min_cos >> 6)
+#define FAST_MIN_COS (Q30 / 20) /* fast_min_cos with the highlight (exact_prepare) */
 
 /* ---- integer helpers ---- */
 
@@ -763,9 +764,9 @@ static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t 
  *   G/(N.E)  Q26 in uint64: min(1/(N.E), 4 N.H/|L + E| min(1, N.L/N.E)),
  *            at most 2^56 (N.E >= 2^-30)
  *   shares   BRIGHT P_j |R| (N.L)/(C + U) and BRIGHT P_j Ks D F G/(N.E)/(C
- *            + U): C + U brought to [2^28, 2^29) by a right shift, the prepared
- *            32-bit power mantissa times 2^28 divided by it (one quotient in (2^30,
- *            2^32)), times the Q30 cosine or the Q26 D F G/(N.E) brought to
+ *            + U): C + U brought to [2^28, 2^29) by a right shift, the
+ *            power's 24-bit mantissa times 2^36 (prepared) divided by it (one
+ *            quotient in (2^30, 2^32)), times the Q30 cosine or the Q26 D F G/(N.E) brought to
  *            32 bits (products below 2^64), shifted to Q26 saturated at
  *            SHARE_CAP; the sum as in the narrow path. */
 
@@ -819,17 +820,10 @@ typedef struct wide_dir {
     int j, k;
 } wide_dir;
 
-STP_HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
+/* wide_make's common part: v already scaled by 2^-s */
+STP_HOT_INLINE int wide_make_scaled(wide_dir *d, int64_t v0, int64_t v1, int64_t v2, int s)
 {
-    const uint64_t h = (uint64_t)1 << 30;
     uint64_t q;
-    int s = 0;
-    if ((((uint64_t)v0 + h) | ((uint64_t)v1 + h) | ((uint64_t)v2 + h)) >= 2 * h) {
-        v0 = asr64(v0, 2);
-        v1 = asr64(v1, 2);
-        v2 = asr64(v2, 2);
-        s = 2;
-    }
     d->v[0] = v0;
     d->v[1] = v1;
     d->v[2] = v2;
@@ -845,58 +839,66 @@ STP_HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
     return 1;
 }
 
-/* N.v/(|N| |v|) in Q30 (clamped to [-2^30, 2^30]) from dot = N.v:
- * |N.v| 2^j <= |N| len < (2^14 + 3) 2^31, so N.v 2^(j + 17) < 2^63;
- * nlen28 len < 2^60, and >> 27 leaves at least 2^31 */
-STP_HOT_INLINE int64_t wide_cos_dot(int64_t dot, const wide_dir *d, uint64_t nlen28)
+/* wide_make for a component outside [-2^30, 2^30): out of the face's line */
+STP_NOINLINE int wide_make_big(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
 {
-    int64_t c = (dot * ((int64_t)1 << (d->j + 17))) / (int64_t)((nlen28 * d->len) >> 27);
-    return c > Q30 ? Q30 : (c < -Q30 ? -Q30 : c);
+    return wide_make_scaled(d, asr64(v0, 2), asr64(v1, 2), asr64(v2, 2), 2);
 }
 
-/* p 2^t in Q26 (p < 2^64), saturated at SHARE_CAP */
+STP_HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
+{
+    const uint64_t h = (uint64_t)1 << 30;
+    if (HOT_UNLIKELY((((uint64_t)v0 + h) | ((uint64_t)v1 + h) | ((uint64_t)v2 + h)) >> 31 != 0))
+        return wide_make_big(d, v0, v1, v2);
+    return wide_make_scaled(d, v0, v1, v2, 0);
+}
+
+/* N.v/(|N| |v|) in Q30 from dot = N.v, clamped to 2^30 above (not below:
+ * each caller only tests a cosine <= 0): |N.v| 2^j <= |N| len < (2^14 +
+ * 3) 2^31, so N.v 2^(j + 17) < 2^63; nlen28 len < 2^60, and >> 27 leaves
+ * at least 2^31 */
+STP_HOT_INLINE int64_t wide_cos_dot(int64_t dot, const wide_dir *d, uint64_t nlen28)
+{
+    /* dot 2^(j + 17) as an unsigned shift (it fits: the conversion back
+     * gives it exactly, as in fix.c) */
+    int64_t c = (int64_t)((uint64_t)dot << (d->j + 17)) / (int64_t)((nlen28 * d->len) >> 27);
+    return c > Q30 ? Q30 : c;
+}
+
+/* p 2^t in Q26 (p < 2^63: a right shift by 63 leaves 0), saturated at
+ * SHARE_CAP */
 STP_HOT_INLINE int32_t wide_share(uint64_t p, int t)
 {
     if (t >= 0)
         return t >= 30 ? (p != 0 ? (int32_t)SHARE_CAP : 0)
                        : (p > ((uint64_t)SHARE_CAP >> t) ? (int32_t)SHARE_CAP : (int32_t)(p << t));
-    if (t <= -64)
-        return 0;
-    p >>= -t;
+    p >>= t < -63 ? 63 : -t;
     return p > SHARE_CAP ? (int32_t)SHARE_CAP : (int32_t)p;
 }
 
 #if STP_WITH_SPECULAR
 /* Ks D F G/(N.E) in Q26 (uint64, <= 2^57) for one light: nl, ne, el Q30
  * cosines (nl, ne > 0), inv_ne = 1/(N.E) in Q26. */
-static uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, int64_t el, uint64_t inv_ne)
+STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, int64_t el, uint64_t inv_ne)
 {
     uint64_t x = (uint64_t)(2 * (Q30 + el)), sum, nh, eh, omx, gk, d, f, g1, gne, df;
-    int r = (int)(s->wide_gloss >> 24);
+    int r = s->wide_gloss_r;
     if ((int64_t)x <= 0)
         return 0; /* L = -E: H undefined */
     /* x >= 2: |L + E| in Q30 in [2^15, 2^31], N.H in (0, 2^30], E.H > 0 */
     sum = wide_sqrt(x << 30);
+    eh = sum >> 1;
+    /* F in Q16; n >= 1 here (n < FAST_MIN_REFRACTION takes the exact route,
+     * exact_always, before face_wide) */
+    if (eh >= FRESNEL_C0) {
+        /* the prepared table, linearly interpolated (fresnel_q16 inline) */
+        uint64_t i = (eh - FRESNEL_C0) >> 24, frac = ((eh - FRESNEL_C0) >> 8) & 0xFFFFu;
+        f = (uint64_t)((int64_t)s->fresnel[i] + asr64((int64_t)s->wide_fresnel_step[i] * (int64_t)frac, 16));
+    } else
+        f = sf_to_fixed(fresnel_sf(s, (uint32_t)eh, el >= Q30 ? 0u : (uint32_t)((Q30 - el) >> 1)), 16, 0xFFFFu);
     nh = ((uint64_t)(nl + ne) << 30) / sum; /* (N.L + N.E) <= 2^31 */
     if (nh > (uint64_t)Q30)
         nh = (uint64_t)Q30;
-    eh = sum >> 1;
-    /* D: k in Q30 as gk 2^r (gk < 2^24), 1 - N.H in [0, 2^30] */
-    omx = (uint64_t)Q30 - nh;
-    gk = s->wide_gloss & 0xFFFFFFu;
-    d = (gk << 30) / (gk + (omx >> r)); /* Q30, <= 2^30 */
-    d = (d * d) >> 30;
-    /* F in Q16 */
-    if (eh >= FRESNEL_C0 && s->refraction_ge_1) {
-        /* the prepared table, linearly interpolated (fresnel_q16 inline) */
-        uint64_t i = (eh - FRESNEL_C0) >> 24, frac = ((eh - FRESNEL_C0) >> 8) & 0xFFFFu;
-        f = s->fresnel[i];
-        if (i < STP_SHADE_FAST_FRESNEL_NODES - 1)
-            f = (uint64_t)((int64_t)f + asr64(((int64_t)s->fresnel[i + 1] - (int64_t)f) * (int64_t)frac, 16));
-    } else if (eh >= FRESNEL_C0) {
-        f = fresnel_q16(s, (uint32_t)eh, (int32_t)el);
-    } else
-        f = sf_to_fixed(fresnel_sf(s, (uint32_t)eh, el >= Q30 ? 0u : (uint32_t)((Q30 - el) >> 1)), 16, 0xFFFFu);
     /* G/(N.E) in Q26: g1 = 2 N.H/E.H = 4 N.H/|L + E| (< 2^59) */
     g1 = (nh << 28) / sum;
     gne = g1 < inv_ne ? g1 : inv_ne;
@@ -907,6 +909,11 @@ static uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, i
             gne = t < gne ? t : gne;
         }
     }
+    /* D: k in Q30 as gk 2^r (gk < 2^24), 1 - N.H in [0, 2^30] */
+    omx = (uint64_t)Q30 - nh;
+    gk = s->wide_gloss;
+    d = s->wide_gloss30 / (gk + (omx >> r)); /* gk 2^30/(...): Q30, <= 2^30 */
+    d = (d * d) >> 30;
     df = (d * f) >> 16; /* Q30, <= 2^30 */
     /* D F G/(N.E) in Q26, exactly floor(df gne 2^-30) in two parts */
     return df * (gne >> 30) + ((df * (gne & ((uint64_t)Q30 - 1))) >> 30);
@@ -916,29 +923,29 @@ static uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, i
 
 /* The direction towards the eye, ve, and N.E exactly (|N_i| <= 2^14 + 2,
  * |ve_i| < 2^32). */
-STP_HOT_INLINE int64_t wide_eye_dot(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point, int64_t ve[3])
+STP_HOT_INLINE int64_t wide_eye_dot(const stp_shade_fast *s, const int16_t normal[3], const int64_t p[3], int64_t ve[3])
 {
     if (s->parallel) {
         ve[0] = s->eye.x; /* the direction towards the eye (wide_prepare) */
         ve[1] = s->eye.y;
         ve[2] = s->eye.z;
     } else {
-        ve[0] = (int64_t)s->eye.x - point.x;
-        ve[1] = (int64_t)s->eye.y - point.y;
-        ve[2] = (int64_t)s->eye.z - point.z;
+        ve[0] = s->eye.x - p[0];
+        ve[1] = s->eye.y - p[1];
+        ve[2] = s->eye.z - p[2];
     }
     return normal[0] * ve[0] + normal[1] * ve[1] + normal[2] * ve[2];
 }
 
-#if STP_WITH_SPECULAR
 /* The eye's terms of the highlight on a face (face_wide): the direction
- * E, N.E in Q30 and 1/(N.E) in Q26. */
+ * E, N.E in Q30 and 1/(N.E) in Q26 (unused without the highlight). */
 typedef struct wide_eye {
     wide_dir e;
     int64_t ne;
     uint64_t inv_ne;
 } wide_eye;
 
+#if STP_WITH_SPECULAR
 /* N.E in Q30 for the highlight (dot_e = N.E > 0, ve not 0), e the
  * direction towards the eye. */
 STP_HOT_INLINE int64_t wide_eye_cos(const int16_t normal[3], const int64_t ve[3], int64_t dot_e, uint64_t nlen28,
@@ -952,47 +959,103 @@ STP_HOT_INLINE int64_t wide_eye_cos(const int16_t normal[3], const int64_t ve[3]
 #endif
 
 #if STP_WITH_SPECULAR
-/* Light j's highlight share in Q26 (face_wide): l its direction unless
- * at_point, nl N.L, w and c its BRIGHT P_j/(C + U) = w 2^(c - e - 36). */
-STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_eye *we, const wide_dir *l,
-                                           int at_point, int64_t nl, uint64_t w, int c)
+/* E.L in Q30 (at most 2^30) for the eye's and the light's directions:
+ * |e.l| 2^(je + jl) <= len_e len_l < 2^62, so twice it fits; len_e len_l
+ * >> 29 >= 2^31 */
+STP_HOT_INLINE int64_t wide_el(const wide_eye *we, const wide_dir *l)
 {
-    /* E.L: |e.l| 2^(je + jl) <= len_e len_l < 2^62, so twice it fits;
-     * len_e len_l >> 29 >= 2^31 */
-    int64_t el = we->ne;
-    uint64_t dfg, n;
+    int64_t dot = we->e.v[0] * l->v[0] + we->e.v[1] * l->v[1] + we->e.v[2] * l->v[2];
+    int64_t el = (int64_t)((uint64_t)dot << (we->e.j + l->j + 1)) / (int64_t)((we->e.len * l->len) >> 29);
+    return el > Q30 ? Q30 : el; /* below -1: x <= 0 in wide_specular */
+}
+
+/* Light j's highlight share in Q26 (face_wide): nl N.L, el E.L, w and c
+ * its BRIGHT P_j/(C + U) = w 2^(c - e - 36). */
+STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_eye *we, int64_t el, int64_t nl,
+                                           uint64_t w, int c)
+{
+    uint64_t dfg = wide_specular(s, nl, we->ne, el, we->inv_ne), n;
     int sh;
-    if (!at_point) {
-        int64_t dot = we->e.v[0] * l->v[0] + we->e.v[1] * l->v[1] + we->e.v[2] * l->v[2];
-        el = (dot * ((int64_t)2 << (we->e.j + l->j))) / (int64_t)((we->e.len * l->len) >> 29);
-        el = el > Q30 ? Q30 : el; /* below -1: x <= 0 in wide_specular */
-        if (el < NEAR_OPPOSITE && we->ne < s->fast_min_cos)
-            return GRAZE_EXACT; /* a light nearly opposite a grazing eye */
-    }
-    dfg = wide_specular(s, nl, we->ne, el, we->inv_ne);
     if (dfg == 0)
         return 0;
-    /* D F G/(N.E) = dfg 2^-26 = n 2^(sh - 26), n in [2^31, 2^32); the share
-     * n w Ks 2^(sh + c - e - 52) = (n w 2^-32) Ks 2^(sh + c - e - 20),
-     * n w 2^-32 < 2^32, times Ks < 2^31 */
-    sh = bit_length64(dfg) - 32;
-    n = sh >= 0 ? dfg >> sh : dfg << -sh;
-    return wide_share(((n * w) >> 32) * s->wide_ks, sh + c - 20);
+    /* D F G/(N.E) = dfg 2^-26 = n 2^(6 - sh), n = floor(dfg 2^(sh - 32))
+     * in [2^31, 2^32) (sh = the leading zeros: dfg 2^sh has its top bit at
+     * 63, and its low 32 bits 0 where sh > 32); the share n w Ks 2^(c - e -
+     * 20 - sh) = (n w 2^-32) Ks 2^(12 - sh + c - e), n w 2^-32 < 2^32, times
+     * Ks < 2^31 */
+    sh = __builtin_clzll(dfg);
+    n = (dfg << sh) >> 32;
+    return wide_share(((n * w) >> 32) * s->wide_ks, 12 - sh + c);
 }
 #endif
 
-static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
+/* Light j's BRIGHT P_j/(C + U) = w 2^(c - e - 36) (w returned, *c set to
+ * c - e) from C + U = cu 2^-c in raw units (cu >= 2^29, c in *c) */
+STP_HOT_INLINE uint64_t wide_light_w(const stp_shade_fast *s, int j, uint64_t cu, int *c)
 {
-    int64_t ve[3], dot_e;
-    uint64_t nn, nlen28;
-    int32_t sum = s->ambient;
-    int j, lit = 0;
+    /* cu >= 2^29 brought to [2^28, 2^29) by a right shift (c -= t);
+     * BRIGHT P_j/(C + U) = (m 2^-e)/(cu 2^-c) = w 2^(c - e - 36) with
+     * w = m 2^36/cu in (2^30, 2^32) */
+    int t = 35 - __builtin_clzll(cu); /* bit length - 29 (cu > 0) */
+    *c -= t + s->wide_power_e[j]; /* c - e */
+    return s->wide_power[j] / (cu >> t);
+}
+
+/* Light j's share in Q26 (face_wide) from nl = N.L > 0 (Q30), BRIGHT
+ * P_j/(C + U) = w 2^(c - e - 36) (the argument c is c - e, wide_light_w's) and el = E.L
+ * (with the highlight). */
+STP_HOT_INLINE int32_t wide_light_share(const stp_shade_fast *s, const wide_eye *we, uint64_t w, int64_t nl, int c,
+                                        int64_t el)
+{
+    int32_t share;
+    /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: nl 2^-30 |R| 2^-16 w 2^(c - e -
+     * 36) 2^26 = (w nl 2^-30) |R| 2^(c - e - 26); w nl 2^-30 < 2^32, times
+     * |R| < 2^31 */
+    share = wide_share(((w * (uint64_t)nl) >> 30) * s->wide_refl, c - 26);
+    if (s->refl_negative)
+        share = -share;
 #if STP_WITH_SPECULAR
-    wide_eye we = {{{0, 0, 0}, 0, 0, 0}, 0, 0};
+    if (s->specular)
+        share += wide_light_specular(s, we, el, nl, w, c);
+#else
+    (void)we;
+    (void)el;
 #endif
-    if (s->count == 0)
-        return s->ambient_shade;
-    dot_e = wide_eye_dot(s, normal, point, ve);
+    return share;
+}
+
+/* wide_light_share for light j on the face (at the point): lit head-on
+ * (L = N, E.L = N.E), U = 0; out of the face's line */
+STP_NOINLINE int32_t wide_light_at_point(const stp_shade_fast *s, const wide_eye *we, int j)
+{
+#if STP_WITH_SPECULAR
+    int c = 29;
+    uint64_t w = wide_light_w(s, j, (uint64_t)s->wide_c << 29, &c);
+    return wide_light_share(s, we, w, Q30, c, we->ne);
+#else
+    int c = 29;
+    uint64_t w = wide_light_w(s, j, (uint64_t)s->wide_c << 29, &c);
+    return wide_light_share(s, we, w, Q30, c, 0);
+#endif
+}
+
+/* stp_shade_fast_face's route on a host (wide_route, set by prepare) */
+#define WIDE_NARROW 0  /* the 32-bit path: a struct filled by hand, or F != 16 */
+#define WIDE_AMBIENT 1 /* no light: every face the ambient shade */
+#define WIDE_EXACT 2   /* exact_always with a light: every face exact */
+#define WIDE_FAST 3    /* face_wide, with at least one light */
+
+static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const stp_vec3 *point)
+{
+    int64_t ve[3], dot_e, p[3];
+    uint64_t nn, nlen28;
+    int32_t acc = 0; /* the shares added, each > 0: below SUM_ONE - ambient + 2^30 < 2^31 */
+    int j;
+    wide_eye we; /* e, ne and inv_ne set with the highlight, else ne, inv_ne 0 */
+    p[0] = point->x;
+    p[1] = point->y;
+    p[2] = point->z;
+    dot_e = wide_eye_dot(s, normal, p, ve);
     if (dot_e <= 0)
         return s->ambient_shade; /* a back face, edge-on, or the eye on it */
     nn = (uint64_t)((int32_t)normal[0] * normal[0]) + (uint64_t)((int32_t)normal[1] * normal[1]) +
@@ -1000,75 +1063,95 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], stp_v
     nlen28 = (nn + ((uint64_t)1 << 28)) >> 1;
 #if STP_WITH_SPECULAR
     if (s->specular) {
+        /* fast_min_cos is FAST_MIN_COS with the highlight (exact_prepare) */
         we.ne = wide_eye_cos(normal, ve, dot_e, nlen28, &we.e);
-        if (we.ne <= 0)
-            return s->ambient_shade;
-        if (we.ne < GRAZE_FLOOR(s))
-            return s->exact(s, normal, point);
+        if (we.ne < (FAST_MIN_COS >> 6)) /* GRAZE_FLOOR */
+            return we.ne <= 0 ? s->ambient_shade : s->exact(s, normal, *point);
         we.inv_ne = ((uint64_t)1 << 56) / (uint64_t)we.ne;
-    }
+    } else
 #endif
-    for (j = 0; j < s->count; j++) {
+    {
+        we.ne = 0;
+        we.inv_ne = 0;
+    }
+    j = 0;
+    do { /* s->count >= 1 (WIDE_FAST) */
         wide_dir l;
-        int64_t nl;
-        uint64_t cu, w;
-        int c, t;
         int32_t share;
-        int at_point = !wide_make(&l, (int64_t)s->light[j].x - point.x, (int64_t)s->light[j].y - point.y,
-                                  (int64_t)s->light[j].z - point.z);
-        if (!at_point) {
-            nl = wide_cos_dot(normal[0] * l.v[0] + normal[1] * l.v[1] + normal[2] * l.v[2], &l, nlen28);
+        if (wide_make(&l, s->light[j].x - p[0], s->light[j].y - p[1], s->light[j].z - p[2])) {
+            int64_t nl = wide_cos_dot(normal[0] * l.v[0] + normal[1] * l.v[1] + normal[2] * l.v[2], &l, nlen28), el = 0;
+            int c = l.k + 2;
+            uint64_t w;
             if (nl <= 0)
                 continue;
-            /* C + U = cu 2^-c in raw units, cu >= len >= 2^30: C < 2^31 times
-             * 2^k <= 2^30 */
-            cu = l.k >= 0 ? ((uint64_t)s->wide_c << l.k) + l.len : (uint64_t)s->wide_c + (l.len << -l.k);
-            c = l.k >= 0 ? l.k : 0;
-        } else {
-            nl = Q30; /* the light on the face: lit head-on (L = N), U = 0 */
-            cu = (uint64_t)s->wide_c << 29;
-            c = 29;
-        }
-        /* cu >= 2^29 brought to [2^28, 2^29) by a right shift (c -= t);
-         * BRIGHT P_j/(C + U) = (m 2^-e)/(cu 2^-c) = w 2^(c - e - 36) with
-         * w = m 2^36/cu in (2^30, 2^32) */
-        t = bit_length64(cu) - 29;
-        cu >>= t;
-        c -= t;
-        w = ((uint64_t)(s->wide_power[j] & 0xFFFFFFu) << 36) / cu;
-        c -= (int)(s->wide_power[j] >> 24) - 64; /* c - e */
-        /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: nl 2^-30 |R| 2^-16 w 2^(c - e -
-         * 36) 2^26 = (w nl 2^-30) |R| 2^(c - e - 26); w nl 2^-30 < 2^32, times
-         * |R| < 2^31 */
-        share = wide_share(((w * (uint64_t)nl) >> 30) * s->wide_refl, c - 26);
-        if (s->refl_negative)
-            share = -share;
+            /* C + U = cu 2^-c in raw units with c = k + 2 >= 0 (k >= -2), cu
+             * >= 4 len >= 2^32: C < 2^31 times 2^(k + 2) <= 2^32, plus 4 len
+             * < 2^33 (wide_light_w's t takes the 2^2 back, exactly) */
+            w = wide_light_w(s, j, ((uint64_t)s->wide_c << (l.k + 2)) + (l.len << 2), &c);
 #if STP_WITH_SPECULAR
-        if (s->specular) {
-            int32_t highlight = wide_light_specular(s, &we, &l, at_point, nl, w, c);
-            if (highlight == GRAZE_EXACT)
-                return s->exact(s, normal, point);
-            share += highlight;
-        }
+            if (s->specular) {
+                el = wide_el(&we, &l);
+                if (el < NEAR_OPPOSITE && we.ne < FAST_MIN_COS)
+                    return s->exact(s, normal, *point); /* a light nearly opposite a grazing eye */
+            }
 #endif
+            share = wide_light_share(s, &we, w, nl, c, el);
+        } else
+            share = wide_light_at_point(s, &we, j);
         if (share > 0) {
-            lit = 1;
-            sum += share;
-            if (sum >= SUM_ONE)
+            acc += share;
+            if (acc >= SUM_ONE - s->ambient)
                 return ONE; /* every later share is >= 0 */
         }
-    }
-    return shade_of_sum(s, lit, sum);
+    } while (++j < s->count);
+    return shade_of_sum(s, acc != 0, s->ambient + acc);
 }
 #endif
 
 #if STP_WIDE_ARITH
-/* The host path's prepared fields (face_wide). */
+/* BRIGHT P_j for the host path (wide_prepare): b p (raw, each < 2^31:
+ * below 2^62) = m 2^n, m in [2^23, 2^24) truncated: b p 2^-16 = m 2^-(16
+ * - n), 16 - n in [-22, 39] */
+static void wide_prepare_powers(stp_shade_fast *s, const stp_lighting *lighting)
+{
+    stp_fix bright = lighting->brightness;
+    int j;
+    for (j = 0; j < STP_MAX_LIGHTS; j++) {
+        uint64_t bp = 0;
+        int n;
+        if (j < s->count && lighting->lights[j].power > 0 && bright > 0)
+            bp = (uint64_t)(uint32_t)bright * (uint32_t)lighting->lights[j].power;
+        n = bit_length64(bp) - 24;
+        s->wide_power[j] = bp == 0 ? 0u : (n >= 0 ? bp >> n : bp << -n) << 36;
+        s->wide_power_e[j] = (int8_t)(bp == 0 ? -64 : 16 - n);
+    }
+}
+
+#if STP_WITH_SPECULAR
+/* The highlight's terms for the host path (wide_prepare), after
+ * prepare_specular */
+static void wide_prepare_specular(stp_shade_fast *s, const stp_material *material)
+{
+    /* k in Q30 (< 2^45), shifted below 2^24 (truncated: relative error
+     * below 2^-23) */
+    uint64_t k = (uint64_t)(material->gloss < 1 ? 1u : (uint32_t)material->gloss) << 14;
+    int r = bit_length64(k) - 24, j;
+    r = r < 0 ? 0 : r;
+    s->wide_ks = material->specular > 0 ? (uint32_t)material->specular : 0u;
+    s->wide_gloss = (uint32_t)(k >> r);
+    s->wide_gloss30 = (uint64_t)s->wide_gloss << 30;
+    s->wide_gloss_r = (uint8_t)r;
+    for (j = 0; j < STP_SHADE_FAST_FRESNEL_NODES; j++) /* the table, where prepare_specular made it */
+        s->wide_fresnel_step[j] =
+            s->refraction_ge_1 && j + 1 < STP_SHADE_FAST_FRESNEL_NODES ? (int32_t)s->fresnel[j + 1] - s->fresnel[j] : 0;
+}
+#endif
+
+/* The host path's prepared fields (face_wide), after exact_prepare. */
 static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const stp_material *material,
                          int parallel, stp_vec3 parallel_dir)
 {
-    stp_fix refl = material->reflectivity, bright = lighting->brightness;
-    int j;
+    stp_fix refl = material->reflectivity;
     if (parallel) {
         s->eye = parallel_dir;
         if (parallel_dir.x == 0 && parallel_dir.y == 0 && parallel_dir.z == 0)
@@ -1077,30 +1160,15 @@ static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const 
     /* the wide path's formats are written for F = 16 (its powers and
      * attenuation scale by 2^-16); other precisions take the 32-bit path,
      * tested at F = 12, 16 and 20 */
-    s->wide_ready = STP_FIX_FRAC_BITS == 16;
+    s->wide_route = STP_FIX_FRAC_BITS != 16 ? WIDE_NARROW : (s->count == 0 ? WIDE_AMBIENT : WIDE_FAST);
+#if STP_WITH_SPECULAR
+    if (s->wide_route == WIDE_FAST && s->exact_always)
+        s->wide_route = WIDE_EXACT;
+    wide_prepare_specular(s, material);
+#endif
     s->wide_c = lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u;
     s->wide_refl = refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl;
-    for (j = 0; j < STP_MAX_LIGHTS; j++) {
-        /* b p (raw, each < 2^31: below 2^62) = m 2^n, m in [2^23, 2^24)
-         * truncated: b p 2^-16 = m 2^-(16 - n), 16 - n in [-22, 39] */
-        uint64_t bp = 0;
-        int n;
-        if (j < s->count && lighting->lights[j].power > 0 && bright > 0)
-            bp = (uint64_t)(uint32_t)bright * (uint32_t)lighting->lights[j].power;
-        n = bit_length64(bp) - 24;
-        s->wide_power[j] = bp == 0 ? 0u : (uint32_t)(n >= 0 ? bp >> n : bp << -n) + ((uint32_t)(16 - n + 64) << 24);
-    }
-#if STP_WITH_SPECULAR
-    s->wide_ks = material->specular > 0 ? (uint32_t)material->specular : 0u;
-    {
-        /* k in Q30 (< 2^45), shifted below 2^24 (truncated: relative error
-         * below 2^-23) */
-        uint64_t k = (uint64_t)(material->gloss < 1 ? 1u : (uint32_t)material->gloss) << 14;
-        int r = bit_length64(k) - 24;
-        r = r < 0 ? 0 : r;
-        s->wide_gloss = (uint32_t)(k >> r) + ((uint32_t)r << 24);
-    }
-#endif
+    wide_prepare_powers(s, lighting);
 }
 #endif
 
@@ -1155,7 +1223,7 @@ static stp_fix face_exact(const stp_shade_fast *s, const int16_t normal[3], stp_
 #define FAST_MAX_GAIN 16
 #define FAST_MIN_GLOSS (ONE / 20)
 #define FAST_MIN_REFRACTION (ONE + ONE / 4)
-#define FAST_MIN_COS (Q30 / 20)
+/* FAST_MIN_COS: at the top of the file (face_wide tests it) */
 
 static int fast_keeps_bound(const stp_shade_fast *s, const stp_lighting *lighting, const stp_material *material)
 {
@@ -1337,11 +1405,11 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
 #else
     s->specular = 0;
 #endif
-#if STP_WIDE_ARITH
-    wide_prepare(s, lighting, material, parallel, parallel_dir);
-#endif
 #if STP_WITH_SPECULAR
     exact_prepare(s, lighting, material, parallel, parallel_dir);
+#endif
+#if STP_WIDE_ARITH
+    wide_prepare(s, lighting, material, parallel, parallel_dir); /* after exact_always */
 #endif
 }
 
@@ -1661,16 +1729,18 @@ stp_fix stp_shade_fast_face_near(const stp_shade_fast *s, const int16_t normal[3
 #if STP_WIDE_ARITH
 stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], stp_vec3 point)
 {
-    if (!s->wide_ready)
-        return face_narrow(s, normal, point);
 #if STP_SHADE_COMPACT
     if (FACE_COMPACT(s))
         return face_narrow(s, normal, point); /* the compact route, on the 32-bit path's fields */
 #endif
+    if (s->wide_route == WIDE_FAST)
+        return face_wide(s, normal, &point); /* the host path */
+    if (s->wide_route == WIDE_NARROW)
+        return face_narrow(s, normal, point);
 #if STP_WITH_SPECULAR
-    if (s->exact_always && s->count != 0)
-        return s->exact(s, normal, point); /* set with wide_ready */
+    if (s->wide_route == WIDE_EXACT)
+        return s->exact(s, normal, point);
 #endif
-    return face_wide(s, normal, point); /* the host path */
+    return s->ambient_shade; /* WIDE_AMBIENT: no light */
 }
 #endif

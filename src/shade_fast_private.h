@@ -105,18 +105,25 @@ typedef struct stp_shade_fast {
 #if STP_WIDE_ARITH /* the 64-bit host path (shade_fast.c "wide"); parallel
                       projection there keeps the direction towards the eye
                       (not 0) in eye */
-    uint8_t wide_ready;  /* 1: set by stp_shade_fast_prepare (the wide
-                            fields below hold); 0: a caller that filled the
-                            32-bit fields itself gets the 32-bit path */
+    uint8_t wide_route;  /* set by stp_shade_fast_prepare (shade_fast.c
+                            WIDE_*: the wide fields below hold unless
+                            WIDE_NARROW); 0 (WIDE_NARROW): a caller that
+                            filled the 32-bit fields itself gets the 32-bit
+                            path */
     uint32_t wide_c;     /* C in raw stp_fix units, >= 1 */
     uint32_t wide_refl;  /* |R| in raw units */
     /* BRIGHT P_j as m 2^-e = b p 2^-16 (b, p raw), m in [2^23, 2^24) or 0,
-     * e in [-22, 39]: stored as m + (e + 64) 2^24 */
-    uint32_t wide_power[STP_MAX_LIGHTS];
+     * e in [-22, 39] (-64 with m = 0): m 2^36 (the dividend of its share)
+     * and e */
+    uint64_t wide_power[STP_MAX_LIGHTS];
+    int8_t wide_power_e[STP_MAX_LIGHTS];
 #if STP_WITH_SPECULAR
+    uint8_t wide_gloss_r; /* k in Q30 as g 2^r, g < 2^24: r, ... */
+    uint32_t wide_gloss;  /* ... and g */
+    uint64_t wide_gloss30; /* g 2^30 */
+    /* n >= 1: fresnel[i + 1] - fresnel[i], 0 at the last node */
+    int32_t wide_fresnel_step[STP_SHADE_FAST_FRESNEL_NODES];
     uint32_t wide_ks;    /* Ks in raw units, 0 when Ks <= 0 */
-    /* k in Q30 as g 2^r, g < 2^24: stored as g + r 2^24 */
-    uint32_t wide_gloss;
 #endif
 #endif
 } stp_shade_fast;
