@@ -1173,13 +1173,14 @@ STP_HOT_INLINE void tri_depth_step(tri_depth *td, const depth_plane *pl)
 }
 
 /* The band row a triangle's direct spans go to (span_z_direct): its Z
- * entries, its pixels and its cell row (0..cell_height - 1), set at the
- * triangle's first span (tri_row_at) and stepped a row down with the
- * triangle (tri_row_next) rather than formed again for every span. */
+ * entries and its pixels, set at the triangle's first span (tri_row_at)
+ * and stepped a row down with the triangle (tri_row_next) rather than
+ * formed again for every span.  (Its pattern byte is formed for each span
+ * from the row, pattern_of_row: one value fewer kept across the rows, and
+ * no step a row; the Cortex-M0+ torus's triangles have a span or two.) */
 typedef struct tri_row {
     uint16_t *z;
     uint8_t *band;
-    uint32_t cell_row, cell_height;
     uint8_t page_bit; /* stp_halftone_fill_bits: 0, or the row's page bit */
 } tri_row;
 
@@ -1188,8 +1189,6 @@ STP_HOT_INLINE void tri_row_at(const frame *fr, tri_row *tr, uint32_t row, int p
     tr->z = z_row(fr, row);
     tr->band = fr->band + (size_t)(pages ? (row - fr->rows.y0) >> 3 : row - fr->rows.y0) * fr->stride; /* band_row */
     tr->page_bit = pages ? page_bit_of(fr, row) : 0;
-    tr->cell_height = fr->cell->height; /* >= 1: direct spans need mono_fill */
-    tr->cell_row = fr->cell_mask ? (row & fr->cell_mask) : row % tr->cell_height;
 }
 
 STP_HOT_INLINE void tri_row_next(const frame *fr, tri_row *tr, int pages)
@@ -1205,8 +1204,6 @@ STP_HOT_INLINE void tri_row_next(const frame *fr, tri_row *tr, int pages)
     } else {
         tr->band += fr->stride;
     }
-    if (++tr->cell_row == tr->cell_height)
-        tr->cell_row = 0;
 }
 
 /* The depth-tested span p1..p2 of a triangle's row: straight to the band
@@ -1225,7 +1222,7 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
              * where the span has two (span_z_direct), whose centres 16
              * apart lie within the x extent: 16 |ddx| < 2^29 (from_twos
              * maps every other value too: no test for one pixel) */
-            span_z_direct(tr->z, tr->band, page_bit, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
+            span_z_direct(tr->z, tr->band, page_bit, pattern_of_row(fr, row), p1, p2, (int32_t)d,
                           from_twos(td->gx_pixel));
         else
             put_span_z(fr, row, p1, p2, style, from_twos(d), pl->ddx * (1 << SUB), 0, 0, 0, t, tr != 0);
@@ -1235,7 +1232,7 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
         int64_t ddx = pl->ddx * (1 << SUB), d_end = d + mul_wide(ddx, (int32_t)(p2 - p1));
         if (tr && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
             d_end < DEPTH_Q12_END) /* as put_span_z would, without its call */
-            span_z_direct(tr->z, tr->band, page_bit, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
+            span_z_direct(tr->z, tr->band, page_bit, pattern_of_row(fr, row), p1, p2, (int32_t)d,
                           p2 > p1 ? (int32_t)ddx : 0);
         else
             put_span_z(fr, row, p1, p2, style, d, ddx, 0, 0, 0, t, tr != 0);
