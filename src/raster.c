@@ -121,6 +121,7 @@ typedef struct frame {
     uint8_t *band;
     uint16_t *zbuf;
     size_t stride;            /* bytes between band rows, or pages (MONO1_PAGES) */
+    uint32_t width;           /* r->width, one load away: Z rows and spans' clamp */
     stp_band_rows rows; /* current band */
     /* the band's layout: rows (0, 0), or STP_PIXEL_MONO1_PAGES (3, 1):
      * row y's line starts (y - y0) >> line_shift strides in, and is
@@ -583,7 +584,7 @@ STP_HOT_INLINE void span_z_direct(uint16_t *z, uint8_t *row, uint8_t page_bit, u
 /* The band row y's Z entries, pixels and pattern byte. */
 static uint16_t *z_row(const frame *fr, uint32_t y)
 {
-    return fr->zbuf + (size_t)(y - fr->rows.y0) * fr->r->width;
+    return fr->zbuf + (size_t)(y - fr->rows.y0) * fr->width;
 }
 
 static uint8_t pattern_of_row(const frame *fr, uint32_t y)
@@ -1193,7 +1194,7 @@ STP_HOT_INLINE void tri_row_at(const frame *fr, tri_row *tr, uint32_t row, int p
 
 STP_HOT_INLINE void tri_row_next(const frame *fr, tri_row *tr, int pages)
 {
-    tr->z += fr->r->width;
+    tr->z += fr->width;
     if (pages) {
         /* the next bit of the page, else the next page's first */
         tr->page_bit = (uint8_t)(tr->page_bit << 1);
@@ -1286,7 +1287,7 @@ STP_HOT_INLINE void tri_rows_direct(const frame *fr, paint style, stp_fix t, stp
                 return;
             tri_depth_step(td, pl);
             tri_row_next(fr, tr, pages);
-        } while (!stp_tri_walk_span(w, fr->r->width, &p1, &p2));
+        } while (!stp_tri_walk_span(w, fr->width, &p1, &p2));
     }
 }
 
@@ -1312,7 +1313,7 @@ STP_HOT_INLINE void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint
                 if (!stp_tri_walk_next(w))
                     return;
                 tri_depth_step(&td, &pl);
-            } while (!stp_tri_walk_span(w, fr->r->width, &p1, &p2));
+            } while (!stp_tri_walk_span(w, fr->width, &p1, &p2));
         }
     }
     tri_row_at(fr, &tr, (uint32_t)w->row, pages);
@@ -1366,7 +1367,7 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
                           uint32_t ordinal)
 {
     stp_tri_walk w;
-    uint32_t p1, p2, width = fr->r->width;
+    uint32_t p1, p2, width = fr->width;
     if (!stp_tri_walk_start(&v[0], &v[1], &v[2], &fr->rows, &w))
         return;
     tri_setup_mark(fr, use_z, ordinal, &w);
@@ -2393,6 +2394,7 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
     if ((status = render_check_memory(r, port, output, mem, drawn->format)) != STP_OK)
         return status;
     fr.r = r;
+    fr.width = r->width;
     fr.port = drawn;
     fr.out = output;
     fr.band = mem->band;
