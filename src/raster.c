@@ -117,6 +117,9 @@ typedef struct key_mapping {
 /* The fields a triangle reads come first: ARMv6-M loads a word at an
  * offset below 128 bytes in one instruction, farther ones in three. */
 typedef struct frame {
+    /* at offset 0, so a span's pattern byte is one load at the frame
+     * plus its cell row (ARMv6-M: no offset to add) */
+    uint8_t patterns[STP_CELL_MAX];
     stp_renderer *r;
     uint8_t *band;
     uint16_t *zbuf;
@@ -147,7 +150,6 @@ typedef struct frame {
     stp_shadow_poly *shadow; /* the polygon being drawn's shadow records;
                                 NULL when no light has a map */
 #endif
-    uint8_t patterns[STP_CELL_MAX];
     int second_pass;          /* the Z buffer's second pass draws something:
                                  a transparent polygon or a line (lines are
                                  drawn again over the opaque polygons) */
