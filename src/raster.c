@@ -559,6 +559,21 @@ STP_HOT_INLINE void span_z_direct(uint16_t *z, uint8_t *row, uint8_t page_bit, u
     /* every pixel's depth (uint32_t)di >> 12 is 1..65535 here: no clamp,
      * and compared with the entry as it is */
     uint16_t *zp = z + x1, *const zlast = z + x2;
+#if STP_NARROW_FORMS
+    /* a one-pixel span on a row of bytes (the Cortex-M0+ torus's spans
+     * are a pixel or two) without a run: its depth, and its bit from the
+     * pattern (the host's larger frames pay more for the test than it
+     * saves) */
+    if (x1 == x2 && !(STP_WITH_PAGES && page_bit)) {
+        uint32_t depth = (uint32_t)di >> 12;
+        if (depth > *zp) {
+            uint8_t *b = row + (x1 >> 3), bit = (uint8_t)(0x80u >> (x1 & 7u));
+            *zp = (uint16_t)depth;
+            *b = (uint8_t)(*b ^ ((*b ^ pattern) & bit));
+        }
+        return;
+    }
+#endif
     for (;;) {
         uint32_t run;
         while ((uint32_t)di >> 12 <= *zp) {
