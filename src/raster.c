@@ -1253,7 +1253,7 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
         /* the depths at the span's first and last pixel centres, modulo 2^32 */
         uint32_t d = td->d_row32 + td->gx_pixel * p1, d_end = d + td->gx_pixel * (p2 - p1);
         const uint32_t depths = (uint32_t)(DEPTH_Q12_END - DEPTH_Q12_MIN);
-        if (tr && d - (uint32_t)DEPTH_Q12_MIN < depths && d_end - (uint32_t)DEPTH_Q12_MIN < depths)
+        if (tr && d - (uint32_t)DEPTH_Q12_MIN < depths && (p2 == p1 || d_end - (uint32_t)DEPTH_Q12_MIN < depths))
             /* 1..65535 at both ends; the step a pixel is added only
              * where the span has two (span_z_direct), whose centres 16
              * apart lie within the x extent: 16 |ddx| < 2^29 (from_twos
