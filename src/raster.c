@@ -985,16 +985,17 @@ DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_
     if (((((uint32_t)x1 + xs) | ((uint32_t)x2 + xs)) >> 15) == 0 &&
         ((((uint32_t)y1 + ys) | ((uint32_t)y2 + ys)) >> 14) == 0) {
 #else
-    int32_t x_ext = extent_bound(x1, x2), y_ext = extent_bound(y1, y2);
+    int32_t x_ext, y_ext;
+    /* the centre first, its sums not kept across the tests and the
+     * quotients (a route that falls through makes it again; builds for
+     * size make it after them, as an ATmega2560's large triangles fall
+     * through) */
+    triangle_centre(pl, sx, sy, sd);
+    x_ext = extent_bound(x1, x2);
+    y_ext = extent_bound(y1, y2);
     if (x_ext < ((int32_t)1 << 14) && y_ext < ((int32_t)1 << 13)) {
 #endif
         int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
-#if !defined(__OPTIMIZE_SIZE__)
-        /* the centre first, its sums not kept across the quotients (a
-         * route that falls through makes it again; builds for size make
-         * it after them, as an ATmega2560's large triangles fall through) */
-        triangle_centre(pl, sx, sy, sd);
-#endif
         if (c32 != 0 && (uint32_t)a32 + (gs - 1u) < 2u * gs - 1u && (uint32_t)b32 + (gs - 1u) < 2u * gs - 1u) {
             int terms = gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy, x_ext, y_ext);
 #if defined(__OPTIMIZE_SIZE__)
