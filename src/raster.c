@@ -115,16 +115,24 @@ typedef struct key_mapping {
 #endif
 
 /* The fields a triangle reads come first: ARMv6-M loads a word at an
- * offset below 128 bytes in one instruction, farther ones in three. */
+ * offset below 128 bytes in one instruction, farther ones in three.
+ * FRAME_WORD_LAYOUT (32- and 64-bit targets): the pattern bytes at offset
+ * 0 (a span's byte one load at the frame plus its cell row, no offset to
+ * add) and the width kept (FRAME_WIDTH: one load, not two); on a 16-bit
+ * target (AVR: its loads reach 63 bytes past a pointer) the fields they
+ * would move cost code (ATmega2560 tetra-s1 +630 bytes). */
+#define FRAME_WORD_LAYOUT (UINTPTR_MAX > 0xFFFFu)
 typedef struct frame {
-    /* at offset 0, so a span's pattern byte is one load at the frame
-     * plus its cell row (ARMv6-M: no offset to add) */
+#if FRAME_WORD_LAYOUT
     uint8_t patterns[STP_CELL_MAX];
+#endif
     stp_renderer *r;
     uint8_t *band;
     uint16_t *zbuf;
     size_t stride;            /* bytes between band rows, or pages (MONO1_PAGES) */
-    uint32_t width;           /* r->width, one load away: Z rows and spans' clamp */
+#if FRAME_WORD_LAYOUT
+    uint32_t width;           /* r->width (FRAME_WIDTH) */
+#endif
     stp_band_rows rows; /* current band */
     /* the band's layout: rows (0, 0), or STP_PIXEL_MONO1_PAGES (3, 1):
      * row y's line starts (y - y0) >> line_shift strides in, and is
@@ -150,6 +158,9 @@ typedef struct frame {
     stp_shadow_poly *shadow; /* the polygon being drawn's shadow records;
                                 NULL when no light has a map */
 #endif
+#if !FRAME_WORD_LAYOUT
+    uint8_t patterns[STP_CELL_MAX];
+#endif
     int second_pass;          /* the Z buffer's second pass draws something:
                                  a transparent polygon or a line (lines are
                                  drawn again over the opaque polygons) */
@@ -172,6 +183,12 @@ typedef struct frame {
 #endif
     stp_cell default_cell;
 } frame;
+
+#if FRAME_WORD_LAYOUT
+#define FRAME_WIDTH(fr) ((fr)->width)
+#else
+#define FRAME_WIDTH(fr) ((fr)->r->width)
+#endif
 
 
 /* The line of band row y: the row itself, or (MONO1_PAGES) the first
@@ -619,7 +636,7 @@ STP_HOT_INLINE void span_z_direct(uint16_t *z, uint8_t *row, uint8_t page_bit, u
 /* The band row y's Z entries, pixels and pattern byte. */
 static uint16_t *z_row(const frame *fr, uint32_t y)
 {
-    return fr->zbuf + (size_t)(y - fr->rows.y0) * fr->width;
+    return fr->zbuf + (size_t)(y - fr->rows.y0) * FRAME_WIDTH(fr);
 }
 
 static uint8_t pattern_of_row(const frame *fr, uint32_t y)
@@ -1230,7 +1247,7 @@ STP_HOT_INLINE void tri_row_at(const frame *fr, tri_row *tr, uint32_t row, int p
 
 STP_HOT_INLINE void tri_row_next(const frame *fr, tri_row *tr, int pages)
 {
-    tr->z += fr->width;
+    tr->z += FRAME_WIDTH(fr);
     if (pages) {
         /* the next bit of the page, else the next page's first */
         tr->page_bit = (uint8_t)(tr->page_bit << 1);
@@ -1252,9 +1269,12 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
     uint8_t page_bit = pages && tr ? tr->page_bit : 0;
     if (td->short_depth) {
         /* the depths at the span's first and last pixel centres, modulo 2^32 */
-        uint32_t d = td->d_row32 + td->gx_pixel * p1, d_end = d + td->gx_pixel * (p2 - p1);
+        /* (where speed comes first on a 32-bit core the last from the
+         * first, the same value; elsewhere it cost an ATmega2560 cycles) */
+        uint32_t d = td->d_row32 + td->gx_pixel * p1,
+                 d_end = STP_NARROW_FORMS ? d + td->gx_pixel * (p2 - p1) : td->d_row32 + td->gx_pixel * p2;
         const uint32_t depths = (uint32_t)(DEPTH_Q12_END - DEPTH_Q12_MIN);
-        if (tr && d - (uint32_t)DEPTH_Q12_MIN < depths && (p2 == p1 || d_end - (uint32_t)DEPTH_Q12_MIN < depths))
+        if (tr && d - (uint32_t)DEPTH_Q12_MIN < depths && ((STP_NARROW_FORMS && p2 == p1) || d_end - (uint32_t)DEPTH_Q12_MIN < depths))
             /* 1..65535 at both ends; the step a pixel is added only
              * where the span has two (span_z_direct), whose centres 16
              * apart lie within the x extent: 16 |ddx| < 2^29 (from_twos
@@ -1323,7 +1343,7 @@ STP_HOT_INLINE void tri_rows_direct(const frame *fr, paint style, stp_fix t, stp
                 return;
             tri_depth_step(td, pl);
             tri_row_next(fr, tr, pages);
-        } while (!stp_tri_walk_span(w, fr->width, &p1, &p2));
+        } while (!stp_tri_walk_span(w, FRAME_WIDTH(fr), &p1, &p2));
     }
 }
 
@@ -1349,7 +1369,7 @@ STP_HOT_INLINE void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint
                 if (!stp_tri_walk_next(w))
                     return;
                 tri_depth_step(&td, &pl);
-            } while (!stp_tri_walk_span(w, fr->width, &p1, &p2));
+            } while (!stp_tri_walk_span(w, FRAME_WIDTH(fr), &p1, &p2));
         }
     }
     tri_row_at(fr, &tr, (uint32_t)w->row, pages);
@@ -1403,7 +1423,7 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
                           uint32_t ordinal)
 {
     stp_tri_walk w;
-    uint32_t p1, p2, width = fr->width;
+    uint32_t p1, p2, width = FRAME_WIDTH(fr);
     if (!stp_tri_walk_start(&v[0], &v[1], &v[2], &fr->rows, &w))
         return;
     tri_setup_mark(fr, use_z, ordinal, &w);
@@ -2430,7 +2450,9 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
     if ((status = render_check_memory(r, port, output, mem, drawn->format)) != STP_OK)
         return status;
     fr.r = r;
+#if FRAME_WORD_LAYOUT
     fr.width = r->width;
+#endif
     fr.port = drawn;
     fr.out = output;
     fr.band = mem->band;
