@@ -115,12 +115,24 @@ typedef struct key_mapping {
 #endif
 
 /* The fields a triangle reads come first: ARMv6-M loads a word at an
- * offset below 128 bytes in one instruction, farther ones in three. */
+ * offset below 128 bytes in one instruction, farther ones in three.
+ * FRAME_WORD_LAYOUT (32- and 64-bit targets): the pattern bytes at offset
+ * 0 (a span's byte one load at the frame plus its cell row, no offset to
+ * add) and the width kept (FRAME_WIDTH: one load, not two); on a 16-bit
+ * target (AVR: its loads reach 63 bytes past a pointer) the fields they
+ * would move cost code (ATmega2560 tetra-s1 +630 bytes). */
+#define FRAME_WORD_LAYOUT (UINTPTR_MAX > 0xFFFFu)
 typedef struct frame {
+#if FRAME_WORD_LAYOUT
+    uint8_t patterns[STP_CELL_MAX];
+#endif
     stp_renderer *r;
     uint8_t *band;
     uint16_t *zbuf;
     size_t stride;            /* bytes between band rows, or pages (MONO1_PAGES) */
+#if FRAME_WORD_LAYOUT
+    uint32_t width;           /* r->width (FRAME_WIDTH) */
+#endif
     stp_band_rows rows; /* current band */
     /* the band's layout: rows (0, 0), or STP_PIXEL_MONO1_PAGES (3, 1):
      * row y's line starts (y - y0) >> line_shift strides in, and is
@@ -146,7 +158,9 @@ typedef struct frame {
     stp_shadow_poly *shadow; /* the polygon being drawn's shadow records;
                                 NULL when no light has a map */
 #endif
+#if !FRAME_WORD_LAYOUT
     uint8_t patterns[STP_CELL_MAX];
+#endif
     int second_pass;          /* the Z buffer's second pass draws something:
                                  a transparent polygon or a line (lines are
                                  drawn again over the opaque polygons) */
@@ -169,6 +183,12 @@ typedef struct frame {
 #endif
     stp_cell default_cell;
 } frame;
+
+#if FRAME_WORD_LAYOUT
+#define FRAME_WIDTH(fr) ((fr)->width)
+#else
+#define FRAME_WIDTH(fr) ((fr)->r->width)
+#endif
 
 
 /* The line of band row y: the row itself, or (MONO1_PAGES) the first
@@ -556,6 +576,39 @@ STP_HOT_INLINE void span_z_direct(uint16_t *z, uint8_t *row, uint8_t page_bit, u
     /* every pixel's depth (uint32_t)di >> 12 is 1..65535 here: no clamp,
      * and compared with the entry as it is */
     uint16_t *zp = z + x1, *const zlast = z + x2;
+#if STP_NARROW_FORMS
+    /* a span of one pixel, or two in one byte, on a row of bytes (the
+     * Cortex-M0+ torus's spans are a pixel or two) without a run: their
+     * depths, and their bits from the pattern (the host's larger frames
+     * pay more for the tests than they save; the two cases as one cost
+     * the torus 10 000 instructions more) */
+    if (x1 == x2 && !(STP_WITH_PAGES && page_bit)) {
+        uint32_t depth = (uint32_t)di >> 12;
+        if (depth > *zp) {
+            uint8_t *b = row + (x1 >> 3), bit = (uint8_t)(0x80u >> (x1 & 7u));
+            *zp = (uint16_t)depth;
+            *b = (uint8_t)(*b ^ ((*b ^ pattern) & bit));
+        }
+        return;
+    }
+    if (x2 == x1 + 1u && (x1 & 7u) != 7u && !(STP_WITH_PAGES && page_bit)) {
+        uint32_t depth = (uint32_t)di >> 12, depth2 = (uint32_t)(di + dstep) >> 12, bit = 0x80u >> (x1 & 7u),
+                 mask = 0;
+        if (depth > zp[0]) {
+            zp[0] = (uint16_t)depth;
+            mask = bit;
+        }
+        if (depth2 > zp[1]) {
+            zp[1] = (uint16_t)depth2;
+            mask |= bit >> 1;
+        }
+        if (mask != 0) {
+            uint8_t *b = row + (x1 >> 3);
+            *b = (uint8_t)(*b ^ ((*b ^ pattern) & mask));
+        }
+        return;
+    }
+#endif
     for (;;) {
         uint32_t run;
         while ((uint32_t)di >> 12 <= *zp) {
@@ -583,7 +636,7 @@ STP_HOT_INLINE void span_z_direct(uint16_t *z, uint8_t *row, uint8_t page_bit, u
 /* The band row y's Z entries, pixels and pattern byte. */
 static uint16_t *z_row(const frame *fr, uint32_t y)
 {
-    return fr->zbuf + (size_t)(y - fr->rows.y0) * fr->r->width;
+    return fr->zbuf + (size_t)(y - fr->rows.y0) * FRAME_WIDTH(fr);
 }
 
 static uint8_t pattern_of_row(const frame *fr, uint32_t y)
@@ -755,8 +808,12 @@ static int32_t depth_q12_made(frame *fr, int32_t key)
 }
 
 #if KEY_CACHE > 0
-/* its slot of the kept mappings: the key's low bits, mixed */
-#define KEY_SLOT(key) ((((uint32_t)(key)) ^ ((uint32_t)(key) >> 8)) & (KEY_CACHE - 1))
+/* its slot of the kept mappings: key bits 3..8, not mixed: a mesh's
+ * recent vertices lie near each other in depth, so near keys taking
+ * neighbouring slots keep them apart (Cortex-M0+ torus render against the
+ * old mix of bits 8..13 into 0..5: bits 3..8 3 800 instructions fewer,
+ * bits 0..5 1 300 fewer, a multiplicative hash 14 400 more) */
+#define KEY_SLOT(key) ((((uint32_t)(key)) >> 3) & (KEY_CACHE - 1))
 
 static int32_t depth_q12_keep(frame *fr, key_mapping *m, int32_t key)
 {
@@ -945,16 +1002,17 @@ DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_
     if (((((uint32_t)x1 + xs) | ((uint32_t)x2 + xs)) >> 15) == 0 &&
         ((((uint32_t)y1 + ys) | ((uint32_t)y2 + ys)) >> 14) == 0) {
 #else
-    int32_t x_ext = extent_bound(x1, x2), y_ext = extent_bound(y1, y2);
+    int32_t x_ext, y_ext;
+    /* the centre first, its sums not kept across the tests and the
+     * quotients (a route that falls through makes it again; builds for
+     * size make it after them, as an ATmega2560's large triangles fall
+     * through) */
+    triangle_centre(pl, sx, sy, sd);
+    x_ext = extent_bound(x1, x2);
+    y_ext = extent_bound(y1, y2);
     if (x_ext < ((int32_t)1 << 14) && y_ext < ((int32_t)1 << 13)) {
 #endif
         int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
-#if !defined(__OPTIMIZE_SIZE__)
-        /* the centre first, its sums not kept across the quotients (a
-         * route that falls through makes it again; builds for size make
-         * it after them, as an ATmega2560's large triangles fall through) */
-        triangle_centre(pl, sx, sy, sd);
-#endif
         if (c32 != 0 && (uint32_t)a32 + (gs - 1u) < 2u * gs - 1u && (uint32_t)b32 + (gs - 1u) < 2u * gs - 1u) {
             int terms = gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy, x_ext, y_ext);
 #if defined(__OPTIMIZE_SIZE__)
@@ -1169,13 +1227,14 @@ STP_HOT_INLINE void tri_depth_step(tri_depth *td, const depth_plane *pl)
 }
 
 /* The band row a triangle's direct spans go to (span_z_direct): its Z
- * entries, its pixels and its cell row (0..cell_height - 1), set at the
- * triangle's first span (tri_row_at) and stepped a row down with the
- * triangle (tri_row_next) rather than formed again for every span. */
+ * entries and its pixels, set at the triangle's first span (tri_row_at)
+ * and stepped a row down with the triangle (tri_row_next) rather than
+ * formed again for every span.  (Its pattern byte is formed for each span
+ * from the row, pattern_of_row: one value fewer kept across the rows, and
+ * no step a row; the Cortex-M0+ torus's triangles have a span or two.) */
 typedef struct tri_row {
     uint16_t *z;
     uint8_t *band;
-    uint32_t cell_row, cell_height;
     uint8_t page_bit; /* stp_halftone_fill_bits: 0, or the row's page bit */
 } tri_row;
 
@@ -1184,13 +1243,11 @@ STP_HOT_INLINE void tri_row_at(const frame *fr, tri_row *tr, uint32_t row, int p
     tr->z = z_row(fr, row);
     tr->band = fr->band + (size_t)(pages ? (row - fr->rows.y0) >> 3 : row - fr->rows.y0) * fr->stride; /* band_row */
     tr->page_bit = pages ? page_bit_of(fr, row) : 0;
-    tr->cell_height = fr->cell->height; /* >= 1: direct spans need mono_fill */
-    tr->cell_row = fr->cell_mask ? (row & fr->cell_mask) : row % tr->cell_height;
 }
 
 STP_HOT_INLINE void tri_row_next(const frame *fr, tri_row *tr, int pages)
 {
-    tr->z += fr->r->width;
+    tr->z += FRAME_WIDTH(fr);
     if (pages) {
         /* the next bit of the page, else the next page's first */
         tr->page_bit = (uint8_t)(tr->page_bit << 1);
@@ -1201,8 +1258,6 @@ STP_HOT_INLINE void tri_row_next(const frame *fr, tri_row *tr, int pages)
     } else {
         tr->band += fr->stride;
     }
-    if (++tr->cell_row == tr->cell_height)
-        tr->cell_row = 0;
 }
 
 /* The depth-tested span p1..p2 of a triangle's row: straight to the band
@@ -1214,14 +1269,17 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
     uint8_t page_bit = pages && tr ? tr->page_bit : 0;
     if (td->short_depth) {
         /* the depths at the span's first and last pixel centres, modulo 2^32 */
-        uint32_t d = td->d_row32 + td->gx_pixel * p1, d_end = td->d_row32 + td->gx_pixel * p2;
+        /* (where speed comes first on a 32-bit core the last from the
+         * first, the same value; elsewhere it cost an ATmega2560 cycles) */
+        uint32_t d = td->d_row32 + td->gx_pixel * p1,
+                 d_end = STP_NARROW_FORMS ? d + td->gx_pixel * (p2 - p1) : td->d_row32 + td->gx_pixel * p2;
         const uint32_t depths = (uint32_t)(DEPTH_Q12_END - DEPTH_Q12_MIN);
-        if (tr && d - (uint32_t)DEPTH_Q12_MIN < depths && d_end - (uint32_t)DEPTH_Q12_MIN < depths)
+        if (tr && d - (uint32_t)DEPTH_Q12_MIN < depths && ((STP_NARROW_FORMS && p2 == p1) || d_end - (uint32_t)DEPTH_Q12_MIN < depths))
             /* 1..65535 at both ends; the step a pixel is added only
              * where the span has two (span_z_direct), whose centres 16
              * apart lie within the x extent: 16 |ddx| < 2^29 (from_twos
              * maps every other value too: no test for one pixel) */
-            span_z_direct(tr->z, tr->band, page_bit, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
+            span_z_direct(tr->z, tr->band, page_bit, pattern_of_row(fr, row), p1, p2, (int32_t)d,
                           from_twos(td->gx_pixel));
         else
             put_span_z(fr, row, p1, p2, style, from_twos(d), pl->ddx * (1 << SUB), 0, 0, 0, t, tr != 0);
@@ -1231,7 +1289,7 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
         int64_t ddx = pl->ddx * (1 << SUB), d_end = d + mul_wide(ddx, (int32_t)(p2 - p1));
         if (tr && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
             d_end < DEPTH_Q12_END) /* as put_span_z would, without its call */
-            span_z_direct(tr->z, tr->band, page_bit, fr->patterns[tr->cell_row], p1, p2, (int32_t)d,
+            span_z_direct(tr->z, tr->band, page_bit, pattern_of_row(fr, row), p1, p2, (int32_t)d,
                           p2 > p1 ? (int32_t)ddx : 0);
         else
             put_span_z(fr, row, p1, p2, style, d, ddx, 0, 0, 0, t, tr != 0);
@@ -1285,7 +1343,7 @@ STP_HOT_INLINE void tri_rows_direct(const frame *fr, paint style, stp_fix t, stp
                 return;
             tri_depth_step(td, pl);
             tri_row_next(fr, tr, pages);
-        } while (!stp_tri_walk_span(w, fr->r->width, &p1, &p2));
+        } while (!stp_tri_walk_span(w, FRAME_WIDTH(fr), &p1, &p2));
     }
 }
 
@@ -1311,7 +1369,7 @@ STP_HOT_INLINE void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint
                 if (!stp_tri_walk_next(w))
                     return;
                 tri_depth_step(&td, &pl);
-            } while (!stp_tri_walk_span(w, fr->r->width, &p1, &p2));
+            } while (!stp_tri_walk_span(w, FRAME_WIDTH(fr), &p1, &p2));
         }
     }
     tri_row_at(fr, &tr, (uint32_t)w->row, pages);
@@ -1365,7 +1423,7 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
                           uint32_t ordinal)
 {
     stp_tri_walk w;
-    uint32_t p1, p2, width = fr->r->width;
+    uint32_t p1, p2, width = FRAME_WIDTH(fr);
     if (!stp_tri_walk_start(&v[0], &v[1], &v[2], &fr->rows, &w))
         return;
     tri_setup_mark(fr, use_z, ordinal, &w);
@@ -2392,6 +2450,9 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
     if ((status = render_check_memory(r, port, output, mem, drawn->format)) != STP_OK)
         return status;
     fr.r = r;
+#if FRAME_WORD_LAYOUT
+    fr.width = r->width;
+#endif
     fr.port = drawn;
     fr.out = output;
     fr.band = mem->band;
