@@ -158,6 +158,22 @@
 #define STP_SIZE_CALL STP_HOT_INLINE
 #endif
 
+/* v mod 2^16.  On ARMv6-M one UXTH in builds for speed: GCC (12) forms
+ * v & 0xFFFF there with two shifts, and emits UXTH only to widen a 16-bit
+ * value it cannot see through (the empty asm, which leaves the value as
+ * it is); builds for size keep the plain form (a few bytes smaller where
+ * the value is widened twice). */
+static inline uint32_t stp_lo16(uint32_t v)
+{
+#if defined(__GNUC__) && defined(__thumb__) && !defined(__thumb2__) && !defined(__OPTIMIZE_SIZE__)
+    uint16_t h = (uint16_t)v;
+    __asm__("" : "+l"(h));
+    return h;
+#else
+    return v & 0xFFFFu;
+#endif
+}
+
 /* A few loads chosen by an index, as in a loop over a vector's components:
  * inlined in every build (once the loop is unrolled the index is a
  * constant and the choice disappears) but STP_LEAN_CODE's calls. */
@@ -332,7 +348,7 @@ STP_SIZE_CALL uint32_t stp_umulhi32_approx(uint32_t a, uint32_t b)
     return (uint32_t)ah * bh + (((uint32_t)ah * bl) >> 16) + (((uint32_t)al * bh) >> 16);
 #else
     uint32_t ah = a >> 16, bh = b >> 16;
-    return ah * bh + ((ah * (b & 0xFFFFu)) >> 16) + (((a & 0xFFFFu) * bh) >> 16);
+    return ah * bh + ((ah * stp_lo16(b)) >> 16) + ((stp_lo16(a) * bh) >> 16);
 #endif
 }
 

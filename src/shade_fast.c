@@ -89,7 +89,7 @@ STP_HOT_INLINE uint32_t mul_u16(uint32_t a, uint32_t m)
 #if STP_WIDE_ARITH
     return (uint32_t)(((uint64_t)a * m) >> 16);
 #else
-    return (a >> 16) * m + (((a & 0xFFFFu) * m) >> 16);
+    return (a >> 16) * m + ((stp_lo16(a) * m) >> 16);
 #endif
 }
 
@@ -97,7 +97,7 @@ STP_HOT_INLINE uint32_t mul_u16(uint32_t a, uint32_t m)
  * two 32-bit products. */
 static inline int32_t mul_q16(int32_t a, uint32_t m)
 {
-    return stp_asr32(a, 16) * (int32_t)m + (int32_t)((((uint32_t)a & 0xFFFFu) * m) >> 16);
+    return stp_asr32(a, 16) * (int32_t)m + (int32_t)((stp_lo16((uint32_t)a) * m) >> 16);
 }
 
 /* ---- reciprocal square root and reciprocal ---- */
