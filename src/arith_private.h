@@ -158,16 +158,13 @@
 #define STP_SIZE_CALL STP_HOT_INLINE
 #endif
 
-/* v mod 2^16.  On ARMv6-M one UXTH in builds for speed: GCC (12) forms
- * v & 0xFFFF there with two shifts, and emits UXTH only to widen a 16-bit
- * value it cannot see through (the empty asm, which leaves the value as
- * it is); builds for size keep the plain form (a few bytes smaller where
- * the value is widened twice). */
+/* v mod 2^16: on Thumb-1 cores with UXTH (ARMv6-M, ARMv8-M Baseline) that
+ * one instruction, where GCC (12) forms v & 0xFFFF with two shifts. */
 static inline uint32_t stp_lo16(uint32_t v)
 {
-#if defined(__GNUC__) && defined(__thumb__) && !defined(__thumb2__) && !defined(__OPTIMIZE_SIZE__)
-    uint16_t h = (uint16_t)v;
-    __asm__("" : "+l"(h));
+#if defined(__GNUC__) && defined(__thumb__) && !defined(__thumb2__) && defined(__ARM_ARCH) && __ARM_ARCH >= 6
+    uint32_t h;
+    __asm__("uxth %0, %1" : "=l"(h) : "l"(v));
     return h;
 #else
     return v & 0xFFFFu;
