@@ -641,7 +641,9 @@ static stp_sf16 fresnel_sf(const stp_shade_fast *s, uint32_t c, uint32_t u)
 static uint32_t fresnel_q16(const stp_shade_fast *s, uint32_t c, int32_t e_dot_l)
 {
     if (s->refraction_ge_1) {
-        uint32_t i = (c - FRESNEL_C0) >> 24, frac = ((c - FRESNEL_C0) >> 8) & 0xFFFFu;
+        /* c - FRESNEL_C0 (2^28) in steps of 2^24 and their fraction: c's own
+         * bits (no subtraction) */
+        uint32_t i = (c >> 24) - (FRESNEL_C0 >> 24), frac = (c >> 8) & 0xFFFFu;
         uint32_t a = s->fresnel[i];
         int32_t d;
         if (HOT_UNLIKELY(i >= STP_SHADE_FAST_FRESNEL_NODES - 1))
