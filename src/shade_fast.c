@@ -373,11 +373,12 @@ static uint32_t sf_to_fixed(stp_sf16 a, int q, uint32_t cap)
 /* p 2^sh in Q26 for the sums, saturated at SHARE_CAP */
 STP_HOT_INLINE int32_t share_of(uint32_t p, int sh)
 {
-    if (p == 0)
-        return 0; /* a zero product (a light of power 0) has any exponent */
-    if (HOT_UNLIKELY(sh >= 0))
+    if (HOT_UNLIKELY(sh >= 0)) {
+        if (p == 0)
+            return 0; /* a zero product (a light of power 0) has any exponent */
         return sh >= 31 || p > (SHARE_CAP >> sh) ? (int32_t)SHARE_CAP : (int32_t)(p << sh);
-    return HOT_UNLIKELY(sh <= -32) ? 0 : (int32_t)(p >> -sh);
+    }
+    return HOT_UNLIKELY(sh <= -32) ? 0 : (int32_t)(p >> -sh); /* 0 for p = 0 */
 }
 
 /* a b in Q26 for a in Q(q) (a < 2^31), b = m 2^-e: floor(2 a m 2^-16)
