@@ -1361,9 +1361,10 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
     for (i = 0; i < 3; i++)
         nn += (uint32_t)((int32_t)normal[i] * normal[i]);
 #if !defined(__OPTIMIZE_SIZE__)
-    /* one test for the common case, nn within 2^17 of 2^28 */
-    if (HOT_UNLIKELY(nn - 0x0FFE0000u > 0x40000u))
-        return nn > 0x10020000u ? 0x20000 : -0x20000;
+    /* one test (a shift's) for the common case, nn within 2^17 of 2^28
+     * (2^28 + 2^17 itself on either branch) */
+    if (HOT_UNLIKELY((nn - 0x0FFE0000u) >> 18 != 0))
+        return nn >= 0x10020000u ? 0x20000 : -0x20000;
     return (int32_t)(nn - 0x10000000u);
 #else
     return nn > 0x10020000u ? 0x20000 : (nn < 0x0FFE0000u ? -0x20000 : (int32_t)(nn - 0x10000000u));
