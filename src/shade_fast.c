@@ -532,7 +532,7 @@ STP_NOINLINE int32_t cos_dirs(const stp_shade_fast_dir *a, const stp_shade_fast_
     for (i = 0; i < 3; i++) {
         int32_t ai = a->w[i], bi = b->w[i];
         s += stp_asr32(ai * stp_asr32(bi, 1), 2);
-        odd += ai & -(bi & 1);
+        odd += ai & stp_asr32((int32_t)((uint32_t)bi << 31), 31); /* ai or 0 by b_i's low bit */
     }
     s += stp_asr32(odd, 3);
     m = s < 0 ? 0u - (uint32_t)s : (uint32_t)s;
