@@ -90,7 +90,7 @@ STP_HOT_INLINE uint32_t mul_u16(uint32_t a, uint32_t m)
 #if STP_WIDE_ARITH
     return (uint32_t)(((uint64_t)a * m) >> 16);
 #else
-    return (a >> 16) * m + (((a & 0xFFFFu) * m) >> 16);
+    return (a >> 16) * m + ((stp_lo16(a) * m) >> 16);
 #endif
 }
 
@@ -98,7 +98,7 @@ STP_HOT_INLINE uint32_t mul_u16(uint32_t a, uint32_t m)
  * two 32-bit products. */
 static inline int32_t mul_q16(int32_t a, uint32_t m)
 {
-    return stp_asr32(a, 16) * (int32_t)m + (int32_t)((((uint32_t)a & 0xFFFFu) * m) >> 16);
+    return stp_asr32(a, 16) * (int32_t)m + (int32_t)((stp_lo16((uint32_t)a) * m) >> 16);
 }
 
 /* ---- reciprocal square root and reciprocal ---- */
@@ -224,7 +224,7 @@ STP_HOT_INLINE stp_sf16 sf_recip_of(stp_sf16 a, uint32_t y)
     stp_sf16 r;
     r.m = y;
     r.e = 31 - a.e;
-    if (HOT_UNLIKELY(r.m > 0xFFFFu)) { /* a.m = 2^15 exactly */
+    if (HOT_UNLIKELY(r.m >> 16 != 0)) { /* a.m = 2^15 exactly */
         r.m >>= 1;
         r.e--;
     }
@@ -298,11 +298,11 @@ STP_HOT_INLINE stp_sf16 recip_cos(uint32_t c, uint32_t *q26)
     stp_sf16 a;
     int n, sh;
     a.e = 30;
-    while (HOT_UNLIKELY(c < ((uint32_t)1 << 26))) {
+    while (HOT_UNLIKELY(c >> 26 == 0)) {
         c <<= 4;
         a.e += 4;
     }
-    n = (HOT_UNLIKELY(c >= (uint32_t)Q30) ? 31 : bit_length_26(c)) - 16; /* 11 .. 15 */
+    n = (HOT_UNLIKELY(c >> 30 != 0) ? 31 : bit_length_26(c)) - 16; /* 11 .. 15 */
     a.m = c >> n;
     a.e -= n;
     a = sf_recip_hot(a);
@@ -343,7 +343,9 @@ STP_HOT_INLINE stp_sf16 sf_add_in(stp_sf16 a, stp_sf16 b, int nz)
         sum = a.m + sf_aligned(b, b.e - a.e);
         r.e = a.e;
     }
-    if (sum > 0xFFFFu) {
+    /* sum >= 2^16: a shift's test where it is one instruction fewer
+     * (ARMv6-M), the comparison on 8-bit cores (fewer bytes on AVR) */
+    if (STP_HAVE_MUL32 ? sum >> 16 != 0 : sum > 0xFFFFu) {
         r.m = sum >> 1;
         r.e--;
     } else {
@@ -372,11 +374,12 @@ static uint32_t sf_to_fixed(stp_sf16 a, int q, uint32_t cap)
 /* p 2^sh in Q26 for the sums, saturated at SHARE_CAP */
 STP_HOT_INLINE int32_t share_of(uint32_t p, int sh)
 {
-    if (p == 0)
-        return 0; /* a zero product (a light of power 0) has any exponent */
-    if (HOT_UNLIKELY(sh >= 0))
+    if (HOT_UNLIKELY(sh >= 0)) {
+        if (p == 0)
+            return 0; /* a zero product (a light of power 0) has any exponent */
         return sh >= 31 || p > (SHARE_CAP >> sh) ? (int32_t)SHARE_CAP : (int32_t)(p << sh);
-    return HOT_UNLIKELY(sh <= -32) ? 0 : (int32_t)(p >> -sh);
+    }
+    return HOT_UNLIKELY(sh <= -32) ? 0 : (int32_t)(p >> -sh); /* 0 for p = 0 */
 }
 
 /* a b in Q26 for a in Q(q) (a < 2^31), b = m 2^-e: floor(2 a m 2^-16)
@@ -530,7 +533,7 @@ STP_NOINLINE int32_t cos_dirs(const stp_shade_fast_dir *a, const stp_shade_fast_
     for (i = 0; i < 3; i++) {
         int32_t ai = a->w[i], bi = b->w[i];
         s += stp_asr32(ai * stp_asr32(bi, 1), 2);
-        odd += ai & -(bi & 1);
+        odd += ai & stp_asr32((int32_t)((uint32_t)bi << 31), 31); /* ai or 0 by b_i's low bit */
     }
     s += stp_asr32(odd, 3);
     m = s < 0 ? 0u - (uint32_t)s : (uint32_t)s;
@@ -568,7 +571,7 @@ static stp_sf16 sf_from_r(uint32_t r, int e)
 STP_HOT_INLINE uint32_t rsqrt_any(uint32_t q, int *j)
 {
     /* the common cases (|L + E|^2 >= 1/4) without a search */
-    *j = q >= 0x40000000u ? 0 : (q >= 0x10000000u ? 1 : (32 - stp_bit_length32(q)) >> 1);
+    *j = q >> 30 != 0 ? 0 : (q >> 28 != 0 ? 1 : (32 - stp_bit_length32(q)) >> 1);
     return rsqrt_norm(q << (2 * *j));
 }
 
@@ -640,7 +643,9 @@ static stp_sf16 fresnel_sf(const stp_shade_fast *s, uint32_t c, uint32_t u)
 static uint32_t fresnel_q16(const stp_shade_fast *s, uint32_t c, int32_t e_dot_l)
 {
     if (s->refraction_ge_1) {
-        uint32_t i = (c - FRESNEL_C0) >> 24, frac = ((c - FRESNEL_C0) >> 8) & 0xFFFFu;
+        /* c - FRESNEL_C0 (2^28) in steps of 2^24 and their fraction: c's own
+         * bits (no subtraction) */
+        uint32_t i = (c >> 24) - (FRESNEL_C0 >> 24), frac = (c >> 8) & 0xFFFFu;
         uint32_t a = s->fresnel[i];
         int32_t d;
         if (HOT_UNLIKELY(i >= STP_SHADE_FAST_FRESNEL_NODES - 1))
@@ -665,7 +670,7 @@ static uint32_t gloss_q30(const stp_shade_fast *s, uint32_t omx)
     t = ((uint32_t)1 << 16) + x;
     n = bit_length_near(t >> 16, 0); /* 1 .. 16: one halving fewer */
     y = recip16_hot(t >> n);
-    if (y > 0xFFFFu) /* m = 2^15: D = 2^(32 - 2n) 2^-30 */
+    if (y >> 16 != 0) /* m = 2^15: D = 2^(32 - 2n) 2^-30 */
         return n >= 16 ? 0u : (uint32_t)1 << (32 - 2 * n);
     return n >= 16 ? 0u : (y * y) >> (2 * n);
 }
@@ -722,7 +727,7 @@ static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t 
         return 0;
     if (nh > (uint32_t)Q30)
         nh = (uint32_t)Q30;
-    if (eh >= FRESNEL_C0 && j <= 1) /* j <= 1: |L + E| >= 1/2 */
+    if (eh >> 28 != 0 && j <= 1) /* eh >= FRESNEL_C0; j <= 1: |L + E| >= 1/2 */
         return share_times(specular_fixed(s, n_dot_l, n_dot_e, nh, r, j, eh, e_dot_l, inv_ne, inv_ne_q26), 27, wk);
     if (n_dot_e < s->fast_min_cos && s->exact)
         return -1; /* a light nearly opposite a grazing eye: GRAZE_EXACT */
@@ -1424,9 +1429,10 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
     for (i = 0; i < 3; i++)
         nn += (uint32_t)((int32_t)normal[i] * normal[i]);
 #if !defined(__OPTIMIZE_SIZE__)
-    /* one test for the common case, nn within 2^17 of 2^28 */
-    if (HOT_UNLIKELY(nn - 0x0FFE0000u > 0x40000u))
-        return nn > 0x10020000u ? 0x20000 : -0x20000;
+    /* one test (a shift's) for the common case, nn within 2^17 of 2^28
+     * (2^28 + 2^17 itself on either branch) */
+    if (HOT_UNLIKELY((nn - 0x0FFE0000u) >> 18 != 0))
+        return nn >= 0x10020000u ? 0x20000 : -0x20000;
     return (int32_t)(nn - 0x10000000u);
 #else
     return nn > 0x10020000u ? 0x20000 : (nn < 0x0FFE0000u ? -0x20000 : (int32_t)(nn - 0x10000000u));
