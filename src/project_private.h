@@ -109,7 +109,7 @@ STP_HOT_INLINE int stp_project_offset_of(uint32_t e, int32_t sign, uint32_t n_lo
     const int k = STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS;
     const uint32_t mask = ((uint32_t)1 << k) - 1u;
     uint32_t b = e + ((uint32_t)sign & mask), q;
-    if (mask >= 15u && e < 0x80000000u && ((~b & mask) >> 3) != 0) {
+    if (!STP_UNLIKELY(mask < 15u || e >= 0x80000000u || ((~b & mask) >> 3) == 0)) {
         *out = ((int32_t)(b >> k) ^ sign) - sign;
         return 1;
     }
