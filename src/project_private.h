@@ -348,19 +348,25 @@ STP_HOT_INLINE int32_t stp_project_clamp(int32_t c, int32_t limit)
 
 /* fb: stp_bit_length32(lens->focal), found once for many points (or -1:
  * stp_project_exact_bits) */
-static inline void stp_view_perspective_device_bits(const stp_view_lens *lens, int fb, const stp_vec3 *p,
+static inline int stp_view_perspective_device_exact(const stp_view_lens *lens, int fb, const stp_vec3 *p,
                                                     int32_t out[3])
 {
     int32_t x32, y32;
-    if (stp_project_exact_bits((uint32_t)lens->focal, fb, (uint32_t)lens->hither,
-                               (uint32_t)(p->z < lens->hither ? lens->hither : p->z), p->x, p->y, &x32, &y32,
-                               &out[2])) {
-        /* |offset| < 2^(31 - 12): the sums fit int32 */
-        out[0] = stp_project_clamp(lens->half_width + x32, 2 * lens->half_width);
-        out[1] = stp_project_clamp(lens->half_height - y32, 2 * lens->half_height);
-        return;
-    }
-    stp_view_perspective_device_wide(lens, p, out);
+    if (!stp_project_exact_bits((uint32_t)lens->focal, fb, (uint32_t)lens->hither,
+                                (uint32_t)(p->z < lens->hither ? lens->hither : p->z), p->x, p->y, &x32, &y32,
+                                &out[2]))
+        return 0;
+    /* |offset| < 2^(31 - 12): the sums fit int32 */
+    out[0] = stp_project_clamp(lens->half_width + x32, 2 * lens->half_width);
+    out[1] = stp_project_clamp(lens->half_height - y32, 2 * lens->half_height);
+    return 1;
+}
+
+static inline void stp_view_perspective_device_bits(const stp_view_lens *lens, int fb, const stp_vec3 *p,
+                                                    int32_t out[3])
+{
+    if (!stp_view_perspective_device_exact(lens, fb, p, out))
+        stp_view_perspective_device_wide(lens, p, out);
 }
 
 static inline void stp_view_perspective_device(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3])
