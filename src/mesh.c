@@ -333,7 +333,7 @@ STP_HOT_INLINE void vertex_project(const mesh_context *c, stp_mesh_vertex *s)
  * outcode is 0 and nothing saturates (box_inside). */
 static void vertex_ready(const mesh_context *c, stp_mesh_vertex *s, uint16_t i)
 {
-    if (s->state == STATE_NEW)
+    if (!STP_UNLIKELY(s->state != STATE_NEW)) /* laid out as the hot path (c->inside: every vertex) */
         (void)stp_render_point_at_view(c->r, &c->vertices[i], &s->view);
     vertex_project(c, s);
 }
