@@ -75,7 +75,8 @@ typedef struct mesh_context {
     int inside; /* 1: every vertex is inside the view volume (no outcodes)
                    and its view coordinates are below 2^29 in magnitude */
     stp_view_lens lens; /* the projection's constants (view.c) */
-    int focal_bits;     /* stp_bit_length32(lens.focal), once a call */
+    uint8_t focal_bits; /* stp_bit_length32(lens.focal), once a call (unsigned: the
+                           projection's not-known case, -1, folds away) */
     const stp_shade_fast *shade; /* the face stage's shader (stp_render_face_shader), NULL: shading off */
     int32_t test_rows; /* rows of a triangle pixel culling (render.h) tests: STP_CENTRE_TEST_MAX, or 0 when off */
     /* the face stage's per-call values, kept here rather than in r (whose
@@ -266,7 +267,7 @@ OUT_OF_LINE int prepare_call(mesh_context *c)
     c->lens.hither = r->hither;
     c->lens.half_width = (int32_t)r->width << (STP_SUBPIXEL_BITS - 1);
     c->lens.half_height = (int32_t)r->height << (STP_SUBPIXEL_BITS - 1);
-    c->focal_bits = stp_bit_length32((uint32_t)r->focal);
+    c->focal_bits = (uint8_t)stp_bit_length32((uint32_t)r->focal);
     k = stp_bit_length32(big) - 14;
     c->shift = k > 0 ? k : 0;
     for (j = 0; j < 3; j++)
