@@ -440,7 +440,7 @@ void stp_view_transform_point_at(const stp_view_transform *t, const stp_vec3 *pp
     int small = (((uint32_t)p.x + 0x10000000u) | ((uint32_t)p.y + 0x10000000u) | ((uint32_t)p.z + 0x10000000u)) <
                 0x20000000u;
 #if STP_NARROW_FORMS && F == 16
-    if (t->unit && small) {
+    if (!STP_UNLIKELY(!t->unit || !small)) { /* laid out as the hot path */
         /* unit_coordinate's estimates (the high parts' products), then
          * its low words (the point's) */
         int32_t h[3];
