@@ -1925,9 +1925,9 @@ STP_NOINLINE const stp_instr *scan_triangles(extent *ex_io, const stp_instr *in,
                                              uint32_t *count_io)
 {
     const stp_instr *v;
-    uint32_t count = *count_io, w, xw, yw;
+    uint32_t shades = 0, w, xw, yw;
     int32_t lo, xlo, ylo, i;
-    if (count == 0)
+    if (*count_io == 0)
         extent_vertex(ex_io, in, 1);
     lo = ex_io->key_min;
     w = ex_io->key_width;
@@ -1936,10 +1936,12 @@ STP_NOINLINE const stp_instr *scan_triangles(extent *ex_io, const stp_instr *in,
     ylo = ex_io->y_lo;
     yw = ex_io->y_width;
     for (v = in; v < end; v++) {
-        if (v->op == STP_OP_SHADE)
+        if (STP_UNLIKELY(v->op != 3)) {
+            if (v->op != STP_OP_SHADE)
+                break;
+            shades++;
             continue;
-        if (v->op != 3)
-            break;
+        }
         /* the widening a loop: unrolled, the compiler keeps the loads of
          * the test for it, which takes registers the test needs */
         if (STP_UNLIKELY(VERTEX_OUTSIDE(v[0], lo, w, xlo, xw, ylo, yw) ||
@@ -1950,7 +1952,6 @@ STP_NOINLINE const stp_instr *scan_triangles(extent *ex_io, const stp_instr *in,
                 extent_widen(&xlo, &xw, v[i].x, 0);
                 extent_widen(&ylo, &yw, v[i].y, 0);
             }
-        count++;
         v += 2;
     }
     ex_io->key_min = lo;
@@ -1959,7 +1960,9 @@ STP_NOINLINE const stp_instr *scan_triangles(extent *ex_io, const stp_instr *in,
     ex_io->x_width = xw;
     ex_io->y_lo = ylo;
     ex_io->y_width = yw;
-    *count_io = count;
+    /* the triangles counted at the end: the run's records less its
+     * SHADE records, three a triangle (the count a register too many) */
+    *count_io += ((uint32_t)(v - in) - shades) / 3u;
     return v;
 }
 #endif
