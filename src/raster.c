@@ -1116,17 +1116,17 @@ static int depth_plane_for(frame *fr, const stp_instr *v, int n, uint32_t ordina
  * records and its style's pattern bytes.  Returns whether runs go straight
  * to the band from the pattern bytes (flat, opaque, not shadowed, MONO1
  * with the style's patterns built). */
-static int paint_setup(frame *fr, uint32_t at, paint style, int smooth, stp_fix t)
+static int paint_setup(frame *fr, const stp_instr *v, paint style, int smooth, stp_fix t)
 {
     int direct = !smooth && t == 0;
 #if STP_WITH_SHADOWS
     if (fr->shadow) {
-        stp_shadow_polygon(fr->r, at, fr->shadow);
+        stp_shadow_polygon(fr->r, (uint32_t)(v - fr->r->df), fr->shadow);
         if (fr->shadow->count > 0)
             direct = 0;
     }
 #else
-    (void)at;
+    (void)v;
 #endif
     /* pattern bytes are made for MONO1 only (use_style); a MONO1 port
      * under error diffusion is drawn as GREY8 */
@@ -1347,11 +1347,11 @@ STP_HOT_INLINE void tri_rows_direct(const frame *fr, paint style, stp_fix t, stp
     }
 }
 
-/* The depth-tested rows of triangle v (df[at]) from walk w's row, whose
+/* The depth-tested rows of triangle v from walk w's row, whose
  * span p1..p2 is the first with pixels: its plane made (or taken from the
  * kept setups) here; rows straight to the band (tri_row) when
  * paint_setup says they can go. */
-STP_HOT_INLINE void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint style, stp_fix t,
+STP_HOT_INLINE void tri_draw_z(frame *fr, const stp_instr *v, paint style, stp_fix t,
                                uint32_t ordinal, stp_tri_walk *w, uint32_t p1, uint32_t p2, int pages)
 {
     depth_plane pl;
@@ -1362,7 +1362,7 @@ STP_HOT_INLINE void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint
     if (!made)
         return; /* edge-on: no area on screen */
     tri_depth_start(&td, &pl, v, w->bot->y - w->top->y, stp_tri_walk_yc(w), made);
-    if (!(TRIANGLE_PAINT_READY(fr, style, t) || paint_setup(fr, at, style, 0, t))) {
+    if (!(TRIANGLE_PAINT_READY(fr, style, t) || paint_setup(fr, v, style, 0, t))) {
         for (;;) {
             tri_span_z(fr, (uint32_t)w->row, p1, p2, style, t, 0, &td, &pl, 0);
             do {
@@ -1386,10 +1386,10 @@ STP_HOT_INLINE void tri_draw_z(frame *fr, uint32_t at, const stp_instr *v, paint
 #else
 #define PAGES_COPY static
 #endif
-PAGES_COPY void tri_draw_z_pages(frame *fr, uint32_t at, const stp_instr *v, paint style, stp_fix t,
+PAGES_COPY void tri_draw_z_pages(frame *fr, const stp_instr *v, paint style, stp_fix t,
                                    uint32_t ordinal, stp_tri_walk w, uint32_t p1, uint32_t p2)
 {
-    tri_draw_z(fr, at, v, style, t, ordinal, &w, p1, p2, 1);
+    tri_draw_z(fr, v, style, t, ordinal, &w, p1, p2, 1);
 }
 #endif
 
@@ -1412,14 +1412,15 @@ STP_HOT_INLINE void tri_setup_mark(frame *fr, int use_z, uint32_t ordinal, const
 #endif
 }
 
-/* A flat triangle (df[at], vertices v) in the current band: the general
- * path's fill rule and depths, set up for what the triangle needs.  Its
- * vertices sorted by y (top, mid, bottom), each row centre is crossed by
- * the long edge top-bottom and by top-mid above mid, mid-bottom from mid
- * down; the two crossings bound the row's span.  Nothing is set up before
- * the first span with pixels: a small triangle often covers no pixel
- * centre.  Coordinates are >= 0 (project()), so are the crossings. */
-static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint style, int use_z, stp_fix t,
+/* A flat triangle (vertices v, in the display file) in the current band:
+ * the general path's fill rule and depths, set up for what the triangle
+ * needs.  Its vertices sorted by y (top, mid, bottom), each row centre is
+ * crossed by the long edge top-bottom and by top-mid above mid,
+ * mid-bottom from mid down; the two crossings bound the row's span.
+ * Nothing is set up before the first span with pixels: a small triangle
+ * often covers no pixel centre.  Coordinates are >= 0 (project()), so are
+ * the crossings. */
+static void draw_triangle(frame *fr, const stp_instr *v, paint style, int use_z, stp_fix t,
                           uint32_t ordinal)
 {
     stp_tri_walk w;
@@ -1433,16 +1434,16 @@ static void draw_triangle(frame *fr, uint32_t at, const stp_instr *v, paint styl
 #if STP_WITH_ZBUFFER
     if (use_z) {
         if (STP_WITH_PAGES && fr->page_one)
-            tri_draw_z_pages(fr, at, v, style, t, ordinal, w, p1, p2);
+            tri_draw_z_pages(fr, v, style, t, ordinal, w, p1, p2);
         else
-            tri_draw_z(fr, at, v, style, t, ordinal, &w, p1, p2, 0);
+            tri_draw_z(fr, v, style, t, ordinal, &w, p1, p2, 0);
         return;
     }
 #else
     (void)use_z;
     (void)ordinal;
 #endif
-    (void)paint_setup(fr, at, style, 0, t);
+    (void)paint_setup(fr, v, style, 0, t);
     for (;;) {
         paint_run(fr, (uint32_t)w.row, p1, p2, style, 0, 0, 0, t);
         do {
@@ -1585,7 +1586,7 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
 #endif
 #if STP_WITH_TRIANGLE_PATH
     if (n == 3 && !smooth && TRIANGLE_PATH(fr) && STP_TRIANGLE_NARROW(v)) {
-        draw_triangle(fr, at, v, style, use_z, t, ordinal); /* the painter's order comes here */
+        draw_triangle(fr, v, style, use_z, t, ordinal); /* the painter's order comes here */
         return;
     }
 #endif
@@ -1598,7 +1599,7 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
 #else
     (void)ordinal;
 #endif
-    direct = paint_setup(fr, at, style, smooth, t);
+    direct = paint_setup(fr, v, style, smooth, t);
     ne = polygon_edges(r, v, n, smooth);
     /* rows whose centres lie in [ymin, ymax) and in the band */
     y_first = (uint32_t)((ymin < band_top ? band_top : ymin) >> SUB);
@@ -1709,14 +1710,14 @@ STP_HOT_INLINE int triangle_off_band(const stp_instr *v, const stp_band_rows *ro
 /* replay's triangle record v (df[k]) with several bands: 1 when skipped
  * off the band or drawn by draw_triangle, 0 when it is draw_polygon's
  * (smooth, or too wide). */
-STP_HOT_INLINE int replay_banded_triangle(frame *fr, uint32_t k, const stp_instr *v, paint style, int use_z,
+STP_HOT_INLINE int replay_banded_triangle(frame *fr, const stp_instr *v, paint style, int use_z,
                                           stp_fix t, uint32_t ordinal)
 {
     if (triangle_off_band(v, &fr->rows))
         return 1;
     if (polygon_smooth(v) || !STP_TRIANGLE_NARROW(v))
         return 0;
-    draw_triangle(fr, k, v, style, use_z, t, ordinal);
+    draw_triangle(fr, v, style, use_z, t, ordinal);
     return 1;
 }
 #endif
@@ -1751,7 +1752,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
              * 4 400 Cortex-M0+ cycles a torus frame), its advance one
              * constant */
             while (!STP_UNLIKELY(op != 3 || tri != 1 || polygon_smooth(in) || !STP_TRIANGLE_NARROW(in))) {
-                draw_triangle(fr, k, in, style, use_z, t, ordinal);
+                draw_triangle(fr, in, style, use_z, t, ordinal);
                 ordinal++;
                 k += 3;
                 in += 3;
@@ -1762,7 +1763,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
             if (k >= end)
                 break;
 #if !STP_LEAN_CODE
-            if (op == 3 && tri == 2 && replay_banded_triangle(fr, k, in, style, use_z, t, ordinal)) {
+            if (op == 3 && tri == 2 && replay_banded_triangle(fr, in, style, use_z, t, ordinal)) {
                 ordinal++;
                 k += 2;
                 in += 2;
