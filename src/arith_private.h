@@ -244,11 +244,11 @@ static inline uint64_t stp_umul32x32(uint32_t a, uint32_t b)
      * on the 8 x 8 MUL) is smaller and faster, and exact the same */
     return (uint64_t)a * b;
 #else
-    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t al = stp_lo16(a), ah = a >> 16, bl = stp_lo16(b), bh = b >> 16;
     uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
-    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 2^16 */
+    uint32_t mid = (ll >> 16) + stp_lo16(lh) + stp_lo16(hl); /* < 3 2^16 */
     return ((uint64_t)(hh + (lh >> 16) + (hl >> 16) + (mid >> 16)) << 32) |
-           (uint64_t)((mid << 16) | (ll & 0xFFFFu));
+           (uint64_t)((mid << 16) | stp_lo16(ll));
 #endif
 }
 
@@ -274,9 +274,9 @@ static inline uint32_t stp_umulhi32x32(uint32_t a, uint32_t b)
 #else
     /* the middle products added one at a time, each sum below 2^32
      * (2^16 + (2^16 - 1)^2): fewer values live at once */
-    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t al = stp_lo16(a), ah = a >> 16, bl = stp_lo16(b), bh = b >> 16;
     uint32_t t = ((al * bl) >> 16) + al * bh;
-    uint32_t u = (t & 0xFFFFu) + ah * bl;
+    uint32_t u = stp_lo16(t) + ah * bl;
     return ah * bh + (t >> 16) + (u >> 16);
 #endif
 }

@@ -57,7 +57,7 @@ static const uint16_t RECIP_SEED[128] STP_TABLE = {
 
 uint32_t stp_recip32_estimate(uint32_t d)
 {
-    uint32_t y0, y1, u, dh = d >> 16, dl = d & 0xFFFFu, at, corr, v;
+    uint32_t y0, y1, u, dh = d >> 16, dl = stp_lo16(d), at, corr, v;
     uint64_t p;
     if (d < 0x80000000u)
         return 0;
@@ -144,7 +144,7 @@ uint32_t stp_recip_u32(uint32_t d)
         t -= 1;
     }
     y0 = STP_TABLE_U16(&RECIP_SEED[(dn >> 24) & 127u]);
-    u = (int32_t)(0x40000000u - 256u) - (int32_t)(((dn >> 16) * y0) >> 1) - (int32_t)(((dn & 0xFFFFu) * y0) >> 17);
+    u = (int32_t)(0x40000000u - 256u) - (int32_t)(((dn >> 16) * y0) >> 1) - (int32_t)((stp_lo16(dn) * y0) >> 17);
     c1 = stp_asr32((int32_t)y0 * stp_asr32(u, 7), 7);
     y = (y0 << 16) + (uint32_t)(c1 + stp_asr32(stp_asr32(c1, 8) * stp_asr32(u, 7), 15));
     q = y >> t;
