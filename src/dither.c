@@ -7,26 +7,10 @@
 
 static void cell_clear(stp_cell *cell)
 {
-    int i = 0;
+    int i;
     cell->kind = STP_CELL_THRESHOLD;
     cell->width = cell->height = 1;
-#if !defined(__OPTIMIZE_SIZE__) && UINTPTR_MAX <= 0xFFFFFFFFu
-    /* eight a step (the count is a multiple of 8) on 32-bit targets, where
-     * the compiler leaves the plain loop a loop (64-bit hosts make it
-     * memset): a renderer without a cell makes the default one every
-     * frame */
-    for (; i < STP_CELL_MAX * STP_CELL_MAX; i += 8) {
-        cell->thresholds[i] = 0;
-        cell->thresholds[i + 1] = 0;
-        cell->thresholds[i + 2] = 0;
-        cell->thresholds[i + 3] = 0;
-        cell->thresholds[i + 4] = 0;
-        cell->thresholds[i + 5] = 0;
-        cell->thresholds[i + 6] = 0;
-        cell->thresholds[i + 7] = 0;
-    }
-#endif
-    for (; i < STP_CELL_MAX * STP_CELL_MAX; i++)
+    for (i = 0; i < STP_CELL_MAX * STP_CELL_MAX; i++)
         cell->thresholds[i] = 0;
     for (i = 0; i < 5; i++)
         cell->patterns[i] = 0;
@@ -120,6 +104,30 @@ int stp_cell_bayer_spaced(stp_cell *cell, int n, stp_spacing spacing)
 int stp_cell_bayer(stp_cell *cell, int n)
 {
     return stp_cell_bayer_spaced(cell, n, STP_SPACING_LINEAR);
+}
+
+#if !defined(__AVR__)
+/* stp_cell_bayer(cell, 4)'s thresholds (linear spacing: 15 r + 14 for
+ * rank r), row-major; test_dither checks them equal. */
+static const uint8_t bayer4_linear[16] = {14, 134, 44, 164, 194, 74, 224, 104, 59, 179, 29, 149, 239, 119, 209, 89};
+#endif
+
+void stp_cell_default(stp_cell *cell)
+{
+#if defined(__AVR__)
+    /* there a const table is in program memory, which the cell's plain
+     * reads do not see: the cell made as stp_cell_bayer makes it */
+    (void)stp_cell_bayer(cell, 4);
+#else
+    /* a mask cell on the constant table: nothing made, the 256 threshold
+     * bytes left unwritten (stp_cell_table reads the mask) */
+    int i;
+    cell->kind = STP_CELL_THRESHOLD;
+    cell->width = cell->height = 4;
+    for (i = 0; i < 5; i++)
+        cell->patterns[i] = 0;
+    cell->mask = bayer4_linear;
+#endif
 }
 
 void stp_cell_seed2x2(stp_cell *cell)

@@ -2153,7 +2153,7 @@ static int render_cell_and_background(frame *fr, const stp_port *port, const stp
         fr->cell = output->cell;
     } else {
 #if STP_WITH_DEFAULT_CELL
-        (void)stp_cell_bayer(&fr->default_cell, 4);
+        stp_cell_default(&fr->default_cell);
         fr->cell = &fr->default_cell;
 #else
         return STP_ERR_UNSUPPORTED;
@@ -2225,15 +2225,39 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
 #endif
 }
 
-/* The clearing loops below eight stores a step on 32-bit targets (a
- * Cortex-M0+ spends as much on a loop's count, compare and branch as on
- * two stores, and the compiler leaves a counted loop a loop there); the
- * plain loop elsewhere: 64-bit hosts make it memset, builds for size keep
- * it small. */
-#if !defined(__OPTIMIZE_SIZE__) && UINTPTR_MAX <= 0xFFFFFFFFu
+/* The clearing loops below store a word at a time, four a step, on
+ * 32-bit targets built for speed (a Cortex-M0+ spends as much on a loop's
+ * count, compare and branch as on two stores, a byte store costs what a
+ * word store does, and the compiler leaves a counted loop a loop there);
+ * the plain loop elsewhere: 64-bit hosts make it memset, builds for size
+ * keep it small.  The words are written through a may_alias type (GCC's,
+ * the only compilers of these builds; others keep the plain loop), from
+ * the first word boundary: the band and the Z buffer are the caller's
+ * bytes and entries, of any alignment. */
+#if !defined(__OPTIMIZE_SIZE__) && UINTPTR_MAX <= 0xFFFFFFFFu && UINTPTR_MAX > 0xFFFFu && defined(__GNUC__)
 #define STORES_UNROLLED 1
+typedef uint32_t __attribute__((__may_alias__)) clear_word;
 #else
 #define STORES_UNROLLED 0
+#endif
+
+#if STORES_UNROLLED
+/* count bytes from p set to v (v repeated in word w): the bytes before a
+ * word boundary, then 16 a step as four words; returns the bytes done. */
+static size_t fill_words(uint8_t *p, size_t count, uint8_t v, uint32_t w)
+{
+    size_t i = 0;
+    for (; i < count && ((uintptr_t)(p + i) & 3u) != 0; i++)
+        p[i] = v;
+    for (; count - i >= 16u; i += 16u) {
+        clear_word *q = (clear_word *)(void *)(p + i);
+        q[0] = w;
+        q[1] = w;
+        q[2] = w;
+        q[3] = w;
+    }
+    return i;
+}
 #endif
 
 /* count bytes from p set to v. */
@@ -2241,37 +2265,21 @@ static void fill_bytes(uint8_t *p, size_t count, uint8_t v)
 {
     size_t i = 0;
 #if STORES_UNROLLED
-    for (; count - i >= 8u; i += 8u) {
-        p[i] = v;
-        p[i + 1u] = v;
-        p[i + 2u] = v;
-        p[i + 3u] = v;
-        p[i + 4u] = v;
-        p[i + 5u] = v;
-        p[i + 6u] = v;
-        p[i + 7u] = v;
-    }
+    i = fill_words(p, count, v, (uint32_t)v * 0x01010101u);
 #endif
     for (; i < count; i++)
         p[i] = v;
 }
 
 #if STP_WITH_ZBUFFER
-/* count Z-buffer entries from z set to 0, as fill_bytes. */
+/* count Z-buffer entries from z set to 0, as fill_bytes (an odd address
+ * cannot hold a uint16_t: the bytes before a word boundary are whole
+ * entries). */
 static void zero_entries(uint16_t *z, size_t count)
 {
     size_t i = 0;
 #if STORES_UNROLLED
-    for (; count - i >= 8u; i += 8u) {
-        z[i] = 0;
-        z[i + 1u] = 0;
-        z[i + 2u] = 0;
-        z[i + 3u] = 0;
-        z[i + 4u] = 0;
-        z[i + 5u] = 0;
-        z[i + 6u] = 0;
-        z[i + 7u] = 0;
-    }
+    i = fill_words((uint8_t *)(void *)z, 2u * count, 0, 0) / 2u;
 #endif
     for (; i < count; i++)
         z[i] = 0;

@@ -23,6 +23,7 @@
 #include "output_private.h"
 #include "frame_memory_private.h"
 #include "diffuse_private.h"
+#include "dither_private.h" /* stp_cell_default */
 #include "view_private.h"
 
 #if STP_WITH_RAYTRACE
@@ -1653,7 +1654,7 @@ int stp_rt_render(stp_raytracer *rt, stp_port *port, const stp_output *output, u
     if (output->cell) {
         cell = output->cell;
     } else {
-        (void)stp_cell_bayer(&default_cell, 4);
+        stp_cell_default(&default_cell);
         cell = &default_cell;
     }
     for (c = 0; c < 3; c++)

@@ -15,6 +15,7 @@
 #include <cmocka.h>
 
 #include "stipple/dither.h"
+#include "dither_private.h" /* stp_cell_default, stp_halftone_pattern_byte */
 
 /* ImageMagick's ordered-dither maps o2x2, o4x4, o8x8 (thresholds.xml,
  * "levels" with divisors 5, 17, 65), row-major, y down.  Value v is the
@@ -120,6 +121,32 @@ static void test_bayer_rejects_other_sizes(void **state)
     }
     assert_memory_equal(&cell, &before, sizeof cell);
     assert_int_equal(stp_cell_bayer(NULL, 4), -1);
+}
+
+/* The renderer's default cell (a mask on a constant table on 32-bit
+ * targets) against the cell stp_cell_bayer(4) makes: the same thresholds,
+ * every pixel and pattern byte the same at every intensity. */
+static void test_default_cell_is_bayer4(void **state)
+{
+    stp_cell made, fixed;
+    uint32_t x, y;
+    int v;
+    (void)state;
+    assert_int_equal(stp_cell_bayer(&made, 4), 0);
+    memset(&fixed, 0x5A, sizeof fixed);
+    stp_cell_default(&fixed);
+    assert_int_equal(fixed.kind, made.kind);
+    assert_int_equal(fixed.width, 4);
+    assert_int_equal(fixed.height, 4);
+    assert_memory_equal(fixed.patterns, made.patterns, sizeof made.patterns);
+    assert_memory_equal(stp_cell_table(&fixed), stp_cell_table(&made), 16);
+    for (v = 0; v < 256; v++)
+        for (y = 0; y < 8; y++) {
+            assert_int_equal(stp_halftone_pattern_byte(&fixed, y, (uint8_t)v),
+                             stp_halftone_pattern_byte(&made, y, (uint8_t)v));
+            for (x = 0; x < 8; x++)
+                assert_int_equal(stp_cell_on(&fixed, x, y, (uint8_t)v), stp_cell_on(&made, x, y, (uint8_t)v));
+        }
 }
 
 static void test_seed_2x2_cell_values(void **state)
@@ -428,6 +455,7 @@ int main(void)
         cmocka_unit_test(test_bayer_thresholds_match_imagemagick_ranks),
         cmocka_unit_test(test_bayer_on_matches_imagemagick_comparison),
         cmocka_unit_test(test_bayer_rejects_other_sizes),
+        cmocka_unit_test(test_default_cell_is_bayer4),
         cmocka_unit_test(test_seed_2x2_cell_values),
         cmocka_unit_test(test_spacings_for_2x2_equal_documented_numbers),
         cmocka_unit_test(test_spacings_for_4x4_and_8x8_follow_formula),
