@@ -175,6 +175,12 @@ static inline uint32_t stp_lo16(uint32_t v)
 #endif
 }
 
+/* v >= 2^k for a 32-bit unsigned v and constant k: a shift's test on
+ * cores with a 32-bit multiply (ARMv6-M: one instruction fewer than
+ * loading the constant), the comparison on 8-bit cores (a 32-bit shift
+ * is a loop or four byte moves there). */
+#define STP_AT_LEAST_POW2(v, k) (STP_HAVE_MUL32 ? ((uint32_t)(v) >> (k)) != 0 : (uint32_t)(v) >= ((uint32_t)1 << (k)))
+
 /* A few loads chosen by an index, as in a loop over a vector's components:
  * inlined in every build (once the loop is unrolled the index is a
  * constant and the choice disappears) but STP_LEAN_CODE's calls. */

@@ -224,7 +224,7 @@ STP_HOT_INLINE stp_sf16 sf_recip_of(stp_sf16 a, uint32_t y)
     stp_sf16 r;
     r.m = y;
     r.e = 31 - a.e;
-    if (HOT_UNLIKELY(r.m >> 16 != 0)) { /* a.m = 2^15 exactly */
+    if (HOT_UNLIKELY(STP_AT_LEAST_POW2(r.m, 16))) { /* a.m = 2^15 exactly */
         r.m >>= 1;
         r.e--;
     }
@@ -298,11 +298,11 @@ STP_HOT_INLINE stp_sf16 recip_cos(uint32_t c, uint32_t *q26)
     stp_sf16 a;
     int n, sh;
     a.e = 30;
-    while (HOT_UNLIKELY(c >> 26 == 0)) {
+    while (HOT_UNLIKELY(!STP_AT_LEAST_POW2(c, 26))) {
         c <<= 4;
         a.e += 4;
     }
-    n = (HOT_UNLIKELY(c >> 30 != 0) ? 31 : bit_length_26(c)) - 16; /* 11 .. 15 */
+    n = (HOT_UNLIKELY(STP_AT_LEAST_POW2(c, 30)) ? 31 : bit_length_26(c)) - 16; /* 11 .. 15 */
     a.m = c >> n;
     a.e -= n;
     a = sf_recip_hot(a);
@@ -343,9 +343,7 @@ STP_HOT_INLINE stp_sf16 sf_add_in(stp_sf16 a, stp_sf16 b, int nz)
         sum = a.m + sf_aligned(b, b.e - a.e);
         r.e = a.e;
     }
-    /* sum >= 2^16: a shift's test where it is one instruction fewer
-     * (ARMv6-M), the comparison on 8-bit cores (fewer bytes on AVR) */
-    if (STP_HAVE_MUL32 ? sum >> 16 != 0 : sum > 0xFFFFu) {
+    if (STP_AT_LEAST_POW2(sum, 16)) {
         r.m = sum >> 1;
         r.e--;
     } else {
@@ -571,7 +569,7 @@ static stp_sf16 sf_from_r(uint32_t r, int e)
 STP_HOT_INLINE uint32_t rsqrt_any(uint32_t q, int *j)
 {
     /* the common cases (|L + E|^2 >= 1/4) without a search */
-    *j = q >> 30 != 0 ? 0 : (q >> 28 != 0 ? 1 : (32 - stp_bit_length32(q)) >> 1);
+    *j = STP_AT_LEAST_POW2(q, 30) ? 0 : (STP_AT_LEAST_POW2(q, 28) ? 1 : (32 - stp_bit_length32(q)) >> 1);
     return rsqrt_norm(q << (2 * *j));
 }
 
@@ -670,7 +668,7 @@ static uint32_t gloss_q30(const stp_shade_fast *s, uint32_t omx)
     t = ((uint32_t)1 << 16) + x;
     n = bit_length_near(t >> 16, 0); /* 1 .. 16: one halving fewer */
     y = recip16_hot(t >> n);
-    if (y >> 16 != 0) /* m = 2^15: D = 2^(32 - 2n) 2^-30 */
+    if (STP_AT_LEAST_POW2(y, 16)) /* m = 2^15: D = 2^(32 - 2n) 2^-30 */
         return n >= 16 ? 0u : (uint32_t)1 << (32 - 2 * n);
     return n >= 16 ? 0u : (y * y) >> (2 * n);
 }
@@ -727,7 +725,7 @@ static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t 
         return 0;
     if (nh > (uint32_t)Q30)
         nh = (uint32_t)Q30;
-    if (eh >> 28 != 0 && j <= 1) /* eh >= FRESNEL_C0; j <= 1: |L + E| >= 1/2 */
+    if (STP_AT_LEAST_POW2(eh, 28) && j <= 1) /* eh >= FRESNEL_C0; j <= 1: |L + E| >= 1/2 */
         return share_times(specular_fixed(s, n_dot_l, n_dot_e, nh, r, j, eh, e_dot_l, inv_ne, inv_ne_q26), 27, wk);
     if (n_dot_e < s->fast_min_cos && s->exact)
         return -1; /* a light nearly opposite a grazing eye: GRAZE_EXACT */
@@ -1431,7 +1429,7 @@ STP_HOT_INLINE int32_t normal_deviation(const int16_t normal[3])
 #if !defined(__OPTIMIZE_SIZE__)
     /* one test (a shift's) for the common case, nn within 2^17 of 2^28
      * (2^28 + 2^17 itself on either branch) */
-    if (HOT_UNLIKELY((nn - 0x0FFE0000u) >> 18 != 0))
+    if (HOT_UNLIKELY(STP_AT_LEAST_POW2(nn - 0x0FFE0000u, 18)))
         return nn >= 0x10020000u ? 0x20000 : -0x20000;
     return (int32_t)(nn - 0x10000000u);
 #else
