@@ -1042,12 +1042,6 @@ STP_NOINLINE int32_t wide_light_at_point(const stp_shade_fast *s, const wide_eye
 #endif
 }
 
-/* stp_shade_fast_face's route on a host (wide_route, set by prepare) */
-#define WIDE_NARROW 0  /* the 32-bit path: a struct filled by hand, or F != 16 */
-#define WIDE_AMBIENT 1 /* no light: every face the ambient shade */
-#define WIDE_EXACT 2   /* exact_always with a light: every face exact */
-#define WIDE_FAST 3    /* face_wide, with at least one light */
-
 static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const stp_vec3 *point)
 {
     int64_t ve[3], dot_e, p[3];
@@ -1078,7 +1072,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
         we.inv_ne = 0;
     }
     j = 0;
-    do { /* s->count >= 1 (WIDE_FAST) */
+    do { /* s->count >= 1 (STP_SHADE_WIDE_FAST) */
         wide_dir l;
         int32_t share;
         if (wide_make(&l, s->light[j].x - p[0], s->light[j].y - p[1], s->light[j].z - p[2])) {
@@ -1163,10 +1157,10 @@ static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const 
     /* the wide path's formats are written for F = 16 (its powers and
      * attenuation scale by 2^-16); other precisions take the 32-bit path,
      * tested at F = 12, 16 and 20 */
-    s->wide_route = STP_FIX_FRAC_BITS != 16 ? WIDE_NARROW : (s->count == 0 ? WIDE_AMBIENT : WIDE_FAST);
+    s->wide_route = STP_FIX_FRAC_BITS != 16 ? STP_SHADE_WIDE_NARROW : (s->count == 0 ? STP_SHADE_WIDE_AMBIENT : STP_SHADE_WIDE_FAST);
 #if STP_WITH_SPECULAR
-    if (s->wide_route == WIDE_FAST && s->exact_always)
-        s->wide_route = WIDE_EXACT;
+    if (s->wide_route == STP_SHADE_WIDE_FAST && s->exact_always)
+        s->wide_route = STP_SHADE_WIDE_EXACT;
     wide_prepare_specular(s, material);
 #endif
     s->wide_c = lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u;
@@ -1737,14 +1731,14 @@ stp_fix stp_shade_fast_face(const stp_shade_fast *s, const int16_t normal[3], st
     if (FACE_COMPACT(s))
         return face_narrow(s, normal, point); /* the compact route, on the 32-bit path's fields */
 #endif
-    if (s->wide_route == WIDE_FAST)
+    if (s->wide_route == STP_SHADE_WIDE_FAST)
         return face_wide(s, normal, &point); /* the host path */
-    if (s->wide_route == WIDE_NARROW)
+    if (s->wide_route == STP_SHADE_WIDE_NARROW)
         return face_narrow(s, normal, point);
 #if STP_WITH_SPECULAR
-    if (s->wide_route == WIDE_EXACT)
+    if (s->wide_route == STP_SHADE_WIDE_EXACT)
         return s->exact(s, normal, point);
 #endif
-    return s->ambient_shade; /* WIDE_AMBIENT: no light */
+    return s->ambient_shade; /* STP_SHADE_WIDE_AMBIENT: no light */
 }
 #endif

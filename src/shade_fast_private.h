@@ -46,6 +46,12 @@ typedef struct stp_shade_fast_dir {
 #define STP_SHADE_FAST_FRESNEL_NODES 49
 
 /* Per-call constants of stp_shade_fast_face. */
+/* stp_shade_fast_face's route on a host (wide_route, set by the prepare) */
+#define STP_SHADE_WIDE_NARROW 0  /* the 32-bit path: a struct filled by hand, or F != 16 */
+#define STP_SHADE_WIDE_AMBIENT 1 /* no light: every face the ambient shade */
+#define STP_SHADE_WIDE_EXACT 2   /* exact_always with a light: every face exact */
+#define STP_SHADE_WIDE_FAST 3    /* face_wide, with at least one light */
+
 typedef struct stp_shade_fast {
     /* The fields each face reads first, so that a Cortex-M0+ reaches each
      * with one load (its byte loads take offsets below 32, its word loads
@@ -105,11 +111,10 @@ typedef struct stp_shade_fast {
 #if STP_WIDE_ARITH /* the 64-bit host path (shade_fast.c "wide"); parallel
                       projection there keeps the direction towards the eye
                       (not 0) in eye */
-    uint8_t wide_route;  /* set by stp_shade_fast_prepare (shade_fast.c
-                            WIDE_*: the wide fields below hold unless
-                            WIDE_NARROW); 0 (WIDE_NARROW): a caller that
-                            filled the 32-bit fields itself gets the 32-bit
-                            path */
+    uint8_t wide_route;  /* STP_SHADE_WIDE_*, set by stp_shade_fast_prepare:
+                            the wide fields below hold unless NARROW; 0
+                            (NARROW): a caller that filled the 32-bit
+                            fields itself gets the 32-bit path */
     uint32_t wide_c;     /* C in raw stp_fix units, >= 1 */
     uint32_t wide_refl;  /* |R| in raw units */
     /* BRIGHT P_j as m 2^-e = b p 2^-16 (b, p raw), m in [2^23, 2^24) or 0,

@@ -126,6 +126,15 @@ static void prepare_mode(stp_shade_fast *f, const acc_case *c, int k)
                                                    : (n * n) << (30 - 2 * STP_FIX_FRAC_BITS));
         f->refraction_ge_1 = 0;
     }
+#if STP_WIDE_ARITH
+    /* the host's route is the prepare's choice (wide_route): chosen again
+     * for the flags the mode changed; the 64-bit route has no fast or
+     * Fresnel-formula variant, so those modes take the 32-bit route there */
+    if (k == M_EXACT && f->exact_always && f->wide_route == STP_SHADE_WIDE_FAST)
+        f->wide_route = STP_SHADE_WIDE_EXACT;
+    if ((k == M_FAST || k == M_FFORMULA) && f->wide_route != STP_SHADE_WIDE_AMBIENT)
+        f->wide_route = STP_SHADE_WIDE_NARROW;
+#endif
 #endif
 }
 

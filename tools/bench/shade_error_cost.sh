@@ -171,7 +171,8 @@ Rows (tools/bench/shade_error_cost.c):
 - **-fresnel-table, -fresnel-formula**: F16 on the cases with 1 <= n < 2 and a highlight, Fresnel's
   F from the prepared table or from its formula at each face (the formula in the fast route's
   32-bit formats needs n^2 < 4; the face shader has no switch for it, the bench clears the
-  table's flag).
+  table's flag).  The host's 64-bit route has neither the fast-everywhere nor the formula
+  variant: on the host -fast and -fresnel-formula run the 32-bit route (their host column).
 - **-q14normal**: F16 judged against the reference for a 15-bit normal of which the shader's
   Q1.14 normal is the rounding (each component off by 0 or half a step); **-n15normal**:
   `stp_shade_point` given that 15-bit normal (an `stp_fix` normal, as the polygon path has).
