@@ -550,18 +550,15 @@ STP_HOT_INLINE int enter_face(mesh_context *c, const uint16_t *k, const int16_t 
     }
     stp_render_view_normal(c->frame, n, side, nv);
 #if TIME_FIRST
-    if (c->inside) {
-        centre.x = stp_render_average3(1, s[0]->view.x, s[1]->view.x, s[2]->view.x);
-        centre.y = stp_render_average3(1, s[0]->view.y, s[1]->view.y, s[2]->view.y);
-        centre.z = stp_render_average3(1, s[0]->view.z, s[1]->view.z, s[2]->view.z);
-    } else {
+    if (!c->inside)
         centre = wide_centre(s[0], s[1], s[2]);
-    }
-#else
-    centre.x = stp_render_average3(c->inside, s[0]->view.x, s[1]->view.x, s[2]->view.x);
-    centre.y = stp_render_average3(c->inside, s[0]->view.y, s[1]->view.y, s[2]->view.y);
-    centre.z = stp_render_average3(c->inside, s[0]->view.z, s[1]->view.z, s[2]->view.z);
+    else
 #endif
+    {
+        centre.x = stp_render_average3(c->inside, s[0]->view.x, s[1]->view.x, s[2]->view.x);
+        centre.y = stp_render_average3(c->inside, s[0]->view.y, s[1]->view.y, s[2]->view.y);
+        centre.z = stp_render_average3(c->inside, s[0]->view.z, s[1]->view.z, s[2]->view.z);
+    }
     if (c->shade) {
         c->last_shade = stp_render_face_shade(c->shade, nv, centre, side);
         style = stp_intensity_index_steps(c->last_shade, c->steps);
