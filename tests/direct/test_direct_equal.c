@@ -178,7 +178,7 @@ static int compare(work *w, uint16_t yaw, uint16_t pitch, stp_vec3 shift)
          * vertices only) */
         int moved = 0, view_moved = 0;
         for (i = 0; i < w->bench.mesh.vertex_count; i++)
-            if ((w->scratch[i].state & 64) != 0) {
+            if ((w->scratch[i].state & (64 | 128)) == 0) { /* projected (mesh.c: state 0) */
                 moved += w->pts[i].dx != w->scratch[i].dx || w->pts[i].dy != w->scratch[i].dy;
                 view_moved += w->pts[i].x != w->scratch[i].view.x || w->pts[i].y != w->scratch[i].view.y ||
                               w->pts[i].z != w->scratch[i].view.z;
