@@ -815,12 +815,12 @@ STP_HOT_INLINE uint64_t wide_sqrt60(uint64_t q)
  * when every |v_i| < 2^30, else v 2^-2 (s = 2), so that |v|^2 < 3 2^60
  * and the dot product of two is below 3 2^60 in magnitude; len = |v| 2^j
  * in [2^30, 2^31) with j in [0, 30] (from |v|^2 4^j in [2^60, 2^62): one
- * count of leading zeros, no scaling of the components); k = j - s: the
- * raw length is len 2^-k. */
+ * count of leading zeros, no scaling of the components); the raw length
+ * is len 2^-(j - s) (s kept, not j - s: one scalar store each). */
 typedef struct wide_dir {
     int64_t v[3];
     uint64_t len;
-    int j, k;
+    int j, s;
 } wide_dir;
 
 /* wide_make's common part: v already scaled by 2^-s */
@@ -833,11 +833,11 @@ STP_HOT_INLINE int wide_make_scaled(wide_dir *d, int64_t v0, int64_t v1, int64_t
     q = (uint64_t)(v0 * v0 + v1 * v1 + v2 * v2); /* < 3 2^60 */
     if (q == 0) {
         d->len = 0;
-        d->j = d->k = 0;
+        d->j = d->s = 0;
         return 0;
     }
     d->j = (62 - (64 - __builtin_clzll(q))) >> 1; /* bits <= 62 */
-    d->k = d->j - s;
+    d->s = s;
     d->len = wide_sqrt60(q << (2 * d->j));
     return 1;
 }
@@ -956,7 +956,7 @@ STP_HOT_INLINE int64_t wide_eye_cos(const int16_t normal[3], const int64_t ve[3]
 {
     (void)wide_make(e, ve[0], ve[1], ve[2]); /* not 0: N.E > 0 */
     /* the exact N.E unless e was shifted */
-    return wide_cos_dot(e->k == e->j ? dot_e : normal[0] * e->v[0] + normal[1] * e->v[1] + normal[2] * e->v[2], e,
+    return wide_cos_dot(e->s == 0 ? dot_e : normal[0] * e->v[0] + normal[1] * e->v[1] + normal[2] * e->v[2], e,
                         nlen28);
 }
 #endif
@@ -1077,14 +1077,14 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
         int32_t share;
         if (wide_make(&l, s->light[j].x - p[0], s->light[j].y - p[1], s->light[j].z - p[2])) {
             int64_t nl = wide_cos_dot(normal[0] * l.v[0] + normal[1] * l.v[1] + normal[2] * l.v[2], &l, nlen28), el = 0;
-            int c = l.k + 2;
+            int c = l.j - l.s + 2;
             uint64_t w;
             if (nl <= 0)
                 continue;
-            /* C + U = cu 2^-c in raw units with c = k + 2 >= 0 (k >= -2), cu
-             * >= 4 len >= 2^32: C < 2^31 times 2^(k + 2) <= 2^32, plus 4 len
-             * < 2^33 (wide_light_w's t takes the 2^2 back, exactly) */
-            w = wide_light_w(s, j, ((uint64_t)s->wide_c << (l.k + 2)) + (l.len << 2), &c);
+            /* C + U = cu 2^-c in raw units with c = k + 2 >= 0 (k = j - s >=
+             * -2), cu >= 4 len >= 2^32: C < 2^31 times 2^(k + 2) <= 2^32, plus
+             * 4 len < 2^33 (wide_light_w's t takes the 2^2 back, exactly) */
+            w = wide_light_w(s, j, ((uint64_t)s->wide_c << c) + (l.len << 2), &c);
 #if STP_WITH_SPECULAR
             if (s->specular) {
                 el = wide_el(&we, &l);
