@@ -1010,13 +1010,10 @@ STP_HOT_INLINE uint64_t wide_light_w(const stp_shade_fast *s, int j, uint64_t cu
 STP_HOT_INLINE int32_t wide_light_share(const stp_shade_fast *s, const wide_eye *we, uint64_t w, int64_t nl, int c,
                                         int64_t el)
 {
-    int32_t share;
     /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: nl 2^-30 |R| 2^-16 w 2^(c - e -
      * 36) 2^26 = (w nl 2^-30) |R| 2^(c - e - 26); w nl 2^-30 < 2^32, times
-     * |R| < 2^31 */
-    share = wide_share(((w * (uint64_t)nl) >> 30) * s->wide_refl, c - 26);
-    if (s->refl_negative)
-        share = -share;
+     * |R| < 2^31; signed as R by a product (no test) */
+    int32_t share = wide_share(((w * (uint64_t)nl) >> 30) * s->wide_refl, c - 26) * s->wide_refl_sign;
 #if STP_WITH_SPECULAR
     if (s->specular)
         share += wide_light_specular(s, we, el, nl, w, c);
@@ -1165,6 +1162,7 @@ static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const 
 #endif
     s->wide_c = lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u;
     s->wide_refl = refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl;
+    s->wide_refl_sign = refl < 0 ? -1 : 1;
     wide_prepare_powers(s, lighting);
 }
 #endif

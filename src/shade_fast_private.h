@@ -117,6 +117,7 @@ typedef struct stp_shade_fast {
                             fields itself gets the 32-bit path */
     uint32_t wide_c;     /* C in raw stp_fix units, >= 1 */
     uint32_t wide_refl;  /* |R| in raw units */
+    int32_t wide_refl_sign; /* -1 where R < 0 (refl_negative), else 1 */
     /* BRIGHT P_j as m 2^-e = b p 2^-16 (b, p raw), m in [2^23, 2^24) or 0,
      * e in [-22, 39] (-64 with m = 0): m 2^36 (the dividend of its share)
      * and e */
