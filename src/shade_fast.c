@@ -884,8 +884,7 @@ STP_HOT_INLINE int32_t wide_share(uint64_t p, int t)
  * cosines (nl, ne > 0), inv_ne = 1/(N.E) in Q26. */
 STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, int64_t el, uint64_t inv_ne)
 {
-    uint64_t x = (uint64_t)(2 * (Q30 + el)), sum, nh, eh, omx, gk, d, f, g1, gne, df;
-    int r = s->wide_gloss_r;
+    uint64_t x = (uint64_t)(2 * (Q30 + el)), sum, nh, eh, omx, d, f, g1, gne, df;
     if ((int64_t)x <= 0)
         return 0; /* L = -E: H undefined */
     /* x >= 2: |L + E| in Q30 in [2^15, 2^31], N.H in (0, 2^30], E.H > 0 */
@@ -914,8 +913,7 @@ STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64
     }
     /* D: k in Q30 as gk 2^r (gk < 2^24), 1 - N.H in [0, 2^30] */
     omx = (uint64_t)Q30 - nh;
-    gk = s->wide_gloss;
-    d = s->wide_gloss30 / (gk + (omx >> r)); /* gk 2^30/(...): Q30, <= 2^30 */
+    d = s->wide_gloss30 / (s->wide_gloss + (omx >> s->wide_gloss_r)); /* g 2^30/(...): Q30, <= 2^30 */
     d = (d * d) >> 30;
     df = (d * f) >> 16; /* Q30, <= 2^30 */
     /* D F G/(N.E) in Q26, exactly floor(df gne 2^-30) in two parts */
