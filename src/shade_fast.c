@@ -823,15 +823,16 @@ typedef struct wide_dir {
     int j, s;
 } wide_dir;
 
-/* wide_make's common part: v already scaled by 2^-s */
-STP_HOT_INLINE int wide_make_scaled(wide_dir *d, int64_t v0, int64_t v1, int64_t v2, int s)
+/* wide_make's common part: v already scaled by 2^-s; may_be_0 = 0 where
+ * the caller knows v is not 0 (no test) */
+STP_HOT_INLINE int wide_make_scaled(wide_dir *d, int64_t v0, int64_t v1, int64_t v2, int s, int may_be_0)
 {
     uint64_t q;
     d->v[0] = v0;
     d->v[1] = v1;
     d->v[2] = v2;
     q = (uint64_t)(v0 * v0 + v1 * v1 + v2 * v2); /* < 3 2^60 */
-    if (q == 0) {
+    if (may_be_0 && q == 0) {
         d->len = 0;
         d->j = d->s = 0;
         return 0;
@@ -845,15 +846,15 @@ STP_HOT_INLINE int wide_make_scaled(wide_dir *d, int64_t v0, int64_t v1, int64_t
 /* wide_make for a component outside [-2^30, 2^30): out of the face's line */
 STP_NOINLINE int wide_make_big(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
 {
-    return wide_make_scaled(d, asr64(v0, 2), asr64(v1, 2), asr64(v2, 2), 2);
+    return wide_make_scaled(d, asr64(v0, 2), asr64(v1, 2), asr64(v2, 2), 2, 1);
 }
 
-STP_HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
+STP_HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2, int may_be_0)
 {
     const uint64_t h = (uint64_t)1 << 30;
     if (HOT_UNLIKELY((((uint64_t)v0 + h) | ((uint64_t)v1 + h) | ((uint64_t)v2 + h)) >> 31 != 0))
         return wide_make_big(d, v0, v1, v2);
-    return wide_make_scaled(d, v0, v1, v2, 0);
+    return wide_make_scaled(d, v0, v1, v2, 0, may_be_0);
 }
 
 /* N.v/(|N| |v|) in Q30 from dot = N.v, clamped to 2^30 above (not below:
@@ -952,7 +953,7 @@ typedef struct wide_eye {
 STP_HOT_INLINE int64_t wide_eye_cos(const int16_t normal[3], const int64_t ve[3], int64_t dot_e, uint64_t nlen28,
                                     wide_dir *e)
 {
-    (void)wide_make(e, ve[0], ve[1], ve[2]); /* not 0: N.E > 0 */
+    (void)wide_make(e, ve[0], ve[1], ve[2], 0); /* not 0: N.E > 0 */
     /* the exact N.E unless e was shifted */
     return wide_cos_dot(e->s == 0 ? dot_e : normal[0] * e->v[0] + normal[1] * e->v[1] + normal[2] * e->v[2], e,
                         nlen28);
@@ -1070,7 +1071,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
     do { /* s->count >= 1 (STP_SHADE_WIDE_FAST) */
         wide_dir l;
         int32_t share;
-        if (wide_make(&l, s->light[j].x - p[0], s->light[j].y - p[1], s->light[j].z - p[2])) {
+        if (wide_make(&l, s->light[j].x - p[0], s->light[j].y - p[1], s->light[j].z - p[2], 1)) {
             int64_t nl = wide_cos_dot(normal[0] * l.v[0] + normal[1] * l.v[1] + normal[2] * l.v[2], &l, nlen28), el = 0;
             int c = l.j - l.s + 2;
             uint64_t w;
