@@ -940,11 +940,12 @@ STP_HOT_INLINE int64_t wide_eye_dot(const stp_shade_fast *s, const int16_t norma
 }
 
 /* The eye's terms of the highlight on a face (face_wide): the direction
- * E, N.E in Q30 and 1/(N.E) in Q26 (unused without the highlight). */
+ * E and N.E in Q30 (unused without the highlight; 1/(N.E) is formed
+ * where a light's highlight takes it, wide_light_specular: kept through
+ * the light's terms, it cost a store and a load). */
 typedef struct wide_eye {
     wide_dir e;
     int64_t ne;
-    uint64_t inv_ne;
 } wide_eye;
 
 #if STP_WITH_SPECULAR
@@ -976,7 +977,7 @@ STP_HOT_INLINE int64_t wide_el(const wide_eye *we, const wide_dir *l)
 STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_eye *we, int64_t el, int64_t nl,
                                            uint64_t w, int c)
 {
-    uint64_t dfg = wide_specular(s, nl, we->ne, el, we->inv_ne), n;
+    uint64_t dfg = wide_specular(s, nl, we->ne, el, ((uint64_t)1 << 56) / (uint64_t)we->ne), n; /* N.E >= 2^-30 */
     int sh;
     if (dfg == 0)
         return 0;
@@ -1044,7 +1045,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
     uint64_t nn, nlen28;
     int32_t acc = 0; /* the shares added, each > 0: below SUM_ONE - ambient + 2^30 < 2^31 */
     int j;
-    wide_eye we; /* e, ne and inv_ne set with the highlight, else ne, inv_ne 0 */
+    wide_eye we; /* e and ne set with the highlight, else ne 0 */
     p[0] = point->x;
     p[1] = point->y;
     p[2] = point->z;
@@ -1060,13 +1061,9 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
         we.ne = wide_eye_cos(normal, ve, dot_e, nlen28, &we.e);
         if (we.ne < (FAST_MIN_COS >> 6)) /* GRAZE_FLOOR */
             return we.ne <= 0 ? s->ambient_shade : s->exact(s, normal, *point);
-        we.inv_ne = ((uint64_t)1 << 56) / (uint64_t)we.ne;
     } else
 #endif
-    {
         we.ne = 0;
-        we.inv_ne = 0;
-    }
     j = 0;
     do { /* s->count >= 1 (STP_SHADE_WIDE_FAST) */
         wide_dir l;
