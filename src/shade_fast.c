@@ -1074,10 +1074,6 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
             uint64_t w;
             if (nl <= 0)
                 continue;
-            /* C + U = cu 2^-c in raw units with c = k + 2 >= 0 (k = j - s >=
-             * -2), cu >= 4 len >= 2^32: C < 2^31 times 2^(k + 2) <= 2^32, plus
-             * 4 len < 2^33 (wide_light_w's t takes the 2^2 back, exactly) */
-            w = wide_light_w(s, j, ((uint64_t)s->wide_c << c) + (l.len << 2), &c);
 #if STP_WITH_SPECULAR
             if (s->specular) {
                 el = wide_el(&we, &l);
@@ -1085,6 +1081,10 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
                     return s->exact(s, normal, *point); /* a light nearly opposite a grazing eye */
             }
 #endif
+            /* C + U = cu 2^-c in raw units with c = k + 2 >= 0 (k = j - s >=
+             * -2), cu >= 4 len >= 2^32: C < 2^31 times 2^(k + 2) <= 2^32, plus
+             * 4 len < 2^33 (wide_light_w's t takes the 2^2 back, exactly) */
+            w = wide_light_w(s, j, ((uint64_t)s->wide_c << c) + (l.len << 2), &c);
             share = wide_light_share(s, &we, w, nl, c, el);
         } else
             share = wide_light_at_point(s, &we, j);
