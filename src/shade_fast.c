@@ -973,7 +973,7 @@ STP_HOT_INLINE int64_t wide_el(const wide_eye *we, const wide_dir *l)
 }
 
 /* Light j's highlight share in Q26 (face_wide): nl N.L, el E.L, w and c
- * its BRIGHT P_j/(C + U) = w 2^(c - e - 36). */
+ * its BRIGHT P_j/(C + U) = w 2^(c - 10) (c as wide_light_w sets it). */
 STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_eye *we, int64_t el, int64_t nl,
                                            uint64_t w, int c)
 {
@@ -983,37 +983,38 @@ STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_e
         return 0;
     /* D F G/(N.E) = dfg 2^-26 = n 2^(6 - sh), n = floor(dfg 2^(sh - 32))
      * in [2^31, 2^32) (sh = the leading zeros: dfg 2^sh has its top bit at
-     * 63, and its low 32 bits 0 where sh > 32); the share n w Ks 2^(c - e -
-     * 20 - sh) = (n w 2^-32) Ks 2^(12 - sh + c - e), n w 2^-32 < 2^32, times
-     * Ks < 2^31 */
+     * 63, and its low 32 bits 0 where sh > 32); the share n w Ks 2^(c + 6
+     * - sh) = (n w 2^-32) Ks 2^(38 - sh + c), n w 2^-32 < 2^32, times Ks <
+     * 2^31 */
     sh = __builtin_clzll(dfg);
     n = (dfg << sh) >> 32;
-    return wide_share(((n * w) >> 32) * s->wide_ks, 12 - sh + c);
+    return wide_share(((n * w) >> 32) * s->wide_ks, 38 - sh + c);
 }
 #endif
 
-/* Light j's BRIGHT P_j/(C + U) = w 2^(c - e - 36) (w returned, *c set to
- * c - e) from C + U = cu 2^-c in raw units (cu >= 2^29, c in *c) */
+/* Light j's BRIGHT P_j/(C + U) = w 2^(c' - 10) (w returned, *c set to c'
+ * = c - e - 26, the diffuse share's shift: wide_power_e holds e + 26) from
+ * C + U = cu 2^-c in raw units (cu >= 2^29, c in *c) */
 STP_HOT_INLINE uint64_t wide_light_w(const stp_shade_fast *s, int j, uint64_t cu, int *c)
 {
     /* cu >= 2^29 brought to [2^28, 2^29) by a right shift (c -= t);
      * BRIGHT P_j/(C + U) = (m 2^-e)/(cu 2^-c) = w 2^(c - e - 36) with
      * w = m 2^36/cu in (2^30, 2^32) */
     int t = 35 - __builtin_clzll(cu); /* bit length - 29 (cu > 0) */
-    *c -= t + s->wide_power_e[j]; /* c - e */
+    *c -= t + s->wide_power_e[j]; /* c - e - 26 */
     return s->wide_power[j] / (cu >> t);
 }
 
 /* Light j's share in Q26 (face_wide) from nl = N.L > 0 (Q30), BRIGHT
- * P_j/(C + U) = w 2^(c - e - 36) (the argument c is c - e, wide_light_w's) and el = E.L
+ * P_j/(C + U) = w 2^(c - 10) (c wide_light_w's c - e - 26) and el = E.L
  * (with the highlight). */
 STP_HOT_INLINE int32_t wide_light_share(const stp_shade_fast *s, const wide_eye *we, uint64_t w, int64_t nl, int c,
                                         int64_t el)
 {
-    /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: nl 2^-30 |R| 2^-16 w 2^(c - e -
-     * 36) 2^26 = (w nl 2^-30) |R| 2^(c - e - 26); w nl 2^-30 < 2^32, times
-     * |R| < 2^31; signed as R by a product (no test) */
-    int32_t share = wide_share(((w * (uint64_t)nl) >> 30) * s->wide_refl, c - 26) * s->wide_refl_sign;
+    /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: nl 2^-30 |R| 2^-16 w 2^(c -
+     * 10) 2^26 = (w nl 2^-30) |R| 2^c; w nl 2^-30 < 2^32, times |R| <
+     * 2^31; signed as R by a product (no test) */
+    int32_t share = wide_share(((w * (uint64_t)nl) >> 30) * s->wide_refl, c) * s->wide_refl_sign;
 #if STP_WITH_SPECULAR
     if (s->specular)
         share += wide_light_specular(s, we, el, nl, w, c);
@@ -1090,7 +1091,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
             share = wide_light_at_point(s, &we, j);
         if (share > 0) {
             acc += share;
-            if (acc >= SUM_ONE - s->ambient)
+            if (acc >= s->wide_acc_one) /* SUM_ONE - ambient */
                 return ONE; /* every later share is >= 0 */
         }
     } while (++j < s->count);
@@ -1101,7 +1102,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
 #if STP_WIDE_ARITH
 /* BRIGHT P_j for the host path (wide_prepare): b p (raw, each < 2^31:
  * below 2^62) = m 2^n, m in [2^23, 2^24) truncated: b p 2^-16 = m 2^-(16
- * - n), 16 - n in [-22, 39] */
+ * - n), e = 16 - n in [-22, 39], kept as e + 26 (wide_light_w) */
 static void wide_prepare_powers(stp_shade_fast *s, const stp_lighting *lighting)
 {
     stp_fix bright = lighting->brightness;
@@ -1113,7 +1114,7 @@ static void wide_prepare_powers(stp_shade_fast *s, const stp_lighting *lighting)
             bp = (uint64_t)(uint32_t)bright * (uint32_t)lighting->lights[j].power;
         n = bit_length64(bp) - 24;
         s->wide_power[j] = bp == 0 ? 0u : (n >= 0 ? bp >> n : bp << -n) << 36;
-        s->wide_power_e[j] = (int8_t)(bp == 0 ? -64 : 16 - n);
+        s->wide_power_e[j] = (int8_t)(bp == 0 ? -38 : 42 - n);
     }
 }
 
@@ -1159,6 +1160,7 @@ static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const 
     s->wide_c = lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u;
     s->wide_refl = refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl;
     s->wide_refl_sign = refl < 0 ? -1 : 1;
+    s->wide_acc_one = SUM_ONE - s->ambient; /* prepare_ambient set ambient */
     wide_prepare_powers(s, lighting);
 }
 #endif
