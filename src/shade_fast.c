@@ -869,14 +869,18 @@ STP_HOT_INLINE int64_t wide_cos_dot(int64_t dot, const wide_dir *d, uint64_t nle
     return c > Q30 ? Q30 : c;
 }
 
-/* p 2^t in Q26 (p < 2^63: a right shift by 63 leaves 0), saturated at
- * SHARE_CAP */
+/* p 2^t in Q26 (p < 2^63: a right shift by more than 62 leaves 0),
+ * saturated at SHARE_CAP; the common right shift by 1 to 63 tested by one
+ * unsigned comparison */
 STP_HOT_INLINE int32_t wide_share(uint64_t p, int t)
 {
-    if (t >= 0)
+    if (HOT_UNLIKELY((unsigned)-1 - (unsigned)t >= 63u)) { /* t outside [-63, -1] */
+        if (t < 0)
+            return 0; /* t < -63 */
         return t >= 30 ? (p != 0 ? (int32_t)SHARE_CAP : 0)
                        : (p > ((uint64_t)SHARE_CAP >> t) ? (int32_t)SHARE_CAP : (int32_t)(p << t));
-    p >>= t < -63 ? 63 : -t;
+    }
+    p >>= -t;
     return p > SHARE_CAP ? (int32_t)SHARE_CAP : (int32_t)p;
 }
 
