@@ -983,14 +983,13 @@ STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_e
 {
     uint64_t dfg = wide_specular(s, nl, we->ne, el, ((uint64_t)1 << 56) / (uint64_t)we->ne), n; /* N.E >= 2^-30 */
     int sh;
-    if (dfg == 0)
-        return 0;
     /* D F G/(N.E) = dfg 2^-26 = n 2^(6 - sh), n = floor(dfg 2^(sh - 32))
      * in [2^31, 2^32) (sh = the leading zeros: dfg 2^sh has its top bit at
      * 63, and its low 32 bits 0 where sh > 32); the share n w Ks 2^(c + 6
      * - sh) = (n w 2^-32) Ks 2^(38 - sh + c), n w 2^-32 < 2^32, times Ks <
-     * 2^31 */
-    sh = __builtin_clzll(dfg);
+     * 2^31; dfg = 0 (no test): n = 0 and a share of 0 (dfg | 1 has
+     * dfg's leading zeros where dfg > 0) */
+    sh = __builtin_clzll(dfg | 1u);
     n = (dfg << sh) >> 32;
     return wide_share(((n * w) >> 32) * s->wide_ks, 38 - sh + c);
 }
