@@ -786,23 +786,25 @@ STP_HOT_INLINE int bit_length64(uint64_t v)
 }
 
 #if STP_WITH_SPECULAR
-/* sqrt(q) for q in [2^30, 2^63), relative error below 2^-23: q 4^-h in
- * [2^30, 2^32) (h = ceil(bits/2) - 16 >= 0), whose root 2^15 sqrt(u)
- * (u in [1, 4)) is seeded by the minimax line 2^15 (0.6863 + 0.3431 u)
- * (relative error 2.94 %), shifted back by h, then two Newton steps
- * (4.3e-4, then 9.3e-8 and the truncations; each step leaves x at or
- * above the integer root, so q/x never divides by 0). */
-STP_HOT_INLINE uint64_t wide_sqrt(uint64_t q)
+/* sqrt(q) for q = x 2^30, x in [2, 2^33), relative error below 2^-23: q
+ * 4^-h in [2^30, 2^32) (h = ceil(bits(q)/2) - 16 = floor(log2 x)/2, from
+ * x's leading zeros), whose root 2^15 sqrt(u) (u in [1, 4)) is seeded by
+ * the minimax line 2^15 (0.6863 + 0.3431 u) (relative error 2.94 %),
+ * shifted back by h, then two Newton steps (4.3e-4, then 9.3e-8 and the
+ * truncations; each step leaves r at or above the integer root, so q/r
+ * never divides by 0). */
+STP_HOT_INLINE uint64_t wide_sqrt30(uint64_t x)
 {
-    int h = ((64 - __builtin_clzll(q) + 1) >> 1) - 16;
+    uint64_t q = x << 30, r;
+    int h = (63 - __builtin_clzll(x)) >> 1;
     uint64_t y = q >> (2 * h); /* in [2^30, 2^32) */
-    uint64_t x = (22488u + ((y * 11243u) >> 30)) << h;
-    x = (x + q / x) >> 1;
-    return (x + q / x) >> 1;
+    r = (22488u + ((y * 11243u) >> 30)) << h;
+    r = (r + q / r) >> 1;
+    return (r + q / r) >> 1;
 }
 #endif
 
-/* sqrt(q) for q in [2^60, 2^62): wide_sqrt with h = 15 known */
+/* sqrt(q) for q in [2^60, 2^62): wide_sqrt30's steps with h = 15 */
 STP_HOT_INLINE uint64_t wide_sqrt60(uint64_t q)
 {
     uint64_t y = q >> 30; /* in [2^30, 2^32) */
@@ -893,7 +895,7 @@ STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64
     if ((int64_t)x <= 0)
         return 0; /* L = -E: H undefined */
     /* x >= 2: |L + E| in Q30 in [2^15, 2^31], N.H in (0, 2^30], E.H > 0 */
-    sum = wide_sqrt(x << 30);
+    sum = wide_sqrt30(x);
     eh = sum >> 1;
     /* F in Q16; n >= 1 here (n < FAST_MIN_REFRACTION takes the exact route,
      * exact_always, before face_wide) */
