@@ -913,9 +913,10 @@ STP_HOT_INLINE int32_t wide_share(uint64_t p, int t)
  * cosines (nl, ne > 0), inv_ne = 1/(N.E) in Q26. */
 STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, int64_t el, uint64_t inv_ne)
 {
-    uint64_t x = (uint64_t)(2 * (Q30 + el)), sum, nh, eh, omx, d, f, g1, gne, df;
-    if ((int64_t)x <= 0)
+    uint64_t x, sum, nh, eh, omx, d, f, g1, gne, df;
+    if (el <= -Q30)
         return 0; /* L = -E: H undefined */
+    x = (uint64_t)(2 * (Q30 + el));
     /* x >= 2: |L + E| in Q30 in [2^15, 2^31], N.H in (0, 2^30], E.H > 0 */
     sum = wide_sqrt30(x);
     eh = sum >> 1;
