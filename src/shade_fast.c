@@ -946,7 +946,10 @@ STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64
     d = s->wide_gloss30 / (s->wide_gloss + (omx >> s->wide_gloss_r)); /* g 2^30/(...): Q30, <= 2^30 */
     d = (d * d) >> 30;
     df = (d * f) >> 16; /* Q30, <= 2^30 */
-    /* D F G/(N.E) in Q26, exactly floor(df gne 2^-30) in two parts */
+    /* D F G/(N.E) in Q26, exactly floor(df gne 2^-30): one product below
+     * 2^64 where gne < 2^34, else in two parts */
+    if (!HOT_UNLIKELY(gne >> 34 != 0))
+        return (df * gne) >> 30;
     return df * (gne >> 30) + ((df * (gne & ((uint64_t)Q30 - 1))) >> 30);
 }
 #endif
