@@ -1104,7 +1104,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
             int64_t nl = wide_cos_dot(normal[0] * l.v[0] + normal[1] * l.v[1] + normal[2] * l.v[2], &l, nlen28), el = 0;
             int c = l.j - l.s + 2;
             uint64_t w;
-            if (nl <= 0)
+            if (HOT_UNLIKELY(nl <= 0))
                 continue;
 #if STP_WITH_SPECULAR
             if (s->specular) {
