@@ -890,7 +890,7 @@ STP_HOT_INLINE int64_t wide_cos_dot(int64_t dot, const wide_dir *d, uint64_t nle
     /* dot 2^(j + 17) as an unsigned shift (it fits: the conversion back
      * gives it exactly, as in fix.c) */
     int64_t c = (int64_t)((uint64_t)dot << (d->j + 17)) / (int64_t)((nlen28 * d->len) >> 27);
-    return c > Q30 ? Q30 : c;
+    return HOT_UNLIKELY(c > Q30) ? Q30 : c;
 }
 
 /* p 2^t in Q26 (p < 2^63: a right shift by more than 62 leaves 0),
