@@ -905,7 +905,7 @@ STP_HOT_INLINE int32_t wide_share(uint64_t p, int t)
                        : (p > ((uint64_t)SHARE_CAP >> t) ? (int32_t)SHARE_CAP : (int32_t)(p << t));
     }
     p >>= -t;
-    return p > SHARE_CAP ? (int32_t)SHARE_CAP : (int32_t)p;
+    return HOT_UNLIKELY(p > SHARE_CAP) ? (int32_t)SHARE_CAP : (int32_t)p;
 }
 
 #if STP_WITH_SPECULAR
