@@ -818,16 +818,18 @@ STP_HOT_INLINE uint64_t wide_sqrt60(uint64_t q)
  * and the dot product of two is below 3 2^60 in magnitude; len = |v| 2^j
  * in [2^30, 2^31) with j in [0, 30] (from |v|^2 4^j in [2^60, 2^62): one
  * count of leading zeros, no scaling of the components); the raw length
- * is len 2^-(j - s) (s kept, not j - s: one scalar store each). */
+ * is len 2^-(j - s) (s kept, not j - s, and stored only where read: a
+ * light's, and a big eye's). */
 typedef struct wide_dir {
     int64_t v[3];
     uint64_t len;
     int j, s;
 } wide_dir;
 
-/* A direction from v already scaled by 2^-s (0 for v = 0); may_be_0 = 0
- * where the caller knows v is not 0 (no test) */
-STP_HOT_INLINE int wide_make_scaled(wide_dir *d, int64_t v0, int64_t v1, int64_t v2, int s, int may_be_0)
+/* A direction from v already scaled by 2^-s, but for s, which the caller
+ * sets where it reads it (0 for v = 0); may_be_0 = 0 where the caller
+ * knows v is not 0 (no test) */
+STP_HOT_INLINE int wide_make_scaled(wide_dir *d, int64_t v0, int64_t v1, int64_t v2, int may_be_0)
 {
     uint64_t q;
     d->v[0] = v0;
@@ -836,11 +838,10 @@ STP_HOT_INLINE int wide_make_scaled(wide_dir *d, int64_t v0, int64_t v1, int64_t
     q = (uint64_t)(v0 * v0 + v1 * v1 + v2 * v2); /* < 3 2^60 */
     if (may_be_0 && q == 0) {
         d->len = 0;
-        d->j = d->s = 0;
+        d->j = 0;
         return 0;
     }
     d->j = (62 - (64 - __builtin_clzll(q))) >> 1; /* bits <= 62 */
-    d->s = s;
     d->len = wide_sqrt60(q << (2 * d->j));
     return 1;
 }
@@ -848,7 +849,8 @@ STP_HOT_INLINE int wide_make_scaled(wide_dir *d, int64_t v0, int64_t v1, int64_t
 /* A direction with a component outside [-2^30, 2^30): out of the face's line */
 STP_NOINLINE int wide_make_big(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
 {
-    return wide_make_scaled(d, asr64(v0, 2), asr64(v1, 2), asr64(v2, 2), 2, 1);
+    d->s = 2;
+    return wide_make_scaled(d, asr64(v0, 2), asr64(v1, 2), asr64(v2, 2), 1);
 }
 
 /* A component outside [-2^30, 2^30) */
@@ -858,13 +860,17 @@ STP_HOT_INLINE int wide_big(int64_t v0, int64_t v1, int64_t v2)
     return ((((uint64_t)v0 + h) | ((uint64_t)v1 + h) | ((uint64_t)v2 + h)) >> 31) != 0;
 }
 
-/* The eye's direction (v not 0: no zero test) */
-STP_HOT_INLINE void wide_make_eye(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
+/* The eye's direction (v not 0: no zero test); 1 where big (s = 2), else
+ * 0 with s not set (read nowhere: the one reader, wide_eye_cos, takes
+ * this result) */
+STP_HOT_INLINE int wide_make_eye(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
 {
-    if (HOT_UNLIKELY(wide_big(v0, v1, v2)))
+    if (HOT_UNLIKELY(wide_big(v0, v1, v2))) {
         (void)wide_make_big(d, v0, v1, v2);
-    else
-        (void)wide_make_scaled(d, v0, v1, v2, 0, 0);
+        return 1;
+    }
+    (void)wide_make_scaled(d, v0, v1, v2, 0);
+    return 0;
 }
 
 /* A light's direction (0 for v = 0), d passing to no call: the big case
@@ -878,7 +884,8 @@ STP_HOT_INLINE int wide_make_light(wide_dir *d, int64_t v0, int64_t v1, int64_t 
         *d = t;
         return made;
     }
-    return wide_make_scaled(d, v0, v1, v2, 0, 1);
+    d->s = 0;
+    return wide_make_scaled(d, v0, v1, v2, 1);
 }
 
 /* N.v/(|N| |v|) in Q30 from dot = N.v, clamped to 2^30 above (not below:
@@ -986,10 +993,9 @@ typedef struct wide_eye {
 STP_HOT_INLINE int64_t wide_eye_cos(const int16_t normal[3], const int64_t ve[3], int64_t dot_e, uint64_t nlen28,
                                     wide_dir *e)
 {
-    wide_make_eye(e, ve[0], ve[1], ve[2]); /* not 0: N.E > 0 */
+    int big = wide_make_eye(e, ve[0], ve[1], ve[2]); /* not 0: N.E > 0 */
     /* the exact N.E unless e was shifted */
-    return wide_cos_dot(e->s == 0 ? dot_e : normal[0] * e->v[0] + normal[1] * e->v[1] + normal[2] * e->v[2], e,
-                        nlen28);
+    return wide_cos_dot(!big ? dot_e : normal[0] * e->v[0] + normal[1] * e->v[1] + normal[2] * e->v[2], e, nlen28);
 }
 #endif
 
