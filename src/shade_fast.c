@@ -753,7 +753,7 @@ static int32_t specular_share(const stp_shade_fast *s, int32_t n_dot_l, int32_t 
  * without the scaled 16-bit directions, tables and soft mantissas above:
  *   v        a direction (light - point, eye - point): int64 differences of
  *            stp_fix, kept as they are when every |v_i| < 2^30, else
- *            divided by 4 (wide_make): |v|^2 < 3 2^60 and the dot product
+ *            divided by 4 (wide_make_big): |v|^2 < 3 2^60 and the dot product
  *            of two below 3 2^60 in magnitude
  *   |v|      len = |v| 2^j in [2^30, 2^31): |v|^2 4^j brought to [2^60,
  *            2^62) by one shift, its root by a seed line and two Newton
@@ -786,23 +786,25 @@ STP_HOT_INLINE int bit_length64(uint64_t v)
 }
 
 #if STP_WITH_SPECULAR
-/* sqrt(q) for q in [2^30, 2^63), relative error below 2^-23: q 4^-h in
- * [2^30, 2^32) (h = ceil(bits/2) - 16 >= 0), whose root 2^15 sqrt(u)
- * (u in [1, 4)) is seeded by the minimax line 2^15 (0.6863 + 0.3431 u)
- * (relative error 2.94 %), shifted back by h, then two Newton steps
- * (4.3e-4, then 9.3e-8 and the truncations; each step leaves x at or
- * above the integer root, so q/x never divides by 0). */
-STP_HOT_INLINE uint64_t wide_sqrt(uint64_t q)
+/* sqrt(q) for q = x 2^30, x in [2, 2^33), relative error below 2^-23: q
+ * 4^-h in [2^30, 2^32) (h = ceil(bits(q)/2) - 16 = floor(log2 x)/2, from
+ * x's leading zeros), whose root 2^15 sqrt(u) (u in [1, 4)) is seeded by
+ * the minimax line 2^15 (0.6863 + 0.3431 u) (relative error 2.94 %),
+ * shifted back by h, then two Newton steps (4.3e-4, then 9.3e-8 and the
+ * truncations; each step leaves r at or above the integer root, so q/r
+ * never divides by 0). */
+STP_HOT_INLINE uint64_t wide_sqrt30(uint64_t x)
 {
-    int h = ((64 - __builtin_clzll(q) + 1) >> 1) - 16;
+    uint64_t q = x << 30, r;
+    int h = (63 - __builtin_clzll(x)) >> 1;
     uint64_t y = q >> (2 * h); /* in [2^30, 2^32) */
-    uint64_t x = (22488u + ((y * 11243u) >> 30)) << h;
-    x = (x + q / x) >> 1;
-    return (x + q / x) >> 1;
+    r = (22488u + ((y * 11243u) >> 30)) << h;
+    r = (r + q / r) >> 1;
+    return (r + q / r) >> 1;
 }
 #endif
 
-/* sqrt(q) for q in [2^60, 2^62): wide_sqrt with h = 15 known */
+/* sqrt(q) for q in [2^60, 2^62): wide_sqrt30's steps with h = 15 */
 STP_HOT_INLINE uint64_t wide_sqrt60(uint64_t q)
 {
     uint64_t y = q >> 30; /* in [2^30, 2^32) */
@@ -815,45 +817,75 @@ STP_HOT_INLINE uint64_t wide_sqrt60(uint64_t q)
  * when every |v_i| < 2^30, else v 2^-2 (s = 2), so that |v|^2 < 3 2^60
  * and the dot product of two is below 3 2^60 in magnitude; len = |v| 2^j
  * in [2^30, 2^31) with j in [0, 30] (from |v|^2 4^j in [2^60, 2^62): one
- * count of leading zeros, no scaling of the components); k = j - s: the
- * raw length is len 2^-k. */
+ * count of leading zeros, no scaling of the components); the raw length
+ * is len 2^-(j - s) (s kept, not j - s, and stored only where read: a
+ * light's, and a big eye's). */
 typedef struct wide_dir {
     int64_t v[3];
     uint64_t len;
-    int j, k;
+    int j, s;
 } wide_dir;
 
-/* wide_make's common part: v already scaled by 2^-s */
-STP_HOT_INLINE int wide_make_scaled(wide_dir *d, int64_t v0, int64_t v1, int64_t v2, int s)
+/* A direction from v already scaled by 2^-s, but for s, which the caller
+ * sets where it reads it (0 for v = 0); may_be_0 = 0 where the caller
+ * knows v is not 0 (no test) */
+STP_HOT_INLINE int wide_make_scaled(wide_dir *d, int64_t v0, int64_t v1, int64_t v2, int may_be_0)
 {
     uint64_t q;
     d->v[0] = v0;
     d->v[1] = v1;
     d->v[2] = v2;
     q = (uint64_t)(v0 * v0 + v1 * v1 + v2 * v2); /* < 3 2^60 */
-    if (q == 0) {
+    if (may_be_0 && q == 0) {
         d->len = 0;
-        d->j = d->k = 0;
+        d->j = 0;
         return 0;
     }
     d->j = (62 - (64 - __builtin_clzll(q))) >> 1; /* bits <= 62 */
-    d->k = d->j - s;
     d->len = wide_sqrt60(q << (2 * d->j));
     return 1;
 }
 
-/* wide_make for a component outside [-2^30, 2^30): out of the face's line */
+/* A direction with a component outside [-2^30, 2^30): out of the face's line */
 STP_NOINLINE int wide_make_big(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
 {
-    return wide_make_scaled(d, asr64(v0, 2), asr64(v1, 2), asr64(v2, 2), 2);
+    d->s = 2;
+    return wide_make_scaled(d, asr64(v0, 2), asr64(v1, 2), asr64(v2, 2), 1);
 }
 
-STP_HOT_INLINE int wide_make(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
+/* A component outside [-2^30, 2^30) */
+STP_HOT_INLINE int wide_big(int64_t v0, int64_t v1, int64_t v2)
 {
     const uint64_t h = (uint64_t)1 << 30;
-    if (HOT_UNLIKELY((((uint64_t)v0 + h) | ((uint64_t)v1 + h) | ((uint64_t)v2 + h)) >> 31 != 0))
-        return wide_make_big(d, v0, v1, v2);
-    return wide_make_scaled(d, v0, v1, v2, 0);
+    return ((((uint64_t)v0 + h) | ((uint64_t)v1 + h) | ((uint64_t)v2 + h)) >> 31) != 0;
+}
+
+/* The eye's direction (v not 0: no zero test); 1 where big (s = 2), else
+ * 0 with s not set (read nowhere: the one reader, wide_eye_cos, takes
+ * this result) */
+STP_HOT_INLINE int wide_make_eye(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
+{
+    if (HOT_UNLIKELY(wide_big(v0, v1, v2))) {
+        (void)wide_make_big(d, v0, v1, v2);
+        return 1;
+    }
+    (void)wide_make_scaled(d, v0, v1, v2, 0);
+    return 0;
+}
+
+/* A light's direction (0 for v = 0), d passing to no call: the big case
+ * made in a copy, so that d can stay out of memory (2.7 instructions a
+ * face fewer on the host torus than d passed to wide_make_big) */
+STP_HOT_INLINE int wide_make_light(wide_dir *d, int64_t v0, int64_t v1, int64_t v2)
+{
+    if (HOT_UNLIKELY(wide_big(v0, v1, v2))) {
+        wide_dir t;
+        int made = wide_make_big(&t, v0, v1, v2);
+        *d = t;
+        return made;
+    }
+    d->s = 0;
+    return wide_make_scaled(d, v0, v1, v2, 1);
 }
 
 /* N.v/(|N| |v|) in Q30 from dot = N.v, clamped to 2^30 above (not below:
@@ -865,18 +897,22 @@ STP_HOT_INLINE int64_t wide_cos_dot(int64_t dot, const wide_dir *d, uint64_t nle
     /* dot 2^(j + 17) as an unsigned shift (it fits: the conversion back
      * gives it exactly, as in fix.c) */
     int64_t c = (int64_t)((uint64_t)dot << (d->j + 17)) / (int64_t)((nlen28 * d->len) >> 27);
-    return c > Q30 ? Q30 : c;
+    return HOT_UNLIKELY(c > Q30) ? Q30 : c;
 }
 
-/* p 2^t in Q26 (p < 2^63: a right shift by 63 leaves 0), saturated at
- * SHARE_CAP */
+/* p 2^t in Q26 (p < 2^63: a right shift by more than 62 leaves 0),
+ * saturated at SHARE_CAP; the common right shift by 1 to 63 tested by one
+ * unsigned comparison */
 STP_HOT_INLINE int32_t wide_share(uint64_t p, int t)
 {
-    if (t >= 0)
+    if (HOT_UNLIKELY((unsigned)-1 - (unsigned)t >= 63u)) { /* t outside [-63, -1] */
+        if (t < 0)
+            return 0; /* t < -63 */
         return t >= 30 ? (p != 0 ? (int32_t)SHARE_CAP : 0)
                        : (p > ((uint64_t)SHARE_CAP >> t) ? (int32_t)SHARE_CAP : (int32_t)(p << t));
-    p >>= t < -63 ? 63 : -t;
-    return p > SHARE_CAP ? (int32_t)SHARE_CAP : (int32_t)p;
+    }
+    p >>= -t;
+    return HOT_UNLIKELY(p > SHARE_CAP) ? (int32_t)SHARE_CAP : (int32_t)p;
 }
 
 #if STP_WITH_SPECULAR
@@ -884,12 +920,12 @@ STP_HOT_INLINE int32_t wide_share(uint64_t p, int t)
  * cosines (nl, ne > 0), inv_ne = 1/(N.E) in Q26. */
 STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64_t ne, int64_t el, uint64_t inv_ne)
 {
-    uint64_t x = (uint64_t)(2 * (Q30 + el)), sum, nh, eh, omx, gk, d, f, g1, gne, df;
-    int r = s->wide_gloss_r;
-    if ((int64_t)x <= 0)
+    uint64_t x, sum, nh, eh, omx, d, f, g1, gne, df;
+    if (el <= -Q30)
         return 0; /* L = -E: H undefined */
+    x = (uint64_t)(2 * (Q30 + el));
     /* x >= 2: |L + E| in Q30 in [2^15, 2^31], N.H in (0, 2^30], E.H > 0 */
-    sum = wide_sqrt(x << 30);
+    sum = wide_sqrt30(x);
     eh = sum >> 1;
     /* F in Q16; n >= 1 here (n < FAST_MIN_REFRACTION takes the exact route,
      * exact_always, before face_wide) */
@@ -914,11 +950,13 @@ STP_HOT_INLINE uint64_t wide_specular(const stp_shade_fast *s, int64_t nl, int64
     }
     /* D: k in Q30 as gk 2^r (gk < 2^24), 1 - N.H in [0, 2^30] */
     omx = (uint64_t)Q30 - nh;
-    gk = s->wide_gloss;
-    d = s->wide_gloss30 / (gk + (omx >> r)); /* gk 2^30/(...): Q30, <= 2^30 */
+    d = s->wide_gloss30 / (s->wide_gloss + (omx >> s->wide_gloss_r)); /* g 2^30/(...): Q30, <= 2^30 */
     d = (d * d) >> 30;
     df = (d * f) >> 16; /* Q30, <= 2^30 */
-    /* D F G/(N.E) in Q26, exactly floor(df gne 2^-30) in two parts */
+    /* D F G/(N.E) in Q26, exactly floor(df gne 2^-30): one product below
+     * 2^64 where gne < 2^34, else in two parts */
+    if (!HOT_UNLIKELY(gne >> 34 != 0))
+        return (df * gne) >> 30;
     return df * (gne >> 30) + ((df * (gne & ((uint64_t)Q30 - 1))) >> 30);
 }
 #endif
@@ -941,11 +979,12 @@ STP_HOT_INLINE int64_t wide_eye_dot(const stp_shade_fast *s, const int16_t norma
 }
 
 /* The eye's terms of the highlight on a face (face_wide): the direction
- * E, N.E in Q30 and 1/(N.E) in Q26 (unused without the highlight). */
+ * E and N.E in Q30 (unused without the highlight; 1/(N.E) is formed
+ * where a light's highlight takes it, wide_light_specular: kept through
+ * the light's terms, it cost a store and a load). */
 typedef struct wide_eye {
     wide_dir e;
     int64_t ne;
-    uint64_t inv_ne;
 } wide_eye;
 
 #if STP_WITH_SPECULAR
@@ -954,10 +993,9 @@ typedef struct wide_eye {
 STP_HOT_INLINE int64_t wide_eye_cos(const int16_t normal[3], const int64_t ve[3], int64_t dot_e, uint64_t nlen28,
                                     wide_dir *e)
 {
-    (void)wide_make(e, ve[0], ve[1], ve[2]); /* not 0: N.E > 0 */
+    int big = wide_make_eye(e, ve[0], ve[1], ve[2]); /* not 0: N.E > 0 */
     /* the exact N.E unless e was shifted */
-    return wide_cos_dot(e->k == e->j ? dot_e : normal[0] * e->v[0] + normal[1] * e->v[1] + normal[2] * e->v[2], e,
-                        nlen28);
+    return wide_cos_dot(!big ? dot_e : normal[0] * e->v[0] + normal[1] * e->v[1] + normal[2] * e->v[2], e, nlen28);
 }
 #endif
 
@@ -973,50 +1011,47 @@ STP_HOT_INLINE int64_t wide_el(const wide_eye *we, const wide_dir *l)
 }
 
 /* Light j's highlight share in Q26 (face_wide): nl N.L, el E.L, w and c
- * its BRIGHT P_j/(C + U) = w 2^(c - e - 36). */
+ * its BRIGHT P_j/(C + U) = w 2^(c - 10) (c as wide_light_w sets it). */
 STP_HOT_INLINE int32_t wide_light_specular(const stp_shade_fast *s, const wide_eye *we, int64_t el, int64_t nl,
                                            uint64_t w, int c)
 {
-    uint64_t dfg = wide_specular(s, nl, we->ne, el, we->inv_ne), n;
+    uint64_t dfg = wide_specular(s, nl, we->ne, el, ((uint64_t)1 << 56) / (uint64_t)we->ne), n; /* N.E >= 2^-30 */
     int sh;
-    if (dfg == 0)
-        return 0;
     /* D F G/(N.E) = dfg 2^-26 = n 2^(6 - sh), n = floor(dfg 2^(sh - 32))
      * in [2^31, 2^32) (sh = the leading zeros: dfg 2^sh has its top bit at
-     * 63, and its low 32 bits 0 where sh > 32); the share n w Ks 2^(c - e -
-     * 20 - sh) = (n w 2^-32) Ks 2^(12 - sh + c - e), n w 2^-32 < 2^32, times
-     * Ks < 2^31 */
-    sh = __builtin_clzll(dfg);
+     * 63, and its low 32 bits 0 where sh > 32); the share n w Ks 2^(c + 6
+     * - sh) = (n w 2^-32) Ks 2^(38 - sh + c), n w 2^-32 < 2^32, times Ks <
+     * 2^31; dfg = 0 (no test): n = 0 and a share of 0 (dfg | 1 has
+     * dfg's leading zeros where dfg > 0) */
+    sh = __builtin_clzll(dfg | 1u);
     n = (dfg << sh) >> 32;
-    return wide_share(((n * w) >> 32) * s->wide_ks, 12 - sh + c);
+    return wide_share(((n * w) >> 32) * s->wide_ks, 38 - sh + c);
 }
 #endif
 
-/* Light j's BRIGHT P_j/(C + U) = w 2^(c - e - 36) (w returned, *c set to
- * c - e) from C + U = cu 2^-c in raw units (cu >= 2^29, c in *c) */
+/* Light j's BRIGHT P_j/(C + U) = w 2^(c' - 10) (w returned, *c set to c'
+ * = c - e - 26, the diffuse share's shift: wide_power_e holds e + 26) from
+ * C + U = cu 2^-c in raw units (cu >= 2^29, c in *c) */
 STP_HOT_INLINE uint64_t wide_light_w(const stp_shade_fast *s, int j, uint64_t cu, int *c)
 {
     /* cu >= 2^29 brought to [2^28, 2^29) by a right shift (c -= t);
      * BRIGHT P_j/(C + U) = (m 2^-e)/(cu 2^-c) = w 2^(c - e - 36) with
      * w = m 2^36/cu in (2^30, 2^32) */
     int t = 35 - __builtin_clzll(cu); /* bit length - 29 (cu > 0) */
-    *c -= t + s->wide_power_e[j]; /* c - e */
+    *c -= t + s->wide_power_e[j]; /* c - e - 26 */
     return s->wide_power[j] / (cu >> t);
 }
 
 /* Light j's share in Q26 (face_wide) from nl = N.L > 0 (Q30), BRIGHT
- * P_j/(C + U) = w 2^(c - e - 36) (the argument c is c - e, wide_light_w's) and el = E.L
+ * P_j/(C + U) = w 2^(c - 10) (c wide_light_w's c - e - 26) and el = E.L
  * (with the highlight). */
 STP_HOT_INLINE int32_t wide_light_share(const stp_shade_fast *s, const wide_eye *we, uint64_t w, int64_t nl, int c,
                                         int64_t el)
 {
-    int32_t share;
-    /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: nl 2^-30 |R| 2^-16 w 2^(c - e -
-     * 36) 2^26 = (w nl 2^-30) |R| 2^(c - e - 26); w nl 2^-30 < 2^32, times
-     * |R| < 2^31 */
-    share = wide_share(((w * (uint64_t)nl) >> 30) * s->wide_refl, c - 26);
-    if (s->refl_negative)
-        share = -share;
+    /* BRIGHT P_j |R| (N.L)/(C + U) in Q26: nl 2^-30 |R| 2^-16 w 2^(c -
+     * 10) 2^26 = (w nl 2^-30) |R| 2^c; w nl 2^-30 < 2^32, times |R| <
+     * 2^31; signed as R by a product (no test) */
+    int32_t share = wide_share(((w * (uint64_t)nl) >> 30) * s->wide_refl, c) * s->wide_refl_sign;
 #if STP_WITH_SPECULAR
     if (s->specular)
         share += wide_light_specular(s, we, el, nl, w, c);
@@ -1048,7 +1083,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
     uint64_t nn, nlen28;
     int32_t acc = 0; /* the shares added, each > 0: below SUM_ONE - ambient + 2^30 < 2^31 */
     int j;
-    wide_eye we; /* e, ne and inv_ne set with the highlight, else ne, inv_ne 0 */
+    wide_eye we; /* e and ne set with the highlight, else ne 0 */
     p[0] = point->x;
     p[1] = point->y;
     p[2] = point->z;
@@ -1064,27 +1099,19 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
         we.ne = wide_eye_cos(normal, ve, dot_e, nlen28, &we.e);
         if (we.ne < (FAST_MIN_COS >> 6)) /* GRAZE_FLOOR */
             return we.ne <= 0 ? s->ambient_shade : s->exact(s, normal, *point);
-        we.inv_ne = ((uint64_t)1 << 56) / (uint64_t)we.ne;
     } else
 #endif
-    {
         we.ne = 0;
-        we.inv_ne = 0;
-    }
     j = 0;
     do { /* s->count >= 1 (STP_SHADE_WIDE_FAST) */
         wide_dir l;
         int32_t share;
-        if (wide_make(&l, s->light[j].x - p[0], s->light[j].y - p[1], s->light[j].z - p[2])) {
+        if (wide_make_light(&l, s->light[j].x - p[0], s->light[j].y - p[1], s->light[j].z - p[2])) {
             int64_t nl = wide_cos_dot(normal[0] * l.v[0] + normal[1] * l.v[1] + normal[2] * l.v[2], &l, nlen28), el = 0;
-            int c = l.k + 2;
+            int c = l.j - l.s + 2;
             uint64_t w;
-            if (nl <= 0)
+            if (HOT_UNLIKELY(nl <= 0))
                 continue;
-            /* C + U = cu 2^-c in raw units with c = k + 2 >= 0 (k >= -2), cu
-             * >= 4 len >= 2^32: C < 2^31 times 2^(k + 2) <= 2^32, plus 4 len
-             * < 2^33 (wide_light_w's t takes the 2^2 back, exactly) */
-            w = wide_light_w(s, j, ((uint64_t)s->wide_c << (l.k + 2)) + (l.len << 2), &c);
 #if STP_WITH_SPECULAR
             if (s->specular) {
                 el = wide_el(&we, &l);
@@ -1092,12 +1119,16 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
                     return s->exact(s, normal, *point); /* a light nearly opposite a grazing eye */
             }
 #endif
+            /* C + U = cu 2^-c in raw units with c = k + 2 >= 0 (k = j - s >=
+             * -2), cu >= 4 len >= 2^32: C < 2^31 times 2^(k + 2) <= 2^32, plus
+             * 4 len < 2^33 (wide_light_w's t takes the 2^2 back, exactly) */
+            w = wide_light_w(s, j, ((uint64_t)s->wide_c << c) + (l.len << 2), &c);
             share = wide_light_share(s, &we, w, nl, c, el);
         } else
             share = wide_light_at_point(s, &we, j);
         if (share > 0) {
             acc += share;
-            if (acc >= SUM_ONE - s->ambient)
+            if (acc >= s->wide_acc_one) /* SUM_ONE - ambient */
                 return ONE; /* every later share is >= 0 */
         }
     } while (++j < s->count);
@@ -1108,7 +1139,7 @@ static stp_fix face_wide(const stp_shade_fast *s, const int16_t normal[3], const
 #if STP_WIDE_ARITH
 /* BRIGHT P_j for the host path (wide_prepare): b p (raw, each < 2^31:
  * below 2^62) = m 2^n, m in [2^23, 2^24) truncated: b p 2^-16 = m 2^-(16
- * - n), 16 - n in [-22, 39] */
+ * - n), e = 16 - n in [-22, 39], kept as e + 26 (wide_light_w) */
 static void wide_prepare_powers(stp_shade_fast *s, const stp_lighting *lighting)
 {
     stp_fix bright = lighting->brightness;
@@ -1120,7 +1151,7 @@ static void wide_prepare_powers(stp_shade_fast *s, const stp_lighting *lighting)
             bp = (uint64_t)(uint32_t)bright * (uint32_t)lighting->lights[j].power;
         n = bit_length64(bp) - 24;
         s->wide_power[j] = bp == 0 ? 0u : (n >= 0 ? bp >> n : bp << -n) << 36;
-        s->wide_power_e[j] = (int8_t)(bp == 0 ? -64 : 16 - n);
+        s->wide_power_e[j] = (int8_t)(bp == 0 ? -38 : 42 - n);
     }
 }
 
@@ -1165,6 +1196,8 @@ static void wide_prepare(stp_shade_fast *s, const stp_lighting *lighting, const 
 #endif
     s->wide_c = lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u;
     s->wide_refl = refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl;
+    s->wide_refl_sign = refl < 0 ? -1 : 1;
+    s->wide_acc_one = SUM_ONE - s->ambient; /* prepare_ambient set ambient */
     wide_prepare_powers(s, lighting);
 }
 #endif

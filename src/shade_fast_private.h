@@ -115,11 +115,16 @@ typedef struct stp_shade_fast {
                             the wide fields below hold unless NARROW; 0
                             (NARROW): a caller that filled the 32-bit
                             fields itself gets the 32-bit path */
+    int8_t wide_refl_sign; /* -1 where R < 0 (refl_negative), else 1 (a
+                              byte of the padding) */
     uint32_t wide_c;     /* C in raw stp_fix units, >= 1 */
     uint32_t wide_refl;  /* |R| in raw units */
+    int32_t wide_acc_one; /* 1 - BRIGHT B R in Q26 (SUM_ONE - ambient, in
+                             [-7 2^26, 9 2^26]): the lights' shares that
+                             make a shade of 1 */
     /* BRIGHT P_j as m 2^-e = b p 2^-16 (b, p raw), m in [2^23, 2^24) or 0,
      * e in [-22, 39] (-64 with m = 0): m 2^36 (the dividend of its share)
-     * and e */
+     * and e + 26 (the shift of its diffuse share in Q26 adds -e - 26) */
     uint64_t wide_power[STP_MAX_LIGHTS];
     int8_t wide_power_e[STP_MAX_LIGHTS];
 #if STP_WITH_SPECULAR
