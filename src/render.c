@@ -702,8 +702,6 @@ int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, in
             t = y0, y0 = y1, y1 = t;
         }
     }
-    if ((y2 - y0) >> 14)
-        return 1; /* not narrow: kept */
     if (!STP_CENTRE_GATE_INLINE && !stp_render_thin(x0, y0, x1, y1, x2, y2))
         return 1; /* not tested (the caller's gate, here on 32-bit targets) */
     /* the rows whose centre lies in [y0, y1), then [y1, y2) */
