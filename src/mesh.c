@@ -678,7 +678,7 @@ int stp_renderer_mesh(stp_renderer *r, const stp_mesh *mesh, stp_mesh_vertex *sc
     c.scratch = scratch;
     fast = fast_state(r, mesh) && prepare_call(&c);
     c.shade = fast && r->shading ? stp_render_face_shader(r) : 0;
-    c.test_rows = r->pixel_cull ? STP_CENTRE_TEST_MAX : 0;
+    c.test_rows = r->pixel_cull;
     c.steps = stp_intensity_steps(r->levels);
     c.fill_style = r->fill_style;
     c.fill_shade = fast && !r->shading ? stp_intensity_shade(r->fill_style, r->levels) : 0;

@@ -291,7 +291,7 @@ int stp_renderer_set_pixel_cull(stp_renderer *r, int on)
 {
     if (r == 0)
         return STP_ERR_ARG;
-    r->pixel_cull = on != 0;
+    r->pixel_cull = on ? STP_CENTRE_TEST_MAX : 0;
     return STP_OK;
 }
 
@@ -650,55 +650,71 @@ void stp_render_project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
     project(r, p, out);
 }
 
-/* The crossing of row centre yc by edge a - b (a the upper end, a->y <=
- * yc < b->y, x below 2^14) as the rasters form it (stp_edge_acc_short) */
-static int32_t row_crossing(const stp_instr *a, const stp_instr *b, int32_t yc)
+/* The index of the first pixel centre at or right of the crossing the
+ * rasters draw from an edge accumulator at a row centre (stp_tri_edge_x:
+ * floor(acc / 2^16), the accumulator's value within (-2^14, 2^30 + 2^20):
+ * 2^16 times a point between the edge's ends less below yc - ya < 2^14
+ * for the slope's truncation): floor((floor(acc / 2^16) + 7) / 16) =
+ * floor((acc + 7 2^16) / 2^20), the sum positive and below 2^31. */
+static inline uint32_t centre_index(uint32_t acc)
 {
-    int32_t slope;
-    uint32_t acc = stp_edge_acc_short(a, b, yc, &slope);
-    int32_t value = acc < 0x80000000u ? (int32_t)acc : -(int32_t)~acc - 1;
-    return stp_asr32(value, 16);
+    return (acc + ((uint32_t)(STP_HALF_PIXEL - 1) << 16)) >> 20;
+}
+
+/* Whether a row centre 16 r + 8, row <= r < end, has a pixel centre
+ * between the crossings of the long edge (accumulator *acc at row, step
+ * 16 slopes) and the short edge (xa, ya) - (xb, yb) (ya <= the centres <
+ * yb, x below 2^14): the rasters' accumulators (stp_edge_acc_short), each
+ * stepped by 16 slopes modulo 2^32 as the triangle walk steps them (the
+ * value formed at that row).  *acc is left at end. */
+static inline int half_reached(uint32_t *acc, uint32_t step, int32_t xa, int32_t ya, int32_t xb, int32_t yb,
+                               int32_t row, int32_t end)
+{
+    int32_t slope = stp_slope_q16_short(xb - xa, yb - ya);
+    uint32_t a = *acc, b = (uint32_t)xa * 65536u + (uint32_t)(row * 16 + STP_HALF_PIXEL - ya) * (uint32_t)slope;
+    for (; row < end; row++) {
+        /* centres [x_left, x_right) drawn: pixels [index(left), index(right)) */
+        if (centre_index(a) != centre_index(b))
+            return 1;
+        a += step;
+        b += (uint32_t)slope * 16u;
+    }
+    *acc = a;
+    return 0;
 }
 
 int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2, int32_t y2)
 {
-    int32_t xlo = x0, xhi = x0, columns, row, last;
-    stp_instr v[3];
-    const stp_instr *top, *mid, *bot;
-    xlo = x1 < xlo ? x1 : xlo;
-    xhi = x1 > xhi ? x1 : xhi;
-    xlo = x2 < xlo ? x2 : xlo;
-    xhi = x2 > xhi ? x2 : xhi;
-    /* the pixel centres in [xmin, xmax) */
-    columns = stp_floor16(xhi + STP_HALF_PIXEL - 1) - stp_floor16(xlo + STP_HALF_PIXEL - 1);
-    if (columns == 0)
-        return 0; /* none: nothing drawn */
-    if (columns > STP_CENTRE_TEST_COLUMNS || (xhi >> 14) != 0)
-        return 1; /* wider, or not narrow: kept untested */
-    /* the raster's vertex order and edges (edge_walk_private.h) */
-    v[0].x = x0;
-    v[0].y = y0;
-    v[1].x = x1;
-    v[1].y = y1;
-    v[2].x = x2;
-    v[2].y = y2;
-    stp_tri_sort(&v[0], &v[1], &v[2], &top, &mid, &bot);
-    if (bot->y >> 14)
-        return 1; /* not narrow: kept */
-    /* rows whose centre lies in [top, bottom) */
-    row = stp_floor16(top->y + STP_HALF_PIXEL - 1);
-    last = stp_floor16(bot->y + STP_HALF_PIXEL - 1) - 1;
-    if ((last - row + 1) * columns > STP_CENTRE_TEST_COLUMNS)
-        return 1; /* more candidate centres than tested: kept */
-    for (; row <= last; row++) {
-        int32_t yc = row * 16 + STP_HALF_PIXEL, x_long = row_crossing(top, bot, yc);
-        int32_t x_short = yc < mid->y ? row_crossing(top, mid, yc) : row_crossing(mid, bot, yc);
-        int32_t lo = x_long < x_short ? x_long : x_short, hi = x_long < x_short ? x_short : x_long;
-        /* a pixel centre 16 p + 8 in [lo, hi), width aside */
-        if (stp_floor16(lo + STP_HALF_PIXEL - 1) < stp_floor16(hi + STP_HALF_PIXEL - 1))
-            return 1;
+    int32_t t, row, mid, end, slope;
+    uint32_t acc;
+    if ((uint32_t)(x0 | x1 | x2) >> 14)
+        return 1; /* not narrow: kept untested */
+    /* sorted by y (the order of tied vertices changes no row's edges) */
+    if (y1 < y0) {
+        t = x0, x0 = x1, x1 = t;
+        t = y0, y0 = y1, y1 = t;
     }
-    return 0;
+    if (y2 < y1) {
+        t = x1, x1 = x2, x2 = t;
+        t = y1, y1 = y2, y2 = t;
+        if (y1 < y0) {
+            t = x0, x0 = x1, x1 = t;
+            t = y0, y0 = y1, y1 = t;
+        }
+    }
+    if (!STP_CENTRE_GATE_INLINE && !stp_render_thin(x0, y0, x1, y1, x2, y2))
+        return 1; /* not tested (the caller's gate, here on 32-bit targets) */
+    /* the rows whose centre lies in [y0, y1), then [y1, y2) */
+    row = (y0 + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS; /* y >= 0 */
+    mid = (y1 + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS;
+    end = (y2 + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS;
+    if (row == end)
+        return 0;
+    slope = stp_slope_q16_short(x2 - x0, y2 - y0);
+    acc = (uint32_t)x0 * 65536u + (uint32_t)(row * 16 + STP_HALF_PIXEL - y0) * (uint32_t)slope;
+    if (row < mid && half_reached(&acc, (uint32_t)slope * 16u, x0, y0, x1, y1, row, mid))
+        return 1;
+    return mid < end && half_reached(&acc, (uint32_t)slope * 16u, x1, y1, x2, y2, mid, end);
 }
 
 /* ---- the face stage (render_private.h): shared with mesh.c ---- */
@@ -1678,7 +1694,7 @@ static int enter_model_triangle(stp_renderer *r, stp_entry *e, const stp_model_f
     project_entered_vertex(r, 1, &p[1]);
     project_entered_vertex(r, 2, &p[2]);
 #endif
-    if (!stp_render_triangle_shows(r, r->pixel_cull ? STP_CENTRE_TEST_MAX : 0, p[0].x, p[0].y, p[1].x,
+    if (!stp_render_triangle_shows(r, r->pixel_cull, p[0].x, p[0].y, p[1].x,
                                    p[1].y, p[2].x, p[2].y))
         return STP_OK; /* between two row centres, or pixel culling: draws nothing */
     stp_render_view_normal(f, n, side, nv);

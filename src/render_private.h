@@ -246,18 +246,48 @@ STP_HOT_INLINE int32_t stp_render_row_count(int32_t a, int32_t b, int32_t c)
            (int32_t)((uint32_t)(lo + below_centre) >> STP_SUBPIXEL_BITS);
 }
 
-/* The triangles pixel culling tests by their crossings: at most
- * STP_CENTRE_TEST_MAX row centres (the callers' test) and
- * STP_CENTRE_TEST_COLUMNS candidate centres, pixel centres across times
- * rows (stp_render_centre_reached's).  Measured on the benchmark tori
- * (host, callgrind): larger ones rarely miss every centre, and testing
- * them cost the 1000-triangle torus more than it saved. */
-#define STP_CENTRE_TEST_MAX 1
-#define STP_CENTRE_TEST_COLUMNS 2
+/* The triangles pixel culling tests by their crossings: those spanning
+ * at most STP_CENTRE_TEST_MAX row centres (the callers' test) whose twice
+ * area, |(x1 - x0) (y2 - y0) - (x2 - x0) (y1 - y0)| in Q8 (512 for a
+ * triangle of one square pixel), is below STP_CENTRE_TEST_AREA (0.5625 of
+ * a pixel: stp_render_thin); others are kept untested.  Measured on the
+ * 1000-triangle torus at 128x64 (host, callgrind, the cull on): of its
+ * 459 front triangles a frame that span a row centre 62 reach no pixel
+ * centre, 56 of them below a pixel of area and none of those above 5
+ * rows, while one of 0.5 to 1 pixel is drawn twice as often as not, and
+ * larger ones nearly always: testing those costs more than culling them
+ * saves (about 600 instructions: shade, records, scan and walk).  The
+ * area's two products cost less than the bounding box's column count
+ * (the gate before) and select better; 4 or 3 rows save less at 128x64
+ * (a frame 602.2 K, 5 rows; 605.3 K, 4; 606.0 K, 3) and cost less at
+ * 400x240 (1 156.5 K; 1 155.9 K; 1 155.5 K; 1 155.3 K before). */
+#define STP_CENTRE_TEST_MAX 5
+#define STP_CENTRE_TEST_AREA 576
+#if STP_CENTRE_TEST_MAX > 7
+#error "stp_render_thin's products in int32 need STP_CENTRE_TEST_MAX <= 7"
+#endif
+
+/* Whether stp_render_triangle_shows tests the gate in line (the hosts
+ * with 64-bit registers: a call a triangle costs more than the area) or
+ * stp_render_centre_reached does (32-bit targets, whose mesh face loop,
+ * where pixel culling is off, keeps its code: its registers are scarce).
+ * The same triangles are tested either way. */
+#define STP_CENTRE_GATE_INLINE STP_WIDE_ARITH
+
+/* Whether a triangle spanning at most STP_CENTRE_TEST_MAX row centres
+ * with device vertices (Q27.4, >= 0, x below 2^19: width <= 32767) is thin
+ * enough for pixel culling to test (above).  Its y lie within 16 (7 + 1)
+ * = 2^7 of each other, so each product lies below 2^26 in magnitude and
+ * their difference below 2^27: int32 arithmetic. */
+STP_HOT_INLINE int stp_render_thin(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2, int32_t y2)
+{
+    int32_t twice_area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+    return (uint32_t)twice_area + (STP_CENTRE_TEST_AREA - 1u) < 2u * STP_CENTRE_TEST_AREA - 1u;
+}
 
 /* Whether a flat triangle with device vertices (x0, y0), (x1, y1), (x2,
- * y2) (Q27.4, >= 0; spanning a row centre: stp_render_row_count) may give
- * a pixel to one of its rows' spans; 0 only
+ * y2) (Q27.4, >= 0; spanning 1 to STP_CENTRE_TEST_MAX row centres:
+ * stp_render_row_count) may give a pixel to one of its rows' spans; 0 only
  * when neither raster (raster.c's draw_triangle and draw_polygon) draws a
  * pixel of it, in any mode but edge anti-aliasing (which also draws pixels
  * near the crossings of a row whose span is empty: so callers drop
@@ -265,32 +295,31 @@ STP_HOT_INLINE int32_t stp_render_row_count(int32_t a, int32_t b, int32_t c)
  * render refuses a display file entered so).  Both rasters draw on row r
  * (centre yc = 16 r + 8 in [ymin, ymax)) the pixel centres c with x_left
  * <= c < x_right, the two crossings of the edges covering yc
- * (stp_edge_setup: ya <= yc < yb, a the upper end), each floor(xa + (yc -
- * ya) q / 2^16) with q = 2^16 (xb - xa) / (yb - ya) truncated toward zero
- * (a stepped row's accumulator holds the same value).  That lies between
- * xa and the exact crossing, so within [xmin, xmax], and a drawn centre
- * lies in [xmin, xmax): none there and the triangle draws nothing.
- * Otherwise, for at most STP_CENTRE_TEST_COLUMNS candidate centres (pixel
- * centres there times rows) and every coordinate below 2^14, it forms
- * those crossings as the rasters do (stp_tri_sort, stp_edge_acc_short:
- * the triangle raster's own order and accumulator); others are kept (1).
- * A call of its own (render.c), so that the callers' path without the cull
- * stays as it is. */
+ * (stp_edge_setup: ya <= yc < yb, a the upper end), each floor((xa 2^16 +
+ * (yc - ya) q) / 2^16) with q = 2^16 (xb - xa) / (yb - ya) truncated
+ * toward zero (stp_edge_acc_short; a row stepped to holds the same
+ * value).  For every x below 2^14 (others are kept, 1; the y extent is
+ * below 16 (STP_CENTRE_TEST_MAX + 1)) it forms those crossings so, row
+ * by row (each row's two edges are the same whatever order tied vertices
+ * take); where the gate is not in line (STP_CENTRE_GATE_INLINE) it keeps
+ * a triangle that is not thin first.  A call of its own (render.c), so that the callers' path without
+ * the cull stays as it is. */
 int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2, int32_t y2);
 
 /* Whether a flat triangle inside the view with device vertices (x0, y0),
  * (x1, y1), (x2, y2) (Q27.4, >= 0) may draw: it spans a row centre
  * (stp_render_row_count) and, spanning at most test_rows (pixel culling's
- * STP_CENTRE_TEST_MAX, 0 when off), reaches a pixel centre.  A culled one
- * marks the open segment (it lost a sliver edge AA would draw: render.h).
- * Both entries test their triangles so before shading them. */
+ * STP_CENTRE_TEST_MAX, 0 when off) and thin, reaches a pixel centre.  A
+ * culled one marks the open segment (it lost a sliver edge AA would draw:
+ * render.h).  Both entries test their triangles so before shading them. */
 STP_HOT_INLINE int stp_render_triangle_shows(stp_renderer *r, int32_t test_rows, int32_t x0, int32_t y0,
                                              int32_t x1, int32_t y1, int32_t x2, int32_t y2)
 {
     int32_t rows = stp_render_row_count(y0, y1, y2);
     if (rows == 0)
         return 0;
-    if (STP_UNLIKELY(rows <= test_rows) && !stp_render_centre_reached(x0, y0, x1, y1, x2, y2)) {
+    if (STP_UNLIKELY(rows <= test_rows) && (!STP_CENTRE_GATE_INLINE || stp_render_thin(x0, y0, x1, y1, x2, y2)) &&
+        !stp_render_centre_reached(x0, y0, x1, y1, x2, y2)) {
         r->segments[r->open_segment].pixel_culled = 1;
         return 0;
     }

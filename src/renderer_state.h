@@ -117,7 +117,8 @@ struct stp_renderer {
 #endif
     int shading, backface_removal;
     /* stp_renderer_set_pixel_cull: triangles reaching no pixel centre are
-     * left out at entry (stp_render_centre_reached) */
+     * left out at entry (stp_render_centre_reached); the rows a triangle
+     * it tests may span (STP_CENTRE_TEST_MAX), 0 when off */
     int pixel_cull;
     int current_style;      /* polygon style last entered in the open segment, -1 none */
     int current_line_style; /* line style likewise */

@@ -14,7 +14,11 @@
  *     display file with it on;
  *   - a render with edge anti-aliasing of a display file from which it
  *     dropped a triangle is refused (STP_ERR_UNSUPPORTED), until that
- *     segment is gone; one from which it dropped nothing is drawn.
+ *     segment is gone; one from which it dropped nothing is drawn;
+ *   - random small triangles and slivers in device coordinates, each
+ *     drawn alone from a display file of its own: every one the cull's
+ *     verdict (stp_render_triangle_shows) drops lights no pixel, and it
+ *     drops most of those that light none.
  * Built against the host core (test_pixel_cull) and the 32-bit target
  * arithmetic (test_pixel_cull_narrow: stipple_core_m0plus_full).
  */
@@ -28,6 +32,8 @@
 #include <cmocka.h>
 
 #include "torus.h"
+#include "stipple/playback.h"
+#include "render_private.h" /* stp_render_triangle_shows: the cull's verdict */
 
 /* Whether any pixel of b's last frame is lit. */
 static int frame_lit(const torus_bench *b)
@@ -296,6 +302,116 @@ static void test_edge_aa_refused(void **state)
     torus_bench_free(&b);
 }
 
+/* xorshift32: the same triangles on every run */
+static uint32_t next_random(uint32_t *s)
+{
+    *s ^= *s << 13;
+    *s ^= *s >> 17;
+    *s ^= *s << 5;
+    return *s;
+}
+
+/* A value in [-span, span]. */
+static int32_t around(uint32_t *s, int32_t span)
+{
+    return (int32_t)(next_random(s) % (uint32_t)(2 * span + 1)) - span;
+}
+
+/* Device vertices (Q27.4) of a random triangle inside a w x h frame: a
+ * small one, a tiny one or a sliver (a third vertex near the segment
+ * between two others), each vertex within 64 of one inside a four-pixel
+ * margin. */
+static void random_triangle(uint32_t *s, int w, int h, int32_t v[6])
+{
+    int32_t bx = 64 + (int32_t)(next_random(s) % (uint32_t)(16 * (w - 8))),
+            by = 64 + (int32_t)(next_random(s) % (uint32_t)(16 * (h - 8)));
+    int kind = (int)(next_random(s) % 3u), k;
+    int32_t span = kind == 1 ? 16 : 40;
+    v[0] = bx;
+    v[1] = by;
+    for (k = 2; k < 6; k += 2) {
+        v[k] = bx + around(s, span);
+        v[k + 1] = by + around(s, span);
+    }
+    if (kind == 2) { /* a sliver: the third vertex along the first edge, jittered */
+        int32_t t = (int32_t)(next_random(s) % 17u);
+        v[2] = bx + around(s, 58);
+        v[3] = by + around(s, 58);
+        v[4] = bx + (v[2] - bx) * t / 16 + around(s, 6);
+        v[5] = by + (v[3] - by) * t / 16 + around(s, 6);
+    }
+}
+
+/* Whether triangle v, drawn alone (white on black, Z buffer) from a
+ * display file of its own into b's frame, lights a pixel: the rasters'
+ * own pixels. */
+static int triangle_lit(torus_bench *b, const int32_t v[6], void *mem)
+{
+    stp_instr df[3];
+    stp_renderer *pr;
+    int k;
+    memset(df, 0, sizeof df);
+    for (k = 0; k < 3; k++) {
+        df[k].op = k == 0 ? 3 : STP_OP_LINE;
+        df[k].x = v[2 * k];
+        df[k].y = v[2 * k + 1];
+        df[k].z = 1 << 20;
+#if STP_WITH_GOURAUD
+        df[k].shade = -1;
+#endif
+    }
+    pr = stp_playback_create(mem, stp_renderer_size(), df, 3, b->width, b->height, 16, 16);
+    assert_non_null(pr);
+    memset(b->frame, 0x5A, b->stride * (size_t)b->height);
+    assert_int_equal(stp_renderer_render(pr, &b->port, &b->output, &b->memory), STP_OK);
+    return frame_lit(b);
+}
+
+/* Random small triangles and slivers against the rasters: each the cull
+ * drops lights no pixel, and it drops most of those that light none (the
+ * area gate's kinds). */
+static void test_random_small_triangles(void **state)
+{
+    static torus_bench b;
+    static const int32_t big[6] = {16, 16, 16 * 38, 24, 40, 16 * 22};
+    char err[256];
+    uint32_t seed = 0x2545F491u;
+    void *mem = malloc(stp_renderer_size());
+    size_t i, spanning = 0, unlit = 0, dropped = 0, dropped_unlit = 0;
+    (void)state;
+    assert_non_null(mem);
+    assert_int_equal(torus_bench_init(&b, 40, 24, err, sizeof err), 0);
+    assert_int_equal(stp_renderer_set_pixel_cull(b.r, 1), STP_OK);
+    assert_int_equal(stp_segment_create(b.r, 2), STP_OK); /* the verdict marks the open segment */
+    assert_true(triangle_lit(&b, big, mem)); /* the reference draws */
+    for (i = 0; i < 40000; i++) {
+        int32_t v[6];
+        int lit, shows;
+        random_triangle(&seed, 40, 24, v);
+        if (stp_render_row_count(v[1], v[3], v[5]) == 0)
+            continue; /* between two row centres: left out untested */
+        spanning++;
+        shows = stp_render_triangle_shows(b.r, STP_CENTRE_TEST_MAX, v[0], v[1], v[2], v[3], v[4], v[5]);
+        lit = triangle_lit(&b, v, mem);
+        if (!shows && lit) {
+            fprintf(stderr, "(%d,%d) (%d,%d) (%d,%d): dropped, but it draws\n", (int)v[0], (int)v[1],
+                    (int)v[2], (int)v[3], (int)v[4], (int)v[5]);
+            fail();
+        }
+        unlit += !lit;
+        dropped += !shows;
+        dropped_unlit += !shows && !lit;
+    }
+    assert_int_equal(stp_segment_close(b.r), STP_OK);
+    fprintf(stderr, "  random triangles: %zu span a row centre, %zu of them light no pixel, %zu dropped\n",
+            spanning, unlit, dropped);
+    assert_int_equal(dropped, dropped_unlit);
+    assert_true(unlit >= 2000);
+    assert_true(dropped * 10 >= unlit * 6); /* most */
+    free(mem);
+    torus_bench_free(&b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -304,6 +420,7 @@ int main(void)
         cmocka_unit_test(test_frames_equal_benchmark_torus),
         cmocka_unit_test(test_frames_equal_fine_torus),
         cmocka_unit_test(test_edge_aa_refused),
+        cmocka_unit_test(test_random_small_triangles),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
