@@ -116,11 +116,12 @@ static const uint16_t rsqrt_node[49] STP_TABLE = {
 
 /* The reciprocal's seed: 2^31 / x at the middle of [256 + i, 257 + i) 2^7,
  * rounded to nearest: (2^25 + k) / (2 k + 1) with k = 256 + i, the
- * quotient truncated.  A table where a multiply is an instruction; on
- * targets without one (AVR) the quotient itself (a 32 / 16-bit library
- * division, which such an image links anyway, instead of 512 bytes of
- * flash), the same seeds. */
-#if STP_HAVE_MUL32
+ * quotient truncated.  A table where a multiply is an instruction; in
+ * size-first builds (STP_SMALL_DIVISION) recip.c's stp_recip_seed, the
+ * same values computed; on targets without a multiply (AVR) the quotient
+ * itself (a 32 / 16-bit library division, which such an image links
+ * anyway, instead of 512 bytes of flash), the same seeds. */
+#if STP_HAVE_MUL32 && !STP_SMALL_DIVISION
 static const uint16_t recip_seed[256] STP_TABLE = {
     65408, 65154, 64902, 64652, 64404, 64158, 63913, 63671, 63430, 63191, 62954, 62719,
     62485, 62253, 62023, 61795, 61568, 61343, 61119, 60897, 60677, 60458, 60241, 60026,
@@ -146,6 +147,8 @@ static const uint16_t recip_seed[256] STP_TABLE = {
     32994, 32929, 32864, 32800,
 };
 #define RECIP_SEED(k) STP_TABLE_U16(&recip_seed[(k) & 0xFFu]) /* k in [256, 512): k - 256 */
+#elif STP_HAVE_MUL32
+#define RECIP_SEED(k) stp_recip_seed(2u * (k) + 1u) /* round(2^25 / (2 k + 1)) */
 #else
 #define RECIP_SEED(k) ((((uint32_t)1 << 25) + (k)) / (2u * (k) + 1u))
 #endif
