@@ -119,7 +119,8 @@ typedef struct stp_unit3 {
  * STP_UNIT vector in *out, and its length in the input's units (rounded
  * to nearest; error below 2^-28 relative plus half a unit).  No division: the squared length of
  * the vector scaled to 30 bits is seeded from a 192-entry table of
- * 1/sqrt and refined by two Newton steps (relative error below 2^-29).
+ * 1/sqrt (builds for size: the same seeds from stp_rsqrt_norm) and
+ * refined by two Newton steps (relative error below 2^-29).
  * A zero vector returns 0 and leaves *out = 0. */
 int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out);
 /* The same direction as Q1.14 in out[] (STP_UNIT rounded to nearest:
