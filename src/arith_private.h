@@ -374,11 +374,19 @@ STP_SIZE_CALL uint32_t stp_umulhi32_approx(uint32_t a, uint32_t b)
 /* ---- bit counts ---- */
 
 /* Significant bits of v (0 for 0, else floor(log2 v) + 1): one
- * instruction with STP_HAVE_CLZ, else three halvings of the range and a
- * 16-entry table (GCC's __builtin_clz would be a library call). */
+ * instruction with STP_HAVE_CLZ; in other builds for size on cores with a
+ * 32-bit multiply (ARMv6-M) GCC's __builtin_clz, the C library's one copy
+ * (its three halvings and table, which stp_bit_length64 links anyway),
+ * not this function's copy in each file; else three halvings of the range
+ * and a 16-entry table. */
+#if STP_HAVE_CLZ || (defined(__GNUC__) && defined(__OPTIMIZE_SIZE__) && STP_HAVE_MUL32)
+#define STP_BIT_LENGTH_CLZ 1 /* stp_bit_length32 is __builtin_clz's */
+#else
+#define STP_BIT_LENGTH_CLZ 0
+#endif
 STP_HOT_INLINE int stp_bit_length32(uint32_t v)
 {
-#if STP_HAVE_CLZ
+#if STP_BIT_LENGTH_CLZ
     return v == 0 ? 0 : 32 - __builtin_clz(v);
 #elif STP_LEAN_CODE
     /* a byte at a time (a move on an 8-bit core), then bit by bit: a

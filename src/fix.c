@@ -295,8 +295,22 @@ stp_fix stp_vec3_unity(stp_vec3 v, stp_vec3 *out)
 
 /* ---- STP_UNIT vectors (fix_private.h) ---- */
 
-/* 1/sqrt(i/64 + 1 + 1/128) in Q16 for i = 0..191: the root at the middle
- * of each 64th of [1, 4) (relative error of a seed below 2^-8). */
+/* fix_private.h's stp_rsqrt_norm_inline, out of line */
+uint32_t stp_rsqrt_norm(uint32_t q)
+{
+    return stp_rsqrt_norm_inline(q);
+}
+
+/* 1/sqrt(i/64 + 1 + 1/128) in Q16 for i = 0..191, rounded to nearest:
+ * the root at the middle of each 64th of [1, 4) (relative error of a seed
+ * below 2^-8).  In builds for size on cores with a 32-bit multiply the
+ * same values from stp_rsqrt_norm at that middle, (2 (m >> 24) + 1) 2^23:
+ * 2^31 / sqrt of it, within 2^-7 of a unit and never that near a half
+ * (all 192 checked, test_fix), instead of 384 bytes of table. */
+#if defined(__OPTIMIZE_SIZE__) && STP_HAVE_MUL32
+#define RSQRT_SEED(m) ((stp_rsqrt_norm(((m) & 0xFF000000u) | 0x800000u) + 0x4000u) >> 15)
+#else
+#define RSQRT_SEED(m) STP_TABLE_U16(&rsqrt_seed[((m) >> 24) - 64])
 static const uint16_t rsqrt_seed[192] STP_TABLE = {
     65281, 64781, 64292, 63814, 63347, 62889, 62442, 62004, 61575, 61154, 60742, 60339,
     59943, 59555, 59175, 58801, 58435, 58075, 57722, 57376, 57035, 56700, 56372, 56049,
@@ -314,6 +328,7 @@ static const uint16_t rsqrt_seed[192] STP_TABLE = {
     35307, 35228, 35148, 35070, 34991, 34914, 34837, 34760, 34684, 34608, 34533, 34458,
     34384, 34310, 34237, 34164, 34092, 34020, 33949, 33878, 33807, 33737, 33668, 33599,
     33530, 33461, 33393, 33326, 33259, 33192, 33126, 33060, 32994, 32929, 32864, 32800};
+#endif
 
 /* floor(a b / 2^s) for 16 <= s < 32 and a result below 2^32 (the caller's
  * bound): exact.  Without STP_HAVE_MUL64 (the only builds that use it),
@@ -377,7 +392,7 @@ STP_HOT_INLINE uint32_t rsqrt_step_narrow(uint32_t m, uint32_t y)
 /* 1/sqrt(m / 2^30) in Q30 for m in [2^30, 2^32). */
 static inline uint64_t rsqrt_q30(uint32_t m)
 {
-    uint64_t y = (uint64_t)STP_TABLE_U16(&rsqrt_seed[(m >> 24) - 64]) << 14;
+    uint64_t y = (uint64_t)RSQRT_SEED(m) << 14;
     int k;
     /* Newton for 1/sqrt: y <- y (3 - m y^2) / 2; each step squares the
      * relative error (2^-8 -> 2^-15 -> 2^-29 with the rounding).  m y^2 stays

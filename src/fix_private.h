@@ -119,7 +119,8 @@ typedef struct stp_unit3 {
  * STP_UNIT vector in *out, and its length in the input's units (rounded
  * to nearest; error below 2^-28 relative plus half a unit).  No division: the squared length of
  * the vector scaled to 30 bits is seeded from a 192-entry table of
- * 1/sqrt and refined by two Newton steps (relative error below 2^-29).
+ * 1/sqrt (builds for size: the same seeds from stp_rsqrt_norm) and
+ * refined by two Newton steps (relative error below 2^-29).
  * A zero vector returns 0 and leaves *out = 0. */
 int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out);
 /* The same direction as Q1.14 in out[] (STP_UNIT rounded to nearest:
@@ -137,6 +138,42 @@ int stp_unit_q14_from32(int32_t x, int32_t y, int32_t z, int16_t out[3]);
  * 1/sqrt(v) = y 2^-exponent (relative error below 2^-29; table seed and
  * two Newton steps, no division). */
 uint32_t stp_rsqrt64(uint64_t v, int *exponent);
+
+/* The seed's chord nodes of stp_rsqrt_norm: 2^18 / sqrt(16 + i) (2^31 /
+ * sqrt(q) at q = (16 + i) 2^26), each lowered by 3/(64 (16 + i)^2) of
+ * itself, so that the chord between neighbours, which lies above the
+ * convex 1/sqrt by up to 3/(32 x^2), is within 2^-12.3 of it on either
+ * side; all below 2^16.  Static: a file that inlines the root has its
+ * copy (addressed with the file's other tables: an external table cost
+ * the ARMv6-M face shading's -O2 code its shared base address). */
+static const uint16_t stp_rsqrt_node[49] STP_TABLE = {
+    65524, 63569, 61779, 60132, 58610, 57198, 55884, 54656, 53506, 52425, 51407, 50446, 49538,
+    48676, 47858, 47080, 46339, 45631, 44956, 44309, 43689, 43095, 42524, 41975, 41447, 40939,
+    40449, 39976, 39519, 39077, 38650, 38237, 37836, 37448, 37072, 36707, 36352, 36008, 35673,
+    35347, 35030, 34721, 34421, 34128, 33842, 33564, 33292, 33027, 32768,
+};
+
+/* 1/sqrt(q) for q in [2^30, 2^32): r in (2^30, 2^31] with 1/sqrt(q) =
+ * r 2^-46, relative error below 2^-23 (2^-24.2 over 300 000 random q).
+ * The seed y ~ 2^31/sqrt(q) is the chord of two nodes at q's 16-bit
+ * fraction of its step (2^-12.3; the nodes differ by less than 2^11, so
+ * the product stays below 2^27), refined by one Newton step with the
+ * high word of q y^2, which keeps the 15 more bits of its correction in r
+ * (e y 2^-16 as two 32-bit products).  A table step and a product where a
+ * first Newton step on 16-bit operands (2^-6 to 2^-11) cost twice as many
+ * instructions on ARMv6-M.  Inline for the face shading (shade_fast.c)
+ * where time counts; stp_rsqrt_norm is its one out-of-line copy (builds
+ * for size, and stp_rsqrt64's seeds there). */
+STP_HOT_INLINE uint32_t stp_rsqrt_norm_inline(uint32_t q)
+{
+    const uint16_t *node = &stp_rsqrt_node[(q >> 26) - 16u]; /* both nodes from one address */
+    uint32_t y0 = STP_TABLE_U16(node);
+    uint32_t y = y0 - (((y0 - STP_TABLE_U16(node + 1)) * ((q >> 10) & 0xFFFFu)) >> 16);
+    /* q y^2 2^-32 ~ 2^30 (y < 2^16: y^2 < 2^32); |e| < 2^19 */
+    int32_t e = ((int32_t)1 << 30) - (int32_t)stp_umulhi32_approx(q, y * y);
+    return (y << 15) + (uint32_t)(stp_asr32(e, 16) * (int32_t)y + (int32_t)((stp_lo16((uint32_t)e) * y) >> 16));
+}
+uint32_t stp_rsqrt_norm(uint32_t q);
 
 /* sqrt(v), rounded down within 2^-29 relative (not the exact floor
  * stp_isqrt64 gives), from stp_rsqrt64: a few multiplications instead of a

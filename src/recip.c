@@ -31,6 +31,35 @@ uint32_t stp_recip32(uint32_t d)
     return v;
 }
 #else
+#if STP_SMALL_DIVISION
+/* round(2^25 / d) = floor((2^25 + floor(d / 2)) / d) for d in [513, 1024)
+ * (recip_private.h): q = 2^25 / d by the chord of 1/x over [1/2, 1) (2^15
+ * (48 - 32 x) / 17 at x = d / 1024, relative error below 1/17) and two
+ * Newton steps q + q (n - d q) / 2^25 (to 2^-8.2, then within 2 units);
+ * the remainder's corrections make it exact (for every d: at most one
+ * step; |products| < 2^30).  88 bytes of code (ARMv6-M, -Os) in place of
+ * the two tables' 768, in less time than a 32-bit division's loop. */
+uint32_t stp_recip_seed(uint32_t d)
+{
+    int32_t n = ((int32_t)1 << 25) + (int32_t)(d >> 1), m = (int32_t)d;
+    int32_t q = 92521 - (int32_t)((d * 15420u) >> 8), r;
+    q += stp_asr32((q >> 4) * stp_asr32(n - m * q, 7), 14);
+    q += stp_asr32((q >> 3) * (n - m * q), 22);
+    r = n - m * q;
+    while (r < 0) {
+        q--;
+        r += m;
+    }
+    while (r >= m) {
+        q++;
+        r -= m;
+    }
+    return (uint32_t)q;
+}
+/* the table's entries computed: 2^47 / m at interval i's middle is 2^25 /
+ * (514 + 4 i) */
+#define RECIP_SEED_AT(i) stp_recip_seed(514u + 4u * (i))
+#else
 /* RECIP_SEED[i] = round(2^24 / (257 + 2 i)): 2^47 / m at the middle of the
  * i-th of 128 equal intervals of m in [2^31, 2^32) (m's bits 30..24 are i).
  * Relative error against 2^47 / m anywhere in the interval: below
@@ -54,6 +83,8 @@ static const uint16_t RECIP_SEED[128] STP_TABLE = {
     34880u, 34735u, 34592u, 34450u, 34309u, 34169u, 34031u, 33893u,
     33757u, 33622u, 33487u, 33354u, 33222u, 33091u, 32961u, 32832u,
 };
+#define RECIP_SEED_AT(i) STP_TABLE_U16(&RECIP_SEED[i])
+#endif
 
 uint32_t stp_recip32_estimate(uint32_t d)
 {
@@ -61,7 +92,7 @@ uint32_t stp_recip32_estimate(uint32_t d)
     uint64_t p;
     if (d < 0x80000000u)
         return 0;
-    y0 = STP_TABLE_U16(&RECIP_SEED[(d >> 24) & 127u]); /* ~ 2^47 / d */
+    y0 = RECIP_SEED_AT((d >> 24) & 127u); /* ~ 2^47 / d */
     /* Newton step 1 in 32 bits: y1 = y0 2^16 + y0 (2^47 - d y0) / 2^31.
      * u = (2^47 - d y0) / 2^16 (mod 2^32; |u| < 2^23 as a signed value:
      * the seed's error is below 1/257); at / 2^8 keeps 15 bits of it, so
@@ -143,7 +174,7 @@ uint32_t stp_recip_u32(uint32_t d)
         dn <<= 1;
         t -= 1;
     }
-    y0 = STP_TABLE_U16(&RECIP_SEED[(dn >> 24) & 127u]);
+    y0 = RECIP_SEED_AT((dn >> 24) & 127u);
     u = (int32_t)(0x40000000u - 256u) - (int32_t)(((dn >> 16) * y0) >> 1) - (int32_t)((stp_lo16(dn) * y0) >> 17);
     c1 = stp_asr32((int32_t)y0 * stp_asr32(u, 7), 7);
     y = (y0 << 16) + (uint32_t)(c1 + stp_asr32(stp_asr32(c1, 8) * stp_asr32(u, 7), 15));

@@ -21,6 +21,14 @@
  * correction.  d outside the range returns 0. */
 uint32_t stp_recip32(uint32_t d);
 
+#if STP_HAVE_MUL32 && STP_SMALL_DIVISION
+/* round(2^25 / d) for d in [513, 1024), exact (all checked: test_recip):
+ * the reciprocal seeds (stp_recip32's 2^47 / m, shade_fast.c's 2^31 / m
+ * at an interval's middle) computed in size-first builds, in place of
+ * their tables. */
+uint32_t stp_recip_seed(uint32_t d);
+#endif
+
 #if STP_HAVE_MUL32
 /* stp_recip32's value or up to 2 below it (its seed and Newton steps
  * without the remainder's correction, a 32 x 32 -> 64-bit product and a

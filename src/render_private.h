@@ -45,6 +45,27 @@ static inline int stp_render_unit_q14(int64_t a, int64_t b, int64_t c, int16_t o
  * coordinates): the edge vectors (below 2^33) cut to 30 bits together
  * (floor), so each term is below 2^61 and each component below 2^62; the
  * cut keeps the direction within 2^-28 of the exact one. */
+#if defined(__OPTIMIZE_SIZE__)
+/* in builds for size: the same values from loops over the components */
+static inline void stp_render_triangle_cross(const stp_vec3 *v, int64_t c[3])
+{
+    int64_t e[6]; /* v1 - v0, v2 - v0 */
+    uint64_t spread = 0;
+    int i, bits;
+    for (i = 0; i < 3; i++) {
+        e[i] = (int64_t)stp_vec3_comp(&v[1], i) - stp_vec3_comp(&v[0], i);
+        e[3 + i] = (int64_t)stp_vec3_comp(&v[2], i) - stp_vec3_comp(&v[0], i);
+        spread |= stp_abs64u(e[i]) | stp_abs64u(e[3 + i]);
+    }
+    bits = stp_bit_length64(spread) - 30;
+    for (i = 0; i < 6 && bits > 0; i++)
+        e[i] = stp_asr64(e[i], bits);
+    for (i = 0; i < 3; i++) {
+        int j = i == 2 ? 0 : i + 1, k = i == 0 ? 2 : i - 1;
+        c[i] = e[j] * e[3 + k] - e[k] * e[3 + j];
+    }
+}
+#else
 static inline void stp_render_triangle_cross(const stp_vec3 *v, int64_t c[3])
 {
     int64_t x1 = (int64_t)v[1].x - v[0].x, y1 = (int64_t)v[1].y - v[0].y,
@@ -86,6 +107,7 @@ static inline void stp_render_triangle_cross(const stp_vec3 *v, int64_t c[3])
     c[1] = z1 * x2 - x1 * z2;
     c[2] = x1 * y2 - y1 * x2;
 }
+#endif
 
 /* a triangle's normal (stp_render_model_normal for n = 3): its cross
  * product, normalised. */

@@ -103,24 +103,14 @@ static inline int32_t mul_q16(int32_t a, uint32_t m)
 
 /* ---- reciprocal square root and reciprocal ---- */
 
-/* The seed's chord nodes: 2^18 / sqrt(16 + i) (2^31 / sqrt(q) at q =
- * (16 + i) 2^26), each lowered by 3/(64 (16 + i)^2) of itself, so that the
- * chord between neighbours, which lies above the convex 1/sqrt by up to
- * 3/(32 x^2), is within 2^-12.3 of it on either side; all below 2^16. */
-static const uint16_t rsqrt_node[49] STP_TABLE = {
-    65524, 63569, 61779, 60132, 58610, 57198, 55884, 54656, 53506, 52425, 51407, 50446, 49538,
-    48676, 47858, 47080, 46339, 45631, 44956, 44309, 43689, 43095, 42524, 41975, 41447, 40939,
-    40449, 39976, 39519, 39077, 38650, 38237, 37836, 37448, 37072, 36707, 36352, 36008, 35673,
-    35347, 35030, 34721, 34421, 34128, 33842, 33564, 33292, 33027, 32768,
-};
-
 /* The reciprocal's seed: 2^31 / x at the middle of [256 + i, 257 + i) 2^7,
  * rounded to nearest: (2^25 + k) / (2 k + 1) with k = 256 + i, the
- * quotient truncated.  A table where a multiply is an instruction; on
- * targets without one (AVR) the quotient itself (a 32 / 16-bit library
- * division, which such an image links anyway, instead of 512 bytes of
- * flash), the same seeds. */
-#if STP_HAVE_MUL32
+ * quotient truncated.  A table where a multiply is an instruction; in
+ * size-first builds (STP_SMALL_DIVISION) recip.c's stp_recip_seed, the
+ * same values computed; on targets without a multiply (AVR) the quotient
+ * itself (a 32 / 16-bit library division, which such an image links
+ * anyway, instead of 512 bytes of flash), the same seeds. */
+#if STP_HAVE_MUL32 && !STP_SMALL_DIVISION
 static const uint16_t recip_seed[256] STP_TABLE = {
     65408, 65154, 64902, 64652, 64404, 64158, 63913, 63671, 63430, 63191, 62954, 62719,
     62485, 62253, 62023, 61795, 61568, 61343, 61119, 60897, 60677, 60458, 60241, 60026,
@@ -146,27 +136,19 @@ static const uint16_t recip_seed[256] STP_TABLE = {
     32994, 32929, 32864, 32800,
 };
 #define RECIP_SEED(k) STP_TABLE_U16(&recip_seed[(k) & 0xFFu]) /* k in [256, 512): k - 256 */
+#elif STP_HAVE_MUL32
+#define RECIP_SEED(k) stp_recip_seed(2u * (k) + 1u) /* round(2^25 / (2 k + 1)) */
 #else
 #define RECIP_SEED(k) ((((uint32_t)1 << 25) + (k)) / (2u * (k) + 1u))
 #endif
 
-/* 1/sqrt(q) for q in [2^30, 2^32): r in (2^30, 2^31] with 1/sqrt(q) =
- * r 2^-46, relative error below 2^-23 (2^-24.2 over 300 000 random q).
- * The seed y ~ 2^31/sqrt(q) is the chord of two nodes at q's 16-bit
- * fraction of its step (2^-12.3; the nodes differ by less than 2^11, so
- * the product stays below 2^27), refined by one Newton step with the
- * high word of q y^2, which keeps the 15 more bits of its correction in r.
- * A table step and a product where a first Newton step on 16-bit operands
- * (2^-6 to 2^-11) cost twice as many instructions on ARMv6-M. */
-STP_HOT_INLINE uint32_t rsqrt_norm(uint32_t q)
-{
-    const uint16_t *node = &rsqrt_node[(q >> 26) - 16u]; /* both nodes from one address */
-    uint32_t y0 = STP_TABLE_U16(node);
-    uint32_t y = y0 - (((y0 - STP_TABLE_U16(node + 1)) * ((q >> 10) & 0xFFFFu)) >> 16);
-    /* q y^2 2^-32 ~ 2^30 (y < 2^16: y^2 < 2^32); |e| < 2^19 */
-    int32_t e = Q30 - (int32_t)stp_umulhi32_approx(q, y * y);
-    return (y << 15) + (uint32_t)mul_q16(e, y);
-}
+/* 1/sqrt(q) for q in [2^30, 2^32) (fix_private.h): inlined where time
+ * counts, fix.c's one copy in builds for size */
+#if defined(__OPTIMIZE_SIZE__)
+#define rsqrt_norm stp_rsqrt_norm
+#else
+#define rsqrt_norm stp_rsqrt_norm_inline
+#endif
 
 /* 2^31 / m for m in [2^15, 2^16): in (2^15, 2^16], error below 2^-15
  * relative: a seed (2^-9) and one Newton step y (2 - m y 2^-31).  Inlined

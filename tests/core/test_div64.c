@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* STP_SMALL_DIVISION's bit-serial 64-bit and 32-bit divisions (src/div64.c,
  * built here with the switch on) against C's own operator: signs, extremes
- * and a pseudo-random sweep of magnitudes. */
+ * and a pseudo-random sweep of magnitudes; and its computed reciprocal
+ * seeds (src/recip.c, stp_recip_seed) in stp_recip32. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -9,6 +10,7 @@
 #include <cmocka.h>
 
 #include "div64_private.h"
+#include "recip_private.h"
 
 static void check(int64_t num, int64_t den)
 {
@@ -95,12 +97,44 @@ static void test_udiv32(void **state)
     }
 }
 
+/* stp_recip_seed against the quotient for every d, and stp_recip32 (whose
+ * seeds it computes here; without a 32-bit multiply, STP_ARITH32's
+ * builds, its loop) against C's 64-bit division */
+static void test_recip_seed(void **state)
+{
+    uint32_t d, seed = 0x9E3779B9u;
+    int k;
+    (void)state;
+#if STP_HAVE_MUL32
+    for (d = 513; d < 1024; d++) {
+        uint32_t want = (((uint32_t)1 << 25) + (d >> 1)) / d;
+        if (stp_recip_seed(d) != want)
+            fail_msg("stp_recip_seed(%lu): got %lu, want %lu", (unsigned long)d, (unsigned long)stp_recip_seed(d),
+                     (unsigned long)want);
+    }
+#endif
+    for (k = 0; k < 200000; k++) {
+        uint32_t want;
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        d = seed | 0x80000000u;
+        if (k < 2)
+            d = k == 0 ? 0x80000000u : 0xFFFFFFFFu;
+        want = (uint32_t)(UINT64_MAX / d - ((uint64_t)1 << 32));
+        if (stp_recip32(d) != want)
+            fail_msg("stp_recip32(%lu): got %lu, want %lu", (unsigned long)d, (unsigned long)stp_recip32(d),
+                     (unsigned long)want);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_signs_and_edges),
         cmocka_unit_test(test_random_magnitudes),
         cmocka_unit_test(test_udiv32),
+        cmocka_unit_test(test_recip_seed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

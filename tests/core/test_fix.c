@@ -995,9 +995,26 @@ static void test_rsqrt_exact(void **state)
     }
 }
 
+/* stp_rsqrt_norm at the middle of each 64th of [1, 4) (2^30 units) is
+ * 2^15 times stp_rsqrt64's seed there, round(2^16 / sqrt(D / 128)) for D
+ * = 129, 131, .., 511, within half a unit: builds for size take the
+ * seeds from it (fix.c's RSQRT_SEED) */
+static void test_rsqrt_seeds_from_norm(void **state)
+{
+    uint32_t d;
+    (void)state;
+    for (d = 129; d < 512; d += 2) {
+        uint64_t s = (stp_rsqrt_norm(d << 23) + 0x4000u) >> 15, two41 = (uint64_t)1 << 41;
+        /* round(sqrt(2^39 / d)) = s: d (2 s - 1)^2 <= 2^41 < d (2 s + 1)^2 */
+        if (d * (2 * s - 1) * (2 * s - 1) > two41 || d * (2 * s + 1) * (2 * s + 1) <= two41)
+            fail_msg("seed %lu for D %lu is not the rounded root", (unsigned long)s, (unsigned long)d);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_rsqrt_seeds_from_norm),
         cmocka_unit_test(test_from_int_and_ratio),
         cmocka_unit_test(test_add_sub_saturate),
         cmocka_unit_test(test_mul_rounds_to_nearest),
