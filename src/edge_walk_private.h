@@ -209,13 +209,20 @@ typedef struct stp_tri_edge {
     stp_tri_acc acc, step;
 } stp_tri_edge;
 
+/* The walk's accumulators carry (STP_HALF_PIXEL - 1) 2^16 more than the
+ * crossing's: the first pixel centre at or right of crossing x, (x +
+ * STP_HALF_PIXEL - 1) >> SUB, is then acc >> (16 + SUB), one shift a
+ * crossing (stp_tri_walk_span).  Narrow, the sum stays below 2^31 (2^30 +
+ * 2^20 + 2^19). */
+#define STP_TRI_ACC_BIAS ((int32_t)(STP_HALF_PIXEL - 1) * 65536)
+
 static inline void stp_tri_edge_start(stp_tri_edge *e, const stp_tri_vertex *a, const stp_tri_vertex *b,
                                       stp_tri_coord yc)
 {
 #if STP_WIDE_ARITH
     int64_t slope = stp_slope_q16(STP_TRI_X(b) - STP_TRI_X(a), STP_TRI_Y(b) - STP_TRI_Y(a));
     int32_t dy = yc - STP_TRI_Y(a);
-    e->acc = (int64_t)STP_TRI_X(a) * 65536 +
+    e->acc = (int64_t)STP_TRI_X(a) * 65536 + STP_TRI_ACC_BIAS +
              (slope >= INT32_MIN && slope <= INT32_MAX ? stp_smul32x32(dy, (int32_t)slope) : (int64_t)dy * slope);
     e->step = slope * 16;
 #else
@@ -225,27 +232,29 @@ static inline void stp_tri_edge_start(stp_tri_edge *e, const stp_tri_vertex *a, 
      * its step is used only while |slope| < 2^27 (above), where it is
      * 16 slopes exactly */
     int32_t slope;
-    e->acc = stp_edge_acc_short(a, b, yc, &slope);
+    e->acc = stp_edge_acc_short(a, b, yc, &slope) + (uint32_t)STP_TRI_ACC_BIAS;
     e->step = (uint32_t)slope * 16u;
 #endif
 }
 
-/* floor(acc / 2^16) of an edge accumulator at a row centre the edge
- * crosses: 2^16 times a point between xa and the edge's exact crossing
- * (the slope is truncated toward zero), so 0 <= acc < 2^30 (x >= 0) and,
- * narrow, its 32 bits are its value and the crossing is below 2^14 */
-static inline stp_tri_x stp_tri_edge_x(stp_tri_acc acc)
+/* The first pixel centre at or right of the crossing x = floor(acc' /
+ * 2^16) of an edge accumulator at a row centre the edge crosses, acc' =
+ * acc less STP_TRI_ACC_BIAS: 2^16 times a point between xa and the edge's
+ * exact crossing (the slope is truncated toward zero), so 0 <= acc' <
+ * 2^30 (x >= 0) and, narrow, its 32 bits are its value and the crossing
+ * is below 2^14; (x + STP_HALF_PIXEL - 1) >> SUB = floor((acc' +
+ * STP_TRI_ACC_BIAS) / 2^(16 + SUB)) */
+static inline stp_tri_x stp_tri_edge_pixel(stp_tri_acc acc)
 {
-    return (stp_tri_x)(acc >> 16);
+    return (stp_tri_x)(acc >> (16 + STP_SUBPIXEL_BITS));
 }
 
 /* The pixels [*p1, *p2] of 0..width-1 (width <= 32767) whose centres c
- * satisfy xl <= c < xr (stp_span_pixels) for crossings xl, xr >= 0
- * (within the vertices' x extent): the first centres at or right of xl
- * and xr come by a shift. */
-static inline int stp_tri_span_pixels(stp_tri_x xl, stp_tri_x xr, uint32_t width, uint32_t *p1, uint32_t *p2)
+ * satisfy xl <= c < xr (stp_span_pixels) for crossings xl <= xr >= 0
+ * (within the vertices' x extent), given as a and b, the first centres at
+ * or right of xl and xr (stp_tri_edge_pixel). */
+static inline int stp_tri_span_pixels(stp_tri_x a, stp_tri_x b, uint32_t width, uint32_t *p1, uint32_t *p2)
 {
-    stp_tri_x a = (xl + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS, b = (xr + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS;
     if (b > (stp_tri_x)width)
         b = (stp_tri_x)width;
     if (a >= b)
@@ -332,7 +341,8 @@ STP_HOT_INLINE int stp_tri_walk_start(const stp_tri_vertex *v0, const stp_tri_ve
 
 STP_HOT_INLINE int stp_tri_walk_span(const stp_tri_walk *w, uint32_t width, uint32_t *p1, uint32_t *p2)
 {
-    stp_tri_x xl = stp_tri_edge_x(w->lng.acc), xr = stp_tri_edge_x(w->sht.acc);
+    /* (the first centres ordered: the same order as the crossings') */
+    stp_tri_x xl = stp_tri_edge_pixel(w->lng.acc), xr = stp_tri_edge_pixel(w->sht.acc);
     if (xl > xr) {
         stp_tri_x x = xl;
         xl = xr;
