@@ -1289,8 +1289,13 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
                 d_end = td->d_row + mul_wide(ddx, (int32_t)p2);
         if (tr && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
             d_end < DEPTH_Q12_END) /* as put_span_z would, without its call */
+            /* (the step is added only where the span has two pixels,
+             * d_end - d fitting 32 bits: 64-bit hosts pass its low 32
+             * bits, as above, without a test; ARMv6-M keeps the test:
+             * without it GCC's layout cost its mesh torus 400
+             * instructions a frame) */
             span_z_direct(tr->z, tr->band, page_bit, pattern_of_row(fr, row), p1, p2, (int32_t)d,
-                          p2 > p1 ? (int32_t)ddx : 0);
+                          STP_WIDE_ARITH ? from_twos((uint32_t)ddx) : p2 > p1 ? (int32_t)ddx : 0);
         else
             put_span_z(fr, row, p1, p2, style, d, ddx, 0, 0, 0, t, tr != 0);
     }
