@@ -141,7 +141,7 @@ typedef struct frame {
     stp_polygon_setup *setup; /* the caller's per-polygon depth setups, or NULL */
     int32_t key_min, key_max; /* depth-key range of the visible polygons */
     uint32_t key_range;       /* key_max - key_min, when positive */
-    uint32_t depth_scale;     /* depth_q12's reciprocal and its shift */
+    uint32_t depth_scale;     /* depth_q12's reciprocal and its shift (wide arithmetic: its factor) */
     int depth_shift;
     /* MONO1 spans from pattern bytes: a threshold cell whose width divides
      * 8 (mono_fill); cell_mask its height - 1 when a power of two, else 0;
@@ -785,7 +785,10 @@ static uint32_t key_quotient(const frame *fr, uint32_t u)
 {
     const uint32_t k = (uint32_t)65534 << 12;
 #if STP_WIDE_ARITH
-    return (uint32_t)(stp_umul32x32(u, k) / fr->key_range);
+    /* k from the frame (depth_scale): a product by the constant is made of
+     * shifts and a subtraction, four instructions to one multiply */
+    (void)k;
+    return (uint32_t)(stp_umul32x32(u, fr->depth_scale) / fr->key_range);
 #else
     uint32_t q;
     if (fr->depth_shift >= 32)
@@ -2204,7 +2207,9 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
     fr->depth_shift = 0;
     if (fr->key_max > fr->key_min) {
         fr->key_range = (uint32_t)fr->key_max - (uint32_t)fr->key_min;
-#if !STP_WIDE_ARITH
+#if STP_WIDE_ARITH
+        fr->depth_scale = (uint32_t)65534 << 12; /* key_quotient's factor */
+#else
         while (((uint64_t)1 << fr->depth_shift) <= fr->key_range)
             fr->depth_shift++;
         fr->depth_scale = (uint32_t)STP_DIV64(((uint64_t)65534 << 12) << fr->depth_shift, fr->key_range);
