@@ -611,23 +611,24 @@ STP_HOT_INLINE void span_z_direct(uint16_t *z, uint8_t *row, uint8_t page_bit, u
     }
 #endif
     for (;;) {
-        uint32_t run;
-        while ((uint32_t)di >> 12 <= *zp) {
+        uint32_t run, depth;
+        while ((depth = (uint32_t)di >> 12) <= *zp) {
             if (zp == zlast)
                 return;
             zp++;
             di += dstep;
         }
         run = (uint32_t)(zp - z);
+        /* (each pixel's depth formed once, for its test and its entry) */
         for (;;) {
-            *zp = (uint16_t)((uint32_t)di >> 12);
+            *zp = (uint16_t)depth;
             if (zp == zlast) {
                 fill_run(row, page_bit, run, x2, pattern);
                 return;
             }
             zp++;
             di += dstep;
-            if ((uint32_t)di >> 12 <= *zp)
+            if ((depth = (uint32_t)di >> 12) <= *zp)
                 break;
         }
         fill_run(row, page_bit, run, (uint32_t)(zp - z) - 1u, pattern);
