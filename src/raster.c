@@ -148,7 +148,8 @@ typedef struct frame {
      * patterns[] the byte of each cell row for style pattern_style (-1:
      * none yet) */
     int mono_fill;
-    int pattern_port; /* mono_fill on a MONO1 port (not drawn grey): spans may come from patterns[] */
+    int pattern_port; /* mono_fill on a MONO1 port (not drawn grey): spans may come from patterns[];
+                         PATTERN_PLAIN when no shadow records are gathered either */
     uint32_t cell_mask;
     paint pattern_style;
     const stp_cell *cell;
@@ -1314,9 +1315,12 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
 #else
 #define TRIANGLE_SHADOWLESS(fr) 1
 #endif
+/* pattern_port's value when TRIANGLE_SHADOWLESS holds too (the frame's
+ * shadow records are set once a frame): one test a triangle, not two */
+#define PATTERN_PLAIN 2
 #if STP_PATTERN_CACHE > 0 && !defined(__OPTIMIZE_SIZE__)
 #define TRIANGLE_PAINT_READY(fr, style, t)                                                                       \
-    ((t) == 0 && (fr)->pattern_port && !((style)&STP_COLOUR_FLAG) && TRIANGLE_SHADOWLESS(fr) &&                   \
+    ((t) == 0 && (fr)->pattern_port == PATTERN_PLAIN && !((style)&STP_COLOUR_FLAG) &&                             \
      ((style) == (fr)->pattern_style || style_kept(fr, style)))
 
 /* TRIANGLE_PAINT_READY's other case: style's pattern rows kept (use_style's
@@ -2229,7 +2233,7 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
     fr->mono_fill = one_bit(port->format) && fr->cell->kind == STP_CELL_THRESHOLD &&
                     fr->cell->width > 0 && 8u % fr->cell->width == 0 && fr->cell->height > 0 &&
                     fr->cell->height <= STP_CELL_MAX; /* patterns[] holds a row each */
-    fr->pattern_port = one_bit(drawn->format) && fr->mono_fill;
+    fr->pattern_port = one_bit(drawn->format) && fr->mono_fill ? (TRIANGLE_SHADOWLESS(fr) ? PATTERN_PLAIN : 1) : 0;
     fr->cell_mask = (fr->cell->height & (fr->cell->height - 1u)) == 0 ? fr->cell->height - 1u : 0;
     fr->pattern_style = -1;
 #if STP_PATTERN_CACHE > 0
