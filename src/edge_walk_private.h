@@ -69,9 +69,13 @@ static inline int32_t stp_floor16(int32_t v)
 
 /* trunc(2^16 num / den) for den > 0 and |num| < 2^21: a 32-bit division
  * while 2^16 num fits 32 bits (ARMv6-M: a short library call instead of a
- * ~470-instruction 64-bit one). */
+ * ~470-instruction 64-bit one); with wide arithmetic the one 64-bit
+ * division, no test (host mesh torus 4 500 instructions a frame fewer). */
 static inline int64_t stp_slope_q16(int32_t num, int32_t den)
 {
+#if STP_WIDE_ARITH
+    return (int64_t)num * 65536 / den;
+#else
 #if STP_SLOPE_RECIP > 0
     /* n = |num| 2^16 and m = stp_slope_recip[den]: n m / 2^32 (= |num| m
      * / 2^16) exceeds
@@ -89,6 +93,7 @@ static inline int64_t stp_slope_q16(int32_t num, int32_t den)
     if (num > -32768 && num < 32768)
         return (int32_t)(num * 65536) / den;
     return STP_DIV64((int64_t)num * 65536, den);
+#endif
 }
 
 /* stp_slope_q16 for |num| < 2^15 (an edge of a triangle whose x are below
