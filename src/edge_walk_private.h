@@ -218,8 +218,14 @@ typedef struct stp_tri_edge {
  * crossing's: the first pixel centre at or right of crossing x, (x +
  * STP_HALF_PIXEL - 1) >> SUB, is then acc >> (16 + SUB), one shift a
  * crossing (stp_tri_walk_span).  Narrow, the sum stays below 2^31 (2^30 +
- * 2^20 + 2^19). */
+ * 2^20 + 2^19).  Not on 8- and 16-bit cores (no 32-bit multiply): there
+ * the high half's int takes the offset and its shift for less than a
+ * 32-bit shift by 16 + SUB (ATmega2560 tetra 36 000 cycles a frame). */
+#if STP_HAVE_MUL32
 #define STP_TRI_ACC_BIAS ((int32_t)(STP_HALF_PIXEL - 1) * 65536)
+#else
+#define STP_TRI_ACC_BIAS 0
+#endif
 
 static inline void stp_tri_edge_start(stp_tri_edge *e, const stp_tri_vertex *a, const stp_tri_vertex *b,
                                       stp_tri_coord yc)
@@ -251,7 +257,11 @@ static inline void stp_tri_edge_start(stp_tri_edge *e, const stp_tri_vertex *a, 
  * STP_TRI_ACC_BIAS) / 2^(16 + SUB)) */
 static inline stp_tri_x stp_tri_edge_pixel(stp_tri_acc acc)
 {
+#if STP_HAVE_MUL32
     return (stp_tri_x)(acc >> (16 + STP_SUBPIXEL_BITS));
+#else /* STP_TRI_ACC_BIAS 0 */
+    return ((stp_tri_x)(acc >> 16) + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS;
+#endif
 }
 
 /* The pixels [*p1, *p2] of 0..width-1 (width <= 32767) whose centres c
