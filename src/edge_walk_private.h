@@ -334,24 +334,25 @@ STP_HOT_INLINE int stp_tri_walk_start(const stp_tri_vertex *v0, const stp_tri_ve
     if (!STP_LEAN_CODE && (STP_TRI_Y(w->bot) <= band->top || STP_TRI_Y(w->top) >= band->end))
         return 0; /* not in the band */
     /* rows whose centre lies in [top, bottom), in the band */
+#if STP_WIDE_ARITH
+    /* stp_row_below is monotone, so the y clamped to the band's [top, end)
+     * give the rows clamped to its rows: the first row below top is y0,
+     * below end y0 + count (the test above leaves each clamped y between
+     * the triangle's, a coordinate).  64-bit hosts only: host mesh torus
+     * 1 400 instructions a frame fewer, but ARMv6-M's direct frame 10 000
+     * more */
     w->r_mid = stp_row_below(STP_TRI_Y(w->mid)); /* the first row below mid's y */
-    if (STP_WIDE_ARITH) {
-        /* stp_row_below is monotone, so the y clamped to the band's [top,
-         * end) give the rows clamped to its rows: the first row below top
-         * is y0, below end y0 + count (the test above leaves each clamped
-         * y between the triangle's, a coordinate).  64-bit hosts only:
-         * host mesh torus 1 400 instructions a frame fewer, but ARMv6-M's
-         * direct frame 10 000 more */
-        r_first = stp_row_below(STP_TRI_Y(w->top) > band->top ? STP_TRI_Y(w->top) : (stp_tri_coord)band->top);
-        r_last = stp_row_below(STP_TRI_Y(w->bot) < band->end ? STP_TRI_Y(w->bot) : (stp_tri_coord)band->end) - 1;
-    } else {
-        r_first = stp_row_below(STP_TRI_Y(w->top));
-        r_last = stp_row_below(STP_TRI_Y(w->bot)) - 1;
-        if (r_first < (int)band->y0)
-            r_first = (int)band->y0;
-        if (r_last > (int)(band->y0 + band->count) - 1)
-            r_last = (int)(band->y0 + band->count) - 1;
-    }
+    r_first = stp_row_below(STP_TRI_Y(w->top) > band->top ? STP_TRI_Y(w->top) : (stp_tri_coord)band->top);
+    r_last = stp_row_below(STP_TRI_Y(w->bot) < band->end ? STP_TRI_Y(w->bot) : (stp_tri_coord)band->end) - 1;
+#else
+    r_first = stp_row_below(STP_TRI_Y(w->top));
+    r_last = stp_row_below(STP_TRI_Y(w->bot)) - 1;
+    w->r_mid = stp_row_below(STP_TRI_Y(w->mid)); /* the first row below mid's y */
+    if (r_first < (int)band->y0)
+        r_first = (int)band->y0;
+    if (r_last > (int)(band->y0 + band->count) - 1)
+        r_last = (int)(band->y0 + band->count) - 1;
+#endif
     if (r_first > r_last)
         return 0;
     w->row = r_first;
