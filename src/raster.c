@@ -2233,7 +2233,7 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
     fr->mono_fill = one_bit(port->format) && fr->cell->kind == STP_CELL_THRESHOLD &&
                     fr->cell->width > 0 && 8u % fr->cell->width == 0 && fr->cell->height > 0 &&
                     fr->cell->height <= STP_CELL_MAX; /* patterns[] holds a row each */
-    fr->pattern_port = one_bit(drawn->format) && fr->mono_fill ? (TRIANGLE_SHADOWLESS(fr) ? PATTERN_PLAIN : 1) : 0;
+    fr->pattern_port = (one_bit(drawn->format) && fr->mono_fill) << (TRIANGLE_SHADOWLESS(fr) != 0); /* PATTERN_PLAIN 2 */
     fr->cell_mask = (fr->cell->height & (fr->cell->height - 1u)) == 0 ? fr->cell->height - 1u : 0;
     fr->pattern_style = -1;
 #if STP_PATTERN_CACHE > 0
