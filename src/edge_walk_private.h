@@ -265,7 +265,7 @@ static inline stp_tri_x stp_tri_edge_pixel(stp_tri_acc acc)
 }
 
 /* The pixels [*p1, *p2] of 0..width-1 (width <= 32767) whose centres c
- * satisfy xl <= c < xr (stp_span_pixels) for crossings xl <= xr >= 0
+ * satisfy xl <= c < xr (stp_span_pixels) for crossings 0 <= xl <= xr
  * (within the vertices' x extent), given as a and b, the first centres at
  * or right of xl and xr (stp_tri_edge_pixel). */
 static inline int stp_tri_span_pixels(stp_tri_x a, stp_tri_x b, uint32_t width, uint32_t *p1, uint32_t *p2)

@@ -785,13 +785,13 @@ STP_NOINLINE uint32_t key_quotient_wide(const frame *fr, uint32_t u)
 
 static uint32_t key_quotient(const frame *fr, uint32_t u)
 {
-    const uint32_t k = (uint32_t)65534 << 12;
 #if STP_WIDE_ARITH
-    /* k from the frame (depth_scale): a product by the constant is made of
-     * shifts and a subtraction, four instructions to one multiply */
-    (void)k;
+    /* the factor 65534 2^12 from the frame (depth_scale): a product by the
+     * constant is made of shifts and a subtraction, four instructions to
+     * one multiply */
     return (uint32_t)(stp_umul32x32(u, fr->depth_scale) / fr->key_range);
 #else
+    const uint32_t k = (uint32_t)65534 << 12;
     uint32_t q;
     if (fr->depth_shift >= 32)
         return key_quotient_wide(fr, u);
