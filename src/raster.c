@@ -141,14 +141,15 @@ typedef struct frame {
     stp_polygon_setup *setup; /* the caller's per-polygon depth setups, or NULL */
     int32_t key_min, key_max; /* depth-key range of the visible polygons */
     uint32_t key_range;       /* key_max - key_min, when positive */
-    uint32_t depth_scale;     /* depth_q12's reciprocal and its shift */
+    uint32_t depth_scale;     /* depth_q12's reciprocal and its shift (wide arithmetic: its factor) */
     int depth_shift;
     /* MONO1 spans from pattern bytes: a threshold cell whose width divides
      * 8 (mono_fill); cell_mask its height - 1 when a power of two, else 0;
      * patterns[] the byte of each cell row for style pattern_style (-1:
      * none yet) */
     int mono_fill;
-    int pattern_port; /* mono_fill on a MONO1 port (not drawn grey): spans may come from patterns[] */
+    int pattern_port; /* mono_fill on a MONO1 port (not drawn grey): spans may come from patterns[];
+                         PATTERN_PLAIN when no shadow records are gathered either */
     uint32_t cell_mask;
     paint pattern_style;
     const stp_cell *cell;
@@ -611,23 +612,24 @@ STP_HOT_INLINE void span_z_direct(uint16_t *z, uint8_t *row, uint8_t page_bit, u
     }
 #endif
     for (;;) {
-        uint32_t run;
-        while ((uint32_t)di >> 12 <= *zp) {
+        uint32_t run, depth;
+        while ((depth = (uint32_t)di >> 12) <= *zp) {
             if (zp == zlast)
                 return;
             zp++;
             di += dstep;
         }
         run = (uint32_t)(zp - z);
+        /* (each pixel's depth formed once, for its test and its entry) */
         for (;;) {
-            *zp = (uint16_t)((uint32_t)di >> 12);
+            *zp = (uint16_t)depth;
             if (zp == zlast) {
                 fill_run(row, page_bit, run, x2, pattern);
                 return;
             }
             zp++;
             di += dstep;
-            if ((uint32_t)di >> 12 <= *zp)
+            if ((depth = (uint32_t)di >> 12) <= *zp)
                 break;
         }
         fill_run(row, page_bit, run, (uint32_t)(zp - z) - 1u, pattern);
@@ -783,10 +785,13 @@ STP_NOINLINE uint32_t key_quotient_wide(const frame *fr, uint32_t u)
 
 static uint32_t key_quotient(const frame *fr, uint32_t u)
 {
-    const uint32_t k = (uint32_t)65534 << 12;
 #if STP_WIDE_ARITH
-    return (uint32_t)(stp_umul32x32(u, k) / fr->key_range);
+    /* the factor 65534 2^12 from the frame (depth_scale): a product by the
+     * constant is made of shifts and a subtraction, four instructions to
+     * one multiply */
+    return (uint32_t)(stp_umul32x32(u, fr->depth_scale) / fr->key_range);
 #else
+    const uint32_t k = (uint32_t)65534 << 12;
     uint32_t q;
     if (fr->depth_shift >= 32)
         return key_quotient_wide(fr, u);
@@ -1177,7 +1182,15 @@ static int depth_terms_short(const depth_plane *pl, const stp_instr *v, int32_t 
 /* A flat triangle's depths down its rows (draw_triangle): short ones
  * (depth_terms_short) modulo 2^32 at pixel 0's centre on the row centre
  * (d_row32), per pixel in x (gx_pixel) and per row (gy_row); else general
- * Q12 ones at device x = 0 of the row centre (d_row). */
+ * Q12 ones on the row centre at x = TRI_DEPTH_X0 (d_row): pixel 0's centre
+ * where a span's ends are then a product each (32-bit cores and hosts:
+ * M0+ mesh torus 2 160 instructions a frame fewer), device x = 0 on 8- and
+ * 16-bit cores (ATmega2560: 56 bytes, 3 400 cycles fewer that way). */
+#if STP_HAVE_MUL32
+#define TRI_DEPTH_X0 HALF_PIXEL
+#else
+#define TRI_DEPTH_X0 0
+#endif
 typedef struct tri_depth {
     int64_t d_row;
 #if STP_NARROW_FORMS
@@ -1210,7 +1223,7 @@ STP_HOT_INLINE void tri_depth_start(tri_depth *td, const depth_plane *pl, const 
                       (uint32_t)pl->ddy * (uint32_t)(yc - pl->yc);
         td->d_row = 0; /* unused: set for the compiler's flow analysis */
     } else {
-        td->d_row = pl->dc - mul_wide(pl->ddx, pl->xc) + mul_wide(pl->ddy, yc - pl->yc);
+        td->d_row = pl->dc + mul_wide(pl->ddx, TRI_DEPTH_X0 - pl->xc) + mul_wide(pl->ddy, yc - pl->yc);
 #if STP_NARROW_FORMS
         td->d_step = pl->ddy * (1 << SUB);
 #endif
@@ -1285,13 +1298,23 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
         else
             put_span_z(fr, row, p1, p2, style, from_twos(d), pl->ddx * (1 << SUB), 0, 0, 0, t, tr != 0);
     } else {
+#if STP_HAVE_MUL32
+        int64_t ddx = pl->ddx * (1 << SUB), d = td->d_row + mul_wide(ddx, (int32_t)p1),
+                d_end = td->d_row + mul_wide(ddx, (int32_t)p2);
+#else
         int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
         int64_t d = td->d_row + mul_wide(pl->ddx, xq);
         int64_t ddx = pl->ddx * (1 << SUB), d_end = d + mul_wide(ddx, (int32_t)(p2 - p1));
+#endif
         if (tr && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
             d_end < DEPTH_Q12_END) /* as put_span_z would, without its call */
+            /* (the step is added only where the span has two pixels,
+             * d_end - d fitting 32 bits: 64-bit hosts pass its low 32
+             * bits, as above, without a test; ARMv6-M keeps the test:
+             * without it GCC's layout cost its mesh torus 400
+             * instructions a frame) */
             span_z_direct(tr->z, tr->band, page_bit, pattern_of_row(fr, row), p1, p2, (int32_t)d,
-                          p2 > p1 ? (int32_t)ddx : 0);
+                          STP_WIDE_ARITH ? from_twos((uint32_t)ddx) : p2 > p1 ? (int32_t)ddx : 0);
         else
             put_span_z(fr, row, p1, p2, style, d, ddx, 0, 0, 0, t, tr != 0);
     }
@@ -1306,9 +1329,12 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
 #else
 #define TRIANGLE_SHADOWLESS(fr) 1
 #endif
+/* pattern_port's value when TRIANGLE_SHADOWLESS holds too (the frame's
+ * shadow records are set once a frame): one test a triangle, not two */
+#define PATTERN_PLAIN 2
 #if STP_PATTERN_CACHE > 0 && !defined(__OPTIMIZE_SIZE__)
 #define TRIANGLE_PAINT_READY(fr, style, t)                                                                       \
-    ((t) == 0 && (fr)->pattern_port && !((style)&STP_COLOUR_FLAG) && TRIANGLE_SHADOWLESS(fr) &&                   \
+    ((t) == 0 && (fr)->pattern_port == PATTERN_PLAIN && !((style)&STP_COLOUR_FLAG) &&                             \
      ((style) == (fr)->pattern_style || style_kept(fr, style)))
 
 /* TRIANGLE_PAINT_READY's other case: style's pattern rows kept (use_style's
@@ -1359,7 +1385,22 @@ STP_HOT_INLINE void tri_draw_z(frame *fr, const stp_instr *v, paint style, stp_f
     tri_depth td;
     tri_row tr;
     /* without kept setups the plane is made here (no call, no lookup) */
+#if STP_WIDE_ARITH
+    /* depth_setup_triangle inlined: pl stays in registers where the kept
+     * setups' call takes a copy's address, not pl's (host mesh torus
+     * 3 400 instructions a frame fewer; ARMv6-M calls depth_setup_triangle
+     * anyway, and the copy cost its torus 800) */
+    int made;
+    if (fr->setup) {
+        depth_plane kept;
+        made = depth_plane_for(fr, v, 3, ordinal, w->top->y, &kept);
+        pl = kept;
+    } else {
+        made = depth_setup_triangle(fr, v, &pl);
+    }
+#else
     int made = fr->setup ? depth_plane_for(fr, v, 3, ordinal, w->top->y, &pl) : depth_setup_triangle(fr, v, &pl);
+#endif
     if (!made)
         return; /* edge-on: no area on screen */
     tri_depth_start(&td, &pl, v, w->bot->y - w->top->y, stp_tri_walk_yc(w), made);
@@ -2185,7 +2226,9 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
     fr->depth_shift = 0;
     if (fr->key_max > fr->key_min) {
         fr->key_range = (uint32_t)fr->key_max - (uint32_t)fr->key_min;
-#if !STP_WIDE_ARITH
+#if STP_WIDE_ARITH
+        fr->depth_scale = (uint32_t)65534 << 12; /* key_quotient's factor */
+#else
         while (((uint64_t)1 << fr->depth_shift) <= fr->key_range)
             fr->depth_shift++;
         fr->depth_scale = (uint32_t)STP_DIV64(((uint64_t)65534 << 12) << fr->depth_shift, fr->key_range);
@@ -2204,7 +2247,7 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
     fr->mono_fill = one_bit(port->format) && fr->cell->kind == STP_CELL_THRESHOLD &&
                     fr->cell->width > 0 && 8u % fr->cell->width == 0 && fr->cell->height > 0 &&
                     fr->cell->height <= STP_CELL_MAX; /* patterns[] holds a row each */
-    fr->pattern_port = one_bit(drawn->format) && fr->mono_fill;
+    fr->pattern_port = (one_bit(drawn->format) && fr->mono_fill) << (TRIANGLE_SHADOWLESS(fr) != 0); /* PATTERN_PLAIN 2 */
     fr->cell_mask = (fr->cell->height & (fr->cell->height - 1u)) == 0 ? fr->cell->height - 1u : 0;
     fr->pattern_style = -1;
 #if STP_PATTERN_CACHE > 0
