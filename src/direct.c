@@ -18,7 +18,8 @@
  *   projection the one perspective projection (view.c's
  *              stp_view_perspective, the renderer's): floor(trunc(focal x
  *              / z) 2^-12) in Q4 exactly (a reciprocal of z, or on AVR
- *              restoring division; z in [hither, 2^26): the 32-bit form,
+ *              and in STP_SMALL_DIVISION builds restoring division; z in
+ *              [hither, 2^26): the 32-bit form,
  *              project_private.h's stp_project_exact, alone on targets
  *              without STP_WIDE_ARITH: its 64-bit fallback could only
  *              give points beyond the device range)
