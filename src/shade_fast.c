@@ -231,8 +231,10 @@ STP_HOT_INLINE stp_sf16 sf_recip_hot(stp_sf16 a)
 }
 #endif
 
-#if !STP_HAVE_CLZ
-/* the significant bits of 0 .. 15 */
+#if !STP_BIT_LENGTH_CLZ
+/* the significant bits of 0 .. 15 (where stp_bit_length32 is not the
+ * count-leading-zeros form: builds for size on ARMv6-M take that one, the
+ * same values, and no table) */
 static const uint16_t len4[16] STP_TABLE = {0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4};
 #endif
 
@@ -241,7 +243,7 @@ static const uint16_t len4[16] STP_TABLE = {0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 
  * three halvings before its table (about 8 instructions fewer on ARMv6-M) */
 STP_HOT_INLINE int bit_length_26(uint32_t v)
 {
-#if STP_HAVE_CLZ
+#if STP_BIT_LENGTH_CLZ
     return stp_bit_length32(v);
 #else
     return 26 + (int)STP_TABLE_U16(&len4[v >> 26]);
