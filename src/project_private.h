@@ -187,7 +187,7 @@ static inline int stp_project_key(uint32_t h, uint32_t v, int s, uint32_t z, uin
  * 32-bit product (AVR: each is a library call, and the reciprocal's 64-bit
  * products are four more): restoring division of f m, whose bits come
  * from a shift-and-add product over m's bits (where the core multiplies:
- * stp_umul32x32), one quotient bit a step.
+ * C's 64-bit product, libgcc's on ARMv6-M), one quotient bit a step.
  * The quotient is below 2^31 exactly when floor(f m / 2^31) is below z
  * (f m < 2^62); the remainder r then stays below z < 2^29, so 2 r + 1
  * fits.  0 when the quotient is 2^31 or more (stp_project_quotients'
@@ -198,7 +198,7 @@ static inline int stp_project_divide(uint32_t f, uint32_t m, uint32_t z, uint32_
     uint8_t i;
 #if STP_HAVE_MUL32
     {
-        uint64_t p = stp_umul32x32(f, m);
+        uint64_t p = (uint64_t)f * m; /* size-first: libgcc's product on ARMv6-M */
         hi = (uint32_t)(p >> 32);
         lo = (uint32_t)p;
     }
