@@ -543,6 +543,17 @@ STP_HOT_INLINE int unit_scale(int64_t x, int64_t y, int64_t z, int32_t v[3])
         return unit_scale32((int32_t)x, (int32_t)y, (int32_t)z, (uint32_t)m, v);
 #endif
     up = 30 - stp_bit_length64(m);
+#if defined(__OPTIMIZE_SIZE__) && !STP_HAVE_MUL64
+    if (up >= 0) {
+        /* builds for size where 64-bit shifts are library calls: the
+         * scaled values fit int32, so their low words alone, shifted in 32
+         * bits (the same values) */
+        v[0] = (int32_t)((uint32_t)x << up);
+        v[1] = (int32_t)((uint32_t)y << up);
+        v[2] = (int32_t)((uint32_t)z << up);
+        return up;
+    }
+#endif
     if (up >= 0) {
         x *= (int64_t)1 << up;
         y *= (int64_t)1 << up;
