@@ -118,19 +118,26 @@ int stp_direct_light_prepare(stp_direct_lit *lit, const stp_direct_view *view, c
     return 1;
 }
 
+/* sum of a_k b_(k step) for Q1.14 a and b, rounded to Q14: three Q28
+ * products, below 3 2^28; the one form of C = V R's entries and of a
+ * normal turned by C */
+STP_DIRECT_SMALL int16_t dot14(const int16_t a[3], const int16_t *b, int step)
+{
+    int32_t c = (int32_t)1 << (Q14 - 1);
+    int k;
+    for (k = 0; k < 3; k++)
+        c += (int32_t)a[k] * b[k * step];
+    return (int16_t)stp_asr32(c, Q14);
+}
+
 void stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit, const stp_direct_view *view,
                                 const stp_direct_model *model)
 {
-    int i, j, k;
+    int i, j;
     s->fast = &lit->fast;
     for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++) {
-            /* three Q28 products: below 3 2^28 */
-            int32_t c = (int32_t)1 << (Q14 - 1);
-            for (k = 0; k < 3; k++)
-                c += (int32_t)view->axis[i][k] * model->rot[k][j];
-            s->rot[i][j] = (int16_t)stp_asr32(c, Q14);
-        }
+        for (j = 0; j < 3; j++)
+            s->rot[i][j] = dot14(view->axis[i], &model->rot[0][j], 3);
 }
 
 /* The light's values in their ranges (direct.h), each one unsigned
@@ -231,13 +238,9 @@ stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal
 {
     int16_t nv[3];
     stp_vec3 centre;
-    int i, k;
-    for (i = 0; i < 3; i++) {
-        int32_t r = (int32_t)1 << (Q14 - 1);
-        for (k = 0; k < 3; k++)
-            r += (int32_t)s->rot[i][k] * normal[k];
-        nv[i] = (int16_t)stp_asr32(r, Q14);
-    }
+    int i;
+    for (i = 0; i < 3; i++)
+        nv[i] = dot14(s->rot[i], normal, 1);
     centre.x = third(p, 0);
     centre.y = third(p, 1);
     centre.z = third(p, 2);

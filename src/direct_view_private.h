@@ -21,4 +21,12 @@
 #endif
 #define STP_DIRECT_CALL static STP_DIRECT_KEEP
 
+/* A helper with several callers kept one call in every build for size
+ * (on a Cortex-M0+ too), inlined as the compiler likes elsewhere. */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+#define STP_DIRECT_SMALL static __attribute__((noinline))
+#else
+#define STP_DIRECT_SMALL static
+#endif
+
 #endif
