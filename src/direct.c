@@ -96,7 +96,6 @@ int stp_direct_light_prepare(stp_direct_lit *lit, const stp_direct_view *view, c
     stp_material material;
     stp_vec3 origin = {0, 0, 0}, towards_eye = {0, 0, -ONE}; /* unused: perspective */
     int32_t d[3], lv[3];
-    int i;
     if (!difference(&l->position, &view->from, d))
         return 0;
     to_view(view, d, lv);
@@ -109,11 +108,13 @@ int stp_direct_light_prepare(stp_direct_lit *lit, const stp_direct_view *view, c
     lighting.lights[0].position.z = lv[2];
     lighting.lights[0].power = l->power;
     material.reflectivity = l->reflectivity;
+    /* the fields the face shader's prepare reads (no colours: it shades
+     * intensities); the highlight's only where it is compiled in */
+#if STP_WITH_SPECULAR
     material.refraction = ONE / 2; /* below 1: no Fresnel table (no highlight) */
     material.gloss = ONE;
     material.specular = 0;
-    for (i = 0; i < 3; i++)
-        lighting.lights[0].colour[i] = material.colour[i] = ONE;
+#endif
     stp_shade_fast_prepare(&lit->fast, &lighting, &material, origin, 0, towards_eye);
     return 1;
 }
