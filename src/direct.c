@@ -94,7 +94,7 @@ int stp_direct_light_prepare(stp_direct_lit *lit, const stp_direct_view *view, c
 {
     stp_lighting lighting;
     stp_material material;
-    stp_vec3 origin = {0, 0, 0}, towards_eye = {0, 0, -ONE}; /* unused: perspective */
+    stp_vec3 origin = {0, 0, 0};
     int32_t d[3], lv[3];
     if (!difference(&l->position, &view->from, d))
         return 0;
@@ -115,7 +115,7 @@ int stp_direct_light_prepare(stp_direct_lit *lit, const stp_direct_view *view, c
     material.gloss = ONE;
     material.specular = 0;
 #endif
-    stp_shade_fast_prepare(&lit->fast, &lighting, &material, origin, 0, towards_eye);
+    stp_shade_fast_prepare_eye(&lit->fast, &lighting, &material, origin);
     return 1;
 }
 

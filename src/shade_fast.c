@@ -1391,9 +1391,10 @@ static void prepare_specular(stp_shade_fast *s, const stp_material *material)
 }
 #endif
 
-void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
-                            const stp_material *material, stp_vec3 eye, int parallel,
-                            stp_vec3 parallel_dir)
+/* prepare's fields before the view's direction: the counts and flags, the
+ * ambient terms, the eye */
+STP_HOT_INLINE void prepare_head(stp_shade_fast *s, const stp_lighting *lighting, const stp_material *material,
+                                 const stp_vec3 *eye, int parallel)
 {
     stp_fix bright = lighting->brightness;
     int count = lighting->count < 0 ? 0 : (lighting->count > STP_MAX_LIGHTS ? STP_MAX_LIGHTS : lighting->count);
@@ -1404,8 +1405,26 @@ void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
     s->refl_negative = (uint8_t)(material->reflectivity < 0);
     s->attenuation_c = sf_make(lighting->attenuation_c > 0 ? (uint32_t)lighting->attenuation_c : 1u, 0);
     prepare_ambient(s, stp_fix_clamp(lighting->background, 0, ONE), material->reflectivity, bright);
-    s->eye = eye;
-    s->eye_big = (uint8_t)is_big(eye);
+    s->eye = *eye;
+    s->eye_big = (uint8_t)is_big(*eye);
+}
+
+#if STP_SHADE_PREPARE_EYE_BODY
+/* the perspective prepare alone (shade_fast_private.h) */
+void stp_shade_fast_prepare_eye(stp_shade_fast *s, const stp_lighting *lighting, const stp_material *material,
+                                stp_vec3 eye)
+{
+    prepare_head(s, lighting, material, &eye, 0);
+    prepare_lights(s, lighting, material);
+    s->specular = 0;
+}
+#endif
+
+void stp_shade_fast_prepare(stp_shade_fast *s, const stp_lighting *lighting,
+                            const stp_material *material, stp_vec3 eye, int parallel,
+                            stp_vec3 parallel_dir)
+{
+    prepare_head(s, lighting, material, &eye, parallel);
     if (parallel) {
         stp_vec3 zero = {0, 0, 0};
         if (!dir_make(&s->e, &parallel_dir, &zero, is_big(parallel_dir), 1)) {
