@@ -126,6 +126,7 @@ STP_DIRECT_SMALL int16_t dot14(const int16_t a[3], const int16_t *b, int step)
 {
     int32_t c = (int32_t)1 << (Q14 - 1);
     int k;
+    STP_UNROLL3
     for (k = 0; k < 3; k++)
         c += (int32_t)a[k] * b[k * step];
     return (int16_t)stp_asr32(c, Q14);

@@ -19,11 +19,12 @@ static int unit14(const int32_t v[3], int16_t out[3])
 /* a x b of Q1.14 vectors: Q2.28, each component below 2^29 */
 STP_DIRECT_SMALL void cross14(const int16_t a[3], const int16_t b[3], int32_t c[3])
 {
-    int i;
-    /* c_i = a_j b_k - a_k b_j, (i, j, k) a cyclic turn of (0, 1, 2) */
-    for (i = 0; i < 3; i++) {
-        int j = i == 2 ? 0 : i + 1, k = i == 0 ? 2 : i - 1;
+    int i, j, k;
+    /* c_i = a_j b_k - a_k b_j, (i, j, k) turning cyclically from (0, 1, 2) */
+    for (i = 0, j = 1, k = 2; i < 3; i++) {
         c[i] = (int32_t)a[j] * b[k] - (int32_t)a[k] * b[j];
+        j = k;
+        k = i;
     }
 }
 
