@@ -18,7 +18,8 @@
  *   projection the one perspective projection (view.c's
  *              stp_view_perspective, the renderer's): floor(trunc(focal x
  *              / z) 2^-12) in Q4 exactly (a reciprocal of z, or on AVR
- *              restoring division; z in [hither, 2^26): the 32-bit form,
+ *              and in STP_SMALL_DIVISION builds restoring division; z in
+ *              [hither, 2^26): the 32-bit form,
  *              project_private.h's stp_project_exact, alone on targets
  *              without STP_WIDE_ARITH: its 64-bit fallback could only
  *              give points beyond the device range)
@@ -93,9 +94,8 @@ int stp_direct_light_prepare(stp_direct_lit *lit, const stp_direct_view *view, c
 {
     stp_lighting lighting;
     stp_material material;
-    stp_vec3 origin = {0, 0, 0}, towards_eye = {0, 0, -ONE}; /* unused: perspective */
+    stp_vec3 origin = {0, 0, 0};
     int32_t d[3], lv[3];
-    int i;
     if (!difference(&l->position, &view->from, d))
         return 0;
     to_view(view, d, lv);
@@ -108,28 +108,38 @@ int stp_direct_light_prepare(stp_direct_lit *lit, const stp_direct_view *view, c
     lighting.lights[0].position.z = lv[2];
     lighting.lights[0].power = l->power;
     material.reflectivity = l->reflectivity;
+    /* the fields the face shader's prepare reads (no colours: it shades
+     * intensities); the highlight's only where it is compiled in */
+#if STP_WITH_SPECULAR
     material.refraction = ONE / 2; /* below 1: no Fresnel table (no highlight) */
     material.gloss = ONE;
     material.specular = 0;
-    for (i = 0; i < 3; i++)
-        lighting.lights[0].colour[i] = material.colour[i] = ONE;
-    stp_shade_fast_prepare(&lit->fast, &lighting, &material, origin, 0, towards_eye);
+#endif
+    stp_shade_fast_prepare_eye(&lit->fast, &lighting, &material, origin);
     return 1;
+}
+
+/* sum of a_k b_(k step) for Q1.14 a and b, rounded to Q14: three Q28
+ * products, below 3 2^28; the one form of C = V R's entries and of a
+ * normal turned by C */
+STP_DIRECT_SMALL int16_t dot14(const int16_t a[3], const int16_t *b, int step)
+{
+    int32_t c = (int32_t)1 << (Q14 - 1);
+    int k;
+    STP_UNROLL3
+    for (k = 0; k < 3; k++)
+        c += (int32_t)a[k] * b[k * step];
+    return (int16_t)stp_asr32(c, Q14);
 }
 
 void stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit, const stp_direct_view *view,
                                 const stp_direct_model *model)
 {
-    int i, j, k;
+    int i, j;
     s->fast = &lit->fast;
     for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++) {
-            /* three Q28 products: below 3 2^28 */
-            int32_t c = (int32_t)1 << (Q14 - 1);
-            for (k = 0; k < 3; k++)
-                c += (int32_t)view->axis[i][k] * model->rot[k][j];
-            s->rot[i][j] = (int16_t)stp_asr32(c, Q14);
-        }
+        for (j = 0; j < 3; j++)
+            s->rot[i][j] = dot14(view->axis[i], &model->rot[0][j], 3);
 }
 
 /* The light's values in their ranges (direct.h), each one unsigned
@@ -230,13 +240,9 @@ stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal
 {
     int16_t nv[3];
     stp_vec3 centre;
-    int i, k;
-    for (i = 0; i < 3; i++) {
-        int32_t r = (int32_t)1 << (Q14 - 1);
-        for (k = 0; k < 3; k++)
-            r += (int32_t)s->rot[i][k] * normal[k];
-        nv[i] = (int16_t)stp_asr32(r, Q14);
-    }
+    int i;
+    for (i = 0; i < 3; i++)
+        nv[i] = dot14(s->rot[i], normal, 1);
     centre.x = third(p, 0);
     centre.y = third(p, 1);
     centre.z = third(p, 2);

@@ -17,11 +17,15 @@ static int unit14(const int32_t v[3], int16_t out[3])
 }
 
 /* a x b of Q1.14 vectors: Q2.28, each component below 2^29 */
-static void cross14(const int16_t a[3], const int16_t b[3], int32_t c[3])
+STP_DIRECT_SMALL void cross14(const int16_t a[3], const int16_t b[3], int32_t c[3])
 {
-    c[0] = (int32_t)a[1] * b[2] - (int32_t)a[2] * b[1];
-    c[1] = (int32_t)a[2] * b[0] - (int32_t)a[0] * b[2];
-    c[2] = (int32_t)a[0] * b[1] - (int32_t)a[1] * b[0];
+    int i, j, k;
+    /* c_i = a_j b_k - a_k b_j, (i, j, k) turning cyclically from (0, 1, 2) */
+    for (i = 0, j = 1, k = 2; i < 3; i++) {
+        c[i] = (int32_t)a[j] * b[k] - (int32_t)a[k] * b[j];
+        j = k;
+        k = i;
+    }
 }
 
 int stp_direct_view_look(stp_direct_view *v, stp_vec3 from, stp_vec3 at, stp_vec3 up, stp_fix focal,

@@ -21,4 +21,16 @@
 #endif
 #define STP_DIRECT_CALL static STP_DIRECT_KEEP
 
+/* A helper with several callers kept one call in builds for size on AVR
+ * (STP_LEAN_CODE) and in size-first builds (-Os with STP_SMALL_DIVISION),
+ * inlined elsewhere (a call per face cost the Cortex-M0+ direct frame
+ * 8 000 instructions at -O2). */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__) && (STP_LEAN_CODE || STP_SMALL_DIVISION)
+#define STP_DIRECT_SMALL static __attribute__((noinline))
+#elif defined(__GNUC__)
+#define STP_DIRECT_SMALL static inline __attribute__((always_inline))
+#else
+#define STP_DIRECT_SMALL static
+#endif
+
 #endif

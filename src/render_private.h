@@ -51,18 +51,25 @@ static inline void stp_render_triangle_cross(const stp_vec3 *v, int64_t c[3])
 {
     int64_t e[6]; /* v1 - v0, v2 - v0 */
     uint64_t spread = 0;
-    int i, bits;
-    for (i = 0; i < 3; i++) {
-        e[i] = (int64_t)stp_vec3_comp(&v[1], i) - stp_vec3_comp(&v[0], i);
-        e[3 + i] = (int64_t)stp_vec3_comp(&v[2], i) - stp_vec3_comp(&v[0], i);
-        spread |= stp_abs64u(e[i]) | stp_abs64u(e[3 + i]);
+    int i, j = 0, k, bits;
+    const stp_vec3 *w = &v[1];
+    for (i = 0; i < 6; i++) {
+        e[i] = (int64_t)stp_vec3_comp(w, j) - stp_vec3_comp(&v[0], j);
+        spread |= stp_abs64u(e[i]);
+        if (++j == 3) {
+            j = 0;
+            w = &v[2];
+        }
     }
     bits = stp_bit_length64(spread) - 30;
     for (i = 0; i < 6 && bits > 0; i++)
         e[i] = stp_asr64(e[i], bits);
-    for (i = 0; i < 3; i++) {
-        int j = i == 2 ? 0 : i + 1, k = i == 0 ? 2 : i - 1;
+    /* c_i = e_j e'_k - e_k e'_j, (i, j, k) turning cyclically from
+     * (0, 1, 2) */
+    for (i = 0, j = 1, k = 2; i < 3; i++) {
         c[i] = e[j] * e[3 + k] - e[k] * e[3 + j];
+        j = k;
+        k = i;
     }
 }
 #else
