@@ -585,6 +585,23 @@ static void test_bad_arguments(void **state)
     m.triangles = tris;
     assert_int_equal(stp_renderer_mesh(b.r, &m, b.mesh_scratch, b.mesh.vertex_count), STP_ERR_ARG);
     assert_int_equal(stp_renderer_display_file_used(b.r), used);
+    /* an index out of range at each place of a 64-bit word, in the first
+     * and a later block of eight triangles (check_mesh's wide test), and
+     * values whose 16-bit lanes test differently: count, 2^15, 2^16 - 1 */
+    {
+        static const uint16_t places[] = {0, 1, 2, 3, 4, 7, 11, 12, 19, 20, 23, 24 * 7 + 5, 24 * 7 + 22};
+        const uint16_t values[] = {b.mesh.vertex_count, 0x8000u, 0xFFFFu};
+        size_t p, v;
+        for (p = 0; p < sizeof places / sizeof places[0]; p++)
+            for (v = 0; v < sizeof values / sizeof values[0]; v++) {
+                memcpy(tris, b.mesh.triangles, sizeof tris);
+                tris[places[p]] = values[v];
+                assert_int_equal(stp_renderer_mesh(b.r, &m, b.mesh_scratch, b.mesh.vertex_count), STP_ERR_ARG);
+            }
+        memcpy(tris, b.mesh.triangles, sizeof tris);
+        tris[3 * TORUS_TRIANGLES - 1] = b.mesh.vertex_count;
+        assert_int_equal(stp_renderer_display_file_used(b.r), used);
+    }
     assert_int_equal(stp_renderer_mesh(0, &b.mesh, b.mesh_scratch, b.mesh.vertex_count), STP_ERR_ARG);
     assert_int_equal(stp_renderer_mesh(b.r, 0, b.mesh_scratch, b.mesh.vertex_count), STP_ERR_ARG);
     assert_int_equal(stp_renderer_mesh(b.r, &b.mesh, 0, b.mesh.vertex_count), STP_ERR_ARG);
