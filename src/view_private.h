@@ -92,7 +92,11 @@ void stp_view_transform_point_at(const stp_view_transform *t, const stp_vec3 *p,
  * non-negative first cost four instructions more a coordinate). */
 STP_HOT_INLINE stp_fix stp_view_floor_shift_sat(int64_t v)
 {
-    return stp_fix_sat64(stp_asr64(v, STP_FIX_FRAC_BITS));
+    int64_t s = stp_asr64(v, STP_FIX_FRAC_BITS);
+    /* stp_fix_sat64 with one unsigned test for the common case */
+    if (STP_UNLIKELY((uint64_t)s - (uint64_t)STP_FIX_MIN > (uint64_t)STP_FIX_MAX - (uint64_t)STP_FIX_MIN))
+        return s > 0 ? STP_FIX_MAX : STP_FIX_MIN;
+    return (stp_fix)s;
 }
 
 STP_HOT_INLINE void stp_view_transform_point_wide(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out)
