@@ -592,6 +592,14 @@ static int enter_faces(mesh_context *c, uint16_t count)
             if (side < c->least_side)
                 continue; /* a back face removed */
         }
+#elif STP_WIDE_ARITH
+        /* the exact product's sign tested first: a removed back face (with
+         * cull) costs two tests, no side formed */
+        int64_t dot = stp_render_face_dot(c->frame, n, &vertices[k[0]]);
+        int32_t side;
+        if (dot <= 0 && c->cull)
+            continue; /* a back face removed */
+        side = dot > 0 ? 1 : (dot < 0 ? -1 : 0);
 #else
         int32_t side = face_side(c, n, &vertices[k[0]]);
         if (side < c->least_side)
