@@ -561,7 +561,7 @@ STP_HOT_INLINE int enter_face(mesh_context *c, const uint16_t *k, const int16_t 
     }
     if (c->shade) {
         c->last_shade = stp_render_face_shade(c->shade, nv, centre, side);
-        style = stp_intensity_index_steps(c->last_shade, c->steps);
+        style = stp_intensity_index_unit(c->last_shade, c->steps); /* the shade in [0, 1] */
     } else {
         style = c->fill_style;
         c->last_shade = c->fill_shade;
