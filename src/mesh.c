@@ -345,7 +345,7 @@ STP_HOT_INLINE void vertex_project(const mesh_context *c, stp_mesh_vertex *s)
 VERTEX_READY void vertex_ready(const mesh_context *c, stp_mesh_vertex *s, uint16_t i)
 {
     if (!STP_UNLIKELY(s->state != STATE_NEW)) /* laid out as the hot path (c->inside: every vertex) */
-        (void)stp_render_point_at_view(c->r, &c->vertices[i], &s->view);
+        (void)stp_render_point_at_view_bounded(c->r, &c->vertices[i], &s->view); /* box_inside */
     vertex_project(c, s);
 }
 
