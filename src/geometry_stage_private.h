@@ -20,17 +20,39 @@
  * (two steps: stp_view_point_two_steps, view.c) saturated it: the point
  * lies beyond what the coordinates hold (the caller reports
  * STP_ERR_RANGE), else 0. */
+#if STP_WIDE_ARITH
+STP_HOT_INLINE int stp_render_point_at_view_in(const stp_renderer *r, const stp_vec3 *p, stp_vec3 *out, int bounded)
+{
+    if (r->geometry == STP_GEOMETRY_TWO_STEPS)
+        return stp_view_point_two_steps(&r->model, &r->to_view, *p, out);
+    stp_view_transform_point_wide_in(&r->point_view, *p, out, bounded); /* inline where 64-bit products are */
+    return 0;
+}
+
+STP_HOT_INLINE int stp_render_point_at_view(const stp_renderer *r, const stp_vec3 *p, stp_vec3 *out)
+{
+    return stp_render_point_at_view_in(r, p, out, 0);
+}
+
+/* stp_render_point_at_view for a point whose view coordinates the caller
+ * knows below 2^29 in magnitude (mesh.c's box_inside): the same values,
+ * without the saturation tests where they are inline (STP_WIDE_ARITH:
+ * 3 instructions a coordinate); elsewhere stp_render_point_at_view */
+STP_HOT_INLINE int stp_render_point_at_view_bounded(const stp_renderer *r, const stp_vec3 *p, stp_vec3 *out)
+{
+    return stp_render_point_at_view_in(r, p, out, 1);
+}
+#else
 STP_HOT_INLINE int stp_render_point_at_view(const stp_renderer *r, const stp_vec3 *p, stp_vec3 *out)
 {
     if (r->geometry == STP_GEOMETRY_TWO_STEPS)
         return stp_view_point_two_steps(&r->model, &r->to_view, *p, out);
-#if STP_WIDE_ARITH
-    stp_view_transform_point_wide(&r->point_view, *p, out); /* inline where 64-bit products are */
-#else
     stp_view_transform_point_at(&r->point_view, p, out);
-#endif
     return 0;
 }
+
+#define stp_render_point_at_view_bounded stp_render_point_at_view
+#endif
 
 /* stp_render_point_at_view of a point passed by value */
 STP_HOT_INLINE int stp_render_point_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)

@@ -347,8 +347,20 @@ static inline void stp_project_device_wide(const stp_view_lens *lens, const stp_
     STP_PROJECT_WIDE(lens->focal, lens->hither, p, &dx, &dy, &out[2]);
     dx = lens->half_width + dx;
     dy = lens->half_height - dy;
+#if STP_WIDE_ARITH
+    /* the hosts' per-vertex form: one unsigned test each for the common
+     * case inside [0, 2 half] (3 instructions a coordinate fewer; where
+     * this is the 32-bit form's rare fallback, the shorter code below) */
+    if (STP_UNLIKELY((uint64_t)dx > (uint64_t)(2 * (int64_t)lens->half_width)))
+        dx = dx < 0 ? 0 : 2 * (int64_t)lens->half_width;
+    if (STP_UNLIKELY((uint64_t)dy > (uint64_t)(2 * (int64_t)lens->half_height)))
+        dy = dy < 0 ? 0 : 2 * (int64_t)lens->half_height;
+    out[0] = (int32_t)dx;
+    out[1] = (int32_t)dy;
+#else
     out[0] = (int32_t)(dx < 0 ? 0 : (dx > 2 * lens->half_width ? 2 * lens->half_width : dx));
     out[1] = (int32_t)(dy < 0 ? 0 : (dy > 2 * lens->half_height ? 2 * lens->half_height : dy));
+#endif
 }
 
 #if STP_WIDE_ARITH

@@ -145,15 +145,20 @@ STP_HOT_INLINE const stp_shade_fast *stp_render_face_shader(stp_renderer *r)
     return &r->fast_shade;
 }
 
-/* The exact sign (-1, 0, 1) of N.(eye - v0) in model coordinates: which
+/* The exact sign (-1, 0, 1) of N.(eye - v0) in model coordinates (the
+ * product itself: stp_render_face_dot): which
  * side of a face with Q1.14 model normal n through model point v0 the eye
  * sees (1: the side n points to).  |eye - v0| < 2^30 + 2^31 per
  * coordinate: each product below 2^46, the sum below 2^48. */
+STP_HOT_INLINE int64_t stp_render_face_dot(const stp_model_frame *f, const int16_t n[3], const stp_vec3 *v0)
+{
+    return (int64_t)n[0] * ((int64_t)f->eye[0] - v0->x) + (int64_t)n[1] * ((int64_t)f->eye[1] - v0->y) +
+           (int64_t)n[2] * ((int64_t)f->eye[2] - v0->z);
+}
+
 STP_HOT_INLINE int stp_render_face_side(const stp_model_frame *f, const int16_t n[3], stp_vec3 v0)
 {
-    int64_t side = (int64_t)n[0] * ((int64_t)f->eye[0] - v0.x) +
-                   (int64_t)n[1] * ((int64_t)f->eye[1] - v0.y) +
-                   (int64_t)n[2] * ((int64_t)f->eye[2] - v0.z);
+    int64_t side = stp_render_face_dot(f, n, &v0);
     return side > 0 ? 1 : (side < 0 ? -1 : 0);
 }
 

@@ -23,10 +23,17 @@ STP_HOT_INLINE int32_t stp_intensity_steps(int levels)
     return levels < 2 ? 1 : (levels > 256 ? 255 : (int32_t)levels - 1);
 }
 
+/* the index of a shade already in [0, 1]: a face shader's
+ * (stp_shade_fast_face and its ambient share are, shade_fast_private.h),
+ * whose clamp would only cost (the mesh face loop's) */
+STP_HOT_INLINE int stp_intensity_index_unit(stp_fix shade, int32_t steps)
+{
+    return (int)((shade * steps) >> STP_FIX_FRAC_BITS) + 1;
+}
+
 STP_HOT_INLINE int stp_intensity_index_steps(stp_fix shade, int32_t steps)
 {
-    stp_fix s = shade < 0 ? 0 : (shade > STP_FIX_ONE ? STP_FIX_ONE : shade);
-    return (int)((s * steps) >> STP_FIX_FRAC_BITS) + 1;
+    return stp_intensity_index_unit(shade < 0 ? 0 : (shade > STP_FIX_ONE ? STP_FIX_ONE : shade), steps);
 }
 
 STP_HOT_INLINE int stp_intensity_index_inline(stp_fix shade, int levels)

@@ -87,27 +87,40 @@ void stp_view_transform_point_at(const stp_view_transform *t, const stp_vec3 *p,
 #if STP_WIDE_ARITH
 /* stp_view_transform_point where 64-bit products are single instructions,
  * inline for the entry's per-vertex use (view.c's function is this).
- * stp_view_floor_shift_sat: floor(v / 2^F), saturated, for |v| < 2^62: the
- * offset makes the shifted value non-negative (a right shift of a negative
- * value is the implementation's), and 2^62 is a multiple of 2^F, so the
- * floor is exact. */
-STP_HOT_INLINE stp_fix stp_view_floor_shift_sat(int64_t v)
+ * stp_view_floor_shift_sat: floor(v / 2^F), saturated, for |v| < 2^62:
+ * stp_asr64 (one arithmetic shift on these hosts; an offset to make v
+ * non-negative first cost four instructions more a coordinate). */
+STP_HOT_INLINE stp_fix stp_view_floor_shift_sat(int64_t v, int bounded)
 {
-    return stp_fix_sat64(((v + ((int64_t)1 << 62)) >> STP_FIX_FRAC_BITS) -
-                         ((int64_t)1 << (62 - STP_FIX_FRAC_BITS)));
+    int64_t s = stp_asr64(v, STP_FIX_FRAC_BITS);
+    /* stp_fix_sat64 with one unsigned test for the common case; none where
+     * the caller knows s inside stp_fix's range (bounded) */
+    if (!bounded &&
+        STP_UNLIKELY((uint64_t)s - (uint64_t)STP_FIX_MIN > (uint64_t)STP_FIX_MAX - (uint64_t)STP_FIX_MIN))
+        return s > 0 ? STP_FIX_MAX : STP_FIX_MIN;
+    return (stp_fix)s;
 }
 
-STP_HOT_INLINE void stp_view_transform_point_wide(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out)
+/* bounded (a constant): the caller knows every view coordinate of p
+ * strictly inside stp_fix's range (mesh.c's box_inside: below 2^29), so
+ * saturation cannot occur and is not tested: the same values */
+STP_HOT_INLINE void stp_view_transform_point_wide_in(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out,
+                                                    int bounded)
 {
     /* (p - from) . axis = p . axis - from . axis, exactly in 64 bits: each
      * product < 2^47, so the sums stay below 2^50; p - from itself may
      * exceed stp_fix's range */
     out->x = stp_view_floor_shift_sat((int64_t)p.x * t->right.x + (int64_t)p.y * t->right.y +
-                                      (int64_t)p.z * t->right.z - t->from_right);
+                                      (int64_t)p.z * t->right.z - t->from_right, bounded);
     out->y = stp_view_floor_shift_sat((int64_t)p.x * t->up.x + (int64_t)p.y * t->up.y +
-                                      (int64_t)p.z * t->up.z - t->from_up);
+                                      (int64_t)p.z * t->up.z - t->from_up, bounded);
     out->z = stp_view_floor_shift_sat((int64_t)p.x * t->forward.x + (int64_t)p.y * t->forward.y +
-                                      (int64_t)p.z * t->forward.z - t->from_forward);
+                                      (int64_t)p.z * t->forward.z - t->from_forward, bounded);
+}
+
+STP_HOT_INLINE void stp_view_transform_point_wide(const stp_view_transform *t, stp_vec3 p, stp_vec3 *out)
+{
+    stp_view_transform_point_wide_in(t, p, out, 0);
 }
 #define STP_VIEW_TRANSFORM_POINT stp_view_transform_point_wide
 #else

@@ -585,6 +585,63 @@ static void test_bad_arguments(void **state)
     m.triangles = tris;
     assert_int_equal(stp_renderer_mesh(b.r, &m, b.mesh_scratch, b.mesh.vertex_count), STP_ERR_ARG);
     assert_int_equal(stp_renderer_display_file_used(b.r), used);
+    /* an index out of range at each place of a 64-bit word, in the first
+     * and a later block of eight triangles (check_mesh's wide test), and
+     * values whose 16-bit lanes test differently: count, 2^15, 2^16 - 1 */
+    {
+        static const uint16_t places[] = {0, 1, 2, 3, 4, 7, 11, 12, 19, 20, 23, 24 * 7 + 5, 24 * 7 + 22};
+        const uint16_t values[] = {b.mesh.vertex_count, 0x8000u, 0xFFFFu};
+        size_t p, v;
+        for (p = 0; p < sizeof places / sizeof places[0]; p++)
+            for (v = 0; v < sizeof values / sizeof values[0]; v++) {
+                memcpy(tris, b.mesh.triangles, sizeof tris);
+                tris[places[p]] = values[v];
+                assert_int_equal(stp_renderer_mesh(b.r, &m, b.mesh_scratch, b.mesh.vertex_count), STP_ERR_ARG);
+            }
+        memcpy(tris, b.mesh.triangles, sizeof tris);
+        tris[3 * TORUS_TRIANGLES - 1] = b.mesh.vertex_count;
+        assert_int_equal(stp_renderer_display_file_used(b.r), used);
+    }
+    /* more than 2^15 vertices (check_mesh's other lane form): the torus's
+     * vertices repeated (500 a copy), its triangles on copies from 32 500;
+     * an index of count or above refused, those below entered */
+    {
+        const uint16_t big = 40000, base = 32768;
+        stp_vec3 *verts = malloc(big * sizeof *verts);
+        stp_mesh_vertex *scratch = malloc(big * sizeof *scratch);
+        const uint16_t values[] = {40000, 40001, 0xFFFFu};
+        const uint16_t places[] = {0, 1, 2, 3, 5, 12, 23, 24 * 9 + 17};
+        size_t i, p, v;
+        assert_non_null(verts);
+        assert_non_null(scratch);
+        for (i = 0; i < big; i++)
+            verts[i] = b.mesh.vertices[i % b.mesh.vertex_count];
+        m = b.mesh;
+        m.vertices = verts;
+        m.vertex_count = big;
+        m.triangles = tris;
+        for (p = 0; p < sizeof places / sizeof places[0]; p++)
+            for (v = 0; v < sizeof values / sizeof values[0]; v++) {
+                for (i = 0; i < 3 * TORUS_TRIANGLES; i++)
+                    tris[i] = (uint16_t)(base - base % b.mesh.vertex_count + b.mesh.triangles[i]);
+                tris[places[p]] = values[v];
+                assert_int_equal(stp_renderer_mesh(b.r, &m, scratch, big), STP_ERR_ARG);
+            }
+        assert_int_equal(stp_renderer_display_file_used(b.r), used);
+        for (i = 0; i < 3 * TORUS_TRIANGLES; i++) { /* copies at 0, 32 000 and 39 500 (39 999 the highest) */
+            static const uint16_t copy[] = {0, 32000, 39500};
+            tris[i] = (uint16_t)(copy[i % 3] + b.mesh.triangles[i]);
+        }
+        assert_int_equal(stp_renderer_mesh(b.r, &m, scratch, big), STP_OK);
+        assert_true(stp_renderer_display_file_used(b.r) > used + 1000);
+        used = stp_renderer_display_file_used(b.r);
+        memcpy(tris, b.mesh.triangles, sizeof tris);
+        tris[3 * TORUS_TRIANGLES - 1] = b.mesh.vertex_count;
+        m = b.mesh;
+        m.triangles = tris;
+        free(scratch);
+        free(verts);
+    }
     assert_int_equal(stp_renderer_mesh(0, &b.mesh, b.mesh_scratch, b.mesh.vertex_count), STP_ERR_ARG);
     assert_int_equal(stp_renderer_mesh(b.r, 0, b.mesh_scratch, b.mesh.vertex_count), STP_ERR_ARG);
     assert_int_equal(stp_renderer_mesh(b.r, &b.mesh, 0, b.mesh.vertex_count), STP_ERR_ARG);
