@@ -141,7 +141,7 @@ static int fast_state(const stp_renderer *r, const stp_mesh *mesh)
 
 /* sqrt(v) rounded up: stp_sqrt64_fast is below the root by less than
  * 2^-29 of it plus its integer part's 1; 2^-20 and 2 are room to spare. */
-static uint64_t root_up(uint64_t v)
+STP_NOINLINE uint64_t root_up(uint64_t v)
 {
     uint32_t root = stp_sqrt64_fast(v);
     return (uint64_t)root + (root >> 20) + 2;
@@ -153,7 +153,7 @@ static uint64_t root_up(uint64_t v)
  * the largest row sum of |M^T M| (bounding its largest eigenvalue, a
  * Gershgorin disc's reach), each entry below 3 2^34, a row's sum below
  * 2^38.  About 2^F times the scale for a rotation and uniform scale. */
-static uint64_t stretch_up(const stp_view_transform *t)
+STP_NOINLINE uint64_t stretch_up(const stp_view_transform *t)
 {
     const stp_vec3 *axis[3];
     uint64_t most = 0;
@@ -179,7 +179,7 @@ static uint64_t stretch_up(const stp_view_transform *t)
 /* The largest squared distance of the points p to end from c: each
  * difference at most 2^31 in magnitude (c in the points' box), the sum
  * below 3 2^62. */
-static uint64_t reach2(const stp_vec3 *p, const stp_vec3 *end, stp_vec3 c)
+STP_NOINLINE uint64_t reach2(const stp_vec3 *p, const stp_vec3 *end, stp_vec3 c)
 {
     uint64_t most = 0;
     for (; p != end; p++) {
@@ -191,22 +191,19 @@ static uint64_t reach2(const stp_vec3 *p, const stp_vec3 *end, stp_vec3 c)
     return most;
 }
 
-/* Whether every view point within rho (< 2^28) of q (below 2^28 in each
- * coordinate) has plane's stp_clip_distance (perspective) at least 0.
- * That distance is 2^-F d(.) less under 3/2 (floor(f x / 2^F) and
- * trunc(W z / 2) round down by under 1 and 1/2), for d(p) = g . p - k:
- * g = (0, 0, 2^F) and k = 2^F near for the near plane, (+-f, 0, W 2^(F-1))
- * for left and right, (0, -+f, H 2^(F-1)) for top and bottom, k = 0; so
- * d(q) - |g| rho >= 2^(F+1) is enough.  |f x|, |W 2^(F-1) z|,
- * |2^F (z - near)| < 2^59 (f < 2^31, W < 2^15), |g| < 2^32, |g| rho <
- * 2^60. */
-STP_NOINLINE int plane_clear(const stp_clip_volume *v, int plane, stp_vec3 q, uint64_t rho)
+/* Whether every view point within rho (< 2^28) of q = (a or -a, z) (a
+ * the magnitude of x or y, a and z below 2^28) is inside both side planes
+ * of a pair, left and right (f focal, s = W 2^(F-1)) or top and bottom
+ * (s = H 2^(F-1)): each plane's stp_clip_distance (perspective), fx + hw
+ * and the like, is under 3/2 below its exact value 2^-F d(.) (floor(f x /
+ * 2^F) and trunc(W z / 2) round down by under 1 and 1/2), d = g . (x, z)
+ * with g = (+-f, s), so the nearer plane's d(q) = s z - f a less |g| rho
+ * at least 2^(F+1) is enough.  |s z| < 2^58, |f a| < 2^59 (f < 2^31,
+ * W < 2^15), |g| < 2^32, |g| rho < 2^60. */
+STP_NOINLINE int sides_clear(int64_t f, int64_t s, uint32_t a, stp_fix z, uint64_t rho)
 {
-    int64_t f = v->focal;
-    int64_t gx = plane == 1 ? f : (plane == 2 ? -f : 0), gy = plane == 4 ? f : (plane == 3 ? -f : 0);
-    int64_t gz = plane == 0 ? ONE : (int64_t)(plane <= 2 ? v->width : v->height) << (F - 1);
-    int64_t d = gx * q.x + gy * q.y + gz * ((int64_t)q.z - (plane == 0 ? v->near : 0)) - (int64_t)2 * ONE;
-    return d >= 0 && (uint64_t)d >= root_up((uint64_t)(gx * gx + gy * gy) + (uint64_t)(gz * gz)) * rho;
+    int64_t d = s * z - f * (int64_t)a - (int64_t)2 * ONE;
+    return d >= 0 && (uint64_t)d >= root_up((uint64_t)(f * f) + (uint64_t)(s * s)) * rho;
 }
 
 /* Whether every vertex of mesh (its bounding box [lo, hi]) is inside the
@@ -216,16 +213,16 @@ STP_NOINLINE int plane_clear(const stp_clip_volume *v, int plane, stp_vec3 q, ui
  * view's alone: view.c), view(p) = floor(M p / 2^F - from) is
  * M p / 2^F - from - e(p) with e(p) in [0, 1)^3, so view(v) - view(c) =
  * M (v - c) / 2^F + e(c) - e(v) is shorter than stretch_up R / 2^F + 2:
- * rho.  Then each coordinate of view(c) (q) plus rho below 2^28, and each
- * plane's test (plane_clear) about q.  Not for the two steps (rounded
+ * rho.  Then each coordinate of view(c) (q) plus rho below 2^28, and the
+ * planes' tests about q.  Not for the two steps (rounded
  * twice, saturating).  box_inside's rare case: the rotated box's corners
  * of a spinning model reach further than its vertices do (the spinning
  * torus: half its frames). */
 STP_NOINLINE int ball_inside(const stp_renderer *r, const stp_mesh *mesh, const stp_vec3 *lo, const stp_vec3 *hi)
 {
+    const stp_clip_volume *v = &r->clip_volume;
     stp_vec3 c, q;
     uint64_t rho;
-    int plane;
     if (r->geometry == STP_GEOMETRY_TWO_STEPS)
         return 0;
     c.x = (stp_fix)((uint32_t)lo->x + (((uint32_t)hi->x - (uint32_t)lo->x) >> 1));
@@ -234,14 +231,16 @@ STP_NOINLINE int ball_inside(const stp_renderer *r, const stp_mesh *mesh, const 
     /* R < 2^32 + 3, stretch_up < 2^20: the product below 2^53 */
     rho = ((stretch_up(&r->point_view) * root_up(reach2(mesh->vertices, mesh->vertices + mesh->vertex_count, c)) +
             (ONE - 1)) >> F) + 2;
-    (void)stp_render_point_to_view(r, c, &q); /* saturated: fails below */
-    if (stp_abs32(q.x) + rho >= ((uint64_t)1 << 28) || stp_abs32(q.y) + rho >= ((uint64_t)1 << 28) ||
-        stp_abs32(q.z) + rho >= ((uint64_t)1 << 28))
+    if (rho >= ((uint64_t)1 << 28))
         return 0;
-    for (plane = 0; plane < 5; plane++)
-        if (!plane_clear(&r->clip_volume, plane, q, rho))
-            return 0;
-    return 1;
+    (void)stp_render_point_to_view(r, c, &q); /* saturated: fails below */
+    /* every vertex's coordinates below 2^28, z at least the near plane's
+     * (clip.c's distance exact), inside the side planes */
+    if ((stp_abs32(q.x) | stp_abs32(q.y) | stp_abs32(q.z)) + (uint32_t)rho >= ((uint32_t)1 << 28) ||
+        (int64_t)q.z - v->near < (int64_t)rho)
+        return 0;
+    return sides_clear(v->focal, (int64_t)v->width << (F - 1), stp_abs32(q.x), q.z, rho) &&
+           sides_clear(v->focal, (int64_t)v->height << (F - 1), stp_abs32(q.y), q.z, rho);
 }
 
 /* Whether every vertex of mesh (its bounding box [lo, hi]) lands strictly

@@ -265,7 +265,8 @@ static double clearance(const stp_clip_volume *v, stp_vec3 q, double rho)
 
 /* The ball at its tightest: two points c +- o, o of length R along plane
  * k's model gradient (so that a point is where the ball comes nearest to
- * plane k), c moved towards the plane in steps of one raw model unit
+ * plane k; for the near plane a ball small enough to meet it before
+ * the sides), c moved towards the plane in steps of one raw model unit
  * (binary search) to the last place the ball proves inside.  Wherever it
  * proves inside, both points' outcodes are 0 and the ball itself (radius
  * R times the model's scale about c's view point) clears every plane but
@@ -299,6 +300,8 @@ static void tight_balls(int w, int h)
         f = set_pose(&b, posed ? &t : 0);
         if (f == 0 || b.r->geometry == STP_GEOMETRY_TWO_STEPS)
             continue;
+        if (k == 0) /* small enough to meet the near plane before the sides */
+            radius *= 0.0015;
         scale = sqrt((double)f->scale2) / STP_FIX_ONE;
         far = hi_t = (int32_t)(8 * STP_FIX_ONE / scale); /* 8 view units: beyond the planes */
         model_gradient(b.r, k, n);
