@@ -176,12 +176,15 @@ STP_NOINLINE uint64_t stretch_up(const stp_view_transform *t)
     return root_up(most);
 }
 
-/* The largest squared distance of the points p to end from c: each
- * difference at most 2^31 in magnitude (c in the points' box), the sum
- * below 3 2^62. */
-STP_NOINLINE uint64_t reach2(const stp_vec3 *p, const stp_vec3 *end, stp_vec3 c)
+/* The largest squared distance of the points p to end from c, the centre
+ * of their box (its widest side span), or (32-bit targets) a bound of it:
+ * each difference below 2^31 in magnitude (c in the box), the sum below
+ * 3 2^62. */
+STP_NOINLINE uint64_t reach2(const stp_vec3 *p, const stp_vec3 *end, stp_vec3 c, uint32_t span)
 {
+#if STP_WIDE_ARITH
     uint64_t most = 0;
+    (void)span;
     for (; p != end; p++) {
         int64_t dx = (int64_t)p->x - c.x, dy = (int64_t)p->y - c.y, dz = (int64_t)p->z - c.z;
         uint64_t d = (uint64_t)(dx * dx) + (uint64_t)(dy * dy) + (uint64_t)(dz * dz);
@@ -189,6 +192,25 @@ STP_NOINLINE uint64_t reach2(const stp_vec3 *p, const stp_vec3 *end, stp_vec3 c)
             most = d;
     }
     return most;
+#else
+    /* where 64-bit products are library calls: each difference d (|d| at
+     * most span, below 2^31) as (|d| >> k) + 1 <= 2^15, at least |d| / 2^k,
+     * squared in 32 bits (the sum below 3 2^30); the bound 2^2k times it,
+     * below 3 (2^31 + 2^k)^2 < 2^64 (k <= 17) */
+    int k = stp_bit_length32(span) - 15;
+    uint32_t most = 0;
+    if (k < 0)
+        k = 0;
+    for (; p != end; p++) {
+        uint32_t dx = (stp_abs32((int32_t)((uint32_t)p->x - (uint32_t)c.x)) >> k) + 1;
+        uint32_t dy = (stp_abs32((int32_t)((uint32_t)p->y - (uint32_t)c.y)) >> k) + 1;
+        uint32_t dz = (stp_abs32((int32_t)((uint32_t)p->z - (uint32_t)c.z)) >> k) + 1;
+        uint32_t d = dx * dx + dy * dy + dz * dz;
+        if (d > most)
+            most = d;
+    }
+    return (uint64_t)most << (2 * k);
+#endif
 }
 
 /* Whether every view point within rho (< 2^28) of q = (a or -a, z) (a
@@ -223,13 +245,20 @@ STP_NOINLINE int ball_inside(const stp_renderer *r, const stp_mesh *mesh, const 
     const stp_clip_volume *v = &r->clip_volume;
     stp_vec3 c, q;
     uint64_t rho;
+    uint32_t span;
     if (r->geometry == STP_GEOMETRY_TWO_STEPS)
         return 0;
     c.x = (stp_fix)((uint32_t)lo->x + (((uint32_t)hi->x - (uint32_t)lo->x) >> 1));
     c.y = (stp_fix)((uint32_t)lo->y + (((uint32_t)hi->y - (uint32_t)lo->y) >> 1));
     c.z = (stp_fix)((uint32_t)lo->z + (((uint32_t)hi->z - (uint32_t)lo->z) >> 1));
-    /* R < 2^32 + 3, stretch_up < 2^20: the product below 2^53 */
-    rho = ((stretch_up(&r->point_view) * root_up(reach2(mesh->vertices, mesh->vertices + mesh->vertex_count, c)) +
+    span = (uint32_t)hi->x - (uint32_t)lo->x;
+    if ((uint32_t)hi->y - (uint32_t)lo->y > span)
+        span = (uint32_t)hi->y - (uint32_t)lo->y;
+    if ((uint32_t)hi->z - (uint32_t)lo->z > span)
+        span = (uint32_t)hi->z - (uint32_t)lo->z;
+    /* R < 2^33, stretch_up < 2^20: the product below 2^53 */
+    rho = ((stretch_up(&r->point_view) *
+                root_up(reach2(mesh->vertices, mesh->vertices + mesh->vertex_count, c, span)) +
             (ONE - 1)) >> F) + 2;
     if (rho >= ((uint64_t)1 << 28))
         return 0;

@@ -351,7 +351,9 @@ static void tight_balls(int w, int h)
                     "%.2f view units, at the last place by at most %.2f\n",
             w, h, searched, closest, worst);
     assert_true(searched > 1500);
-    assert_true(closest > -2 && worst < 16); /* sound, and close to the planes */
+    /* sound, and close to the planes (32-bit targets bound the radius
+     * more loosely: reach2) */
+    assert_true(closest > -2 && worst < 32);
     torus_bench_free(&b);
 }
 
