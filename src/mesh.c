@@ -232,12 +232,12 @@ STP_NOINLINE int sides_clear(int64_t f, int64_t s, uint32_t a, stp_fix z, uint64
  * view volume with its view coordinates below 2^28 in magnitude, from a
  * ball about the box's centre c holding every vertex: radius R, R^2 the
  * largest squared distance (reach2).  In one composed transform (or the
- * view's alone: view.c), view(p) = floor(M p / 2^F - from) is
- * M p / 2^F - from - e(p) with e(p) in [0, 1)^3, so view(v) - view(c) =
- * M (v - c) / 2^F + e(c) - e(v) is shorter than stretch_up R / 2^F + 2:
- * rho.  Then each coordinate of view(c) (q) plus rho below 2^28, and the
- * planes' tests about q.  Not for the two steps (rounded
- * twice, saturating).  box_inside's rare case: the rotated box's corners
+ * view's alone: view.c), view(p) = floor((M p - t) / 2^F) (t the offsets
+ * from . axis) is (M p - t) / 2^F - e(p) with e(p) in [0, 1)^3, so
+ * view(v) - view(c) = M (v - c) / 2^F + e(c) - e(v) is shorter than
+ * stretch_up R / 2^F + 2: rho.  Then each coordinate of view(c) (q) plus
+ * rho below 2^28, and the planes' tests about q.  Not for the two steps
+ * (rounded twice, saturating).  box_inside's rare case: the rotated box's corners
  * of a spinning model reach further than its vertices do (the spinning
  * torus: half its frames). */
 STP_NOINLINE int ball_inside(const stp_renderer *r, const stp_mesh *mesh, const stp_vec3 *lo, const stp_vec3 *hi)
@@ -263,8 +263,9 @@ STP_NOINLINE int ball_inside(const stp_renderer *r, const stp_mesh *mesh, const 
     if (rho >= ((uint64_t)1 << 28))
         return 0;
     (void)stp_render_point_to_view(r, c, &q); /* saturated: fails below */
-    /* every vertex's coordinates below 2^28, z at least the near plane's
-     * (clip.c's distance exact), inside the side planes */
+    /* every vertex's coordinates below 2^28 (each |q| below 2^31: the sum
+     * does not wrap), z at least the near plane's (clip.c's distance
+     * exact), inside the side planes */
     if ((stp_abs32(q.x) | stp_abs32(q.y) | stp_abs32(q.z)) + (uint32_t)rho >= ((uint32_t)1 << 28) ||
         (int64_t)q.z - v->near < (int64_t)rho)
         return 0;
@@ -286,7 +287,7 @@ static int box_inside(const stp_renderer *r, const stp_mesh *mesh, const stp_vec
 {
     uint32_t s = stp_sqrt64_fast((uint64_t)s2); /* s 2^F, >= 2^10 (similarity) */
     /* 64 2^F / s in 32 bits (64 2^F = 2^22): a library call of a 32-bit
-     * quotient rather than a 64-bit one (M0+: 300 cycles fewer a call) */
+     * quotient rather than a 64-bit one (M0+ torus: 400 cycles fewer a call) */
     int64_t margin = (int64_t)(((uint32_t)64 << F) / (s > 0 ? s : 1u)) + 1;
     int corner;
     for (corner = 0; corner < 8; corner++) {
