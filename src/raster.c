@@ -1143,6 +1143,16 @@ static int paint_setup(frame *fr, const stp_instr *v, paint style, int smooth, s
     return direct && style == fr->pattern_style;
 }
 
+/* Whether the frame gathers no shadow records (set once a frame), and
+ * pattern_port's value when that holds too (render_prepare_fill): the
+ * triangle path's ready test then reads one field, not two. */
+#if STP_WITH_SHADOWS
+#define TRIANGLE_SHADOWLESS(fr) ((fr)->shadow == 0)
+#else
+#define TRIANGLE_SHADOWLESS(fr) 1
+#endif
+#define PATTERN_PLAIN 2
+
 #if STP_WITH_TRIANGLE_PATH
 /* A polygon (its header instruction) with a shade per vertex. */
 static int polygon_smooth(const stp_instr *header)
@@ -1324,14 +1334,6 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
 /* paint_setup's answer for an opaque flat triangle without its call when
  * it has nothing to set up: a MONO1 pattern style already made, no
  * shadow records to gather (0: ask paint_setup). */
-#if STP_WITH_SHADOWS
-#define TRIANGLE_SHADOWLESS(fr) ((fr)->shadow == 0)
-#else
-#define TRIANGLE_SHADOWLESS(fr) 1
-#endif
-/* pattern_port's value when TRIANGLE_SHADOWLESS holds too (the frame's
- * shadow records are set once a frame): one test a triangle, not two */
-#define PATTERN_PLAIN 2
 #if STP_PATTERN_CACHE > 0 && !defined(__OPTIMIZE_SIZE__)
 #define TRIANGLE_PAINT_READY(fr, style, t)                                                                       \
     ((t) == 0 && (fr)->pattern_port == PATTERN_PLAIN && !((style)&STP_COLOUR_FLAG) &&                             \
