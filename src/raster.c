@@ -880,8 +880,13 @@ static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, 
 {
     pl->ddx = div_trunc(-a * 4096, c);
     pl->ddy = div_trunc(-b * 4096, c);
+#if STP_WIDE_ARITH
+    /* both in [-2^28, 2^28) by one test (|4096 a| <= 2^40: nothing to clamp) */
+    if ((((uint64_t)a + ((uint64_t)1 << 28)) | ((uint64_t)b + ((uint64_t)1 << 28))) >= ((uint64_t)1 << 29)) {
+#else
     if (!(a > -((int64_t)1 << 28) && a < ((int64_t)1 << 28) && b > -((int64_t)1 << 28) &&
           b < ((int64_t)1 << 28))) { /* else |4096 a|, |4096 b| < 2^40: nothing to clamp */
+#endif
         if (pl->ddx > ((int64_t)1 << 40)) pl->ddx = (int64_t)1 << 40;
         if (pl->ddx < -((int64_t)1 << 40)) pl->ddx = -((int64_t)1 << 40);
         if (pl->ddy > ((int64_t)1 << 40)) pl->ddy = (int64_t)1 << 40;
