@@ -1476,8 +1476,15 @@ STP_HOT_INLINE void tri_setup_mark(frame *fr, int use_z, uint32_t ordinal, const
  * Nothing is set up before the first span with pixels: a small triangle
  * often covers no pixel centre.  Coordinates are >= 0 (project()), so are
  * the crossings. */
-static void draw_triangle(frame *fr, const stp_instr *v, paint style, int use_z, stp_fix t,
-                          uint32_t ordinal)
+#if STP_WIDE_ARITH
+/* in line in replay's triangle loop where registers are plenty (64-bit
+ * hosts: no call and no saved registers a triangle); a call elsewhere */
+#define DRAW_TRIANGLE_DEF STP_HOT_INLINE void draw_triangle_run
+#else
+#define DRAW_TRIANGLE_DEF static void draw_triangle
+#define draw_triangle_run draw_triangle
+#endif
+DRAW_TRIANGLE_DEF(frame *fr, const stp_instr *v, paint style, int use_z, stp_fix t, uint32_t ordinal)
 {
     stp_tri_walk w;
     uint32_t p1, p2, width = FRAME_WIDTH(fr);
@@ -1508,6 +1515,12 @@ static void draw_triangle(frame *fr, const stp_instr *v, paint style, int use_z,
         } while (!stp_tri_walk_span(&w, width, &p1, &p2));
     }
 }
+#if STP_WIDE_ARITH
+static void draw_triangle(frame *fr, const stp_instr *v, paint style, int use_z, stp_fix t, uint32_t ordinal)
+{
+    draw_triangle_run(fr, v, style, use_z, t, ordinal);
+}
+#endif
 #endif /* STP_WITH_TRIANGLE_PATH */
 
 /* Flat triangles take their own path unless the edge pass is on (it reads
@@ -1818,7 +1831,7 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
              * Cortex-M0+ cycles less a mesh torus frame; builds for size
              * keep one test, 92 bytes less) */
             while (!STP_UNLIKELY(op != 3 || tri != 1 || polygon_smooth(in) || !STP_TRIANGLE_NARROW(in))) {
-                draw_triangle(fr, in, style, use_z, t, ordinal);
+                draw_triangle_run(fr, in, style, use_z, t, ordinal);
                 ordinal++;
                 k += 3;
                 in += 3;
