@@ -663,58 +663,55 @@ static inline uint32_t centre_index(uint32_t acc)
 
 /* Whether a row centre 16 r + 8, row <= r < end, has a pixel centre
  * between the crossings of the long edge (accumulator *acc at row, step
- * 16 slopes) and the short edge (xa, ya) - (xb, yb) (ya <= the centres <
- * yb, x below 2^14): the rasters' accumulators (stp_edge_acc_short), each
+ * 16 slopes) and the short edge a - b (a->y <= the centres < b->y, x
+ * below 2^14): the rasters' accumulators (stp_edge_acc_short), each
  * stepped by 16 slopes modulo 2^32 as the triangle walk steps them (the
  * value formed at that row).  *acc is left at end. */
-static inline int half_reached(uint32_t *acc, uint32_t step, int32_t xa, int32_t ya, int32_t xb, int32_t yb,
-                               int32_t row, int32_t end)
+static inline int half_reached(uint32_t *acc, uint32_t step, const stp_instr *a, const stp_instr *b, int32_t row,
+                               int32_t end)
 {
-    int32_t slope = stp_slope_q16_short(xb - xa, yb - ya);
-    uint32_t a = *acc, b = (uint32_t)xa * 65536u + (uint32_t)(row * 16 + STP_HALF_PIXEL - ya) * (uint32_t)slope;
+    int32_t slope;
+    uint32_t left = *acc, right = stp_edge_acc_short(a, b, row * 16 + STP_HALF_PIXEL, &slope);
     for (; row < end; row++) {
         /* centres [x_left, x_right) drawn: pixels [index(left), index(right)) */
-        if (centre_index(a) != centre_index(b))
+        if (centre_index(left) != centre_index(right))
             return 1;
-        a += step;
-        b += (uint32_t)slope * 16u;
+        left += step;
+        right += (uint32_t)slope * 16u;
     }
-    *acc = a;
+    *acc = left;
     return 0;
 }
 
 int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2, int32_t y2)
 {
-    int32_t t, row, mid, end, slope;
+    stp_instr v[3];
+    const stp_instr *top, *mid, *bot;
+    int32_t row, row_mid, end, slope;
     uint32_t acc;
     if ((uint32_t)(x0 | x1 | x2) >> 14)
         return 1; /* not narrow: kept untested */
-    /* sorted by y (the order of tied vertices changes no row's edges) */
-    if (y1 < y0) {
-        t = x0, x0 = x1, x1 = t;
-        t = y0, y0 = y1, y1 = t;
-    }
-    if (y2 < y1) {
-        t = x1, x1 = x2, x2 = t;
-        t = y1, y1 = y2, y2 = t;
-        if (y1 < y0) {
-            t = x0, x0 = x1, x1 = t;
-            t = y0, y0 = y1, y1 = t;
-        }
-    }
+    /* (the area's magnitude: any vertex order) */
     if (!STP_CENTRE_GATE_INLINE && !stp_render_thin(x0, y0, x1, y1, x2, y2))
         return 1; /* not tested (the caller's gate, here on 32-bit targets) */
-    /* the rows whose centre lies in [y0, y1), then [y1, y2) */
-    row = (y0 + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS; /* y >= 0 */
-    mid = (y1 + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS;
-    end = (y2 + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS;
+    /* the raster's vertex order and edges (edge_walk_private.h) */
+    v[0].x = x0;
+    v[0].y = y0;
+    v[1].x = x1;
+    v[1].y = y1;
+    v[2].x = x2;
+    v[2].y = y2;
+    stp_tri_sort(&v[0], &v[1], &v[2], &top, &mid, &bot);
+    /* the rows whose centre lies in [top, mid), then [mid, bottom) */
+    row = (top->y + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS; /* y >= 0 */
+    row_mid = (mid->y + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS;
+    end = (bot->y + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS;
     if (row == end)
         return 0;
-    slope = stp_slope_q16_short(x2 - x0, y2 - y0);
-    acc = (uint32_t)x0 * 65536u + (uint32_t)(row * 16 + STP_HALF_PIXEL - y0) * (uint32_t)slope;
-    if (row < mid && half_reached(&acc, (uint32_t)slope * 16u, x0, y0, x1, y1, row, mid))
+    acc = stp_edge_acc_short(top, bot, row * 16 + STP_HALF_PIXEL, &slope);
+    if (row < row_mid && half_reached(&acc, (uint32_t)slope * 16u, top, mid, row, row_mid))
         return 1;
-    return mid < end && half_reached(&acc, (uint32_t)slope * 16u, x1, y1, x2, y2, mid, end);
+    return row_mid < end && half_reached(&acc, (uint32_t)slope * 16u, mid, bot, row_mid, end);
 }
 
 /* ---- the face stage (render_private.h): shared with mesh.c ---- */
