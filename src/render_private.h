@@ -334,10 +334,10 @@ STP_HOT_INLINE int stp_render_thin(int32_t x0, int32_t y0, int32_t x1, int32_t y
  * toward zero (stp_edge_acc_short; a row stepped to holds the same
  * value).  For every x below 2^14 (others are kept, 1; the y extent is
  * below 16 (STP_CENTRE_TEST_MAX + 1)) it forms those crossings so, row
- * by row (each row's two edges are the same whatever order tied vertices
- * take); where the gate is not in line (STP_CENTRE_GATE_INLINE) it keeps
- * a triangle that is not thin first.  A call of its own (render.c), so that the callers' path without
- * the cull stays as it is. */
+ * by row, in the triangle raster's vertex order (stp_tri_sort); where the
+ * gate is not in line (STP_CENTRE_GATE_INLINE) it keeps a triangle that
+ * is not thin first.  A call of its own (render.c), so that the callers'
+ * path without the cull stays as it is. */
 int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2, int32_t y2);
 
 /* Whether a flat triangle inside the view with device vertices (x0, y0),
