@@ -38,14 +38,14 @@
 /* TIME_FIRST: a 32-bit core's build for speed (64-bit products library
  * calls, not -Os), where code off the face loop's common path is kept out
  * of stp_renderer_mesh (OUT_OF_LINE: the once-a-call steps check_mesh,
- * prepare_call and bound_and_mark; a face crossing the view volume's
+ * prepare_call and mesh_box; a face crossing the view volume's
  * planes, ready_clipped; wide_centre), so that the face loop's function
  * holds less and its branches reach (M0+ torus: 80 instructions, 167
  * cycles a frame fewer for the first two; ready_clipped 1 200 and 1 500);
  * elsewhere inline: the shorter code at -Os, the faster on a 64-bit host
  * (5 K instructions a frame fewer). */
 #if !STP_WIDE_ARITH && !defined(__OPTIMIZE_SIZE__)
-#define TIME_FIRST 1 /* also bound_and_mark's and enter_face's forms */
+#define TIME_FIRST 1 /* also mesh_box's and enter_face's forms */
 #define OUT_OF_LINE STP_NOINLINE
 #else
 #define TIME_FIRST 0
@@ -213,6 +213,22 @@ STP_NOINLINE uint64_t reach2(const stp_vec3 *p, const stp_vec3 *end, stp_vec3 c,
 #endif
 }
 
+/* The centre *c of the box [lo, hi] (rounded down) and its widest side's
+ * span, each side below 2^32. */
+static uint32_t box_centre(const stp_vec3 *lo, const stp_vec3 *hi, stp_vec3 *c)
+{
+    uint32_t span;
+    c->x = (stp_fix)((uint32_t)lo->x + (((uint32_t)hi->x - (uint32_t)lo->x) >> 1));
+    c->y = (stp_fix)((uint32_t)lo->y + (((uint32_t)hi->y - (uint32_t)lo->y) >> 1));
+    c->z = (stp_fix)((uint32_t)lo->z + (((uint32_t)hi->z - (uint32_t)lo->z) >> 1));
+    span = (uint32_t)hi->x - (uint32_t)lo->x;
+    if ((uint32_t)hi->y - (uint32_t)lo->y > span)
+        span = (uint32_t)hi->y - (uint32_t)lo->y;
+    if ((uint32_t)hi->z - (uint32_t)lo->z > span)
+        span = (uint32_t)hi->z - (uint32_t)lo->z;
+    return span;
+}
+
 /* Whether every view point within rho (< 2^28) of q = (a or -a, z) (a
  * the magnitude of x or y, a and z below 2^28) is inside both side planes
  * of a pair, left and right (f focal, s = W 2^(F-1)) or top and bottom
@@ -248,17 +264,11 @@ STP_NOINLINE int ball_inside(const stp_renderer *r, const stp_mesh *mesh, const 
     uint32_t span;
     if (r->geometry == STP_GEOMETRY_TWO_STEPS)
         return 0;
-    c.x = (stp_fix)((uint32_t)lo->x + (((uint32_t)hi->x - (uint32_t)lo->x) >> 1));
-    c.y = (stp_fix)((uint32_t)lo->y + (((uint32_t)hi->y - (uint32_t)lo->y) >> 1));
-    c.z = (stp_fix)((uint32_t)lo->z + (((uint32_t)hi->z - (uint32_t)lo->z) >> 1));
-    span = (uint32_t)hi->x - (uint32_t)lo->x;
-    if ((uint32_t)hi->y - (uint32_t)lo->y > span)
-        span = (uint32_t)hi->y - (uint32_t)lo->y;
-    if ((uint32_t)hi->z - (uint32_t)lo->z > span)
-        span = (uint32_t)hi->z - (uint32_t)lo->z;
+    span = box_centre(lo, hi, &c);
     /* R < 2^33, stretch_up < 2^20: the product below 2^53 */
     rho = ((stretch_up(&r->point_view) *
-                root_up(reach2(mesh->vertices, mesh->vertices + mesh->vertex_count, c, span)) +
+                root_up(mesh->bounds != 0 ? mesh->bounds->reach2
+                                          : reach2(mesh->vertices, mesh->vertices + mesh->vertex_count, c, span)) +
             (ONE - 1)) >> F) + 2;
     if (rho >= ((uint64_t)1 << 28))
         return 0;
@@ -326,28 +336,25 @@ STP_HOT_INLINE void box_grow(stp_fix v, stp_fix *lo, uint32_t *span)
 #endif
 
 /* The bounding box [*lo_out, *hi_out] of the points p to end (at least
- * one), their scratch entries (from sv) marked new in the same pass.
- * Where time counts on a 32-bit core (TIME_FIRST) a function of its own,
+ * one): per call, or once (stp_mesh_prepare_bounds).  Where time counts on a 32-bit core (TIME_FIRST) a function of its own,
  * short, so that a bound's rare update lies within the short conditional
  * branch's reach (ARMv6-M), and a coordinate inside the box one unsigned
  * test of its offset from the low corner (the span hi - lo): the common
  * case falls through (M0+ torus, 500 vertices: 2 700 cycles a frame
  * fewer).  Elsewhere two tests a coordinate, the shorter code (-Os) and
  * the faster on a 64-bit host. */
-OUT_OF_LINE void bound_and_mark(const stp_vec3 *p, const stp_vec3 *end, stp_mesh_vertex *sv, stp_vec3 *lo_out,
-                                stp_vec3 *hi_out)
+OUT_OF_LINE void mesh_box(const stp_vec3 *p, const stp_vec3 *end, stp_vec3 *lo_out, stp_vec3 *hi_out)
 {
 #if TIME_FIRST
     stp_fix lx = p->x, ly = p->y, lz = p->z;
     uint32_t sx = 0, sy = 0, sz = 0; /* hi - lo */
-    for (; p != end; p++, sv++) {
+    for (; p != end; p++) {
         if (STP_UNLIKELY((uint32_t)p->x - (uint32_t)lx > sx))
             box_grow(p->x, &lx, &sx);
         if (STP_UNLIKELY((uint32_t)p->y - (uint32_t)ly > sy))
             box_grow(p->y, &ly, &sy);
         if (STP_UNLIKELY((uint32_t)p->z - (uint32_t)lz > sz))
             box_grow(p->z, &lz, &sz);
-        sv->state = STATE_NEW;
     }
     lo_out->x = lx;
     lo_out->y = ly;
@@ -357,7 +364,7 @@ OUT_OF_LINE void bound_and_mark(const stp_vec3 *p, const stp_vec3 *end, stp_mesh
     hi_out->z = (stp_fix)((uint32_t)lz + sz);
 #else
     stp_vec3 lo = *p, hi = *p;
-    for (; p != end; p++, sv++) {
+    for (; p != end; p++) {
         stp_fix x = p->x, y = p->y, z = p->z;
         if (STP_UNLIKELY(x < lo.x))
             lo.x = x;
@@ -371,11 +378,31 @@ OUT_OF_LINE void bound_and_mark(const stp_vec3 *p, const stp_vec3 *end, stp_mesh
             lo.z = z;
         if (STP_UNLIKELY(z > hi.z))
             hi.z = z;
-        sv->state = STATE_NEW;
     }
     *lo_out = lo;
     *hi_out = hi;
 #endif
+}
+
+/* The n scratch entries from sv marked new (not transformed in this
+ * call). */
+static void mark_new(stp_mesh_vertex *sv, uint16_t n)
+{
+    stp_mesh_vertex *end = sv + n;
+    for (; sv != end; sv++)
+        sv->state = STATE_NEW;
+}
+
+int stp_mesh_prepare_bounds(const stp_mesh *mesh, stp_mesh_bounds *bounds)
+{
+    stp_vec3 c;
+    uint32_t span;
+    if (mesh == 0 || bounds == 0 || mesh->vertices == 0 || mesh->vertex_count == 0)
+        return STP_ERR_ARG;
+    mesh_box(mesh->vertices, mesh->vertices + mesh->vertex_count, &bounds->lo, &bounds->hi);
+    span = box_centre(&bounds->lo, &bounds->hi, &c);
+    bounds->reach2 = reach2(mesh->vertices, mesh->vertices + mesh->vertex_count, c, span);
+    return STP_OK;
 }
 
 /* The per-call values of the fast path (mesh_context); 0 when the model
@@ -395,10 +422,15 @@ OUT_OF_LINE int prepare_call(mesh_context *c)
     for (j = 0; j < 3; j++)
         big |= stp_abs32(f->eye[j]);
     /* the scale of the back-face test (every coordinate below 2^14) and
-     * the model's bounding box; the scratch entries marked new in the
-     * same pass */
-    p = c->mesh->vertices;
-    bound_and_mark(p, p + c->mesh->vertex_count, c->scratch, &lo, &hi);
+     * the model's bounding box: prepared, or found here */
+    if (c->mesh->bounds != 0) {
+        lo = c->mesh->bounds->lo;
+        hi = c->mesh->bounds->hi;
+    } else {
+        p = c->mesh->vertices;
+        mesh_box(p, p + c->mesh->vertex_count, &lo, &hi);
+    }
+    mark_new(c->scratch, c->mesh->vertex_count);
     /* the box's corners bound every coordinate's magnitude */
     big |= stp_abs32(lo.x) | stp_abs32(lo.y) | stp_abs32(lo.z) | stp_abs32(hi.x) |
            stp_abs32(hi.y) | stp_abs32(hi.z);
@@ -771,10 +803,8 @@ static int enter_faces(mesh_context *c, uint16_t count)
 STP_NOINLINE int enter_slow(const mesh_context *c, uint16_t count)
 {
     const uint16_t *k = c->mesh->triangles, *end = k + 3 * (uint32_t)count;
-    stp_mesh_vertex *sv, *sv_end;
     int status = STP_OK;
-    for (sv = c->scratch, sv_end = sv + c->mesh->vertex_count; sv != sv_end; sv++)
-        sv->state = STATE_NEW;
+    mark_new(c->scratch, c->mesh->vertex_count);
     for (; k != end; k += 3)
         if ((status = enter_fallback(c, k)) != STP_OK)
             break;

@@ -115,6 +115,7 @@ static size_t triangulate(const stp_scene *scene, const size_t *remap, const stp
             one.vertices = vertices;
             one.triangles = t;
             one.normals = 0;
+            one.bounds = 0;
             one.vertex_count = (uint16_t)MAX_COUNT;
             one.triangle_count = 1;
             if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
@@ -159,7 +160,7 @@ static void write_header(FILE *out, const char *name, const char *source, const 
     fprintf(out, "};\n\nstatic const int16_t %s_normals[%zu] STP_MESH_ROM = {\n", name, 3 * nt);
     for (i = 0; i < nt; i++)
         fprintf(out, "    %d, %d, %d,\n", normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
-    fprintf(out, "};\n\nstatic const stp_mesh %s_mesh STP_MESH_ROM = {%s_vertices, %s_triangles, %s_normals, %zuu, %zuu};\n\n#endif\n",
+    fprintf(out, "};\n\nstatic const stp_mesh %s_mesh STP_MESH_ROM = {%s_vertices, %s_triangles, %s_normals, %zuu, %zuu, 0};\n\n#endif\n",
             name, name, name, name, nv, nt);
 }
 

@@ -15,7 +15,8 @@
  *   An animated mesh on a microcontroller
  *       -> stp_renderer_create once (static stp_renderer_storage, no heap),
  *          then per frame stp_renderer_set_transform, stp_renderer_mesh
- *          (mesh.h; normals once with stp_mesh_prepare_normals) and
+ *          (mesh.h; normals and bounds once with stp_mesh_prepare_normals
+ *          and stp_mesh_prepare_bounds) and
  *          stp_renderer_render band by band into the display's page buffer
  *          (stp_port, port.h).  The smallest image: direct drawing,
  *          stp_direct_frame_project then stp_direct_draw_band per band

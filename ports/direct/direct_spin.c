@@ -56,6 +56,7 @@ int direct_spin_init(direct_spin *s)
     s->mesh.vertices = s->vertices;
     s->mesh.triangles = s->triangles;
     s->mesh.normals = s->normals;
+    s->mesh.bounds = 0;
     s->mesh.vertex_count = (uint16_t)SPIN_VERTICES;
     s->mesh.triangle_count = (uint16_t)SPIN_TRIANGLES;
     status = stp_mesh_prepare_normals(&s->mesh, s->normals, 0);

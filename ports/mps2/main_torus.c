@@ -34,6 +34,7 @@ static stp_mesh mesh;
 static stp_vec3 vertices[TORUS_MESH_VERTICES];
 static uint16_t triangles[3 * TORUS_TRIANGLES];
 static int16_t normals[3 * TORUS_TRIANGLES];
+static stp_mesh_bounds bounds;
 static stp_mesh_vertex scratch[TORUS_MESH_VERTICES];
 #define TORUS_ENTER(r) torus_enter_mesh(r, &mesh, scratch)
 #else
@@ -115,7 +116,7 @@ int main(void)
         return 1;
     }
 #if STP_FW_MESH
-    if (torus_mesh_build(&mesh, vertices, triangles, normals) != STP_OK) {
+    if (torus_mesh_build(&mesh, vertices, triangles, normals, &bounds) != STP_OK) {
         stp_semihost_write("stipple: mesh normals failed\n");
         return 1;
     }

@@ -48,7 +48,8 @@ static uint16_t torus_index(int i, int j)
     return (uint16_t)((i % TORUS_AROUND) * TORUS_TUBE + j % TORUS_TUBE);
 }
 
-int torus_mesh_build(stp_mesh *mesh, stp_vec3 *vertices, uint16_t *triangles, int16_t *normals)
+int torus_mesh_build(stp_mesh *mesh, stp_vec3 *vertices, uint16_t *triangles, int16_t *normals,
+                     stp_mesh_bounds *bounds)
 {
     int i, j;
     uint16_t *t = triangles;
@@ -68,9 +69,11 @@ int torus_mesh_build(stp_mesh *mesh, stp_vec3 *vertices, uint16_t *triangles, in
     mesh->triangles = triangles;
     mesh->triangle_count = TORUS_TRIANGLES;
     mesh->normals = 0;
-    if (stp_mesh_prepare_normals(mesh, normals, 0) != STP_OK)
+    mesh->bounds = 0;
+    if (stp_mesh_prepare_normals(mesh, normals, 0) != STP_OK || stp_mesh_prepare_bounds(mesh, bounds) != STP_OK)
         return STP_ERR_DEGENERATE;
     mesh->normals = normals;
+    mesh->bounds = bounds;
     return STP_OK;
 }
 

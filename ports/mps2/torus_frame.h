@@ -23,8 +23,9 @@
 
 /* vertices: TORUS_MESH_VERTICES points; triangles: 3 * TORUS_TRIANGLES
  * indices (in torus_build's order); normals: 3 * TORUS_TRIANGLES
- * (stp_mesh_prepare_normals).  Returns STP_OK or its error. */
-int torus_mesh_build(stp_mesh *mesh, stp_vec3 *vertices, uint16_t *triangles, int16_t *normals);
+ * (stp_mesh_prepare_normals); bounds: the vertices' (stp_mesh_prepare_bounds).  Returns STP_OK or its error. */
+int torus_mesh_build(stp_mesh *mesh, stp_vec3 *vertices, uint16_t *triangles, int16_t *normals,
+                     stp_mesh_bounds *bounds);
 
 /* torus_enter through stp_renderer_mesh (scratch: TORUS_MESH_VERTICES
  * entries). */

@@ -74,6 +74,7 @@ static void finish(model *m)
     m->mesh.vertices = m->v;
     m->mesh.triangles = m->t;
     m->mesh.normals = m->n;
+    m->mesh.bounds = 0;
     assert_int_equal(stp_mesh_prepare_normals(&m->mesh, m->n, NULL), STP_OK);
 }
 

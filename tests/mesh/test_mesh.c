@@ -566,6 +566,35 @@ static void test_normals_errors(void **state)
     assert_int_equal(stp_mesh_prepare_normals(&m, 0, &bad), STP_ERR_ARG);
 }
 
+/* stp_mesh_prepare_bounds: the box of small_vertices; bad arguments
+ * STP_ERR_ARG with the bounds left alone. */
+static void test_bounds_errors(void **state)
+{
+    stp_mesh_bounds b, before;
+    stp_mesh m;
+    int i;
+    (void)state;
+    memset(&m, 0, sizeof m);
+    m.vertices = small_vertices;
+    m.vertex_count = 5;
+    assert_int_equal(stp_mesh_prepare_bounds(&m, &b), STP_OK);
+    for (i = 0; i < 5; i++) {
+        assert_true(b.lo.x <= small_vertices[i].x && small_vertices[i].x <= b.hi.x);
+        assert_true(b.lo.y <= small_vertices[i].y && small_vertices[i].y <= b.hi.y);
+        assert_true(b.lo.z <= small_vertices[i].z && small_vertices[i].z <= b.hi.z);
+    }
+    memset(&before, 0x5a, sizeof before);
+    b = before;
+    assert_int_equal(stp_mesh_prepare_bounds(0, &b), STP_ERR_ARG);
+    assert_int_equal(stp_mesh_prepare_bounds(&m, 0), STP_ERR_ARG);
+    m.vertex_count = 0;
+    assert_int_equal(stp_mesh_prepare_bounds(&m, &b), STP_ERR_ARG);
+    m.vertex_count = 5;
+    m.vertices = 0;
+    assert_int_equal(stp_mesh_prepare_bounds(&m, &b), STP_ERR_ARG);
+    assert_memory_equal(&b, &before, sizeof b);
+}
+
 /* Bad arguments: STP_ERR_ARG with nothing entered. */
 static void test_bad_arguments(void **state)
 {
@@ -808,6 +837,7 @@ int main(void)
         cmocka_unit_test(test_shading_cache),
         cmocka_unit_test(test_normals),
         cmocka_unit_test(test_normals_errors),
+        cmocka_unit_test(test_bounds_errors),
         cmocka_unit_test(test_bad_arguments),
         cmocka_unit_test(test_shared_scenes),
     };

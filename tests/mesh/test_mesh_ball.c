@@ -13,13 +13,18 @@
  * out in many, and its display files and frames there and in random
  * poses across the window's edges equal stp_renderer_polygon's, which
  * forms every vertex's outcode (no proof).  Again on the 32-bit target
- * arithmetic (test_mesh_ball_narrow).
+ * arithmetic (test_mesh_ball_narrow).  Bounds prepared once
+ * (stp_mesh_prepare_bounds) are the box and reach the per-call pass finds,
+ * checked against an exact reference, and give the same proofs, display
+ * files and frames.
  */
 #define stp_renderer_mesh stp_renderer_mesh_ball
 #define stp_mesh_prepare_normals stp_mesh_prepare_normals_ball
+#define stp_mesh_prepare_bounds stp_mesh_prepare_bounds_ball
 #include "mesh.c"
 #undef stp_renderer_mesh
 #undef stp_mesh_prepare_normals
+#undef stp_mesh_prepare_bounds
 
 #include <math.h>
 #include <setjmp.h>
@@ -146,11 +151,76 @@ static int random_transform(stp_transform *t)
     return 1;
 }
 
+__extension__ typedef unsigned __int128 u128; /* GCC and Clang on 64-bit hosts */
+__extension__ typedef __int128 s128;
+
+/* The exact largest squared distance of m's vertices from the centre of
+ * their box [lo, hi] (as box_centre rounds it), in 128 bits. */
+static u128 exact_reach2(const stp_mesh *m, stp_vec3 lo, stp_vec3 hi)
+{
+    u128 most = 0;
+    int64_t c[3];
+    int i;
+    c[0] = ((int64_t)lo.x + hi.x) >> 1;
+    c[1] = ((int64_t)lo.y + hi.y) >> 1;
+    c[2] = ((int64_t)lo.z + hi.z) >> 1;
+    for (i = 0; i < m->vertex_count; i++) {
+        const stp_vec3 *v = &m->vertices[i];
+        s128 dx = v->x - c[0], dy = v->y - c[1], dz = v->z - c[2];
+        u128 d = (u128)(dx * dx + dy * dy + dz * dz);
+        if (d > most)
+            most = d;
+    }
+    return most;
+}
+
+/* m's bounds prepared once: the box of its vertices (an independent
+ * scan), reach2 the exact one where 64-bit products are instructions, else
+ * a bound within each difference's rounding (2^k, k the widest side's bits
+ * less 15, each square rounded up); with them, the same proofs as the
+ * per-call pass's (by_ball, by_stage). */
+static void prepared_alike(const stp_renderer *r, stp_mesh *m, const stp_model_frame *f, int by_ball, int by_stage)
+{
+    stp_mesh_bounds pb;
+    stp_vec3 lo = m->vertices[0], hi = m->vertices[0];
+    u128 exact;
+    int i, k;
+    uint32_t span;
+    assert_int_equal(stp_mesh_prepare_bounds_ball(m, &pb), STP_OK);
+    for (i = 1; i < m->vertex_count; i++) {
+        const stp_vec3 *v = &m->vertices[i];
+        lo.x = v->x < lo.x ? v->x : lo.x;
+        lo.y = v->y < lo.y ? v->y : lo.y;
+        lo.z = v->z < lo.z ? v->z : lo.z;
+        hi.x = v->x > hi.x ? v->x : hi.x;
+        hi.y = v->y > hi.y ? v->y : hi.y;
+        hi.z = v->z > hi.z ? v->z : hi.z;
+    }
+    assert_memory_equal(&pb.lo, &lo, sizeof lo);
+    assert_memory_equal(&pb.hi, &hi, sizeof hi);
+    exact = exact_reach2(m, lo, hi);
+    if (STP_WIDE_ARITH) {
+        assert_true(pb.reach2 == exact);
+    } else {
+        span = (uint32_t)(hi.x - lo.x);
+        span = (uint32_t)(hi.y - lo.y) > span ? (uint32_t)(hi.y - lo.y) : span;
+        span = (uint32_t)(hi.z - lo.z) > span ? (uint32_t)(hi.z - lo.z) : span;
+        for (k = 0; k < 32 && (span >> k) != 0; k++)
+            ;
+        k = k > 15 ? k - 15 : 0;
+        assert_true(pb.reach2 >= exact);
+        assert_true(sqrt((double)pb.reach2) <= sqrt((double)exact) + 1.75 * ldexp(1, k) + 1);
+    }
+    m->bounds = &pb;
+    assert_int_equal(ball_inside(r, m, &pb.lo, &pb.hi), by_ball);
+    assert_int_equal(box_inside(r, m, &pb.lo, &pb.hi, f->scale2), by_stage);
+    m->bounds = 0;
+}
+
 static void random_clouds(int w, int h)
 {
     static torus_bench b;
     static stp_vec3 p[CLOUD_MAX];
-    static stp_mesh_vertex scratch[CLOUD_MAX];
     char err[256];
     long trial, ball = 0, ball_only = 0, truth = 0, stage = 0, missed = 0;
     assert_int_equal(torus_bench_init(&b, w, h, err, sizeof err), 0);
@@ -166,10 +236,11 @@ static void random_clouds(int w, int h)
         memset(&m, 0, sizeof m);
         m.vertices = p;
         m.vertex_count = (uint16_t)n;
-        bound_and_mark(p, p + n, scratch, &lo, &hi);
+        mesh_box(p, p + n, &lo, &hi);
         in = all_inside(b.r, p, n);
         by_ball = ball_inside(b.r, &m, &lo, &hi);
         by_stage = box_inside(b.r, &m, &lo, &hi, f->scale2);
+        prepared_alike(b.r, &m, f, by_ball, by_stage);
         if ((by_ball && !in) || (by_stage && !in))
             fprintf(stderr, "  trial %ld: %d points, ball %d, stage %d, but a point is outside\n", trial, n,
                     by_ball, by_stage);
@@ -283,7 +354,6 @@ static void tight_balls(int w, int h)
     for (trial = 0; trial < 3000; trial++) {
         stp_transform t;
         stp_vec3 p[2], lo, hi, c, q;
-        stp_mesh_vertex scratch[2];
         stp_mesh m;
         double n[3], radius = exp(uniform(log(0.01), log(1.5))), scale = 1, rho = 0;
         const stp_model_frame *f;
@@ -323,7 +393,7 @@ static void tight_balls(int w, int h)
             p[1].x = c.x - o[0];
             p[1].y = c.y - o[1];
             p[1].z = c.z - o[2];
-            bound_and_mark(p, p + 2, scratch, &lo, &hi);
+            mesh_box(p, p + 2, &lo, &hi);
             if (ball_inside(b.r, &m, &lo, &hi)) {
                 double clear;
                 assert_true(all_inside(b.r, p, 2));
@@ -392,10 +462,17 @@ static int same_frames(int w, int h, double tilt, double spin, double dx, double
     assert_int_equal(stp_renderer_display_file_used(mesh.r), used);
     assert_memory_equal(poly.df, mesh.df, sizeof *poly.df * used);
     assert_int_equal(memcmp(poly.frame, mesh.frame, poly.stride * (size_t)h), 0);
+    /* the bench's mesh has prepared bounds; without, the same again */
+    assert_non_null(mesh.mesh.bounds);
+    mesh.mesh.bounds = 0;
+    assert_int_equal(torus_frame(&mesh), 0);
+    assert_int_equal(stp_renderer_display_file_used(mesh.r), used);
+    assert_memory_equal(poly.df, mesh.df, sizeof *poly.df * used);
+    assert_int_equal(memcmp(poly.frame, mesh.frame, poly.stride * (size_t)h), 0);
     /* the proof for this pose, the torus's box as the mesh path finds it */
     f = set_pose(&mesh, &mesh.pose);
     assert_non_null(f);
-    bound_and_mark(mesh.mesh.vertices, mesh.mesh.vertices + mesh.mesh.vertex_count, mesh.mesh_scratch, &lo, &hi);
+    mesh_box(mesh.mesh.vertices, mesh.mesh.vertices + mesh.mesh.vertex_count, &lo, &hi);
     inside = box_inside(mesh.r, &mesh.mesh, &lo, &hi, f->scale2);
     assert_true(all_inside(mesh.r, mesh.mesh.vertices, mesh.mesh.vertex_count) || !inside);
     *out = corner_out(mesh.r, lo, hi);

@@ -12,9 +12,11 @@
 #define STP_WITH_MESH_FALLBACK 0
 #define stp_renderer_mesh stp_renderer_mesh_nofallback
 #define stp_mesh_prepare_normals stp_mesh_prepare_normals_nofallback
+#define stp_mesh_prepare_bounds stp_mesh_prepare_bounds_nofallback
 #include "mesh.c"
 #undef stp_renderer_mesh
 #undef stp_mesh_prepare_normals
+#undef stp_mesh_prepare_bounds
 
 #include <setjmp.h>
 #include <stdarg.h>

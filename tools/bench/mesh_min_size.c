@@ -20,7 +20,7 @@ int main(void)
     stp_renderer *r = stp_renderer_create(&storage, sizeof storage, df, 4000, 128, 64);
     stp_view v; stp_lighting l; stp_material m; stp_transform t; stp_port port; stp_frame_memory mem; stp_output out;
     stp_mesh mesh; int a;
-    mesh.vertices = verts; mesh.vertex_count = 500; mesh.triangles = tris; mesh.triangle_count = 1000; mesh.normals = normals;
+    mesh.vertices = verts; mesh.vertex_count = 500; mesh.triangles = tris; mesh.triangle_count = 1000; mesh.normals = normals; mesh.bounds = 0;
     stp_renderer_set_view(r, &v);
     stp_lighting_default(&l);
     stp_renderer_set_lighting(r, &l);

@@ -71,6 +71,7 @@ static void part_triangle(part *pt, uint16_t a, uint16_t b, uint16_t c)
     one.triangles = tri;
     one.triangle_count = 1;
     one.normals = 0;
+    one.bounds = 0;
     if (stp_mesh_prepare_normals(&one, n, 0) != STP_OK)
         return;
     if (pt->triangle_count + 1 > pt->capacity) {
@@ -231,7 +232,7 @@ int main(int argc, char **argv)
         stp_material_default(&m);
         if (parts[k].material >= 0 && (size_t)parts[k].material < prep.scene.material_count)
             stp_tool_material(&prep.scene.materials[parts[k].material], 0, &m);
-        fprintf(f, "    {{part%zu_vertices, part%zu_triangles, part%zu_normals, %zu, %zu},\n", k, k, k,
+        fprintf(f, "    {{part%zu_vertices, part%zu_triangles, part%zu_normals, %zu, %zu, 0},\n", k, k, k,
                 parts[k].vertex_count, parts[k].triangle_count);
         fprintf(f, "     {%ld, %ld, %ld, %ld, {%ld, %ld, %ld}},\n     %d},\n", (long)m.reflectivity,
                 (long)m.refraction, (long)m.gloss, (long)m.specular, (long)m.colour[0],

@@ -94,6 +94,7 @@ void torus_bench_free(torus_bench *b)
     free(b->mesh_vertices);
     free(b->mesh_triangles);
     free(b->mesh_normals);
+    free(b->mesh_bounds);
     free(b->mesh_scratch);
     free(b->fine_parts);
     stp_scene_free(&b->scene);
@@ -223,11 +224,15 @@ int torus_bench_use_mesh(torus_bench *b, char *err, size_t err_size)
         return -1;
     }
     b->mesh.normals = b->mesh_normals;
+    b->mesh_bounds = malloc(sizeof *b->mesh_bounds);
     b->mesh_scratch = malloc(sizeof *b->mesh_scratch * count);
-    if (!b->mesh_scratch) {
+    if (!b->mesh_scratch || !b->mesh_bounds) {
         snprintf(err, err_size, "out of memory");
         return -1;
     }
+    /* prepared once, as normals are: a spun model keeps its vertices */
+    (void)stp_mesh_prepare_bounds(&b->mesh, b->mesh_bounds); /* vertices present: STP_OK */
+    b->mesh.bounds = b->mesh_bounds;
     b->scratch_count = count;
     b->parts = &b->mesh;
     b->part_count = 1;
@@ -308,10 +313,11 @@ int torus_bench_use_fine_mesh(torus_bench *b, int around, int tube, unsigned par
     b->mesh_triangles = malloc(sizeof *b->mesh_triangles * 3 * triangles);
     b->mesh_normals = malloc(sizeof *b->mesh_normals * 3 * triangles);
     b->fine_parts = calloc((size_t)parts, sizeof *b->fine_parts);
+    b->mesh_bounds = malloc(sizeof *b->mesh_bounds * (size_t)parts);
     b->scratch_count = ((size_t)max_rings + 1) * (size_t)tube;
     b->mesh_scratch = malloc(sizeof *b->mesh_scratch * b->scratch_count);
     if (!b->mesh_vertices || !b->mesh_triangles || !b->mesh_normals || !b->fine_parts ||
-        !b->mesh_scratch) {
+        !b->mesh_scratch || !b->mesh_bounds) {
         snprintf(err, err_size, "out of memory");
         return -1;
     }
@@ -321,6 +327,8 @@ int torus_bench_use_fine_mesh(torus_bench *b, int around, int tube, unsigned par
         if (fine_part(&b->fine_parts[p], i0, rings, around, tube, b->mesh_vertices + vi,
                       b->mesh_triangles + ti, b->mesh_normals + ti, err, err_size) != 0)
             return -1;
+        (void)stp_mesh_prepare_bounds(&b->fine_parts[p], &b->mesh_bounds[p]);
+        b->fine_parts[p].bounds = &b->mesh_bounds[p];
         vi += (size_t)(rings + 1) * (size_t)tube;
         ti += 6 * (size_t)rings * (size_t)tube;
         i0 += rings;

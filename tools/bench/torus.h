@@ -66,6 +66,7 @@ typedef struct torus_bench {
     stp_vec3 *mesh_vertices;
     uint16_t *mesh_triangles;
     int16_t *mesh_normals;
+    stp_mesh_bounds *mesh_bounds;   /* each mesh's (stp_mesh_prepare_bounds): one, or one a part */
     stp_mesh_vertex *mesh_scratch;
     /* the meshes torus_frame enters, in order (torus_bench_use_mesh: the
      * one above; torus_bench_use_fine_mesh: a finer torus in parts) */

@@ -33,6 +33,7 @@ int main(int argc, char **argv)
     const char *out_path = 0;
     int i, status = STP_OK, use_mesh = 0;
     stp_mesh mesh;
+    stp_mesh_bounds bounds;
     stp_vec3 *mesh_vertices;
     uint16_t *triangles;
     int16_t *normals;
@@ -95,7 +96,7 @@ int main(int argc, char **argv)
     port.user = &pic;
     status = r ? torus_setup(r) : STP_ERR_ARG;
     if (status == STP_OK && use_mesh)
-        status = torus_mesh_build(&mesh, mesh_vertices, triangles, normals);
+        status = torus_mesh_build(&mesh, mesh_vertices, triangles, normals, &bounds);
     for (f = 0; f < frames && status == STP_OK; f++) {
         status = use_mesh ? torus_enter_mesh(r, &mesh, scratch) : torus_enter(r, vertices);
         if (status == STP_OK)

@@ -38,6 +38,7 @@ public:
         mesh_.vertices = vertices_;
         mesh_.triangles = triangles_;
         mesh_.normals = normals_;
+        mesh_.bounds = 0; /* a flash pointer on AVR: the core finds them per call */
 #else
         mesh_ = *rom;
         if (mesh_.vertex_count > VERTICES || mesh_.triangle_count > TRIANGLES)

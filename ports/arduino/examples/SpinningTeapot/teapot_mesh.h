@@ -174,6 +174,6 @@ static const int16_t teapot_normals[156] STP_MESH_ROM = {
     1622, -1622, -16223,
 };
 
-static const stp_mesh teapot_mesh STP_MESH_ROM = {teapot_vertices, teapot_triangles, teapot_normals, 37u, 52u};
+static const stp_mesh teapot_mesh STP_MESH_ROM = {teapot_vertices, teapot_triangles, teapot_normals, 37u, 52u, 0};
 
 #endif

@@ -65,6 +65,6 @@ static const int16_t cube_normals[36] STP_MESH_ROM = {
     -16384, 0, 0,
 };
 
-static const stp_mesh cube_mesh STP_MESH_ROM = {cube_vertices, cube_triangles, cube_normals, 8u, 12u};
+static const stp_mesh cube_mesh STP_MESH_ROM = {cube_vertices, cube_triangles, cube_normals, 8u, 12u, 0};
 
 #endif
