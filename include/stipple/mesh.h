@@ -70,9 +70,12 @@ typedef struct stp_mesh_bounds {
  * 3 * triangle_count Q1.14 components (x, y, z of each triangle's unit
  * outward normal in model coordinates, stp_mesh_prepare_normals); bounds:
  * NULL (found by each stp_renderer_mesh call), or stp_mesh_prepare_bounds'
- * for exactly these vertices - bounds that do not hold every vertex let
- * stp_renderer_mesh draw a vertex outside the view without clipping it:
- * a wrong picture, and view coordinates that may overflow. */
+ * for exactly these vertices.  Bounds that do not hold every vertex are a
+ * caller error as a short scratch array is, with undefined results:
+ * stp_renderer_mesh trusts them to skip clipping and saturation, so a
+ * vertex outside the view may be projected unclipped (behind the eye: a
+ * division by a depth of 0 or less).  Re-prepare after changing vertices,
+ * or leave bounds NULL for vertices that change every frame. */
 typedef struct stp_mesh {
     const stp_vec3 *vertices;
     const uint16_t *triangles;
