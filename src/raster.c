@@ -233,6 +233,69 @@ STP_HOT_INLINE void style_from_slot(frame *fr, paint style, uint32_t slot)
 }
 #endif
 
+#if STP_PATTERN_KEEP
+/* Slot's pattern rows, made for the cell level `level`, kept in the
+ * renderer (stp_pattern_keep) for the frames after. */
+static void patterns_keep(frame *fr, uint32_t slot, uint8_t level)
+{
+    stp_pattern_keep *k = &fr->r->kept_patterns;
+    uint32_t cy;
+    k->style[slot] = fr->cached_style[slot];
+    k->level[slot] = level;
+    for (cy = 0; cy < 4; cy++)
+        k->rows[slot][cy] = fr->cached_rows[slot][cy];
+}
+
+/* Whether the kept rows were made for cell (one of at most 4 rows, its
+ * width dividing 8: at most STP_PATTERN_KEEP_TABLE thresholds), its
+ * thresholds compared; if not, cell made the kept one, with no styles. */
+static int patterns_kept_cell(stp_pattern_keep *k, const stp_cell *cell)
+{
+    const uint8_t *t = stp_cell_table(cell);
+    uint32_t i, n = (uint32_t)cell->width * cell->height, same;
+    same = k->width == cell->width && k->height == cell->height && k->kind == cell->kind;
+    for (i = 0; same && i < n; i++)
+        same = k->table[i] == t[i];
+    if (same)
+        return 1;
+    k->kind = cell->kind;
+    k->width = cell->width;
+    k->height = cell->height;
+    for (i = 0; i < n; i++)
+        k->table[i] = t[i];
+    for (i = 0; i < STP_PATTERN_CACHE; i++)
+        k->style[i] = -1;
+    return 0;
+}
+#endif
+
+#if STP_PATTERN_CACHE > 0
+/* The frame's pattern rows of recent styles (use_style): empty, or on
+ * 64-bit hosts those the renderer kept from the frames before for this
+ * frame's cell whose styles still map to the cell level they were made
+ * for (a torus frame at 128x64 makes 13 styles: 4 000 instructions). */
+static void patterns_start(frame *fr)
+{
+    uint32_t i;
+#if STP_PATTERN_KEEP
+    stp_pattern_keep *k = &fr->r->kept_patterns;
+    if (fr->mono_fill && fr->cell->height <= 4 && patterns_kept_cell(k, fr->cell)) {
+        for (i = 0; i < STP_PATTERN_CACHE; i++) {
+            paint style = k->style[i];
+            fr->cached_style[i] = style >= 0 && level_of(fr, style) == k->level[i] ? style : -1;
+            fr->cached_rows[i][0] = k->rows[i][0];
+            fr->cached_rows[i][1] = k->rows[i][1];
+            fr->cached_rows[i][2] = k->rows[i][2];
+            fr->cached_rows[i][3] = k->rows[i][3];
+        }
+        return;
+    }
+#endif
+    for (i = 0; i < STP_PATTERN_CACHE; i++)
+        fr->cached_style[i] = -1;
+}
+#endif
+
 /* Make style the one put_span fills MONO1 spans of from pattern bytes:
  * one byte per cell row, built once for a run of polygons of that style
  * rather than per span. */
@@ -250,6 +313,9 @@ static void use_style(frame *fr, paint style)
             for (cy = 0; cy < 4; cy++)
                 fr->cached_rows[slot][cy] = cy < fr->cell->height ? stp_halftone_pattern_byte(fr->cell, cy, level) : 0;
             fr->cached_style[slot] = style;
+#if STP_PATTERN_KEEP
+            patterns_keep(fr, slot, level); /* for the frames after */
+#endif
         }
         style_from_slot(fr, style, slot);
         return;
@@ -2278,8 +2344,7 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
     fr->cell_mask = (fr->cell->height & (fr->cell->height - 1u)) == 0 ? fr->cell->height - 1u : 0;
     fr->pattern_style = -1;
 #if STP_PATTERN_CACHE > 0
-    for (i = 0; i < STP_PATTERN_CACHE; i++)
-        fr->cached_style[i] = -1;
+    patterns_start(fr);
 #endif
     (void)i;
     use_style(fr, background);
