@@ -1973,6 +1973,12 @@ static void sort_entries(stp_sort_entry *e, size_t n)
 }
 #endif
 
+/* Whether the Z buffer's scan (scan_triangles) widens the device x
+ * extent: not on 64-bit hosts, whose Z buffer is then cleared in whole
+ * rows (frame_extent) for a third of the scan's tests (the depth keys'
+ * extent stays exact: it sets the depths) */
+#define SCAN_X (!STP_WIDE_ARITH)
+
 /* The extent of the visible polygons' vertices: device x and y (Q27.4)
  * and depth keys, each as its least value and its width (the greatest
  * minus the least, modulo 2^32: the int32 range's width fits a uint32).
@@ -2055,15 +2061,17 @@ static void frame_extent(frame *fr, uint32_t count, const extent *ex)
     fr->x_max = ((uint32_t)ex->x_lo + ex->x_width) >> SUB;
     fr->y_min = (uint32_t)ex->y_lo >> SUB;
     fr->y_max = ((uint32_t)ex->y_lo + ex->y_width) >> SUB;
-    if (fr->x_max > fr->r->width - 1)
+    if (fr->x_max > fr->r->width - 1 || !SCAN_X)
         fr->x_max = fr->r->width - 1;
+    if (!SCAN_X) /* whole rows: the scan left x out */
+        fr->x_min = 0;
     if (fr->y_max > fr->r->height - 1)
         fr->y_max = fr->r->height - 1;
 }
 
 /* Whether vertex v lies outside the extent (lo, w) of each coordinate. */
 #define VERTEX_OUTSIDE(v, lo, w, xlo, xw, ylo, yw)                                                                   \
-    ((uint32_t)(v).z - (uint32_t)(lo) > (w) || (uint32_t)(v).x - (uint32_t)(xlo) > (xw) ||                         \
+    ((uint32_t)(v).z - (uint32_t)(lo) > (w) || (SCAN_X && (uint32_t)(v).x - (uint32_t)(xlo) > (xw)) ||              \
      (uint32_t)(v).y - (uint32_t)(ylo) > (yw))
 
 /* Widen *ex by the run of triangles and SHADE records from in (a
@@ -2104,7 +2112,8 @@ STP_NOINLINE const stp_instr *scan_triangles(extent *ex_io, const stp_instr *in,
                          VERTEX_OUTSIDE(v[2], lo, w, xlo, xw, ylo, yw)))
             for (i = 0; i < 3; i++) {
                 extent_widen(&lo, &w, v[i].z, 0);
-                extent_widen(&xlo, &xw, v[i].x, 0);
+                if (SCAN_X)
+                    extent_widen(&xlo, &xw, v[i].x, 0);
                 extent_widen(&ylo, &yw, v[i].y, 0);
             }
         v += 2;
