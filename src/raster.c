@@ -8,6 +8,11 @@
 #include "dither_private.h"
 #include "edge_aa_private.h"
 #include "diffuse_private.h"
+/* (64-bit hosts: the triangle walk without its shortcut for a triangle
+ * off the band: replay skips those itself where there are several bands,
+ * replay_banded_triangle, and with one there are none; peer bench 128x64
+ * 460 instructions a frame fewer, 560 spinning) */
+#define STP_TRI_BAND_SHORTCUT (!STP_LEAN_CODE && !STP_WIDE_ARITH)
 #include "edge_walk_private.h"
 #include "div64_private.h"
 
