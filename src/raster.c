@@ -156,6 +156,13 @@ typedef struct frame {
     int pattern_port; /* mono_fill on a MONO1 port (not drawn grey): spans may come from patterns[];
                          PATTERN_PLAIN when no shadow records are gathered either */
     uint32_t cell_mask;
+#if STP_WIDE_ARITH
+    /* pattern_of_row's cell row y mod height as ((y cell_mod mod 2^32)
+     * height) / 2^32, cell_mod = ceil(2^32 / height) mod 2^32 (0 for
+     * height 1), exact for y and height below 2^16 (Lemire, Kaser and
+     * Kurz's fastmod: a 32-bit factor for 16-bit operands); rows < 2^15 */
+    uint32_t cell_mod, cell_rows;
+#endif
     paint pattern_style;
     const stp_cell *cell;
     const stp_port *port;
@@ -715,7 +722,12 @@ static uint16_t *z_row(const frame *fr, uint32_t y)
 
 static uint8_t pattern_of_row(const frame *fr, uint32_t y)
 {
+#if STP_WIDE_ARITH
+    /* (64-bit hosts: two products, no test, for any height) */
+    return fr->patterns[((uint64_t)(uint32_t)(y * fr->cell_mod) * fr->cell_rows) >> 32];
+#else
     return fr->patterns[fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height];
+#endif
 }
 
 /* (span_z_direct inlined twice: rows with page_bit 0 as a constant, so
@@ -2356,6 +2368,10 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
                     fr->cell->height <= STP_CELL_MAX; /* patterns[] holds a row each */
     fr->pattern_port = (one_bit(drawn->format) && fr->mono_fill) << (TRIANGLE_SHADOWLESS(fr) != 0); /* PATTERN_PLAIN 2 */
     fr->cell_mask = (fr->cell->height & (fr->cell->height - 1u)) == 0 ? fr->cell->height - 1u : 0;
+#if STP_WIDE_ARITH
+    fr->cell_rows = fr->cell->height;
+    fr->cell_mod = fr->cell->height > 1 ? (uint32_t)(0xFFFFFFFFu / fr->cell->height + 1u) : 0u;
+#endif
     fr->pattern_style = -1;
 #if STP_PATTERN_CACHE > 0
     patterns_start(fr);
