@@ -139,6 +139,14 @@ static inline int32_t stp_slope_q16_short(int32_t num, int32_t den)
 #define STP_TRI_X(p) ((p)->x)
 #define STP_TRI_Y(p) ((p)->y)
 #endif
+/* Whether stp_tri_walk_start tests first for a triangle wholly above or
+ * below the band, a shortcut (its rows find it too): left out where
+ * 32-bit comparisons cost more code than they save time, and by a file
+ * that defines it 0 before it includes this header, whose triangles are
+ * seldom off the band (raster.c on 64-bit hosts). */
+#ifndef STP_TRI_BAND_SHORTCUT
+#define STP_TRI_BAND_SHORTCUT (!STP_LEAN_CODE)
+#endif
 typedef STP_TRI_VERTEX stp_tri_vertex;
 typedef STP_TRI_COORD stp_tri_coord;
 
@@ -329,9 +337,8 @@ STP_HOT_INLINE int stp_tri_walk_start(const stp_tri_vertex *v0, const stp_tri_ve
     int r_first, r_last;
     stp_tri_coord yc;
     stp_tri_sort(v0, v1, v2, &w->top, &w->mid, &w->bot);
-    /* (a shortcut: the rows below find it too; left out where 32-bit
-     * comparisons cost more code than they save time) */
-    if (!STP_LEAN_CODE && (STP_TRI_Y(w->bot) <= band->top || STP_TRI_Y(w->top) >= band->end))
+    /* (a shortcut: the rows below find it too; STP_TRI_BAND_SHORTCUT) */
+    if (STP_TRI_BAND_SHORTCUT && (STP_TRI_Y(w->bot) <= band->top || STP_TRI_Y(w->top) >= band->end))
         return 0; /* not in the band */
     /* rows whose centre lies in [top, bottom), in the band */
 #if STP_WIDE_ARITH

@@ -120,6 +120,7 @@ stp_renderer *stp_playback_create(void *mem, size_t mem_size, const stp_instr *d
     r->open_segment = -1;
     r->levels = levels;
     r->fill_style = fill_style;
+    stp_pattern_keep_forget(r);
 #if STP_WITH_SHADOWS
     for (i = 0; i < STP_MAX_LIGHTS; i++)
         r->shadow[i].depth = 0;

@@ -78,6 +78,7 @@ stp_renderer *stp_renderer_create(void *mem, size_t mem_size, stp_instr *display
     r->model_route_ok = 0;
     r->shading = 0;
     r->levels = 16;
+    stp_pattern_keep_forget(r);
     r->fill_style = 16;
     r->backface_removal = 0;
     r->pixel_cull = 0;

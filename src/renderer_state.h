@@ -13,6 +13,7 @@
 #include "clip_private.h"
 #include "view_private.h"
 #include "shade_fast_private.h"
+#include "arith_private.h" /* STP_WIDE_ARITH */
 
 #define STP_CLIP_VERTICES (STP_MAX_POLYGON_VERTICES + 5)
 
@@ -97,6 +98,30 @@ typedef struct stp_vertex_entry {
 #define STP_CACHE_HASH 0x9E3779B1u /* the cache hash's multiplier (cache_hash) */
 #endif
 
+
+/* The pattern rows raster.c's frames made (its use_style), kept across
+ * frames on 64-bit hosts (STP_PATTERN_KEEP) for the cell they were made
+ * for, copied here: a style's slot STP_PATTERN_CACHE as a frame's, with
+ * the cell level (stp_output_level) it was made for; a later frame takes
+ * those whose style still maps to that level under its cell alike (the
+ * output, its cell and gamma table are each frame's arguments: compared,
+ * not trusted).  width 0: nothing kept (stp_pattern_keep_forget).  Not on
+ * 32-bit targets: RAM, and their frames' code stays as it is. */
+#if STP_WIDE_ARITH && STP_PATTERN_CACHE > 0
+#define STP_PATTERN_KEEP 1
+#define STP_PATTERN_KEEP_TABLE 32 /* a cell's thresholds, up to 4 rows of 8 (8 % width == 0) */
+typedef struct stp_pattern_keep {
+    int32_t style[STP_PATTERN_CACHE]; /* -1: empty */
+    uint8_t rows[STP_PATTERN_CACHE][4];
+    uint8_t level[STP_PATTERN_CACHE];
+    uint8_t kind, width, height;
+    uint8_t table[STP_PATTERN_KEEP_TABLE]; /* the cell's first height rows of width thresholds */
+} stp_pattern_keep;
+#define stp_pattern_keep_forget(r) ((r)->kept_patterns.width = 0)
+#else
+#define STP_PATTERN_KEEP 0
+#define stp_pattern_keep_forget(r) ((void)(r))
+#endif
 
 struct stp_renderer {
     stp_instr *df;
@@ -211,6 +236,9 @@ struct stp_renderer {
                                                polygon being entered's record
                                                for light j, or UINT32_MAX */
     stp_vec3 at; /* the view's look-at point (world) */
+#endif
+#if STP_PATTERN_KEEP
+    stp_pattern_keep kept_patterns;
 #endif
 };
 
