@@ -179,7 +179,12 @@ typedef struct frame {
                                  drawn again over the opaque polygons) */
     /* pixels any visible polygon can cover (x_min > x_max: none) */
     uint32_t x_min, x_max, y_min, y_max;
-    int scan_y; /* 0: the Z buffer's scan leaves y out too (SCAN_Y_AREA) */
+#if STP_WIDE_ARITH
+    int scan_y; /* 0: the Z buffer's scan leaves y out too (scan_y_wanted) */
+#define FRAME_SCAN_Y(fr) ((fr)->scan_y)
+#else
+#define FRAME_SCAN_Y(fr) 1
+#endif
 #if STP_PATTERN_CACHE > 0
     /* the pattern rows of recent styles (cells up to 4 rows high), slot
      * style mod STP_PATTERN_CACHE: a depth-ordered frame alternates styles
@@ -1996,12 +2001,18 @@ static void sort_entries(stp_sort_entry *e, size_t n)
  * rows (frame_extent) for a third of the scan's tests (the depth keys'
  * extent stays exact: it sets the depths) */
 #define SCAN_X (!STP_WIDE_ARITH)
-/* On 64-bit hosts a frame drawn in one band of at most SCAN_Y_AREA pixels
- * is cleared in every row rather than scanned for its rows: a Z buffer
- * row's clear costs the host a few instructions (memset), a triangle's y
- * tests about five (128x64 spinning torus: 5 000 instructions a frame
- * fewer; at 640x480 clearing every row would cost 19 000 more). */
-#define SCAN_Y_AREA (STP_WIDE_ARITH ? 16384u : 0u)
+/* On 64-bit hosts a frame drawn in one band of at most 16 384 pixels is
+ * cleared in every row rather than scanned for its rows: a Z buffer row's
+ * clear costs the host a few instructions (memset), a triangle's y tests
+ * about five (128x64 spinning torus: 5 000 instructions a frame fewer; at
+ * 640x480 clearing every row would cost 19 000 more).  Elsewhere (and
+ * with several bands, whose skipping needs the rows) always scanned. */
+#if STP_WIDE_ARITH
+static int scan_y_wanted(const stp_renderer *r, const stp_frame_memory *mem)
+{
+    return mem->band_rows < r->height || (uint32_t)r->width * r->height > 16384u;
+}
+#endif
 
 /* The extent of the visible polygons' vertices: device x and y (Q27.4)
  * and depth keys, each as its least value and its width (the greatest
@@ -2089,9 +2100,9 @@ static void frame_extent(frame *fr, uint32_t count, const extent *ex)
         fr->x_max = fr->r->width - 1;
     if (!SCAN_X) /* whole rows: the scan left x out */
         fr->x_min = 0;
-    if (fr->y_max > fr->r->height - 1 || !fr->scan_y)
+    if (fr->y_max > fr->r->height - 1 || !FRAME_SCAN_Y(fr))
         fr->y_max = fr->r->height - 1;
-    if (!fr->scan_y) /* every row: the scan left y out */
+    if (!FRAME_SCAN_Y(fr)) /* every row: the scan left y out */
         fr->y_min = 0;
 }
 
@@ -2110,8 +2121,15 @@ static void frame_extent(frame *fr, uint32_t count, const extent *ex)
  * subtractions and compares, and no update.  Builds for size take the
  * general loop (scan_polygons) alone. */
 #if !defined(__OPTIMIZE_SIZE__)
+#if STP_WIDE_ARITH
+#define SCAN_WITH_Y with_y /* scan_triangles' two forms (scan_y) */
 STP_HOT_INLINE const stp_instr *scan_run(extent *ex_io, const stp_instr *in, const stp_instr *end,
                                          uint32_t *count_io, const int with_y)
+#else
+#define SCAN_WITH_Y 1 /* one form, a function of its own */
+STP_NOINLINE const stp_instr *scan_triangles(extent *ex_io, const stp_instr *in, const stp_instr *end,
+                                             uint32_t *count_io)
+#endif
 {
     const stp_instr *v;
     uint32_t shades = 0, w, xw, yw;
@@ -2133,14 +2151,14 @@ STP_HOT_INLINE const stp_instr *scan_run(extent *ex_io, const stp_instr *in, con
         }
         /* the widening a loop: unrolled, the compiler keeps the loads of
          * the test for it, which takes registers the test needs */
-        if (STP_UNLIKELY(VERTEX_OUTSIDE(v[0], lo, w, xlo, xw, ylo, yw, with_y) ||
-                         VERTEX_OUTSIDE(v[1], lo, w, xlo, xw, ylo, yw, with_y) ||
-                         VERTEX_OUTSIDE(v[2], lo, w, xlo, xw, ylo, yw, with_y)))
+        if (STP_UNLIKELY(VERTEX_OUTSIDE(v[0], lo, w, xlo, xw, ylo, yw, SCAN_WITH_Y) ||
+                         VERTEX_OUTSIDE(v[1], lo, w, xlo, xw, ylo, yw, SCAN_WITH_Y) ||
+                         VERTEX_OUTSIDE(v[2], lo, w, xlo, xw, ylo, yw, SCAN_WITH_Y)))
             for (i = 0; i < 3; i++) {
                 extent_widen(&lo, &w, v[i].z, 0);
                 if (SCAN_X)
                     extent_widen(&xlo, &xw, v[i].x, 0);
-                if (with_y)
+                if (SCAN_WITH_Y)
                     extent_widen(&ylo, &yw, v[i].y, 0);
             }
         v += 2;
@@ -2157,13 +2175,18 @@ STP_HOT_INLINE const stp_instr *scan_run(extent *ex_io, const stp_instr *in, con
     return v;
 }
 
-/* scan_run with its y tests where the frame asks for them (scan_y), one
- * loop each. */
+/* scan_run with its y tests where the frame asks for them (scan_y, 64-bit
+ * hosts), one loop each. */
+#if STP_WIDE_ARITH
 STP_NOINLINE const stp_instr *scan_triangles(extent *ex_io, const stp_instr *in, const stp_instr *end,
                                              uint32_t *count_io, int with_y)
 {
     return with_y ? scan_run(ex_io, in, end, count_io, 1) : scan_run(ex_io, in, end, count_io, 0);
 }
+#define SCAN_TRIANGLES(ex, in, end, count, fr) scan_triangles(ex, in, end, count, (fr)->scan_y)
+#else
+#define SCAN_TRIANGLES(ex, in, end, count, fr) scan_triangles(ex, in, end, count)
+#endif
 #endif
 
 /* Collect visible polygons for the painter (sort != NULL: entries keyed by
@@ -2189,7 +2212,7 @@ static uint32_t scan_polygons(frame *fr, stp_sort_entry *sort)
             int32_t op = in->op;
 #if !defined(__OPTIMIZE_SIZE__)
             if (op == 3 && !sort) { /* the usual run: a mesh's triangles */
-                in = scan_triangles(&ex, in, end, &count, fr->scan_y) - 1;
+                in = SCAN_TRIANGLES(&ex, in, end, &count, fr) - 1;
             } else
 #endif
             if (op >= 3) {
@@ -2678,7 +2701,9 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
 #endif
     if ((status = render_cell_and_background(&fr, port, output, &background_style)) != STP_OK)
         return status;
-    fr.scan_y = SCAN_Y_AREA == 0 || mem->band_rows < r->height || (uint32_t)r->width * r->height > SCAN_Y_AREA;
+#if STP_WIDE_ARITH
+    fr.scan_y = scan_y_wanted(r, mem);
+#endif
     polygons = scan_polygons(&fr, output->hidden == STP_HIDDEN_PAINTER ? mem->sort : 0);
     fr.setup = 0;
 #if STP_WITH_ZBUFFER
