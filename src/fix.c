@@ -295,7 +295,11 @@ stp_fix stp_vec3_unity(stp_vec3 v, stp_vec3 *out)
 
 /* ---- STP_UNIT vectors (fix_private.h) ---- */
 
-/* fix_private.h's stp_rsqrt_norm_inline, out of line */
+/* fix_private.h's stp_rsqrt_norm_inline, out of line (never inlined into
+ * RSQRT_SEED: builds for size would then keep a static copy beside this) */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
 uint32_t stp_rsqrt_norm(uint32_t q)
 {
     return stp_rsqrt_norm_inline(q);
