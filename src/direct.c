@@ -70,10 +70,11 @@ static int in_coord_range(int32_t v)
  * differs from a's) */
 static int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
 {
+    const int32_t av[3] = {a->x, a->y, a->z}, bv[3] = {b->x, b->y, b->z};
     int j;
     STP_UNROLL3
     for (j = 0; j < 3; j++) {
-        uint32_t x = (uint32_t)stp_vec3_comp(a, j), y = (uint32_t)stp_vec3_comp(b, j), v = x - y;
+        uint32_t x = (uint32_t)av[j], y = (uint32_t)bv[j], v = x - y;
         if (((x ^ y) & (x ^ v) & 0x80000000u) != 0 || !in_coord_range((int32_t)v))
             return 0;
         d[j] = (int32_t)v;
@@ -198,14 +199,12 @@ static int project_point(const stp_direct_view *view, stp_direct_point *pt)
 STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const int16_t m[3][3], const int32_t t[3],
                                  const stp_vec3 *v, stp_direct_point *p)
 {
-    int32_t w[3], r[3];
+    int32_t w[3] = {v->x, v->y, v->z}, r[3];
     int i;
     STP_UNROLL3
-    for (i = 0; i < 3; i++) {
-        w[i] = stp_vec3_comp(v, i);
+    for (i = 0; i < 3; i++)
         if (!in_coord_range(w[i]))
             return 0;
-    }
     STP_UNROLL3
     for (i = 0; i < 3; i++)
         r[i] = dot3(w, m[i]) + t[i];
