@@ -551,6 +551,19 @@ STP_HOT_INLINE int unit_scale32(int32_t x, int32_t y, int32_t z, uint32_t m, int
 
 STP_HOT_INLINE int unit_scale(int64_t x, int64_t y, int64_t z, int32_t v[3])
 {
+#if defined(__OPTIMIZE_SIZE__) && STP_HAVE_MUL32 && !STP_HAVE_MUL64
+    /* builds for size where 64-bit operations are library calls: loops
+     * over the components, the same values */
+    const int64_t c[3] = {x, y, z};
+    uint64_t m = 0;
+    int i, up;
+    for (i = 0; i < 3; i++)
+        m |= stp_abs64u(c[i]);
+    up = 30 - stp_bit_length64(m);
+    for (i = 0; i < 3; i++)
+        v[i] = up >= 0 ? (int32_t)((uint32_t)c[i] << up) : (int32_t)stp_asr64(c[i], -up);
+    return up;
+#else
     uint64_t m = stp_abs64u(x) | stp_abs64u(y) | stp_abs64u(z);
     int up;
 #if STP_NARROW_FORMS
@@ -582,6 +595,7 @@ STP_HOT_INLINE int unit_scale(int64_t x, int64_t y, int64_t z, int32_t v[3])
     v[1] = (int32_t)y;
     v[2] = (int32_t)z;
     return up;
+#endif
 }
 
 /* 1/sqrt(s) = inv 2^-(e + 30) for s = v.v (v scaled by unit_scale): s is
