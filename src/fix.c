@@ -634,7 +634,11 @@ STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint64_t *squares, int *
     s = (uint64_t)STP_SMUL_FIT32(v[0], v[0]) + (uint64_t)STP_SMUL_FIT32(v[1], v[1]) +
         (uint64_t)STP_SMUL_FIT32(v[2], v[2]);
 #else
-    s = square30(abs32(v[0])) + square30(abs32(v[1])) + square30(abs32(v[2]));
+    /* a loop: one call of square30 (the lean direct core 12 B smaller) */
+    int i;
+    s = 0;
+    for (i = 0; i < 3; i++)
+        s += square30(abs32(v[i]));
 #endif
     sh = s >= ((uint64_t)1 << 60) ? 30 : 28;
     *squares = s;
@@ -703,9 +707,10 @@ static inline void unit_q14_scaled(const int32_t v[3], int16_t out[3])
 #elif ROUND_Q14_WORDS
     {
         uint32_t ih = (uint32_t)inv >> 15, il = (uint32_t)inv & 0x7FFFu;
-        out[0] = round_q14(v[0], ih, il, e);
-        out[1] = round_q14(v[1], ih, il, e);
-        out[2] = round_q14(v[2], ih, il, e);
+        int i;
+        STP_UNROLL3
+        for (i = 0; i < 3; i++)
+            out[i] = round_q14(v[i], ih, il, e);
     }
 #else
     out[0] = (int16_t)stp_asr32(round_unit(v[0], (uint32_t)inv, e) + ((int32_t)1 << 15), 16);
