@@ -643,7 +643,13 @@ STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint64_t *squares, int *
     sh = s >= ((uint64_t)1 << 60) ? 30 : 28;
     *squares = s;
     *e = 45 + sh / 2 - 30;
+#if STP_HAVE_MUL64
     return (int64_t)rsqrt_q30((uint32_t)(s >> sh));
+#else
+    /* floor(s / 2^sh) < 2^32 from s's two words: 32-bit shifts, not
+     * libgcc's 64-bit one */
+    return (int64_t)rsqrt_q30(((uint32_t)(s >> 32) << (32 - sh)) | ((uint32_t)s >> sh));
+#endif
 #endif
 }
 
