@@ -83,8 +83,9 @@ static int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
 }
 
 /* The view coordinates of world-space difference d (|d_i| < 2^23); out
- * must not be d. */
-static void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out[3])
+ * must not be d.  One call in size-first builds (STP_DIRECT_SMALL: its
+ * two callers' copies cost the lean direct core 12 B). */
+STP_DIRECT_SMALL void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out[3])
 {
     int i;
     for (i = 0; i < 3; i++)
