@@ -70,11 +70,19 @@ static int in_coord_range(int32_t v)
  * differs from a's) */
 static int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
 {
-    const int32_t av[3] = {a->x, a->y, a->z}, bv[3] = {b->x, b->y, b->z};
     int j;
+#if !STP_LEAN_CODE
+    /* the components from copies (load-multiple on ARMv6-M); on 8-bit
+     * cores by index (STP_LEAN_CODE: the copies cost the Uno image 116 B) */
+    const int32_t av[3] = {a->x, a->y, a->z}, bv[3] = {b->x, b->y, b->z};
+#endif
     STP_UNROLL3
     for (j = 0; j < 3; j++) {
+#if !STP_LEAN_CODE
         uint32_t x = (uint32_t)av[j], y = (uint32_t)bv[j], v = x - y;
+#else
+        uint32_t x = (uint32_t)stp_vec3_comp(a, j), y = (uint32_t)stp_vec3_comp(b, j), v = x - y;
+#endif
         if (((x ^ y) & (x ^ v) & 0x80000000u) != 0 || !in_coord_range((int32_t)v))
             return 0;
         d[j] = (int32_t)v;
@@ -83,9 +91,13 @@ static int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
 }
 
 /* The view coordinates of world-space difference d (|d_i| < 2^23); out
- * must not be d.  One call in size-first builds (STP_DIRECT_SMALL: its
- * two callers' copies cost the lean direct core 12 B). */
-STP_DIRECT_SMALL void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out[3])
+ * must not be d.  One call in size-first builds on 32-bit cores (its two
+ * callers' copies cost the lean direct core 12 B); the compiler's choice
+ * elsewhere (on AVR the call cost the Uno image 42 B). */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__) && STP_SMALL_DIVISION && !STP_LEAN_CODE
+__attribute__((noinline))
+#endif
+static void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out[3])
 {
     int i;
     for (i = 0; i < 3; i++)
@@ -200,12 +212,24 @@ static int project_point(const stp_direct_view *view, stp_direct_point *pt)
 STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const int16_t m[3][3], const int32_t t[3],
                                  const stp_vec3 *v, stp_direct_point *p)
 {
-    int32_t w[3] = {v->x, v->y, v->z}, r[3];
+    int32_t w[3], r[3];
     int i;
+#if !STP_LEAN_CODE
+    /* a copy (load-multiple on ARMv6-M), not a call a component (the
+     * size-first Cortex-M0+ frame 31 000 instructions shorter); on 8-bit
+     * cores by index (STP_LEAN_CODE: the copy cost the Uno image 14 B) */
+    w[0] = v->x;
+    w[1] = v->y;
+    w[2] = v->z;
+#endif
     STP_UNROLL3
-    for (i = 0; i < 3; i++)
+    for (i = 0; i < 3; i++) {
+#if STP_LEAN_CODE
+        w[i] = stp_vec3_comp(v, i);
+#endif
         if (!in_coord_range(w[i]))
             return 0;
+    }
     STP_UNROLL3
     for (i = 0; i < 3; i++)
         r[i] = dot3(w, m[i]) + t[i];
