@@ -713,10 +713,17 @@ static inline void unit_q14_scaled(const int32_t v[3], int16_t out[3])
 #elif ROUND_Q14_WORDS
     {
         uint32_t ih = (uint32_t)inv >> 15, il = (uint32_t)inv & 0x7FFFu;
+#if defined(__OPTIMIZE_SIZE__)
+        /* builds for size: a loop, one copy of round_q14 in line (the
+         * lean direct core 28 B smaller) */
         int i;
-        STP_UNROLL3
         for (i = 0; i < 3; i++)
             out[i] = round_q14(v[i], ih, il, e);
+#else
+        out[0] = round_q14(v[0], ih, il, e);
+        out[1] = round_q14(v[1], ih, il, e);
+        out[2] = round_q14(v[2], ih, il, e);
+#endif
     }
 #else
     out[0] = (int16_t)stp_asr32(round_unit(v[0], (uint32_t)inv, e) + ((int32_t)1 << 15), 16);

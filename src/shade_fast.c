@@ -1301,11 +1301,13 @@ static void exact_prepare(stp_shade_fast *s, const stp_lighting *lighting, const
 #define IF_NEG(neg, v) ((neg) ? (v) : 0u)
 #endif
 
-/* floor((x y + c) 2^-F) for 32-bit x, y, c: below 2^64 */
+/* floor((x y + c) 2^-F) for 32-bit x and y and c < 2^32 (the sum below
+ * 2^64): prepare_ambient's three products, one call in builds for size
+ * (the lean direct core 34 B smaller), in line elsewhere */
 #if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
-static __attribute__((noinline)) uint64_t mul_add_shr_f(uint32_t x, uint32_t y, uint32_t c)
+static __attribute__((noinline)) uint64_t mul_add_shr_f(uint32_t x, uint32_t y, uint64_t c)
 #else
-STP_HOT_INLINE uint64_t mul_add_shr_f(uint32_t x, uint32_t y, uint32_t c)
+STP_HOT_INLINE uint64_t mul_add_shr_f(uint32_t x, uint32_t y, uint64_t c)
 #endif
 {
     return ((uint64_t)x * y + c) >> F;
@@ -1326,7 +1328,7 @@ static void prepare_ambient(stp_shade_fast *s, stp_fix background, stp_fix refl,
          * sum below 2^62 + 2^32; floor(l BRIGHT 2^-F) + 2^(F - 1) below
          * 2^31 + 2^15 */
         uint64_t t = mul_add_shr_f((uint32_t)(a >> F), (uint32_t)bright,
-                                   (uint32_t)mul_add_shr_f((uint32_t)a & (uint32_t)(ONE - 1), (uint32_t)bright, 0) +
+                                   mul_add_shr_f((uint32_t)a & (uint32_t)(ONE - 1), (uint32_t)bright, 0) +
                                        ((uint32_t)1 << (F - 1)));
         s->ambient_shade = t >= (uint64_t)ONE ? ONE : (stp_fix)t;
     }
