@@ -71,14 +71,16 @@ static int in_coord_range(int32_t v)
 static int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
 {
     int j;
-#if !STP_LEAN_CODE
-    /* the components from copies (load-multiple on ARMv6-M); on 8-bit
-     * cores by index (STP_LEAN_CODE: the copies cost the Uno image 116 B) */
+#if defined(__OPTIMIZE_SIZE__) && !STP_LEAN_CODE
+    /* builds for size on 32-bit cores: the components from copies
+     * (load-multiple on ARMv6-M), not a call each; elsewhere by index
+     * (on 8-bit cores the copies cost the Uno image 116 B; unrolled at
+     * -O2, where the index folds) */
     const int32_t av[3] = {a->x, a->y, a->z}, bv[3] = {b->x, b->y, b->z};
 #endif
     STP_UNROLL3
     for (j = 0; j < 3; j++) {
-#if !STP_LEAN_CODE
+#if defined(__OPTIMIZE_SIZE__) && !STP_LEAN_CODE
         uint32_t x = (uint32_t)av[j], y = (uint32_t)bv[j], v = x - y;
 #else
         uint32_t x = (uint32_t)stp_vec3_comp(a, j), y = (uint32_t)stp_vec3_comp(b, j), v = x - y;
@@ -214,17 +216,18 @@ STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const int16_t m[3]
 {
     int32_t w[3], r[3];
     int i;
-#if !STP_LEAN_CODE
-    /* a copy (load-multiple on ARMv6-M), not a call a component (the
-     * size-first Cortex-M0+ frame 31 000 instructions shorter); on 8-bit
-     * cores by index (STP_LEAN_CODE: the copy cost the Uno image 14 B) */
+#if defined(__OPTIMIZE_SIZE__) && !STP_LEAN_CODE
+    /* builds for size on 32-bit cores: a copy (load-multiple on ARMv6-M),
+     * not a call a component (the size-first Cortex-M0+ frame 31 000
+     * instructions shorter); elsewhere by index (on 8-bit cores the copy
+     * cost the Uno image 14 B; unrolled at -O2, where the index folds) */
     w[0] = v->x;
     w[1] = v->y;
     w[2] = v->z;
 #endif
     STP_UNROLL3
     for (i = 0; i < 3; i++) {
-#if STP_LEAN_CODE
+#if !(defined(__OPTIMIZE_SIZE__) && !STP_LEAN_CODE)
         w[i] = stp_vec3_comp(v, i);
 #endif
         if (!in_coord_range(w[i]))
