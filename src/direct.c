@@ -71,9 +71,20 @@ static int in_coord_range(int32_t v)
 static int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
 {
     int j;
+#if defined(__OPTIMIZE_SIZE__) && !STP_LEAN_CODE
+    /* builds for size on 32-bit cores: the components from copies
+     * (load-multiple on ARMv6-M), not a call each; elsewhere by index
+     * (on 8-bit cores the copies cost the Uno image 116 B; unrolled at
+     * -O2, where the index folds) */
+    const int32_t av[3] = {a->x, a->y, a->z}, bv[3] = {b->x, b->y, b->z};
+#endif
     STP_UNROLL3
     for (j = 0; j < 3; j++) {
+#if defined(__OPTIMIZE_SIZE__) && !STP_LEAN_CODE
+        uint32_t x = (uint32_t)av[j], y = (uint32_t)bv[j], v = x - y;
+#else
         uint32_t x = (uint32_t)stp_vec3_comp(a, j), y = (uint32_t)stp_vec3_comp(b, j), v = x - y;
+#endif
         if (((x ^ y) & (x ^ v) & 0x80000000u) != 0 || !in_coord_range((int32_t)v))
             return 0;
         d[j] = (int32_t)v;
@@ -82,7 +93,12 @@ static int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
 }
 
 /* The view coordinates of world-space difference d (|d_i| < 2^23); out
- * must not be d. */
+ * must not be d.  One call in size-first builds on 32-bit cores (its two
+ * callers' copies cost the lean direct core 12 B); the compiler's choice
+ * elsewhere (on AVR the call cost the Uno image 42 B). */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__) && STP_SMALL_DIVISION && !STP_LEAN_CODE
+__attribute__((noinline))
+#endif
 static void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out[3])
 {
     int i;
@@ -200,9 +216,20 @@ STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const int16_t m[3]
 {
     int32_t w[3], r[3];
     int i;
+#if defined(__OPTIMIZE_SIZE__) && !STP_LEAN_CODE
+    /* builds for size on 32-bit cores: a copy (load-multiple on ARMv6-M),
+     * not a call a component (the size-first Cortex-M0+ frame 31 000
+     * instructions shorter); elsewhere by index (on 8-bit cores the copy
+     * cost the Uno image 14 B; unrolled at -O2, where the index folds) */
+    w[0] = v->x;
+    w[1] = v->y;
+    w[2] = v->z;
+#endif
     STP_UNROLL3
     for (i = 0; i < 3; i++) {
+#if !(defined(__OPTIMIZE_SIZE__) && !STP_LEAN_CODE)
         w[i] = stp_vec3_comp(v, i);
+#endif
         if (!in_coord_range(w[i]))
             return 0;
     }

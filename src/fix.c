@@ -295,7 +295,11 @@ stp_fix stp_vec3_unity(stp_vec3 v, stp_vec3 *out)
 
 /* ---- STP_UNIT vectors (fix_private.h) ---- */
 
-/* fix_private.h's stp_rsqrt_norm_inline, out of line */
+/* fix_private.h's stp_rsqrt_norm_inline, out of line (never inlined into
+ * RSQRT_SEED: builds for size would then keep a static copy beside this) */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
 uint32_t stp_rsqrt_norm(uint32_t q)
 {
     return stp_rsqrt_norm_inline(q);
@@ -547,6 +551,19 @@ STP_HOT_INLINE int unit_scale32(int32_t x, int32_t y, int32_t z, uint32_t m, int
 
 STP_HOT_INLINE int unit_scale(int64_t x, int64_t y, int64_t z, int32_t v[3])
 {
+#if defined(__OPTIMIZE_SIZE__) && STP_HAVE_MUL32 && !STP_HAVE_MUL64
+    /* builds for size where 64-bit operations are library calls: loops
+     * over the components, the same values */
+    const int64_t c[3] = {x, y, z};
+    uint64_t m = 0;
+    int i, up;
+    for (i = 0; i < 3; i++)
+        m |= stp_abs64u(c[i]);
+    up = 30 - stp_bit_length64(m);
+    for (i = 0; i < 3; i++)
+        v[i] = up >= 0 ? (int32_t)((uint32_t)c[i] << up) : (int32_t)stp_asr64(c[i], -up);
+    return up;
+#else
     uint64_t m = stp_abs64u(x) | stp_abs64u(y) | stp_abs64u(z);
     int up;
 #if STP_NARROW_FORMS
@@ -578,6 +595,7 @@ STP_HOT_INLINE int unit_scale(int64_t x, int64_t y, int64_t z, int32_t v[3])
     v[1] = (int32_t)y;
     v[2] = (int32_t)z;
     return up;
+#endif
 }
 
 /* 1/sqrt(s) = inv 2^-(e + 30) for s = v.v (v scaled by unit_scale): s is
@@ -616,12 +634,22 @@ STP_HOT_INLINE int64_t unit_inverse(const int32_t v[3], uint64_t *squares, int *
     s = (uint64_t)STP_SMUL_FIT32(v[0], v[0]) + (uint64_t)STP_SMUL_FIT32(v[1], v[1]) +
         (uint64_t)STP_SMUL_FIT32(v[2], v[2]);
 #else
-    s = square30(abs32(v[0])) + square30(abs32(v[1])) + square30(abs32(v[2]));
+    /* a loop: one call of square30 (the lean direct core 12 B smaller) */
+    int i;
+    s = 0;
+    for (i = 0; i < 3; i++)
+        s += square30(abs32(v[i]));
 #endif
     sh = s >= ((uint64_t)1 << 60) ? 30 : 28;
     *squares = s;
     *e = 45 + sh / 2 - 30;
+#if STP_HAVE_MUL64
     return (int64_t)rsqrt_q30((uint32_t)(s >> sh));
+#else
+    /* floor(s / 2^sh) < 2^32 from s's two words: 32-bit shifts, not
+     * libgcc's 64-bit one */
+    return (int64_t)rsqrt_q30(((uint32_t)(s >> 32) << (32 - sh)) | ((uint32_t)s >> sh));
+#endif
 #endif
 }
 
@@ -685,9 +713,17 @@ static inline void unit_q14_scaled(const int32_t v[3], int16_t out[3])
 #elif ROUND_Q14_WORDS
     {
         uint32_t ih = (uint32_t)inv >> 15, il = (uint32_t)inv & 0x7FFFu;
+#if defined(__OPTIMIZE_SIZE__)
+        /* builds for size: a loop, one copy of round_q14 in line (the
+         * lean direct core 28 B smaller) */
+        int i;
+        for (i = 0; i < 3; i++)
+            out[i] = round_q14(v[i], ih, il, e);
+#else
         out[0] = round_q14(v[0], ih, il, e);
         out[1] = round_q14(v[1], ih, il, e);
         out[2] = round_q14(v[2], ih, il, e);
+#endif
     }
 #else
     out[0] = (int16_t)stp_asr32(round_unit(v[0], (uint32_t)inv, e) + ((int32_t)1 << 15), 16);

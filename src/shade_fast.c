@@ -1301,6 +1301,18 @@ static void exact_prepare(stp_shade_fast *s, const stp_lighting *lighting, const
 #define IF_NEG(neg, v) ((neg) ? (v) : 0u)
 #endif
 
+/* floor((x y + c) 2^-F) for 32-bit x and y and c < 2^32 (the sum below
+ * 2^64): prepare_ambient's three products, one call in builds for size
+ * (the lean direct core 34 B smaller), in line elsewhere */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+static __attribute__((noinline)) uint64_t mul_add_shr_f(uint32_t x, uint32_t y, uint64_t c)
+#else
+STP_HOT_INLINE uint64_t mul_add_shr_f(uint32_t x, uint32_t y, uint64_t c)
+#endif
+{
+    return ((uint64_t)x * y + c) >> F;
+}
+
 static void prepare_ambient(stp_shade_fast *s, stp_fix background, stp_fix refl, stp_fix bright)
 {
     uint32_t r = refl < 0 ? 0u - (uint32_t)refl : (uint32_t)refl, neg = refl < 0;
@@ -1313,11 +1325,11 @@ static void prepare_ambient(stp_shade_fast *s, stp_fix background, stp_fix refl,
     if (refl > 0) {
         /* B R = t 2^F + l (t < 2^31, l < 2^F): B R BRIGHT 2^-2F rounded is
          * floor((t BRIGHT + floor(l BRIGHT 2^-F) + 2^(F - 1)) 2^-F), the
-         * sum below 2^62 + 2^32 */
-        uint64_t t = (uint64_t)(uint32_t)(a >> F) * (uint32_t)bright +
-                     (((uint64_t)((uint32_t)a & (uint32_t)(ONE - 1)) * (uint32_t)bright) >> F) +
-                     ((uint32_t)1 << (F - 1));
-        t >>= F;
+         * sum below 2^62 + 2^32; floor(l BRIGHT 2^-F) + 2^(F - 1) below
+         * 2^31 + 2^15 */
+        uint64_t t = mul_add_shr_f((uint32_t)(a >> F), (uint32_t)bright,
+                                   mul_add_shr_f((uint32_t)a & (uint32_t)(ONE - 1), (uint32_t)bright, 0) +
+                                       ((uint32_t)1 << (F - 1)));
         s->ambient_shade = t >= (uint64_t)ONE ? ONE : (stp_fix)t;
     }
 #if 2 * STP_FIX_FRAC_BITS >= SUM_BITS
@@ -1328,7 +1340,7 @@ static void prepare_ambient(stp_shade_fast *s, stp_fix background, stp_fix refl,
     if (m > 0x80000000u)
         m = 0x80000000u;
     /* m BRIGHT < 2^62 */
-    m = ((uint64_t)(uint32_t)m * (uint32_t)bright + IF_NEG(neg, (uint32_t)(ONE - 1))) >> F;
+    m = mul_add_shr_f((uint32_t)m, (uint32_t)bright, IF_NEG(neg, (uint32_t)(ONE - 1)));
     if (m > SHARE_CAP)
         m = SHARE_CAP;
     s->ambient = neg ? -(int32_t)m : (int32_t)m;
