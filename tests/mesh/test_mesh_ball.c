@@ -202,9 +202,9 @@ static void prepared_alike(const stp_renderer *r, stp_mesh *m, const stp_model_f
     if (STP_WIDE_ARITH) {
         assert_true(pb.reach2 == exact);
     } else {
-        span = (uint32_t)(hi.x - lo.x);
-        span = (uint32_t)(hi.y - lo.y) > span ? (uint32_t)(hi.y - lo.y) : span;
-        span = (uint32_t)(hi.z - lo.z) > span ? (uint32_t)(hi.z - lo.z) : span;
+        span = (uint32_t)hi.x - (uint32_t)lo.x;
+        span = (uint32_t)hi.y - (uint32_t)lo.y > span ? (uint32_t)hi.y - (uint32_t)lo.y : span;
+        span = (uint32_t)hi.z - (uint32_t)lo.z > span ? (uint32_t)hi.z - (uint32_t)lo.z : span;
         for (k = 0; k < 32 && (span >> k) != 0; k++)
             ;
         k = k > 15 ? k - 15 : 0;
@@ -257,6 +257,49 @@ static void random_clouds(int w, int h)
             w, h, truth, stage, ball_only, ball, missed);
     /* both proofs decide many clouds, near the planes too */
     assert_true(ball > 2000 && ball_only > 200 && missed > 500);
+    torus_bench_free(&b);
+}
+
+/* Prepared bounds at the ends of stp_fix's range: one vertex (reach 0),
+ * two opposite corners of the whole range (each difference from the
+ * centre just below 2^31), the eight corners, and a cloud at one end;
+ * the box and reach as the exact reference has them, and neither proof
+ * passes such a model in view (every step checked by UBSan in the
+ * arith32 build). */
+static void test_extreme_bounds(void **state)
+{
+    static torus_bench b;
+    static const stp_fix ends[2] = {STP_FIX_MIN, STP_FIX_MAX};
+    stp_vec3 p[8], lo, hi;
+    stp_mesh m;
+    const stp_model_frame *f;
+    char err[256];
+    int i, n, by_ball, by_stage;
+    (void)state;
+    assert_int_equal(torus_bench_init(&b, 128, 64, err, sizeof err), 0);
+    f = set_pose(&b, 0);
+    assert_non_null(f);
+    for (n = 1; n <= 8; n++) {
+        for (i = 0; i < n; i++) {
+            p[i].x = n == 1 ? 5 : ends[i & 1];
+            p[i].y = n == 1 ? -7 : ends[(i >> 1) & 1];
+            p[i].z = n == 1 ? 11 : ends[(i >> 2) & 1];
+            if (n == 3) /* a cloud at the top end */
+                p[i].x = p[i].y = p[i].z = STP_FIX_MAX - i * 3;
+        }
+        memset(&m, 0, sizeof m);
+        m.vertices = p;
+        m.vertex_count = (uint16_t)n;
+        mesh_box(p, p + n, &lo, &hi);
+        by_ball = ball_inside(b.r, &m, &lo, &hi);
+        by_stage = box_inside(b.r, &m, &lo, &hi, f->scale2);
+        assert_true(all_inside(b.r, p, n) || (!by_ball && !by_stage));
+        if (n > 1) /* the range's ends lie far outside the view */
+            assert_true(!by_ball && !by_stage);
+        else /* a point by the view's centre */
+            assert_true(by_ball && by_stage);
+        prepared_alike(b.r, &m, f, by_ball, by_stage);
+    }
     torus_bench_free(&b);
 }
 
@@ -520,6 +563,7 @@ int main(void)
         cmocka_unit_test(test_random_clouds_640x480), cmocka_unit_test(test_random_clouds_tall),
         cmocka_unit_test(test_tight_balls_128x64),   cmocka_unit_test(test_tight_balls_tall),
         cmocka_unit_test(test_spinning_torus),        cmocka_unit_test(test_random_torus),
+        cmocka_unit_test(test_extreme_bounds),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
