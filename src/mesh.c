@@ -336,13 +336,14 @@ STP_HOT_INLINE void box_grow(stp_fix v, stp_fix *lo, uint32_t *span)
 #endif
 
 /* The bounding box [*lo_out, *hi_out] of the points p to end (at least
- * one): per call, or once (stp_mesh_prepare_bounds).  Where time counts on a 32-bit core (TIME_FIRST) a function of its own,
- * short, so that a bound's rare update lies within the short conditional
- * branch's reach (ARMv6-M), and a coordinate inside the box one unsigned
- * test of its offset from the low corner (the span hi - lo): the common
- * case falls through (M0+ torus, 500 vertices: 2 700 cycles a frame
- * fewer).  Elsewhere two tests a coordinate, the shorter code (-Os) and
- * the faster on a 64-bit host. */
+ * one): per call, or once (stp_mesh_prepare_bounds).  Where time counts
+ * on a 32-bit core (TIME_FIRST) a function of its own, short, so that a
+ * bound's rare update lies within the short conditional branch's reach
+ * (ARMv6-M), and a coordinate inside the box one unsigned test of its
+ * offset from the low corner (the span hi - lo): the common case falls
+ * through (M0+ torus, 500 vertices: 2 700 cycles a frame fewer).
+ * Elsewhere two tests a coordinate, the shorter code (-Os) and the faster
+ * on a 64-bit host. */
 OUT_OF_LINE void mesh_box(const stp_vec3 *p, const stp_vec3 *end, stp_vec3 *lo_out, stp_vec3 *hi_out)
 {
 #if TIME_FIRST

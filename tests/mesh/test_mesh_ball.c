@@ -486,11 +486,19 @@ static void test_tight_balls_tall(void **state)
  * polygon and as one mesh: the same display file and frame.  Returns
  * whether the mesh path proves every vertex inside, and in *out whether a
  * corner of its box is outside a plane. */
+/* mesh's display file and frame (h rows) equal poly's. */
+static void same_output(const torus_bench *poly, const torus_bench *mesh, int h)
+{
+    uint32_t used = stp_renderer_display_file_used(poly->r);
+    assert_int_equal(stp_renderer_display_file_used(mesh->r), used);
+    assert_memory_equal(poly->df, mesh->df, sizeof *poly->df * used);
+    assert_int_equal(memcmp(poly->frame, mesh->frame, poly->stride * (size_t)h), 0);
+}
+
 static int same_frames(int w, int h, double tilt, double spin, double dx, double dy, double dz, int *out)
 {
     static torus_bench poly, mesh;
     char err[256];
-    uint32_t used;
     stp_vec3 lo, hi;
     const stp_model_frame *f;
     int inside;
@@ -501,17 +509,12 @@ static int same_frames(int w, int h, double tilt, double spin, double dx, double
     torus_bench_pose(&mesh, tilt, spin, dx, dy, dz);
     assert_int_equal(torus_frame(&poly), 0);
     assert_int_equal(torus_frame(&mesh), 0);
-    used = stp_renderer_display_file_used(poly.r);
-    assert_int_equal(stp_renderer_display_file_used(mesh.r), used);
-    assert_memory_equal(poly.df, mesh.df, sizeof *poly.df * used);
-    assert_int_equal(memcmp(poly.frame, mesh.frame, poly.stride * (size_t)h), 0);
+    same_output(&poly, &mesh, h);
     /* the bench's mesh has prepared bounds; without, the same again */
     assert_non_null(mesh.mesh.bounds);
     mesh.mesh.bounds = 0;
     assert_int_equal(torus_frame(&mesh), 0);
-    assert_int_equal(stp_renderer_display_file_used(mesh.r), used);
-    assert_memory_equal(poly.df, mesh.df, sizeof *poly.df * used);
-    assert_int_equal(memcmp(poly.frame, mesh.frame, poly.stride * (size_t)h), 0);
+    same_output(&poly, &mesh, h);
     /* the proof for this pose, the torus's box as the mesh path finds it */
     f = set_pose(&mesh, &mesh.pose);
     assert_non_null(f);
