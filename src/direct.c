@@ -3,18 +3,15 @@
  * transformed and projected once, every front face shaded once.
  *
  * Formats (ranges as direct.h states them):
- *   composite  C = V R (view axes times the model rotation), Q1.14 rows:
- *              each sum of three Q28 products (16 x 16-bit) below 3 2^28,
- *              rounded to Q14; M = C scale, Q1.14 in int16_t: the scale in
- *              Q14 is below 2^15 (scale < 2) and |C| exceeds 1 only by
- *              rounding, so |M| exceeds 32767 only within 2^-12 of scale 2,
- *              where it is saturated to +-32767 (a relative error below
- *              2^-12 in that one entry)
- *   vmul       v m / 2^14 for |v| < 2^23 and int16_t m as
- *              floor(v / 2^14) m + floor((v mod 2^14) m / 2^14): two
- *              16 x 16-bit products, below 2^24 and 2^29
- *   view       M v + V (t - from): three vmul below 2^24 each plus one
- *              below 2^24: |.| < 2^26
+ *   geometry   the geometry stage's (view.c, the renderer's): the model
+ *              transform (stp_direct_model_transform) composed with the
+ *              view once a frame (stp_view_compose_small: composite axes
+ *              rounded to stp_fix, the eye's terms exact; 32-bit
+ *              arithmetic on 32-bit targets at 16 fractional bits), each
+ *              vertex's view coordinates floor(C p - V (from - t)) by
+ *              stp_view_transform_point, exact: the renderer's values
+ *              (with more than 16 fractional bits its two steps, as the
+ *              renderer's).  Below 2^26 for the ranges of direct.h.
  *   projection the one perspective projection (view.c's
  *              stp_view_perspective, the renderer's): floor(trunc(focal x
  *              / z) 2^-12) in Q4 exactly (a reciprocal of z, or on AVR
@@ -35,29 +32,13 @@
 #include "shade_fast_private.h"
 #include "view_private.h" /* stp_view_perspective */
 #include "div64_private.h" /* STP_UDIV32 */
+#include "render_private.h" /* the face stage: stp_render_face_side, stp_render_view_normal */
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
 #define Q14 14
 #define COORD_LIMIT ((int32_t)1 << 23)
 #define DEVICE_LIMIT 8192
-
-/* v m / 2^14 (file comment: vmul) */
-static int32_t vmul(int32_t v, int16_t m)
-{
-    int_fast16_t high = (int_fast16_t)stp_asr32(v, Q14), low = (int_fast16_t)(v & 0x3FFF);
-    return (int32_t)high * m + stp_asr32((int32_t)low * m, Q14);
-}
-
-/* sum of vmul(v_j, m_j): below 3 2^24 */
-STP_DIRECT_CALL int32_t dot3(const int32_t v[3], const int16_t m[3])
-{
-    int32_t s = 0;
-    int j;
-    for (j = 0; j < 3; j++)
-        s += vmul(v[j], m[j]);
-    return s;
-}
 
 /* 1 when |v| < 2^23 (COORD_LIMIT): one unsigned comparison */
 static int in_coord_range(int32_t v)
@@ -92,8 +73,59 @@ static int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
     return 1;
 }
 
-/* The view coordinates of world-space difference d (|d_i| < 2^23); out
- * must not be d.  One call in size-first builds on 32-bit cores (its two
+#if STP_DIRECT_COMPACT
+/* ---- the compact form's geometry (config.h: STP_DIRECT_COMPACT) ----
+ *   composite  C = V R (the view axes rounded to Q1.14 times the model's
+ *              rotation), Q1.14 rows: each sum of three Q28 products
+ *              (16 x 16-bit) below 3 2^28, rounded to Q14; M = C scale,
+ *              Q1.14 in int16_t: the scale in Q14 is below 2^15 (scale <
+ *              2) and |C| exceeds 1 only by rounding, so |M| exceeds 32767
+ *              only within 2^-12 of scale 2, where it is saturated to
+ *              +-32767 (a relative error below 2^-12 in that one entry)
+ *   vmul       v m / 2^14 for |v| < 2^23 and int16_t m as
+ *              floor(v / 2^14) m + floor((v mod 2^14) m / 2^14): two
+ *              16 x 16-bit products, below 2^24 and 2^29
+ *   view       M v + V (t - from): three vmul below 2^24 each plus one
+ *              below 2^24: |.| < 2^26 */
+
+/* View axis a in Q1.14, floor(a 2^(14 - F)): exact for the axes
+ * stp_direct_view_look makes in these builds (multiples of 2^(F - 14)).
+ * One call (its callers' loops inline it otherwise) */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void axis_q14(const stp_vec3 *a, int16_t out[3])
+{
+#if F > 14
+    out[0] = (int16_t)stp_asr32(a->x, F > 14 ? F - 14 : 0);
+    out[1] = (int16_t)stp_asr32(a->y, F > 14 ? F - 14 : 0);
+    out[2] = (int16_t)stp_asr32(a->z, F > 14 ? F - 14 : 0);
+#else
+    out[0] = (int16_t)(a->x * ((int32_t)1 << (14 - F)));
+    out[1] = (int16_t)(a->y * ((int32_t)1 << (14 - F)));
+    out[2] = (int16_t)(a->z * ((int32_t)1 << (14 - F)));
+#endif
+}
+
+/* v m / 2^14 (vmul above) */
+static int32_t vmul(int32_t v, int16_t m)
+{
+    int_fast16_t high = (int_fast16_t)stp_asr32(v, Q14), low = (int_fast16_t)(v & 0x3FFF);
+    return (int32_t)high * m + stp_asr32((int32_t)low * m, Q14);
+}
+
+/* sum of vmul(v_j, m_j): below 3 2^24 */
+STP_DIRECT_CALL int32_t dot3(const int32_t v[3], const int16_t m[3])
+{
+    int32_t s = 0;
+    int j;
+    for (j = 0; j < 3; j++)
+        s += vmul(v[j], m[j]);
+    return s;
+}
+
+/* The view coordinates of world-space difference d (|d_i| < 2^23): V d
+ * by vmul.  One call in size-first builds on 32-bit cores (its two
  * callers' copies cost the lean direct core 12 B); the compiler's choice
  * elsewhere (on AVR the call cost the Uno image 42 B). */
 #if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__) && STP_SMALL_DIVISION && !STP_LEAN_CODE
@@ -102,9 +134,34 @@ __attribute__((noinline))
 static void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out[3])
 {
     int i;
-    for (i = 0; i < 3; i++)
-        out[i] = dot3(d, view->axis[i]);
+    for (i = 0; i < 3; i++) {
+        int16_t a[3];
+        axis_q14(&view->axis[i], a);
+        out[i] = dot3(d, a);
+    }
 }
+#else
+/* The view coordinates of world-space difference d (|d_i| < 2^23) by
+ * the geometry stage (view.c): floor(V . d / 2^F), V the view's axes: the
+ * renderer's view coordinates of the point d + from, floor((V . (d +
+ * from) - V . from) / 2^F). */
+static void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out[3])
+{
+    static const int32_t zero[3] = {0, 0, 0};
+    const stp_transform identity = {{{ONE, 0, 0}, {0, ONE, 0}, {0, 0, ONE}}, {0, 0, 0}};
+    stp_view_small t;
+    stp_vec3 p;
+    (void)stp_view_compose_small(view->axis, zero, &identity, &t); /* C = V, the eye terms 0 */
+    p.x = d[0];
+    p.y = d[1];
+    p.z = d[2];
+    stp_view_small_point(&t, &p, &p);
+    out[0] = p.x;
+    out[1] = p.y;
+    out[2] = p.z;
+}
+
+#endif
 
 int stp_direct_light_prepare(stp_direct_lit *lit, const stp_direct_view *view, const stp_direct_light *l)
 {
@@ -135,9 +192,10 @@ int stp_direct_light_prepare(stp_direct_lit *lit, const stp_direct_view *view, c
     return 1;
 }
 
+#if STP_DIRECT_COMPACT
 /* sum of a_k b_(k step) for Q1.14 a and b, rounded to Q14: three Q28
  * products, below 3 2^28; the one form of C = V R's entries and of a
- * normal turned by C */
+ * normal turned by C (config.h: STP_DIRECT_COMPACT) */
 STP_DIRECT_SMALL int16_t dot14(const int16_t a[3], const int16_t *b, int step)
 {
     int32_t c = (int32_t)1 << (Q14 - 1);
@@ -148,15 +206,31 @@ STP_DIRECT_SMALL int16_t dot14(const int16_t a[3], const int16_t *b, int step)
     return (int16_t)stp_asr32(c, Q14);
 }
 
-void stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit, const stp_direct_view *view,
-                                const stp_direct_model *model)
+int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit, const stp_direct_view *view,
+                               const stp_direct_model *model)
 {
     int i, j;
     s->fast = &lit->fast;
-    for (i = 0; i < 3; i++)
+    for (i = 0; i < 3; i++) {
+        int16_t a[3];
+        axis_q14(&view->axis[i], a);
         for (j = 0; j < 3; j++)
-            s->rot[i][j] = dot14(view->axis[i], &model->rot[0][j], 3);
+            s->rot[i][j] = dot14(a, &model->rot[0][j], 3);
+    }
+    return 1;
 }
+#else
+int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit, const stp_direct_view *view,
+                               const stp_direct_model *model)
+{
+    stp_view_transform v;
+    stp_transform m;
+    s->fast = &lit->fast;
+    stp_direct_model_transform(model, &m);
+    stp_view_transform_of_axes(view->axis[0], view->axis[1], view->axis[2], view->from, &v);
+    return stp_model_frame_make(&v, view->from, &m, &s->frame);
+}
+#endif
 
 /* The light's values in their ranges (direct.h), each one unsigned
  * comparison: a negative value converts to 2^31 or more. */
@@ -208,11 +282,37 @@ static int project_point(const stp_direct_view *view, stp_direct_point *pt)
     return 1;
 }
 
-/* Vertex v of the mesh placed by M and t (view = M v + t) and projected
- * into *p; 0 when a coordinate is out of range (direct.h) or the point
- * nearer than hither or outside the device range. */
-STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const int16_t m[3][3], const int32_t t[3],
-                                 const stp_vec3 *v, stp_direct_point *p)
+#if STP_DIRECT_COMPACT
+/* A frame's geometry in the compact form: view = M v + t (M = C scale,
+ * t = V (translate - from)) */
+typedef struct stp_direct_geometry {
+    int16_t m[3][3];
+    int32_t t[3];
+} stp_direct_geometry;
+
+/* *g for model seen by view, C = V R from shading (its rot), d =
+ * translate - from (|d_i| < 2^23); 1 */
+static int geometry_prepare(stp_direct_geometry *g, const stp_direct_view *view, const stp_direct_model *model,
+                            const stp_direct_shading *shading, const int32_t d[3])
+{
+    int i, j;
+    /* scale in Q14, below 2^15; M saturated (the compact form's comment) */
+    int16_t scale14 = (int16_t)(F >= 14 ? model->scale >> (F >= 14 ? F - 14 : 0) /* scale > 0 */
+                                        : model->scale * (1 << (F >= 14 ? 0 : 14 - F)));
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) {
+            int32_t e = stp_asr32((int32_t)shading->rot[i][j] * scale14, Q14);
+            g->m[i][j] = (int16_t)(e > 32767 ? 32767 : (e < -32767 ? -32767 : e));
+        }
+    to_view(view, d, g->t);
+    return 1;
+}
+
+/* Vertex v of the mesh placed by g (view = M v + t) and projected into
+ * *p; 0 when a coordinate is out of range (direct.h) or the point nearer
+ * than hither or outside the device range. */
+STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const stp_direct_geometry *g, const stp_vec3 *v,
+                                 stp_direct_point *p)
 {
     int32_t w[3], r[3];
     int i;
@@ -235,13 +335,76 @@ STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const int16_t m[3]
     }
     STP_UNROLL3
     for (i = 0; i < 3; i++)
-        r[i] = dot3(w, m[i]) + t[i];
+        r[i] = dot3(w, g->m[i]) + g->t[i];
     p->x = r[0];
     p->y = r[1];
     p->z = r[2];
     return p->z >= view->hither && project_point(view, p);
 }
+#else
+/* A frame's geometry: the model's transform and the view's after it
+ * (composed; with more than 16 fractional bits the view's alone: the
+ * renderer's two steps) */
+typedef struct stp_direct_geometry {
+    stp_transform model;
+#if F > 16
+    stp_view_transform view;
+#else
+    stp_view_small view;
+#endif
+} stp_direct_geometry;
 
+/* *g for model seen by view, d = translate - from (|d_i| < 2^23): its
+ * transform composed with the view's (the geometry stage, as the renderer
+ * composes them); 0 when a composite axis is out of range (a scale within
+ * about 2^-12 of 2) */
+static int geometry_prepare(stp_direct_geometry *g, const stp_direct_view *view, const stp_direct_model *model,
+                            const stp_direct_shading *shading, const int32_t d[3])
+{
+    (void)shading;
+    stp_direct_model_transform(model, &g->model);
+#if F > 16
+    /* unit axes reach 2^17: the renderer's two steps (the model, then the
+     * view), as its geometry stage takes them */
+    (void)d;
+    stp_view_transform_of_axes(view->axis[0], view->axis[1], view->axis[2], view->from, &g->view);
+    return 1;
+#else
+    {
+        int32_t e[3]; /* from - translate */
+        e[0] = -d[0];
+        e[1] = -d[1];
+        e[2] = -d[2];
+        return stp_view_compose_small(view->axis, e, &g->model, &g->view);
+    }
+#endif
+}
+
+/* Vertex v of the mesh in view coordinates by the frame's geometry g (the
+ * geometry stage's, the renderer's values; with more than 16 fractional
+ * bits its two steps) and projected into *p; 0 when a coordinate is out
+ * of range (direct.h) or the point nearer than hither or outside the
+ * device range. */
+STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const stp_direct_geometry *g, const stp_vec3 *v,
+                                 stp_direct_point *p)
+{
+    stp_vec3 r;
+    if (!in_coord_range(v->x) || !in_coord_range(v->y) || !in_coord_range(v->z))
+        return 0;
+#if F > 16
+    if (stp_view_point_two_steps(&g->model, &g->view, *v, &r))
+        return 0; /* the model point saturated */
+#else
+    stp_view_small_point(&g->view, v, &r);
+#endif
+    p->x = r.x;
+    p->y = r.y;
+    p->z = r.z;
+    return p->z >= view->hither && project_point(view, p);
+}
+#endif
+
+#if STP_DIRECT_COMPACT
 /* Component i (0: x, 1: y, 2: z) of p's view position: third's one
  * body serves the three components (with STP_LEAN_CODE one call, a third
  * of the code of three inlined copies; elsewhere folded per component) */
@@ -287,16 +450,54 @@ static int32_t screen_area(const stp_direct_point *const p[3])
     return (int32_t)ax * by - (int32_t)ay * bx;
 }
 
-/* faces[k] of triangle tri (corner indices into points) with normal: 0
- * for a back or edge-on face, else 256 + the intensity byte of the front
- * face: the shade, INTENSITY, the linear
+/* Whether the face of normal with triangle tri is a front face: by the
+ * winding of its projected vertices p */
+STP_HOT_INLINE int front_face(const stp_direct_shading *s, const int16_t *normal, const stp_vec3 *v0,
+                              const stp_direct_point *const p[3])
+{
+    (void)s;
+    (void)normal;
+    (void)v0;
+    return screen_area(p) < 0;
+}
+#else
+stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal,
+                              const stp_direct_point *const p[3])
+{
+    int16_t nv[3];
+    stp_vec3 centre;
+    /* the mesh route's face stage (mesh.c's enter_face): the normal turned
+     * by the model frame, the vertices' average (view coordinates below
+     * 2^26: the small form) */
+    stp_render_view_normal(&s->frame, normal, 1, nv);
+    centre.x = stp_render_average3(1, p[0]->x, p[1]->x, p[2]->x);
+    centre.y = stp_render_average3(1, p[0]->y, p[1]->y, p[2]->y);
+    centre.z = stp_render_average3(1, p[0]->z, p[1]->z, p[2]->z);
+    /* view coordinates below 2^26 (direct.h), perspective, no highlight */
+    return stp_shade_fast_face_near(s->fast, nv, centre); /* [0, 1] */
+}
+
+/* Whether the face of normal through model point v0 is a front face: the
+ * face stage's side (stp_render_face_side: the exact sign of N.(eye - v0)
+ * in model coordinates), as the mesh route removes back faces */
+STP_HOT_INLINE int front_face(const stp_direct_shading *s, const int16_t *normal, const stp_vec3 *v0,
+                              const stp_direct_point *const p[3])
+{
+    (void)p;
+    return stp_render_face_side(&s->frame, normal, *v0) > 0;
+}
+#endif
+
+/* faces[k] of triangle tri with normal: 0 for a back or edge-on face
+ * (front_face), else 256 +
+ * the intensity byte of the front face: the shade, INTENSITY, the linear
  * drive value floor((k 255 + d / 2) / d) of index k + 1, d = levels - 1
  * (output.c's stp_output_level), as (n m) >> 24 with m = ceil(2^24 / d)
  * (drive_m, once per frame): n = k 255 + d / 2 <= 255.5 d, so n m <
  * 255.5 2^24 + n < 2^32, and the excess n (m d - 2^24) / (d 2^24) stays
  * below 1 / d (n (m d - 2^24) < 255.5 d^2 <= 255.5 254^2 < 2^24): the
  * quotient exactly, without a division per face. */
-STP_DIRECT_CALL uint16_t face_intensity(const stp_direct_shading *s, const int16_t *normal,
+STP_DIRECT_CALL uint16_t face_intensity(const stp_direct_shading *s, const int16_t *normal, const stp_mesh *mesh,
                                         const stp_direct_point *points, const uint16_t *tri, unsigned levels,
                                         uint32_t drive_m)
 {
@@ -307,7 +508,7 @@ STP_DIRECT_CALL uint16_t face_intensity(const stp_direct_shading *s, const int16
     p[0] = &points[tri[0]];
     p[1] = &points[tri[1]];
     p[2] = &points[tri[2]];
-    if (screen_area(p) >= 0)
+    if (!front_face(s, normal, &mesh->vertices[tri[0]], p))
         return 0; /* a back face */
     shade = stp_direct_face_shade(s, normal, p);
     index = ((uint32_t)shade * d) >> F; /* index - 1, at most d */
@@ -359,13 +560,13 @@ int stp_direct_frame_project_lit(stp_direct_frame *f, const stp_mesh *mesh, cons
                                  const uint8_t cell[16], stp_direct_point *points, size_t point_count,
                                  uint16_t *faces, size_t face_count)
 {
-    int32_t t[3], d[3];
-    int16_t m[3][3], scale14;
+    int32_t d[3];
     uint32_t drive_m;
     stp_direct_shading shading;
+    stp_direct_geometry g;
     const uint16_t *tri;
     const int16_t *normal;
-    int i, j, status;
+    int status;
     uint16_t k;
     status = check_args(f, mesh, model, view, lit, levels, cell, points, point_count, faces, face_count);
     if (status != STP_OK)
@@ -373,26 +574,19 @@ int stp_direct_frame_project_lit(stp_direct_frame *f, const stp_mesh *mesh, cons
     f->layout = STP_BAND_ROWS;
     /* ceil(2^24 / (levels - 1)), face_intensity's reciprocal */
     drive_m = STP_UDIV32(((uint32_t)1 << 24) + (uint32_t)levels - 2u, (uint32_t)levels - 1u);
-    /* C = V R (shading.rot, for the normals) and M = C scale: scale in Q14,
-     * below 2^15; M saturated (file comment) */
-    scale14 = (int16_t)(F >= 14 ? model->scale >> (F >= 14 ? F - 14 : 0) /* scale > 0 */
-                                : model->scale * (1 << (F >= 14 ? 0 : 14 - F)));
     if (!difference(&model->translate, &view->from, d))
         return STP_ERR_RANGE;
-    stp_direct_shading_prepare(&shading, lit, view, model);
-    for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++) {
-            int32_t e = stp_asr32((int32_t)shading.rot[i][j] * scale14, Q14);
-            m[i][j] = (int16_t)(e > 32767 ? 32767 : (e < -32767 ? -32767 : e));
-        }
-    to_view(view, d, t);
+    if (!stp_direct_shading_prepare(&shading, lit, view, model))
+        return STP_ERR_ARG; /* rot not a rotation, or the scale below 2^-6 (direct.h) */
+    if (!geometry_prepare(&g, view, model, &shading, d))
+        return STP_ERR_RANGE;
     for (k = 0; k < mesh->vertex_count; k++)
-        if (!place_vertex(view, (const int16_t(*)[3])m, t, &mesh->vertices[k], &points[k]))
+        if (!place_vertex(view, &g, &mesh->vertices[k], &points[k]))
             return STP_ERR_RANGE;
     tri = mesh->triangles;
     normal = mesh->normals;
     for (k = 0; k < mesh->triangle_count; k++, tri += 3, normal += 3)
-        faces[k] = face_intensity(&shading, normal, points, tri, (unsigned)levels, drive_m);
+        faces[k] = face_intensity(&shading, normal, mesh, points, tri, (unsigned)levels, drive_m);
     f->mesh = mesh;
     f->points = points;
     f->faces = faces;

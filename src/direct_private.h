@@ -8,6 +8,7 @@
 
 #include "stipple/direct.h"
 #include "shade_fast_private.h"
+#include "view_private.h" /* stp_model_frame */
 #include "direct_view_private.h" /* STP_DIRECT_CALL */
 
 /* A light prepared for a view (include/stipple/direct.h: stp_direct_lit):
@@ -26,19 +27,26 @@ struct stp_direct_lit {
  * when the light's offset from the eye is not below 2^23 raw. */
 int stp_direct_light_prepare(stp_direct_lit *lit, const stp_direct_view *view, const stp_direct_light *light);
 
-/* A frame's shading: the prepared light and C = V R, the model's rotation
- * into view coordinates (Q1.14), for the normals. */
+/* A frame's shading: the prepared light and the face stage's model frame
+ * (view_private.h: the rotation of model normals into view coordinates
+ * and the eye in model coordinates, as the mesh route forms them). */
 typedef struct stp_direct_shading {
     const stp_shade_fast *fast;
-    int16_t rot[3][3];
+#if STP_DIRECT_COMPACT
+    int16_t rot[3][3]; /* the compact form: C = V R rounded to Q1.14 */
+#else
+    stp_model_frame frame;
+#endif
 } stp_direct_shading;
 
-/* *s for a frame (direct.c): lit's shader and C = V R rounded from Q28. */
-void stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit, const stp_direct_view *view,
-                                const stp_direct_model *model);
+/* *s for a frame (direct.c): lit's shader and the model frame of view
+ * and model; 0 when the model frame is not usable (rot not a rotation,
+ * or a scale below 2^-6), else 1. */
+int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit, const stp_direct_view *view,
+                               const stp_direct_model *model);
 
-/* The shade in [0, 1] of a face with model normal (Q1.14) and projected
- * vertices p (direct.c). */
+/* The shade in [0, 1] of a front face (the side its normal points to
+ * seen) with model normal (Q1.14) and projected vertices p (direct.c). */
 stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal,
                               const stp_direct_point *const p[3]);
 

@@ -4,10 +4,12 @@
 
 #include "direct_view_private.h"
 #include "fix_private.h" /* STP_TABLE */
+#include "view_private.h" /* stp_view_axes */
 
 #define Q14 14
 #define COORD_LIMIT ((int32_t)1 << 23) /* direct.h: coordinates below 2^23 raw */
 
+#if STP_DIRECT_COMPACT
 /* v scaled to unit length in Q1.14: the core's one unit vector in the
  * form mesh.c's normals take (fix.c's stp_unit_q14_from64: stp_unit_from64
  * rounded to Q14).  0 for a zero vector (out untouched). */
@@ -28,11 +30,66 @@ STP_DIRECT_SMALL void cross14(const int16_t a[3], const int16_t b[3], int32_t c[
     }
 }
 
+/* Q1.14 value v as stp_fix */
+#if STP_FIX_FRAC_BITS >= 14
+#define Q14_TO_FIX(v) ((int32_t)(v) * ((int32_t)1 << (STP_FIX_FRAC_BITS >= 14 ? STP_FIX_FRAC_BITS - 14 : 0)))
+#else
+#define Q14_TO_FIX(v) stp_asr32((v), 14 - STP_FIX_FRAC_BITS)
+#endif
+
+/* Q1.14 vector a as stp_fix; one call */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void q14_axis(const int16_t a[3], stp_vec3 *out)
+{
+    out->x = Q14_TO_FIX(a[0]);
+    out->y = Q14_TO_FIX(a[1]);
+    out->z = Q14_TO_FIX(a[2]);
+}
+
+/* The compact form's axes (config.h: STP_DIRECT_COMPACT): in Q1.14 by the
+ * unit vectors mesh normals take, kept as stp_fix (exact multiples of
+ * 2^(F - 14)); 0 when from - at or up is zero or up lies along the line
+ * of sight. */
+static int look_axes(const int32_t d[3], stp_vec3 up, stp_vec3 axis[3])
+{
+    int32_t u[3], c[3];
+    int16_t a[3][3], upn[3];
+    int i;
+    u[0] = up.x;
+    u[1] = up.y;
+    u[2] = up.z;
+    if (unit14(d, a[2]) == 0 || unit14(u, upn) == 0)
+        return 0;
+    /* right = forward x up, as view.c; short: up along the line of sight */
+    cross14(a[2], upn, c);
+    if (stp_abs32(c[0]) + stp_abs32(c[1]) + stp_abs32(c[2]) < ((uint32_t)1 << 18))
+        return 0;
+    (void)unit14(c, a[0]);
+    cross14(a[0], a[2], c);
+    (void)unit14(c, a[1]);
+    for (i = 0; i < 3; i++)
+        q14_axis(a[i], &axis[i]);
+    return 1;
+}
+#else
+/* The renderer's axes (view.c's stp_view_axes: the one place they are
+ * formed) */
+static int look_axes(const int32_t d[3], stp_vec3 up, stp_vec3 axis[3])
+{
+    stp_vec3 from = {0, 0, 0}, at;
+    at.x = d[0];
+    at.y = d[1];
+    at.z = d[2];
+    return stp_view_axes(from, at, up, &axis[0], &axis[1], &axis[2]) == STP_OK;
+}
+#endif
+
 int stp_direct_view_look(stp_direct_view *v, stp_vec3 from, stp_vec3 at, stp_vec3 up, stp_fix focal,
                          stp_fix hither, uint16_t width, uint16_t height)
 {
-    int32_t d[3], u[3], c[3];
-    int16_t upn[3];
+    int32_t d[3];
     int i;
     if (v == 0 || width < 1 || width > 512 || height < 1 || height > 512 || focal <= 0 || hither <= 0)
         return STP_ERR_ARG;
@@ -42,18 +99,8 @@ int stp_direct_view_look(stp_direct_view *v, stp_vec3 from, stp_vec3 at, stp_vec
     for (i = 0; i < 3; i++)
         if (d[i] >= COORD_LIMIT || d[i] <= -COORD_LIMIT)
             return STP_ERR_VIEW;
-    u[0] = up.x;
-    u[1] = up.y;
-    u[2] = up.z;
-    if (unit14(d, v->axis[2]) == 0 || unit14(u, upn) == 0)
+    if (!look_axes(d, up, v->axis))
         return STP_ERR_VIEW;
-    /* right = forward x up, as view.c; short: up along the line of sight */
-    cross14(v->axis[2], upn, c);
-    if (stp_abs32(c[0]) + stp_abs32(c[1]) + stp_abs32(c[2]) < ((uint32_t)1 << 18))
-        return STP_ERR_VIEW;
-    (void)unit14(c, v->axis[0]);
-    cross14(v->axis[0], v->axis[2], c);
-    (void)unit14(c, v->axis[1]);
     v->from = from;
     v->focal = focal;
     v->hither = hither;
@@ -110,6 +157,23 @@ void stp_direct_model_turn(stp_direct_model *m, uint16_t yaw, uint16_t pitch, st
     m->rot[2][2] = mul14(cx, cy);
     m->scale = scale;
     m->translate = translate;
+}
+
+void stp_direct_model_transform(const stp_direct_model *m, stp_transform *out)
+{
+    int i, j;
+    if (m == 0 || out == 0)
+        return;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) {
+            /* |rot| <= 2^14, 0 < scale < 2^(F + 1) */
+#if STP_FIX_FRAC_BITS <= 16
+            out->m[i][j] = stp_asr32((int32_t)m->rot[i][j] * m->scale, Q14); /* below 2^31 */
+#else
+            out->m[i][j] = (stp_fix)stp_asr64((int64_t)m->rot[i][j] * m->scale, Q14);
+#endif
+        }
+    out->t = m->translate;
 }
 
 int stp_direct_mesh_normals(const stp_mesh *mesh, int16_t *normals)

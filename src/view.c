@@ -261,6 +261,124 @@ int stp_view_transform_compose(const stp_view_transform *t, const stp_transform 
     return 1;
 }
 
+/* ---- the geometry stage for points near the eye (view_private.h) ---- */
+
+void stp_view_small_of_axes(const stp_vec3 axes[3], int32_t high, uint32_t low, stp_view_small *out)
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        /* member by member: with one struct copy here, GCC 12 for
+         * ARMv6-M at -Os took stp_view_small_point's loads of the axes as
+         * not reading it and dropped this function's calls */
+        out->axis[i].x = axes[i].x;
+        out->axis[i].y = axes[i].y;
+        out->axis[i].z = axes[i].z;
+#if !(STP_WIDE_ARITH || F != 16) /* the 32-bit form's */
+        out->axis_high[i][0] = (int16_t)stp_asr32(axes[i].x, 5);
+        out->axis_high[i][1] = (int16_t)stp_asr32(axes[i].y, 5);
+        out->axis_high[i][2] = (int16_t)stp_asr32(axes[i].z, 5);
+#endif
+        out->high[i] = high;
+        out->low[i] = low;
+    }
+}
+
+#if STP_WIDE_ARITH || F != 16
+void stp_view_small_point(const stp_view_small *t, const stp_vec3 *p, stp_vec3 *out)
+{
+    int32_t v[3];
+    int i;
+    for (i = 0; i < 3; i++) {
+        const stp_vec3 *a = &t->axis[i];
+        /* each product below 2^40 (2^43 at F = 20), the eye term below 2^46 */
+        int64_t s = (int64_t)a->x * p->x + (int64_t)a->y * p->y + (int64_t)a->z * p->z -
+                    ((int64_t)t->high[i] * ((int64_t)1 << F) + (int64_t)t->low[i]);
+        v[i] = (int32_t)stp_asr64(s, F);
+    }
+    out->x = v[0];
+    out->y = v[1];
+    out->z = v[2];
+}
+#else
+/* With S = a . p - from, from = high 2^16 + low: a_i = 2^5 ah_i + al_i
+ * and p_i = 2^11 ph_i + pl_i (floor splits, al_i in [0, 32), pl_i in
+ * [0, 2048), |ah_i|, |ph_i| <= 2^12), so H = sum ah_i ph_i (16 x 16-bit
+ * products, |H| <= 3 2^24) leaves a . p - 2^16 H = sum (2^5 ah_i pl_i +
+ * 2^11 al_i ph_i + al_i pl_i), each term below 2^28 + 2^28 + 2^16 in
+ * magnitude: below 1.51 2^30 in all, 1.51 2^14 in units of 2^16.  So
+ * floor(S / 2^16) lies in [e, e + 2^16) for e = H - high - 2^15, and its
+ * low 16 bits are bits 16..31 of S mod 2^32 (the wrapped sum of the
+ * products less from's low word): e plus their difference from e's taken
+ * mod 2^16, exactly (the form of the renderer's short form, unit_coordinate,
+ * for these ranges: |a_i| < 2^17, |p_i| < 2^23). */
+void stp_view_small_point(const stp_view_small *t, const stp_vec3 *p, stp_vec3 *out)
+{
+    int32_t v[3];
+    int16_t h[3];
+    int i;
+    h[0] = (int16_t)stp_asr32(p->x, 11);
+    h[1] = (int16_t)stp_asr32(p->y, 11);
+    h[2] = (int16_t)stp_asr32(p->z, 11);
+    for (i = 0; i < 3; i++) {
+        const stp_vec3 *a = &t->axis[i];
+        const int16_t *ah = t->axis_high[i];
+        int32_t e = (int32_t)ah[0] * h[0] + (int32_t)ah[1] * h[1] + (int32_t)ah[2] * h[2] - t->high[i] - 0x8000;
+        uint32_t s = (uint32_t)a->x * (uint32_t)p->x + (uint32_t)a->y * (uint32_t)p->y +
+                     (uint32_t)a->z * (uint32_t)p->z - (((uint32_t)t->high[i] << 16) + t->low[i]);
+        v[i] = e + (int32_t)(((s >> 16) - (uint32_t)e) & 0xFFFFu);
+    }
+    out->x = v[0];
+    out->y = v[1];
+    out->z = v[2];
+}
+#endif
+
+/* Every value below is a view coordinate by stp_view_small_point (each
+ * point below 2^23, each axis below 2^17):
+ *   C_ij = floor((V_i . M_j + 2^(F-1)) / 2^F), the view of column M_j of
+ *   m with the eye terms -2^(F-1) (high -1, low 2^(F-1)): compose_rows'
+ *   rounding (stp_view_transform_compose);
+ *   V_i . d = 2^F floor(V_i . d / 2^F) + (V_i . d mod 2^F): the view of d
+ *   with the eye terms 0, and the low part from the products' sum mod
+ *   2^32. */
+int stp_view_compose_small(const stp_vec3 axes[3], const int32_t d[3], const stp_transform *model,
+                           stp_view_small *out)
+{
+    stp_view_small v;
+    stp_vec3 p, c[3], rows[3];
+    int i;
+    stp_view_small_of_axes(axes, -1, (uint32_t)1 << (F - 1), &v);
+    for (i = 0; i < 3; i++) {
+        p.x = model->m[0][i];
+        p.y = model->m[1][i];
+        p.z = model->m[2][i];
+        stp_view_small_point(&v, &p, &c[i]); /* column i of C */
+        if (stp_abs32(c[i].x) >= ((uint32_t)1 << 17) || stp_abs32(c[i].y) >= ((uint32_t)1 << 17) ||
+            stp_abs32(c[i].z) >= ((uint32_t)1 << 17))
+            return 0;
+    }
+    stp_view_small_of_axes(axes, 0, 0, &v);
+    p.x = d[0];
+    p.y = d[1];
+    p.z = d[2];
+    stp_view_small_point(&v, &p, &p); /* floor(V_i . d / 2^F) */
+    /* C's rows (right, up, forward) from its columns */
+    for (i = 0; i < 3; i++) {
+        rows[i].x = stp_vec3_comp(&c[0], i);
+        rows[i].y = stp_vec3_comp(&c[1], i);
+        rows[i].z = stp_vec3_comp(&c[2], i);
+    }
+    stp_view_small_of_axes(rows, 0, 0, out);
+    out->high[0] = p.x;
+    out->high[1] = p.y;
+    out->high[2] = p.z;
+    for (i = 0; i < 3; i++)
+        out->low[i] = ((uint32_t)d[0] * (uint32_t)axes[i].x + (uint32_t)d[1] * (uint32_t)axes[i].y +
+                       (uint32_t)d[2] * (uint32_t)axes[i].z) &
+                      (((uint32_t)1 << F) - 1u);
+    return 1;
+}
+
 int stp_model_frame_make(const stp_view_transform *t, stp_vec3 from, const stp_transform *model,
                          stp_model_frame *f)
 {

@@ -192,6 +192,41 @@ int stp_view_similar(const stp_transform *model);
 int stp_view_transform_compose(const stp_view_transform *t, const stp_transform *model,
                                stp_view_transform *out);
 
+/* The geometry stage's transform for points near the eye (direct
+ * drawing's, once a frame): view coordinate i of a point p is
+ *   floor((axis[i] . p - from_i) / 2^F),  from_i = high[i] 2^F + low[i],
+ * the value stp_view_transform_point gives for the same axes and eye
+ * terms, exactly.  Ranges: |axis components| < 2^17 (at F = 16), |p_i| <
+ * 2^23, |high| < 2^26, low in [0, 2^F): view coordinates below 2^26.
+ * Where 64-bit products are library calls and F = 16, in 32 bits
+ * (view.c: a 16 x 16-bit estimate and the products' sum mod 2^32), else
+ * in 64. */
+typedef struct stp_view_small {
+    stp_vec3 axis[3];        /* rows: right, up, forward */
+    int16_t axis_high[3][3]; /* floor(axis / 2^5): the 32-bit form's estimate */
+    int32_t high[3];
+    uint32_t low[3];
+} stp_view_small;
+
+/* *out = axes (each component below 2^17 in magnitude, F = 16) with
+ * every eye term high 2^F + low */
+void stp_view_small_of_axes(const stp_vec3 axes[3], int32_t high, uint32_t low, stp_view_small *out);
+
+/* p's view coordinates by t (the ranges above); out may be p. */
+void stp_view_small_point(const stp_view_small *t, const stp_vec3 *p, stp_vec3 *out);
+
+/* *out = view axes axes[0..2] (unit vectors) after model's matrix m
+ * (|m| < 2^17; its translation is not read) with d = from - t, the eye's
+ * offset from the model's translation (|d_i| < 2^23): composite axes
+ * C_i = V_i M rounded to F fractional bits, eye terms V_i . d exact, as
+ * stp_view_transform_compose forms them, so every point's view
+ * coordinates are the renderer's for the same view and model (a
+ * similarity).  Returns 1, or 0 (out partly written) when a composite
+ * component reaches 2^17 in magnitude (there the renderer takes its two
+ * steps). */
+int stp_view_compose_small(const stp_vec3 axes[3], const int32_t d[3], const stp_transform *model,
+                           stp_view_small *out);
+
 /* The model frame of view transform t (its axes), eye from (world) and
  * model (NULL: the identity); returns f->usable (1, or 0 when model is no
  * similarity or the eye in model coordinates is not below 2^30). */

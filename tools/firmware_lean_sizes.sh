@@ -26,7 +26,7 @@ src=$(cd "$1" && pwd)
 mkdir -p "$2"
 work=$(cd "$2" && pwd)
 cpu="-mcpu=cortex-m0plus -mthumb -mfloat-abi=soft"
-defs="-DSTP_WITH_SPECULAR=0 -DSTP_MAX_LIGHTS=1 -DSTP_WITH_PAGES=0 -DSTP_SMALL_DIVISION=1"
+defs="-DSTP_WITH_SPECULAR=0 -DSTP_MAX_LIGHTS=1 -DSTP_WITH_PAGES=0 -DSTP_SMALL_DIVISION=1 -DSTP_DIRECT_COMPACT=1"
 cflags="-std=c99 $cpu -Os -ffreestanding -ffunction-sections -fdata-sections -Wall -Wextra -Werror"
 inc="-I $src/include -I $src/src -I $src/ports/direct -I $src/ports/stellaris -I $src/ports/controllers"
 core="direct direct_band direct_view shade_fast shade view recip mesh fix div64"

@@ -151,6 +151,23 @@
 #define STP_SQRT_FAST 0
 #endif
 
+/* 1: direct drawing's face stage in its compact form: a face is drawn
+ * when its projected vertices turn counter-clockwise, and shaded with its
+ * normal turned by the view and model rotations composed in Q1.14, at its
+ * vertices' mean by a product-based third; 0 (default): the mesh route's
+ * face stage (the model frame: the exact side of N.(eye - v0) in model
+ * coordinates, normals turned by its normalised rows, the exact mean), so
+ * direct drawing's pictures equal the renderer's pixel for pixel.  With 1
+ * a face within rounding of edge-on or of a style step may differ
+ * (tests/direct: test_direct_equal_compact counts them).  The vertices'
+ * positions are the renderer's either way.  The Arduino library and the
+ * lean direct image set it: the model frame's normalisation, division
+ * and 64-bit side test cost SIZE_UNO bytes on the Uno and SIZE_M0 on a
+ * Cortex-M0+. */
+#ifndef STP_DIRECT_COMPACT
+#define STP_DIRECT_COMPACT 0
+#endif
+
 /* 1: the face shader's compact route: faces without the highlight (every
  * face with STP_WITH_SPECULAR 0) shaded from 16-bit directions, an exact
  * integer square root, the cosine by one division and each light's share

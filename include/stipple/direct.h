@@ -8,8 +8,11 @@
  * in mesh order, as the full renderer's --hidden none paints them).
  *
  * Per frame:
- *   1. stp_direct_frame_project: every vertex transformed (model, then
- *      view) and projected once into caller scratch (stp_direct_point),
+ *   1. stp_direct_frame_project: every vertex transformed (the model
+ *      composed with the view, the renderer's geometry stage: the same
+ *      view coordinates as stp_renderer_mesh under
+ *      stp_direct_model_transform) and projected once into caller scratch
+ *      (stp_direct_point),
  *      every front face shaded once (flat; one light; the seed's ambient +
  *      diffuse equation, docs/model.md section 2, shade_fast.c's prepare and 32-bit
  *      arithmetic) into a per-face byte pair;
@@ -24,8 +27,8 @@
  * takes the path its prepare chooses for every route: on 64-bit hosts its
  * 64-bit form, as the mesh route there), no division in any loop over
  * pixels.  Formats and ranges:
- *   Q1.14      int16_t, one = 16384 (STP_MESH_NORMAL_ONE): rotations, the
- *              view axes, normals.
+ *   Q1.14      int16_t, one = 16384 (STP_MESH_NORMAL_ONE): rotations,
+ *              normals.
  *   stp_fix    world and view coordinates (STP_FIX_FRAC_BITS fractional
  *              bits; the limits below are raw, so in units they shrink as
  *              the precision grows: 128 units at 16 bits).  Mesh vertices and the
@@ -45,6 +48,7 @@
 
 #include "stipple/dither.h"
 #include "stipple/mesh.h"
+#include "stipple/transform.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -53,7 +57,8 @@ extern "C" {
 /* A camera, prepared once (stp_direct_view_look). */
 typedef struct stp_direct_view {
     stp_vec3 from;        /* the eye, world units */
-    int16_t axis[3][3];   /* rows: right, up, forward (left-handed), Q1.14 */
+    stp_vec3 axis[3];     /* right, up, forward (left-handed): unit vectors,
+                             the renderer's view axes for the same look-at */
     stp_fix focal;        /* pixels per unit of x/z, > 0 */
     stp_fix hither;       /* nearest view z allowed, > 0 */
     uint16_t width, height; /* device pixels, 1..512 */
@@ -74,6 +79,14 @@ typedef struct stp_direct_model {
     stp_fix scale;       /* uniform, (0, 2) */
     stp_vec3 translate;  /* world units */
 } stp_direct_model;
+
+/* The renderer's model transform of m (stp_renderer_set_transform):
+ * entries floor(rot scale / 2^14), the translation as it is.  Direct
+ * drawing places its vertices by this transform composed with the view,
+ * as the renderer's geometry stage composes them, so a mesh drawn by
+ * direct drawing and by stp_renderer_mesh under it has the same view
+ * coordinates and device positions.  m or out NULL is ignored. */
+void stp_direct_model_transform(const stp_direct_model *m, stp_transform *out);
 
 /* sin(2 pi angle / 65536) in Q1.14 (angle: 1/65536 of a turn), within
  * 2 raw units: a 65-entry quarter table and linear interpolation. */

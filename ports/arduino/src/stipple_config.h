@@ -18,5 +18,6 @@
 #define STP_WITH_SPECULAR 0
 #define STP_MAX_LIGHTS 1
 #define STP_SHADE_COMPACT 1
+#define STP_DIRECT_COMPACT 1
 
 #endif

@@ -48,7 +48,7 @@ typedef struct stipple_spin {
 /* The view above, as stp_direct_view_look(from (0, 1, 3.375), at the
  * origin, up (0, 1, 0), focal 6651316, hither 6554, 128, 64) returns it. */
 #define STIPPLE_SPIN_VIEW                                                                    \
-    {{0, 65536, 221184}, {{16384, 0, 0}, {0, 15709, -4655}, {0, -4655, -15709}}, 6651316, 6554, \
+    {{0, 65536, 221184}, {{65536, 0, 0}, {0, 62836, -18620}, {0, -18620, -62836}}, 6651316, 6554, \
      STIPPLE_SPIN_WIDTH, STIPPLE_SPIN_HEIGHT}
 
 /* Set s up for mesh (prepared normals required; centred, radius 1).
