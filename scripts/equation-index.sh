@@ -73,7 +73,7 @@ clipping and projection | against the hither plane and the window, then perspect
 back-face removal | faces with N.E <= 0 dropped | enter_polygon | test_backface_removal_keeps_faces_towards_viewer test_backface_removal_single_polygon
 painter's algorithm | polygons drawn far to near | sort_entries | test_hidden_surfaces_nearer_square_wins
 Z buffer | the nearest surface per pixel | put_span_z | test_zbuffer_interpenetrating_polygons
-direct drawing | no display file: a mesh transformed, projected and shaded once per frame (32-bit), back faces by winding, painted in mesh order straight into bands with the same fill rule | stp_direct_frame_project project_point stp_direct_draw_band | tests/direct/test_direct.c:test_torus tests/direct/test_direct.c:test_bands
+direct drawing | no display file: a mesh through the renderer's geometry and face stages (the model composed with the view once a frame, exact in 32 bits; the mesh route's back-face test and shading), projected once per frame, painted in mesh order straight into bands with the same fill rule: the mesh route's pixels | stp_direct_frame_project stp_view_compose_small project_point stp_direct_draw_band | tests/direct/test_direct_equal.c:test_torus_128x64 tests/mesh/test_view_small.c:test_compose_is_the_renderers tests/direct/test_direct.c:test_torus tests/direct/test_direct.c:test_bands
 TABLE
 }
 

@@ -479,12 +479,13 @@ stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal
 
 /* Whether the face of normal through model point v0 is a front face: the
  * face stage's side (stp_render_face_side: the exact sign of N.(eye - v0)
- * in model coordinates), as the mesh route removes back faces */
+ * in model coordinates; in 32 bits for direct drawing's ranges), as the
+ * mesh route removes back faces */
 STP_HOT_INLINE int front_face(const stp_direct_shading *s, const int16_t *normal, const stp_vec3 *v0,
                               const stp_direct_point *const p[3])
 {
     (void)p;
-    return stp_render_face_side(&s->frame, normal, *v0) > 0;
+    return stp_render_face_side_near(&s->frame, normal, v0) > 0;
 }
 #endif
 

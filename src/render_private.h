@@ -162,6 +162,27 @@ STP_HOT_INLINE int stp_render_face_side(const stp_model_frame *f, const int16_t 
     return side > 0 ? 1 : (side < 0 ? -1 : 0);
 }
 
+/* stp_render_face_side for |v0_i| < 2^23 (direct drawing's vertices;
+ * the model frame's eye is below 2^30), the same sign; where 64-bit
+ * products are library calls from 32-bit ones: with d_i = eye_i - v0_i =
+ * 2^15 h_i + l_i (l_i in [0, 2^15), |h_i| <= 2^15 + 2^8), A = sum n_i h_i
+ * and B = sum n_i l_i are below 3 (2^29 + 2^22) in magnitude (|n_i| <=
+ * 2^14), and N.d = 2^15 A + B = 2^15 (A + floor(B / 2^15)) + (B mod
+ * 2^15): the sign of A + floor(B / 2^15), or where that is 0 of B mod
+ * 2^15 (>= 0). */
+STP_HOT_INLINE int stp_render_face_side_near(const stp_model_frame *f, const int16_t n[3], const stp_vec3 *v0)
+{
+#if STP_WIDE_ARITH
+    return stp_render_face_side(f, n, *v0);
+#else
+    int32_t d0 = f->eye[0] - v0->x, d1 = f->eye[1] - v0->y, d2 = f->eye[2] - v0->z;
+    int32_t a = n[0] * stp_asr32(d0, 15) + n[1] * stp_asr32(d1, 15) + n[2] * stp_asr32(d2, 15);
+    int32_t b = n[0] * (d0 & 0x7FFF) + n[1] * (d1 & 0x7FFF) + n[2] * (d2 & 0x7FFF);
+    a += stp_asr32(b, 15);
+    return a != 0 ? (a > 0 ? 1 : -1) : ((b & 0x7FFF) != 0);
+#endif
+}
+
 /* The side of a triangle with cross product c (stp_render_triangle_cross)
  * through v0 that stp_render_face_side gives for its normal n (c
  * normalised and rounded to Q1.14), found without normalising when the

@@ -151,19 +151,23 @@
 #define STP_SQRT_FAST 0
 #endif
 
-/* 1: direct drawing's face stage in its compact form: a face is drawn
- * when its projected vertices turn counter-clockwise, and shaded with its
- * normal turned by the view and model rotations composed in Q1.14, at its
- * vertices' mean by a product-based third; 0 (default): the mesh route's
- * face stage (the model frame: the exact side of N.(eye - v0) in model
- * coordinates, normals turned by its normalised rows, the exact mean), so
- * direct drawing's pictures equal the renderer's pixel for pixel.  With 1
- * a face within rounding of edge-on or of a style step may differ
- * (tests/direct: test_direct_equal_compact counts them).  The vertices'
- * positions are the renderer's either way.  The Arduino library and the
- * lean direct image set it: the model frame's normalisation, division
- * and 64-bit side test cost SIZE_UNO bytes on the Uno and SIZE_M0 on a
- * Cortex-M0+. */
+/* 1: direct drawing in its compact form, for the smallest chips: the
+ * view's axes rounded to Q1.14 and composed with the model's rotation in
+ * Q1.14, each vertex placed by 16 x 16-bit products; a face drawn when
+ * its projected vertices turn counter-clockwise and shaded with its
+ * normal turned by that composite, at its vertices' mean by a
+ * product-based third.  0 (default): direct drawing enters through the
+ * renderer's geometry and face stages (view.c's composed transform,
+ * exact; the model frame's side test, normal rotation and the exact
+ * vertex mean), so its pictures equal stp_renderer_mesh's pixel for
+ * pixel.  With 1 pictures may differ in a few pixels at edges and in
+ * faces within rounding of a style step or of edge-on
+ * (tests/direct/test_direct_equal_compact: 0-1 of 128 x 64 and 2-9 of
+ * 400 x 240 pixels in the torus frames).  The Arduino library and the
+ * lean direct image set it: 0 costs the Uno's SpinningCube 13 582 bytes
+ * of flash (the model frame's similarity test, normalisation and 64-bit
+ * division; 64-bit side tests) and the lean Cortex-M0+ direct core 3 448
+ * (with the renderer's look-at besides). */
 #ifndef STP_DIRECT_COMPACT
 #define STP_DIRECT_COMPACT 0
 #endif

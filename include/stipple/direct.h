@@ -33,9 +33,9 @@
  *              bits; the limits below are raw, so in units they shrink as
  *              the precision grows: 128 units at 16 bits).  Mesh vertices and the
  *              differences used (translation - eye, light - eye) must be
- *              below 2^23 raw (128 units) in magnitude, so every product
- *              below stays in 32 bits; view coordinates then stay below
- *              2^26.
+ *              below 2^23 raw (128 units) in magnitude, the ranges of the
+ *              geometry stage's 32-bit form for points near the eye
+ *              (view.c); view coordinates then stay below 2^26.
  *   device     Q27.4 (1/16 pixel), kept in int16_t: every projected vertex
  *              must land in [-8192, 8192) (pixels -512..511) or the frame
  *              is refused with STP_ERR_RANGE; so width, height <= 512.
@@ -138,18 +138,25 @@ typedef struct stp_direct_frame {
 /* Transform, project and shade one frame of mesh (prepared normals
  * required: stp_mesh_prepare_normals) under model, view and light, into
  * points[0 .. vertex_count - 1] and faces[0 .. triangle_count - 1] (caller
- * memory, kept until the frame's bands are drawn) and *f.  A face is drawn
- * when its projected vertices turn counter-clockwise on the screen (the
- * back faces and edge-on faces are removed); its shade goes through
+ * memory, kept until the frame's bands are drawn) and *f: the vertices'
+ * view coordinates and device positions stp_renderer_mesh gives under
+ * stp_direct_model_transform(model).  A face is drawn when the eye sees
+ * its front, as the mesh route decides it (the exact sign of N.(eye - v0)
+ * in model coordinates; in the compact form, config.h's
+ * STP_DIRECT_COMPACT, when its projected vertices turn counter-clockwise
+ * on the screen), and shaded as the mesh route shades it; its shade goes through
  * INTENSITY with levels (2..255) styles and the linear 8-bit drive value
  * ((index - 1) 255 / (levels - 1), rounded), later compared with cell
  * (4 x 4 thresholds, row-major: a Bayer cell's, stp_cell_bayer) pixel by
  * pixel: ON where intensity > threshold.
  * Errors: STP_ERR_ARG (a pointer NULL, a mesh array NULL, an index not
  * below vertex_count, point_count or face_count too small, levels
- * outside 2..255, scale outside (0, 2), a light value outside its range),
- * STP_ERR_RANGE (a vertex nearer than hither or projecting outside the
- * device range, or a coordinate beyond 2^23 raw); *f is then not usable. */
+ * outside 2..255, scale outside (0, 2), a light value outside its range,
+ * rot not a rotation or the scale below 2^-6: the face stage's model
+ * frame, not with STP_DIRECT_COMPACT), STP_ERR_RANGE (a vertex nearer
+ * than hither or projecting outside the device range, a coordinate beyond
+ * 2^23 raw, or a scale within about 2^-12 of 2, where a composite axis
+ * reaches 2^17); *f is then not usable. */
 int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const stp_direct_model *model,
                              const stp_direct_view *view, const stp_direct_light *light, int levels,
                              const uint8_t cell[16], stp_direct_point *points, size_t point_count,
