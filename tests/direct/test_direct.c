@@ -11,7 +11,9 @@
  * and direct drawing walks the whole triangle, within 4 pixels a frame,
  * every differing pixel within one pixel of a drawn edge, or inside a
  * face whose style the two paths chose differently (the compact form,
- * STP_DIRECT_COMPACT: the old bounds); each front face's shade within 1/30 of the
+ * STP_DIRECT_COMPACT: the old bounds); the sphere also equal to the
+ * renderer's frame with the Z buffer (convex: mesh order and depth
+ * agree); each front face's shade within 1/30 of the
  * double reference; bands of any height give the whole frame exactly;
  * the panel's page layout holds the row-major frame transposed; bad
  * arguments.
@@ -243,12 +245,13 @@ static void full_setup(full *f, const scene *s, const model *m)
     (void)m;
 }
 
-static void full_render(full *f, const scene *s, const model *m)
+static void full_render_hidden(full *f, const scene *s, const model *m, stp_hidden hidden)
 {
     stp_port port;
     stp_output out;
     stp_frame_memory mem;
     static uint8_t band[H * STRIDE];
+    static uint16_t zbuf[W * H];
     full_setup(f, s, m);
     assert_int_equal(stp_renderer_mesh(f->r, &m->mesh, f->scratch, MAX_V), STP_OK);
     assert_int_equal(stp_segment_close(f->r), STP_OK);
@@ -259,13 +262,22 @@ static void full_render(full *f, const scene *s, const model *m)
     port.flush = copy_flush;
     port.user = f;
     stp_output_default(&out);
-    out.hidden = STP_HIDDEN_NONE;
+    out.hidden = hidden;
     out.cell = &s->full_cell;
     memset(&mem, 0, sizeof mem);
     mem.band = band;
     mem.band_size = sizeof band;
     mem.band_rows = H;
+    mem.zbuf = zbuf;
+    mem.zbuf_count = W * H;
     assert_int_equal(stp_renderer_render(f->r, &port, &out, &mem), STP_OK);
+}
+
+/* The renderer's frame in mesh order (direct drawing's: no hidden-surface
+ * removal but the back faces') */
+static void full_render(full *f, const scene *s, const model *m)
+{
+    full_render_hidden(f, s, m, STP_HIDDEN_NONE);
 }
 
 /* The style index the full renderer gives triangle t alone (0: removed). */
@@ -471,6 +483,37 @@ static void test_sphere(void **state)
 {
     (void)state;
     run_model(make_sphere, "sphere", INSIDE_BOUND(25));
+}
+
+/* A convex model (the sphere) drawn by direct drawing equals the
+ * renderer's frame with the Z buffer as well: back faces removed, its
+ * front faces do not overlap, so mesh order and depth agree */
+static void test_sphere_zbuffer(void **state)
+{
+    work *w = calloc(1, sizeof *w);
+    static const uint16_t angles[][2] = {{0, 0}, {3000, 2000}, {11000, 60000}, {25000, 9000}, {40000, 30000}, {52000, 47000}};
+    size_t a;
+    (void)state;
+    assert_non_null(w);
+    make_sphere(&w->m);
+    for (a = 0; a < sizeof angles / sizeof angles[0]; a++) {
+        scene s;
+        stp_direct_frame fr;
+        int x, y, diff = 0;
+        scene_make(&s, angles[a][0], angles[a][1]);
+        assert_int_equal(stp_direct_frame_project(&fr, &w->m.mesh, &s.pose, &s.dview, &s.light, LEVELS, s.cell,
+                                                  w->pts, MAX_V, w->faces, MAX_T),
+                         STP_OK);
+        assert_int_equal(stp_direct_draw_band(&fr, w->frame, STRIDE, 0, H), STP_OK);
+        full_render_hidden(&w->f, &s, &w->m, STP_HIDDEN_ZBUFFER);
+        for (y = 0; y < H; y++)
+            for (x = 0; x < W; x++)
+                diff += bit_at(w->frame, x, y) != bit_at(w->f.frame, x, y);
+        printf("sphere yaw %5u pitch %5u against the Z buffer: %d pixels differ\n", angles[a][0], angles[a][1],
+               diff);
+        assert_true(diff <= INSIDE_BOUND(25));
+    }
+    free(w);
 }
 
 /* Bands of 1, 3, 8 and 64 rows give the whole frame exactly. */
@@ -765,6 +808,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sine),         cmocka_unit_test(test_tetra), cmocka_unit_test(test_sphere),
+        cmocka_unit_test(test_sphere_zbuffer),
         cmocka_unit_test(test_torus),        cmocka_unit_test(test_bands), cmocka_unit_test(test_normals),
         cmocka_unit_test(test_pages),        cmocka_unit_test(test_levels),
         cmocka_unit_test(test_bad_arguments),
