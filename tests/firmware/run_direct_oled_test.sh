@@ -2,7 +2,9 @@
 # SPDX-License-Identifier: MIT
 # Direct drawing on the lm3s6965evb OLED (issue 15 item 3): the shipping
 # image of ports/stellaris/main_direct.c, built as tools/firmware_lean_sizes.sh
-# builds it (Cortex-M0+ code, -Os, LTO, section GC) but stopping after
+# builds it (Cortex-M0+ code, -Os, LTO, section GC) but in direct drawing's
+# default form (the renderer's stages: the host's frame is that form's;
+# the script measures the compact form) and stopping after
 # frames 0..10 of the spinning torus, run in QEMU; the panel's screendump
 # (QMP) against the host's frame 10 (tools/bench/direct_spin_host) pixel
 # for pixel.
