@@ -9,7 +9,7 @@
  *              rounded to stp_fix, the eye's terms exact; 32-bit
  *              arithmetic on 32-bit targets at 16 fractional bits), each
  *              vertex's view coordinates floor(C p - V (from - t)) by
- *              stp_view_transform_point, exact: the renderer's values
+ *              stp_view_small_point, exact: the renderer's values
  *              (with more than 16 fractional bits its two steps, as the
  *              renderer's).  Below 2^26 for the ranges of direct.h.
  *   projection the one perspective projection (view.c's
@@ -147,11 +147,9 @@ static void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out
  * from) - V . from) / 2^F). */
 static void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out[3])
 {
-    static const int32_t zero[3] = {0, 0, 0};
-    const stp_transform identity = {{{ONE, 0, 0}, {0, ONE, 0}, {0, 0, ONE}}, {0, 0, 0}};
     stp_view_small t;
     stp_vec3 p;
-    (void)stp_view_compose_small(view->axis, zero, &identity, &t); /* C = V, the eye terms 0 */
+    stp_view_small_of_axes(view->axis, 0, 0, &t); /* the eye terms 0 */
     p.x = d[0];
     p.y = d[1];
     p.z = d[2];
