@@ -226,7 +226,11 @@ int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit,
     s->fast = &lit->fast;
     stp_direct_model_transform(model, &m);
     stp_view_transform_of_axes(view->axis[0], view->axis[1], view->axis[2], view->from, &v);
-    return stp_model_frame_make(&v, view->from, &m, &s->frame);
+    if (!stp_model_frame_make(&v, view->from, &m, &s->frame))
+        return 0;
+    /* every vertex a face is tested at is below 2^23 (place_vertex) */
+    stp_render_side_estimate_make(&s->frame, (uint32_t)COORD_LIMIT - 1u, &s->side_estimate);
+    return 1;
 }
 #endif
 
@@ -241,7 +245,7 @@ static int light_ok(const stp_direct_light *l)
 /* Device position (Q4) of view point p with p[2] >= hither > 0 by the one
  * perspective projection (view.c, the renderer's); 0 when it falls
  * outside the device range. */
-static int project_point(const stp_direct_view *view, stp_direct_point *pt)
+static int project_point(const stp_direct_view *view, int focal_bits, stp_direct_point *pt)
 {
     int32_t c[2];
     int i;
@@ -249,6 +253,7 @@ static int project_point(const stp_direct_view *view, stp_direct_point *pt)
     {
         int64_t w[2];
         stp_vec3 p;
+        (void)focal_bits;
         p.x = pt->x;
         p.y = pt->y;
         p.z = pt->z;
@@ -264,8 +269,8 @@ static int project_point(const stp_direct_view *view, stp_direct_point *pt)
     /* the projection's 32-bit form alone: it declines (z >= 2^29, a
      * quotient of 2^31 or more) only where the 64-bit one would land
      * beyond the device range (|offset| >= 2^(31 - F) pixels > 512) */
-    if (!stp_project_exact((uint32_t)view->focal, (uint32_t)view->hither, (uint32_t)pt->z, pt->x, pt->y, &c[0], &c[1],
-                           0))
+    if (!stp_project_exact_bits((uint32_t)view->focal, focal_bits, (uint32_t)view->hither, (uint32_t)pt->z, pt->x,
+                                pt->y, &c[0], &c[1], 0))
         return 0;
 #endif
     c[0] = (int32_t)view->width * 8 + c[0];
@@ -337,7 +342,7 @@ STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const stp_direct_g
     p->x = r[0];
     p->y = r[1];
     p->z = r[2];
-    return p->z >= view->hither && project_point(view, p);
+    return p->z >= view->hither && project_point(view, -1, p);
 }
 #else
 /* A frame's geometry: the model's transform and the view's after it
@@ -350,6 +355,7 @@ typedef struct stp_direct_geometry {
 #else
     stp_view_small view;
 #endif
+    int focal_bits; /* stp_bit_length32(focal): the projection's, once a frame */
 } stp_direct_geometry;
 
 /* *g for model seen by view, d = translate - from (|d_i| < 2^23): its
@@ -360,6 +366,7 @@ static int geometry_prepare(stp_direct_geometry *g, const stp_direct_view *view,
                             const stp_direct_shading *shading, const int32_t d[3])
 {
     (void)shading;
+    g->focal_bits = stp_bit_length32((uint32_t)view->focal);
     stp_direct_model_transform(model, &g->model);
 #if F > 16
     /* unit axes reach 2^17: the renderer's two steps (the model, then the
@@ -398,7 +405,7 @@ STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const stp_direct_g
     p->x = r.x;
     p->y = r.y;
     p->z = r.z;
-    return p->z >= view->hither && project_point(view, p);
+    return p->z >= view->hither && project_point(view, g->focal_bits, p);
 }
 #endif
 
@@ -478,12 +485,31 @@ stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal
 /* Whether the face of normal through model point v0 is a front face: the
  * face stage's side (stp_render_face_side: the exact sign of N.(eye - v0)
  * in model coordinates; in 32 bits for direct drawing's ranges), as the
- * mesh route removes back faces */
+ * mesh route removes back faces; where 64-bit products are library calls
+ * from the mesh route's 32-bit estimate where its sign is sure (all but
+ * faces near edge-on) */
+#if !STP_WIDE_ARITH
+/* the exact side for the estimate's unsure faces: rare, out of line */
+STP_NOINLINE int exact_front(const stp_direct_shading *s, const int16_t *normal, const stp_vec3 *v0)
+{
+    return stp_render_face_side_near(&s->frame, normal, v0) > 0;
+}
+#endif
+
 STP_HOT_INLINE int front_face(const stp_direct_shading *s, const int16_t *normal, const stp_vec3 *v0,
                               const stp_direct_point *const p[3])
 {
     (void)p;
+#if !STP_WIDE_ARITH
+    {
+        int32_t estimate = stp_render_side_estimate(&s->side_estimate, normal, v0);
+        if (stp_render_side_sure(estimate))
+            return estimate > 0;
+        return exact_front(s, normal, v0);
+    }
+#else
     return stp_render_face_side_near(&s->frame, normal, v0) > 0;
+#endif
 }
 #endif
 

@@ -36,6 +36,7 @@ typedef struct stp_direct_shading {
     int16_t rot[3][3]; /* the compact form: C = V R rounded to Q1.14 */
 #else
     stp_model_frame frame;
+    stp_side_estimate side_estimate; /* the face side's first, 32-bit test */
 #endif
 } stp_direct_shading;
 

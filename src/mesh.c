@@ -67,11 +67,7 @@ typedef struct mesh_context {
 #endif
     stp_mesh_vertex *scratch;
     const stp_model_frame *frame; /* the face stage's (render_private.h) */
-    /* the eye in model coordinates, floor-shifted right by `shift`, so
-     * that it and every shifted vertex are within 2^14 in magnitude (the
-     * back-face test's first, 32-bit estimate) */
-    int32_t eye[3];
-    int shift;
+    stp_side_estimate side_estimate; /* the back-face test's first, 32-bit estimate */
     int inside; /* 1: every vertex is inside the view volume (no outcodes)
                    and its view coordinates are below 2^29 in magnitude */
     stp_view_lens lens; /* the projection's constants (view.c) */
@@ -423,15 +419,12 @@ OUT_OF_LINE int prepare_call(mesh_context *c)
 {
     const stp_renderer *r = c->r;
     const stp_model_frame *f = stp_render_model_frame(c->r);
-    uint32_t big = 0;
+    uint32_t big;
     stp_vec3 lo, hi;
     const stp_vec3 *p;
-    int j, k;
     if (f == 0)
         return 0;
     c->frame = f;
-    for (j = 0; j < 3; j++)
-        big |= stp_abs32(f->eye[j]);
     /* the scale of the back-face test (every coordinate below 2^14) and
      * the model's bounding box: prepared, or found here */
     if (c->mesh->bounds != 0) {
@@ -443,7 +436,7 @@ OUT_OF_LINE int prepare_call(mesh_context *c)
     }
     mark_new(c->scratch, c->mesh->vertex_count);
     /* the box's corners bound every coordinate's magnitude */
-    big |= stp_abs32(lo.x) | stp_abs32(lo.y) | stp_abs32(lo.z) | stp_abs32(hi.x) |
+    big = stp_abs32(lo.x) | stp_abs32(lo.y) | stp_abs32(lo.z) | stp_abs32(hi.x) |
            stp_abs32(hi.y) | stp_abs32(hi.z);
     c->inside = box_inside(r, c->mesh, &lo, &hi, f->scale2);
     c->lens.focal = r->focal;
@@ -451,10 +444,7 @@ OUT_OF_LINE int prepare_call(mesh_context *c)
     c->lens.half_width = (int32_t)r->width << (STP_SUBPIXEL_BITS - 1);
     c->lens.half_height = (int32_t)r->height << (STP_SUBPIXEL_BITS - 1);
     c->focal_bits = (uint8_t)stp_bit_length32((uint32_t)r->focal);
-    k = stp_bit_length32(big) - 14;
-    c->shift = k > 0 ? k : 0;
-    for (j = 0; j < 3; j++)
-        c->eye[j] = stp_asr32(f->eye[j], c->shift);
+    stp_render_side_estimate_make(f, big, &c->side_estimate);
     return 1;
 }
 
@@ -608,11 +598,8 @@ STP_NOINLINE int exact_side(const mesh_context *c, const int16_t *n, const stp_v
 
 /* The face stage's side of triangle t (stp_render_face_side: the exact
  * sign of N.(eye - v0)); where 64-bit products are library calls, first
- * estimated in 32 bits on the shifted eye and v0: products below 2^29, the
- * sum below 2^31 (|N| <= 1, |eye - v0| < 2^15 sqrt 3), off the exact sum
- * over 2^shift by less than |n0| + |n1| + |n2| < 2^15 (each floor less
- * than 1), so an estimate outside [-2^15, 2^15) has the exact sign (the
- * test: (side >> 15) + 1 not 0 or 1, one shift).  The result: a value of
+ * the face stage's 32-bit estimate (stp_render_side_estimate, exact in
+ * sign outside [-2^15, 2^15)).  The result: a value of
  * that sign (the estimate itself, or -1, 0, 1), which is all its users
  * (the removal test, stp_render_view_normal, stp_render_face_shade) ask.
  * In two steps: face_estimate (exact where 64-bit products are cheap) and
@@ -620,10 +607,7 @@ STP_NOINLINE int exact_side(const mesh_context *c, const int16_t *n, const stp_v
 STP_HOT_INLINE int32_t face_estimate(const mesh_context *c, const int16_t *n, const stp_vec3 *a)
 {
 #if !STP_WIDE_ARITH
-    int shift = c->shift;
-    return (int32_t)n[0] * (c->eye[0] - stp_asr32(a->x, shift)) +
-           (int32_t)n[1] * (c->eye[1] - stp_asr32(a->y, shift)) +
-           (int32_t)n[2] * (c->eye[2] - stp_asr32(a->z, shift));
+    return stp_render_side_estimate(&c->side_estimate, n, a);
 #else
     return stp_render_face_side(c->frame, n, *a);
 #endif
@@ -633,7 +617,7 @@ STP_HOT_INLINE int32_t face_estimate(const mesh_context *c, const int16_t *n, co
 STP_HOT_INLINE int32_t face_checked(const mesh_context *c, const int16_t *n, const stp_vec3 *a, int32_t side)
 {
 #if !STP_WIDE_ARITH
-    if ((uint32_t)(stp_asr32(side, 15) + 1) > 1u)
+    if (stp_render_side_sure(side))
         return side;
     return exact_side(c, n, a); /* rare: out of line */
 #else

@@ -183,6 +183,46 @@ STP_HOT_INLINE int stp_render_face_side_near(const stp_model_frame *f, const int
 #endif
 }
 
+/* The face side's 32-bit estimate, where 64-bit products are library
+ * calls (the mesh route's and direct drawing's face loops): the eye in
+ * model coordinates and every vertex floor-shifted right by shift, so each
+ * is within 2^14 in magnitude; then est = sum n_i (eye_i >> shift - a_i >>
+ * shift), each difference within 2^15 and |n_0| + |n_1| + |n_2| <= 2^14
+ * sqrt 3 (|n| <= 2^14), so the sum is below 2^31, is off the exact N.(eye - a) / 2^shift by less than |n_0| +
+ * |n_1| + |n_2| < 2^15 (each pair of floors by less than 1): an estimate
+ * outside [-2^15, 2^15) has the exact sign (stp_render_side_sure)
+ * (stp_side_estimate: view_private.h) */
+
+/* *e for frame f and vertices whose coordinates' magnitudes, ORed, are
+ * at most coords */
+STP_HOT_INLINE void stp_render_side_estimate_make(const stp_model_frame *f, uint32_t coords,
+                                                  stp_side_estimate *e)
+{
+    int j, k;
+    for (j = 0; j < 3; j++)
+        coords |= stp_abs32(f->eye[j]);
+    k = stp_bit_length32(coords) - 14;
+    e->shift = k > 0 ? k : 0;
+    for (j = 0; j < 3; j++)
+        e->eye[j] = stp_asr32(f->eye[j], e->shift);
+}
+
+/* The estimate of normal n's side through model point a (above). */
+STP_HOT_INLINE int32_t stp_render_side_estimate(const stp_side_estimate *e, const int16_t n[3], const stp_vec3 *a)
+{
+    int shift = e->shift;
+    return (int32_t)n[0] * (e->eye[0] - stp_asr32(a->x, shift)) +
+           (int32_t)n[1] * (e->eye[1] - stp_asr32(a->y, shift)) +
+           (int32_t)n[2] * (e->eye[2] - stp_asr32(a->z, shift));
+}
+
+/* Whether estimate est has the exact side's sign (outside [-2^15, 2^15):
+ * one shift and one comparison). */
+STP_HOT_INLINE int stp_render_side_sure(int32_t est)
+{
+    return (uint32_t)(stp_asr32(est, 15) + 1) > 1u;
+}
+
 /* The side of a triangle with cross product c (stp_render_triangle_cross)
  * through v0 that stp_render_face_side gives for its normal n (c
  * normalised and rounded to Q1.14), found without normalising when the

@@ -319,6 +319,7 @@ void stp_view_small_point(const stp_view_small *t, const stp_vec3 *p, stp_vec3 *
     h[0] = (int16_t)stp_asr32(p->x, 11);
     h[1] = (int16_t)stp_asr32(p->y, 11);
     h[2] = (int16_t)stp_asr32(p->z, 11);
+    STP_UNROLL3
     for (i = 0; i < 3; i++) {
         const stp_vec3 *a = &t->axis[i];
         const int16_t *ah = t->axis_high[i];

@@ -178,6 +178,14 @@ typedef struct stp_model_frame {
     int usable;
 } stp_model_frame;
 
+/* The face side's 32-bit estimate's values (render_private.h's
+ * stp_render_side_estimate): the model frame's eye floor-shifted right by
+ * shift */
+typedef struct stp_side_estimate {
+    int32_t eye[3];
+    int shift;
+} stp_side_estimate;
+
 /* Whether model (NULL: the identity) is a rotation times a uniform scale:
  * columns of equal squared length and pairwise orthogonal, each within
  * 1/1024 of the squared length (the rounding of composed stp_fix
