@@ -263,6 +263,16 @@ int stp_view_transform_compose(const stp_view_transform *t, const stp_transform 
 
 /* ---- the geometry stage for points near the eye (view_private.h) ---- */
 
+/* t's eye terms in the 32-bit form's shape (stp_view_small_point) */
+static void small_eye_terms(stp_view_small *t)
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        t->high_biased[i] = t->high[i] + 0x8000;
+        t->from_mod[i] = ((uint32_t)t->high[i] << 16) + t->low[i];
+    }
+}
+
 void stp_view_small_of_axes(const stp_vec3 axes[3], int32_t high, uint32_t low, stp_view_small *out)
 {
     int i;
@@ -281,6 +291,7 @@ void stp_view_small_of_axes(const stp_vec3 axes[3], int32_t high, uint32_t low, 
         out->high[i] = high;
         out->low[i] = low;
     }
+    small_eye_terms(out);
 }
 
 #if STP_WIDE_ARITH || F != 16
@@ -306,26 +317,24 @@ void stp_view_small_point(const stp_view_small *t, const stp_vec3 *p, stp_vec3 *
  * products, |H| <= 3 2^24) leaves a . p - 2^16 H = sum (2^5 ah_i pl_i +
  * 2^11 al_i ph_i + al_i pl_i), each term below 2^28 + 2^28 + 2^16 in
  * magnitude: below 1.51 2^30 in all, 1.51 2^14 in units of 2^16.  So
- * floor(S / 2^16) lies in [e, e + 2^16) for e = H - high - 2^15, and its
- * low 16 bits are bits 16..31 of S mod 2^32 (the wrapped sum of the
- * products less from's low word): e plus their difference from e's taken
+ * floor(S / 2^16) lies in [e, e + 2^16) for e = H - high - 2^15
+ * (high_biased: high + 2^15, once a frame), and its low 16 bits are bits
+ * 16..31 of S mod 2^32 (the wrapped sum of the products less from mod
+ * 2^32, from_mod): e plus their difference from e's taken
  * mod 2^16, exactly (the form of the renderer's short form, unit_coordinate,
  * for these ranges: |a_i| < 2^17, |p_i| < 2^23). */
 void stp_view_small_point(const stp_view_small *t, const stp_vec3 *p, stp_vec3 *out)
 {
     int32_t v[3];
-    int16_t h[3];
     int i;
-    h[0] = (int16_t)stp_asr32(p->x, 11);
-    h[1] = (int16_t)stp_asr32(p->y, 11);
-    h[2] = (int16_t)stp_asr32(p->z, 11);
     STP_UNROLL3
     for (i = 0; i < 3; i++) {
         const stp_vec3 *a = &t->axis[i];
         const int16_t *ah = t->axis_high[i];
-        int32_t e = (int32_t)ah[0] * h[0] + (int32_t)ah[1] * h[1] + (int32_t)ah[2] * h[2] - t->high[i] - 0x8000;
+        int32_t e = (int32_t)ah[0] * stp_asr32(p->x, 11) + (int32_t)ah[1] * stp_asr32(p->y, 11) +
+                    (int32_t)ah[2] * stp_asr32(p->z, 11) - t->high_biased[i];
         uint32_t s = (uint32_t)a->x * (uint32_t)p->x + (uint32_t)a->y * (uint32_t)p->y +
-                     (uint32_t)a->z * (uint32_t)p->z - (((uint32_t)t->high[i] << 16) + t->low[i]);
+                     (uint32_t)a->z * (uint32_t)p->z - t->from_mod[i];
         v[i] = e + (int32_t)(((s >> 16) - (uint32_t)e) & 0xFFFFu);
     }
     out->x = v[0];
@@ -377,6 +386,7 @@ int stp_view_compose_small(const stp_vec3 axes[3], const int32_t d[3], const stp
         out->low[i] = ((uint32_t)d[0] * (uint32_t)axes[i].x + (uint32_t)d[1] * (uint32_t)axes[i].y +
                        (uint32_t)d[2] * (uint32_t)axes[i].z) &
                       (((uint32_t)1 << F) - 1u);
+    small_eye_terms(out);
     return 1;
 }
 

@@ -214,6 +214,9 @@ typedef struct stp_view_small {
     int16_t axis_high[3][3]; /* floor(axis / 2^5): the 32-bit form's estimate */
     int32_t high[3];
     uint32_t low[3];
+    /* the 32-bit form's eye terms: high + 2^15, and (high 2^16 + low) mod 2^32 */
+    int32_t high_biased[3];
+    uint32_t from_mod[3];
 } stp_view_small;
 
 /* *out = axes (each component below 2^17 in magnitude, F = 16) with
