@@ -187,11 +187,13 @@ STP_HOT_INLINE int stp_render_face_side_near(const stp_model_frame *f, const int
  * calls (the mesh route's and direct drawing's face loops): the eye in
  * model coordinates and every vertex floor-shifted right by shift, so each
  * is within 2^14 in magnitude; then est = sum n_i (eye_i >> shift - a_i >>
- * shift), each difference within 2^15 and |n_0| + |n_1| + |n_2| <= 2^14
- * sqrt 3 (|n| <= 2^14), so the sum is below 2^31, is off the exact N.(eye - a) / 2^shift by less than |n_0| +
- * |n_1| + |n_2| < 2^15 (each pair of floors by less than 1): an estimate
- * outside [-2^15, 2^15) has the exact sign (stp_render_side_sure)
- * (stp_side_estimate: view_private.h) */
+ * shift), each difference within 2^15 and |n_0| + |n_1| + |n_2| <= (2^14
+ * + 1) sqrt 3 < 2^15 (n a unit normal rounded to Q1.14, as stp_mesh's
+ * normals are: |n| <= 2^14 + 1), so the sum is below 2^31.  It is off the
+ * exact N.(eye - a) / 2^shift by less than |n_0| + |n_1| + |n_2| < 2^15
+ * (each pair of floors by less than 1): an estimate outside [-2^15, 2^15)
+ * has the exact sign (stp_render_side_sure).  (stp_side_estimate:
+ * view_private.h.) */
 
 /* *e for frame f and vertices whose coordinates' magnitudes, ORed, are
  * at most coords */

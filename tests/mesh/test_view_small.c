@@ -15,8 +15,11 @@
  *     similarities: below about 2^-6 the renderer takes its two steps and
  *     direct drawing refuses the model, its model frame unusable);
  *   - the face stage's side for direct drawing's ranges
- *     (stp_render_face_side_near) against the exact sign.
+ *     (stp_render_face_side_near) against the exact sign;
+ *   - the face side's 32-bit estimate (stp_render_side_estimate) against
+ *     the exact sign where it says it is sure.
  */
+#include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -225,6 +228,76 @@ static void test_face_side_near(void **state)
     }
 }
 
+/* A unit normal rounded to Q1.14 (|n| <= 2^14 + 1): random, or one of
+ * the largest |n_0| + |n_1| + |n_2| (all three near 2^14 / sqrt 3) */
+static void random_unit_normal(int16_t n[3])
+{
+    double v[3], len = 0.0;
+    int i;
+    if (next_random() % 8u == 0) {
+        for (i = 0; i < 3; i++)
+            n[i] = (int16_t)((next_random() & 1u) ? 9459 : -9459);
+        return;
+    }
+    do {
+        len = 0.0;
+        for (i = 0; i < 3; i++) {
+            v[i] = (double)random_within(1 << 20);
+            len += v[i] * v[i];
+        }
+    } while (len < 1.0);
+    len = sqrt(len);
+    for (i = 0; i < 3; i++)
+        n[i] = (int16_t)lround(v[i] / len * 16384.0);
+}
+
+/* The face stage's 32-bit side estimate (stp_render_side_estimate, the
+ * mesh route's and direct drawing's first test) against the exact sign
+ * formed here in 64 bits: where it says its sign is sure it is the exact
+ * side's, for unit normals, eyes below 2^30 and vertices within the bound
+ * the estimate was made for (direct drawing's 2^23 - 1, or a mesh's box),
+ * planes through the eye among them (never sure there).  Also counts the
+ * faces left to the exact test: the estimate is of use only when few are. */
+static void test_side_estimate(void **state)
+{
+    long k, unsure = 0, cases = 400000;
+    (void)state;
+    for (k = 0; k < cases; k++) {
+        stp_model_frame f;
+        stp_side_estimate e;
+        int16_t n[3];
+        stp_vec3 v0;
+        int64_t dot;
+        int32_t est, box = k % 2 ? ((int32_t)1 << 23) - 1 : (int32_t)(next_random() % ((uint32_t)1 << 23)) + 1;
+        int i, want;
+        random_unit_normal(n);
+        for (i = 0; i < 3; i++)
+            f.eye[i] = random_within((int32_t)1 << 30);
+        v0 = random_vec(box + 1);
+        if (k % 7 == 0) { /* the eye on the face's plane, or a unit off it, near the face */
+            n[0] = 16384;
+            n[1] = 0;
+            n[2] = 0;
+            f.eye[0] = v0.x + (int32_t)(k % 3) - 1;
+            f.eye[1] = v0.y + random_within(1 << 16);
+            f.eye[2] = v0.z + random_within(1 << 16);
+        }
+        dot = (int64_t)n[0] * ((int64_t)f.eye[0] - v0.x) + (int64_t)n[1] * ((int64_t)f.eye[1] - v0.y) +
+              (int64_t)n[2] * ((int64_t)f.eye[2] - v0.z);
+        want = dot > 0 ? 1 : (dot < 0 ? -1 : 0);
+        stp_render_side_estimate_make(&f, (uint32_t)box, &e);
+        est = stp_render_side_estimate(&e, n, &v0);
+        if (stp_render_side_sure(est))
+            assert_int_equal(est > 0 ? 1 : -1, want);
+        else
+            unsure++;
+    }
+    /* the planes through the eye (1 in 7, of which those within a unit)
+     * and few others */
+    printf("side estimate: %ld of %ld cases left to the exact test\n", unsure, cases);
+    assert_true(unsure < cases / 7 + cases / 100);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -232,6 +305,7 @@ int main(void)
         cmocka_unit_test(test_small_point_extremes),
         cmocka_unit_test(test_compose_is_the_renderers),
         cmocka_unit_test(test_face_side_near),
+        cmocka_unit_test(test_side_estimate),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
