@@ -435,8 +435,11 @@ STP_HOT_INLINE stp_fix stp_render_average3(int small, int32_t a, int32_t b, int3
         return sum >= 0 ? (stp_fix)stp_div3_u30((uint32_t)sum) : -(stp_fix)stp_div3_u30(0u - (uint32_t)sum);
     }
     s = (int64_t)a + b + c;
+#if !STP_WIDE_ARITH
+    /* a 64-bit quotient is a library call: a 32-bit one while s fits */
     if (s >= INT32_MIN && s <= INT32_MAX)
         return (stp_fix)stp_div3_toward_zero((int32_t)s);
+#endif
     return (stp_fix)(s / 3);
 }
 
