@@ -71,18 +71,19 @@ DISPLAY-FILE-ENTER (Algorithm 10.3) | each point to view coordinates, shaded, cl
 segments | created, closed, deleted, shown or hidden | stp_segment_create stp_segment_close stp_segment_delete stp_segment_visibility | test_segment_errors test_segment_delete_compacts_and_visibility test_segment_table_full
 clipping and projection | against the hither plane and the window, then perspective or parallel | clip_polygon project | test_hither_clipping test_polygon_behind_the_eye_enters_nothing test_pictures_of_clipped_polygons
 back-face removal | faces with N.E <= 0 dropped | enter_polygon | test_backface_removal_keeps_faces_towards_viewer test_backface_removal_single_polygon
-painter's algorithm | polygons drawn far to near | sort_entries | test_hidden_surfaces_nearer_square_wins
+painter's algorithm | polygons drawn far to near | stp_sort_far_to_near | test_hidden_surfaces_nearer_square_wins
 Z buffer | the nearest surface per pixel | put_span_z | test_zbuffer_interpenetrating_polygons
-direct drawing | no display file: a mesh through the renderer's geometry and face stages (the model composed with the view once a frame, exact in 32 bits; the mesh route's back-face test and shading), projected once per frame, painted in mesh order straight into bands with the same fill rule: the mesh route's pixels | stp_direct_frame_project stp_view_compose_small project_point stp_direct_draw_band | tests/direct/test_direct_equal.c:test_torus_128x64 tests/mesh/test_view_small.c:test_compose_is_the_renderers tests/direct/test_direct.c:test_torus tests/direct/test_direct.c:test_bands
+direct drawing | no display file: a mesh through the renderer's geometry and face stages (the model composed with the view once a frame, exact in 32 bits; the mesh route's back-face test and shading), projected once per frame, painted in mesh order or far to near (the renderer's painter's sort) straight into bands with the same fill rule: the mesh route's pixels | stp_direct_frame_project stp_view_compose_small project_point stp_direct_frame_sort stp_direct_draw_band | tests/direct/test_direct_equal.c:test_torus_128x64 tests/mesh/test_view_small.c:test_compose_is_the_renderers tests/direct/test_direct.c:test_torus tests/direct/test_direct.c:test_bands
 TABLE
 }
 
-# Every function definition in the core as "name file:line": a line starting
+# Every function definition in the core (its .c files and private headers)
+# as "name file:line": a line starting
 # with its return type or its name whose parameter list ends in '{' (not in
 # ';', as a declaration's does).
 list_functions() {
     # shellcheck disable=SC2016
-    find src -name '*.c' -type f | sort | xargs awk '
+    find src \( -name '*.c' -o -name '*.h' \) -type f | sort | xargs awk '
         FNR == 1 { open = 0 }
         open == 0 && match($0, /^([A-Za-z_][A-Za-z0-9_ *]*[ *])?[A-Za-z_][A-Za-z0-9_]*[(]/) {
             head = substr($0, 1, RLENGTH - 1); sub(/.*[ *]/, "", head)

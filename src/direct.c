@@ -33,6 +33,7 @@
 #include "view_private.h" /* stp_view_perspective */
 #include "div64_private.h" /* STP_UDIV32 */
 #include "render_private.h" /* the face stage: stp_render_face_side, stp_render_view_normal */
+#include "sort_private.h"   /* the painter's sort, the renderer's */
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -618,5 +619,50 @@ int stp_direct_frame_project_lit(stp_direct_frame *f, const stp_mesh *mesh, cons
     f->cell = cell;
     f->width = view->width;
     f->height = view->height;
+#if !STP_DIRECT_COMPACT /* the compact form has no sort: its bands read none of these */
+    f->hither = view->hither;
+    f->order = 0; /* mesh order until stp_direct_frame_sort */
+    f->order_count = 0;
+#endif
     return STP_OK;
+}
+
+int stp_direct_frame_sort(stp_direct_frame *f, stp_sort_entry *order, size_t order_count)
+{
+#if STP_DIRECT_COMPACT
+    (void)order;
+    (void)order_count;
+    if (f == 0)
+        return STP_ERR_ARG;
+    return STP_ERR_UNSUPPORTED; /* the smallest images keep mesh order (direct.h) */
+#else
+    const uint16_t *k;
+    size_t n = 0;
+    uint16_t t;
+    if (f == 0 || order == 0 || f->mesh == 0 || f->mesh->triangles == 0 || f->points == 0 || f->faces == 0)
+        return STP_ERR_ARG;
+    f->order = 0;
+    f->order_count = 0;
+    k = f->mesh->triangles;
+    for (t = 0; t < f->mesh->triangle_count; t++, k += 3) {
+        int32_t z0 = f->points[k[0]].z, z1 = f->points[k[1]].z, z2 = f->points[k[2]].z, far;
+        if (f->faces[t] == 0)
+            continue; /* not drawn */
+        if (n == order_count)
+            return STP_ERR_FULL;
+        /* the farthest vertex's key: the key falls as z grows (every z in
+         * [hither, 2^26): stp_direct_frame_project's range) */
+        far = z0 > z1 ? z0 : z1;
+        far = far > z2 ? far : z2;
+        order[n].index = t;
+        order[n].key = stp_project_depth_key((uint32_t)f->hither, (uint32_t)far);
+        order[n].style = f->faces[t];
+        order[n].transmission = 0;
+        n++;
+    }
+    stp_sort_far_to_near(order, n);
+    f->order = order;
+    f->order_count = (uint16_t)n;
+    return STP_OK;
+#endif
 }

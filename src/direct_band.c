@@ -7,7 +7,8 @@
  * triangle walk the renderer's triangle raster uses (edge_walk_private.h:
  * the same crossings, so the same pixels for the same device positions);
  * their runs go through the one 1-bit run filler (dither.c), in rows or in
- * the panel's pages (stp_band_layout).
+ * the panel's pages (stp_band_layout); the faces in mesh order, or in the
+ * frame's painter's order (stp_direct_frame_sort, direct.c).
  *
  * Device coordinates (Q4, [-8192, 8192)), pixel rows and columns and their
  * sums here stay below 2^14 in magnitude: plain int (16 bits at least),
@@ -88,30 +89,85 @@ static int band_shape(const stp_direct_frame *f, size_t stride, uint16_t y0, uin
     return f->layout != STP_BAND_ROWS || stride < ((size_t)f->width + 7u) / 8u ? STP_ERR_ARG : STP_OK;
 }
 
-int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0,
-                         uint16_t rows)
+/* The checks of stp_direct_draw_band, the band cleared and its rows at
+ * the moved origin (*rows_out) and layout shift: STP_OK or the error */
+STP_HOT_INLINE int band_start(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0, uint16_t rows,
+                              int *page_shift, stp_band_rows *band_rows)
 {
-    const uint16_t *k;
     size_t i, lines;
-    uint16_t t;
-    int page_shift = 0, status;
-    stp_band_rows band_rows; /* at the moved origin */
+    int status;
     if (f == 0 || band == 0 || f->mesh == 0 || f->points == 0 || f->faces == 0 || f->cell == 0 || rows == 0 ||
         (uint32_t)y0 + rows > f->height)
         return STP_ERR_ARG;
-    status = band_shape(f, stride, y0, rows, &lines, &page_shift);
+    status = band_shape(f, stride, y0, rows, &lines, page_shift);
     if (status != STP_OK)
         return status;
     for (i = 0; i < lines * stride; i++)
         band[i] = 0;
-    band_rows.y0 = (uint32_t)y0 + ORIGIN_PIXELS;
-    band_rows.count = rows;
-    band_rows.top = (int32_t)(band_rows.y0 << SUB);
-    band_rows.end = (int32_t)((band_rows.y0 + rows) << SUB);
-    k = f->mesh->triangles;
-    for (t = 0; t < f->mesh->triangle_count; t++, k += 3) {
-        if (f->faces[t] != 0)
-            draw_face(f, k, (uint8_t)f->faces[t], band, stride, page_shift, &band_rows);
+    band_rows->y0 = (uint32_t)y0 + ORIGIN_PIXELS;
+    band_rows->count = rows;
+    band_rows->top = (int32_t)(band_rows->y0 << SUB);
+    band_rows->end = (int32_t)((band_rows->y0 + rows) << SUB);
+    return STP_OK;
+}
+
+#if !STP_DIRECT_COMPACT
+/* The drawn faces among count triangles k[0..2], k[3..5], ... with faces
+ * (0: not drawn, else 256 + intensity) into the band; the one caller of
+ * draw_face, which so stays in line (a second caller cost the M0+ frame
+ * 24 000 instructions), a call of its own for both orders */
+STP_NOINLINE void draw_faces(const stp_direct_frame *f, const uint16_t *k, const uint16_t *faces, uint16_t count,
+                             uint8_t *band, size_t stride, int page_shift, const stp_band_rows *rows)
+{
+    uint16_t t;
+    for (t = 0; t < count; t++, k += 3) {
+        if (faces[t] != 0)
+            draw_face(f, k, (uint8_t)faces[t], band, stride, page_shift, rows);
     }
+}
+#endif
+
+int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0,
+                         uint16_t rows)
+{
+    int page_shift = 0, status;
+    stp_band_rows band_rows; /* at the moved origin */
+    status = band_start(f, band, stride, y0, rows, &page_shift, &band_rows);
+    if (status != STP_OK)
+        return status;
+#if STP_DIRECT_COMPACT
+    {
+        /* the compact form (no sort): the loop in line, as draw_faces's */
+        const uint16_t *k = f->mesh->triangles;
+        uint16_t t;
+        for (t = 0; t < f->mesh->triangle_count; t++, k += 3) {
+            if (f->faces[t] != 0)
+                draw_face(f, k, (uint8_t)f->faces[t], band, stride, page_shift, &band_rows);
+        }
+    }
+#else
+    if (f->order != 0) {
+        /* far to near (stp_direct_frame_sort): every entry a drawn face,
+         * one at a time */
+        uint16_t i, t;
+        for (i = 0; i < f->order_count; i++) {
+            const uint16_t *k;
+            int a, b, c;
+            t = (uint16_t)f->order[i].index;
+            k = f->mesh->triangles + 3 * (size_t)t;
+            /* a face wholly above the band's top or at or below its end
+             * reaches none of its row centres: left out before the call */
+            a = STP_TRI_Y(&f->points[k[0]]);
+            b = STP_TRI_Y(&f->points[k[1]]);
+            c = STP_TRI_Y(&f->points[k[2]]);
+            if ((a < band_rows.top && b < band_rows.top && c < band_rows.top) ||
+                (a >= band_rows.end && b >= band_rows.end && c >= band_rows.end))
+                continue;
+            draw_faces(f, k, f->faces + t, 1, band, stride, page_shift, &band_rows);
+        }
+        return STP_OK;
+    }
+    draw_faces(f, f->mesh->triangles, f->faces, f->mesh->triangle_count, band, stride, page_shift, &band_rows);
+#endif
     return STP_OK;
 }

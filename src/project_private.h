@@ -256,6 +256,25 @@ static inline int stp_project_offset(uint32_t f, int32_t c, uint32_t z, int32_t 
 }
 #endif
 
+/* The depth key of view depth z (stp_fix, hither h <= z < 2^29):
+ * floor(h 2^30 / z), in [1, 2^30], the key the projection gives every
+ * point at depth z (stp_project_exact_bits, stp_project_wide: every form);
+ * a larger key is nearer.  Direct drawing's painter's sort keys its faces
+ * so.  Here by restoring division or the reciprocal of z, as
+ * stp_project_exact_bits forms it (z >= h keeps the quotient below
+ * 2^31). */
+static inline int32_t stp_project_depth_key(uint32_t h, uint32_t z)
+{
+    uint32_t q = 0;
+#if STP_PROJECT_DIVIDES
+    (void)stp_project_divide(h, (uint32_t)1 << 30, z, &q);
+#else
+    int s = 32 - stp_bit_length32(z);
+    (void)stp_project_key(h, stp_recip32_estimate(z << s), s, z, &q);
+#endif
+    return (int32_t)q;
+}
+
 /* The 32-bit form (z already raised to hither): 1 on success, 0 when z or
  * a quotient is out of its range (then the 64-bit quotients; *x, *y and
  * *key may have been written).  fb: stp_bit_length32(f), or -1 (not
@@ -264,16 +283,12 @@ static inline int stp_project_exact_bits(uint32_t f, int fb, uint32_t h, uint32_
                                          int32_t *x, int32_t *y, int32_t *key)
 {
 #if STP_PROJECT_DIVIDES
-    uint32_t qk;
     (void)fb;
     if (z >= ((uint32_t)1 << 29) || f >= 0x80000000u || h >= 0x80000000u ||
         !stp_project_offset(f, px, z, x) || !stp_project_offset(f, py, z, y))
         return 0;
-    if (key) {
-        if (!stp_project_divide(h, (uint32_t)1 << 30, z, &qk))
-            return 0;
-        *key = (int32_t)qk;
-    }
+    if (key)
+        *key = stp_project_depth_key(h, z); /* z >= h: below 2^31 */
     return 1;
 #else
     uint32_t mx, my, qk, w, v;
@@ -304,6 +319,13 @@ static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, int32_t 
 #endif
 
 #if STP_WIDE_ARITH
+/* The depth key of view depth z (stp_fix, hither h <= z): floor(h 2^30 /
+ * z) (the 32-bit form's comment above), by C's 64-bit quotient. */
+static inline int32_t stp_project_depth_key(uint32_t h, uint32_t z)
+{
+    return (int32_t)stp_div64_fast((int64_t)h << 30, (int64_t)z);
+}
+
 /* stp_view_perspective_wide where 64-bit division is one instruction:
  * inline, C's quotients (stp_div64_fast). */
 static inline void stp_project_wide(stp_fix focal, stp_fix hither, const stp_vec3 *p, int64_t *x, int64_t *y,
@@ -313,7 +335,7 @@ static inline void stp_project_wide(stp_fix focal, stp_fix hither, const stp_vec
     *x = stp_asr64(stp_div64_fast((int64_t)focal * p->x, z), STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
     *y = stp_asr64(stp_div64_fast((int64_t)focal * p->y, z), STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
     if (key)
-        *key = (int32_t)stp_div64_fast(((int64_t)hither) << 30, z);
+        *key = stp_project_depth_key((uint32_t)hither, (uint32_t)z);
 }
 #define STP_PROJECT_WIDE stp_project_wide /* inline here */
 #else

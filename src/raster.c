@@ -15,6 +15,7 @@
 #define STP_TRI_BAND_SHORTCUT (!STP_LEAN_CODE && !STP_WIDE_ARITH)
 #include "edge_walk_private.h"
 #include "div64_private.h"
+#include "sort_private.h" /* the painter's sort */
 
 #define SUB STP_SUBPIXEL_BITS
 #define HALF_PIXEL (1 << (SUB - 1))
@@ -1959,43 +1960,6 @@ static void replay(frame *fr, int skip_polygons, int use_z, int pass)
     }
 }
 
-#if STP_WITH_PAINTER
-static int sort_less(const stp_sort_entry *a, const stp_sort_entry *b)
-{
-    return a->key != b->key ? a->key < b->key : a->index < b->index;
-}
-
-/* Heap sort: in place, no recursion, O(n log n); ties by display order so
- * the result does not depend on the sort's own order of work. */
-static void sort_entries(stp_sort_entry *e, size_t n)
-{
-    size_t start = n / 2, end = n;
-    while (end > 1) {
-        size_t root, child;
-        stp_sort_entry t;
-        if (start > 0) {
-            start--;
-        } else {
-            end--;
-            t = e[0];
-            e[0] = e[end];
-            e[end] = t;
-        }
-        root = start;
-        while ((child = 2 * root + 1) < end) {
-            if (child + 1 < end && sort_less(&e[child], &e[child + 1]))
-                child++;
-            if (!sort_less(&e[root], &e[child]))
-                break;
-            t = e[root];
-            e[root] = e[child];
-            e[child] = t;
-            root = child;
-        }
-    }
-}
-#endif
-
 /* Whether the Z buffer's scan (scan_triangles) widens the device x
  * extent: not on 64-bit hosts, whose Z buffer is then cleared in whole
  * rows (frame_extent) for a third of the scan's tests (the depth keys'
@@ -2717,7 +2681,7 @@ int stp_renderer_render(stp_renderer *r, stp_port *port, const stp_output *outpu
     render_prepare_fill(&fr, port, drawn, output, background_style);
 #if STP_WITH_PAINTER
     if (output->hidden == STP_HIDDEN_PAINTER)
-        sort_entries(mem->sort, (size_t)polygons);
+        stp_sort_far_to_near(mem->sort, (size_t)polygons);
 #endif
     for (y0 = 0; y0 < r->height; y0 += mem->band_rows) {
         fr.rows.y0 = y0;

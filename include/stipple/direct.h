@@ -2,10 +2,12 @@
 /*
  * Direct drawing (issue 15 item 3): an immediate-mode path that draws a
  * triangle mesh straight into a 1-bit band, for a spinning model on a
- * small chip.  No display file, no segments, no clipping, no hidden-surface
- * removal beyond back faces (convex models, or models whose triangles are
- * ordered so later ones may cover earlier ones: the triangles are painted
- * in mesh order, as the full renderer's --hidden none paints them).
+ * small chip.  No display file, no segments, no clipping, no Z buffer:
+ * beyond back-face removal the triangles are painted in mesh order, as the
+ * full renderer's --hidden none paints them (convex models, or models
+ * whose triangles are ordered so later ones may cover earlier ones), or
+ * far to near after stp_direct_frame_sort, as its painter's sort (--hidden
+ * painter) paints them.
  *
  * Per frame:
  *   1. stp_direct_frame_project: every vertex transformed (the model
@@ -133,6 +135,13 @@ typedef struct stp_direct_frame {
     uint16_t layout;          /* the bands' stp_band_layout: STP_BAND_ROWS after
                                  stp_direct_frame_project; set STP_BAND_PAGES
                                  before drawing for a page-layout panel */
+    /* the painter's order (not set or read in the compact form, config.h's
+     * STP_DIRECT_COMPACT, which has no sort) */
+    uint16_t order_count;     /* the faces in order (stp_direct_frame_sort) */
+    stp_fix hither;           /* the view's: the depth keys' */
+    const stp_sort_entry *order; /* the bands' order of faces, far to near
+                                    (stp_direct_frame_sort), or NULL (after
+                                    stp_direct_frame_project): mesh order */
 } stp_direct_frame;
 
 /* Transform, project and shade one frame of mesh (prepared normals
@@ -190,12 +199,31 @@ int stp_direct_frame_project_lit(stp_direct_frame *f, const stp_mesh *mesh, cons
  *                   SSD1306 / SH1106 GDDRAM layout); stride >= width, y0 a
  *                   multiple of 8 (bits of a last page below rows are 0).
  * The band is cleared (OFF) first, then every drawn face is painted in
- * mesh order; both layouts hold the same pixels.  Errors: STP_ERR_ARG (f,
+ * mesh order, or far to near after stp_direct_frame_sort; both layouts
+ * hold the same pixels.  Errors: STP_ERR_ARG (f,
  * its arrays or band NULL, an unknown layout, stride too small, rows 0,
  * y0 + rows > height, a page band's y0 not a multiple of 8),
  * STP_ERR_UNSUPPORTED (STP_BAND_PAGES in a build without STP_WITH_PAGES). */
 int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0,
                          uint16_t rows);
+
+/* Order the front faces of frame f (after stp_direct_frame_project) far
+ * to near for stp_direct_draw_band, as the renderer's painter's sort
+ * (STP_HIDDEN_PAINTER) orders them: by the depth key of each face's
+ * farthest vertex (the projection's floor(hither 2^30 / z), z its view
+ * depth), ties in mesh order; a heap sort, O(n log n) in the n front
+ * faces, no recursion.  A face nearer the eye then covers the faces behind
+ * it, so a model that is not convex (a torus) is drawn as
+ * stp_renderer_render draws it with STP_HIDDEN_PAINTER, pixel for pixel
+ * (and for the test torus as with the Z buffer, all but a pixel in one of
+ * 18 frames: test_direct_equal).  order: caller memory of order_count
+ * entries, at least the front faces (at most the mesh's triangle_count),
+ * kept with the frame until its bands are drawn; f->order points to it.
+ * Errors: STP_ERR_ARG (f, order or the frame's arrays NULL),
+ * STP_ERR_FULL (order_count below the front faces), STP_ERR_UNSUPPORTED
+ * (the compact form, config.h's STP_DIRECT_COMPACT: the smallest images
+ * keep mesh order); f then keeps mesh order. */
+int stp_direct_frame_sort(stp_direct_frame *f, stp_sort_entry *order, size_t order_count);
 
 #ifdef __cplusplus
 }

@@ -19,7 +19,8 @@
  *          and stp_mesh_prepare_bounds) and
  *          stp_renderer_render band by band into the display's page buffer
  *          (stp_port, port.h).  The smallest image: direct drawing,
- *          stp_direct_frame_project then stp_direct_draw_band per band
+ *          stp_direct_frame_project (then stp_direct_frame_sort for a
+ *          model that is not convex) and stp_direct_draw_band per band
  *          (direct.h).
  *   A fixed picture from flash
  *       -> `stipple compile --static` writes the display file as C:

@@ -76,7 +76,13 @@ int direct_spin_init(direct_spin *s)
 int direct_spin_frame(direct_spin *s, uint16_t n, stp_direct_frame *f)
 {
     stp_direct_model pose;
+    int status;
     stp_direct_model_turn(&pose, (uint16_t)(n * 1024u), (uint16_t)(n * 410u), ONE, point(0, 0, 0));
-    return stp_direct_frame_project(f, &s->mesh, &pose, &s->view, &s->light, 16, bayer4, s->points, SPIN_VERTICES,
-                                    s->faces, SPIN_TRIANGLES);
+    status = stp_direct_frame_project(f, &s->mesh, &pose, &s->view, &s->light, 16, bayer4, s->points,
+                                      SPIN_VERTICES, s->faces, SPIN_TRIANGLES);
+#if SPIN_SORTED
+    if (status == STP_OK)
+        status = stp_direct_frame_sort(f, s->order, SPIN_TRIANGLES);
+#endif
+    return status;
 }

@@ -21,6 +21,17 @@
 #define SPIN_VERTICES (SPIN_AROUND * SPIN_TUBE)
 #define SPIN_TRIANGLES (2u * SPIN_VERTICES)
 
+/* STP_SPIN_SORT 1: every frame's faces drawn far to near
+ * (stp_direct_frame_sort, the renderer's painter's sort; 16 000 B more
+ * RAM), else in mesh order: a torus is not convex, and in mesh order a
+ * face behind may be drawn over one in front (some of the frames).  Not
+ * in the compact form, which keeps mesh order. */
+#if defined(STP_SPIN_SORT) && STP_SPIN_SORT && !STP_DIRECT_COMPACT
+#define SPIN_SORTED 1
+#else
+#define SPIN_SORTED 0
+#endif
+
 typedef struct direct_spin {
     stp_mesh mesh;
     stp_direct_view view;
@@ -30,12 +41,16 @@ typedef struct direct_spin {
     int16_t normals[3 * SPIN_TRIANGLES];
     stp_direct_point points[SPIN_VERTICES];
     uint16_t faces[SPIN_TRIANGLES];
+#if SPIN_SORTED
+    stp_sort_entry order[SPIN_TRIANGLES]; /* the faces far to near */
+#endif
 } direct_spin;
 
 /* The model, its normals, the view and the light.  STP_OK or the error. */
 int direct_spin_init(direct_spin *s);
 
-/* Frame n projected and shaded into *f (its bands: stp_direct_draw_band). */
+/* Frame n projected and shaded into *f (its bands: stp_direct_draw_band),
+ * its faces sorted with SPIN_SORTED. */
 int direct_spin_frame(direct_spin *s, uint16_t n, stp_direct_frame *f);
 
 #endif

@@ -15,6 +15,11 @@
  * frame's differing pixels are counted against the bound that form keeps
  * (at most 2 of 128 x 64 and 12 of 400 x 240 in a frame; measured 1 and
  * 9), and so are the vertices at other device positions.
+ * Each pose also in the painter's order (stp_direct_frame_sort): the order
+ * against one made here (keys in 64 bits, qsort), the picture memcmp-equal
+ * to the renderer's STP_HIDDEN_PAINTER and within 2 pixels of its Z buffer
+ * (measured: equal in 17 of 18 frames, 1 pixel in one); the compact form
+ * refuses the sort.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -40,8 +45,14 @@ typedef struct work {
     stp_mesh_vertex scratch[3 * TORUS_TRIANGLES];
     stp_direct_point pts[3 * TORUS_TRIANGLES];
     uint16_t faces[TORUS_TRIANGLES];
+    stp_sort_entry direct_order[TORUS_TRIANGLES]; /* stp_direct_frame_sort's */
+    stp_sort_entry sort[TORUS_TRIANGLES];         /* the renderer's painter's sort */
+    uint16_t zbuf[MAX_W * MAX_H];
     uint8_t direct[MAX_H * MAX_W / 8];
+    uint8_t direct_sorted[MAX_H * MAX_W / 8];
     uint8_t full[MAX_H * MAX_W / 8];
+    uint8_t full_painter[MAX_H * MAX_W / 8];
+    uint8_t full_zbuffer[MAX_H * MAX_W / 8];
     uint8_t band[MAX_H * MAX_W / 8];
     int width, height;
 } work;
@@ -92,8 +103,10 @@ static stp_direct_light scene_light(void)
     return l;
 }
 
+/* The renderer's picture of the pose into w->full, hidden surfaces by
+ * hidden */
 static void draw_full(work *w, const stp_view *view, const stp_direct_light *dl, const stp_direct_model *pose,
-                      const stp_cell *cell)
+                      const stp_cell *cell, stp_hidden hidden)
 {
     stp_renderer *r = stp_renderer_create(&w->storage, sizeof w->storage, w->df, 5 * TORUS_TRIANGLES,
                                           (uint32_t)w->width, (uint32_t)w->height);
@@ -143,13 +156,111 @@ static void draw_full(work *w, const stp_view *view, const stp_direct_light *dl,
     port.flush = copy_flush;
     port.user = w;
     stp_output_default(&out);
-    out.hidden = STP_HIDDEN_NONE;
+    out.hidden = hidden;
     out.cell = cell;
     memset(&mem, 0, sizeof mem);
     mem.band = w->band;
     mem.band_size = sizeof w->band;
     mem.band_rows = (uint32_t)w->height;
+    mem.sort = w->sort;
+    mem.sort_count = TORUS_TRIANGLES;
+    mem.zbuf = w->zbuf;
+    mem.zbuf_count = MAX_W * MAX_H;
     assert_int_equal(stp_renderer_render(r, &port, &out, &mem), STP_OK);
+}
+
+/* The pixels that differ between pictures a and b (bytes bytes) */
+static int pixels_differing(const uint8_t *a, const uint8_t *b, size_t bytes)
+{
+    size_t i;
+    int b_, n = 0;
+    for (i = 0; i < bytes; i++)
+        for (b_ = 0; b_ < 8; b_++)
+            n += ((a[i] ^ b[i]) >> b_) & 1;
+    return n;
+}
+
+/* qsort's order for the reference: far to near, ties by index */
+static int reference_less(const void *a, const void *b)
+{
+    const int64_t *x = a, *y = b;
+    return x[0] != y[0] ? (x[0] < y[0] ? -1 : 1) : (x[1] < y[1] ? -1 : (x[1] > y[1]));
+}
+
+/* fr->order against an order made here: each drawn face's key
+ * floor(hither 2^30 / z) of its farthest vertex in 64 bits, sorted by
+ * qsort on (key, index) */
+static void check_order(work *w, const stp_direct_frame *fr)
+{
+    static int64_t ref[TORUS_TRIANGLES][2];
+    size_t n = 0, i;
+    uint16_t t;
+    for (t = 0; t < w->bench.mesh.triangle_count; t++) {
+        const uint16_t *k = &w->bench.mesh.triangles[3 * t];
+        int64_t far = fr->points[k[0]].z;
+        if (w->faces[t] == 0)
+            continue;
+        far = fr->points[k[1]].z > far ? fr->points[k[1]].z : far;
+        far = fr->points[k[2]].z > far ? fr->points[k[2]].z : far;
+        ref[n][0] = ((int64_t)fr->hither << 30) / far;
+        ref[n][1] = t;
+        n++;
+    }
+    qsort(ref, n, sizeof ref[0], reference_less);
+    assert_int_equal(fr->order_count, n);
+    for (i = 0; i < n; i++) {
+        assert_int_equal(fr->order[i].index, ref[i][1]);
+        assert_int_equal(fr->order[i].key, ref[i][0]);
+    }
+}
+
+/* Direct drawing's frame fr in its painter's order (stp_direct_frame_sort)
+ * against the renderer's painter's sort, memcmp-equal, and its Z buffer,
+ * counted (measured: 0 pixels in 17 of the 18 frames, 1 in one); the
+ * compact form refuses the sort. */
+static int sorted_pictures(work *w, stp_direct_frame *fr, const stp_view *view, const stp_direct_light *light,
+                           const stp_direct_model *pose, const stp_cell *cell, size_t stride)
+{
+    size_t bytes = stride * (size_t)w->height;
+    int status = stp_direct_frame_sort(fr, w->direct_order, TORUS_TRIANGLES);
+    int painter, zbuffer;
+#if STP_DIRECT_COMPACT
+    assert_int_equal(status, STP_ERR_UNSUPPORTED);
+    assert_int_equal(stp_direct_frame_sort(NULL, w->direct_order, TORUS_TRIANGLES), STP_ERR_ARG);
+    (void)view;
+    (void)light;
+    (void)pose;
+    (void)cell;
+    (void)bytes;
+    return 0;
+#endif
+    assert_int_equal(status, STP_OK);
+    assert_true(fr->order_count > 0);
+    check_order(w, fr);
+    assert_int_equal(stp_direct_draw_band(fr, w->direct_sorted, stride, 0, (uint16_t)w->height), STP_OK);
+    draw_full(w, view, light, pose, cell, STP_HIDDEN_PAINTER);
+    memcpy(w->full_painter, w->full, bytes);
+    draw_full(w, view, light, pose, cell, STP_HIDDEN_ZBUFFER);
+    memcpy(w->full_zbuffer, w->full, bytes);
+    painter = pixels_differing(w->direct_sorted, w->full_painter, bytes);
+    zbuffer = pixels_differing(w->direct_sorted, w->full_zbuffer, bytes);
+    printf("  sorted (%u faces): %d pixels differ from the renderer's painter's sort, %d from its Z buffer; "
+           "mesh order %d from its Z buffer\n",
+           (unsigned)fr->order_count, painter, zbuffer, pixels_differing(w->direct, w->full_zbuffer, bytes));
+    assert_memory_equal(w->direct_sorted, w->full_painter, bytes);
+    assert_true(zbuffer <= 2);
+    /* refused: too few entries (mesh order kept), NULL arguments */
+    {
+        uint16_t front = fr->order_count;
+        assert_int_equal(stp_direct_frame_sort(fr, w->direct_order, (size_t)front - 1u), STP_ERR_FULL);
+        assert_null(fr->order);
+        assert_int_equal(fr->order_count, 0);
+        assert_int_equal(stp_direct_frame_sort(fr, NULL, TORUS_TRIANGLES), STP_ERR_ARG);
+        assert_int_equal(stp_direct_frame_sort(NULL, w->direct_order, TORUS_TRIANGLES), STP_ERR_ARG);
+        assert_int_equal(stp_direct_frame_sort(fr, w->direct_order, front), STP_OK);
+        assert_int_equal(fr->order_count, front);
+    }
+    return zbuffer;
 }
 
 /* Both pictures of one pose; returns the differing pixels. */
@@ -179,7 +290,8 @@ static int compare(work *w, uint16_t yaw, uint16_t pitch, stp_vec3 shift)
                                               w->pts, 3 * TORUS_TRIANGLES, w->faces, TORUS_TRIANGLES),
                      STP_OK);
     assert_int_equal(stp_direct_draw_band(&fr, w->direct, stride, 0, (uint16_t)w->height), STP_OK);
-    draw_full(w, &view, &light, &pose, &cell);
+    sorted_pictures(w, &fr, &view, &light, &pose, &cell, stride);
+    draw_full(w, &view, &light, &pose, &cell, STP_HIDDEN_NONE);
     for (i = 0; i < stride * (size_t)w->height; i++)
         for (b = 0; b < 8; b++) {
             diff += ((w->direct[i] ^ w->full[i]) >> b) & 1;
