@@ -319,11 +319,12 @@ static inline int stp_project_exact(uint32_t f, uint32_t h, uint32_t z, int32_t 
 #endif
 
 #if STP_WIDE_ARITH
-/* The depth key of view depth z (stp_fix, hither h <= z): floor(h 2^30 /
- * z) (the 32-bit form's comment above), by C's 64-bit quotient. */
-static inline int32_t stp_project_depth_key(uint32_t h, uint32_t z)
+/* The depth key of view depth z (stp_fix, 0 < hither h <= z): floor(h
+ * 2^30 / z) (the 32-bit form's comment above), by C's 64-bit quotient;
+ * 64-bit operands, as the projection holds them. */
+static inline int32_t stp_project_depth_key(int64_t h, int64_t z)
 {
-    return (int32_t)stp_div64_fast((int64_t)h << 30, (int64_t)z);
+    return (int32_t)stp_div64_fast(h << 30, z);
 }
 
 /* stp_view_perspective_wide where 64-bit division is one instruction:
@@ -335,7 +336,7 @@ static inline void stp_project_wide(stp_fix focal, stp_fix hither, const stp_vec
     *x = stp_asr64(stp_div64_fast((int64_t)focal * p->x, z), STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
     *y = stp_asr64(stp_div64_fast((int64_t)focal * p->y, z), STP_FIX_FRAC_BITS - STP_SUBPIXEL_BITS);
     if (key)
-        *key = stp_project_depth_key((uint32_t)hither, (uint32_t)z);
+        *key = stp_project_depth_key(hither, z);
 }
 #define STP_PROJECT_WIDE stp_project_wide /* inline here */
 #else
