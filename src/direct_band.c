@@ -90,7 +90,7 @@ static int band_shape(const stp_direct_frame *f, size_t stride, uint16_t y0, uin
 }
 
 /* The checks of stp_direct_draw_band, the band cleared and its rows at
- * the moved origin (*rows_out) and layout shift: STP_OK or the error */
+ * the moved origin (*band_rows) and layout shift: STP_OK or the error */
 STP_HOT_INLINE int band_start(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0, uint16_t rows,
                               int *page_shift, stp_band_rows *band_rows)
 {
