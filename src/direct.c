@@ -223,11 +223,10 @@ int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit,
                                const stp_direct_model *model)
 {
     stp_view_transform v;
-    stp_transform m;
     s->fast = &lit->fast;
-    stp_direct_model_transform(model, &m);
+    stp_direct_model_transform(model, &s->model); /* the geometry's too (geometry_prepare) */
     stp_view_transform_of_axes(view->axis[0], view->axis[1], view->axis[2], view->from, &v);
-    if (!stp_model_frame_make(&v, view->from, &m, &s->frame))
+    if (!stp_model_frame_make(&v, view->from, &s->model, &s->frame))
         return 0;
     /* every vertex a face is tested at is below 2^23 (place_vertex) */
     stp_render_side_estimate_make(&s->frame, (uint32_t)COORD_LIMIT - 1u, &s->side_estimate);
@@ -350,8 +349,8 @@ STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const stp_direct_g
  * (composed; with more than 16 fractional bits the view's alone: the
  * renderer's two steps) */
 typedef struct stp_direct_geometry {
-    stp_transform model;
 #if F > 16
+    stp_transform model;
     stp_view_transform view;
 #else
     stp_view_small view;
@@ -360,19 +359,20 @@ typedef struct stp_direct_geometry {
 } stp_direct_geometry;
 
 /* *g for model seen by view, d = translate - from (|d_i| < 2^23): its
- * transform composed with the view's (the geometry stage, as the renderer
- * composes them); 0 when a composite axis is out of range (a scale within
- * about 2^-12 of 2) */
+ * transform (shading->model, made once a frame by the shading's prepare)
+ * composed with the view's (the geometry stage, as the renderer composes
+ * them); 0 when a composite axis is out of range (a scale within about
+ * 2^-12 of 2) */
 static int geometry_prepare(stp_direct_geometry *g, const stp_direct_view *view, const stp_direct_model *model,
                             const stp_direct_shading *shading, const int32_t d[3])
 {
-    (void)shading;
+    (void)model;
     g->focal_bits = stp_bit_length32((uint32_t)view->focal);
-    stp_direct_model_transform(model, &g->model);
 #if F > 16
     /* unit axes reach 2^17: the renderer's two steps (the model, then the
      * view), as its geometry stage takes them */
     (void)d;
+    g->model = shading->model;
     stp_view_transform_of_axes(view->axis[0], view->axis[1], view->axis[2], view->from, &g->view);
     return 1;
 #else
@@ -381,7 +381,7 @@ static int geometry_prepare(stp_direct_geometry *g, const stp_direct_view *view,
         e[0] = -d[0];
         e[1] = -d[1];
         e[2] = -d[2];
-        return stp_view_compose_small(view->axis, e, &g->model, &g->view);
+        return stp_view_compose_small(view->axis, e, &shading->model, &g->view);
     }
 #endif
 }

@@ -37,6 +37,7 @@ typedef struct stp_direct_shading {
 #else
     stp_model_frame frame;
     stp_side_estimate side_estimate; /* the face side's first, 32-bit test */
+    stp_transform model;             /* the model's (stp_direct_model_transform) */
 #endif
 } stp_direct_shading;
 
