@@ -23,13 +23,8 @@
 
 #include "render_private.h"
 
-static uint64_t seed = 0x2545F4914F6CDD1Du;
-
-static uint32_t next_random(void)
-{
-    seed = seed * 6364136223846793005u + 1442695040888963407u;
-    return (uint32_t)(seed >> 32);
-}
+#define TEST_RANDOM_SEED 0x2545F4914F6CDD1Du
+#include "test_random.h" /* next_random */
 
 /* uniform in [-2^bits, 2^bits) for bits <= 31 */
 static int64_t random_signed(int bits)

@@ -23,13 +23,8 @@
 
 #include "clip_private.h"
 
-static uint64_t seed = 0xD1B54A32D192ED03u;
-
-static uint32_t next_random(void)
-{
-    seed = seed * 6364136223846793005u + 1442695040888963407u;
-    return (uint32_t)(seed >> 32);
-}
+#define TEST_RANDOM_SEED 0xD1B54A32D192ED03u
+#include "test_random.h" /* next_random */
 
 /* uniform in [-2^bits, 2^bits) for 0 <= bits <= 31 */
 static int64_t random_signed(int bits)

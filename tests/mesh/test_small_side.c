@@ -28,13 +28,8 @@
 
 #define ONE STP_FIX_ONE
 
-static uint64_t seed = 0x9E3779B97F4A7C15u;
-
-static uint32_t next_random(void)
-{
-    seed = seed * 6364136223846793005u + 1442695040888963407u;
-    return (uint32_t)(seed >> 32);
-}
+#define TEST_RANDOM_SEED 0x9E3779B97F4A7C15u
+#include "test_random.h" /* next_random */
 
 /* uniform in [-2^bits, 2^bits) for 0 <= bits <= 30 */
 static int32_t random_signed(int bits)

@@ -22,13 +22,8 @@
 #error "this test is built with STP_WIDE_ARITH 0"
 #endif
 
-static uint64_t seed = 0x9E3779B97F4A7C15u;
-
-static uint32_t next_random(void)
-{
-    seed = seed * 6364136223846793005u + 1442695040888963407u;
-    return (uint32_t)(seed >> 32);
-}
+#define TEST_RANDOM_SEED 0x9E3779B97F4A7C15u
+#include "test_random.h" /* next_random */
 
 /* a random int32 of a random bit length (small and huge values alike) */
 static int32_t random_coordinate(void)

@@ -37,13 +37,8 @@
 #error "this test is built with 16 fractional bits"
 #endif
 
-static uint64_t seed = 0x2545F4914F6CDD1Du;
-
-static uint32_t next_random(void)
-{
-    seed = seed * 6364136223846793005u + 1442695040888963407u;
-    return (uint32_t)(seed >> 32);
-}
+#define TEST_RANDOM_SEED 0x2545F4914F6CDD1Du
+#include "test_random.h" /* next_random */
 
 /* a value in (-limit, limit), its extremes one time in eight */
 static int32_t random_within(int32_t limit)
