@@ -34,6 +34,7 @@
 #include "div64_private.h" /* STP_UDIV32 */
 #include "render_private.h" /* the face stage: stp_render_face_side, stp_render_view_normal */
 #include "sort_private.h"   /* the painter's sort, the renderer's */
+#include "direct_clip_private.h" /* faces the picture's edge cuts */
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -541,6 +542,73 @@ STP_DIRECT_CALL uint16_t face_intensity(const stp_direct_shading *s, const int16
     return (uint16_t)(256u + (((index * 255u + d / 2u) * drive_m) >> 24));
 }
 
+#if !STP_DIRECT_COMPACT
+/* Whether device point p lies within a pixel of the picture's edge or
+ * beyond it.  A vertex a pixel inside (x in [16, 16 width - 16] in Q4, y
+ * likewise) is inside every side plane of the renderer's clipper: its
+ * outcode's floors (clip.c) take less than 1.5 raw units off a distance
+ * of z (1 - 1/16) (the projection's floor is below 1/16 pixel), positive
+ * for z >= 2 raw, and z >= hither; mark_clipped takes the exact test for
+ * every face where hither is below 16 raw. */
+static int near_edge(const stp_direct_frame *f, const stp_direct_point *p)
+{
+    return p->dx < 16 || p->dx > (int32_t)f->width * 16 - 16 || p->dy < 16 || p->dy > (int32_t)f->height * 16 - 16;
+}
+
+/* Whether some point of points[0 .. count-1] is near_edge (width, height
+ * >= 2): once a frame, one unsigned comparison a coordinate (x - 16
+ * beyond 16 width - 32 as unsigned) */
+static int some_near_edge(const stp_direct_frame *f, const stp_direct_point *points, uint16_t count)
+{
+    const uint32_t xs = (uint32_t)f->width * 16u - 32u, ys = (uint32_t)f->height * 16u - 32u;
+    uint16_t k;
+    for (k = 0; k < count; k++)
+        if ((uint32_t)((int32_t)points[k].dx - 16) > xs || (uint32_t)((int32_t)points[k].dy - 16) > ys)
+            return 1;
+    return 0;
+}
+/* The front faces among faces[] the renderer would clip, by the outcodes
+ * (clip.c) of their vertices' view coordinates: STP_DIRECT_FACE_CLIPPED
+ * added where some vertex is outside a side plane, the face not drawn
+ * where all three are outside one (the renderer drops it); their count.
+ * The exact test only for faces with a vertex near the picture's edge
+ * (near_edge), none in a frame that has no such vertex. */
+static uint16_t mark_clipped(const stp_direct_frame *f, uint16_t *faces)
+{
+    const stp_mesh *mesh = f->mesh;
+    const uint16_t *tri = mesh->triangles;
+    stp_clip_volume volume;
+    uint16_t t, clipped = 0;
+    if (f->hither >= 16 && f->width >= 2 && f->height >= 2 && !some_near_edge(f, f->points, mesh->vertex_count))
+        return 0;
+    stp_direct_clip_volume(f, &volume);
+    for (t = 0; t < mesh->triangle_count; t++, tri += 3) {
+        unsigned all = 31u, any = 0, code;
+        int i;
+        if (faces[t] == 0 || (f->hither >= 16 && !near_edge(f, &f->points[tri[0]]) &&
+                              !near_edge(f, &f->points[tri[1]]) && !near_edge(f, &f->points[tri[2]])))
+            continue;
+        for (i = 0; i < 3; i++) {
+            const stp_direct_point *p = &f->points[tri[i]];
+            stp_vec3 v;
+            v.x = p->x;
+            v.y = p->y;
+            v.z = p->z;
+            code = stp_clip_outcode(&volume, v);
+            all &= code;
+            any |= code;
+        }
+        if (all != 0) {
+            faces[t] = 0;
+        } else if (any != 0) {
+            faces[t] = (uint16_t)(faces[t] | STP_DIRECT_FACE_CLIPPED);
+            clipped++;
+        }
+    }
+    return clipped;
+}
+#endif
+
 /* Every corner of the mesh's triangles indexes one of its vertices;
  * apart from check_args, whose other checks are of single values. */
 static int corners_in_mesh(const stp_mesh *mesh)
@@ -619,13 +687,32 @@ int stp_direct_frame_project_lit(stp_direct_frame *f, const stp_mesh *mesh, cons
     f->cell = cell;
     f->width = view->width;
     f->height = view->height;
-#if !STP_DIRECT_COMPACT /* the compact form has no sort: its bands read none of these */
+#if !STP_DIRECT_COMPACT /* the compact form has no sort or clipping: its bands read none of these */
     f->hither = view->hither;
+    f->focal = view->focal;
     f->order = 0; /* mesh order until stp_direct_frame_sort */
     f->order_count = 0;
+    f->clipped = mark_clipped(f, faces);
 #endif
     return STP_OK;
 }
+
+#if !STP_DIRECT_COMPACT
+/* The painter's key of face k the picture's edge cuts: the renderer keys
+ * what it stores, the clipped polygon, by its farthest vertex; 0 when
+ * nothing is left of it (stored by neither).  Rare: out of line. */
+STP_NOINLINE int clipped_key(const stp_direct_frame *f, const uint16_t *k, int32_t *key)
+{
+    int32_t v[STP_DIRECT_CLIP_MAX][3];
+    int m = stp_direct_face_clip(f, k, v), i;
+    if (m < 3)
+        return 0;
+    *key = v[0][2];
+    for (i = 1; i < m; i++)
+        *key = v[i][2] < *key ? v[i][2] : *key;
+    return 1;
+}
+#endif
 
 int stp_direct_frame_sort(stp_direct_frame *f, stp_sort_entry *order, size_t order_count)
 {
@@ -654,8 +741,10 @@ int stp_direct_frame_sort(stp_direct_frame *f, stp_sort_entry *order, size_t ord
          * [hither, 2^26): stp_direct_frame_project's range) */
         far = z0 > z1 ? z0 : z1;
         far = far > z2 ? far : z2;
-        order[n].index = t;
         order[n].key = stp_project_depth_key((uint32_t)f->hither, (uint32_t)far);
+        if ((f->faces[t] & STP_DIRECT_FACE_CLIPPED) && !clipped_key(f, k, &order[n].key))
+            continue; /* nothing left to draw */
+        order[n].index = t;
         order[n].style = f->faces[t];
         order[n].transmission = 0;
         n++;

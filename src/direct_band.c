@@ -17,6 +17,7 @@
 
 #include "direct_private.h"
 #include "run_fill_private.h" /* stp_halftone_fill_bits, the one run filler */
+#include "direct_clip_private.h" /* faces the picture's edge cuts */
 
 /* Direct drawing's device coordinates lie in [-DEVICE_ORIGIN,
  * DEVICE_ORIGIN) (Q4, direct.c); moved by DEVICE_ORIGIN (a whole number
@@ -112,6 +113,47 @@ STP_HOT_INLINE int band_start(const stp_direct_frame *f, uint8_t *band, size_t s
 }
 
 #if !STP_DIRECT_COMPACT
+/* A face the picture's edge cuts (STP_DIRECT_FACE_CLIPPED), as the
+ * renderer draws it: clipped and projected (stp_direct_face_clip), its
+ * rows from the polygon raster's edges (edge_walk_private.h: the
+ * crossings the triangle walk gives), in device coordinates (not moved);
+ * rare, out of line */
+STP_NOINLINE void draw_clipped_face(const stp_direct_frame *f, const uint16_t k[3], uint8_t intensity, uint8_t *band,
+                                    size_t stride, int page_shift, const stp_band_rows *rows)
+{
+    int32_t v[STP_DIRECT_CLIP_MAX][3], ymin, ymax, top = rows->top - DEVICE_ORIGIN, end = rows->end - DEVICE_ORIGIN;
+    stp_edge edges[STP_DIRECT_CLIP_MAX];
+    stp_crossing crossings[STP_DIRECT_CLIP_MAX];
+    int n = stp_direct_face_clip(f, k, v), ne = 0, i, y, y_first, y_last, y0 = (int)rows->y0 - ORIGIN_PIXELS;
+    if (n < 3)
+        return;
+    ymin = ymax = v[0][1];
+    for (i = 0; i < n; i++) {
+        ymin = v[i][1] < ymin ? v[i][1] : ymin;
+        ymax = v[i][1] > ymax ? v[i][1] : ymax;
+        if (stp_edge_setup(&edges[ne], v[i][0], v[i][1], v[i + 1 == n ? 0 : i + 1][0], v[i + 1 == n ? 0 : i + 1][1]))
+            ne++;
+    }
+    if (ymax <= top || ymin >= end)
+        return;
+    /* raster.c's draw_polygon: rows whose centres lie in [ymin, ymax) and
+     * in the band */
+    y_first = (int)((ymin < top ? top : ymin) >> SUB);
+    y_last = (int)((ymax > end ? end : ymax) >> SUB);
+    if (y_last > y0 + (int)rows->count - 1)
+        y_last = y0 + (int)rows->count - 1;
+    stp_edges_start(edges, ne, (int32_t)y_first * (1 << SUB) + STP_HALF_PIXEL, 0);
+    for (y = y_first; y <= y_last; y++) {
+        int nc = stp_edges_row(edges, ne, (int32_t)y * (1 << SUB) + STP_HALF_PIXEL, 0, crossings), c;
+        unsigned r = (unsigned)(y - y0); /* the band's row */
+        uint32_t p1, p2;
+        for (c = 0; c + 1 < nc; c += 2)
+            if (stp_span_pixels(crossings[c].x, crossings[c + 1].x, f->width, &p1, &p2))
+                stp_halftone_fill_bits(band + (r >> page_shift) * stride, (uint8_t)(page_shift ? 1u << (r & 7) : 0u),
+                                       (unsigned)p1, (unsigned)p2, pattern_of(f->cell, y, intensity));
+    }
+}
+
 /* The drawn faces among count triangles k[0..2], k[3..5], ... with faces
  * (0: not drawn, else 256 + intensity) into the band; the one caller of
  * draw_face, which so stays in line (a second caller cost the M0+ frame
@@ -150,20 +192,38 @@ int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride
         /* far to near (stp_direct_frame_sort): every entry a drawn face,
          * one at a time */
         uint16_t i, t;
+        const int clipping = f->clipped != 0; /* read once: the band's stores may alias f */
         for (i = 0; i < f->order_count; i++) {
             const uint16_t *k;
             int a, b, c;
             t = (uint16_t)f->order[i].index;
             k = f->mesh->triangles + 3 * (size_t)t;
             /* a face wholly above the band's top or at or below its end
-             * reaches none of its row centres: left out before the call */
+             * reaches none of its row centres: left out before the call
+             * (clipped too: its clipped vertices lie within its y extent
+             * up to a subpixel's rounding, short of a row centre) */
             a = STP_TRI_Y(&f->points[k[0]]);
             b = STP_TRI_Y(&f->points[k[1]]);
             c = STP_TRI_Y(&f->points[k[2]]);
             if ((a < band_rows.top && b < band_rows.top && c < band_rows.top) ||
                 (a >= band_rows.end && b >= band_rows.end && c >= band_rows.end))
                 continue;
-            draw_faces(f, k, f->faces + t, 1, band, stride, page_shift, &band_rows);
+            if (clipping && (f->faces[t] & STP_DIRECT_FACE_CLIPPED))
+                draw_clipped_face(f, k, (uint8_t)f->faces[t], band, stride, page_shift, &band_rows);
+            else
+                draw_faces(f, k, f->faces + t, 1, band, stride, page_shift, &band_rows);
+        }
+        return STP_OK;
+    }
+    if (f->clipped != 0) {
+        /* mesh order with faces the picture's edge cuts: one at a time */
+        const uint16_t *k = f->mesh->triangles;
+        uint16_t t;
+        for (t = 0; t < f->mesh->triangle_count; t++, k += 3) {
+            if (f->faces[t] & STP_DIRECT_FACE_CLIPPED)
+                draw_clipped_face(f, k, (uint8_t)f->faces[t], band, stride, page_shift, &band_rows);
+            else if (f->faces[t] != 0)
+                draw_faces(f, k, f->faces + t, 1, band, stride, page_shift, &band_rows);
         }
         return STP_OK;
     }

@@ -97,7 +97,7 @@ arm-none-eabi-gcc $cflags $defs $inc -flto -nostdlib -Wl,--gc-sections -T "$st/l
     "$st/main_direct.c" "$src/ports/direct/direct_spin.c" "$st/startup.c" "$st/semihost.c" \
     "$st/lm3s6965_oled.c" "$st/board_lm3s6965.c" "$src/ports/controllers/panel.c" \
     "$src/ports/controllers/ssd0323.c" "$src/src/direct.c" "$src/src/direct_band.c" \
-    "$src/src/direct_view.c" "$src/src/shade_fast.c" "$src/src/shade.c" "$src/src/view.c" "$src/src/recip.c" "$src/src/mesh.c" "$src/src/fix.c" "$src/src/div64.c" "$work/obj/libc_min.x" -lgcc \
+    "$src/src/direct_view.c" "$src/src/direct_clip.c" "$src/src/clip.c" "$src/src/shade_fast.c" "$src/src/shade.c" "$src/src/view.c" "$src/src/recip.c" "$src/src/mesh.c" "$src/src/fix.c" "$src/src/div64.c" "$work/obj/libc_min.x" -lgcc \
     -Wl,-Map="$work/lm3s6965.map" -o "$work/stipple_fw_lm3s6965evb_direct.elf"
 echo "== whole lm3s6965evb image (LTO, --gc-sections)"
 arm-none-eabi-size "$work/stipple_fw_lm3s6965evb_direct.elf"

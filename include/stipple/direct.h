@@ -2,8 +2,8 @@
 /*
  * Direct drawing (issue 15 item 3): an immediate-mode path that draws a
  * triangle mesh straight into a 1-bit band, for a spinning model on a
- * small chip.  No display file, no segments, no clipping, no Z buffer:
- * beyond back-face removal the triangles are painted in mesh order, as the
+ * small chip.  No display file, no segments, no Z buffer: beyond
+ * back-face removal the triangles are painted in mesh order, as the
  * full renderer's --hidden none paints them (convex models, or models
  * whose triangles are ordered so later ones may cover earlier ones), or
  * far to near after stp_direct_frame_sort, as its painter's sort (--hidden
@@ -21,7 +21,10 @@
  *   2. stp_direct_draw_band for each band of rows (u8g2-style page mode:
  *      one band of caller memory), painting the faces that touch it with
  *      the full renderer's fill rule (pixel centres, top-left rule, Q27.4
- *      device coordinates) and its ordered-dither halftone, MSB first.
+ *      device coordinates) and its ordered-dither halftone, MSB first; a
+ *      face the picture's edge cuts clipped first, by the renderer's
+ *      clipper and projection (not in the compact form, which walks it
+ *      whole).
  *
  * 32-bit arithmetic per vertex, face and pixel on 32-bit targets (the
  * face shader's per-frame prepare, shade_fast.c's stp_shade_fast_prepare
@@ -129,7 +132,8 @@ typedef struct stp_direct_point {
 typedef struct stp_direct_frame {
     const stp_mesh *mesh;
     const stp_direct_point *points;
-    const uint16_t *faces;    /* per triangle: 0 not drawn, else 256 + intensity */
+    const uint16_t *faces;    /* per triangle: 0 not drawn, else 256 + intensity
+                                 (+ STP_DIRECT_FACE_CLIPPED) */
     const uint8_t *cell;      /* 4 x 4 thresholds, row-major */
     uint16_t width, height;
     uint16_t layout;          /* the bands' stp_band_layout: STP_BAND_ROWS after
@@ -142,7 +146,16 @@ typedef struct stp_direct_frame {
     const stp_sort_entry *order; /* the bands' order of faces, far to near
                                     (stp_direct_frame_sort), or NULL (after
                                     stp_direct_frame_project): mesh order */
+    /* the renderer's clipping (not set or read in the compact form) */
+    stp_fix focal;            /* the view's: its pyramid's */
+    uint16_t clipped;         /* front faces the pyramid's sides cut
+                                 (faces[] holds STP_DIRECT_FACE_CLIPPED) */
 } stp_direct_frame;
+
+/* The flag faces[t] carries beside 256 + intensity for a front face the
+ * picture's edge cuts: the bands draw it clipped to the view's pyramid
+ * (not in the compact form). */
+#define STP_DIRECT_FACE_CLIPPED 512u
 
 /* Transform, project and shade one frame of mesh (prepared normals
  * required: stp_mesh_prepare_normals) under model, view and light, into

@@ -35,7 +35,7 @@ arm-none-eabi-gcc $cflags $inc -DSTP_DIRECT_FRAMES=11 -flto -nostdlib -Wl,--gc-s
     "$st/main_direct.c" "$src/ports/direct/direct_spin.c" "$st/startup.c" "$st/semihost.c" \
     "$st/lm3s6965_oled.c" "$st/board_lm3s6965.c" "$src/ports/controllers/panel.c" \
     "$src/ports/controllers/ssd0323.c" "$src/src/direct.c" "$src/src/direct_band.c" \
-    "$src/src/direct_view.c" "$src/src/shade_fast.c" "$src/src/shade.c" "$src/src/view.c" "$src/src/recip.c" "$src/src/mesh.c" "$src/src/fix.c" "$src/src/div64.c" "$work/libc_min.o" -lgcc -o "$elf"
+    "$src/src/direct_view.c" "$src/src/direct_clip.c" "$src/src/clip.c" "$src/src/shade_fast.c" "$src/src/shade.c" "$src/src/view.c" "$src/src/recip.c" "$src/src/mesh.c" "$src/src/fix.c" "$src/src/div64.c" "$work/libc_min.o" -lgcc -o "$elf"
 arm-none-eabi-size "$elf"
 "$host" -n 10 -b 64 -i 1 -o "$work/host.pbm"
 

@@ -1,0 +1,45 @@
+/* SPDX-License-Identifier: MIT */
+/* Direct drawing's faces that the picture's edge cuts
+ * (direct_clip_private.h): the renderer's clipper (clip.c) and projection
+ * (project_private.h) on the frame's view coordinates, so a clipped face
+ * gets the vertices, device positions and depth keys the renderer stores
+ * for it.  Compiled in the compact form too, which calls none of it (its
+ * frames mark no face clipped). */
+#include "direct_clip_private.h"
+
+#include "view_private.h" /* stp_view_lens, stp_view_perspective_device */
+
+#define SUB STP_SUBPIXEL_BITS
+
+void stp_direct_clip_volume(const stp_direct_frame *f, stp_clip_volume *v)
+{
+    v->focal = f->focal;
+    v->near = f->hither;
+    v->width = f->width;
+    v->height = f->height;
+    v->parallel = 0;
+}
+
+int stp_direct_face_clip(const stp_direct_frame *f, const uint16_t k[3], int32_t out[STP_DIRECT_CLIP_MAX][3])
+{
+    stp_vec3 a[STP_DIRECT_CLIP_MAX], b[STP_DIRECT_CLIP_MAX], *clipped, *spare;
+    stp_fix *values;
+    stp_clip_volume volume;
+    stp_view_lens lens;
+    int i, n;
+    for (i = 0; i < 3; i++) {
+        a[i].x = f->points[k[i]].x;
+        a[i].y = f->points[k[i]].y;
+        a[i].z = f->points[k[i]].z;
+    }
+    stp_direct_clip_volume(f, &volume);
+    n = stp_clip_polygon(&volume, a, b, 0, 0, 3, &clipped, &spare, &values);
+    /* render.c's project (width, height <= 512: in int32) */
+    lens.focal = f->focal;
+    lens.hither = f->hither;
+    lens.half_width = (int32_t)f->width << (SUB - 1);
+    lens.half_height = (int32_t)f->height << (SUB - 1);
+    for (i = 0; i < n; i++)
+        stp_view_perspective_device(&lens, &clipped[i], out[i]);
+    return n;
+}
