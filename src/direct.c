@@ -390,8 +390,10 @@ static int geometry_prepare(stp_direct_geometry *g, const stp_direct_view *view,
 /* Vertex v of the mesh in view coordinates by the frame's geometry g (the
  * geometry stage's, the renderer's values; with more than 16 fractional
  * bits its two steps) and projected into *p; 0 when a coordinate is out
- * of range (direct.h) or the point nearer than hither or outside the
- * device range. */
+ * of range (direct.h).  A point nearer than hither or outside the device
+ * range is not projected (STP_DIRECT_UNPROJECTED): the faces it is a
+ * corner of are clipped (mark_clipped), and their clipped vertices
+ * projected (direct_clip.c). */
 STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const stp_direct_geometry *g, const stp_vec3 *v,
                                  stp_direct_point *p)
 {
@@ -407,7 +409,9 @@ STP_DIRECT_CALL int place_vertex(const stp_direct_view *view, const stp_direct_g
     p->x = r.x;
     p->y = r.y;
     p->z = r.z;
-    return p->z >= view->hither && project_point(view, g->focal_bits, p);
+    if (p->z < view->hither || !project_point(view, g->focal_bits, p))
+        p->dx = p->dy = STP_DIRECT_UNPROJECTED;
+    return 1;
 }
 #endif
 
@@ -544,7 +548,7 @@ STP_DIRECT_CALL uint16_t face_intensity(const stp_direct_shading *s, const int16
 
 #if !STP_DIRECT_COMPACT
 /* Whether device point p lies within a pixel of the picture's edge or
- * beyond it.  A vertex a pixel inside (x in [16, 16 width - 16] in Q4, y
+ * beyond it, or is not projected (STP_DIRECT_UNPROJECTED, below -16).  A vertex a pixel inside (x in [16, 16 width - 16] in Q4, y
  * likewise) is inside every side plane of the renderer's clipper: its
  * outcode's floors (clip.c) take less than 1.5 raw units off a distance
  * of z (1 - 1/16) (the projection's floor is below 1/16 pixel), positive

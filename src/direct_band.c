@@ -167,6 +167,34 @@ STP_NOINLINE void draw_faces(const stp_direct_frame *f, const uint16_t *k, const
             draw_face(f, k, (uint8_t)faces[t], band, stride, page_shift, rows);
     }
 }
+
+/* The faces of f's painter's order (every entry a drawn face) into the
+ * band, one at a time; clipping (a constant at each call) when some are
+ * clipped (STP_DIRECT_FACE_CLIPPED) */
+STP_HOT_INLINE void draw_in_order(const stp_direct_frame *f, uint8_t *band, size_t stride, int page_shift,
+                                  const stp_band_rows *rows, const int clipping)
+{
+    uint16_t i, t;
+    for (i = 0; i < f->order_count; i++) {
+        const uint16_t *k;
+        int a, b, c;
+        t = (uint16_t)f->order[i].index;
+        k = f->mesh->triangles + 3 * (size_t)t;
+        if (clipping && (f->faces[t] & STP_DIRECT_FACE_CLIPPED)) {
+            /* (a corner may be unprojected: no y to pass it over by) */
+            draw_clipped_face(f, k, (uint8_t)f->faces[t], band, stride, page_shift, rows);
+            continue;
+        }
+        /* a face wholly above the band's top or at or below its end
+         * reaches none of its row centres: left out before the call */
+        a = STP_TRI_Y(&f->points[k[0]]);
+        b = STP_TRI_Y(&f->points[k[1]]);
+        c = STP_TRI_Y(&f->points[k[2]]);
+        if ((a < rows->top && b < rows->top && c < rows->top) || (a >= rows->end && b >= rows->end && c >= rows->end))
+            continue;
+        draw_faces(f, k, f->faces + t, 1, band, stride, page_shift, rows);
+    }
+}
 #endif
 
 int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0,
@@ -189,30 +217,12 @@ int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride
     }
 #else
     if (f->order != 0) {
-        /* far to near (stp_direct_frame_sort): every entry a drawn face,
-         * one at a time */
-        uint16_t i, t;
-        const int clipping = f->clipped != 0; /* read once: the band's stores may alias f */
-        for (i = 0; i < f->order_count; i++) {
-            const uint16_t *k;
-            int a, b, c;
-            t = (uint16_t)f->order[i].index;
-            k = f->mesh->triangles + 3 * (size_t)t;
-            /* a face wholly above the band's top or at or below its end
-             * reaches none of its row centres: left out before the call
-             * (clipped too: its clipped vertices lie within its y extent
-             * up to a subpixel's rounding, short of a row centre) */
-            a = STP_TRI_Y(&f->points[k[0]]);
-            b = STP_TRI_Y(&f->points[k[1]]);
-            c = STP_TRI_Y(&f->points[k[2]]);
-            if ((a < band_rows.top && b < band_rows.top && c < band_rows.top) ||
-                (a >= band_rows.end && b >= band_rows.end && c >= band_rows.end))
-                continue;
-            if (clipping && (f->faces[t] & STP_DIRECT_FACE_CLIPPED))
-                draw_clipped_face(f, k, (uint8_t)f->faces[t], band, stride, page_shift, &band_rows);
-            else
-                draw_faces(f, k, f->faces + t, 1, band, stride, page_shift, &band_rows);
-        }
+        /* far to near (stp_direct_frame_sort); a frame without clipped
+         * faces by the loop without their test */
+        if (f->clipped != 0)
+            draw_in_order(f, band, stride, page_shift, &band_rows, 1);
+        else
+            draw_in_order(f, band, stride, page_shift, &band_rows, 0);
         return STP_OK;
     }
     if (f->clipped != 0) {

@@ -41,9 +41,12 @@
  *              below 2^23 raw (128 units) in magnitude, the ranges of the
  *              geometry stage's 32-bit form for points near the eye
  *              (view.c); view coordinates then stay below 2^26.
- *   device     Q27.4 (1/16 pixel), kept in int16_t: every projected vertex
- *              must land in [-8192, 8192) (pixels -512..511) or the frame
- *              is refused with STP_ERR_RANGE; so width, height <= 512.
+ *   device     Q27.4 (1/16 pixel), kept in int16_t: a vertex projected
+ *              in [-8192, 8192) (pixels -512..511); so width, height <=
+ *              512.  A vertex nearer than hither or projecting beyond
+ *              that range is left unprojected and its faces clipped (in
+ *              the compact form the frame is refused with
+ *              STP_ERR_RANGE).
  */
 #ifndef STIPPLE_DIRECT_H
 #define STIPPLE_DIRECT_H
@@ -157,6 +160,12 @@ typedef struct stp_direct_frame {
  * (not in the compact form). */
 #define STP_DIRECT_FACE_CLIPPED 512u
 
+/* The device position (dx and dy) of a point the projection leaves out:
+ * nearer than hither, or outside the device range (not in the compact
+ * form, which refuses such a frame).  Every face it is a corner of is
+ * clipped or not drawn. */
+#define STP_DIRECT_UNPROJECTED INT16_MIN
+
 /* Transform, project and shade one frame of mesh (prepared normals
  * required: stp_mesh_prepare_normals) under model, view and light, into
  * points[0 .. vertex_count - 1] and faces[0 .. triangle_count - 1] (caller
@@ -175,10 +184,11 @@ typedef struct stp_direct_frame {
  * below vertex_count, point_count or face_count too small, levels
  * outside 2..255, scale outside (0, 2), a light value outside its range,
  * rot not a rotation or the scale below 2^-6: the face stage's model
- * frame, not with STP_DIRECT_COMPACT), STP_ERR_RANGE (a vertex nearer
- * than hither or projecting outside the device range, a coordinate beyond
- * 2^23 raw, or a scale within about 2^-12 of 2, where a composite axis
- * reaches 2^17); *f is then not usable. */
+ * frame, not with STP_DIRECT_COMPACT), STP_ERR_RANGE (a coordinate
+ * beyond 2^23 raw, a scale within about 2^-12 of 2, where a composite
+ * axis reaches 2^17, or in the compact form a vertex nearer than hither
+ * or projecting outside the device range, which the default form clips
+ * as the renderer does); *f is then not usable. */
 int stp_direct_frame_project(stp_direct_frame *f, const stp_mesh *mesh, const stp_direct_model *model,
                              const stp_direct_view *view, const stp_direct_light *light, int levels,
                              const uint8_t cell[16], stp_direct_point *points, size_t point_count,
