@@ -739,15 +739,20 @@ int stp_direct_frame_sort(stp_direct_frame *f, stp_sort_entry *order, size_t ord
         int32_t z0 = f->points[k[0]].z, z1 = f->points[k[1]].z, z2 = f->points[k[2]].z, far;
         if (f->faces[t] == 0)
             continue; /* not drawn */
-        if (n == order_count)
+        if (n == order_count) {
+            /* full: refused unless nothing is left of the face */
+            int32_t key;
+            if ((f->faces[t] & STP_DIRECT_FACE_CLIPPED) && !clipped_key(f, k, &key))
+                continue;
             return STP_ERR_FULL;
-        /* the farthest vertex's key: the key falls as z grows (every z in
-         * [hither, 2^26): stp_direct_frame_project's range) */
+        }
+        /* the farthest vertex's key: the key falls as z grows (a drawn
+         * face has a vertex in [hither, 2^26)) */
         far = z0 > z1 ? z0 : z1;
         far = far > z2 ? far : z2;
         order[n].key = stp_project_depth_key((uint32_t)f->hither, (uint32_t)far);
         if ((f->faces[t] & STP_DIRECT_FACE_CLIPPED) && !clipped_key(f, k, &order[n].key))
-            continue; /* nothing left to draw */
+            continue; /* nothing left to draw: no entry */
         order[n].index = t;
         order[n].style = f->faces[t];
         order[n].transmission = 0;

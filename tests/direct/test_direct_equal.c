@@ -40,6 +40,11 @@
 #include "stipple/stipple.h"
 #include "torus.h"
 
+#if !STP_DIRECT_COMPACT
+#define TEST_RANDOM_SEED 0x5eed20u
+#include "test_random.h" /* next_random (run_random) */
+#endif
+
 #define MAX_W 400
 #define MAX_H 240
 #define LEVELS 16
@@ -488,6 +493,67 @@ static void run_near(int width, int height)
 }
 #endif
 
+/* Random poses and places, across the picture's edges, off it and
+ * through the near plane (x in [-4, 4], y in [-2.5, 2.5], z in [-3, 5.5]
+ * around the origin the eye looks at from (0, 3, 5.2)): every frame equal
+ * to the renderer's, in mesh order and sorted; how many were cut, left
+ * unprojected or empty is printed */
+#if !STP_DIRECT_COMPACT
+static void run_random(int width, int height, int frames)
+{
+    work *w = calloc(1, sizeof *w);
+    char err[200];
+    int f, differ = 0, cut = 0, unprojected = 0, empty = 0;
+    assert_non_null(w);
+    assert_int_equal(torus_bench_init(&w->bench, width, height, err, sizeof err), 0);
+    assert_int_equal(torus_bench_use_mesh(&w->bench, err, sizeof err), 0);
+    w->width = width;
+    w->height = height;
+    w->near = 1;
+    for (f = 0; f < frames; f++) {
+        uint16_t yaw = (uint16_t)next_random(), pitch = (uint16_t)next_random();
+        double x = (next_random() / 4294967296.0) * 8 - 4, y = (next_random() / 4294967296.0) * 5 - 2.5,
+               z = (next_random() / 4294967296.0) * 8.5 - 3;
+        long lit = w->lit;
+        size_t i;
+        int off = 0;
+        differ += compare(w, yaw, pitch, vec(x, y, z)) != 0 ||
+                  memcmp(w->direct, w->full, (size_t)width / 8 * (size_t)height) != 0;
+        cut += w->clipped > 0;
+        for (i = 0; i < w->bench.mesh.vertex_count; i++)
+            off |= w->pts[i].dx == STP_DIRECT_UNPROJECTED;
+        unprojected += off;
+        empty += w->lit == lit;
+    }
+    printf("random %dx%d: %d frames, %d with clipped faces, %d with unprojected vertices, %d empty; %d differ\n",
+           width, height, frames, cut, unprojected, empty, differ);
+    assert_true(cut > frames / 4 && unprojected > 0 && empty < frames / 2);
+    assert_int_equal(differ, 0);
+    torus_bench_free(&w->bench);
+    free(w);
+}
+#endif
+
+static void test_random_128x64(void **state)
+{
+    (void)state;
+#if STP_DIRECT_COMPACT
+    skip();
+#else
+    run_random(128, 64, 200);
+#endif
+}
+
+static void test_random_400x240(void **state)
+{
+    (void)state;
+#if STP_DIRECT_COMPACT
+    skip();
+#else
+    run_random(400, 240, 40);
+#endif
+}
+
 static void test_near_128x64(void **state)
 {
     (void)state;
@@ -529,6 +595,8 @@ int main(void)
         cmocka_unit_test(test_edges_400x240),
         cmocka_unit_test(test_near_128x64),
         cmocka_unit_test(test_near_400x240),
+        cmocka_unit_test(test_random_128x64),
+        cmocka_unit_test(test_random_400x240),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
