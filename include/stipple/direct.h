@@ -234,16 +234,18 @@ int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride
  * to near for stp_direct_draw_band, as the renderer's painter's sort
  * (STP_HIDDEN_PAINTER) orders them: by the depth key of each face's
  * farthest vertex (the projection's floor(hither 2^30 / z), z its view
- * depth), ties in mesh order; a heap sort, O(n log n) in the n front
- * faces, no recursion.  A face nearer the eye then covers the faces behind
- * it, so a model that is not convex (a torus) is drawn as
+ * depth; a face the picture's edge or the near plane cuts by its clipped
+ * polygon's, as the renderer keys what it stores, and one clipped to
+ * nothing left out), ties in mesh order; a heap sort, O(n log n) in the n
+ * front faces, no recursion.  A face nearer the eye then covers the faces
+ * behind it, so a model that is not convex (a torus) is drawn as
  * stp_renderer_render draws it with STP_HIDDEN_PAINTER, pixel for pixel
  * (and for the test torus as with the Z buffer, all but a pixel in one of
- * 18 frames: test_direct_equal).  order: caller memory of order_count
+ * 142 frames: test_direct_equal).  order: caller memory of order_count
  * entries, at least the front faces (at most the mesh's triangle_count),
  * kept with the frame until its bands are drawn; f->order points to it.
  * Errors: STP_ERR_ARG (f, order or the frame's arrays NULL),
- * STP_ERR_FULL (order_count below the front faces), STP_ERR_UNSUPPORTED
+ * STP_ERR_FULL (order_count below the faces to order), STP_ERR_UNSUPPORTED
  * (the compact form, config.h's STP_DIRECT_COMPACT: the smallest images
  * keep mesh order); f then keeps mesh order. */
 int stp_direct_frame_sort(stp_direct_frame *f, stp_sort_entry *order, size_t order_count);
