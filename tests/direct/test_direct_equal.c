@@ -26,8 +26,8 @@
  * clipped polygons' among them) a subsequence of direct drawing's order.
  * (Without direct drawing's clipping 16 of the 90 frames differ, in 1 or
  * 2 pixels.)  And brought toward the eye until the near plane cuts it
- * (32 frames, vertices left unprojected), and at 240 random poses and
- * places across the edges, off the picture and through the near plane:
+ * (32 frames, vertices left unprojected), and at 1200 random poses and
+ * places (and hither distances) across the edges, off the picture and through the near plane:
  * equal likewise (not in the compact form, which refuses such frames).
  */
 #include <setjmp.h>
@@ -498,7 +498,8 @@ static void run_near(int width, int height)
 
 /* Random poses and places, across the picture's edges, off it and
  * through the near plane (x in [-4, 4], y in [-2.5, 2.5], z in [-3, 5.5]
- * around the origin the eye looks at from (0, 3, 5.2)): every frame equal
+ * around the origin the eye looks at from (0, 3, 5.2); hither 8 raw,
+ * 0.1, 0.5 and 1.5 units in turn): every frame equal
  * to the renderer's, in mesh order and sorted; how many were cut, left
  * unprojected or empty is printed */
 #if !STP_DIRECT_COMPACT
@@ -520,6 +521,10 @@ static void run_random(int width, int height, int frames)
         long lit = w->lit;
         size_t i;
         int off = 0;
+        /* hither 8 raw (every face's outcodes found), scene_view's 0.1, 0.5
+         * or 1.5 units in turn */
+        static const stp_fix hithers[4] = {8, 0, STP_FIX_ONE / 2, 3 * STP_FIX_ONE / 2};
+        w->hither = hithers[f & 3];
         differ += compare(w, yaw, pitch, vec(x, y, z)) != 0 ||
                   memcmp(w->direct, w->full, (size_t)width / 8 * (size_t)height) != 0;
         cut += w->clipped > 0;
@@ -543,7 +548,7 @@ static void test_random_128x64(void **state)
 #if STP_DIRECT_COMPACT
     skip();
 #else
-    run_random(128, 64, 200);
+    run_random(128, 64, 1000);
 #endif
 }
 
@@ -553,7 +558,7 @@ static void test_random_400x240(void **state)
 #if STP_DIRECT_COMPACT
     skip();
 #else
-    run_random(400, 240, 40);
+    run_random(400, 240, 200);
 #endif
 }
 
