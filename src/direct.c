@@ -565,9 +565,9 @@ static int near_edge(const stp_direct_frame *f, const stp_direct_point *p)
 static int some_near_edge(const stp_direct_frame *f, const stp_direct_point *points, uint16_t count)
 {
     const uint32_t xs = (uint32_t)f->width * 16u - 32u, ys = (uint32_t)f->height * 16u - 32u;
-    const stp_direct_point *p, *const end = points + count;
-    for (p = points; p != end; p++)
-        if ((uint32_t)((int32_t)p->dx - 16) > xs || (uint32_t)((int32_t)p->dy - 16) > ys)
+    uint16_t k;
+    for (k = 0; k < count; k++)
+        if ((uint32_t)((int32_t)points[k].dx - 16) > xs || (uint32_t)((int32_t)points[k].dy - 16) > ys)
             return 1;
     return 0;
 }
