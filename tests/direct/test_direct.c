@@ -14,9 +14,10 @@
  * paths chose differently); the sphere also equal to the
  * renderer's frame with the Z buffer (convex: mesh order and depth
  * agree); each front face's shade within 1/30 of the
- * double reference; bands of any height give the whole frame exactly;
- * the panel's page layout holds the row-major frame transposed; bad
- * arguments.
+ * double reference; bands of any height give the whole frame exactly and
+ * the panel's page layout holds the row-major frame transposed, with the
+ * model at the centre, across the picture's edge and cut by the near
+ * plane (faces drawn clipped); bad arguments.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -518,22 +519,45 @@ static void test_sphere_zbuffer(void **state)
 }
 
 /* Bands of 1, 3, 8 and 64 rows give the whole frame exactly. */
-static void test_bands(void **state)
+/* Where the bands and pages tests place the model: at the centre, across
+ * the picture's right edge, and (not in the compact form, which refuses
+ * it) so near the eye that the near plane cuts it: faces clipped
+ * (STP_DIRECT_FACE_CLIPPED) there, drawn by the clipped path */
+#define PLACES (STP_DIRECT_COMPACT ? 2 : 3)
+static void place_model(scene *s, int place)
 {
-    work *w = calloc(1, sizeof *w);
+    static const double at[3][3] = {{0, 0, 0}, {2.1, 0, 0}, {0, 1.44, -3.04}};
+    s->pose.translate = vec(at[place][0], at[place][1], at[place][2]);
+}
+
+/* fr's clipped faces as expected of place */
+static void clipped_as_placed(const stp_direct_frame *fr, int place)
+{
+#if STP_DIRECT_COMPACT
+    (void)fr;
+    (void)place;
+#else
+    if (place == 0)
+        assert_int_equal(fr->clipped, 0);
+    else
+        assert_true(fr->clipped > 0);
+#endif
+}
+
+static void bands_match(work *w, int place)
+{
     static const uint16_t heights[] = {1, 3, 8, 64};
     uint8_t band[H * STRIDE];
     scene s;
     stp_direct_frame fr;
     size_t i;
     int lit = 0;
-    (void)state;
-    assert_non_null(w);
-    make_torus(&w->m);
     scene_make(&s, 7000, 5000);
+    place_model(&s, place);
     assert_int_equal(stp_direct_frame_project(&fr, &w->m.mesh, &s.pose, &s.dview, &s.light, LEVELS, s.cell, w->pts,
                                               MAX_V, w->faces, MAX_T),
                      STP_OK);
+    clipped_as_placed(&fr, place);
     assert_int_equal(stp_direct_draw_band(&fr, w->frame, STRIDE, 0, H), STP_OK);
     for (i = 0; i < sizeof w->frame; i++)
         lit += w->frame[i] != 0;
@@ -549,6 +573,17 @@ static void test_bands(void **state)
             assert_memory_equal(band, w->frame + (size_t)y0 * STRIDE, (size_t)rows * STRIDE);
         }
     }
+}
+
+static void test_bands(void **state)
+{
+    work *w = calloc(1, sizeof *w);
+    int place;
+    (void)state;
+    assert_non_null(w);
+    make_torus(&w->m);
+    for (place = 0; place < PLACES; place++)
+        bands_match(w, place);
     free(w);
 }
 
@@ -616,7 +651,7 @@ static void make_cube(model *m)
  * pixel for pixel (bit y mod 8 of byte (y / 8) stride + x), for the torus
  * and a cube in several poses; a last band shorter than its page leaves
  * the page's lower bits 0. */
-static void pages_match(work *w, uint16_t yaw, uint16_t pitch)
+static void pages_match(work *w, uint16_t yaw, uint16_t pitch, int place)
 {
     static const uint16_t heights[] = {8, 16, 24, 64};
     static uint8_t pages[(H / 8) * (W + 5)];
@@ -626,6 +661,7 @@ static void pages_match(work *w, uint16_t yaw, uint16_t pitch)
     size_t i, k;
     int lit = 0;
     scene_make(&s, yaw, pitch);
+    place_model(&s, place);
     assert_int_equal(stp_direct_frame_project(&fr, &w->m.mesh, &s.pose, &s.dview, &s.light, LEVELS, s.cell, w->pts,
                                               MAX_V, w->faces, MAX_T),
                      STP_OK);
@@ -662,12 +698,14 @@ static void test_pages(void **state)
     size_t a;
     (void)state;
     assert_non_null(w);
+    int place;
     make_torus(&w->m);
-    for (a = 0; a < sizeof angles / sizeof angles[0]; a++)
-        pages_match(w, angles[a][0], angles[a][1]);
+    for (place = 0; place < PLACES; place++)
+        for (a = 0; a < sizeof angles / sizeof angles[0]; a++)
+            pages_match(w, angles[a][0], angles[a][1], place);
     make_cube(&w->m);
     for (a = 0; a < sizeof angles / sizeof angles[0]; a++)
-        pages_match(w, angles[a][0], angles[a][1]);
+        pages_match(w, angles[a][0], angles[a][1], 0);
     free(w);
 }
 
