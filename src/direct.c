@@ -548,12 +548,14 @@ STP_DIRECT_CALL uint16_t face_intensity(const stp_direct_shading *s, const int16
 
 #if !STP_DIRECT_COMPACT
 /* Whether device point p lies within a pixel of the picture's edge or
- * beyond it, or is not projected (STP_DIRECT_UNPROJECTED, below -16).  A vertex a pixel inside (x in [16, 16 width - 16] in Q4, y
- * likewise) is inside every side plane of the renderer's clipper: its
- * outcode's floors (clip.c) take less than 1.5 raw units off a distance
- * of z (1 - 1/16) (the projection's floor is below 1/16 pixel), positive
- * for z >= 2 raw, and z >= hither; mark_clipped takes the exact test for
- * every face where hither is below 16 raw. */
+ * beyond it, or is not projected (STP_DIRECT_UNPROJECTED, below -16).  A
+ * vertex a pixel inside (x in [16, 16 width - 16] in Q4, y likewise) is
+ * inside every plane of the renderer's clipper: not nearer than hither
+ * (it is projected), and inside each side plane, whose outcode's floors
+ * (clip.c) take less than 1.5 raw units off a distance of z (1 - 1/16)
+ * (the projection's floor is below 1/16 pixel), positive for z >= 2 raw,
+ * and z >= hither; mark_clipped takes the exact test for every face
+ * where hither is below 16 raw. */
 static int near_edge(const stp_direct_frame *f, const stp_direct_point *p)
 {
     return p->dx < 16 || p->dx > (int32_t)f->width * 16 - 16 || p->dy < 16 || p->dy > (int32_t)f->height * 16 - 16;
@@ -571,12 +573,14 @@ static int some_near_edge(const stp_direct_frame *f, const stp_direct_point *poi
             return 1;
     return 0;
 }
+
 /* The front faces among faces[] the renderer would clip, by the outcodes
  * (clip.c) of their vertices' view coordinates: STP_DIRECT_FACE_CLIPPED
- * added where some vertex is outside a side plane, the face not drawn
- * where all three are outside one (the renderer drops it); their count.
- * The exact test only for faces with a vertex near the picture's edge
- * (near_edge), none in a frame that has no such vertex. */
+ * added where some vertex is outside a plane (a side, or nearer than
+ * hither), the face not drawn where all three are outside one (the
+ * renderer drops it); their count.  The exact test only for faces with a
+ * vertex near the picture's edge or unprojected (near_edge), none in a
+ * frame that has no such vertex. */
 static uint16_t mark_clipped(const stp_direct_frame *f, uint16_t *faces)
 {
     const stp_mesh *mesh = f->mesh;
@@ -702,9 +706,10 @@ int stp_direct_frame_project_lit(stp_direct_frame *f, const stp_mesh *mesh, cons
 }
 
 #if !STP_DIRECT_COMPACT
-/* The painter's key of face k the picture's edge cuts: the renderer keys
- * what it stores, the clipped polygon, by its farthest vertex; 0 when
- * nothing is left of it (stored by neither).  Rare: out of line. */
+/* The painter's key of face k the picture's edge or the near plane cuts
+ * (STP_DIRECT_FACE_CLIPPED): the renderer keys what it stores, the
+ * clipped polygon, by its farthest vertex; 0 when nothing is left of it
+ * (stored by neither).  Rare: out of line. */
 STP_NOINLINE int clipped_key(const stp_direct_frame *f, const uint16_t *k, int32_t *key)
 {
     int32_t v[STP_DIRECT_CLIP_MAX][3];
