@@ -548,28 +548,29 @@ STP_DIRECT_CALL uint16_t face_intensity(const stp_direct_shading *s, const int16
 
 #if !STP_DIRECT_COMPACT
 /* Whether device point p lies within a pixel of the picture's edge or
- * beyond it, or is not projected (STP_DIRECT_UNPROJECTED, below -16).  A
- * vertex a pixel inside (x in [16, 16 width - 16] in Q4, y likewise) is
+ * beyond it, or is not projected (STP_DIRECT_UNPROJECTED, below -16):
+ * x outside [16, 16 width - 16] in Q4 or y outside [16, 16 height - 16],
+ * one unsigned comparison a coordinate with xs = 16 width - 32 and ys =
+ * 16 height - 32 (width, height >= 2).  A vertex a pixel inside is
  * inside every plane of the renderer's clipper: not nearer than hither
  * (it is projected), and inside each side plane, whose outcode's floors
  * (clip.c) take less than 1.5 raw units off a distance of z (1 - 1/16)
  * (the projection's floor is below 1/16 pixel), positive for z >= 2 raw,
  * and z >= hither; mark_clipped takes the exact test for every face
- * where hither is below 16 raw. */
-static int near_edge(const stp_direct_frame *f, const stp_direct_point *p)
+ * where hither is below 16 raw or the picture narrower than 2. */
+STP_HOT_INLINE int near_edge(const stp_direct_point *p, uint32_t xs, uint32_t ys)
 {
-    return p->dx < 16 || p->dx > (int32_t)f->width * 16 - 16 || p->dy < 16 || p->dy > (int32_t)f->height * 16 - 16;
+    return (uint32_t)((int32_t)p->dx - 16) > xs || (uint32_t)((int32_t)p->dy - 16) > ys;
 }
 
-/* Whether some point of points[0 .. count-1] is near_edge (width, height
- * >= 2): once a frame, one unsigned comparison a coordinate (x - 16
- * beyond 16 width - 32 as unsigned) */
-static int some_near_edge(const stp_direct_frame *f, const stp_direct_point *points, uint16_t count)
+/* Whether some point of f's points[0 .. count-1] is near_edge: once a
+ * frame */
+STP_NOINLINE int some_near_edge(const stp_direct_frame *f, const stp_direct_point *points, uint16_t count)
 {
     const uint32_t xs = (uint32_t)f->width * 16u - 32u, ys = (uint32_t)f->height * 16u - 32u;
     uint16_t k;
     for (k = 0; k < count; k++)
-        if ((uint32_t)((int32_t)points[k].dx - 16) > xs || (uint32_t)((int32_t)points[k].dy - 16) > ys)
+        if (near_edge(&points[k], xs, ys))
             return 1;
     return 0;
 }
@@ -581,20 +582,22 @@ static int some_near_edge(const stp_direct_frame *f, const stp_direct_point *poi
  * renderer drops it); their count.  The exact test only for faces with a
  * vertex near the picture's edge or unprojected (near_edge), none in a
  * frame that has no such vertex. */
-static uint16_t mark_clipped(const stp_direct_frame *f, uint16_t *faces)
+STP_NOINLINE uint16_t mark_clipped(const stp_direct_frame *f, uint16_t *faces)
 {
     const stp_mesh *mesh = f->mesh;
     const uint16_t *tri = mesh->triangles;
+    const uint32_t xs = (uint32_t)f->width * 16u - 32u, ys = (uint32_t)f->height * 16u - 32u;
+    const int every = f->hither < 16 || f->width < 2 || f->height < 2; /* every face's outcodes */
     stp_clip_volume volume;
     uint16_t t, clipped = 0;
-    if (f->hither >= 16 && f->width >= 2 && f->height >= 2 && !some_near_edge(f, f->points, mesh->vertex_count))
+    if (!every && !some_near_edge(f, f->points, mesh->vertex_count))
         return 0;
     stp_direct_clip_volume(f, &volume);
     for (t = 0; t < mesh->triangle_count; t++, tri += 3) {
         unsigned all = 31u, any = 0, code;
         int i;
-        if (faces[t] == 0 || (f->hither >= 16 && !near_edge(f, &f->points[tri[0]]) &&
-                              !near_edge(f, &f->points[tri[1]]) && !near_edge(f, &f->points[tri[2]])))
+        if (faces[t] == 0 || (!every && !near_edge(&f->points[tri[0]], xs, ys) &&
+                              !near_edge(&f->points[tri[1]], xs, ys) && !near_edge(&f->points[tri[2]], xs, ys)))
             continue;
         for (i = 0; i < 3; i++) {
             const stp_direct_point *p = &f->points[tri[i]];

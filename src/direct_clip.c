@@ -9,8 +9,6 @@
 
 #include "view_private.h" /* stp_view_lens, stp_view_perspective_device */
 
-#define SUB STP_SUBPIXEL_BITS
-
 void stp_direct_clip_volume(const stp_direct_frame *f, stp_clip_volume *v)
 {
     v->focal = f->focal;
@@ -34,11 +32,8 @@ int stp_direct_face_clip(const stp_direct_frame *f, const uint16_t k[3], int32_t
     }
     stp_direct_clip_volume(f, &volume);
     n = stp_clip_polygon(&volume, a, b, 0, 0, 3, &clipped, &spare, &values);
-    /* render.c's project (width, height <= 512: in int32) */
-    lens.focal = f->focal;
-    lens.hither = f->hither;
-    lens.half_width = (int32_t)f->width << (SUB - 1);
-    lens.half_height = (int32_t)f->height << (SUB - 1);
+    /* render.c's project (width, height <= 512) */
+    stp_view_lens_make(&lens, f->focal, f->hither, f->width, f->height);
     for (i = 0; i < n; i++)
         stp_view_perspective_device(&lens, &clipped[i], out[i]);
     return n;

@@ -439,10 +439,7 @@ OUT_OF_LINE int prepare_call(mesh_context *c)
     big = stp_abs32(lo.x) | stp_abs32(lo.y) | stp_abs32(lo.z) | stp_abs32(hi.x) |
            stp_abs32(hi.y) | stp_abs32(hi.z);
     c->inside = box_inside(r, c->mesh, &lo, &hi, f->scale2);
-    c->lens.focal = r->focal;
-    c->lens.hither = r->hither;
-    c->lens.half_width = (int32_t)r->width << (STP_SUBPIXEL_BITS - 1);
-    c->lens.half_height = (int32_t)r->height << (STP_SUBPIXEL_BITS - 1);
+    stp_view_lens_make(&c->lens, r->focal, r->hither, r->width, r->height);
     c->focal_bits = (uint8_t)stp_bit_length32((uint32_t)r->focal);
     stp_render_side_estimate_make(f, big, &c->side_estimate);
     return 1;

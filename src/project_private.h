@@ -22,6 +22,17 @@ typedef struct stp_view_lens {
     int32_t half_width, half_height;
 } stp_view_lens;
 
+/* The lens of a width x height picture (each <= 32767, so the halves in
+ * Q4 fit int32) seen with focal and hither */
+static inline void stp_view_lens_make(stp_view_lens *lens, stp_fix focal, stp_fix hither, uint32_t width,
+                                      uint32_t height)
+{
+    lens->focal = focal;
+    lens->hither = hither;
+    lens->half_width = (int32_t)width << (STP_SUBPIXEL_BITS - 1);
+    lens->half_height = (int32_t)height << (STP_SUBPIXEL_BITS - 1);
+}
+
 #if !STP_WIDE_ARITH
 /* The 32-bit form by restoring division (stp_project_divide) rather than
  * a reciprocal of z: on cores without a 32-bit multiply (AVR), and in

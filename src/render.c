@@ -613,11 +613,8 @@ static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
     if (r->projection == STP_PERSPECTIVE) {
         stp_view_lens lens;
         int32_t d[3];
-        lens.focal = r->focal;
-        lens.hither = r->hither;
-        /* width, height <= 32767 (stp_renderer_create): in int32 */
-        lens.half_width = (int32_t)r->width << (STP_SUBPIXEL_BITS - 1);
-        lens.half_height = (int32_t)r->height << (STP_SUBPIXEL_BITS - 1);
+        /* width, height <= 32767 (stp_renderer_create) */
+        stp_view_lens_make(&lens, r->focal, r->hither, r->width, r->height);
         stp_view_perspective_device(&lens, &p, d);
         out->x = d[0];
         out->y = d[1];
