@@ -715,13 +715,13 @@ int stp_direct_frame_project_lit(stp_direct_frame *f, const stp_mesh *mesh, cons
  * (stored by neither).  Rare: out of line. */
 STP_NOINLINE int clipped_key(const stp_direct_frame *f, const uint16_t *k, int32_t *key)
 {
-    int32_t v[STP_DIRECT_CLIP_MAX][3];
+    stp_instr v[STP_DIRECT_CLIP_MAX];
     int m = stp_direct_face_clip(f, k, v), i;
     if (m < 3)
         return 0;
-    *key = v[0][2];
+    *key = v[0].z;
     for (i = 1; i < m; i++)
-        *key = v[i][2] < *key ? v[i][2] : *key;
+        *key = v[i].z < *key ? v[i].z : *key;
     return 1;
 }
 #endif

@@ -114,43 +114,34 @@ STP_HOT_INLINE int band_start(const stp_direct_frame *f, uint8_t *band, size_t s
 
 #if !STP_DIRECT_COMPACT
 /* A face the picture's edge cuts (STP_DIRECT_FACE_CLIPPED), as the
- * renderer draws it: clipped and projected (stp_direct_face_clip), its
- * rows from the polygon raster's edges (edge_walk_private.h: the
- * crossings the triangle walk gives), in device coordinates (not moved);
- * rare, out of line */
+ * renderer draws it: clipped and projected (stp_direct_face_clip), set up
+ * by the polygon raster's set-up (edge_walk_private.h's stp_polygon_*,
+ * raster.c's draw_polygon's), each row's crossings into runs of the one
+ * run filler, in device coordinates (not moved); rare, out of line */
 STP_NOINLINE void draw_clipped_face(const stp_direct_frame *f, const uint16_t k[3], uint8_t intensity, uint8_t *band,
                                     size_t stride, int page_shift, const stp_band_rows *rows)
 {
-    int32_t v[STP_DIRECT_CLIP_MAX][3], ymin, ymax, top = rows->top - DEVICE_ORIGIN, end = rows->end - DEVICE_ORIGIN;
+    stp_instr v[STP_DIRECT_CLIP_MAX];
     stp_edge edges[STP_DIRECT_CLIP_MAX];
     stp_crossing crossings[STP_DIRECT_CLIP_MAX];
-    int n = stp_direct_face_clip(f, k, v), ne = 0, i, y, y_first, y_last, y0 = (int)rows->y0 - ORIGIN_PIXELS;
+    int32_t ymin, ymax, y, first, last, top = rows->top - DEVICE_ORIGIN, end = rows->end - DEVICE_ORIGIN,
+                                        y0 = (int32_t)rows->y0 - ORIGIN_PIXELS;
+    int n = stp_direct_face_clip(f, k, v), ne;
     if (n < 3)
         return;
-    ymin = ymax = v[0][1];
-    for (i = 0; i < n; i++) {
-        ymin = v[i][1] < ymin ? v[i][1] : ymin;
-        ymax = v[i][1] > ymax ? v[i][1] : ymax;
-        if (stp_edge_setup(&edges[ne], v[i][0], v[i][1], v[i + 1 == n ? 0 : i + 1][0], v[i + 1 == n ? 0 : i + 1][1]))
-            ne++;
-    }
+    stp_polygon_y_extent(v, n, &ymin, &ymax);
     if (ymax <= top || ymin >= end)
         return;
-    /* raster.c's draw_polygon: rows whose centres lie in [ymin, ymax) and
-     * in the band */
-    y_first = (int)((ymin < top ? top : ymin) >> SUB);
-    y_last = (int)((ymax > end ? end : ymax) >> SUB);
-    if (y_last > y0 + (int)rows->count - 1)
-        y_last = y0 + (int)rows->count - 1;
-    stp_edges_start(edges, ne, (int32_t)y_first * (1 << SUB) + STP_HALF_PIXEL, 0);
-    for (y = y_first; y <= y_last; y++) {
-        int nc = stp_edges_row(edges, ne, (int32_t)y * (1 << SUB) + STP_HALF_PIXEL, 0, crossings), c;
+    ne = stp_polygon_edges(edges, v, n, 0);
+    stp_polygon_rows(edges, ne, ymin, ymax, top, end, y0 + (int32_t)rows->count - 1, 0, &first, &last);
+    for (y = first; y <= last; y++) {
+        int nc = stp_edges_row(edges, ne, y * (1 << SUB) + STP_HALF_PIXEL, 0, crossings), c;
         unsigned r = (unsigned)(y - y0); /* the band's row */
         uint32_t p1, p2;
         for (c = 0; c + 1 < nc; c += 2)
             if (stp_span_pixels(crossings[c].x, crossings[c + 1].x, f->width, &p1, &p2))
                 stp_halftone_fill_bits(band + (r >> page_shift) * stride, (uint8_t)(page_shift ? 1u << (r & 7) : 0u),
-                                       (unsigned)p1, (unsigned)p2, pattern_of(f->cell, y, intensity));
+                                       (unsigned)p1, (unsigned)p2, pattern_of(f->cell, (int)y, intensity));
     }
 }
 

@@ -18,8 +18,9 @@ void stp_direct_clip_volume(const stp_direct_frame *f, stp_clip_volume *v)
     v->parallel = 0;
 }
 
-int stp_direct_face_clip(const stp_direct_frame *f, const uint16_t k[3], int32_t out[STP_DIRECT_CLIP_MAX][3])
+int stp_direct_face_clip(const stp_direct_frame *f, const uint16_t k[3], stp_instr out[STP_DIRECT_CLIP_MAX])
 {
+    int32_t d[3];
     stp_vec3 a[STP_DIRECT_CLIP_MAX], b[STP_DIRECT_CLIP_MAX], *clipped, *spare;
     stp_fix *values;
     stp_clip_volume volume;
@@ -34,7 +35,15 @@ int stp_direct_face_clip(const stp_direct_frame *f, const uint16_t k[3], int32_t
     n = stp_clip_polygon(&volume, a, b, 0, 0, 3, &clipped, &spare, &values);
     /* render.c's project (width, height <= 512) */
     stp_view_lens_make(&lens, f->focal, f->hither, f->width, f->height);
-    for (i = 0; i < n; i++)
-        stp_view_perspective_device(&lens, &clipped[i], out[i]);
+    for (i = 0; i < n; i++) {
+        stp_view_perspective_device(&lens, &clipped[i], d);
+        out[i].op = 0;
+        out[i].x = d[0];
+        out[i].y = d[1];
+        out[i].z = d[2];
+#if STP_WITH_GOURAUD
+        out[i].shade = -1; /* flat */
+#endif
+    }
     return n;
 }

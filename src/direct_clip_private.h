@@ -8,6 +8,7 @@
 #include <stdint.h>
 
 #include "stipple/direct.h"
+#include "stipple/render.h" /* stp_instr */
 #include "clip_private.h" /* stp_clip_volume */
 
 /* The most vertices a triangle keeps when clipped by the pyramid's five
@@ -23,8 +24,8 @@ void stp_direct_clip_volume(const stp_direct_frame *f, stp_clip_volume *v);
  * the renderer's clipper (clip.c) on its vertices' view coordinates, each
  * vertex then projected by the renderer's projection (render.c's
  * project: device x, y in Q4 clamped to [0, 16 width] and [0, 16 height],
- * and the depth key) into out[0 .. n-1]; returns n, below 3 when nothing
- * is left to draw. */
-int stp_direct_face_clip(const stp_direct_frame *f, const uint16_t k[3], int32_t out[STP_DIRECT_CLIP_MAX][3]);
+ * and the depth key, a flat vertex as the display file holds it) into
+ * out[0 .. n-1]; returns n, below 3 when nothing is left to draw. */
+int stp_direct_face_clip(const stp_direct_frame *f, const uint16_t k[3], stp_instr out[STP_DIRECT_CLIP_MAX]);
 
 #endif

@@ -516,4 +516,58 @@ static inline int stp_span_pixels(int32_t xl, int32_t xr, uint32_t width, uint32
     return 1;
 }
 
+/* ---- the polygon raster's set-up: raster.c's draw_polygon and direct
+ * drawing's clipped faces (direct_band.c), then each its own spans ----
+ * stp_polygon_y_extent: the lowest and highest device y (Q27.4) of
+ * polygon v[0..n-1] (n >= 1).
+ * stp_polygon_edges: its edges into edges[] (n of room), oriented top to
+ * bottom, those no row centre crosses dropped, with their ends' shades
+ * when smooth; returns their count.
+ * stp_polygon_rows: for a polygon with y extent [ymin, ymax) that reaches
+ * the band's [top, end) (Q27.4, >= 0), the rows whose centres lie in both,
+ * at most last_row, in *first and *last (*first > *last: none), and its ne
+ * edges put on the first one's centre. */
+STP_HOT_INLINE void stp_polygon_y_extent(const stp_instr *v, int n, int32_t *ymin, int32_t *ymax)
+{
+    int32_t lo = v[0].y, hi = v[0].y;
+    int i;
+    for (i = 1; i < n; i++) {
+        if (v[i].y < lo)
+            lo = v[i].y;
+        if (v[i].y > hi)
+            hi = v[i].y;
+    }
+    *ymin = lo;
+    *ymax = hi;
+}
+
+STP_HOT_INLINE int stp_polygon_edges(stp_edge *edges, const stp_instr *v, int n, int smooth)
+{
+    int i, ne = 0;
+    for (i = 0; i < n; i++) {
+        const stp_instr *a = &v[i], *b = &v[i + 1 == n ? 0 : i + 1];
+        int dir = stp_edge_setup(&edges[ne], a->x, a->y, b->x, b->y);
+        if (dir == 0)
+            continue;
+#if STP_WITH_GOURAUD
+        if (smooth)
+            stp_edge_shades(&edges[ne], dir > 0 ? a->shade : b->shade, dir > 0 ? b->shade : a->shade);
+#else
+        (void)smooth;
+#endif
+        ne++;
+    }
+    return ne;
+}
+
+STP_HOT_INLINE void stp_polygon_rows(stp_edge *edges, int ne, int32_t ymin, int32_t ymax, int32_t top, int32_t end,
+                                     int32_t last_row, int smooth, int32_t *first, int32_t *last)
+{
+    *first = (ymin < top ? top : ymin) >> STP_SUBPIXEL_BITS;
+    *last = (ymax > end ? end : ymax) >> STP_SUBPIXEL_BITS;
+    if (*last > last_row)
+        *last = last_row;
+    stp_edges_start(edges, ne, *first * (1 << STP_SUBPIXEL_BITS) + STP_HALF_PIXEL, smooth);
+}
+
 #endif

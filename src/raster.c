@@ -1637,43 +1637,6 @@ static void draw_triangle(frame *fr, const stp_instr *v, paint style, int use_z,
 #endif
 #endif
 
-/* The lowest and highest y of the polygon v[0..n-1]. */
-STP_HOT_INLINE void polygon_y_extent(const stp_instr *v, int n, int32_t *ymin, int32_t *ymax)
-{
-    int32_t lo = INT32_MAX, hi = INT32_MIN;
-    int i;
-    for (i = 0; i < n; i++) {
-        if (v[i].y < lo)
-            lo = v[i].y;
-        if (v[i].y > hi)
-            hi = v[i].y;
-    }
-    *ymin = lo;
-    *ymax = hi;
-}
-
-/* The polygon v[0..n-1]'s edges into r->edges, oriented top to bottom,
- * horizontal ones dropped, with their ends' shades when smooth; returns
- * their count. */
-STP_HOT_INLINE int polygon_edges(stp_renderer *r, const stp_instr *v, int n, int smooth)
-{
-    int i, ne = 0;
-    for (i = 0; i < n; i++) {
-        const stp_instr *a = &v[i], *b = &v[i + 1 == n ? 0 : i + 1];
-        int dir = stp_edge_setup(&r->edges[ne], a->x, a->y, b->x, b->y);
-        if (dir == 0)
-            continue;
-#if STP_WITH_GOURAUD
-        if (smooth)
-            stp_edge_shades(&r->edges[ne], dir > 0 ? a->shade : b->shade, dir > 0 ? b->shade : a->shade);
-#else
-        (void)smooth;
-#endif
-        ne++;
-    }
-    return ne;
-}
-
 #if STP_WITH_GOURAUD
 /* The shade along a span from its two crossings c[0] and c[1], at pixel
  * centres with 16 extra fractional bits: *s0 at p1's, *sstep per pixel. */
@@ -1735,7 +1698,7 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
 #else
     const int smooth = 0;
 #endif
-    int32_t ymin, ymax;
+    int32_t ymin, ymax, first, last;
     int direct;
     int32_t band_top = fr->rows.top, band_bottom = fr->rows.end;
     uint32_t y, y_first, y_last;
@@ -1749,7 +1712,7 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
         return;
     }
 #endif
-    polygon_y_extent(v, n, &ymin, &ymax);
+    stp_polygon_y_extent(v, n, &ymin, &ymax);
     if (ymax <= band_top || ymin >= band_bottom)
         return;
 #if STP_WITH_ZBUFFER
@@ -1759,13 +1722,11 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
     (void)ordinal;
 #endif
     direct = paint_setup(fr, v, style, smooth, t);
-    ne = polygon_edges(r, v, n, smooth);
-    /* rows whose centres lie in [ymin, ymax) and in the band */
-    y_first = (uint32_t)((ymin < band_top ? band_top : ymin) >> SUB);
-    y_last = (uint32_t)((ymax > band_bottom ? band_bottom : ymax) >> SUB);
-    if (y_last >= fr->rows.y0 + fr->rows.count)
-        y_last = fr->rows.y0 + fr->rows.count - 1;
-    stp_edges_start(r->edges, ne, (int32_t)(y_first << SUB) + HALF_PIXEL, smooth);
+    ne = stp_polygon_edges(r->edges, v, n, smooth);
+    stp_polygon_rows(r->edges, ne, ymin, ymax, band_top, band_bottom, (int32_t)(fr->rows.y0 + fr->rows.count - 1u),
+                     smooth, &first, &last);
+    y_first = (uint32_t)first;
+    y_last = (uint32_t)last;
 #if STP_WITH_ZBUFFER
     /* the depth at device x = 0 of the current row centre, stepped down
      * (Q12; |ddx|, |ddy| <= 2^40 and coordinates below 2^20, so every

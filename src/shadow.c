@@ -307,9 +307,9 @@ static stp_vec3 project_map(const stp_shadow_map *sm, stp_vec3 p)
 static int32_t fill_map(stp_renderer *r, const stp_shadow_map *sm, const stp_vec3 *v, int n)
 {
     int64_t a = 0, b = 0, c = 0, sx = 0, sy = 0, sd = 0, ddx, ddy, xc, yc, dc, bias;
-    int32_t ymin = INT32_MAX, ymax = INT32_MIN;
+    int32_t ymin = INT32_MAX, ymax = INT32_MIN, first, last;
     int i, ne = 0;
-    uint32_t y, y_last;
+    uint32_t y;
     for (i = 0; i < n; i++) {
         const stp_vec3 *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
         /* depths with 4 fractional bits here: every term < 2^40 */
@@ -344,13 +344,10 @@ static int32_t fill_map(stp_renderer *r, const stp_shadow_map *sm, const stp_vec
         if (stp_edge_setup(&r->edges[ne], pa->x, pa->y, pb->x, pb->y) != 0)
             ne++;
     }
-    /* texel rows whose centres lie in [ymin, ymax) */
-    y_last = (uint32_t)(ymax >> SUB);
-    if (y_last >= sm->height)
-        y_last = sm->height - 1;
-    y = (uint32_t)(ymin >> SUB);
-    stp_edges_start(r->edges, ne, (int32_t)(y << SUB) + HALF_PIXEL, 0);
-    for (; y <= y_last; y++) {
+    /* texel rows whose centres lie in [ymin, ymax) (the map's rows: v is
+     * clamped to [0, 16 height]) */
+    stp_polygon_rows(r->edges, ne, ymin, ymax, 0, ymax, (int32_t)sm->height - 1, 0, &first, &last);
+    for (y = (uint32_t)first; (int32_t)y <= last; y++) {
         int32_t yc_row = (int32_t)(y << SUB) + HALF_PIXEL;
         uint16_t *row = sm->depth + (size_t)y * sm->width;
         int nc = stp_edges_row(r->edges, ne, yc_row, 0, r->crossings), k;
