@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Private: the edge walker, the edge setup and row crossings the polygon
- * raster (raster.c) and the shadow maps (shadow.c) share, inline so
- * neither pays a call per edge and row; and the 32 x 32 -> 64-bit products
- * they use.  No .c file of its own.  The formats are stp_edge's
+ * raster (raster.c), direct drawing's bands (direct_band.c) and the shadow
+ * maps (shadow.c) share, inline so none pays a call per edge and row; and
+ * the 32 x 32 -> 64-bit products they use.  No .c file of its own.  The formats are stp_edge's
  * (renderer_state.h). */
 #ifndef STIPPLE_EDGE_WALK_PRIVATE_H
 #define STIPPLE_EDGE_WALK_PRIVATE_H
