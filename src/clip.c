@@ -8,24 +8,22 @@
 
 int64_t stp_clip_distance(const stp_clip_volume *v, int plane, stp_vec3 p)
 {
-    /* both terms have F fractional bits and stay below 2^47 */
-    int64_t fx = stp_asr64((int64_t)v->focal * p.x, F), fy = stp_asr64((int64_t)v->focal * p.y, F);
-    int64_t hw, hh;
+    /* both terms have F fractional bits and stay below 2^47; each plane's
+     * two products alone (64-bit products are library calls on 32-bit
+     * cores) */
+    int64_t f, half;
+    int across = plane <= 2; /* planes 1 and 2 bound x, 3 and 4 y */
+    int32_t size = across ? v->width : v->height;
     if (plane == 0)
         return (int64_t)p.z - v->near;
-    if (!v->parallel) {
-        /* x_screen = W/2 + focal x / z lies in [0, W] <=> |focal x| <= (W/2) z */
-        hw = ((int64_t)v->width * p.z) / 2;
-        hh = ((int64_t)v->height * p.z) / 2;
-    } else {
-        hw = ((int64_t)v->width * ONE) / 2;
-        hh = ((int64_t)v->height * ONE) / 2;
-    }
+    f = stp_asr64((int64_t)v->focal * (across ? p.x : p.y), F);
+    /* x_screen = W/2 + focal x / z lies in [0, W] <=> |focal x| <= (W/2) z */
+    half = ((int64_t)size * (v->parallel ? ONE : p.z)) / 2;
     switch (plane) {
-    case 1: return fx + hw;
-    case 2: return hw - fx;
-    case 3: return hh - fy;
-    default: return fy + hh;
+    case 1: return f + half;
+    case 2: return half - f;
+    case 3: return half - f;
+    default: return f + half;
     }
 }
 
@@ -88,11 +86,14 @@ int stp_clip_polygon(const stp_clip_volume *v, stp_vec3 *a, stp_vec3 *b, stp_fix
     stp_fix *s_in = sa, *s_out = sb, *s_tmp;
     int plane, i, m;
     for (plane = 0; plane < 5 && n > 0; plane++) {
+        /* each vertex's distance once: the edge's end's is the next
+         * edge's start's, the first vertex's the last edge's end's */
+        int64_t d_first = stp_clip_distance(v, plane, in[0]), dp = d_first, dq;
         m = 0;
-        for (i = 0; i < n; i++) {
-            int j = (i + 1) % n;
+        for (i = 0; i < n; i++, dp = dq) {
+            int j = i + 1 == n ? 0 : i + 1;
             stp_vec3 p = in[i], q = in[j];
-            int64_t dp = stp_clip_distance(v, plane, p), dq = stp_clip_distance(v, plane, q);
+            dq = j == 0 ? d_first : stp_clip_distance(v, plane, q);
             if (dp >= 0) {
                 if (s_in)
                     s_out[m] = s_in[i];

@@ -113,11 +113,28 @@ STP_HOT_INLINE int band_start(const stp_direct_frame *f, uint8_t *band, size_t s
 }
 
 #if !STP_DIRECT_COMPACT
+/* Whether a face the side planes alone cut (every corner projected, so in
+ * front of the near plane) reaches none of the row centres of the band
+ * [top, end) (Q4, device coordinates): clipped, it lies within its
+ * corners' projection (a projection is continuous in front of the eye),
+ * up to the clipped vertices' rounding, below a subpixel and a half (the
+ * margin: 2).  So all three corners at most top + 4 leave the clipped
+ * polygon's y below top + 8, the band's first centre; all at least end
+ * - 4 leave it above end - 8, its last.  0 for a face the near plane cuts
+ * (a corner unprojected): clipped first. */
+STP_HOT_INLINE int corners_off_band(const stp_direct_frame *f, const uint16_t k[3], int32_t top, int32_t end)
+{
+    int32_t a = f->points[k[0]].dy, b = f->points[k[1]].dy, c = f->points[k[2]].dy;
+    if (a == STP_DIRECT_UNPROJECTED || b == STP_DIRECT_UNPROJECTED || c == STP_DIRECT_UNPROJECTED)
+        return 0;
+    return (a <= top + 4 && b <= top + 4 && c <= top + 4) || (a >= end - 4 && b >= end - 4 && c >= end - 4);
+}
+
 /* A face the picture's edge cuts (STP_DIRECT_FACE_CLIPPED), as the
  * renderer draws it: clipped and projected (stp_direct_face_clip), set up
  * by the polygon raster's set-up (edge_walk_private.h's stp_polygon_*,
  * raster.c's draw_polygon's), each row's crossings into runs of the one
- * run filler, in device coordinates (not moved); rare, out of line */
+ * run filler, in device coordinates (not moved); out of line */
 STP_NOINLINE void draw_clipped_face(const stp_direct_frame *f, const uint16_t k[3], uint8_t intensity, uint8_t *band,
                                     size_t stride, int page_shift, const stp_band_rows *rows)
 {
@@ -126,7 +143,13 @@ STP_NOINLINE void draw_clipped_face(const stp_direct_frame *f, const uint16_t k[
     stp_crossing crossings[STP_DIRECT_CLIP_MAX];
     int32_t ymin, ymax, y, first, last, top = rows->top - DEVICE_ORIGIN, end = rows->end - DEVICE_ORIGIN,
                                         y0 = (int32_t)rows->y0 - ORIGIN_PIXELS;
-    int n = stp_direct_face_clip(f, k, v), ne;
+    int n, ne;
+    /* a face crossing a side of the picture: left out of the bands it
+     * cannot reach before its clip (each clip a few thousand instructions
+     * on a Cortex-M0+) */
+    if (corners_off_band(f, k, top, end))
+        return;
+    n = stp_direct_face_clip(f, k, v);
     if (n < 3)
         return;
     stp_polygon_y_extent(v, n, &ymin, &ymax);

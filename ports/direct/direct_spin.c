@@ -17,6 +17,17 @@ static uint16_t turn(uint32_t i, uint32_t two32_over_n)
 #define OVER_AROUND 171798692u /* 2^32 / 25 */
 #define OVER_TUBE 214748365u   /* 2^32 / 20 */
 
+/* STP_SPIN_PLACE 1's place of the torus's centre */
+#ifndef SPIN_PLACE_X
+#define SPIN_PLACE_X 40000 /* 0.61 */
+#endif
+#ifndef SPIN_PLACE_Y
+#define SPIN_PLACE_Y 158000 /* 2.41 */
+#endif
+#ifndef SPIN_PLACE_Z
+#define SPIN_PLACE_Z 282000 /* 4.30, 0.9 units from the eye */
+#endif
+
 static stp_vec3 point(stp_fix x, stp_fix y, stp_fix z)
 {
     stp_vec3 p;
@@ -77,7 +88,8 @@ int direct_spin_frame(direct_spin *s, uint16_t n, stp_direct_frame *f)
 {
     stp_direct_model pose;
     int status;
-    stp_direct_model_turn(&pose, (uint16_t)(n * 1024u), (uint16_t)(n * 410u), ONE, point(0, 0, 0));
+    stp_direct_model_turn(&pose, (uint16_t)(n * 1024u), (uint16_t)(n * 410u), ONE,
+                          STP_SPIN_PLACE ? point(SPIN_PLACE_X, SPIN_PLACE_Y, SPIN_PLACE_Z) : point(0, 0, 0));
     status = stp_direct_frame_project(f, &s->mesh, &pose, &s->view, &s->light, 16, bayer4, s->points,
                                       SPIN_VERTICES, s->faces, SPIN_TRIANGLES);
 #if SPIN_SORTED

@@ -32,6 +32,15 @@
 #define SPIN_SORTED 0
 #endif
 
+/* STP_SPIN_PLACE 1: the torus's centre moved to (0.61, 2.41, 4.30), 0.9
+ * units from the eye, so the near plane and the picture's edges cut it
+ * (frame 10: 43 faces clipped, 26 vertices left unprojected): direct
+ * drawing's clipping on the chip, test_firmware_mps2_direct_clipped;
+ * 0 (default): about the origin. */
+#ifndef STP_SPIN_PLACE
+#define STP_SPIN_PLACE 0
+#endif
+
 typedef struct direct_spin {
     stp_mesh mesh;
     stp_direct_view view;
