@@ -117,11 +117,13 @@ STP_HOT_INLINE int band_start(const stp_direct_frame *f, uint8_t *band, size_t s
  * front of the near plane) reaches none of the row centres of the band
  * [top, end) (Q4, device coordinates): clipped, it lies within its
  * corners' projection (a projection is continuous in front of the eye),
- * up to the clipped vertices' rounding, below a subpixel and a half (the
- * margin: 2).  So all three corners at most top + 4 leave the clipped
- * polygon's y below top + 8, the band's first centre; all at least end
- * - 4 leave it above end - 8, its last.  0 for a face the near plane cuts
- * (a corner unprojected): clipped first. */
+ * up to the roundings: a subpixel for the corners' projection, a subpixel
+ * for the clipped vertices' (their view points' last bits move them less
+ * than one at hither).  So all three corners at most top + 4 leave the
+ * clipped polygon's y at most top + 6, above top + 8, the band's first
+ * centre; all at least end - 4 leave it at least end - 6, below end - 8,
+ * its last (the clamp into the picture keeps both).  0 for a face the
+ * near plane cuts (a corner unprojected): clipped first. */
 STP_HOT_INLINE int corners_off_band(const stp_direct_frame *f, const uint16_t k[3], int32_t top, int32_t end)
 {
     int32_t a = f->points[k[0]].dy, b = f->points[k[1]].dy, c = f->points[k[2]].dy;
