@@ -117,17 +117,26 @@ STP_HOT_INLINE int band_start(const stp_direct_frame *f, uint8_t *band, size_t s
  * front of the near plane) reaches none of the row centres of the band
  * [top, end) (Q4, device coordinates): clipped, it lies within its
  * corners' projection (a projection is continuous in front of the eye),
- * up to the roundings: a subpixel for the corners' projection, a subpixel
- * for the clipped vertices' (their view points' last bits move them less
- * than one at hither).  So all three corners at most top + 4 leave the
- * clipped polygon's y at most top + 6, above top + 8, the band's first
- * centre; all at least end - 4 leave it at least end - 6, below end - 8,
- * its last (the clamp into the picture keeps both).  0 for a face the
- * near plane cuts (a corner unprojected): clipped first. */
+ * up to the roundings: below a subpixel for the corners' projection, below
+ * one for the clipped vertices' and, for corners at least zmin raw from
+ * the eye, at most one for the clipped points' last bits.  (Each of the
+ * four side planes' clips moves a new point at most a raw unit off the
+ * face, so at most 4 in y and z; a raw unit in y or z moves a device y by
+ * at most (A + |y / z| A) / z subpixels, A = focal / 2^(F - 4), and |y / z|
+ * A <= 8 height inside the picture: zmin = 4 (A + 8 height) keeps the
+ * whole below one; nearer corners, where it grows without bound, are
+ * clipped first.)  So all three corners at most top + 4 leave the clipped
+ * polygon's y below top + 7, above top + 8, the band's first centre; all
+ * at least end - 4 leave it above end - 7, below end - 8, its last (the
+ * clamp into the picture keeps both).  0 for a face the near plane cuts (a
+ * corner unprojected): clipped first. */
 STP_HOT_INLINE int corners_off_band(const stp_direct_frame *f, const uint16_t k[3], int32_t top, int32_t end)
 {
-    int32_t a = f->points[k[0]].dy, b = f->points[k[1]].dy, c = f->points[k[2]].dy;
-    if (a == STP_DIRECT_UNPROJECTED || b == STP_DIRECT_UNPROJECTED || c == STP_DIRECT_UNPROJECTED)
+    const stp_direct_point *p = &f->points[k[0]], *q = &f->points[k[1]], *r = &f->points[k[2]];
+    int32_t a = p->dy, b = q->dy, c = r->dy;
+    int32_t zmin = ((f->focal >> (STP_FIX_FRAC_BITS - SUB)) + ((int32_t)f->height << (SUB - 1))) * 4;
+    if (a == STP_DIRECT_UNPROJECTED || b == STP_DIRECT_UNPROJECTED || c == STP_DIRECT_UNPROJECTED ||
+        p->z < zmin || q->z < zmin || r->z < zmin)
         return 0;
     return (a <= top + 4 && b <= top + 4 && c <= top + 4) || (a >= end - 4 && b >= end - 4 && c >= end - 4);
 }
