@@ -15,36 +15,7 @@
  * in the walk too; only its crossings' accumulators are 32-bit. */
 #include "stipple/direct.h"
 
-#include "direct_private.h"
-#include "run_fill_private.h" /* stp_halftone_fill_bits, the one run filler */
-#include "direct_clip_private.h" /* faces the picture's edge cuts */
-
-/* Direct drawing's device coordinates lie in [-DEVICE_ORIGIN,
- * DEVICE_ORIGIN) (Q4, direct.c); moved by DEVICE_ORIGIN (a whole number
- * of pixels, ORIGIN_PIXELS) they are the walk's x, y in [0, 2^14): >= 0,
- * an int, and narrow (STP_TRIANGLE_NARROW), with the same crossings and
- * pixels, moved by ORIGIN_PIXELS.  The walk reads the points themselves. */
-#define DEVICE_ORIGIN 8192
-#define STP_TRI_VERTEX stp_direct_point
-#define STP_TRI_COORD int
-#define STP_TRI_X(p) ((int)(p)->dx + DEVICE_ORIGIN)
-#define STP_TRI_Y(p) ((int)(p)->dy + DEVICE_ORIGIN)
-#include "edge_walk_private.h" /* the triangle walk, the one scan converter of triangles */
-
-#define SUB STP_SUBPIXEL_BITS
-#define ORIGIN_PIXELS (DEVICE_ORIGIN >> SUB)
-
-/* The byte of cell row (y mod 4) at intensity: bit 7 - x ON where
- * intensity > threshold (x mod 4), repeated. */
-static uint8_t pattern_of(const uint8_t *cell, int y, uint8_t intensity)
-{
-    const uint8_t *t = &cell[(y & 3) * 4];
-    unsigned p = 0, x;
-    STP_UNROLL4
-    for (x = 0; x < 4; x++)
-        p = p << 1 | (unsigned)(intensity > t[x]);
-    return (uint8_t)(p << 4 | p);
-}
+#include "direct_band_private.h" /* the walk at the moved origin, the band's helpers */
 
 /* One face's rows within the band's (rows: at the moved origin), through
  * the triangle walk (edge_walk_private.h), which also leaves out a face
@@ -90,6 +61,7 @@ static int band_shape(const stp_direct_frame *f, size_t stride, uint16_t y0, uin
     return f->layout != STP_BAND_ROWS || stride < ((size_t)f->width + 7u) / 8u ? STP_ERR_ARG : STP_OK;
 }
 
+
 /* The checks of stp_direct_draw_band, the band cleared and its rows at
  * the moved origin (*band_rows) and layout shift: STP_OK or the error */
 STP_HOT_INLINE int band_start(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0, uint16_t rows,
@@ -105,69 +77,24 @@ STP_HOT_INLINE int band_start(const stp_direct_frame *f, uint8_t *band, size_t s
         return status;
     for (i = 0; i < lines * stride; i++)
         band[i] = 0;
-    band_rows->y0 = (uint32_t)y0 + ORIGIN_PIXELS;
-    band_rows->count = rows;
-    band_rows->top = (int32_t)(band_rows->y0 << SUB);
-    band_rows->end = (int32_t)((band_rows->y0 + rows) << SUB);
+    band_rows_at(band_rows, y0, rows);
     return STP_OK;
 }
 
 #if !STP_DIRECT_COMPACT
-/* Whether a face the side planes alone cut (every corner projected, so in
- * front of the near plane) reaches none of the row centres of the band
- * [top, end) (Q4, device coordinates): clipped, it lies within its
- * corners' projection (a projection is continuous in front of the eye),
- * up to the roundings: below a subpixel for the corners' projection, below
- * one for the clipped vertices' and, for corners at least zmin raw from
- * the eye, at most one for the clipped points' last bits.  (Each of the
- * four side planes' clips moves a new point at most a raw unit off the
- * face, so at most 4 in y and z; a raw unit in y or z moves a device y by
- * at most (A + |y / z| A) / z subpixels, A = focal / 2^(F - 4), and |y / z|
- * A <= 8 height inside the picture: zmin = 4 (A + 8 height) keeps the
- * whole below one; nearer corners, where it grows without bound, are
- * clipped first.)  So all three corners at most top + 4 leave the clipped
- * polygon's y below top + 7, above top + 8, the band's first centre; all
- * at least end - 4 leave it above end - 7, below end - 8, its last (the
- * clamp into the picture keeps both).  0 for a face the near plane cuts (a
- * corner unprojected): clipped first. */
-STP_HOT_INLINE int corners_off_band(const stp_direct_frame *f, const uint16_t k[3], int32_t top, int32_t end)
-{
-    const stp_direct_point *p = &f->points[k[0]], *q = &f->points[k[1]], *r = &f->points[k[2]];
-    int32_t a = p->dy, b = q->dy, c = r->dy;
-    int32_t zmin = ((f->focal >> (STP_FIX_FRAC_BITS - SUB)) + ((int32_t)f->height << (SUB - 1))) * 4;
-    if (a == STP_DIRECT_UNPROJECTED || b == STP_DIRECT_UNPROJECTED || c == STP_DIRECT_UNPROJECTED ||
-        p->z < zmin || q->z < zmin || r->z < zmin)
-        return 0;
-    return (a <= top + 4 && b <= top + 4 && c <= top + 4) || (a >= end - 4 && b >= end - 4 && c >= end - 4);
-}
-
-/* A face the picture's edge cuts (STP_DIRECT_FACE_CLIPPED), as the
- * renderer draws it: clipped and projected (stp_direct_face_clip), set up
- * by the polygon raster's set-up (edge_walk_private.h's stp_polygon_*,
- * raster.c's draw_polygon's), each row's crossings into runs of the one
- * run filler, in device coordinates (not moved); out of line */
+/* A face the picture's edge cuts, as the renderer draws it
+ * (clipped_face_rows): each row's crossings into runs of the one run
+ * filler; out of line */
 STP_NOINLINE void draw_clipped_face(const stp_direct_frame *f, const uint16_t k[3], uint8_t intensity, uint8_t *band,
                                     size_t stride, int page_shift, const stp_band_rows *rows)
 {
     stp_instr v[STP_DIRECT_CLIP_MAX];
     stp_edge edges[STP_DIRECT_CLIP_MAX];
     stp_crossing crossings[STP_DIRECT_CLIP_MAX];
-    int32_t ymin, ymax, y, first, last, top = rows->top - DEVICE_ORIGIN, end = rows->end - DEVICE_ORIGIN,
-                                        y0 = (int32_t)rows->y0 - ORIGIN_PIXELS;
-    int n, ne;
-    /* a face crossing a side of the picture: left out of the bands it
-     * cannot reach before its clip (each clip a few thousand instructions
-     * on a Cortex-M0+) */
-    if (corners_off_band(f, k, top, end))
+    int32_t y, first, last, y0 = (int32_t)rows->y0 - ORIGIN_PIXELS;
+    int n, ne = clipped_face_rows(f, k, rows, v, &n, edges, &first, &last);
+    if (ne == 0)
         return;
-    n = stp_direct_face_clip(f, k, v);
-    if (n < 3)
-        return;
-    stp_polygon_y_extent(v, n, &ymin, &ymax);
-    if (ymax <= top || ymin >= end)
-        return;
-    ne = stp_polygon_edges(edges, v, n, 0);
-    stp_polygon_rows(edges, ne, ymin, ymax, top, end, y0 + (int32_t)rows->count - 1, 0, &first, &last);
     for (y = first; y <= last; y++) {
         int nc = stp_edges_row(edges, ne, y * (1 << SUB) + STP_HALF_PIXEL, 0, crossings), c;
         unsigned r = (unsigned)(y - y0); /* the band's row */
@@ -222,11 +149,16 @@ STP_HOT_INLINE void draw_in_order(const stp_direct_frame *f, uint8_t *band, size
 }
 #endif
 
+
 int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0,
                          uint16_t rows)
 {
     int page_shift = 0, status;
     stp_band_rows band_rows; /* at the moved origin */
+#if !STP_DIRECT_COMPACT
+    if (f != 0 && f->draw_depth != 0 && (f->zband == 0 || f->zband_count / (f->width ? f->width : 1u) < rows))
+        return STP_ERR_ARG; /* no room for the band's depths */
+#endif
     status = band_start(f, band, stride, y0, rows, &page_shift, &band_rows);
     if (status != STP_OK)
         return status;
@@ -241,6 +173,10 @@ int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride
         }
     }
 #else
+    if (f->draw_depth != 0) {
+        f->draw_depth(f, band, stride, y0, rows); /* depth-tested (stp_direct_frame_depth) */
+        return STP_OK;
+    }
     if (f->order != 0) {
         /* far to near (stp_direct_frame_sort); a frame without clipped
          * faces by the loop without their test */

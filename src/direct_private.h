@@ -11,6 +11,10 @@
 #include "view_private.h" /* stp_model_frame */
 #include "direct_view_private.h" /* STP_DIRECT_CALL */
 
+/* Direct drawing's Z buffer (stp_direct_frame_depth): not in the compact
+ * form, and only with the renderer's (config.h) */
+#define STP_DIRECT_DEPTH (!STP_DIRECT_COMPACT && STP_WITH_ZBUFFER)
+
 /* A light prepared for a view (include/stipple/direct.h: stp_direct_lit):
  * the face shader's constants (shade_fast.c's stp_shade_fast_prepare for
  * the one light in view coordinates, eye at the view origin, no

@@ -16,87 +16,11 @@
 #include "edge_walk_private.h"
 #include "div64_private.h"
 #include "sort_private.h" /* the painter's sort */
+#include "depth_private.h" /* the depth stage: keys, planes, depth-tested spans */
 
 #define SUB STP_SUBPIXEL_BITS
 #define HALF_PIXEL (1 << (SUB - 1))
 
-#if STP_WITH_ZBUFFER
-/* num / den truncated toward zero (C's division), den != 0.  Without wide
- * arithmetic: one 32-bit division when both fit 32 bits; when |den| <
- * 2^16 and |num| < 2^48, three of 16-bit digits (long division); else
- * the library's. */
-static int64_t div_trunc(int64_t num, int64_t den)
-{
-#if !STP_WIDE_ARITH && !STP_SMALL_DIVISION /* with it: its loop alone, smaller */
-    uint64_t un = num < 0 ? 0u - (uint64_t)num : (uint64_t)num, ud = den < 0 ? 0u - (uint64_t)den : (uint64_t)den;
-    if ((un | ud) < ((uint64_t)1 << 32)) { /* one 32-bit division: a small triangle's gradients */
-        uint32_t q = (uint32_t)un / (uint32_t)ud;
-        return (num < 0) != (den < 0) ? -(int64_t)q : (int64_t)q;
-    }
-    if (ud < 65536u && un < ((uint64_t)1 << 48)) {
-        uint32_t d = (uint32_t)ud, hi = (uint32_t)(un >> 32), q1, q2, q3, part;
-        q1 = hi / d;
-        part = ((hi - q1 * d) << 16) | (uint32_t)((un >> 16) & 0xFFFFu);
-        q2 = part / d;
-        part = ((part - q2 * d) << 16) | (uint32_t)(un & 0xFFFFu);
-        q3 = part / d;
-        un = ((uint64_t)q1 << 32) + ((uint64_t)q2 << 16) + q3;
-        return (num < 0) != (den < 0) ? -(int64_t)un : (int64_t)un;
-    }
-#endif
-    return STP_DIV64(num, den);
-}
-
-#if STP_WITH_TRIANGLE_PATH
-/* a b for |a b| < 2^63: a 32 x 32-bit product while a fits (ARMv6-M: no
- * 64 x 64-bit library call) */
-static int64_t mul_wide(int64_t a, int32_t b)
-{
-    if (!STP_WIDE_ARITH && a >= INT32_MIN && a <= INT32_MAX)
-        return stp_smul32x32((int32_t)a, b);
-    return a * b;
-}
-#endif
-
-/* depth_term_short (below) for g's magnitude m < 2^29 (extent >= 0) */
-STP_HOT_INLINE int depth_magnitude_short(uint32_t m, int32_t extent)
-{
-    uint32_t hi;
-    if (extent >= ((int32_t)1 << 14))
-        return 0;
-    /* m extent = hi 2^15 + (m mod 2^15) extent, hi = (m >> 15) extent < 2^28 */
-    hi = (m >> 15) * (uint32_t)extent;
-    return hi < (1u << 14) && (hi << 15) + (m & 0x7FFFu) * (uint32_t)extent < ((uint32_t)1 << 29);
-}
-
-#if STP_WITH_TRIANGLE_PATH
-/* |g| extent < 2^29 (extent >= 0): a depth gradient g (Q12 per subpixel)
- * over a triangle's extent in x or y, so each term of dc + ddx (x - xc) +
- * ddy (y - yc) at its pixel centres (x and xc within the vertices' x
- * extent, y and yc within their y extent) is below 2^29 and the sum, with
- * dc < 2^28 + 2^12, fits int32. */
-STP_HOT_INLINE int depth_term_short(int64_t g, int32_t extent)
-{
-    uint32_t low = (uint32_t)g;
-    /* g within int32 (its high word the low word's sign), then low + 2^29
-     * in [1, 2^30): |g| < 2^29 */
-    if ((uint32_t)((uint64_t)g >> 32) != (low >> 31 ? 0xFFFFFFFFu : 0u) ||
-        low + ((uint32_t)1 << 29) - 1u >= ((uint32_t)1 << 30) - 1u)
-        return 0;
-    return depth_magnitude_short(low >> 31 ? 0u - low : low, extent);
-}
-#endif
-
-/* floor(s / n) for n >= 1: n = 3 and 4 without a division */
-static uint32_t div_count(uint32_t s, uint32_t n)
-{
-    if (n == 3)
-        return stp_div3_u32(s);
-    if (n == 4)
-        return s >> 2;
-    return s / n;
-}
-#endif
 
 /* Where depth_q12 is three 32 x 32-bit products from 16-bit halves
  * (32-bit targets without wide arithmetic) it keeps its last results: 64
@@ -145,10 +69,7 @@ typedef struct frame {
      * written at bit page_one << (y mod 8) (page_bit_of) */
     uint8_t line_shift, page_one;
     stp_polygon_setup *setup; /* the caller's per-polygon depth setups, or NULL */
-    int32_t key_min, key_max; /* depth-key range of the visible polygons */
-    uint32_t key_range;       /* key_max - key_min, when positive */
-    uint32_t depth_scale;     /* depth_q12's reciprocal and its shift (wide arithmetic: its factor) */
-    int depth_shift;
+    depth_keys keys; /* the visible polygons' depth keys (depth_private.h) */
     /* MONO1 spans from pattern bytes: a threshold cell whose width divides
      * 8 (mono_fill); cell_mask its height - 1 when a power of two, else 0;
      * patterns[] the byte of each cell row for style pattern_style (-1:
@@ -592,16 +513,9 @@ static void paint_run(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pai
 }
 
 #if STP_WITH_ZBUFFER
-/* One pixel's depth from the span's Q12 depth: floor, clamped to 1..65535. */
-static uint16_t depth_of(int64_t d)
-{
-    int64_t dv = stp_asr64(d, 12);
-    return (uint16_t)(dv < 1 ? 1 : (dv > 65535 ? 65535 : dv));
-}
 
-/* What a depth-tested span paints its runs with: the MONO1 pattern byte
- * of its row straight into the band (flat, opaque, not shadowed, style in
- * the pattern cache) or paint_run. */
+/* What a depth-tested span of a style that does not go straight to the
+ * band (paint_setup) paints its runs with: paint_run. */
 typedef struct span_paint {
     const frame *fr;
     uint32_t y, x1;
@@ -609,12 +523,10 @@ typedef struct span_paint {
     int smooth;
     int64_t s0, sstep;
     stp_fix t;
-    uint8_t *row; /* NULL: through paint_run */
-    uint8_t pattern, page_bit;
 } span_paint;
 
 static void span_paint_init(span_paint *sp, const frame *fr, uint32_t y, uint32_t x1, paint style, int smooth,
-                            int64_t s0, int64_t sstep, stp_fix t, int direct)
+                            int64_t s0, int64_t sstep, stp_fix t)
 {
     sp->fr = fr;
     sp->y = y;
@@ -624,101 +536,12 @@ static void span_paint_init(span_paint *sp, const frame *fr, uint32_t y, uint32_
     sp->s0 = s0;
     sp->sstep = sstep;
     sp->t = t;
-    sp->row = 0;
-    sp->pattern = 0;
-    sp->page_bit = 0;
-    if (direct) {
-        sp->row = band_row(fr, y);
-        sp->page_bit = page_bit_of(fr, y);
-        sp->pattern = fr->patterns[fr->cell_mask ? (y & fr->cell_mask) : y % fr->cell->height];
-    }
 }
 
 static void span_paint_run(const span_paint *sp, uint32_t a, uint32_t b)
 {
-    if (sp->row)
-        stp_halftone_fill_bits(sp->row, sp->page_bit, (unsigned)a, (unsigned)b, sp->pattern);
-    else
-        paint_run(sp->fr, sp->y, a, b, sp->style, sp->smooth,
-                  sp->smooth ? sp->s0 + (int64_t)(a - sp->x1) * sp->sstep : 0, sp->sstep, sp->t);
-}
-
-/* Q12 depths whose pixel depth is 1..65535 lie in [MIN, END) */
-#define DEPTH_Q12_MIN ((int64_t)1 << 12)
-#define DEPTH_Q12_END ((int64_t)65536 << 12)
-
-/* Pixels x1..x2 of a 1-bit band line from a pattern byte: the one run
- * filler (page_bit as stp_halftone_fill_bits). */
-STP_HOT_INLINE void fill_run(uint8_t *row, uint8_t page_bit, uint32_t x1, uint32_t x2, uint8_t pattern)
-{
-    stp_halftone_fill_bits(row, page_bit, (unsigned)x1, (unsigned)x2, pattern);
-}
-/* An opaque span of a direct style (paint_setup) whose depths are all in
- * 1..65535: di the Q12 depth at x1's centre, dstep per pixel (both fit 32
- * bits, put_span_z).  Alternately skip the hidden pixels and take a run of
- * visible ones, writing their depth and the pattern byte of the row. */
-STP_HOT_INLINE void span_z_direct(uint16_t *z, uint8_t *row, uint8_t page_bit, uint8_t pattern, uint32_t x1,
-                                 uint32_t x2, int32_t di, int32_t dstep)
-{
-    /* every pixel's depth (uint32_t)di >> 12 is 1..65535 here: no clamp,
-     * and compared with the entry as it is */
-    uint16_t *zp = z + x1, *const zlast = z + x2;
-#if STP_NARROW_FORMS
-    /* a span of one pixel, or two in one byte, on a row of bytes (the
-     * Cortex-M0+ torus's spans are a pixel or two) without a run: their
-     * depths, and their bits from the pattern (the host's larger frames
-     * pay more for the tests than they save; the two cases as one cost
-     * the torus 10 000 instructions more) */
-    if (x1 == x2 && !(STP_WITH_PAGES && page_bit)) {
-        uint32_t depth = (uint32_t)di >> 12;
-        if (depth > *zp) {
-            uint8_t *b = row + (x1 >> 3), bit = (uint8_t)(0x80u >> (x1 & 7u));
-            *zp = (uint16_t)depth;
-            *b = (uint8_t)(*b ^ ((*b ^ pattern) & bit));
-        }
-        return;
-    }
-    if (x2 == x1 + 1u && (x1 & 7u) != 7u && !(STP_WITH_PAGES && page_bit)) {
-        uint32_t depth = (uint32_t)di >> 12, depth2 = (uint32_t)(di + dstep) >> 12, bit = 0x80u >> (x1 & 7u),
-                 mask = 0;
-        if (depth > zp[0]) {
-            zp[0] = (uint16_t)depth;
-            mask = bit;
-        }
-        if (depth2 > zp[1]) {
-            zp[1] = (uint16_t)depth2;
-            mask |= bit >> 1;
-        }
-        if (mask != 0) {
-            uint8_t *b = row + (x1 >> 3);
-            *b = (uint8_t)(*b ^ ((*b ^ pattern) & mask));
-        }
-        return;
-    }
-#endif
-    for (;;) {
-        uint32_t run, depth;
-        while ((depth = (uint32_t)di >> 12) <= *zp) {
-            if (zp == zlast)
-                return;
-            zp++;
-            di += dstep;
-        }
-        run = (uint32_t)(zp - z);
-        /* (each pixel's depth formed once, for its test and its entry) */
-        for (;;) {
-            *zp = (uint16_t)depth;
-            if (zp == zlast) {
-                fill_run(row, page_bit, run, x2, pattern);
-                return;
-            }
-            zp++;
-            di += dstep;
-            if ((depth = (uint32_t)di >> 12) <= *zp)
-                break;
-        }
-        fill_run(row, page_bit, run, (uint32_t)(zp - z) - 1u, pattern);
-    }
+    paint_run(sp->fr, sp->y, a, b, sp->style, sp->smooth, sp->smooth ? sp->s0 + (int64_t)(a - sp->x1) * sp->sstep : 0,
+              sp->sstep, sp->t);
 }
 
 /* The band row y's Z entries, pixels and pattern byte. */
@@ -838,77 +661,21 @@ static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, pa
             put_span_z_direct(fr, y, x1, x2, di, dstep);
             return;
         }
-        span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t, direct);
+        span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t);
         if (t == 0)
             span_z_opaque(&sp, z, x1, x2, di, dstep);
         else
             span_z_transparent(&sp, z, x1, x2, di, dstep);
         return;
     }
-    span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t, direct);
+    if (direct) { /* a direct style's, as every route's 1-bit spans */
+        span_z_clamped_bits(z, band_row(fr, y), page_bit_of(fr, y), pattern_of_row(fr, y), x1, x2, d, ddx);
+        return;
+    }
+    span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t);
     span_z_clamped(&sp, z, x1, x2, d, ddx, t);
 }
 
-/* Depth key mapped to the Z buffer's 1..65535 with 12 fractional bits:
- * 2^12 + floor(u 65534 2^12 / range), u = key - key_min <= range < 2^32.
- * Without wide arithmetic the quotient comes from the frame's reciprocal:
- * depth_scale = floor(65534 2^12 2^s / range) < 2^29 with 2^s > range (s =
- * depth_shift), so u depth_scale / 2^s is less than one short of the
- * quotient and one correction makes it exact. */
-#if !STP_WIDE_ARITH
-/* key_quotient for key ranges of 2^31 or more (depth_shift 32): out of
- * line where speed comes first, so the common case's call saves no high
- * registers for it (inline in builds for size: one call less) */
-#if defined(__OPTIMIZE_SIZE__)
-static uint32_t key_quotient_wide(const frame *fr, uint32_t u)
-#else
-STP_NOINLINE uint32_t key_quotient_wide(const frame *fr, uint32_t u)
-#endif
-{
-    uint64_t num = stp_umul32x32(u, (uint32_t)65534 << 12);
-    uint32_t q = (uint32_t)(stp_umul32x32(u, fr->depth_scale) >> fr->depth_shift);
-    if (stp_umul32x32(q + 1u, fr->key_range) <= num)
-        q++;
-    return q;
-}
-#endif
-
-static uint32_t key_quotient(const frame *fr, uint32_t u)
-{
-#if STP_WIDE_ARITH
-    /* the factor 65534 2^12 from the frame (depth_scale): a product by the
-     * constant is made of shifts and a subtraction, four instructions to
-     * one multiply */
-    return (uint32_t)(stp_umul32x32(u, fr->depth_scale) / fr->key_range);
-#else
-    const uint32_t k = (uint32_t)65534 << 12;
-    uint32_t q;
-    if (fr->depth_shift >= 32)
-        return key_quotient_wide(fr, u);
-    /* u < 2^s: u 2^(32 - s) < 2^32, and its high product word is the
-     * estimate; the remainder u k - q range is in [0, 2 range), below
-     * 2^32 (range < 2^31 here), so its 32-bit wrap is exact */
-    q = stp_umulhi32x32(u << (32 - fr->depth_shift), fr->depth_scale);
-    if (u * k - q * fr->key_range >= fr->key_range)
-        q++;
-    return q;
-#endif
-}
-
-static int32_t depth_q12_made(frame *fr, int32_t key)
-{
-    /* the quotient is at most 65534 2^12: below 2^28 */
-#if STP_WIDE_ARITH
-    /* (marked unlikely: GCC then lays a triangle's three quotients out
-     * with fewer spills, host mesh torus 400 instructions a frame fewer;
-     * unmarked elsewhere, whose code stays as it was) */
-    if (STP_UNLIKELY(fr->key_max <= fr->key_min))
-#else
-    if (fr->key_max <= fr->key_min)
-#endif
-        return (int32_t)65535 << 12;
-    return (int32_t)(1 << 12) + (int32_t)key_quotient(fr, (uint32_t)key - (uint32_t)fr->key_min);
-}
 
 #if KEY_CACHE > 0
 /* its slot of the kept mappings: key bits 3..8, not mixed: a mesh's
@@ -921,7 +688,7 @@ static int32_t depth_q12_made(frame *fr, int32_t key)
 static int32_t depth_q12_keep(frame *fr, key_mapping *m, int32_t key)
 {
     m->key = key;
-    m->q12 = depth_q12_made(fr, key);
+    m->q12 = depth_q12_of(&fr->keys, key);
     return m->q12;
 }
 #endif
@@ -940,7 +707,7 @@ static inline int32_t depth_q12_in(frame *fr, void *cache, int32_t key)
     return m->q12;
 #else
     (void)cache;
-    return depth_q12_made(fr, key);
+    return depth_q12_of(&fr->keys, key);
 #endif
 }
 
@@ -949,7 +716,7 @@ static inline int32_t depth_q12(frame *fr, int32_t key)
 #if KEY_CACHE > 0
     return depth_q12_in(fr, fr->cached, key);
 #else
-    return depth_q12_made(fr, key);
+    return depth_q12_of(&fr->keys, key);
 #endif
 }
 
@@ -959,128 +726,8 @@ static inline int32_t depth_q12(frame *fr, int32_t key)
 #define DEPTH_KEPT(fr) ((void *)0)
 #endif
 
-/* The polygon's depth plane, by Newell's sums on (x, y, depth) over its
- * projected vertices: exact for planar polygons, a best fit otherwise.
- * Gradients per subpixel unit with 12 fractional bits (clamped to +-2^40:
- * a polygon seen edge-on), through the vertex average (xc, yc, dc).
- * Returns 0 when the polygon is edge-on (no area on screen). */
-typedef struct depth_plane {
-    int64_t ddx, ddy, dc;
-    int32_t xc, yc;
-} depth_plane;
-
-/* The plane through Newell's sums a, b, c (c != 0) of n vertices whose
- * coordinates and Q12 depths sum to sx, sy, sd: gradients -a 4096 / c and
- * -b 4096 / c clamped to +-2^40, the centre their averages. */
-static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, int64_t c, uint32_t sx, uint32_t sy,
-                                         int64_t sd, int n)
-{
-    pl->ddx = div_trunc(-a * 4096, c);
-    pl->ddy = div_trunc(-b * 4096, c);
-#if STP_WIDE_ARITH
-    /* both in [-2^28, 2^28) by one test (|4096 a| <= 2^40: nothing to clamp) */
-    if ((((uint64_t)a + ((uint64_t)1 << 28)) | ((uint64_t)b + ((uint64_t)1 << 28))) >= ((uint64_t)1 << 29)) {
-#else
-    if (!(a > -((int64_t)1 << 28) && a < ((int64_t)1 << 28) && b > -((int64_t)1 << 28) &&
-          b < ((int64_t)1 << 28))) { /* else |4096 a|, |4096 b| < 2^40: nothing to clamp */
-#endif
-        if (pl->ddx > ((int64_t)1 << 40)) pl->ddx = (int64_t)1 << 40;
-        if (pl->ddx < -((int64_t)1 << 40)) pl->ddx = -((int64_t)1 << 40);
-        if (pl->ddy > ((int64_t)1 << 40)) pl->ddy = (int64_t)1 << 40;
-        if (pl->ddy < -((int64_t)1 << 40)) pl->ddy = -((int64_t)1 << 40);
-    }
-    pl->xc = (int32_t)div_count(sx, (uint32_t)n);
-    pl->yc = (int32_t)div_count(sy, (uint32_t)n);
-    /* depths below 2^28: 32-bit division while the sum fits */
-    pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : STP_DIV64(sd, n);
-}
-
-#if !STP_WIDE_ARITH
-/* A small triangle's gradients (depth_plane_from_sums's quotients)
- * trunc(-a 4096 / c) and trunc(-b 4096 / c) for |a|, |b| < 2^19 and c !=
- * 0: quotients of 32-bit magnitudes (n = |a| 4096 < 2^31, so they fit
- * int32), both from one reciprocal r = floor((2^32 - 1) / |c|)
- * (stp_quotient_q12_by_recip; on ARMv6-M r without a division,
- * stp_recip_u32: the library's is ~150 instructions).  Returns 1 when the
- * triangle's depth terms are short (depth_terms_short) by the quotients'
- * magnitudes and extents at least its own (x_ext, y_ext < 2^14): |g| <
- * 2^29 and |g| extent < 2^29, as depth_term_short asks, by a test that
- * passes only where the true one does; 0: not known. */
-static int gradients_short(int32_t a, int32_t b, int32_t c, int64_t *ga, int64_t *gb, int32_t x_ext, int32_t y_ext)
-{
-    uint32_t ua = (a < 0 ? 0u - (uint32_t)a : (uint32_t)a) << 12, ub = (b < 0 ? 0u - (uint32_t)b : (uint32_t)b) << 12,
-             uc = c < 0 ? 0u - (uint32_t)c : (uint32_t)c, qa = ua, qb = ub;
-    if (uc > 1) {
-#if STP_RECIP_U32
-        uint32_t r = stp_recip_u32(uc);
-#else
-        uint32_t r = 0xFFFFFFFFu / uc;
-#endif
-        qa = stp_quotient_q12_by_recip(ua, uc, r);
-        qb = stp_quotient_q12_by_recip(ub, uc, r);
-    }
-    /* -a and c of opposite signs: negative (a = 0: qa = 0 either way);
-     * qa, qb <= ua, ub < 2^31, so the signed quotients are int32s */
-    *ga = (a ^ c) >= 0 ? -(int32_t)qa : (int32_t)qa;
-    *gb = (b ^ c) >= 0 ? -(int32_t)qb : (int32_t)qb;
-#if defined(__OPTIMIZE_SIZE__) /* builds for size: depth_terms_short's one copy asks */
-    (void)x_ext;
-    (void)y_ext;
-    return 0;
-#else
-    /* q extent < 2^29 from (floor(q / 2^14) + 1) extent < 2^15, which
-     * exceeds q extent / 2^14 (q < 2^31 and extents below 2^14: the
-     * product below 2^31), and with it q < 2^29 (extents >= 1, c != 0): a
-     * product a term, short by at most 2^14 extent of the exact test
-     * (depth_magnitude_short), which a torus's faces never need */
-    return ((((qa >> 14) + 1u) * (uint32_t)x_ext) | (((qb >> 14) + 1u) * (uint32_t)y_ext)) < ((uint32_t)1 << 15);
-#endif
-}
-
-/* |p| + |q| (|p|, |q| < 2^20): at least max(0, p, q) - min(0, p, q), the
- * extent of three coordinates relative to the first (equal to it when p
- * and q differ in sign, at most twice it), fewer instructions */
-/* A small triangle's centre (depth_plane_from_sums's, n = 3): coordinate
- * sums below 2^22, its depths' below 2^30 (stp_div3_u30 without the
- * tests; builds for size share stp_div3_u32) */
-#if defined(__OPTIMIZE_SIZE__)
-#define STP_CENTRE_DIV3(s) stp_div3_u32(s)
-#else
-#define STP_CENTRE_DIV3(s) stp_div3_u30(s)
-#endif
-STP_HOT_INLINE void triangle_centre(depth_plane *pl, uint32_t sx, uint32_t sy, uint32_t sd)
-{
-    pl->xc = (int32_t)stp_div3_u32(sx);
-    pl->yc = (int32_t)stp_div3_u32(sy);
-    pl->dc = STP_CENTRE_DIV3(sd);
-}
-
-#if !defined(__OPTIMIZE_SIZE__)
-static int32_t extent_bound(int32_t p, int32_t q)
-{
-    return (p < 0 ? -p : p) + (q < 0 ? -q : q);
-}
-#endif
-#endif
-
-/* A triangle's plane: its Newell sums are its cross product, exactly
- * (relative coordinates below 2^20, depths below 2^16); its three Q12
- * depths (below 2^28) sum below 2^30.  Without wide arithmetic a small
- * triangle (offsets from the first vertex with |x1| + |x2| < 2^14, |y1| +
- * |y2| < 2^13: products below 2^30, so the sums fit int32, and |a|, |b| <
- * 2^19) in 32 bits: no clamp (|a|, |b| < 2^28), the same values.  With wide arithmetic the
- * body is short (no 32-bit route) and the draw path inlines it: its call
- * cost a fifth of it (the host's torus). */
-#if STP_WIDE_ARITH
-#define DEPTH_TRIANGLE_FN STP_HOT_INLINE
-#else
-#define DEPTH_TRIANGLE_FN static
-#endif
-/* depth_setup_triangle's answers besides 0 (edge-on): the plane made, and
- * (PLANE_SHORT) its depth terms found short on the way (depth_terms_short,
- * not asked again) */
-#define PLANE_MADE 1
-#define PLANE_SHORT 2
+/* A triangle's plane (depth_plane_triangle) from its vertices' Q12
+ * depths, the kept mappings' where there are */
 DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_plane *pl)
 {
 #if defined(__OPTIMIZE_SIZE__) /* builds for size: depth_q12's one copy, called (lm3s6965: 16 bytes) */
@@ -1089,88 +736,7 @@ DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_
     void *kept = DEPTH_KEPT(fr);
     int32_t d0 = depth_q12_in(fr, kept, v[0].z), d1 = depth_q12_in(fr, kept, v[1].z), d2 = depth_q12_in(fr, kept, v[2].z);
 #endif
-    int32_t x1 = v[1].x - v[0].x, y1 = v[1].y - v[0].y, x2 = v[2].x - v[0].x, y2 = v[2].y - v[0].y;
-    int32_t e1 = (d1 >> 12) - (d0 >> 12), e2 = (d2 >> 12) - (d0 >> 12);
-    uint32_t sx = (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x,
-             sy = (uint32_t)v[0].y + (uint32_t)v[1].y + (uint32_t)v[2].y,
-             sd = (uint32_t)d0 + (uint32_t)d1 + (uint32_t)d2;
-    int64_t a, b, c;
-#if !STP_WIDE_ARITH /* 64-bit hosts: 64-bit products and quotients cost what 32-bit ones do */
-    /* |x1| + |x2| < 2^14 and |y1| + |y2| < 2^13 (the extents
-     * gradients_short takes, a test each): products below 2^30 still (|e|
-     * < 2^16); |a|, |b| < 2^19 by one unsigned comparison each */
-    const uint32_t gs = (uint32_t)1 << 19;
-#if defined(__OPTIMIZE_SIZE__)
-    /* builds for size (gradients_short takes no extents): -2^14 <= x1, x2
-     * < 2^14 and -2^13 <= y1, y2 < 2^13 (products below 2^30 as well),
-     * each offset by the bound below twice it, a power of two, so both by
-     * their OR (lm3s6965: 24 bytes fewer) */
-    const uint32_t xs = (uint32_t)1 << 14, ys = (uint32_t)1 << 13;
-    const int32_t x_ext = 0, y_ext = 0;
-    if (((((uint32_t)x1 + xs) | ((uint32_t)x2 + xs)) >> 15) == 0 &&
-        ((((uint32_t)y1 + ys) | ((uint32_t)y2 + ys)) >> 14) == 0) {
-#else
-    int32_t x_ext, y_ext;
-    /* the centre first, its sums not kept across the tests and the
-     * quotients (a route that falls through makes it again; builds for
-     * size make it after them, as an ATmega2560's large triangles fall
-     * through) */
-    triangle_centre(pl, sx, sy, sd);
-    x_ext = extent_bound(x1, x2);
-    y_ext = extent_bound(y1, y2);
-    if (x_ext < ((int32_t)1 << 14) && y_ext < ((int32_t)1 << 13)) {
-#endif
-        int32_t c32 = x1 * y2 - y1 * x2, a32 = y1 * e2 - e1 * y2, b32 = e1 * x2 - x1 * e2;
-        if (c32 != 0 && (uint32_t)a32 + (gs - 1u) < 2u * gs - 1u && (uint32_t)b32 + (gs - 1u) < 2u * gs - 1u) {
-            int terms = gradients_short(a32, b32, c32, &pl->ddx, &pl->ddy, x_ext, y_ext);
-#if defined(__OPTIMIZE_SIZE__)
-            triangle_centre(pl, sx, sy, sd);
-#endif
-            return terms ? PLANE_SHORT : PLANE_MADE;
-        }
-        a = a32;
-        b = b32;
-        c = c32;
-    } else
-#endif
-    {
-        a = stp_smul32x32(y1, e2) - stp_smul32x32(e1, y2);
-        b = stp_smul32x32(e1, x2) - stp_smul32x32(x1, e2);
-        c = stp_smul32x32(x1, y2) - stp_smul32x32(y1, x2);
-    }
-    if (c == 0) {
-        pl->ddx = pl->ddy = pl->dc = 0;
-        pl->xc = pl->yc = 0;
-        return 0;
-    }
-    depth_plane_from_sums(pl, a, b, c, sx, sy, (int64_t)sd, 3);
-    return PLANE_MADE;
-}
-
-/* Any polygon's plane by Newell's loop (triangles: depth_setup_triangle). */
-static int depth_setup(frame *fr, const stp_instr *v, int n, depth_plane *pl)
-{
-    int64_t a = 0, b = 0, c = 0, sd = 0, d_last = depth_q12(fr, v[n - 1].z), d_prev = d_last;
-    uint32_t sx = 0, sy = 0; /* n <= 4101 coordinates in [0, 2^19]: < 2^32 */
-    int i;
-    pl->ddx = pl->ddy = pl->dc = 0;
-    pl->xc = pl->yc = 0;
-    for (i = 0; i < n; i++) {
-        const stp_instr *p = &v[i == 0 ? n - 1 : i - 1], *q = &v[i];
-        int64_t d_q = i == n - 1 ? d_last : depth_q12(fr, q->z), dp = d_prev >> 12, dq = d_q >> 12;
-        /* coordinates in [0, 2^19], depths in [1, 65535]: 32-bit factors */
-        a += stp_smul32x32(p->y - q->y, (int32_t)(dp + dq));
-        b += stp_smul32x32((int32_t)(dp - dq), p->x + q->x);
-        c += stp_smul32x32(p->x - q->x, p->y + q->y);
-        sx += (uint32_t)q->x;
-        sy += (uint32_t)q->y;
-        sd += d_q;
-        d_prev = d_q;
-    }
-    if (c == 0)
-        return 0;
-    depth_plane_from_sums(pl, a, b, c, sx, sy, sd, n);
-    return 1;
+    return depth_plane_triangle(v, d0, d1, d2, pl);
 }
 
 /* The depth plane of the polygon at `ordinal` (display order) for this
@@ -1208,7 +774,7 @@ static int depth_plane_for(frame *fr, const stp_instr *v, int n, uint32_t ordina
         pl->yc = kept->centre[1];
         return 1;
     }
-    ok = n == 3 ? depth_setup_triangle(fr, v, pl) : depth_setup(fr, v, n, pl);
+    ok = n == 3 ? depth_setup_triangle(fr, v, pl) : depth_plane_polygon(&fr->keys, v, n, pl);
     if (kept) {
         kept->plane[0] = pl->ddx;
         kept->plane[1] = pl->ddy;
@@ -1268,89 +834,6 @@ static int polygon_smooth(const stp_instr *header)
 }
 
 #if STP_WITH_ZBUFFER
-/* The int32 whose two's complement is u (no implementation-defined
- * conversion of a value above INT32_MAX) */
-static int32_t from_twos(uint32_t u)
-{
-    return u < 0x80000000u ? (int32_t)u : -(int32_t)~u - 1;
-}
-
-/* The triangle v's depth terms are short (depth_term_short in x and y):
- * its depths at pixel centres, dc + ddx (x - xc) + ddy (y - yc), then lie
- * within +-(2^28 + 2^12 + 2^30), so they follow from their values modulo
- * 2^32 in 32-bit unsigned arithmetic. */
-static int depth_terms_short(const depth_plane *pl, const stp_instr *v, int32_t y_extent)
-{
-    int32_t x_lo = v[0].x, x_hi = v[0].x;
-    x_lo = v[1].x < x_lo ? v[1].x : x_lo;
-    x_hi = v[1].x > x_hi ? v[1].x : x_hi;
-    x_lo = v[2].x < x_lo ? v[2].x : x_lo;
-    x_hi = v[2].x > x_hi ? v[2].x : x_hi;
-    return depth_term_short(pl->ddx, x_hi - x_lo) && depth_term_short(pl->ddy, y_extent);
-}
-#endif
-
-#if STP_WITH_ZBUFFER
-/* A flat triangle's depths down its rows (draw_triangle): short ones
- * (depth_terms_short) modulo 2^32 at pixel 0's centre on the row centre
- * (d_row32), per pixel in x (gx_pixel) and per row (gy_row); else general
- * Q12 ones on the row centre at x = TRI_DEPTH_X0 (d_row): pixel 0's centre
- * where a span's ends are then a product each (32-bit cores and hosts:
- * M0+ mesh torus 2 160 instructions a frame fewer), device x = 0 on 8- and
- * 16-bit cores (ATmega2560: 56 bytes, 3 400 cycles fewer that way). */
-#if STP_HAVE_MUL32
-#define TRI_DEPTH_X0 HALF_PIXEL
-#else
-#define TRI_DEPTH_X0 0
-#endif
-typedef struct tri_depth {
-    int64_t d_row;
-#if STP_NARROW_FORMS
-    int64_t d_step; /* d_row's change a row (general ones) */
-#endif
-    uint32_t d_row32, gx_pixel, gy_row;
-    int short_depth;
-} tri_depth;
-
-/* the general depths' step a row: kept where speed comes first, else the
- * compiler forms it ahead of the rows' loop, for every triangle, short
- * ones too; formed at each step elsewhere (a smaller frame on AVR) */
-#if STP_NARROW_FORMS
-#define TRI_DEPTH_STEP(td, pl) ((void)(pl), (td)->d_step)
-#else
-#define TRI_DEPTH_STEP(td, pl) ((pl)->ddy * (1 << SUB))
-#endif
-
-/* The depths of the triangle v (plane pl, y_extent high; made is
- * depth_setup_triangle's answer) from row centre yc down. */
-STP_HOT_INLINE void tri_depth_start(tri_depth *td, const depth_plane *pl, const stp_instr *v, int32_t y_extent,
-                                   int32_t yc, int made)
-{
-    /* (64-bit hosts: 64-bit depths cost what 32-bit ones do) */
-    td->short_depth = !STP_WIDE_ARITH && (made == PLANE_SHORT || depth_terms_short(pl, v, y_extent));
-    if (td->short_depth) {
-        td->gx_pixel = (uint32_t)pl->ddx << SUB;
-        td->gy_row = (uint32_t)pl->ddy << SUB;
-        td->d_row32 = (uint32_t)pl->dc + (uint32_t)pl->ddx * (uint32_t)(HALF_PIXEL - pl->xc) +
-                      (uint32_t)pl->ddy * (uint32_t)(yc - pl->yc);
-        td->d_row = 0; /* unused: set for the compiler's flow analysis */
-    } else {
-        td->d_row = pl->dc + mul_wide(pl->ddx, TRI_DEPTH_X0 - pl->xc) + mul_wide(pl->ddy, yc - pl->yc);
-#if STP_NARROW_FORMS
-        td->d_step = pl->ddy * (1 << SUB);
-#endif
-        td->d_row32 = td->gx_pixel = td->gy_row = 0; /* unused, likewise */
-    }
-}
-
-/* The next row's depths. */
-STP_HOT_INLINE void tri_depth_step(tri_depth *td, const depth_plane *pl)
-{
-    if (td->short_depth)
-        td->d_row32 += td->gy_row;
-    else
-        td->d_row += TRI_DEPTH_STEP(td, pl);
-}
 
 /* The band row a triangle's direct spans go to (span_z_direct): its Z
  * entries and its pixels, set at the triangle's first span (tri_row_at)
@@ -1387,49 +870,20 @@ STP_HOT_INLINE void tri_row_next(const frame *fr, tri_row *tr, int pages)
 }
 
 /* The depth-tested span p1..p2 of a triangle's row: straight to the band
- * (span_z_direct, at tr: tr NULL when not direct) when its depths are
- * 1..65535 at both ends, else through put_span_z. */
+ * (tri_span_straight, at tr: tr NULL when not direct), else through
+ * put_span_z. */
 STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint32_t p2, paint style, stp_fix t,
                                const tri_row *tr, const tri_depth *td, const depth_plane *pl, int pages)
 {
-    uint8_t page_bit = pages && tr ? tr->page_bit : 0;
-    if (td->short_depth) {
-        /* the depths at the span's first and last pixel centres, modulo 2^32 */
-        /* (where speed comes first on a 32-bit core the last from the
-         * first, the same value; elsewhere it cost an ATmega2560 cycles) */
-        uint32_t d = td->d_row32 + td->gx_pixel * p1,
-                 d_end = STP_NARROW_FORMS ? d + td->gx_pixel * (p2 - p1) : td->d_row32 + td->gx_pixel * p2;
-        const uint32_t depths = (uint32_t)(DEPTH_Q12_END - DEPTH_Q12_MIN);
-        if (tr && d - (uint32_t)DEPTH_Q12_MIN < depths && ((STP_NARROW_FORMS && p2 == p1) || d_end - (uint32_t)DEPTH_Q12_MIN < depths))
-            /* 1..65535 at both ends; the step a pixel is added only
-             * where the span has two (span_z_direct), whose centres 16
-             * apart lie within the x extent: 16 |ddx| < 2^29 (from_twos
-             * maps every other value too: no test for one pixel) */
-            span_z_direct(tr->z, tr->band, page_bit, pattern_of_row(fr, row), p1, p2, (int32_t)d,
-                          from_twos(td->gx_pixel));
-        else
-            put_span_z(fr, row, p1, p2, style, from_twos(d), pl->ddx * (1 << SUB), 0, 0, 0, t, tr != 0);
-    } else {
-#if STP_HAVE_MUL32
-        int64_t ddx = pl->ddx * (1 << SUB), d = td->d_row + mul_wide(ddx, (int32_t)p1),
-                d_end = td->d_row + mul_wide(ddx, (int32_t)p2);
-#else
-        int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
-        int64_t d = td->d_row + mul_wide(pl->ddx, xq);
-        int64_t ddx = pl->ddx * (1 << SUB), d_end = d + mul_wide(ddx, (int32_t)(p2 - p1));
-#endif
-        if (tr && d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN &&
-            d_end < DEPTH_Q12_END) /* as put_span_z would, without its call */
-            /* (the step is added only where the span has two pixels,
-             * d_end - d fitting 32 bits: 64-bit hosts pass its low 32
-             * bits, as above, without a test; ARMv6-M keeps the test:
-             * without it GCC's layout cost its mesh torus 400
-             * instructions a frame) */
-            span_z_direct(tr->z, tr->band, page_bit, pattern_of_row(fr, row), p1, p2, (int32_t)d,
-                          STP_WIDE_ARITH ? from_twos((uint32_t)ddx) : p2 > p1 ? (int32_t)ddx : 0);
-        else
-            put_span_z(fr, row, p1, p2, style, d, ddx, 0, 0, 0, t, tr != 0);
+    int64_t d, ddx;
+    if (tr) {
+        uint8_t page_bit = pages ? tr->page_bit : 0;
+        if (!tri_span_straight(tr->z, tr->band, page_bit, pattern_of_row(fr, row), p1, p2, td, pl, &d, &ddx))
+            span_z_bits(tr->z, tr->band, page_bit, pattern_of_row(fr, row), p1, p2, d, ddx);
+        return;
     }
+    d = tri_depth_at(td, pl, p1, &ddx);
+    put_span_z(fr, row, p1, p2, style, d, ddx, 0, 0, 0, t, 0);
 }
 #endif
 
@@ -1669,10 +1123,8 @@ STP_HOT_INLINE void polygon_row(const frame *fr, uint32_t y, int nc, paint style
 #endif
 #if STP_WITH_ZBUFFER
         if (use_z) {
-            /* dc + ddx (x - xc) + ddy (y - yc) at p1's centre */
-            int32_t xq = (int32_t)(p1 << SUB) + HALF_PIXEL;
-            int64_t d = d_row + (ddx >= INT32_MIN && ddx <= INT32_MAX ? stp_smul32x32((int32_t)ddx, xq) : ddx * xq);
-            put_span_z(fr, y, p1, p2, style, d, ddx * (1 << SUB), smooth, s0, sstep, t, direct);
+            put_span_z(fr, y, p1, p2, style, depth_plane_at(d_row, ddx, p1), ddx * (1 << SUB), smooth, s0, sstep, t,
+                       direct);
             continue;
         }
 #else
@@ -1732,7 +1184,7 @@ static void draw_polygon(frame *fr, uint32_t at, paint style, int use_z, stp_fix
      * (Q12; |ddx|, |ddy| <= 2^40 and coordinates below 2^20, so every
      * term and the sum stay below 2^62) */
     if (use_z)
-        d_row = pl.dc - pl.ddx * pl.xc + pl.ddy * (((int64_t)y_first << SUB) + HALF_PIXEL - pl.yc);
+        d_row = depth_plane_row(&pl, y_first);
     ddx = pl.ddx;
 #endif
     for (y = y_first; y <= y_last; y++) {
@@ -2009,14 +1461,14 @@ static inline void sort_entry_set(stp_sort_entry *e, uint32_t k, const stp_instr
  * vertices' extent (coordinates are >= 0: project() clamps them). */
 static void frame_extent(frame *fr, uint32_t count, const extent *ex)
 {
-    fr->key_min = INT32_MAX;
-    fr->key_max = INT32_MIN;
+    fr->keys.key_min = INT32_MAX;
+    fr->keys.key_max = INT32_MIN;
     fr->x_min = fr->y_min = 1;
     fr->x_max = fr->y_max = 0;
     if (count == 0)
         return;
-    fr->key_min = ex->key_min;
-    fr->key_max = (int32_t)((uint32_t)ex->key_min + ex->key_width); /* within [key_min, INT32_MAX] */
+    fr->keys.key_min = ex->key_min;
+    fr->keys.key_max = (int32_t)((uint32_t)ex->key_min + ex->key_width); /* within [key_min, INT32_MAX] */
     fr->x_min = (uint32_t)ex->x_lo >> SUB;
     fr->x_max = ((uint32_t)ex->x_lo + ex->x_width) >> SUB;
     fr->y_min = (uint32_t)ex->y_lo >> SUB;
@@ -2306,26 +1758,14 @@ static void render_prepare_fill(frame *fr, const stp_port *port, const stp_port 
                                 paint background)
 {
     uint32_t i;
-    fr->key_range = 0;
-    fr->depth_scale = 0;
-    fr->depth_shift = 0;
-    if (fr->key_max > fr->key_min) {
-        fr->key_range = (uint32_t)fr->key_max - (uint32_t)fr->key_min;
-#if STP_WIDE_ARITH
-        fr->depth_scale = (uint32_t)65534 << 12; /* key_quotient's factor */
-#else
-        while (((uint64_t)1 << fr->depth_shift) <= fr->key_range)
-            fr->depth_shift++;
-        fr->depth_scale = (uint32_t)STP_DIV64(((uint64_t)65534 << 12) << fr->depth_shift, fr->key_range);
-#endif
-    }
+    depth_keys_set(&fr->keys, fr->keys.key_min, fr->keys.key_max);
 #if KEY_CACHE > 0
     /* each slot starts as key_max's mapping, 65535 2^12 (depth_q12_made's:
      * u = range gives quotient 65534 2^12 exactly; with no range every key
      * maps there), right wherever it is found, so a lookup tests the key
      * alone */
     for (i = 0; i < KEY_CACHE; i++) {
-        fr->cached[i].key = fr->key_max;
+        fr->cached[i].key = fr->keys.key_max;
         fr->cached[i].q12 = (int32_t)65535 << 12;
     }
 #endif

@@ -96,5 +96,9 @@ int direct_spin_frame(direct_spin *s, uint16_t n, stp_direct_frame *f)
     if (status == STP_OK)
         status = stp_direct_frame_sort(f, s->order, SPIN_TRIANGLES);
 #endif
+#if SPIN_DEPTH
+    if (status == STP_OK)
+        status = stp_direct_frame_depth(f, s->depths, SPIN_VERTICES, s->zband, SPIN_WIDTH * SPIN_DEPTH_ROWS);
+#endif
     return status;
 }

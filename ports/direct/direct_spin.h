@@ -32,6 +32,20 @@
 #define SPIN_SORTED 0
 #endif
 
+/* STP_SPIN_DEPTH 1: every frame's faces drawn with the renderer's Z
+ * buffer (stp_direct_frame_depth: a depth a vertex, 2 000 B, and a band
+ * of depths, 2 bytes a pixel of the tallest band, SPIN_DEPTH_ROWS rows:
+ * the whole picture's by default, 16 384 B), its picture pixel for pixel;
+ * not with STP_SPIN_SORT (the later wins), nor in the compact form. */
+#if defined(STP_SPIN_DEPTH) && STP_SPIN_DEPTH && !STP_DIRECT_COMPACT && STP_WITH_ZBUFFER
+#define SPIN_DEPTH 1
+#else
+#define SPIN_DEPTH 0
+#endif
+#ifndef SPIN_DEPTH_ROWS
+#define SPIN_DEPTH_ROWS SPIN_HEIGHT
+#endif
+
 /* STP_SPIN_PLACE 1: the torus's centre moved to (0.61, 2.41, 4.30), 0.9
  * units from the eye, so the near plane and the picture's edges cut it
  * (frame 10: 43 faces clipped, 26 vertices left unprojected): direct
@@ -53,13 +67,17 @@ typedef struct direct_spin {
 #if SPIN_SORTED
     stp_sort_entry order[SPIN_TRIANGLES]; /* the faces far to near */
 #endif
+#if SPIN_DEPTH
+    int32_t depths[SPIN_VERTICES]; /* the vertices' depths (stp_direct_frame_depth) */
+    uint16_t zband[SPIN_WIDTH * SPIN_DEPTH_ROWS];
+#endif
 } direct_spin;
 
 /* The model, its normals, the view and the light.  STP_OK or the error. */
 int direct_spin_init(direct_spin *s);
 
 /* Frame n projected and shaded into *f (its bands: stp_direct_draw_band),
- * its faces sorted with SPIN_SORTED. */
+ * its faces sorted with SPIN_SORTED, depth-tested with SPIN_DEPTH. */
 int direct_spin_frame(direct_spin *s, uint16_t n, stp_direct_frame *f);
 
 #endif

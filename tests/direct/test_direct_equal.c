@@ -71,6 +71,9 @@ typedef struct work {
     stp_sort_entry direct_order[TORUS_TRIANGLES]; /* stp_direct_frame_sort's */
     stp_sort_entry sort[TORUS_TRIANGLES];         /* the renderer's painter's sort */
     uint16_t zbuf[MAX_W * MAX_H];
+    int32_t direct_depths[3 * TORUS_TRIANGLES]; /* stp_direct_frame_depth's */
+    uint16_t direct_zband[MAX_W * MAX_H];
+    uint8_t direct_depth[MAX_H * MAX_W / 8]; /* direct drawing's, depth-tested */
     uint8_t direct[MAX_H * MAX_W / 8];
     uint8_t direct_sorted[MAX_H * MAX_W / 8];
     uint8_t full[MAX_H * MAX_W / 8];
@@ -322,6 +325,48 @@ static void bands_equal(work *w, const stp_direct_frame *fr, const uint8_t *pict
     assert_memory_equal(w->banded, picture, stride * (size_t)w->height);
 }
 
+#if !STP_DIRECT_COMPACT
+/* Direct drawing's frame fr depth-tested (stp_direct_frame_depth) must
+ * give the renderer's Z-buffer picture (w->full_zbuffer) byte for byte,
+ * in one band and in 8-row bands; then its refusals, and the sort after
+ * it drawing far to near again. */
+static void depth_picture(work *w, stp_direct_frame *fr, size_t stride)
+{
+    size_t bytes = stride * (size_t)w->height, vertices = w->mesh->vertex_count;
+    size_t one_band = (size_t)w->width * (size_t)w->height;
+    assert_int_equal(stp_direct_frame_depth(fr, w->direct_depths, vertices, w->direct_zband, one_band), STP_OK);
+    assert_non_null(fr->draw_depth);
+    assert_null(fr->order);
+    memset(w->direct_depth, 0xA5, bytes);
+    assert_int_equal(stp_direct_draw_band(fr, w->direct_depth, stride, 0, (uint16_t)w->height), STP_OK);
+    printf("  depth-tested: %d pixels differ from the renderer's Z buffer\n",
+           pixels_differing(w->direct_depth, w->full_zbuffer, bytes));
+    assert_memory_equal(w->direct_depth, w->full_zbuffer, bytes);
+    bands_equal(w, fr, w->direct_depth);
+    /* a band taller than its depths: refused, the band untouched */
+    assert_int_equal(stp_direct_frame_depth(fr, w->direct_depths, vertices, w->direct_zband, (size_t)w->width * 8u),
+                     STP_OK);
+    w->banded[0] = 0x5A;
+    assert_int_equal(stp_direct_draw_band(fr, w->banded, stride, 0, 9), STP_ERR_ARG);
+    assert_int_equal(w->banded[0], 0x5A);
+    bands_equal(w, fr, w->direct_depth);
+    /* refused: too few depths or entries, NULL arguments */
+    assert_int_equal(stp_direct_frame_depth(fr, w->direct_depths, vertices - 1u, w->direct_zband, one_band),
+                     STP_ERR_ARG);
+    assert_int_equal(stp_direct_frame_depth(fr, w->direct_depths, vertices, w->direct_zband, (size_t)w->width - 1u),
+                     STP_ERR_ARG);
+    assert_int_equal(stp_direct_frame_depth(fr, NULL, vertices, w->direct_zband, one_band), STP_ERR_ARG);
+    assert_int_equal(stp_direct_frame_depth(fr, w->direct_depths, vertices, NULL, one_band), STP_ERR_ARG);
+    assert_int_equal(stp_direct_frame_depth(NULL, w->direct_depths, vertices, w->direct_zband, one_band),
+                     STP_ERR_ARG);
+    /* the sort after it: far to near, no depth test */
+    assert_int_equal(stp_direct_frame_sort(fr, w->direct_order, TORUS_TRIANGLES), STP_OK);
+    assert_null(fr->draw_depth);
+    assert_int_equal(stp_direct_draw_band(fr, w->banded, stride, 0, (uint16_t)w->height), STP_OK);
+    assert_memory_equal(w->banded, w->direct_sorted, bytes);
+}
+#endif
+
 /* Direct drawing's frame fr in its painter's order (stp_direct_frame_sort)
  * against the renderer's painter's sort, memcmp-equal, and its Z buffer,
  * counted (measured: 0 pixels in 17 of the 18 frames, 1 in one); the
@@ -335,6 +380,9 @@ static int sorted_pictures(work *w, stp_direct_frame *fr, const stp_view *view, 
 #if STP_DIRECT_COMPACT
     assert_int_equal(status, STP_ERR_UNSUPPORTED);
     assert_int_equal(stp_direct_frame_sort(NULL, w->direct_order, TORUS_TRIANGLES), STP_ERR_ARG);
+    assert_int_equal(stp_direct_frame_depth(fr, w->direct_depths, w->mesh->vertex_count, w->direct_zband,
+                                            sizeof w->direct_zband / sizeof w->direct_zband[0]),
+                     STP_ERR_UNSUPPORTED);
     (void)view;
     (void)light;
     (void)pose;
@@ -371,6 +419,9 @@ static int sorted_pictures(work *w, stp_direct_frame *fr, const stp_view *view, 
            (unsigned)fr->order_count, painter, zbuffer, pixels_differing(w->direct, w->full_zbuffer, bytes));
     assert_memory_equal(w->direct_sorted, w->full_painter, bytes);
     assert_true(zbuffer <= w->zbuffer_bound);
+#if !STP_DIRECT_COMPACT
+    depth_picture(w, fr, stride);
+#endif
     /* refused: too few entries (mesh order kept), NULL arguments */
     {
         uint16_t front = fr->order_count;

@@ -10,6 +10,8 @@
 # Environment: STP_FW_CPU (cortex-m0plus), STP_MPS2_OPT (-O2),
 # STP_FW_BAND_ROWS (8), STP_FW_SORT (1: the faces sorted far to near,
 # stp_direct_frame_sort; then DIRECT_SPIN_HOST is direct_spin_host_sorted),
+# STP_FW_DEPTH (1: the Z buffer, stp_direct_frame_depth; then
+# DIRECT_SPIN_HOST is direct_spin_host_depth),
 # STP_FW_PLACE (1: the torus near the eye, cut by the near plane and the
 # picture's edges, STP_SPIN_PLACE; then DIRECT_SPIN_HOST is
 # direct_spin_host_near),
@@ -34,12 +36,14 @@ opt=${STP_MPS2_OPT:--O2}
 band_rows=${STP_FW_BAND_ROWS:-8}
 sort=${STP_FW_SORT:-0}
 place=${STP_FW_PLACE:-0}
-fw=$work/fw-$cpu$(printf %s "$opt" | tr -c 'A-Za-z0-9_-' _)-$band_rows-$sort-$place
+depth=${STP_FW_DEPTH:-0}
+fw=$work/fw-$cpu$(printf %s "$opt" | tr -c 'A-Za-z0-9_-' _)-$band_rows-$sort-$place-$depth
 
 echo "== building the mps2-an385 direct-drawing firmware ($cpu, $opt, $band_rows-row bands) in $fw"
 timeout "${STP_BUILD_TIMEOUT:-600}" cmake -S "$src/ports/mps2" -B "$fw" \
     -DCMAKE_TOOLCHAIN_FILE="$src/cmake/toolchain-arm-none-eabi.cmake" -DSTP_CPU="$cpu" \
     -DSTP_MPS2_OPT="$opt" -DSTP_FW_BAND_ROWS="$band_rows" -DSTP_FW_SORT="$sort" -DSTP_FW_PLACE="$place" \
+    -DSTP_FW_DEPTH="$depth" \
     >"$work/configure.log" 2>&1 ||
     { cat "$work/configure.log" >&2; exit 1; }
 timeout "${STP_BUILD_TIMEOUT:-600}" cmake --build "$fw" --target stipple_mps2_direct >"$work/build.log" 2>&1 ||
