@@ -703,11 +703,7 @@ int stp_direct_frame_project_lit(stp_direct_frame *f, const stp_mesh *mesh, cons
     f->focal = view->focal;
     f->order = 0; /* mesh order until stp_direct_frame_sort */
     f->order_count = 0;
-    f->draw_depth = 0; /* no depth test until stp_direct_frame_depth */
-    f->depths = 0;
-    f->zband = 0;
-    f->zband_count = 0;
-    f->key_min = f->key_max = 0;
+    f->depth = 0; /* no depth test until stp_direct_frame_depth */
     f->clipped = mark_clipped(f, faces);
 #endif
     return STP_OK;
@@ -747,7 +743,7 @@ int stp_direct_frame_sort(stp_direct_frame *f, stp_sort_entry *order, size_t ord
         return STP_ERR_ARG;
     f->order = 0;
     f->order_count = 0;
-    f->draw_depth = 0; /* far to near, not depth-tested */
+    f->depth = 0; /* far to near, not depth-tested */
     k = f->mesh->triangles;
     for (t = 0; t < f->mesh->triangle_count; t++, k += 3) {
         int32_t z0 = f->points[k[0]].z, z1 = f->points[k[1]].z, z2 = f->points[k[2]].z, far;

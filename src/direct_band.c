@@ -156,7 +156,7 @@ int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride
     int page_shift = 0, status;
     stp_band_rows band_rows; /* at the moved origin */
 #if !STP_DIRECT_COMPACT
-    if (f != 0 && f->draw_depth != 0 && (f->zband == 0 || f->zband_count / (f->width ? f->width : 1u) < rows))
+    if (f != 0 && f->depth != 0 && (f->depth->zband == 0 || f->depth->zband_count / (f->width ? f->width : 1u) < rows))
         return STP_ERR_ARG; /* no room for the band's depths */
 #endif
     status = band_start(f, band, stride, y0, rows, &page_shift, &band_rows);
@@ -173,8 +173,8 @@ int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride
         }
     }
 #else
-    if (f->draw_depth != 0) {
-        f->draw_depth(f, band, stride, y0, rows); /* depth-tested (stp_direct_frame_depth) */
+    if (f->depth != 0) {
+        f->depth->draw(f, band, stride, y0, rows); /* depth-tested (stp_direct_frame_depth) */
         return STP_OK;
     }
     if (f->order != 0) {

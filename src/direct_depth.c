@@ -6,7 +6,7 @@
  * band's depths hold, by the renderer's depth stage (depth_private.h: the
  * same keys' mapping, depth planes and pixel depths as raster.c's), so
  * the renderer's picture pixel for pixel.  A file of its own, reached
- * through the frame (f->draw_depth), so a program that never asks for the
+ * through the frame (f->depth->draw), so a program that never asks for the
  * depth test links none of it. */
 #include "direct_band_private.h"
 #include "render_private.h" /* stp_render_row_count */
@@ -18,7 +18,7 @@
 #if STP_DIRECT_DEPTH
 /* Face k (not clipped) into the band with the depth test: its rows by the
  * triangle walk (as draw_face), its plane from its corners' device
- * positions and depths (f->depths) and its spans' depths by the
+ * positions and depths (f->depth->depths) and its spans' depths by the
  * renderer's depth stage (depth_private.h, as raster.c's tri_draw_z: the
  * plane made at the first row with pixels, stepped a row with the walk),
  * in device coordinates (pixels and rows less ORIGIN_PIXELS) */
@@ -40,7 +40,7 @@ static void draw_face_depth(const stp_direct_frame *f, const uint16_t k[3], uint
         v[i].x = f->points[k[i]].dx;
         v[i].y = f->points[k[i]].dy;
     }
-    made = depth_plane_triangle(v, f->depths[k[0]], f->depths[k[1]], f->depths[k[2]], &pl);
+    made = depth_plane_triangle(v, f->depth->depths[k[0]], f->depth->depths[k[1]], f->depth->depths[k[2]], &pl);
     if (!made)
         return; /* edge-on: no area on screen */
     tri_depth_start(&td, &pl, v, STP_TRI_Y(w.bot) - STP_TRI_Y(w.top), stp_tri_walk_yc(&w) - DEVICE_ORIGIN, made);
@@ -86,7 +86,7 @@ static void draw_clipped_face_depth(const stp_direct_frame *f, const uint16_t k[
         uint32_t p1, p2;
         for (c = 0; c + 1 < nc; c += 2)
             if (stp_span_pixels(crossings[c].x, crossings[c + 1].x, f->width, &p1, &p2))
-                span_z_bits(f->zband + (size_t)r * f->width, band + (r >> page_shift) * stride,
+                span_z_bits(f->depth->zband + (size_t)r * f->width, band + (r >> page_shift) * stride,
                             (uint8_t)(page_shift ? 1u << (r & 7) : 0u), pattern_of(f->cell, (int)y, intensity), p1, p2,
                             depth_plane_at(d_row, pl.ddx, p1), pl.ddx * (1 << SUB));
     }
@@ -94,7 +94,7 @@ static void draw_clipped_face_depth(const stp_direct_frame *f, const uint16_t k[
 
 /* The drawn faces into the band in mesh order, depth-tested, the band's
  * depth entries cleared first (0: nothing drawn); stp_direct_draw_band
- * calls it through the frame (f->draw_depth, set below), its arguments
+ * calls it through the frame (f->depth->draw, set below), its arguments
  * checked and the band cleared */
 static void draw_depth(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0, uint16_t rows)
 {
@@ -106,14 +106,14 @@ static void draw_depth(const stp_direct_frame *f, uint8_t *band, size_t stride, 
     uint16_t t;
     band_rows_at(&band_rows, y0, rows);
     for (i = 0; i < count; i++)
-        f->zband[i] = 0;
+        f->depth->zband[i] = 0;
     if (f->clipped != 0)
-        depth_keys_set(&keys, f->key_min, f->key_max);
+        depth_keys_set(&keys, f->depth->key_min, f->depth->key_max);
     for (t = 0; t < f->mesh->triangle_count; t++, k += 3) {
         if (f->faces[t] & STP_DIRECT_FACE_CLIPPED)
             draw_clipped_face_depth(f, k, (uint8_t)f->faces[t], band, stride, page_shift, &band_rows, &keys);
         else if (f->faces[t] != 0)
-            draw_face_depth(f, k, (uint8_t)f->faces[t], band, stride, page_shift, &band_rows, f->zband);
+            draw_face_depth(f, k, (uint8_t)f->faces[t], band, stride, page_shift, &band_rows, f->depth->zband);
     }
 }
 #endif
@@ -163,32 +163,26 @@ static void stored_keys(const stp_direct_frame *f, int32_t *depths, int32_t *lo,
 }
 #endif
 
-int stp_direct_frame_depth(stp_direct_frame *f, int32_t *depths, size_t depth_count, uint16_t *zband,
-                           size_t zband_count)
+int stp_direct_frame_depth(stp_direct_frame *f, stp_direct_depth *depth)
 {
 #if !STP_DIRECT_DEPTH
-    (void)depths;
-    (void)depth_count;
-    (void)zband;
-    (void)zband_count;
+    (void)depth;
     return f == 0 ? STP_ERR_ARG : STP_ERR_UNSUPPORTED; /* the compact form, or no Z buffer (direct.h) */
 #else
     depth_keys keys;
     uint16_t v;
-    if (f == 0 || depths == 0 || zband == 0 || f->mesh == 0 || f->mesh->triangles == 0 || f->points == 0 ||
-        f->faces == 0 || depth_count < f->mesh->vertex_count || zband_count < f->width)
+    if (f == 0 || depth == 0 || depth->depths == 0 || depth->zband == 0 || f->mesh == 0 || f->mesh->triangles == 0 ||
+        f->points == 0 || f->faces == 0 || depth->depth_count < f->mesh->vertex_count || depth->zband_count < f->width)
         return STP_ERR_ARG;
-    stored_keys(f, depths, &f->key_min, &f->key_max);
-    depth_keys_set(&keys, f->key_min, f->key_max);
+    stored_keys(f, depth->depths, &depth->key_min, &depth->key_max);
+    depth_keys_set(&keys, depth->key_min, depth->key_max);
     for (v = 0; v < f->mesh->vertex_count; v++)
-        if (depths[v] != 0)
-            depths[v] = depth_q12_of(&keys, depths[v]);
+        if (depth->depths[v] != 0)
+            depth->depths[v] = depth_q12_of(&keys, depth->depths[v]);
+    depth->draw = draw_depth;
     f->order = 0; /* mesh order, depth-tested */
     f->order_count = 0;
-    f->depths = depths;
-    f->zband = zband;
-    f->zband_count = zband_count;
-    f->draw_depth = draw_depth;
+    f->depth = depth;
     return STP_OK;
 #endif
 }

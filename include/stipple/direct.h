@@ -154,16 +154,8 @@ typedef struct stp_direct_frame {
     stp_fix focal;            /* the view's: its pyramid's */
     uint16_t clipped;         /* front faces the pyramid's sides cut
                                  (faces[] holds STP_DIRECT_FACE_CLIPPED) */
-    /* the renderer's Z buffer (stp_direct_frame_depth; not set or read in
-     * the compact form) */
-    const int32_t *depths;    /* per vertex, its Q12 depth */
-    uint16_t *zband;          /* a band's depths, zband_count entries */
-    size_t zband_count;
-    int32_t key_min, key_max; /* the stored faces' depth keys */
-    /* the depth-tested band fill, or NULL: none (set by
-     * stp_direct_frame_depth, so only a program that calls it links it) */
-    void (*draw_depth)(const struct stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0,
-                       uint16_t rows);
+    /* the renderer's Z buffer (stp_direct_frame_depth), or NULL: none */
+    const struct stp_direct_depth *depth;
 } stp_direct_frame;
 
 /* The flag faces[t] carries beside 256 + intensity for a front face the
@@ -237,7 +229,7 @@ int stp_direct_frame_project_lit(stp_direct_frame *f, const stp_mesh *mesh, cons
  * after stp_direct_frame_depth; both layouts hold the same pixels.  Errors: STP_ERR_ARG (f,
  * its arrays or band NULL, an unknown layout, stride too small, rows 0,
  * y0 + rows > height, a page band's y0 not a multiple of 8, a depth
- * test's zband_count below width x rows: stp_direct_frame_depth),
+ * buffer's zband_count below width x rows: stp_direct_frame_depth),
  * STP_ERR_UNSUPPORTED (STP_BAND_PAGES in a build without STP_WITH_PAGES). */
 int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0,
                          uint16_t rows);
@@ -262,6 +254,23 @@ int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride
  * keep mesh order); f then keeps mesh order. */
 int stp_direct_frame_sort(stp_direct_frame *f, stp_sort_entry *order, size_t order_count);
 
+/* A depth buffer for direct drawing (stp_direct_frame_depth): the
+ * caller's memory, set once; the rest set by each frame's call and read by
+ * its bands. */
+typedef struct stp_direct_depth {
+    int32_t *depths;          /* depth_count entries, at least the mesh's
+                                 vertex_count: the vertices' Q12 depths */
+    size_t depth_count;
+    uint16_t *zband;          /* zband_count entries, at least width x the
+                                 most rows a band draws: a band's depths */
+    size_t zband_count;
+    /* set by stp_direct_frame_depth: */
+    int32_t key_min, key_max; /* the stored faces' depth keys */
+    /* the depth-tested band fill (so only a program that calls
+     * stp_direct_frame_depth links it) */
+    void (*draw)(const struct stp_direct_frame *f, uint8_t *band, size_t stride, uint16_t y0, uint16_t rows);
+} stp_direct_depth;
+
 /* Hidden surfaces by a depth buffer for frame f (after
  * stp_direct_frame_project), as stp_renderer_render's Z buffer
  * (STP_HIDDEN_ZBUFFER) removes them: stp_direct_draw_band then paints the
@@ -269,19 +278,17 @@ int stp_direct_frame_sort(stp_direct_frame *f, stp_sort_entry *order, size_t ord
  * what the band holds there, with the renderer's depths (its depth keys
  * mapped over the range of the faces it would store, its depth planes and
  * pixel depths: depth_private.h), so the bands hold the renderer's
- * picture pixel for pixel, a model that is not convex included.
- * depths: caller memory of depth_count entries, at least the mesh's
- * vertex_count (4 bytes a vertex), filled here with the vertices' depths;
- * zband: caller memory of zband_count entries, width x the most rows a
- * band draws (2 bytes a pixel: 2 KiB for 8 rows of 128), written by each
- * band; both kept with the frame until its bands are drawn.  f then draws
- * in mesh order (a sort before is undone; stp_direct_frame_sort after
- * undoes this).  Errors: STP_ERR_ARG (f, depths, zband or the frame's
- * arrays NULL, depth_count below vertex_count, zband_count below width),
- * STP_ERR_UNSUPPORTED (the compact form, config.h's STP_DIRECT_COMPACT,
- * or a build without STP_WITH_ZBUFFER); f then keeps its order. */
-int stp_direct_frame_depth(stp_direct_frame *f, int32_t *depths, size_t depth_count, uint16_t *zband,
-                           size_t zband_count);
+ * picture pixel for pixel, a model that is not convex included.  depth:
+ * caller memory, its depths and zband set by the caller (4 bytes a vertex;
+ * 2 bytes a pixel of the tallest band: 2 KiB for 8 rows of 128), kept
+ * with the frame until its bands are drawn (f->depth points to it).  f
+ * then draws in mesh order (a sort before is undone;
+ * stp_direct_frame_sort after undoes this).  Errors: STP_ERR_ARG (f,
+ * depth, its arrays or the frame's NULL, depth_count below vertex_count,
+ * zband_count below width), STP_ERR_UNSUPPORTED (the compact form,
+ * config.h's STP_DIRECT_COMPACT, or a build without STP_WITH_ZBUFFER); f
+ * then keeps its order. */
+int stp_direct_frame_depth(stp_direct_frame *f, stp_direct_depth *depth);
 
 #ifdef __cplusplus
 }

@@ -19,7 +19,8 @@
  *          and stp_mesh_prepare_bounds) and
  *          stp_renderer_render band by band into the display's page buffer
  *          (stp_port, port.h).  The smallest image: direct drawing,
- *          stp_direct_frame_project (then stp_direct_frame_sort for a
+ *          stp_direct_frame_project (then stp_direct_frame_sort, or
+ *          stp_direct_frame_depth for the renderer's Z buffer, for a
  *          model that is not convex) and stp_direct_draw_band per band
  *          (direct.h).
  *   A fixed picture from flash

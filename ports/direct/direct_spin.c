@@ -97,8 +97,13 @@ int direct_spin_frame(direct_spin *s, uint16_t n, stp_direct_frame *f)
         status = stp_direct_frame_sort(f, s->order, SPIN_TRIANGLES);
 #endif
 #if SPIN_DEPTH
-    if (status == STP_OK)
-        status = stp_direct_frame_depth(f, s->depths, SPIN_VERTICES, s->zband, SPIN_WIDTH * SPIN_DEPTH_ROWS);
+    if (status == STP_OK) {
+        s->depth.depths = s->depths;
+        s->depth.depth_count = SPIN_VERTICES;
+        s->depth.zband = s->zband;
+        s->depth.zband_count = SPIN_WIDTH * SPIN_DEPTH_ROWS;
+        status = stp_direct_frame_depth(f, &s->depth);
+    }
 #endif
     return status;
 }

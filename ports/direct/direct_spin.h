@@ -70,6 +70,7 @@ typedef struct direct_spin {
 #if SPIN_DEPTH
     int32_t depths[SPIN_VERTICES]; /* the vertices' depths (stp_direct_frame_depth) */
     uint16_t zband[SPIN_WIDTH * SPIN_DEPTH_ROWS];
+    stp_direct_depth depth; /* over those two */
 #endif
 } direct_spin;
 

@@ -333,9 +333,14 @@ static void bands_equal(work *w, const stp_direct_frame *fr, const uint8_t *pict
 static void depth_picture(work *w, stp_direct_frame *fr, size_t stride)
 {
     size_t bytes = stride * (size_t)w->height, vertices = w->mesh->vertex_count;
-    size_t one_band = (size_t)w->width * (size_t)w->height;
-    assert_int_equal(stp_direct_frame_depth(fr, w->direct_depths, vertices, w->direct_zband, one_band), STP_OK);
-    assert_non_null(fr->draw_depth);
+    stp_direct_depth depth;
+    memset(&depth, 0, sizeof depth);
+    depth.depths = w->direct_depths;
+    depth.depth_count = vertices;
+    depth.zband = w->direct_zband;
+    depth.zband_count = (size_t)w->width * (size_t)w->height;
+    assert_int_equal(stp_direct_frame_depth(fr, &depth), STP_OK);
+    assert_ptr_equal(fr->depth, &depth);
     assert_null(fr->order);
     memset(w->direct_depth, 0xA5, bytes);
     assert_int_equal(stp_direct_draw_band(fr, w->direct_depth, stride, 0, (uint16_t)w->height), STP_OK);
@@ -344,24 +349,30 @@ static void depth_picture(work *w, stp_direct_frame *fr, size_t stride)
     assert_memory_equal(w->direct_depth, w->full_zbuffer, bytes);
     bands_equal(w, fr, w->direct_depth);
     /* a band taller than its depths: refused, the band untouched */
-    assert_int_equal(stp_direct_frame_depth(fr, w->direct_depths, vertices, w->direct_zband, (size_t)w->width * 8u),
-                     STP_OK);
+    depth.zband_count = (size_t)w->width * 8u;
+    assert_int_equal(stp_direct_frame_depth(fr, &depth), STP_OK);
     w->banded[0] = 0x5A;
     assert_int_equal(stp_direct_draw_band(fr, w->banded, stride, 0, 9), STP_ERR_ARG);
     assert_int_equal(w->banded[0], 0x5A);
     bands_equal(w, fr, w->direct_depth);
     /* refused: too few depths or entries, NULL arguments */
-    assert_int_equal(stp_direct_frame_depth(fr, w->direct_depths, vertices - 1u, w->direct_zband, one_band),
-                     STP_ERR_ARG);
-    assert_int_equal(stp_direct_frame_depth(fr, w->direct_depths, vertices, w->direct_zband, (size_t)w->width - 1u),
-                     STP_ERR_ARG);
-    assert_int_equal(stp_direct_frame_depth(fr, NULL, vertices, w->direct_zband, one_band), STP_ERR_ARG);
-    assert_int_equal(stp_direct_frame_depth(fr, w->direct_depths, vertices, NULL, one_band), STP_ERR_ARG);
-    assert_int_equal(stp_direct_frame_depth(NULL, w->direct_depths, vertices, w->direct_zband, one_band),
-                     STP_ERR_ARG);
+    depth.depth_count = vertices - 1u;
+    assert_int_equal(stp_direct_frame_depth(fr, &depth), STP_ERR_ARG);
+    depth.depth_count = vertices;
+    depth.zband_count = (size_t)w->width - 1u;
+    assert_int_equal(stp_direct_frame_depth(fr, &depth), STP_ERR_ARG);
+    depth.zband_count = (size_t)w->width;
+    depth.depths = NULL;
+    assert_int_equal(stp_direct_frame_depth(fr, &depth), STP_ERR_ARG);
+    depth.depths = w->direct_depths;
+    depth.zband = NULL;
+    assert_int_equal(stp_direct_frame_depth(fr, &depth), STP_ERR_ARG);
+    depth.zband = w->direct_zband;
+    assert_int_equal(stp_direct_frame_depth(fr, NULL), STP_ERR_ARG);
+    assert_int_equal(stp_direct_frame_depth(NULL, &depth), STP_ERR_ARG);
     /* the sort after it: far to near, no depth test */
     assert_int_equal(stp_direct_frame_sort(fr, w->direct_order, TORUS_TRIANGLES), STP_OK);
-    assert_null(fr->draw_depth);
+    assert_null(fr->depth);
     assert_int_equal(stp_direct_draw_band(fr, w->banded, stride, 0, (uint16_t)w->height), STP_OK);
     assert_memory_equal(w->banded, w->direct_sorted, bytes);
 }
@@ -380,9 +391,10 @@ static int sorted_pictures(work *w, stp_direct_frame *fr, const stp_view *view, 
 #if STP_DIRECT_COMPACT
     assert_int_equal(status, STP_ERR_UNSUPPORTED);
     assert_int_equal(stp_direct_frame_sort(NULL, w->direct_order, TORUS_TRIANGLES), STP_ERR_ARG);
-    assert_int_equal(stp_direct_frame_depth(fr, w->direct_depths, w->mesh->vertex_count, w->direct_zband,
-                                            sizeof w->direct_zband / sizeof w->direct_zband[0]),
-                     STP_ERR_UNSUPPORTED);
+    {
+        stp_direct_depth depth = {w->direct_depths, 3 * TORUS_TRIANGLES, w->direct_zband, MAX_W * MAX_H, 0, 0, 0};
+        assert_int_equal(stp_direct_frame_depth(fr, &depth), STP_ERR_UNSUPPORTED);
+    }
     (void)view;
     (void)light;
     (void)pose;
