@@ -1616,6 +1616,18 @@ STP_HOT_INLINE int general_normal_and_side(const stp_renderer *r, const stp_vec3
     if (count == 3 && r->backface_removal) {
         int64_t c[3];
         int sure;
+#if STP_HAVE_MUL64
+        /* the magnitudes once, for the side test and the normal */
+        uint64_t c_or;
+        stp_render_triangle_cross(v, c);
+        c_or = stp_abs64u(c[0]) | stp_abs64u(c[1]) | stp_abs64u(c[2]);
+        if (c_or == 0)
+            return STP_ERR_DEGENERATE;
+        sure = stp_render_certain_side_or(f, c, c_or, v[0]);
+        if (sure < 0)
+            return 0;
+        stp_unit_q14_from64_or(c[0], c[1], c[2], c_or, n);
+#else
         stp_render_triangle_cross(v, c);
         if ((c[0] | c[1] | c[2]) == 0)
             return STP_ERR_DEGENERATE;
@@ -1623,6 +1635,7 @@ STP_HOT_INLINE int general_normal_and_side(const stp_renderer *r, const stp_vec3
         if (sure < 0)
             return 0;
         (void)stp_render_unit_q14(c[0], c[1], c[2], n);
+#endif
         *side = sure > 0 ? 1 : stp_render_face_side(f, n, v[0]);
         return 1;
     }
