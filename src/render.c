@@ -1537,10 +1537,14 @@ static stp_face world_facing(const stp_renderer *r, const stp_vec3 *v)
     return side > 0 ? STP_FACE_FRONT : (side < 0 ? STP_FACE_BACK : STP_FACE_UNKNOWN);
 }
 
-/* model_route's test but the shadow maps', when model_route_ok is clear:
- * sets model_route_ok when it passes. */
+/* model_route's test, when model_route_ok is clear: sets model_route_ok
+ * when it passes. */
 STP_NOINLINE int model_route_decide(stp_renderer *r)
 {
+#if STP_WITH_SHADOWS
+    if (shadows_on(r))
+        return 0;
+#endif
 #if STP_WITH_TRANSPARENCY
     if (r->t_max > 0 || r->t_min > 0)
         return 0;
@@ -1554,14 +1558,10 @@ STP_NOINLINE int model_route_decide(stp_renderer *r)
 /* The model frame when a flat polygon takes the face stage's model route
  * (the route of every face stp_renderer_mesh enters without the fallback:
  * a usable model frame, monochrome, no transparency, no shadow map), or
- * NULL.  All but the shadow maps (set in shadow.c) are known from
- * model_route_ok, one test, while the state they depend on stays. */
+ * NULL.  Known from model_route_ok, one test, while the state they depend
+ * on stays (shadow.c clears it when a map is set). */
 STP_HOT_INLINE const stp_model_frame *model_route(stp_renderer *r)
 {
-#if STP_WITH_SHADOWS
-    if (shadows_on(r))
-        return 0;
-#endif
     if (STP_UNLIKELY(!r->model_route_ok) && !model_route_decide(r))
         return 0;
     return &r->frame;
