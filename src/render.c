@@ -891,7 +891,9 @@ STP_NOINLINE unsigned cache_fill(stp_renderer *r, stp_vertex_entry *c, uint32_t 
     unsigned code;
     int held = c->used_by == serial; /* the slot holds an earlier vertex of this polygon */
     stp_vec3 *view = held ? &r->clip_a[i] : &c->view;
-    vertex_to_view(r, *p, view);
+    /* vertex_to_view in line: a call of its own took the point apart */
+    if (stp_render_point_at_view(r, p, view))
+        view->x = STP_FIX_MAX;
     code = stp_view_saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode(&r->clip_volume, *view);
     if (held) {
         r->cached[i] = (uint16_t)STP_CACHE_NONE;
