@@ -894,7 +894,13 @@ STP_NOINLINE unsigned cache_fill(stp_renderer *r, stp_vertex_entry *c, uint32_t 
     /* vertex_to_view in line: a call of its own took the point apart */
     if (stp_render_point_at_view(r, p, view))
         view->x = STP_FIX_MAX;
+#if STP_NARROW_FORMS
     code = stp_view_saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode(&r->clip_volume, *view);
+#else
+    /* stp_clip_outcode's planes in line (the 32-bit targets' shorter
+     * test first stays a call) */
+    code = stp_view_saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode_planes(&r->clip_volume, *view);
+#endif
     if (held) {
         r->cached[i] = (uint16_t)STP_CACHE_NONE;
         *entry = 0;
