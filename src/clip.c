@@ -57,26 +57,7 @@ unsigned stp_clip_outcode(const stp_clip_volume *v, stp_vec3 p)
     if (!v->parallel && inside_sides(v, p))
         return p.z < v->near ? 1u : 0u; /* only the near plane can cut */
 #endif
-    /* stp_clip_distance's five planes at once */
-    int64_t fx = stp_asr64((int64_t)v->focal * p.x, F), fy = stp_asr64((int64_t)v->focal * p.y, F);
-    int64_t hw, hh;
-    unsigned code = (int64_t)p.z - v->near < 0 ? 1u : 0u;
-    if (!v->parallel) {
-        hw = ((int64_t)v->width * p.z) / 2;
-        hh = ((int64_t)v->height * p.z) / 2;
-    } else {
-        hw = ((int64_t)v->width * ONE) / 2;
-        hh = ((int64_t)v->height * ONE) / 2;
-    }
-    if (fx + hw < 0)
-        code |= 2u;
-    if (hw - fx < 0)
-        code |= 4u;
-    if (hh - fy < 0)
-        code |= 8u;
-    if (fy + hh < 0)
-        code |= 16u;
-    return code;
+    return stp_clip_outcode_planes(v, p);
 }
 
 int stp_clip_polygon(const stp_clip_volume *v, stp_vec3 *a, stp_vec3 *b, stp_fix *sa,

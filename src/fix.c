@@ -549,6 +549,25 @@ STP_HOT_INLINE int unit_scale32(int32_t x, int32_t y, int32_t z, uint32_t m, int
 }
 #endif
 
+/* unit_scale's last step: (x, y, z) times 2^up (floor shifts when up < 0)
+ * into v[] */
+STP_HOT_INLINE int unit_scale_up(int64_t x, int64_t y, int64_t z, int up, int32_t v[3])
+{
+    if (up >= 0) {
+        x *= (int64_t)1 << up;
+        y *= (int64_t)1 << up;
+        z *= (int64_t)1 << up;
+    } else {
+        x = stp_asr64(x, -up);
+        y = stp_asr64(y, -up);
+        z = stp_asr64(z, -up);
+    }
+    v[0] = (int32_t)x;
+    v[1] = (int32_t)y;
+    v[2] = (int32_t)z;
+    return up;
+}
+
 STP_HOT_INLINE int unit_scale(int64_t x, int64_t y, int64_t z, int32_t v[3])
 {
 #if defined(__OPTIMIZE_SIZE__) && STP_HAVE_MUL32 && !STP_HAVE_MUL64
@@ -582,19 +601,7 @@ STP_HOT_INLINE int unit_scale(int64_t x, int64_t y, int64_t z, int32_t v[3])
         return up;
     }
 #endif
-    if (up >= 0) {
-        x *= (int64_t)1 << up;
-        y *= (int64_t)1 << up;
-        z *= (int64_t)1 << up;
-    } else {
-        x = stp_asr64(x, -up);
-        y = stp_asr64(y, -up);
-        z = stp_asr64(z, -up);
-    }
-    v[0] = (int32_t)x;
-    v[1] = (int32_t)y;
-    v[2] = (int32_t)z;
-    return up;
+    return unit_scale_up(x, y, z, up, v);
 #endif
 }
 
@@ -732,6 +739,24 @@ static inline void unit_q14_scaled(const int32_t v[3], int16_t out[3])
 #endif
 }
 
+#if STP_HAVE_MUL64
+void stp_unit_q14_from64_or(int64_t x, int64_t y, int64_t z, uint64_t m, int16_t out[3])
+{
+    int32_t v[3];
+    (void)unit_scale_up(x, y, z, 30 - stp_bit_length64(m), v);
+    unit_q14_scaled(v, out);
+}
+
+/* the steps above after the magnitudes (one copy of them) */
+int stp_unit_q14_from64(int64_t x, int64_t y, int64_t z, int16_t out[3])
+{
+    uint64_t m = stp_abs64u(x) | stp_abs64u(y) | stp_abs64u(z);
+    if (m == 0)
+        return 0;
+    stp_unit_q14_from64_or(x, y, z, m, out);
+    return 1;
+}
+#else
 int stp_unit_q14_from64(int64_t x, int64_t y, int64_t z, int16_t out[3])
 {
     int32_t v[3];
@@ -741,6 +766,7 @@ int stp_unit_q14_from64(int64_t x, int64_t y, int64_t z, int16_t out[3])
     unit_q14_scaled(v, out);
     return 1;
 }
+#endif
 
 #if STP_NARROW_FORMS
 int stp_unit_q14_from32(int32_t x, int32_t y, int32_t z, int16_t out[3])

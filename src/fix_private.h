@@ -135,6 +135,12 @@ int64_t stp_unit_from64(int64_t x, int64_t y, int64_t z, stp_unit3 *out);
  * own rounding step where 64-bit products are native, and without the
  * length); 1, or 0 for a zero vector (out unset). */
 int stp_unit_q14_from64(int64_t x, int64_t y, int64_t z, int16_t out[3]);
+#if STP_HAVE_MUL64
+/* stp_unit_q14_from64 for (x, y, z) not 0 whose magnitudes ORed, m, the
+ * caller has formed (the polygon route's side test does): the same
+ * values, without forming them again */
+void stp_unit_q14_from64_or(int64_t x, int64_t y, int64_t z, uint64_t m, int16_t out[3]);
+#endif
 #if STP_NARROW_FORMS
 /* stp_unit_q14_from64 for int32 components (the same values), where
  * 64-bit arguments and magnitudes cost more (ARMv6-M's -O2) */

@@ -880,6 +880,13 @@ typedef struct stp_entry {
 #endif
 
 #if STP_VERTEX_CACHE
+/* log2 STP_VERTEX_CACHE (a power of two up to 4096: config.h) */
+#define STP_CACHE_BITS                                                                                   \
+    (STP_VERTEX_CACHE >= 4096 ? 12 : STP_VERTEX_CACHE >= 2048 ? 11 : STP_VERTEX_CACHE >= 1024 ? 10 :       \
+     STP_VERTEX_CACHE >= 512 ? 9 : STP_VERTEX_CACHE >= 256 ? 8 : STP_VERTEX_CACHE >= 128 ? 7 :             \
+     STP_VERTEX_CACHE >= 64 ? 6 : STP_VERTEX_CACHE >= 32 ? 5 : STP_VERTEX_CACHE >= 16 ? 4 :                 \
+     STP_VERTEX_CACHE >= 8 ? 3 : STP_VERTEX_CACHE >= 4 ? 2 : 1)
+
 /* A miss of cache_vertex: point p to view coordinates and its outcode,
  * into entry c (slot) unless this polygon's vertex i - 1 or earlier holds
  * it (then p stays outside the cache, its view point in r->clip_a[i]).
@@ -891,8 +898,16 @@ STP_NOINLINE unsigned cache_fill(stp_renderer *r, stp_vertex_entry *c, uint32_t 
     unsigned code;
     int held = c->used_by == serial; /* the slot holds an earlier vertex of this polygon */
     stp_vec3 *view = held ? &r->clip_a[i] : &c->view;
-    vertex_to_view(r, *p, view);
+    /* vertex_to_view in line: a call of its own took the point apart */
+    if (stp_render_point_at_view(r, p, view))
+        view->x = STP_FIX_MAX;
+#if STP_NARROW_FORMS
     code = stp_view_saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode(&r->clip_volume, *view);
+#else
+    /* stp_clip_outcode's planes in line (the 32-bit targets' shorter
+     * test first stays a call) */
+    code = stp_view_saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode_planes(&r->clip_volume, *view);
+#endif
     if (held) {
         r->cached[i] = (uint16_t)STP_CACHE_NONE;
         *entry = 0;
@@ -921,14 +936,16 @@ STP_HOT_INLINE unsigned cache_vertex(stp_renderer *r, const stp_vec3 *p, int i, 
      * miss */
     const stp_fix px = p->x, py = p->y, pz = p->z;
     /* a multiplicative hash of the exact coordinates, rotated apart and
-     * mixed by one product.  With up to 64 entries the slot reads the
-     * product's bits 0..20 alone, which only the factor's bits 0..20
-     * reach: there uz rotated left by 22 is uz >> 10, one shift (ARMv6-M
-     * has no rotation by an immediate count) */
+     * mixed by one product; the slot is the product's top bits, one shift
+     * (the bits 0..20 folded before took three: torus 128x64, host 0.812
+     * -> 0.809 M instructions a frame, Cortex-M0+ 1 687 040 -> 1 687 000).
+     * With up to 64 entries uz >> 10 stands for uz rotated left by 22, one
+     * shift (ARMv6-M has no rotation by an immediate count): its low bits
+     * are below a 64th of a unit */
     uint32_t ux = (uint32_t)px, uy = (uint32_t)py, uz = (uint32_t)pz;
     uint32_t rz = STP_VERTEX_CACHE <= 64 ? uz >> 10 : (uz << 22) | (uz >> 10);
     uint32_t h = (ux ^ ((uy << 11) | (uy >> 21)) ^ rz) * hash;
-    uint32_t slot = (h ^ (h >> 15)) & (STP_VERTEX_CACHE - 1);
+    uint32_t slot = STP_VERTEX_CACHE == 1 ? 0 : h >> (32 - STP_CACHE_BITS);
     stp_vertex_entry *c = &cache[slot];
     if (c->stamp != stamp || c->point.x != px || c->point.y != py || c->point.z != pz)
         return cache_fill(r, c, slot, p, i, serial, entry);
@@ -1537,10 +1554,14 @@ static stp_face world_facing(const stp_renderer *r, const stp_vec3 *v)
     return side > 0 ? STP_FACE_FRONT : (side < 0 ? STP_FACE_BACK : STP_FACE_UNKNOWN);
 }
 
-/* model_route's test but the shadow maps', when model_route_ok is clear:
- * sets model_route_ok when it passes. */
+/* model_route's test, when model_route_ok is clear: sets model_route_ok
+ * when it passes. */
 STP_NOINLINE int model_route_decide(stp_renderer *r)
 {
+#if STP_WITH_SHADOWS
+    if (shadows_on(r))
+        return 0;
+#endif
 #if STP_WITH_TRANSPARENCY
     if (r->t_max > 0 || r->t_min > 0)
         return 0;
@@ -1554,14 +1575,10 @@ STP_NOINLINE int model_route_decide(stp_renderer *r)
 /* The model frame when a flat polygon takes the face stage's model route
  * (the route of every face stp_renderer_mesh enters without the fallback:
  * a usable model frame, monochrome, no transparency, no shadow map), or
- * NULL.  All but the shadow maps (set in shadow.c) are known from
- * model_route_ok, one test, while the state they depend on stays. */
+ * NULL.  Known from model_route_ok, one test, while the state they depend
+ * on stays (shadow.c clears it when a map is set). */
 STP_HOT_INLINE const stp_model_frame *model_route(stp_renderer *r)
 {
-#if STP_WITH_SHADOWS
-    if (shadows_on(r))
-        return 0;
-#endif
     if (STP_UNLIKELY(!r->model_route_ok) && !model_route_decide(r))
         return 0;
     return &r->frame;
@@ -1616,6 +1633,18 @@ STP_HOT_INLINE int general_normal_and_side(const stp_renderer *r, const stp_vec3
     if (count == 3 && r->backface_removal) {
         int64_t c[3];
         int sure;
+#if STP_HAVE_MUL64
+        /* the magnitudes once, for the side test and the normal */
+        uint64_t c_or;
+        stp_render_triangle_cross(v, c);
+        c_or = stp_abs64u(c[0]) | stp_abs64u(c[1]) | stp_abs64u(c[2]);
+        if (c_or == 0)
+            return STP_ERR_DEGENERATE;
+        sure = stp_render_certain_side_or(f, c, c_or, v[0]);
+        if (sure < 0)
+            return 0;
+        stp_unit_q14_from64_or(c[0], c[1], c[2], c_or, n);
+#else
         stp_render_triangle_cross(v, c);
         if ((c[0] | c[1] | c[2]) == 0)
             return STP_ERR_DEGENERATE;
@@ -1623,6 +1652,7 @@ STP_HOT_INLINE int general_normal_and_side(const stp_renderer *r, const stp_vec3
         if (sure < 0)
             return 0;
         (void)stp_render_unit_q14(c[0], c[1], c[2], n);
+#endif
         *side = sure > 0 ? 1 : stp_render_face_side(f, n, v[0]);
         return 1;
     }

@@ -291,7 +291,10 @@ static inline int stp_render_certain_side32(const stp_model_frame *f, const int6
 }
 #endif
 
-static inline int stp_render_certain_side(const stp_model_frame *f, const int64_t c[3], stp_vec3 v0)
+/* stp_render_certain_side for c whose magnitudes ORed are c_or (the
+ * caller's, which stp_unit_q14_from64_or takes too) */
+static inline int stp_render_certain_side_or(const stp_model_frame *f, const int64_t c[3], uint64_t c_or,
+                                             stp_vec3 v0)
 {
 #if STP_NARROW_FORMS
     int sure = stp_render_certain_side32(f, c, v0);
@@ -301,7 +304,6 @@ static inline int stp_render_certain_side(const stp_model_frame *f, const int64_
     int64_t cx = c[0], cy = c[1], cz = c[2], dot;
     int64_t dx = (int64_t)f->eye[0] - v0.x, dy = (int64_t)f->eye[1] - v0.y,
             dz = (int64_t)f->eye[2] - v0.z;
-    uint64_t c_or = stp_abs64u(cx) | stp_abs64u(cy) | stp_abs64u(cz);
     uint64_t d_or = stp_abs64u(dx) | stp_abs64u(dy) | stp_abs64u(dz), bound;
     if ((c_or | d_or) >> 29) {
         int a = stp_bit_length64(c_or) - 29, b = stp_bit_length64(d_or) - 29;
@@ -323,6 +325,11 @@ static inline int stp_render_certain_side(const stp_model_frame *f, const int64_
     if (stp_abs64u(dot) <= bound)
         return 0;
     return dot > 0 ? 1 : -1;
+}
+
+static inline int stp_render_certain_side(const stp_model_frame *f, const int64_t c[3], stp_vec3 v0)
+{
+    return stp_render_certain_side_or(f, c, stp_abs64u(c[0]) | stp_abs64u(c[1]) | stp_abs64u(c[2]), v0);
 }
 
 /* How many row centres 16 r + 8 a triangle with device y coordinates a,

@@ -155,9 +155,9 @@ struct stp_renderer {
     int fast_shade_parallel;
     int frame_valid;        /* (the model frame, below) */
     /* a flat polygon's entry may take the model route (render.c's
-     * model_route: frame valid and usable, no colour, no transparency;
-     * the shadow maps are tested apart): set by model_route_decide,
-     * cleared with frame_valid and by set_colour and set_transparency */
+     * model_route: frame valid and usable, no colour, no transparency,
+     * no shadow map): set by model_route_decide, cleared with frame_valid,
+     * by set_colour, set_transparency and a shadow map set (shadow.c) */
     int model_route_ok;
     int model_on;           /* 0: the model transform is the identity, skipped */
 #endif

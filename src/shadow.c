@@ -198,6 +198,7 @@ int stp_renderer_set_shadow_map(stp_renderer *r, int light, uint16_t *depth, siz
         depth[i] = 0;
     built.depth = depth;
     r->shadow_set |= (uint32_t)1 << light;
+    r->model_route_ok = 0; /* render.c's model route decides again: no map there */
     built.width = width;
     built.height = height;
     r->shadow_generation = r->shadow_generation % 0x7FFFFFu + 1u;
