@@ -504,26 +504,31 @@ STP_HOT_INLINE void tri_depth_step(tri_depth *td, const depth_plane *pl)
  * x1's centre and ddx a pixel, may leave 1..65535: each pixel's clamped
  * (depth_of), and the visible ones' written to z (the line's entries) and
  * painted in runs. */
-DEPTH_MAYBE_UNUSED STP_NOINLINE void span_z_clamped_bits(uint16_t *z, uint8_t *row, uint8_t page_bit, uint8_t pattern, uint32_t x1,
-                                uint32_t x2, int64_t d, int64_t ddx)
+DEPTH_MAYBE_UNUSED STP_NOINLINE void span_z_clamped_bits(uint16_t *z, uint8_t *row, uint8_t page_bit, uint8_t pattern,
+                                                         uint32_t x1, uint32_t x2, int64_t d, int64_t ddx)
 {
-    uint32_t x, run = 0;
+    uint32_t x = x1, run = 0;
     int in_run = 0;
-    for (x = x1; x <= x2; x++, d += ddx) {
-        uint16_t depth = depth_of(d);
-        if (depth > z[x]) {
+    /* one run filler call (a run ends at a hidden pixel or past x2): the
+     * smaller code, for the rare spans that come here */
+    for (;;) {
+        uint16_t depth = x <= x2 ? depth_of(d) : 0;
+        if (depth > z[x <= x2 ? x : x2]) {
             z[x] = depth;
             if (!in_run) {
                 run = x;
                 in_run = 1;
             }
-        } else if (in_run) {
-            fill_run(row, page_bit, run, x - 1, pattern);
+        } else {
+            if (in_run)
+                fill_run(row, page_bit, run, x - 1, pattern);
             in_run = 0;
+            if (x > x2)
+                return;
         }
+        x++;
+        d += ddx;
     }
-    if (in_run)
-        fill_run(row, page_bit, run, x2, pattern);
 }
 
 /* An opaque depth-tested span of a 1-bit band line, any depths (as

@@ -52,7 +52,7 @@ static void draw_face_depth(const stp_direct_frame *f, const uint16_t k[3], uint
         uint32_t u1 = (p1 < ORIGIN_PIXELS ? ORIGIN_PIXELS : p1) - ORIGIN_PIXELS, u2 = p2 - ORIGIN_PIXELS;
         int64_t d, ddx;
         if (!tri_span_straight(z, line, page_bit, pattern, u1, u2, &td, &pl, &d, &ddx))
-            span_z_bits(z, line, page_bit, pattern, u1, u2, d, ddx);
+            span_z_clamped_bits(z, line, page_bit, pattern, u1, u2, d, ddx);
         do {
             if (!stp_tri_walk_next(&w))
                 return;

@@ -879,7 +879,7 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
     if (tr) {
         uint8_t page_bit = pages ? tr->page_bit : 0;
         if (!tri_span_straight(tr->z, tr->band, page_bit, pattern_of_row(fr, row), p1, p2, td, pl, &d, &ddx))
-            span_z_bits(tr->z, tr->band, page_bit, pattern_of_row(fr, row), p1, p2, d, ddx);
+            span_z_clamped_bits(tr->z, tr->band, page_bit, pattern_of_row(fr, row), p1, p2, d, ddx);
         return;
     }
     d = tri_depth_at(td, pl, p1, &ddx);
