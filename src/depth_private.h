@@ -534,8 +534,8 @@ DEPTH_MAYBE_UNUSED STP_NOINLINE void span_z_clamped_bits(uint16_t *z, uint8_t *r
 /* An opaque depth-tested span of a 1-bit band line, any depths (as
  * span_z_clamped_bits): straight (span_z_direct) when both ends' depths
  * are 1..65535, so every pixel's between, and the depth and its step fit
- * 32 bits (|step| <= |d_end - d|).  Out of line: the triangle's rare
- * case (tri_span_bits). */
+ * 32 bits (|step| <= |d_end - d|), as raster.c's put_span_z takes a
+ * polygon's span of a 1-bit style: direct_depth.c's clipped faces. */
 DEPTH_MAYBE_UNUSED STP_NOINLINE void span_z_bits(uint16_t *z, uint8_t *row, uint8_t page_bit, uint8_t pattern,
                                            uint32_t x1, uint32_t x2, int64_t d, int64_t ddx)
 {
