@@ -711,19 +711,18 @@ static inline int32_t depth_q12_in(frame *fr, void *cache, int32_t key)
 #endif
 }
 
-static inline int32_t depth_q12(frame *fr, int32_t key)
-{
-#if KEY_CACHE > 0
-    return depth_q12_in(fr, fr->cached, key);
-#else
-    return depth_q12_of(&fr->keys, key);
-#endif
-}
 
 #if KEY_CACHE > 0
 #define DEPTH_KEPT(fr) ((void *)(fr)->cached)
 #else
 #define DEPTH_KEPT(fr) ((void *)0)
+#endif
+
+#if defined(__OPTIMIZE_SIZE__) /* its one caller: depth_setup_triangle's build for size */
+static inline int32_t depth_q12(frame *fr, int32_t key)
+{
+    return depth_q12_in(fr, DEPTH_KEPT(fr), key);
+}
 #endif
 
 /* A triangle's plane (depth_plane_triangle) from its vertices' Q12
