@@ -534,16 +534,21 @@ DEPTH_MAYBE_UNUSED STP_NOINLINE void span_z_clamped_bits(uint16_t *z, uint8_t *r
 /* An opaque depth-tested span of a 1-bit band line, any depths (as
  * span_z_clamped_bits): straight (span_z_direct) when both ends' depths
  * are 1..65535, so every pixel's between, and the depth and its step fit
- * 32 bits (|step| <= |d_end - d|), as raster.c's put_span_z takes a
- * polygon's span of a 1-bit style: direct_depth.c's clipped faces. */
+ * 32 bits (|step| <= |d_end - d|); a polygon's span of a 1-bit style
+ * (raster.c's put_span_z, direct_depth.c's clipped faces).  span_z_direct
+ * inlined twice: a line of rows (page_bit 0) as a constant, so the rows'
+ * run filler keeps no page test. */
 DEPTH_MAYBE_UNUSED STP_NOINLINE void span_z_bits(uint16_t *z, uint8_t *row, uint8_t page_bit, uint8_t pattern,
-                                           uint32_t x1, uint32_t x2, int64_t d, int64_t ddx)
+                                                 uint32_t x1, uint32_t x2, int64_t d, int64_t ddx)
 {
     int64_t d_end = d + ddx * (int64_t)(x2 - x1);
-    if (d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN && d_end < DEPTH_Q12_END)
-        span_z_direct(z, row, page_bit, pattern, x1, x2, (int32_t)d, x2 > x1 ? (int32_t)ddx : 0);
-    else
+    int32_t dstep = x2 > x1 ? (int32_t)ddx : 0;
+    if (!(d >= DEPTH_Q12_MIN && d < DEPTH_Q12_END && d_end >= DEPTH_Q12_MIN && d_end < DEPTH_Q12_END))
         span_z_clamped_bits(z, row, page_bit, pattern, x1, x2, d, ddx);
+    else if (STP_WITH_PAGES && page_bit != 0)
+        span_z_direct(z, row, page_bit, pattern, x1, x2, (int32_t)d, dstep);
+    else
+        span_z_direct(z, row, 0, pattern, x1, x2, (int32_t)d, dstep);
 }
 
 /* A triangle's short depth (tri_depth_start) at pixel p's centre on the

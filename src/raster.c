@@ -560,15 +560,6 @@ static uint8_t pattern_of_row(const frame *fr, uint32_t y)
 #endif
 }
 
-/* (span_z_direct inlined twice: rows with page_bit 0 as a constant, so
- * the rows' run filler keeps no page test) */
-static void put_span_z_direct(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, int32_t di, int32_t dstep)
-{
-    if (STP_WITH_PAGES && fr->page_one)
-        span_z_direct(z_row(fr, y), band_row(fr, y), page_bit_of(fr, y), pattern_of_row(fr, y), x1, x2, di, dstep);
-    else
-        span_z_direct(z_row(fr, y), band_row(fr, y), 0, pattern_of_row(fr, y), x1, x2, di, dstep);
-}
 
 /* put_span_z's opaque span whose depths fit 32 bits (di at x1's centre,
  * dstep per pixel, every pixel's 1..65535): alternately skip the hidden
@@ -649,27 +640,23 @@ static void span_z_clamped(const span_paint *sp, uint16_t *z, uint32_t x1, uint3
 static void put_span_z(const frame *fr, uint32_t y, uint32_t x1, uint32_t x2, paint style,
                        int64_t d, int64_t ddx, int smooth, int64_t s0, int64_t sstep, stp_fix t, int direct)
 {
-    uint16_t *z = fr->zbuf + (size_t)(y - fr->rows.y0) * fr->r->width;
+    uint16_t *z = z_row(fr, y);
     int64_t d_end = d + ddx * (int64_t)(x2 - x1);
     const int64_t lo = DEPTH_Q12_MIN, hi = DEPTH_Q12_END;
     span_paint sp;
+    if (direct) { /* opaque too: as every route's 1-bit spans */
+        span_z_bits(z, band_row(fr, y), page_bit_of(fr, y), pattern_of_row(fr, y), x1, x2, d, ddx);
+        return;
+    }
     if (d >= lo && d < hi && d_end >= lo && d_end < hi) {
         /* both ends within 1..65535 (so every pixel between): no clamping,
          * and the depth and its step fit 32 bits (|step| <= |d_end - d|) */
         int32_t di = (int32_t)d, dstep = x2 > x1 ? (int32_t)ddx : 0;
-        if (direct) { /* opaque too */
-            put_span_z_direct(fr, y, x1, x2, di, dstep);
-            return;
-        }
         span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t);
         if (t == 0)
             span_z_opaque(&sp, z, x1, x2, di, dstep);
         else
             span_z_transparent(&sp, z, x1, x2, di, dstep);
-        return;
-    }
-    if (direct) { /* a direct style's, as every route's 1-bit spans */
-        span_z_clamped_bits(z, band_row(fr, y), page_bit_of(fr, y), pattern_of_row(fr, y), x1, x2, d, ddx);
         return;
     }
     span_paint_init(&sp, fr, y, x1, style, smooth, s0, sstep, t);

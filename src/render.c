@@ -525,11 +525,18 @@ static void cache_forget(stp_renderer *r)
 
 /* An entered point (model coordinates) to view coordinates by the
  * geometry stage; a point the model transform saturated comes out
- * saturated too (see stp_view_saturated). */
+ * saturated too (see stp_view_saturated).  In line where the caller has
+ * the point's address (cache_fill: a call took the point apart). */
+STP_HOT_INLINE void vertex_at_view(const stp_renderer *r, const stp_vec3 *p, stp_vec3 *out)
+{
+    if (stp_render_point_at_view(r, p, out))
+        out->x = STP_FIX_MAX;
+}
+
+/* vertex_at_view of a point passed by value, a call */
 static void vertex_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
 {
-    if (stp_render_point_to_view(r, p, out))
-        out->x = STP_FIX_MAX;
+    vertex_at_view(r, &p, out);
 }
 
 void stp_render_geometry_update(stp_renderer *r)
@@ -898,9 +905,7 @@ STP_NOINLINE unsigned cache_fill(stp_renderer *r, stp_vertex_entry *c, uint32_t 
     unsigned code;
     int held = c->used_by == serial; /* the slot holds an earlier vertex of this polygon */
     stp_vec3 *view = held ? &r->clip_a[i] : &c->view;
-    /* vertex_to_view in line: a call of its own took the point apart */
-    if (stp_render_point_at_view(r, p, view))
-        view->x = STP_FIX_MAX;
+    vertex_at_view(r, p, view);
 #if STP_NARROW_FORMS
     code = stp_view_saturated(*view) ? STP_CODE_RANGE : stp_clip_outcode(&r->clip_volume, *view);
 #else
