@@ -195,14 +195,18 @@
  * an entry plus 2 per STP_MAX_POLYGON_VERTICES; 0 takes it out
  * (`stipple compile` does: a compiled scene is entered once; the face
  * stage's prepared shading stays in the renderer either way).  64 -> 0 saves 920 bytes of code.
- * The default is 64, or 32 in builds of triangles and quadrilaterals
- * (STP_MAX_POLYGON_VERTICES <= 4), the small targets' builds, whose
- * meshes go through mesh entry and its own scratch: a triangle-only
- * Cortex-M0+ renderer object is 3 144 B instead of 4 552 B; with 32
- * entries the bench torus entered polygon by polygon costs 1.2 % more
- * instructions (tools/bench/torus_bench.sh, 128x64). */
+ * The default is 64; 32 in builds of quadrilaterals and 16 in builds of
+ * triangles (STP_MAX_POLYGON_VERTICES 4 and 3), the small targets'
+ * builds, whose meshes go through mesh entry and its own scratch: the
+ * cache is most of their renderer object, which is then under 4 KiB
+ * (tools/renderer_state.sh).  Measured in a triangle build: the
+ * Cortex-M0+ renderer object 5 800 / 4 392 / 3 688 B with 64 / 32 / 16
+ * entries, the bench torus entered polygon by polygon 0.802 / 0.817 /
+ * 0.838 M instructions a frame (tools/bench/torus_bench.sh, 128x64). */
 #ifndef STP_VERTEX_CACHE
-#if STP_MAX_POLYGON_VERTICES <= 4
+#if STP_MAX_POLYGON_VERTICES <= 3
+#define STP_VERTEX_CACHE 16
+#elif STP_MAX_POLYGON_VERTICES <= 4
 #define STP_VERTEX_CACHE 32
 #else
 #define STP_VERTEX_CACHE 64
