@@ -129,7 +129,6 @@ STP_HOT_INLINE void draw_in_order(const stp_direct_frame *f, uint8_t *band, size
     uint16_t i, t;
     for (i = 0; i < f->order_count; i++) {
         const uint16_t *k;
-        int a, b, c;
         t = (uint16_t)f->order[i].index;
         k = f->mesh->triangles + 3 * (size_t)t;
         if (clipping && (f->faces[t] & STP_DIRECT_FACE_CLIPPED)) {
@@ -137,13 +136,8 @@ STP_HOT_INLINE void draw_in_order(const stp_direct_frame *f, uint8_t *band, size
             draw_clipped_face(f, k, (uint8_t)f->faces[t], band, stride, page_shift, rows);
             continue;
         }
-        /* a face wholly above the band's top or at or below its end
-         * reaches none of its row centres: left out before the call */
-        a = STP_TRI_Y(&f->points[k[0]]);
-        b = STP_TRI_Y(&f->points[k[1]]);
-        c = STP_TRI_Y(&f->points[k[2]]);
-        if ((a < rows->top && b < rows->top && c < rows->top) || (a >= rows->end && b >= rows->end && c >= rows->end))
-            continue;
+        if (face_off_band(f, k, rows))
+            continue; /* before the call */
         draw_faces(f, k, f->faces + t, 1, band, stride, page_shift, rows);
     }
 }

@@ -59,6 +59,15 @@ DIRECT_BAND_FN void band_rows_at(stp_band_rows *band_rows, uint16_t y0, uint16_t
     band_rows->end = (int32_t)((band_rows->y0 + rows) << SUB);
 }
 
+/* Whether face k's corners all lie above the band's top or all at or
+ * below its end (rows: at the moved origin): then it reaches none of the
+ * band's row centres, and is left out before the walk's set-up */
+STP_HOT_INLINE int face_off_band(const stp_direct_frame *f, const uint16_t k[3], const stp_band_rows *rows)
+{
+    int a = STP_TRI_Y(&f->points[k[0]]), b = STP_TRI_Y(&f->points[k[1]]), c = STP_TRI_Y(&f->points[k[2]]);
+    return (a < rows->top && b < rows->top && c < rows->top) || (a >= rows->end && b >= rows->end && c >= rows->end);
+}
+
 #if !STP_DIRECT_COMPACT
 /* Whether a face the side planes alone cut (every corner projected, so in
  * front of the near plane) reaches none of the row centres of the band

@@ -21,8 +21,11 @@
  * positions and depths (f->depth->depths) and its spans' depths by the
  * renderer's depth stage (depth_private.h, as raster.c's tri_draw_z: the
  * plane made at the first row with pixels, stepped a row with the walk),
- * in device coordinates (pixels and rows less ORIGIN_PIXELS) */
-static void draw_face_depth(const stp_direct_frame *f, const uint16_t k[3], uint8_t intensity, uint8_t *band,
+ * in device coordinates (pixels and rows less ORIGIN_PIXELS).  Out of
+ * line, called only for a face that reaches the band (face_off_band): in
+ * line, the face loop kept its counters in memory (the Cortex-M0+ frame
+ * 112 000 instructions longer) */
+STP_NOINLINE void draw_face_depth(const stp_direct_frame *f, const uint16_t k[3], uint8_t intensity, uint8_t *band,
                             size_t stride, int page_shift, const stp_band_rows *rows, uint16_t *zband)
 {
     stp_tri_walk w;
@@ -103,17 +106,28 @@ static void draw_depth(const stp_direct_frame *f, uint8_t *band, size_t stride, 
     depth_keys keys;
     int page_shift = f->layout == STP_BAND_PAGES ? 3 : 0;
     size_t i, count = (size_t)f->width * rows;
-    uint16_t t;
+    uint16_t t, *z = f->depth->zband;
     band_rows_at(&band_rows, y0, rows);
-    for (i = 0; i < count; i++)
-        f->depth->zband[i] = 0;
+    /* four entries a step (the loop's count and compare a quarter as
+     * often), then the rest */
+    for (i = 0; i + 4u <= count; i += 4u) {
+        z[i] = 0;
+        z[i + 1u] = 0;
+        z[i + 2u] = 0;
+        z[i + 3u] = 0;
+    }
+    for (; i < count; i++)
+        z[i] = 0;
     if (f->clipped != 0)
         depth_keys_set(&keys, f->depth->key_min, f->depth->key_max);
     for (t = 0; t < f->mesh->triangle_count; t++, k += 3) {
-        if (f->faces[t] & STP_DIRECT_FACE_CLIPPED)
-            draw_clipped_face_depth(f, k, (uint8_t)f->faces[t], band, stride, page_shift, &band_rows, &keys);
-        else if (f->faces[t] != 0)
-            draw_face_depth(f, k, (uint8_t)f->faces[t], band, stride, page_shift, &band_rows, f->depth->zband);
+        uint16_t face = f->faces[t];
+        if (face == 0)
+            continue; /* not drawn */
+        if (face & STP_DIRECT_FACE_CLIPPED)
+            draw_clipped_face_depth(f, k, (uint8_t)face, band, stride, page_shift, &band_rows, &keys);
+        else if (!face_off_band(f, k, &band_rows))
+            draw_face_depth(f, k, (uint8_t)face, band, stride, page_shift, &band_rows, f->depth->zband);
     }
 }
 #endif
