@@ -875,8 +875,9 @@ STP_HOT_INLINE void tri_span_z(const frame *fr, uint32_t row, uint32_t p1, uint3
 
 /* paint_setup's answer for an opaque flat triangle without its call when
  * it has nothing to set up: a MONO1 pattern style already made, no
- * shadow records to gather (0: ask paint_setup). */
-#if STP_PATTERN_CACHE > 0 && !defined(__OPTIMIZE_SIZE__)
+ * shadow records to gather (0: ask paint_setup); its one user is the
+ * Z-buffered triangle below. */
+#if STP_PATTERN_CACHE > 0 && !defined(__OPTIMIZE_SIZE__) && STP_WITH_ZBUFFER
 #define TRIANGLE_PAINT_READY(fr, style, t)                                                                       \
     ((t) == 0 && (fr)->pattern_port == PATTERN_PLAIN && !((style)&STP_COLOUR_FLAG) &&                             \
      ((style) == (fr)->pattern_style || style_kept(fr, style)))
