@@ -202,8 +202,8 @@ int stp_direct_draw_band(const stp_direct_frame *f, uint8_t *band, size_t stride
         for (t = 0; t < f->mesh->triangle_count; t++, k += 3) {
             if (f->faces[t] & STP_DIRECT_FACE_CLIPPED)
                 draw_clipped_face(f, k, (uint8_t)f->faces[t], band, stride, page_shift, &band_rows);
-            else if (f->faces[t] != 0)
-                draw_faces(f, k, f->faces + t, 1, band, stride, page_shift, &band_rows);
+            else if (f->faces[t] != 0 && !face_off_band(f, k, &band_rows))
+                draw_faces(f, k, f->faces + t, 1, band, stride, page_shift, &band_rows); /* (a call a face) */
         }
         return STP_OK;
     }
