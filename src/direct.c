@@ -223,10 +223,12 @@ int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit,
 int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit, const stp_direct_view *view,
                                const stp_direct_model *model)
 {
-    stp_view_transform v;
+    stp_view_transform v; /* its axes: all of it the model frame reads */
     s->fast = &lit->fast;
     stp_direct_model_transform(model, &s->model); /* the geometry's too (geometry_prepare) */
-    stp_view_transform_of_axes(view->axis[0], view->axis[1], view->axis[2], view->from, &v);
+    v.right = view->axis[0];
+    v.up = view->axis[1];
+    v.forward = view->axis[2];
     if (!stp_model_frame_make(&v, view->from, &s->model, &s->frame))
         return 0;
     /* every vertex a face is tested at is below 2^23 (place_vertex) */

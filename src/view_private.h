@@ -238,9 +238,10 @@ void stp_view_small_point(const stp_view_small *t, const stp_vec3 *p, stp_vec3 *
 int stp_view_compose_small(const stp_vec3 axes[3], const int32_t d[3], const stp_transform *model,
                            stp_view_small *out);
 
-/* The model frame of view transform t (its axes), eye from (world) and
- * model (NULL: the identity); returns f->usable (1, or 0 when model is no
- * similarity or the eye in model coordinates is not below 2^30). */
+/* The model frame of view transform t (only its axes right, up and
+ * forward are read), eye from (world) and model (NULL: the identity);
+ * returns f->usable (1, or 0 when model is no similarity or the eye in
+ * model coordinates is not below 2^30). */
 int stp_model_frame_make(const stp_view_transform *t, stp_vec3 from, const stp_transform *model,
                          stp_model_frame *f);
 
