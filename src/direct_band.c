@@ -154,7 +154,7 @@ STP_NOINLINE int draw_band_depth(const stp_direct_frame *f, uint8_t *band, size_
 {
     int page_shift, status;
     stp_band_rows band_rows;
-    if (f->depth->zband == 0 || f->depth->zband_count / (f->width ? f->width : 1u) < rows)
+    if (f->depth->zband == 0 || (size_t)(f->width ? f->width : 1u) * rows > f->depth->zband_count)
         return STP_ERR_ARG; /* no room for the band's depths */
     status = band_start(f, band, stride, y0, rows, &page_shift, &band_rows);
     if (status == STP_OK)

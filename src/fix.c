@@ -2,6 +2,7 @@
 /* Fixed-point arithmetic: see include/stipple/fix.h for formats and errors. */
 #include "stipple/fix.h"
 #include "fix_private.h"
+#include "div64_private.h" /* STP_DIV64 */
 
 #define F STP_FIX_FRAC_BITS
 
@@ -284,9 +285,11 @@ stp_fix stp_vec3_unity(stp_vec3 v, stp_vec3 *out)
     len_scaled = (int64_t)ROOT64(sum);
     if (len_scaled == 0)
         return 0;
-    out->x = (stp_fix)((x * STP_FIX_ONE) / len_scaled);
-    out->y = (stp_fix)((y * STP_FIX_ONE) / len_scaled);
-    out->z = (stp_fix)((z * STP_FIX_ONE) / len_scaled);
+    /* C's truncating quotients (with STP_SMALL_DIVISION div64.c's loop,
+     * the same quotients, not the C library's 64-bit division) */
+    out->x = (stp_fix)STP_DIV64(x * STP_FIX_ONE, len_scaled);
+    out->y = (stp_fix)STP_DIV64(y * STP_FIX_ONE, len_scaled);
+    out->z = (stp_fix)STP_DIV64(z * STP_FIX_ONE, len_scaled);
     /* |v| = len_scaled / 2^up */
     if (up >= 0)
         return (stp_fix)(len_scaled >> up);

@@ -8,6 +8,7 @@
 #include "stipple/fix.h"
 #include "arith_private.h" /* STP_HOT_INLINE, STP_TABLE, products, bit counts */
 #include "recip_private.h" /* reciprocals and exact division */
+#include "div64_private.h" /* STP_DIV64 */
 
 /* floor(sqrt(v)) for any 64-bit unsigned v (exact in both sqrt modes). */
 uint32_t stp_isqrt64(uint64_t v);
@@ -72,7 +73,7 @@ static inline int64_t stp_clip_fraction(int64_t da, int64_t db)
         db /= 2;
         den = da - db;
     }
-    return den == 0 ? 0 : (da * ((int64_t)1 << 30)) / den;
+    return den == 0 ? 0 : STP_DIV64(da * ((int64_t)1 << 30), den); /* C's truncating quotient */
 }
 
 /* a + (b - a) t with t in Q30, saturated. */

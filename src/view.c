@@ -4,6 +4,7 @@
 #include "fix_private.h"
 #include "recip_private.h" /* STP_WIDE_ARITH */
 #include "project_private.h"
+#include "div64_private.h" /* STP_DIV64 */
 
 #define F STP_FIX_FRAC_BITS
 #define ONE STP_FIX_ONE
@@ -428,7 +429,7 @@ int stp_model_frame_make(const stp_view_transform *t, stp_vec3 from, const stp_t
         int64_t sum = m[0][j] * d[0] + m[1][j] * d[1] + m[2][j] * d[2], e;
         if (sum >= ((int64_t)1 << 46) || sum <= -((int64_t)1 << 46))
             return 0;
-        e = (sum * ONE) / f->scale2; /* |sum| < 2^46: the product fits */
+        e = STP_DIV64(sum * ONE, f->scale2); /* |sum| < 2^46: the product fits */
         if (e >= ((int64_t)1 << 30) || e <= -((int64_t)1 << 30))
             return 0;
         f->eye[j] = (int32_t)e;

@@ -267,9 +267,11 @@
 #define STP_WITH_DEFAULT_CELL 1
 #endif
 
-/* 1: the band renderer and direct drawing divide with small bit-serial
- * loops (src/div64.c: up to 64 steps a 64-bit quotient, 32 a 32-bit one
- * on cores with a 32-bit multiply and no divide instruction) instead of the C library's routines
+/* 1: the core's 64-bit quotients (the band renderer's, the look-at's, the
+ * model frame's, the clipper's, direct drawing's) and the 32-bit ones the
+ * band renderer and direct drawing take on cores with a 32-bit multiply
+ * and no divide instruction come from small bit-serial loops (src/div64.c:
+ * up to 64 steps a 64-bit quotient, 32 a 32-bit one) instead of the C library's routines
  * (about 1 KB for 64 bits and 500 bytes for 32 on ARMv6-M, not counted
  * below), and short edges' slopes come from the division instead of a
  * 512-byte table: a size-first choice for playback-only firmware (stipple
