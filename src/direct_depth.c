@@ -26,7 +26,7 @@
  * line, the face loop kept its counters in memory (the Cortex-M0+ frame
  * 112 000 instructions longer) */
 STP_NOINLINE void draw_face_depth(const stp_direct_frame *f, const uint16_t k[3], uint8_t intensity, uint8_t *band,
-                            size_t stride, int page_shift, const stp_band_rows *rows, uint16_t *zband)
+                                  size_t stride, int page_shift, const stp_band_rows *rows, uint16_t *zband)
 {
     stp_tri_walk w;
     stp_instr v[3]; /* device x, y alone: what the plane and its depths read */

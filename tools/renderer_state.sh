@@ -52,6 +52,7 @@ EOF
 
 if [ -n "$budget" ]; then
     bytes=$(state_bytes arm "$triangles")
+    [ -n "$bytes" ] || { echo "FAIL: no size read back for the triangle build" >&2; exit 1; }
     if [ "$bytes" -gt "$budget" ]; then
         echo "FAIL: the Cortex-M0+ triangle build's renderer object is $bytes B, over $budget B" >&2
         exit 1

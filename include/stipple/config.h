@@ -198,7 +198,7 @@
  * The default is 64; 32 in builds of quadrilaterals and 16 in builds of
  * triangles (STP_MAX_POLYGON_VERTICES 4 and 3), the small targets'
  * builds, whose meshes go through mesh entry and its own scratch: the
- * cache is most of their renderer object, which is then under 4 KiB
+ * cache is the largest part of their renderer object, then under 4 KiB
  * (tools/renderer_state.sh).  Measured in a triangle build: the
  * Cortex-M0+ renderer object 5 800 / 4 392 / 3 688 B with 64 / 32 / 16
  * entries, the bench torus entered polygon by polygon 0.802 / 0.817 /
