@@ -9,97 +9,25 @@
 #define Q14 14
 #define COORD_LIMIT ((int32_t)1 << 23) /* direct.h: coordinates below 2^23 raw */
 
-#if STP_DIRECT_COMPACT
-/* v scaled to unit length in Q1.14: the core's one unit vector in the
- * form mesh.c's normals take (fix.c's stp_unit_q14_from64: stp_unit_from64
- * rounded to Q14).  0 for a zero vector (out untouched). */
-static int unit14(const int32_t v[3], int16_t out[3])
+/* Whether |v| < 2^23 (direct.h's range): one unsigned comparison */
+static int in_coord_range(int32_t v)
 {
-    return stp_unit_q14_from64(v[0], v[1], v[2], out);
+    return (uint32_t)v + (uint32_t)(COORD_LIMIT - 1) < 2u * (uint32_t)COORD_LIMIT - 1u;
 }
-
-/* a x b of Q1.14 vectors: Q2.28, each component below 2^29 */
-STP_DIRECT_SMALL void cross14(const int16_t a[3], const int16_t b[3], int32_t c[3])
-{
-    int i, j, k;
-    /* c_i = a_j b_k - a_k b_j, (i, j, k) turning cyclically from (0, 1, 2) */
-    for (i = 0, j = 1, k = 2; i < 3; i++) {
-        c[i] = (int32_t)a[j] * b[k] - (int32_t)a[k] * b[j];
-        j = k;
-        k = i;
-    }
-}
-
-/* Q1.14 value v as stp_fix */
-#if STP_FIX_FRAC_BITS >= 14
-#define Q14_TO_FIX(v) ((int32_t)(v) * ((int32_t)1 << (STP_FIX_FRAC_BITS >= 14 ? STP_FIX_FRAC_BITS - 14 : 0)))
-#else
-#define Q14_TO_FIX(v) stp_asr32((v), 14 - STP_FIX_FRAC_BITS)
-#endif
-
-/* Q1.14 vector a as stp_fix; one call */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static void q14_axis(const int16_t a[3], stp_vec3 *out)
-{
-    out->x = Q14_TO_FIX(a[0]);
-    out->y = Q14_TO_FIX(a[1]);
-    out->z = Q14_TO_FIX(a[2]);
-}
-
-/* The compact form's axes (config.h: STP_DIRECT_COMPACT): in Q1.14 by the
- * unit vectors mesh normals take, kept as stp_fix (exact multiples of
- * 2^(F - 14)); 0 when from - at or up is zero or up lies along the line
- * of sight. */
-static int look_axes(const int32_t d[3], stp_vec3 up, stp_vec3 axis[3])
-{
-    int32_t u[3], c[3];
-    int16_t a[3][3], upn[3];
-    int i;
-    u[0] = up.x;
-    u[1] = up.y;
-    u[2] = up.z;
-    if (unit14(d, a[2]) == 0 || unit14(u, upn) == 0)
-        return 0;
-    /* right = forward x up, as view.c; short: up along the line of sight */
-    cross14(a[2], upn, c);
-    if (stp_abs32(c[0]) + stp_abs32(c[1]) + stp_abs32(c[2]) < ((uint32_t)1 << 18))
-        return 0;
-    (void)unit14(c, a[0]);
-    cross14(a[0], a[2], c);
-    (void)unit14(c, a[1]);
-    for (i = 0; i < 3; i++)
-        q14_axis(a[i], &axis[i]);
-    return 1;
-}
-#else
-/* The renderer's axes (view.c's stp_view_axes: the one place they are
- * formed) */
-static int look_axes(const int32_t d[3], stp_vec3 up, stp_vec3 axis[3])
-{
-    stp_vec3 from = {0, 0, 0}, at;
-    at.x = d[0];
-    at.y = d[1];
-    at.z = d[2];
-    return stp_view_axes(from, at, up, &axis[0], &axis[1], &axis[2]) == STP_OK;
-}
-#endif
 
 int stp_direct_view_look(stp_direct_view *v, stp_vec3 from, stp_vec3 at, stp_vec3 up, stp_fix focal,
                          stp_fix hither, uint16_t width, uint16_t height)
 {
-    int32_t d[3];
-    int i;
+    stp_vec3 d; /* the line of sight */
     if (v == 0 || width < 1 || width > 512 || height < 1 || height > 512 || focal <= 0 || hither <= 0)
         return STP_ERR_ARG;
-    d[0] = at.x - from.x;
-    d[1] = at.y - from.y;
-    d[2] = at.z - from.z;
-    for (i = 0; i < 3; i++)
-        if (d[i] >= COORD_LIMIT || d[i] <= -COORD_LIMIT)
-            return STP_ERR_VIEW;
-    if (!look_axes(d, up, v->axis))
+    d.x = at.x - from.x;
+    d.y = at.y - from.y;
+    d.z = at.z - from.z;
+    if (!in_coord_range(d.x) || !in_coord_range(d.y) || !in_coord_range(d.z))
+        return STP_ERR_VIEW;
+    /* the renderer's axes (view.c: the one place they are formed) */
+    if (stp_view_axes(&d, &up, v->axis) != STP_OK)
         return STP_ERR_VIEW;
     v->from = from;
     v->focal = focal;

@@ -18,16 +18,73 @@ stp_vec3 stp_vec3_cross(stp_vec3 a, stp_vec3 b)
     return c;
 }
 
-int stp_view_axes(stp_vec3 from, stp_vec3 at, stp_vec3 up, stp_vec3 *right_out, stp_vec3 *up_out,
-                  stp_vec3 *forward_out)
+#if STP_DIRECT_COMPACT
+/* ---- the compact form's axes (config.h: STP_DIRECT_COMPACT) ----
+ * Unit vectors in Q1.14 by the one unit-vector function mesh normals take
+ * (fix.c's stp_unit_q14_from64), cross products of Q1.14 vectors in
+ * Q2.28 (each component below 2^29), and the axes kept as stp_fix: exact
+ * multiples of 2^(F - 14), so the geometry stage's Q1.14 form of them
+ * (stp_view_compose_small) is exact. */
+
+/* v scaled to unit length in Q1.14; 0 for a zero vector (out untouched) */
+static int unit14(int32_t x, int32_t y, int32_t z, int16_t out[3])
+{
+    return stp_unit_q14_from64(x, y, z, out);
+}
+
+/* a x b of Q1.14 vectors in Q2.28 */
+static void cross14(const int16_t a[3], const int16_t b[3], int32_t c[3])
+{
+    int i, j, k;
+    /* c_i = a_j b_k - a_k b_j, (i, j, k) turning cyclically from (0, 1, 2) */
+    for (i = 0, j = 1, k = 2; i < 3; i++) {
+        c[i] = (int32_t)a[j] * b[k] - (int32_t)a[k] * b[j];
+        j = k;
+        k = i;
+    }
+}
+
+/* Q1.14 value v as stp_fix */
+#if F >= 14
+#define Q14_TO_FIX(v) ((int32_t)(v) * ((int32_t)1 << (F >= 14 ? F - 14 : 0)))
+#else
+#define Q14_TO_FIX(v) stp_asr32((v), 14 - F)
+#endif
+
+/* Q1.14 vector a as stp_fix */
+static void q14_axis(const int16_t a[3], stp_vec3 *out)
+{
+    out->x = Q14_TO_FIX(a[0]);
+    out->y = Q14_TO_FIX(a[1]);
+    out->z = Q14_TO_FIX(a[2]);
+}
+
+int stp_view_axes(const stp_vec3 *line, const stp_vec3 *up, stp_vec3 axes[3])
+{
+    int32_t c[3];
+    int16_t a[3][3], upn[3];
+    int i;
+    if (unit14(line->x, line->y, line->z, a[2]) == 0 || unit14(up->x, up->y, up->z, upn) == 0)
+        return STP_ERR_VIEW;
+    /* right = forward x up; short (below 2^-10 in Q2.28's 1-norm): up
+     * along the line of sight */
+    cross14(a[2], upn, c);
+    if (stp_abs32(c[0]) + stp_abs32(c[1]) + stp_abs32(c[2]) < ((uint32_t)1 << 18))
+        return STP_ERR_VIEW;
+    (void)unit14(c[0], c[1], c[2], a[0]);
+    cross14(a[0], a[2], c);
+    (void)unit14(c[0], c[1], c[2], a[1]);
+    for (i = 0; i < 3; i++)
+        q14_axis(a[i], &axes[i]);
+    return STP_OK;
+}
+#else
+int stp_view_axes(const stp_vec3 *line, const stp_vec3 *up, stp_vec3 axes[3])
 {
     stp_vec3 dir, right, upv, upn;
-    dir.x = stp_fix_sub(at.x, from.x);
-    dir.y = stp_fix_sub(at.y, from.y);
-    dir.z = stp_fix_sub(at.z, from.z);
-    if (stp_vec3_unity(dir, &dir) == 0)
+    if (stp_vec3_unity(*line, &dir) == 0)
         return STP_ERR_VIEW;
-    if (stp_vec3_unity(up, &upn) == 0)
+    if (stp_vec3_unity(*up, &upn) == 0)
         return STP_ERR_VIEW;
     /* right = dir x up; a short cross product means up is (nearly) along
      * the line of sight: no roll can be derived */
@@ -36,18 +93,22 @@ int stp_view_axes(stp_vec3 from, stp_vec3 at, stp_vec3 up, stp_vec3 *right_out, 
         return STP_ERR_VIEW;
     upv = stp_vec3_cross(right, dir);
     (void)stp_vec3_unity(upv, &upv);
-    *right_out = right;
-    *up_out = upv;
-    *forward_out = dir;
+    axes[0] = right;
+    axes[1] = upv;
+    axes[2] = dir;
     return STP_OK;
 }
+#endif
 
 int stp_view_frame_make(const stp_view *v, uint32_t width, uint32_t height, stp_view_frame *out)
 {
-    stp_vec3 dir, right, up;
+    stp_vec3 line, axes[3];
     stp_fix focal;
     uint32_t short_side;
-    if (stp_view_axes(v->from, v->at, v->up, &right, &up, &dir) != STP_OK)
+    line.x = stp_fix_sub(v->at.x, v->from.x);
+    line.y = stp_fix_sub(v->at.y, v->from.y);
+    line.z = stp_fix_sub(v->at.z, v->from.z);
+    if (stp_view_axes(&line, &v->up, axes) != STP_OK)
         return STP_ERR_VIEW;
     if (v->hither <= 0)
         return STP_ERR_VIEW;
@@ -70,9 +131,9 @@ int stp_view_frame_make(const stp_view *v, uint32_t width, uint32_t height, stp_
         return STP_ERR_ARG;
     }
     out->from = v->from;
-    out->right = right;
-    out->up = up;
-    out->forward = dir;
+    out->right = axes[0];
+    out->up = axes[1];
+    out->forward = axes[2];
     out->focal = focal;
     out->hither = v->hither;
     out->projection = v->projection;

@@ -64,13 +64,14 @@ typedef struct stp_view_transform {
     stp_view_axis32 axis32[3];
 } stp_view_transform;
 
-/* The view's axes (view_frame_make's, the one place they are formed):
- * forward the unit vector from `from` towards `at`, right = forward x up
- * and up = right x forward normalised (unit stp_vec3, F fractional bits).
- * Returns STP_OK, or STP_ERR_VIEW (from == at, up zero or along the line
- * of sight); the axes are written only on success. */
-int stp_view_axes(stp_vec3 from, stp_vec3 at, stp_vec3 up, stp_vec3 *right_out, stp_vec3 *up_out,
-                  stp_vec3 *forward_out);
+/* The view's axes (view_frame_make's and direct drawing's, the one place
+ * they are formed) for line of sight *line (at - from): axes[2]
+ * (forward) the unit vector along it, axes[0] (right) = forward x up and
+ * axes[1] (up) = right x forward normalised (unit stp_vec3, F fractional
+ * bits; with STP_DIRECT_COMPACT rounded to Q1.14, config.h).  Returns
+ * STP_OK, or STP_ERR_VIEW (the line or up zero, or up along the line of
+ * sight); the axes are written only on success. */
+int stp_view_axes(const stp_vec3 *line, const stp_vec3 *up, stp_vec3 axes[3]);
 
 void stp_view_transform_make(const stp_view_frame *vf, stp_view_transform *out);
 /* The transform of axes right, up, forward (unit: |component| < 2^17) and
