@@ -152,8 +152,10 @@
 #endif
 
 /* 1: direct drawing in its compact form, for the smallest chips: the
- * view's axes rounded to Q1.14 and composed with the model's rotation in
- * Q1.14, each vertex placed by 16 x 16-bit products; a face drawn when
+ * view's axes rounded to Q1.14 (view.c's stp_view_axes in its compact
+ * variant, which the renderer's look-at takes too in these builds) and
+ * composed with the model's rotation in Q1.14, each vertex placed by
+ * 16 x 16-bit products; a face drawn when
  * its projected vertices turn counter-clockwise and shaded with its
  * normal turned by that composite, at its vertices' mean by a
  * product-based third.  0 (default): direct drawing enters through the
@@ -162,12 +164,12 @@
  * vertex mean), so its pictures equal stp_renderer_mesh's pixel for
  * pixel.  With 1 pictures may differ in a few pixels at edges and in
  * faces within rounding of a style step or of edge-on
- * (tests/direct/test_direct_equal_compact: 0-1 of 128 x 64 and 2-9 of
+ * (tests/direct/test_direct_equal_compact: 0-2 of 128 x 64 and 0-4 of
  * 400 x 240 pixels in the torus frames).  The Arduino library and the
  * lean direct image set it: 0 costs the Uno's SpinningCube 13 582 bytes
  * of flash (the model frame's similarity test, normalisation and 64-bit
- * division; 64-bit side tests) and the lean Cortex-M0+ direct core 8 170
- * (14 130 against 5 960 B: the renderer's look-at, model frame, composed
+ * division; 64-bit side tests) and the lean Cortex-M0+ direct core 8 178
+ * (14 130 against 5 952 B: the renderer's look-at, model frame, composed
  * geometry and clipper; docs/direct.md). */
 #ifndef STP_DIRECT_COMPACT
 #define STP_DIRECT_COMPACT 0
