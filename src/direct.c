@@ -77,70 +77,58 @@ static int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
 
 #if STP_DIRECT_COMPACT
 /* ---- the compact form's geometry (config.h: STP_DIRECT_COMPACT) ----
- *   composite  C = V R (the view axes rounded to Q1.14 times the model's
- *              rotation), Q1.14 rows: each sum of three Q28 products
- *              (16 x 16-bit) below 3 2^28, rounded to Q14; M = C scale,
- *              Q1.14 in int16_t: the scale in Q14 is below 2^15 (scale <
- *              2) and |C| exceeds 1 only by rounding, so |M| exceeds 32767
- *              only within 2^-12 of scale 2, where it is saturated to
- *              +-32767 (a relative error below 2^-12 in that one entry)
- *   vmul       v m / 2^14 for |v| < 2^23 and int16_t m as
- *              floor(v / 2^14) m + floor((v mod 2^14) m / 2^14): two
- *              16 x 16-bit products, below 2^24 and 2^29
- *   view       M v + V (t - from): three vmul below 2^24 each plus one
- *              below 2^24: |.| < 2^26 */
+ *   composite  C = V R in Q1.14 (view.c's stp_view_compose_q14: the
+ *              view axes in Q1.14 times the model's rotation; the scale is
+ *              1 in this form), |C| <= 1 + 2^-13
+ *   vsum       floor(sum v_j m_j / 2^14) for |v_j| < 2^23 and int16_t
+ *              m_j, exactly: sum floor(v_j / 2^14) m_j (16 x 16-bit
+ *              products below 2^24) plus floor(sum (v_j mod 2^14) m_j /
+ *              2^14) (products below 2^29, their sum below 1.5 2^30)
+ *   view       floor(C v / 2^14) + floor(V (t - from) / 2^F): two vsum
+ *              below 3 2^24 each: |.| < 2^26; the renderer's composed
+ *              transform in these builds (view.c's compose_compact) */
 
-/* View axis a in Q1.14, floor(a 2^(14 - F)): exact for the axes
+/* The view's axes in Q1.14 rows, floor(a 2^(14 - F)): exact for the axes
  * stp_direct_view_look makes in these builds (multiples of 2^(F - 14)).
  * One call (its callers' loops inline it otherwise) */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static void axis_q14(const stp_vec3 *a, int16_t out[3])
-{
-#if F > 14
-    out[0] = (int16_t)stp_asr32(a->x, F > 14 ? F - 14 : 0);
-    out[1] = (int16_t)stp_asr32(a->y, F > 14 ? F - 14 : 0);
-    out[2] = (int16_t)stp_asr32(a->z, F > 14 ? F - 14 : 0);
-#else
-    out[0] = (int16_t)(a->x * ((int32_t)1 << (14 - F)));
-    out[1] = (int16_t)(a->y * ((int32_t)1 << (14 - F)));
-    out[2] = (int16_t)(a->z * ((int32_t)1 << (14 - F)));
-#endif
-}
-
-/* v m / 2^14 (vmul above) */
-static int32_t vmul(int32_t v, int16_t m)
-{
-    int_fast16_t high = (int_fast16_t)stp_asr32(v, Q14), low = (int_fast16_t)(v & 0x3FFF);
-    return (int32_t)high * m + stp_asr32((int32_t)low * m, Q14);
-}
-
-/* sum of vmul(v_j, m_j): below 3 2^24 */
-STP_DIRECT_CALL int32_t dot3(const int32_t v[3], const int16_t m[3])
-{
-    int32_t s = 0;
-    int j;
-    for (j = 0; j < 3; j++)
-        s += vmul(v[j], m[j]);
-    return s;
-}
-
-/* The view coordinates of world-space difference d (|d_i| < 2^23): V d
- * by vmul.  One call in size-first builds on 32-bit cores (its two
- * callers' copies cost the lean direct core 12 B); the compiler's choice
- * elsewhere (on AVR the call cost the Uno image 42 B). */
-#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__) && STP_SMALL_DIVISION && !STP_LEAN_CODE
-__attribute__((noinline))
-#endif
-static void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out[3])
+STP_NOINLINE void axes_q14(const stp_direct_view *view, int16_t out[3][3])
 {
     int i;
     for (i = 0; i < 3; i++) {
-        int16_t a[3];
-        axis_q14(&view->axis[i], a);
-        out[i] = dot3(d, a);
+#if F > 14
+        out[i][0] = (int16_t)stp_asr32(view->axis[i].x, F > 14 ? F - 14 : 0);
+        out[i][1] = (int16_t)stp_asr32(view->axis[i].y, F > 14 ? F - 14 : 0);
+        out[i][2] = (int16_t)stp_asr32(view->axis[i].z, F > 14 ? F - 14 : 0);
+#else
+        out[i][0] = (int16_t)(view->axis[i].x * ((int32_t)1 << (14 - F)));
+        out[i][1] = (int16_t)(view->axis[i].y * ((int32_t)1 << (14 - F)));
+        out[i][2] = (int16_t)(view->axis[i].z * ((int32_t)1 << (14 - F)));
+#endif
     }
+}
+
+/* floor(sum v_j m_j / 2^14) for |v_j| < 2^23 and int16_t m_j, exactly
+ * (vsum above): below 3 2^24 */
+STP_DIRECT_CALL int32_t dot3(const int32_t v[3], const int16_t m[3])
+{
+    int32_t high = 0, low = 0;
+    int j;
+    for (j = 0; j < 3; j++) {
+        high += (int32_t)(int_fast16_t)stp_asr32(v[j], Q14) * m[j];
+        low += (int32_t)(v[j] & 0x3FFF) * m[j];
+    }
+    return high + stp_asr32(low, Q14);
+}
+
+/* The view coordinates of world-space difference d (|d_i| < 2^23):
+ * floor(V d / 2^F) by vsum, the renderer's exactly (the light's) */
+static void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out[3])
+{
+    int16_t a[3][3];
+    int i;
+    axes_q14(view, a);
+    for (i = 0; i < 3; i++)
+        out[i] = dot3(d, a[i]);
 }
 #else
 /* The view coordinates of world-space difference d (|d_i| < 2^23) by
@@ -193,31 +181,14 @@ int stp_direct_light_prepare(stp_direct_lit *lit, const stp_direct_view *view, c
 }
 
 #if STP_DIRECT_COMPACT
-/* sum of a_k b_(k step) for Q1.14 a and b, rounded to Q14: three Q28
- * products, below 3 2^28; the one form of C = V R's entries and of a
- * normal turned by C (config.h: STP_DIRECT_COMPACT) */
-STP_DIRECT_SMALL int16_t dot14(const int16_t a[3], const int16_t *b, int step)
-{
-    int32_t c = (int32_t)1 << (Q14 - 1);
-    int k;
-    STP_UNROLL3
-    for (k = 0; k < 3; k++)
-        c += (int32_t)a[k] * b[k * step];
-    return (int16_t)stp_asr32(c, Q14);
-}
-
 int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit, const stp_direct_view *view,
                                const stp_direct_model *model)
 {
-    int i, j;
+    int16_t a[3][3];
     s->fast = &lit->fast;
-    for (i = 0; i < 3; i++) {
-        int16_t a[3];
-        axis_q14(&view->axis[i], a);
-        for (j = 0; j < 3; j++)
-            s->rot[i][j] = dot14(a, &model->rot[0][j], 3);
-    }
-    return 1;
+    /* C = V R: the geometry stage's composite of the rotation alone */
+    axes_q14(view, a);
+    return stp_view_compose_q14(&a[0][0], &model->rot[0][0], s->rot); /* 0: rot no rotation */
 }
 #else
 int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit, const stp_direct_view *view,
@@ -289,28 +260,27 @@ static int project_point(const stp_direct_view *view, int focal_bits, stp_direct
 }
 
 #if STP_DIRECT_COMPACT
-/* A frame's geometry in the compact form: view = M v + t (M = C scale,
- * t = V (translate - from)) */
+/* A frame's geometry in the compact form: view = floor(C v / 2^14) + t
+ * (C the shading's composite, t = floor(V (translate - from) / 2^F)) */
 typedef struct stp_direct_geometry {
-    int16_t m[3][3];
+    const int16_t (*m)[3]; /* C's rows */
     int32_t t[3];
 } stp_direct_geometry;
 
-/* *g for model seen by view, C = V R from shading (its rot), d =
- * translate - from (|d_i| < 2^23); 1 */
+/* *g for model seen by view, d = translate - from (|d_i| < 2^23): its
+ * composite the shading's C (view.c's stp_view_compose_q14 of the model's
+ * rotation: the scale is 1 in this form, check_args; the renderer's
+ * composite in these builds) and t = floor(V d / 2^F); 1 */
 static int geometry_prepare(stp_direct_geometry *g, const stp_direct_view *view, const stp_direct_model *model,
                             const stp_direct_shading *shading, const int32_t d[3])
 {
-    int i, j;
-    /* scale in Q14, below 2^15; M saturated (the compact form's comment) */
-    int16_t scale14 = (int16_t)(F >= 14 ? model->scale >> (F >= 14 ? F - 14 : 0) /* scale > 0 */
-                                        : model->scale * (1 << (F >= 14 ? 0 : 14 - F)));
+    int16_t a[3][3];
+    int i;
+    (void)model;
+    axes_q14(view, a);
     for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++) {
-            int32_t e = stp_asr32((int32_t)shading->rot[i][j] * scale14, Q14);
-            g->m[i][j] = (int16_t)(e > 32767 ? 32767 : (e < -32767 ? -32767 : e));
-        }
-    to_view(view, d, g->t);
+        g->t[i] = dot3(d, a[i]); /* floor(V d / 2^F) */
+    g->m = shading->rot; /* the scale is 1: Q = C (check_args) */
     return 1;
 }
 
@@ -432,10 +402,9 @@ STP_INDEX_INLINE int32_t view_comp(const stp_direct_point *p, int i)
  * for the point a face is shaded at. */
 STP_DIRECT_CALL int32_t third(const stp_direct_point *const p[3], int i)
 {
-    int32_t s = view_comp(p[0], i) + view_comp(p[1], i) + view_comp(p[2], i);
-    int_fast16_t high = (int_fast16_t)stp_asr32(s, 16); /* below 2^12 */
-    uint_fast16_t low = (uint_fast16_t)((uint32_t)s & 0xFFFFu);
-    return (int32_t)high * 21846 + (int32_t)((uint32_t)low * 21846u >> 16);
+    /* each below 2^26: the sum below 2^28, the renderer's third
+     * (render_private.h) */
+    return stp_render_third(view_comp(p[0], i) + view_comp(p[1], i) + view_comp(p[2], i));
 }
 
 stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal,
@@ -445,7 +414,7 @@ stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal
     stp_vec3 centre;
     int i;
     for (i = 0; i < 3; i++)
-        nv[i] = dot14(s->rot[i], normal, 1);
+        nv[i] = (int16_t)stp_view_dot_q14(s->rot[i], normal); /* unit: within Q1.14 */
     centre.x = third(p, 0);
     centre.y = third(p, 1);
     centre.z = third(p, 2);
@@ -634,6 +603,18 @@ static int corners_in_mesh(const stp_mesh *mesh)
     return 1;
 }
 
+/* Whether scale is one direct drawing draws (direct.h): in (0, 2); in the
+ * compact form 1 alone (its composite is the rotation's, its normal
+ * rotation the renderer's: config.h's STP_DIRECT_COMPACT) */
+static int scale_ok(stp_fix scale)
+{
+#if STP_DIRECT_COMPACT
+    return scale == ONE;
+#else
+    return (uint32_t)scale - 1u < 2u * (uint32_t)ONE - 1u;
+#endif
+}
+
 /* The arguments but the light (checked by stp_direct_frame_project) */
 static int check_args(const stp_direct_frame *f, const stp_mesh *mesh, const stp_direct_model *model,
                       const stp_direct_view *view, const stp_direct_lit *lit, int levels, const uint8_t *cell,
@@ -642,7 +623,7 @@ static int check_args(const stp_direct_frame *f, const stp_mesh *mesh, const stp
     if (f == 0 || mesh == 0 || model == 0 || view == 0 || lit == 0 || cell == 0 || points == 0 ||
         faces == 0 || mesh->vertices == 0 || mesh->triangles == 0 || mesh->normals == 0 ||
         point_count < mesh->vertex_count || face_count < mesh->triangle_count || levels < 2 ||
-        levels > 255 || (uint32_t)model->scale - 1u >= 2u * (uint32_t)ONE - 1u || !corners_in_mesh(mesh))
+        levels > 255 || !scale_ok(model->scale) || !corners_in_mesh(mesh))
         return STP_ERR_ARG;
     return STP_OK;
 }

@@ -37,7 +37,8 @@ int stp_direct_light_prepare(stp_direct_lit *lit, const stp_direct_view *view, c
 typedef struct stp_direct_shading {
     const stp_shade_fast *fast;
 #if STP_DIRECT_COMPACT
-    int16_t rot[3][3]; /* the compact form: C = V R rounded to Q1.14 */
+    int16_t rot[3][3]; /* the compact form: C = V R rounded to Q1.14, its
+                          composite and normal rotation (the scale is 1) */
 #else
     stp_model_frame frame;
     stp_side_estimate side_estimate; /* the face side's first, 32-bit test */
@@ -46,8 +47,9 @@ typedef struct stp_direct_shading {
 } stp_direct_shading;
 
 /* *s for a frame (direct.c): lit's shader and the model frame of view
- * and model; 0 when the model frame is not usable (rot not a rotation,
- * or a scale below 2^-6), else 1. */
+ * and model (in the compact form C = V R, view.c's stp_view_compose_q14);
+ * 0 when the model frame is not usable (rot not a rotation, or a scale
+ * below 2^-6; in the compact form C leaving Q1.14), else 1. */
 int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit, const stp_direct_view *view,
                                const stp_direct_model *model);
 

@@ -539,11 +539,34 @@ static void vertex_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
     vertex_at_view(r, &p, out);
 }
 
+#if STP_COMPACT_COMPOSE
+/* The view transform alone as the compact form's composition with the
+ * identity (view.c's compose_compact: its eye terms rounded as direct
+ * drawing's), where that applies; else the view transform itself */
+static void view_only(stp_renderer *r)
+{
+    stp_transform identity;
+    int i, j;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            identity.m[i][j] = i == j ? ONE : 0;
+    identity.t.x = identity.t.y = identity.t.z = 0;
+    if (!stp_view_transform_compose(&r->to_view, &identity, &r->point_view))
+        r->point_view = r->to_view;
+}
+#else
+/* The view transform alone */
+static void view_only(stp_renderer *r)
+{
+    r->point_view = r->to_view;
+}
+#endif
+
 void stp_render_geometry_update(stp_renderer *r)
 {
     if (!r->model_on) {
         r->geometry = STP_GEOMETRY_VIEW;
-        r->point_view = r->to_view;
+        view_only(r);
     } else if (stp_view_transform_compose(&r->to_view, &r->model, &r->point_view)) {
         r->geometry = STP_GEOMETRY_COMPOSED;
     } else {

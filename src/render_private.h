@@ -433,10 +433,31 @@ STP_HOT_INLINE int stp_render_triangle_shows(stp_renderer *r, int32_t test_rows,
 /* A triangle's vertex average (one coordinate of its three view points),
  * each sum divided by 3 truncated toward zero: both entries' face centre
  * (render.c's vertex_average, the same quotients).  small: each value
- * below 2^28 in magnitude (mesh.c's box_inside), so the sum fits int32. */
+ * below 2^28 in magnitude (mesh.c's box_inside), so the sum fits int32.
+ * With STP_DIRECT_COMPACT a sum below 2^28 takes the compact form's third
+ * (stp_render_third, below). */
+#if STP_DIRECT_COMPACT
+/* The compact form's third of s (|s| < 2^28; config.h:
+ * STP_DIRECT_COMPACT): floor(s / 2^16) 21846 + floor((s mod 2^16) 21846 /
+ * 2^16), 16 x 16-bit products, relative error below 2^-15 (21846 / 2^16
+ * for 1/3): the point a face is shaded at, direct drawing's and, in those
+ * builds, the renderer's (stp_render_average3). */
+STP_HOT_INLINE int32_t stp_render_third(int32_t s)
+{
+    int_fast16_t high = (int_fast16_t)stp_asr32(s, 16); /* below 2^12 */
+    uint_fast16_t low = (uint_fast16_t)((uint32_t)s & 0xFFFFu);
+    return (int32_t)high * 21846 + (int32_t)((uint32_t)low * 21846u >> 16);
+}
+#endif
+
 STP_HOT_INLINE stp_fix stp_render_average3(int small, int32_t a, int32_t b, int32_t c)
 {
     int64_t s;
+#if STP_DIRECT_COMPACT
+    s = (int64_t)a + b + c;
+    if (s > -((int64_t)1 << 28) && s < ((int64_t)1 << 28))
+        return stp_render_third((int32_t)s); /* the compact form's */
+#endif
     if (small) {
         int32_t sum = a + b + c; /* below 3 2^28 < 2^30 in magnitude */
         return sum >= 0 ? (stp_fix)stp_div3_u30((uint32_t)sum) : -(stp_fix)stp_div3_u30(0u - (uint32_t)sum);

@@ -285,6 +285,151 @@ int stp_view_similar(const stp_transform *model)
     return similarity(model, m, mq);
 }
 
+#if STP_DIRECT_COMPACT
+#if defined(__GNUC__) && STP_LEAN_CODE
+__attribute__((noinline)) /* one copy for its callers on AVR (LTO inlined it in each) */
+#endif
+int32_t stp_view_dot_q14(const int16_t a[3], const int16_t b[3])
+{
+    int32_t s = (int32_t)1 << 13;
+    int k;
+    for (k = 0; k < 3; k++)
+        s += (int32_t)a[k] * b[k];
+    return stp_asr32(s, 14);
+}
+
+int stp_view_compose_q14(const int16_t *a, const int16_t *m, int16_t q[3][3])
+{
+    uint32_t out = 0; /* some entry outside [-32767, 32767]: bit 16 set */
+    int16_t column[3];
+    int i, j;
+    for (j = 0; j < 3; j++) {
+        for (i = 0; i < 3; i++)
+            column[i] = m[3 * i + j];
+        for (i = 0; i < 3; i++) {
+            /* below 2^14 (1 + 2^-14) |m_j| < 2^15 + 2 (|a_i| = 1) */
+            int32_t v = stp_view_dot_q14(a + 3 * i, column);
+            out |= (uint32_t)(v + 32767) + 1u; /* in range: 1 .. 65535 */
+            q[i][j] = (int16_t)v;
+        }
+    }
+    return (out >> 16) == 0;
+}
+#endif
+
+#if STP_COMPACT_COMPOSE
+/* a (|a| < 2^(F + 1)) in Q1.14, floor(a 2^(F - 14)) (exact for the
+ * compact look-at's axes, multiples of 2^(F - 14): stp_view_axes) */
+static int16_t to_q14(stp_fix a)
+{
+    return (int16_t)stp_asr32(a, F - 14);
+}
+
+/* Whether the compact composition applies to model seen along axes: every
+ * axis component a multiple of 2^(F - 14) (the compact look-at's) and
+ * every entry of m below 2 in magnitude (Q1.14). */
+static int compact_fits(const stp_vec3 *const axis[3], const stp_transform *model)
+{
+    int i, j;
+    for (i = 0; i < 3; i++) {
+        if (((axis[i]->x | axis[i]->y | axis[i]->z) & (((int32_t)1 << (F - 14)) - 1)) != 0)
+            return 0;
+        for (j = 0; j < 3; j++)
+            if (stp_abs32(model->m[i][j]) >= ((uint32_t)2 << F))
+                return 0;
+    }
+    return 1;
+}
+
+/* The compact composition (config.h: STP_DIRECT_COMPACT) of model with the
+ * view transform t's axes: C = Q 2^(F - 14), Q = stp_view_compose_q14's,
+ * and each eye term rounded to a multiple of 2^F (*e: V_i . (from - t)
+ * in units of 2^-2F, to 2^F ceil(e / 2^F)), so a point's view coordinate
+ * floor((C p - e) / 2^F) is floor(Q p / 2^14) + floor(V_i . (t - from)
+ * / 2^F): direct drawing's compact form, term for term.  0 (c and e
+ * untouched) where it does not apply (compact_fits). */
+static int compose_compact(const stp_vec3 *const axis[3], const stp_transform *model, int32_t c[3][3],
+                           int64_t e[3])
+{
+    int16_t a[3][3], mq[3][3], q[3][3];
+    int i, j;
+    if (!compact_fits(axis, model))
+        return 0;
+    for (i = 0; i < 3; i++) {
+        a[i][0] = to_q14(axis[i]->x); /* exact (compact_fits) */
+        a[i][1] = to_q14(axis[i]->y);
+        a[i][2] = to_q14(axis[i]->z);
+        for (j = 0; j < 3; j++)
+            mq[i][j] = to_q14(model->m[i][j]); /* below 2^15 (compact_fits) */
+    }
+    if (!stp_view_compose_q14(&a[0][0], &mq[0][0], q))
+        return 0;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++)
+            c[i][j] = (int32_t)q[i][j] * ((int32_t)1 << (F - 14));
+        e[i] = -stp_asr64(-e[i], F) * ((int64_t)1 << F);
+    }
+    return 1;
+}
+#endif
+
+#if STP_COMPACT_COMPOSE
+/* *out (the exact composition of model with the view of axes axis) as
+ * the compact form composes it (compose_compact), where that applies */
+static void compose_compact_view(const stp_vec3 *const axis[3], const stp_transform *model, stp_view_transform *out)
+{
+    int32_t c[3][3];
+    int64_t e[3];
+    e[0] = out->from_right;
+    e[1] = out->from_up;
+    e[2] = out->from_forward;
+    if (!compose_compact(axis, model, c, e))
+        return;
+    out->right.x = c[0][0];
+    out->right.y = c[0][1];
+    out->right.z = c[0][2];
+    out->up.x = c[1][0];
+    out->up.y = c[1][1];
+    out->up.z = c[1][2];
+    out->forward.x = c[2][0];
+    out->forward.y = c[2][1];
+    out->forward.z = c[2][2];
+    out->from_right = e[0];
+    out->from_up = e[1];
+    out->from_forward = e[2];
+}
+
+/* The model frame's rotation in the compact form (stp_model_frame_make):
+ * for a model that is a rotation alone (its squared scale within 2^-10 of
+ * 1; NULL: the identity) whose composition is the compact one
+ * (compose_compact), rot = 2 Q in Q15, so stp_render_view_normal's
+ * rounding, floor((2 S + 2^14) / 2^15) = floor((S + 2^13) / 2^14), is
+ * direct drawing's turn of a normal by C = Q (stp_view_dot_q14); else rot
+ * as it is (the exact frame's). */
+static void compact_rotation(const stp_vec3 *const axis[3], const stp_transform *model, stp_model_frame *f)
+{
+    stp_transform identity;
+    int32_t c[3][3];
+    int64_t e[3] = {0, 0, 0};
+    const int64_t one = (int64_t)1 << (2 * F), tolerance = one >> 10;
+    int i, j;
+    if (f->scale2 - one > tolerance || one - f->scale2 > tolerance)
+        return; /* scaled: the exact frame */
+    if (model == 0) {
+        for (i = 0; i < 3; i++)
+            for (j = 0; j < 3; j++)
+                identity.m[i][j] = i == j ? ONE : 0;
+        identity.t.x = identity.t.y = identity.t.z = 0;
+        model = &identity;
+    }
+    if (!compose_compact(axis, model, c, e))
+        return;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            f->rot[i][j] = 2 * stp_asr32(c[i][j], F - 14); /* exact: c = Q 2^(F - 14) */
+}
+#endif
+
 int stp_view_transform_compose(const stp_view_transform *t, const stp_transform *model,
                                stp_view_transform *out)
 {
@@ -319,6 +464,9 @@ int stp_view_transform_compose(const stp_view_transform *t, const stp_transform 
     out->from_right = t->from_right - dot64(model->t, t->right);
     out->from_up = t->from_up - dot64(model->t, t->up);
     out->from_forward = t->from_forward - dot64(model->t, t->forward);
+#if STP_COMPACT_COMPOSE
+    compose_compact_view(axis, model, out);
+#endif
     split_from(out);
     return 1;
 }
@@ -482,6 +630,9 @@ int stp_model_frame_make(const stp_view_transform *t, stp_vec3 from, const stp_t
         f->rot[i][1] = (int32_t)stp_asr64((int64_t)u.y + ((int64_t)1 << 14), 15);
         f->rot[i][2] = (int32_t)stp_asr64((int64_t)u.z + ((int64_t)1 << 14), 15);
     }
+#if STP_COMPACT_COMPOSE
+    compact_rotation(axis, model, f);
+#endif
     /* eye in model coordinates: M^-1 (from - t) = M^T (from - t) / s^2 */
     d[0] = (int64_t)from.x - (model ? model->t.x : 0);
     d[1] = (int64_t)from.y - (model ? model->t.y : 0);

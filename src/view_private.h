@@ -187,6 +187,29 @@ typedef struct stp_side_estimate {
     int shift;
 } stp_side_estimate;
 
+/* STP_COMPACT_COMPOSE: the compact form's composition (config.h:
+ * STP_DIRECT_COMPACT), where its Q1.14 matrix is one in the renderer's
+ * units (at least 14 fractional bits) */
+#define STP_COMPACT_COMPOSE (STP_DIRECT_COMPACT && STP_FIX_FRAC_BITS >= 14)
+
+#if STP_DIRECT_COMPACT
+/* round(sum_k a_k b_k / 2^14) for Q1.14 a and b (products below 2^30 in
+ * magnitude, their sum below 2^31): the compact form's one dot product
+ * (its composite, its normals' turn). */
+int32_t stp_view_dot_q14(const int16_t a[3], const int16_t b[3]);
+
+/* The compact form's composite Q = A M (Q1.14, int16_t) of Q1.14
+ * matrices a and m (9 entries each, row-major; a's rows at most 1 in
+ * length, m's entries below 2 in magnitude): Q_ij = round(sum_k a_ik m_kj
+ * / 2^14) (stp_view_dot_q14).  Returns 1, or 0 when an entry falls outside
+ * [-32767, 32767] (q then holds it wrapped).  Direct drawing's compact
+ * geometry and normal rotation (a the view's axes, the compact look-at's,
+ * exact in Q1.14: stp_view_axes; m the model's rotation) and the
+ * renderer's composition and model frame in those builds
+ * (stp_view_transform_compose, stp_model_frame_make). */
+int stp_view_compose_q14(const int16_t *a, const int16_t *m, int16_t q[3][3]);
+#endif
+
 /* Whether model (NULL: the identity) is a rotation times a uniform scale:
  * columns of equal squared length and pairwise orthogonal, each within
  * 1/1024 of the squared length (the rounding of composed stp_fix
@@ -197,7 +220,9 @@ int stp_view_similar(const stp_transform *model);
 /* *out = the view transform t after model (a similarity, stp_view_similar)
  * as one transform (see above).  Returns 1, or 0 (out unset) when model is
  * not a similarity or a composite axis component reaches 2^17 in
- * magnitude: then the two steps apply.  out must not be t. */
+ * magnitude: then the two steps apply.  out must not be t.  With
+ * STP_COMPACT_COMPOSE the composite is the compact form's where it applies
+ * (view.c's compose_compact). */
 int stp_view_transform_compose(const stp_view_transform *t, const stp_transform *model,
                                stp_view_transform *out);
 

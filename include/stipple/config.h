@@ -153,24 +153,28 @@
 
 /* 1: direct drawing in its compact form, for the smallest chips: the
  * view's axes rounded to Q1.14 (view.c's stp_view_axes in its compact
- * variant, which the renderer's look-at takes too in these builds) and
- * composed with the model's rotation in Q1.14, each vertex placed by
- * 16 x 16-bit products; a face drawn when
- * its projected vertices turn counter-clockwise and shaded with its
- * normal turned by that composite, at its vertices' mean by a
- * product-based third.  0 (default): direct drawing enters through the
- * renderer's geometry and face stages (view.c's composed transform,
- * exact; the model frame's side test, normal rotation and the exact
- * vertex mean), so its pictures equal stp_renderer_mesh's pixel for
- * pixel.  With 1 pictures may differ in a few pixels at edges and in
- * faces within rounding of a style step or of edge-on
- * (tests/direct/test_direct_equal_compact: 0-2 of 128 x 64 and 0-4 of
- * 400 x 240 pixels in the torus frames).  The Arduino library and the
- * lean direct image set it: 0 costs the Uno's SpinningCube 13 582 bytes
- * of flash (the model frame's similarity test, normalisation and 64-bit
- * division; 64-bit side tests) and the lean Cortex-M0+ direct core 8 178
- * (14 130 against 5 952 B: the renderer's look-at, model frame, composed
- * geometry and clipper; docs/direct.md). */
+ * variant) and composed with the model's rotation in Q1.14 (models at
+ * scale 1 only: view.c's stp_view_compose_q14), each vertex placed by
+ * 16 x 16-bit products; a face drawn when its projected vertices turn
+ * counter-clockwise, shaded with its normal turned by that composite at
+ * its vertices' mean by a product-based third (render_private.h's
+ * stp_render_third); no clipping (a face across the picture's edge is
+ * walked whole, a vertex nearer than hither refused).  The renderer in
+ * these builds takes the same look-at, composite, normal rotation (for a
+ * model at scale 1) and shading point, so every vertex lands at the same
+ * view coordinates and device position.  0 (default): direct drawing
+ * enters through the renderer's geometry and face stages (view.c's
+ * composed transform, exact; the model frame's side test, normal
+ * rotation and the exact vertex mean; the renderer's clipper), so its
+ * pictures equal stp_renderer_mesh's pixel for pixel.  With 1 pictures
+ * may differ where a face crosses the picture's edge
+ * (tests/direct/test_direct_equal_compact: 0-1 of 128 x 64 and 0-2 of
+ * 400 x 240 pixels a frame).  The Arduino library and the lean direct
+ * image set it: 0 costs the Uno's SpinningCube 13 582 bytes of flash (the
+ * model frame's similarity test, normalisation and 64-bit division;
+ * 64-bit side tests) and the lean Cortex-M0+ direct core 8 186 (14 130
+ * against 5 944 B: the renderer's look-at, model frame, composed geometry
+ * and clipper; docs/direct.md). */
 #ifndef STP_DIRECT_COMPACT
 #define STP_DIRECT_COMPACT 0
 #endif

@@ -85,7 +85,8 @@ int stp_direct_view_look(stp_direct_view *v, stp_vec3 from, stp_vec3 at, stp_vec
 /* A model transform: p' = scale (rot p) + translate. */
 typedef struct stp_direct_model {
     int16_t rot[3][3];   /* a rotation, row-major, Q1.14 */
-    stp_fix scale;       /* uniform, (0, 2) */
+    stp_fix scale;       /* uniform, (0, 2); 1 (STP_FIX_ONE) in the compact
+                            form (config.h's STP_DIRECT_COMPACT) */
     stp_vec3 translate;  /* world units */
 } stp_direct_model;
 
@@ -185,9 +186,11 @@ typedef struct stp_direct_frame {
  * pixel: ON where intensity > threshold.
  * Errors: STP_ERR_ARG (a pointer NULL, a mesh array NULL, an index not
  * below vertex_count, point_count or face_count too small, levels
- * outside 2..255, scale outside (0, 2), a light value outside its range,
- * rot not a rotation or the scale below 2^-6: the face stage's model
- * frame, not with STP_DIRECT_COMPACT), STP_ERR_RANGE (a coordinate
+ * outside 2..255, scale outside (0, 2) or in the compact form other than
+ * 1, a light value outside its range, rot not a rotation or the scale
+ * below 2^-6: the face stage's model frame, not with STP_DIRECT_COMPACT;
+ * in the compact form rot so far from a rotation that its composite with
+ * the view leaves Q1.14), STP_ERR_RANGE (a coordinate
  * beyond 2^23 raw, a scale within about 2^-12 of 2, where a composite
  * axis reaches 2^17, or in the compact form a vertex nearer than hither
  * or projecting outside the device range, which the default form clips
