@@ -18,6 +18,20 @@ stp_vec3 stp_vec3_cross(stp_vec3 a, stp_vec3 b)
     return c;
 }
 
+/* out's axes (right, up, forward) the rows of c (9 entries, row-major) */
+static void set_axes(stp_view_transform *out, const int32_t *c)
+{
+    out->right.x = c[0];
+    out->right.y = c[1];
+    out->right.z = c[2];
+    out->up.x = c[3];
+    out->up.y = c[4];
+    out->up.z = c[5];
+    out->forward.x = c[6];
+    out->forward.y = c[7];
+    out->forward.z = c[8];
+}
+
 #if STP_DIRECT_COMPACT
 /* ---- the compact form's axes (config.h: STP_DIRECT_COMPACT) ----
  * Unit vectors in Q1.14 by the one unit-vector function mesh normals take
@@ -385,15 +399,7 @@ static void compose_compact_view(const stp_vec3 *const axis[3], const stp_transf
     e[2] = out->from_forward;
     if (!compose_compact(axis, model, c, e))
         return;
-    out->right.x = c[0][0];
-    out->right.y = c[0][1];
-    out->right.z = c[0][2];
-    out->up.x = c[1][0];
-    out->up.y = c[1][1];
-    out->up.z = c[1][2];
-    out->forward.x = c[2][0];
-    out->forward.y = c[2][1];
-    out->forward.z = c[2][2];
+    set_axes(out, &c[0][0]);
     out->from_right = e[0];
     out->from_up = e[1];
     out->from_forward = e[2];
@@ -451,15 +457,7 @@ int stp_view_transform_compose(const stp_view_transform *t, const stp_transform 
                 return 0;
             c[i][j] = (int32_t)s;
         }
-    out->right.x = c[0][0];
-    out->right.y = c[0][1];
-    out->right.z = c[0][2];
-    out->up.x = c[1][0];
-    out->up.y = c[1][1];
-    out->up.z = c[1][2];
-    out->forward.x = c[2][0];
-    out->forward.y = c[2][1];
-    out->forward.z = c[2][2];
+    set_axes(out, &c[0][0]);
     /* V_i . (from - t) = from . V_i - t . V_i, exact */
     out->from_right = t->from_right - dot64(model->t, t->right);
     out->from_up = t->from_up - dot64(model->t, t->up);
