@@ -88,25 +88,6 @@ static int difference(const stp_vec3 *a, const stp_vec3 *b, int32_t d[3])
  *              below 3 2^24 each: |.| < 2^26; the renderer's composed
  *              transform in these builds (view.c's compose_compact) */
 
-/* The view's axes in Q1.14 rows, floor(a 2^(14 - F)): exact for the axes
- * stp_direct_view_look makes in these builds (multiples of 2^(F - 14)).
- * One call (its callers' loops inline it otherwise) */
-STP_NOINLINE void axes_q14(const stp_direct_view *view, int16_t out[3][3])
-{
-    int i;
-    for (i = 0; i < 3; i++) {
-#if F > 14
-        out[i][0] = (int16_t)stp_asr32(view->axis[i].x, F > 14 ? F - 14 : 0);
-        out[i][1] = (int16_t)stp_asr32(view->axis[i].y, F > 14 ? F - 14 : 0);
-        out[i][2] = (int16_t)stp_asr32(view->axis[i].z, F > 14 ? F - 14 : 0);
-#else
-        out[i][0] = (int16_t)(view->axis[i].x * ((int32_t)1 << (14 - F)));
-        out[i][1] = (int16_t)(view->axis[i].y * ((int32_t)1 << (14 - F)));
-        out[i][2] = (int16_t)(view->axis[i].z * ((int32_t)1 << (14 - F)));
-#endif
-    }
-}
-
 /* floor(sum v_j m_j / 2^14) for |v_j| < 2^23 and int16_t m_j, exactly
  * (vsum above): below 3 2^24 */
 STP_DIRECT_CALL int32_t dot3(const int32_t v[3], const int16_t m[3])
@@ -126,7 +107,7 @@ static void to_view(const stp_direct_view *view, const int32_t d[3], int32_t out
 {
     int16_t a[3][3];
     int i;
-    axes_q14(view, a);
+    stp_view_axes_q14(view->axis, a);
     for (i = 0; i < 3; i++)
         out[i] = dot3(d, a[i]);
 }
@@ -187,7 +168,7 @@ int stp_direct_shading_prepare(stp_direct_shading *s, const stp_direct_lit *lit,
     int16_t a[3][3];
     s->fast = &lit->fast;
     /* C = V R: the geometry stage's composite of the rotation alone */
-    axes_q14(view, a);
+    stp_view_axes_q14(view->axis, a);
     return stp_view_compose_q14(&a[0][0], &model->rot[0][0], s->rot); /* 0: rot no rotation */
 }
 #else
@@ -277,7 +258,7 @@ static int geometry_prepare(stp_direct_geometry *g, const stp_direct_view *view,
     int16_t a[3][3];
     int i;
     (void)model;
-    axes_q14(view, a);
+    stp_view_axes_q14(view->axis, a);
     for (i = 0; i < 3; i++)
         g->t[i] = dot3(d, a[i]); /* floor(V d / 2^F) */
     g->m = shading->rot; /* the scale is 1: Q = C (check_args) */

@@ -546,11 +546,7 @@ static void vertex_to_view(const stp_renderer *r, stp_vec3 p, stp_vec3 *out)
 static void view_only(stp_renderer *r)
 {
     stp_transform identity;
-    int i, j;
-    for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++)
-            identity.m[i][j] = i == j ? ONE : 0;
-    identity.t.x = identity.t.y = identity.t.z = 0;
+    stp_transform_identity(&identity);
     if (!stp_view_transform_compose(&r->to_view, &identity, &r->point_view))
         r->point_view = r->to_view;
 }

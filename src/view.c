@@ -38,7 +38,7 @@ static void set_axes(stp_view_transform *out, const int32_t *c)
  * (fix.c's stp_unit_q14_from64), cross products of Q1.14 vectors in
  * Q2.28 (each component below 2^29), and the axes kept as stp_fix: exact
  * multiples of 2^(F - 14), so the geometry stage's Q1.14 form of them
- * (stp_view_compose_small) is exact. */
+ * (stp_view_axes_q14) is exact. */
 
 /* v scaled to unit length in Q1.14; 0 for a zero vector (out untouched) */
 static int unit14(int32_t x, int32_t y, int32_t z, int16_t out[3])
@@ -300,6 +300,30 @@ int stp_view_similar(const stp_transform *model)
 }
 
 #if STP_DIRECT_COMPACT
+/* a (|a| < 2^(F + 1)) in Q1.14, floor(a 2^(14 - F)) (exact for the
+ * compact look-at's axes, multiples of 2^(F - 14): stp_view_axes) */
+static int16_t to_q14(stp_fix a)
+{
+#if F >= 14
+    return (int16_t)stp_asr32(a, F >= 14 ? F - 14 : 0);
+#else
+    return (int16_t)(a * ((int32_t)1 << (F >= 14 ? 0 : 14 - F)));
+#endif
+}
+
+#if defined(__GNUC__)
+__attribute__((noinline)) /* one copy for its callers (LTO inlined it in each) */
+#endif
+void stp_view_axes_q14(const stp_vec3 axes[3], int16_t out[3][3])
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        out[i][0] = to_q14(axes[i].x);
+        out[i][1] = to_q14(axes[i].y);
+        out[i][2] = to_q14(axes[i].z);
+    }
+}
+
 #if defined(__GNUC__) && STP_LEAN_CODE
 __attribute__((noinline)) /* one copy for its callers on AVR (LTO inlined it in each) */
 #endif
@@ -332,13 +356,6 @@ int stp_view_compose_q14(const int16_t *a, const int16_t *m, int16_t q[3][3])
 #endif
 
 #if STP_COMPACT_COMPOSE
-/* a (|a| < 2^(F + 1)) in Q1.14, floor(a 2^(F - 14)) (exact for the
- * compact look-at's axes, multiples of 2^(F - 14): stp_view_axes) */
-static int16_t to_q14(stp_fix a)
-{
-    return (int16_t)stp_asr32(a, F - 14);
-}
-
 /* Whether the compact composition applies to model seen along axes: every
  * axis component a multiple of 2^(F - 14) (the compact look-at's) and
  * every entry of m below 2 in magnitude (Q1.14). */
@@ -365,17 +382,17 @@ static int compact_fits(const stp_vec3 *const axis[3], const stp_transform *mode
 static int compose_compact(const stp_vec3 *const axis[3], const stp_transform *model, int32_t c[3][3],
                            int64_t e[3])
 {
+    stp_vec3 axes[3];
     int16_t a[3][3], mq[3][3], q[3][3];
     int i, j;
     if (!compact_fits(axis, model))
         return 0;
     for (i = 0; i < 3; i++) {
-        a[i][0] = to_q14(axis[i]->x); /* exact (compact_fits) */
-        a[i][1] = to_q14(axis[i]->y);
-        a[i][2] = to_q14(axis[i]->z);
+        axes[i] = *axis[i];
         for (j = 0; j < 3; j++)
             mq[i][j] = to_q14(model->m[i][j]); /* below 2^15 (compact_fits) */
     }
+    stp_view_axes_q14(axes, a); /* exact (compact_fits) */
     if (!stp_view_compose_q14(&a[0][0], &mq[0][0], q))
         return 0;
     for (i = 0; i < 3; i++) {
@@ -422,10 +439,7 @@ static void compact_rotation(const stp_vec3 *const axis[3], const stp_transform 
     if (f->scale2 - one > tolerance || one - f->scale2 > tolerance)
         return; /* scaled: the exact frame */
     if (model == 0) {
-        for (i = 0; i < 3; i++)
-            for (j = 0; j < 3; j++)
-                identity.m[i][j] = i == j ? ONE : 0;
-        identity.t.x = identity.t.y = identity.t.z = 0;
+        stp_transform_identity(&identity);
         model = &identity;
     }
     if (!compose_compact(axis, model, c, e))

@@ -193,6 +193,11 @@ typedef struct stp_side_estimate {
 #define STP_COMPACT_COMPOSE (STP_DIRECT_COMPACT && STP_FIX_FRAC_BITS >= 14)
 
 #if STP_DIRECT_COMPACT
+/* The view's axes in Q1.14 rows, floor(a 2^(14 - F)): exact for the
+ * compact look-at's axes (multiples of 2^(F - 14): stp_view_axes).  The
+ * compact form's one conversion (direct drawing's, compose_compact's). */
+void stp_view_axes_q14(const stp_vec3 axes[3], int16_t out[3][3]);
+
 /* round(sum_k a_k b_k / 2^14) for Q1.14 a and b (products below 2^30 in
  * magnitude, their sum below 2^31): the compact form's one dot product
  * (its composite, its normals' turn). */
