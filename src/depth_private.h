@@ -12,7 +12,10 @@
  * depth (12 fractional bits) lies in [2^12, 65535 2^12] at the vertices,
  * and a pixel's depth, floor(Q12 / 2^12) clamped to 1..65535, is the Z
  * buffer's uint16 entry (0: nothing drawn; a pixel is drawn over when its
- * depth is larger).  Device coordinates are Q27.4, >= 0 and below 2^19;
+ * depth is larger).  Device coordinates are Q27.4, >= 0 and below 2^19
+ * (with the guard band, project_private.h, >= -STP_GUARD_Q4 = -2^13: a
+ * polygon's centre is then found from sums moved by STP_GUARD_Q4 a
+ * vertex, DEPTH_CENTRE_BIAS, so they stay unsigned);
  * plane gradients are Q12 per subpixel, clamped to +-2^40 (edge-on
  * polygons); a depth at a pixel centre within a polygon's extent stays
  * below 2^62 in magnitude (int64), and the 32-bit short forms hold where
@@ -31,6 +34,7 @@
 #include "div64_private.h" /* STP_DIV64 */
 #include "run_fill_private.h" /* stp_halftone_fill_bits, the one run filler */
 #include "depth_keys_private.h" /* depth_keys, depth_q12_of */
+#include "project_private.h" /* STP_GUARD_Q4: the guard band */
 
 #ifndef STP_HALF_PIXEL
 #error "depth_private.h needs edge_walk_private.h first"
@@ -203,9 +207,14 @@ typedef struct depth_plane {
     int32_t xc, yc;
 } depth_plane;
 
+/* Each vertex's coordinates moved by DEPTH_CENTRE_BIAS in the sums a
+ * centre is found from (0 without the guard band) */
+#define DEPTH_CENTRE_BIAS ((uint32_t)STP_GUARD_Q4)
+
 /* The plane through Newell's sums a, b, c (c != 0) of n vertices whose
- * coordinates and Q12 depths sum to sx, sy, sd: gradients -a 4096 / c and
- * -b 4096 / c clamped to +-2^40, the centre their averages. */
+ * coordinates, each moved by DEPTH_CENTRE_BIAS, and Q12 depths sum to sx,
+ * sy, sd: gradients -a 4096 / c and -b 4096 / c clamped to +-2^40, the
+ * centre their averages. */
 static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, int64_t c, uint32_t sx, uint32_t sy,
                                          int64_t sd, int n)
 {
@@ -223,8 +232,8 @@ static inline void depth_plane_from_sums(depth_plane *pl, int64_t a, int64_t b, 
         if (pl->ddy > ((int64_t)1 << 40)) pl->ddy = (int64_t)1 << 40;
         if (pl->ddy < -((int64_t)1 << 40)) pl->ddy = -((int64_t)1 << 40);
     }
-    pl->xc = (int32_t)div_count(sx, (uint32_t)n);
-    pl->yc = (int32_t)div_count(sy, (uint32_t)n);
+    pl->xc = (int32_t)(div_count(sx, (uint32_t)n) - DEPTH_CENTRE_BIAS);
+    pl->yc = (int32_t)(div_count(sy, (uint32_t)n) - DEPTH_CENTRE_BIAS);
     /* depths below 2^28: 32-bit division while the sum fits */
     pl->dc = sd < ((int64_t)1 << 32) ? (int64_t)div_count((uint32_t)sd, (uint32_t)n) : STP_DIV64(sd, n);
 }
@@ -284,8 +293,8 @@ DEPTH_MAYBE_UNUSED static int gradients_short(int32_t a, int32_t b, int32_t c, i
 #endif
 STP_HOT_INLINE void triangle_centre(depth_plane *pl, uint32_t sx, uint32_t sy, uint32_t sd)
 {
-    pl->xc = (int32_t)stp_div3_u32(sx);
-    pl->yc = (int32_t)stp_div3_u32(sy);
+    pl->xc = (int32_t)(stp_div3_u32(sx) - DEPTH_CENTRE_BIAS);
+    pl->yc = (int32_t)(stp_div3_u32(sy) - DEPTH_CENTRE_BIAS);
     pl->dc = STP_CENTRE_DIV3(sd);
 }
 
@@ -319,8 +328,8 @@ DEPTH_TRIANGLE_FN int depth_plane_triangle(const stp_instr *v, int32_t d0, int32
 {
     int32_t x1 = v[1].x - v[0].x, y1 = v[1].y - v[0].y, x2 = v[2].x - v[0].x, y2 = v[2].y - v[0].y;
     int32_t e1 = (d1 >> 12) - (d0 >> 12), e2 = (d2 >> 12) - (d0 >> 12);
-    uint32_t sx = (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x,
-             sy = (uint32_t)v[0].y + (uint32_t)v[1].y + (uint32_t)v[2].y,
+    uint32_t sx = (uint32_t)v[0].x + (uint32_t)v[1].x + (uint32_t)v[2].x + 3u * DEPTH_CENTRE_BIAS,
+             sy = (uint32_t)v[0].y + (uint32_t)v[1].y + (uint32_t)v[2].y + 3u * DEPTH_CENTRE_BIAS,
              sd = (uint32_t)d0 + (uint32_t)d1 + (uint32_t)d2;
     int64_t a, b, c;
 #if !STP_WIDE_ARITH /* 64-bit hosts: 64-bit products and quotients cost what 32-bit ones do */
@@ -407,8 +416,8 @@ DEPTH_MAYBE_UNUSED static int depth_plane_polygon(const depth_keys *k, const stp
         a += stp_smul32x32(p->y - q->y, (int32_t)(dp + dq));
         b += stp_smul32x32((int32_t)(dp - dq), p->x + q->x);
         c += stp_smul32x32(p->x - q->x, p->y + q->y);
-        sx += (uint32_t)q->x;
-        sy += (uint32_t)q->y;
+        sx += (uint32_t)q->x + DEPTH_CENTRE_BIAS;
+        sy += (uint32_t)q->y + DEPTH_CENTRE_BIAS;
         sd += d_q;
         d_prev = d_q;
     }

@@ -275,9 +275,16 @@ static inline stp_tri_x stp_tri_edge_pixel(stp_tri_acc acc)
 /* The pixels [*p1, *p2] of 0..width-1 (width <= 32767) whose centres c
  * satisfy xl <= c < xr (stp_span_pixels) for crossings 0 <= xl <= xr
  * (within the vertices' x extent), given as a and b, the first centres at
- * or right of xl and xr (stp_tri_edge_pixel). */
+ * or right of xl and xr (stp_tri_edge_pixel).  A file whose crossings may
+ * lie left of 0 (raster.c with the guard band, project_private.h) defines
+ * STP_TRI_CLAMP_LEFT 1 before it includes this header: a clamped too. */
+#ifndef STP_TRI_CLAMP_LEFT
+#define STP_TRI_CLAMP_LEFT 0
+#endif
 static inline int stp_tri_span_pixels(stp_tri_x a, stp_tri_x b, uint32_t width, uint32_t *p1, uint32_t *p2)
 {
+    if (STP_TRI_CLAMP_LEFT && a < 0)
+        a = 0;
     if (b > (stp_tri_x)width)
         b = (stp_tri_x)width;
     if (a >= b)

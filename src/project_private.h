@@ -15,12 +15,53 @@
 #include "fix_private.h"    /* stp_bit_length32 */
 #include "recip_private.h"  /* STP_WIDE_ARITH, stp_umul32x32, stp_recip32 */
 
+/* The guard band (builds with STP_DIRECT_COMPACT, config.h): the renderer
+ * clips a polygon at the picture's sides only where it reaches beyond a
+ * band of stp_guard_pixels(size) pixels around the picture (its clip
+ * volume widened by that much, render.c); the raster walks the rest whole
+ * and clamps rows and spans to the picture, as direct drawing's compact
+ * form walks its faces, so both draw a face across the picture's edge
+ * with the same crossings.  Device coordinates then lie within
+ * [-STP_GUARD_Q4, 2^19) rather than [0, 2^19); elsewhere the guard is 0
+ * and they are clamped to the picture. */
+#define STP_GUARD_BAND STP_DIRECT_COMPACT
+#if STP_GUARD_BAND
+#define STP_GUARD_Q4 ((int32_t)512 << STP_SUBPIXEL_BITS) /* the widest guard, Q4 */
+#else
+#define STP_GUARD_Q4 0
+#endif
+
+/* The guard band's width in pixels beside a side of size pixels (<=
+ * 32767): 512, less for sizes above 31743 so that size + 2 guard stays
+ * within 32767 (the clip volume's and the raster's ranges); 0 without
+ * the guard band. */
+static inline uint32_t stp_guard_pixels(uint32_t size)
+{
+#if STP_GUARD_BAND
+    return size <= 32767u - 1024u ? 512u : (32767u - size) / 2u;
+#else
+    (void)size;
+    return 0;
+#endif
+}
+
 /* A perspective projection's constants: focal, hither (stp_fix, > 0), and
- * the picture's half width and height in Q27.4 (width 2^3, height 2^3). */
+ * the picture's half width and height in Q27.4 (width 2^3, height 2^3),
+ * with the guard band: its widths in Q4 (stp_guard_pixels). */
 typedef struct stp_view_lens {
     stp_fix focal, hither;
     int32_t half_width, half_height;
+#if STP_GUARD_BAND
+    int32_t guard_x, guard_y;
+#endif
 } stp_view_lens;
+#if STP_GUARD_BAND
+#define STP_LENS_GUARD_X(lens) ((lens)->guard_x)
+#define STP_LENS_GUARD_Y(lens) ((lens)->guard_y)
+#else
+#define STP_LENS_GUARD_X(lens) 0
+#define STP_LENS_GUARD_Y(lens) 0
+#endif
 
 /* The lens of a width x height picture (each <= 32767, so the halves in
  * Q4 fit int32) seen with focal and hither */
@@ -31,6 +72,10 @@ static inline void stp_view_lens_make(stp_view_lens *lens, stp_fix focal, stp_fi
     lens->hither = hither;
     lens->half_width = (int32_t)width << (STP_SUBPIXEL_BITS - 1);
     lens->half_height = (int32_t)height << (STP_SUBPIXEL_BITS - 1);
+#if STP_GUARD_BAND
+    lens->guard_x = (int32_t)stp_guard_pixels(width) << STP_SUBPIXEL_BITS;
+    lens->guard_y = (int32_t)stp_guard_pixels(height) << STP_SUBPIXEL_BITS;
+#endif
 }
 
 #if !STP_WIDE_ARITH
@@ -372,28 +417,38 @@ static inline void stp_view_perspective(stp_fix focal, stp_fix hither, stp_vec3 
 
 /* The device position of view point *p (perspective, clipped: inside up
  * to rounding), Q27.4, and its depth key: out[0] = half_width + the
- * offset, out[1] = half_height - the offset, clamped to [0, 2 half_width]
- * and [0, 2 half_height] (the clipper keeps points inside up to rounding:
- * the clamp takes its last bit), out[2] the key. */
+ * offset, out[1] = half_height - the offset, clamped to [-gx, 2 half_width
+ * + gx] and [-gy, 2 half_height + gy], g the guard band's (0 without it;
+ * the clipper keeps points inside up to rounding: the clamp takes its last
+ * bit), out[2] the key.  Each sum is formed moved by the guard, so the
+ * clamp is the one to [0, limit]. */
 static inline void stp_project_device_wide(const stp_view_lens *lens, const stp_vec3 *p, int32_t out[3])
 {
     int64_t dx, dy;
     STP_PROJECT_WIDE(lens->focal, lens->hither, p, &dx, &dy, &out[2]);
-    dx = lens->half_width + dx;
-    dy = lens->half_height - dy;
+    dx = lens->half_width + STP_LENS_GUARD_X(lens) + dx;
+    dy = lens->half_height + STP_LENS_GUARD_Y(lens) - dy;
 #if STP_WIDE_ARITH
     /* the hosts' per-vertex form: one unsigned test each for the common
      * case inside [0, 2 half] (3 instructions a coordinate fewer; where
      * this is the 32-bit form's rare fallback, the shorter code below) */
-    if (STP_UNLIKELY((uint64_t)dx > (uint64_t)(2 * (int64_t)lens->half_width)))
-        dx = dx < 0 ? 0 : 2 * (int64_t)lens->half_width;
-    if (STP_UNLIKELY((uint64_t)dy > (uint64_t)(2 * (int64_t)lens->half_height)))
-        dy = dy < 0 ? 0 : 2 * (int64_t)lens->half_height;
-    out[0] = (int32_t)dx;
-    out[1] = (int32_t)dy;
+    if (STP_UNLIKELY((uint64_t)dx > (uint64_t)(2 * ((int64_t)lens->half_width + STP_LENS_GUARD_X(lens)))))
+        dx = dx < 0 ? 0 : 2 * ((int64_t)lens->half_width + STP_LENS_GUARD_X(lens));
+    if (STP_UNLIKELY((uint64_t)dy > (uint64_t)(2 * ((int64_t)lens->half_height + STP_LENS_GUARD_Y(lens)))))
+        dy = dy < 0 ? 0 : 2 * ((int64_t)lens->half_height + STP_LENS_GUARD_Y(lens));
+    out[0] = (int32_t)dx - STP_LENS_GUARD_X(lens);
+    out[1] = (int32_t)dy - STP_LENS_GUARD_Y(lens);
 #else
-    out[0] = (int32_t)(dx < 0 ? 0 : (dx > 2 * lens->half_width ? 2 * lens->half_width : dx));
-    out[1] = (int32_t)(dy < 0 ? 0 : (dy > 2 * lens->half_height ? 2 * lens->half_height : dy));
+    out[0] = (int32_t)(dx < 0 ? 0
+                              : (dx > 2 * (lens->half_width + STP_LENS_GUARD_X(lens))
+                                     ? 2 * (lens->half_width + STP_LENS_GUARD_X(lens))
+                                     : dx)) -
+             STP_LENS_GUARD_X(lens);
+    out[1] = (int32_t)(dy < 0 ? 0
+                              : (dy > 2 * (lens->half_height + STP_LENS_GUARD_Y(lens))
+                                     ? 2 * (lens->half_height + STP_LENS_GUARD_Y(lens))
+                                     : dy)) -
+             STP_LENS_GUARD_Y(lens);
 #endif
 }
 
@@ -424,9 +479,12 @@ static inline int stp_view_perspective_device_exact(const stp_view_lens *lens, i
                                 (uint32_t)(p->z < lens->hither ? lens->hither : p->z), p->x, p->y, &x32, &y32,
                                 &out[2]))
         return 0;
-    /* |offset| < 2^(31 - 12): the sums fit int32 */
-    out[0] = stp_project_clamp(lens->half_width + x32, 2 * lens->half_width);
-    out[1] = stp_project_clamp(lens->half_height - y32, 2 * lens->half_height);
+    /* |offset| < 2^(31 - 12): the sums fit int32 (moved by the guard
+     * band's, 0 without it: stp_project_device_wide) */
+    out[0] = stp_project_clamp(lens->half_width + STP_LENS_GUARD_X(lens) + x32,
+                               2 * (lens->half_width + STP_LENS_GUARD_X(lens))) - STP_LENS_GUARD_X(lens);
+    out[1] = stp_project_clamp(lens->half_height + STP_LENS_GUARD_Y(lens) - y32,
+                               2 * (lens->half_height + STP_LENS_GUARD_Y(lens))) - STP_LENS_GUARD_Y(lens);
     return 1;
 }
 

@@ -13,6 +13,9 @@
  * replay_banded_triangle, and with one there are none; peer bench 128x64
  * 460 instructions a frame fewer, 560 spinning) */
 #define STP_TRI_BAND_SHORTCUT (!STP_LEAN_CODE && !STP_WIDE_ARITH)
+/* with the guard band a triangle's crossings may lie left of the picture
+ * (project_private.h): its spans clamped there too */
+#define STP_TRI_CLAMP_LEFT STP_GUARD_BAND
 #include "edge_walk_private.h"
 #include "div64_private.h"
 #include "sort_private.h" /* the painter's sort */
@@ -729,11 +732,13 @@ DEPTH_TRIANGLE_FN int depth_setup_triangle(frame *fr, const stp_instr *v, depth_
  * band: made in the polygon's first band (the one holding its top: ymin >=
  * the band's top) and kept in the caller's setup array when there is one,
  * taken from there in the bands after.  Returns 0 for an edge-on polygon
- * (kept as centre x = -1: device coordinates are >= 0).  A triangle makes
- * its plane at its first span with pixels, so a band may end without it:
- * kept as centre x = SETUP_NOT_MADE (setups_not_made), made by the next
- * band that needs it. */
-#define SETUP_NOT_MADE (-2)
+ * (kept as centre x = SETUP_EDGE_ON: device coordinates are >=
+ * -STP_GUARD_Q4, project_private.h).  A triangle makes its plane at its
+ * first span with pixels, so a band may end without it: kept as centre x
+ * = SETUP_NOT_MADE (setups_not_made), made by the next band that needs
+ * it. */
+#define SETUP_EDGE_ON (-STP_GUARD_Q4 - 1)
+#define SETUP_NOT_MADE (-STP_GUARD_Q4 - 2)
 /* Every kept setup marked not made, once a frame before its first band:
  * a triangle's top may lie in a band above its first row, where its walk
  * ends before tri_setup_mark (the next band would take the setup made for
@@ -751,7 +756,7 @@ static int depth_plane_for(frame *fr, const stp_instr *v, int n, uint32_t ordina
     stp_polygon_setup *kept = fr->setup && ordinal != UINT32_MAX ? &fr->setup[ordinal] : 0;
     int ok;
     if (kept && ymin < fr->rows.top && kept->centre[0] != SETUP_NOT_MADE) {
-        if (kept->centre[0] < 0)
+        if (kept->centre[0] < -STP_GUARD_Q4) /* SETUP_EDGE_ON */
             return 0;
         pl->ddx = kept->plane[0];
         pl->ddy = kept->plane[1];
@@ -765,7 +770,7 @@ static int depth_plane_for(frame *fr, const stp_instr *v, int n, uint32_t ordina
         kept->plane[0] = pl->ddx;
         kept->plane[1] = pl->ddy;
         kept->plane[2] = pl->dc;
-        kept->centre[0] = ok ? pl->xc : -1;
+        kept->centre[0] = ok ? pl->xc : SETUP_EDGE_ON;
         kept->centre[1] = pl->yc;
     }
     return ok;
@@ -1443,9 +1448,33 @@ static inline void sort_entry_set(stp_sort_entry *e, uint32_t k, const stp_instr
     e->transmission = t;
 }
 
+/* The pixels [*first, *last] (from 0) a coordinate extent [lo, lo + w]
+ * (Q27.4) reaches: floor(lo / 16) and floor((lo + w) / 16), the extent
+ * moved by the guard band (project_private.h: coordinates from
+ * -STP_GUARD_Q4) for an unsigned shift, the part left of or above pixel 0
+ * left out; *first > *last when nothing is left.  Without the guard band
+ * the coordinates are >= 0 (project() clamps them). */
+static void extent_pixels(int32_t lo, uint32_t w, uint32_t *first, uint32_t *last)
+{
+#if STP_GUARD_BAND
+    const uint32_t guard = (uint32_t)STP_GUARD_Q4 >> SUB; /* in pixels */
+    uint32_t a = ((uint32_t)lo + (uint32_t)STP_GUARD_Q4) >> SUB, b = ((uint32_t)lo + (uint32_t)STP_GUARD_Q4 + w) >> SUB;
+    if (b < guard) {
+        *first = 1;
+        *last = 0;
+        return;
+    }
+    *first = a > guard ? a - guard : 0;
+    *last = b - guard;
+#else
+    *first = (uint32_t)lo >> SUB;
+    *last = ((uint32_t)lo + w) >> SUB;
+#endif
+}
+
 /* The frame's depth-key range and the pixels the count visible polygons
  * can cover: a pixel a polygon covers has its centre within the polygon's
- * vertices' extent (coordinates are >= 0: project() clamps them). */
+ * vertices' extent (extent_pixels). */
 static void frame_extent(frame *fr, uint32_t count, const extent *ex)
 {
     fr->keys.key_min = INT32_MAX;
@@ -1456,10 +1485,8 @@ static void frame_extent(frame *fr, uint32_t count, const extent *ex)
         return;
     fr->keys.key_min = ex->key_min;
     fr->keys.key_max = (int32_t)((uint32_t)ex->key_min + ex->key_width); /* within [key_min, INT32_MAX] */
-    fr->x_min = (uint32_t)ex->x_lo >> SUB;
-    fr->x_max = ((uint32_t)ex->x_lo + ex->x_width) >> SUB;
-    fr->y_min = (uint32_t)ex->y_lo >> SUB;
-    fr->y_max = ((uint32_t)ex->y_lo + ex->y_width) >> SUB;
+    extent_pixels(ex->x_lo, ex->x_width, &fr->x_min, &fr->x_max);
+    extent_pixels(ex->y_lo, ex->y_width, &fr->y_min, &fr->y_max);
     if (fr->x_max > fr->r->width - 1 || !SCAN_X)
         fr->x_max = fr->r->width - 1;
     if (!SCAN_X) /* whole rows: the scan left x out */

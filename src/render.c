@@ -150,8 +150,10 @@ int stp_renderer_set_view(stp_renderer *r, const stp_view *v)
     r->hither = vf.hither;
     r->clip_volume.focal = vf.focal;
     r->clip_volume.near = vf.hither;
-    r->clip_volume.width = r->width;
-    r->clip_volume.height = r->height;
+    /* the picture and the guard band around it (project_private.h: 0
+     * without it), at most 32767 a side */
+    r->clip_volume.width = r->width + 2u * stp_guard_pixels(r->width);
+    r->clip_volume.height = r->height + 2u * stp_guard_pixels(r->height);
     r->clip_volume.parallel = vf.projection == STP_PARALLEL;
     stp_view_transform_make(&vf, &r->to_view);
     stp_render_geometry_update(r);
@@ -635,7 +637,7 @@ static int clip_polygon(stp_renderer *r, int n, int smooth, stp_vec3 **result, s
  * one perspective projection (view.c), or the parallel one. */
 static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
 {
-    int64_t x, y, wq, hq;
+    int64_t x, y, wq, hq, gx, gy;
     if (r->projection == STP_PERSPECTIVE) {
         stp_view_lens lens;
         int32_t d[3];
@@ -652,9 +654,12 @@ static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
     x = wq / 2 + stp_asr64((int64_t)r->focal * p.x, 2 * F - STP_SUBPIXEL_BITS);
     y = hq / 2 - stp_asr64((int64_t)r->focal * p.y, 2 * F - STP_SUBPIXEL_BITS);
     out->z = -p.z;
-    /* the clipper keeps points inside up to rounding: clamp the last bit */
-    out->x = (int32_t)(x < 0 ? 0 : (x > wq ? wq : x));
-    out->y = (int32_t)(y < 0 ? 0 : (y > hq ? hq : y));
+    /* the clipper keeps points inside up to rounding: clamp the last bit
+     * (to the picture and its guard band, project_private.h) */
+    gx = (int64_t)stp_guard_pixels(r->width) << STP_SUBPIXEL_BITS;
+    gy = (int64_t)stp_guard_pixels(r->height) << STP_SUBPIXEL_BITS;
+    out->x = (int32_t)(x < -gx ? -gx : (x > wq + gx ? wq + gx : x));
+    out->y = (int32_t)(y < -gy ? -gy : (y > hq + gy ? hq + gy : y));
 }
 
 static inline int check_open(stp_renderer *r)
