@@ -403,25 +403,20 @@ stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal
     return stp_shade_fast_face_near(s->fast, nv, centre); /* [0, 1] */
 }
 
-/* Twice the signed screen area of p (y down): differences below 2^14,
- * products below 2^28; a front face turns counter-clockwise seen from the
- * eye, clockwise in device coordinates (area < 0). */
-static int32_t screen_area(const stp_direct_point *const p[3])
-{
-    int ax = p[1]->dx - p[0]->dx, ay = p[1]->dy - p[0]->dy;
-    int bx = p[2]->dx - p[0]->dx, by = p[2]->dy - p[0]->dy;
-    return (int32_t)ax * by - (int32_t)ay * bx;
-}
-
 /* Whether the face of normal with triangle tri is a front face: by the
- * winding of its projected vertices p */
+ * winding of its projected vertices p (render_private.h's winding side,
+ * which the renderer takes in these builds): twice its signed area, y
+ * down, differences below 2^14, negative for a front face (it turns
+ * counter-clockwise seen from the eye) */
 STP_HOT_INLINE int front_face(const stp_direct_shading *s, const int16_t *normal, const stp_vec3 *v0,
                               const stp_direct_point *const p[3])
 {
+    int ax = p[1]->dx - p[0]->dx, ay = p[1]->dy - p[0]->dy;
+    int bx = p[2]->dx - p[0]->dx, by = p[2]->dy - p[0]->dy;
     (void)s;
     (void)normal;
     (void)v0;
-    return screen_area(p) < 0;
+    return stp_render_twice_area(ax, ay, bx, by) < 0;
 }
 #else
 stp_fix stp_direct_face_shade(const stp_direct_shading *s, const int16_t *normal,

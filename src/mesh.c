@@ -717,6 +717,14 @@ STP_HOT_INLINE int enter_face(mesh_context *c, const uint16_t *k, const int16_t 
     s[2] = &c->scratch[k[2]];
     if ((s[0]->state | s[1]->state | s[2]->state) != 0 && (ready = ready_vertices(c, k, s)) != 1)
         return ready;
+#if STP_WINDING_SIDE
+    /* the side by the winding of the projected vertices (render_private.h) */
+    side = stp_render_winding_side(s[0]->dx, s[0]->dy, s[1]->dx, s[1]->dy, s[2]->dx, s[2]->dy);
+    if (side < c->least_side) {
+        c->last_shade = -1;
+        return STP_OK; /* a back face removed */
+    }
+#endif
     if (!stp_render_triangle_shows(c->r, c->test_rows, s[0]->dx, s[0]->dy, s[1]->dx, s[1]->dy, s[2]->dx,
                                    s[2]->dy)) {
         c->last_shade = -1;
@@ -756,7 +764,12 @@ static int enter_faces(mesh_context *c, uint16_t count)
     int status = STP_OK;
     take_state(c);
     for (; k != end; k += 3, n += 3) {
-#if SURE_BACK
+#if STP_WINDING_SIDE
+        /* every face to enter_face, which takes its side by the winding
+         * once its vertices are projected (render_private.h) */
+        int32_t side = 0;
+        (void)vertices;
+#elif SURE_BACK
         const stp_vec3 *a = &vertices[k[0]];
         int32_t side = face_estimate(c, n, a);
         if (side < c->sure_back)
@@ -782,7 +795,8 @@ static int enter_faces(mesh_context *c, uint16_t count)
         if ((status = enter_face(c, k, n, side)) != STP_OK)
             break;
     }
-    if (status == STP_OK && c->cull && face_side(c, n - 3, &vertices[k[-3]]) <= 0)
+    /* (with the winding side enter_face marks a face it removes) */
+    if (!STP_WINDING_SIDE && status == STP_OK && c->cull && face_side(c, n - 3, &vertices[k[-3]]) <= 0)
         c->last_shade = -1; /* removed: stp_renderer_last_shade */
     keep_state(c);
     return status;

@@ -1748,6 +1748,12 @@ static int enter_model_triangle(stp_renderer *r, stp_entry *e, const stp_model_f
     project_entered_vertex(r, 1, &p[1]);
     project_entered_vertex(r, 2, &p[2]);
 #endif
+#if STP_WINDING_SIDE
+    /* the side by the winding of the projected vertices (render_private.h) */
+    side = stp_render_winding_side(p[0].x, p[0].y, p[1].x, p[1].y, p[2].x, p[2].y);
+    if (side <= 0 && r->backface_removal)
+        return STP_OK; /* a back face removed */
+#endif
     if (!stp_render_triangle_shows(r, r->pixel_cull, p[0].x, p[0].y, p[1].x,
                                    p[1].y, p[2].x, p[2].y))
         return STP_OK; /* between two row centres, or pixel culling: draws nothing */
@@ -1808,6 +1814,10 @@ STP_FRONT_INLINE int enter_model_front(stp_renderer *r, const stp_vec3 *vertices
         return STP_OK; /* wholly outside one plane: not shaded */
     if (count == 3 && e.outside_any == 0)
         return enter_model_triangle(r, &e, f, n, side);
+#if STP_WINDING_SIDE
+    if (side <= 0 && r->backface_removal)
+        return STP_OK; /* a back face the clipper would cut: the exact side */
+#endif
     stp_render_view_normal(f, n, side, nv);
     e.style = stp_render_face_style(r, r->shading ? stp_render_face_shader(r) : 0, nv,
                                     vertex_average(r->clip_a, count), side);
@@ -1824,7 +1834,17 @@ static int enter_model_face(stp_renderer *r, const stp_vec3 *vertices, int count
                             const stp_model_frame *f)
 {
     int16_t n[3];
-    int side = 0, found = model_normal_and_side(r, vertices, count, f, n, &side);
+    int side = 0, found;
+#if STP_WINDING_SIDE
+    if (count == 3 && r->backface_removal) {
+        /* a triangle's side by its winding once projected, or the exact
+         * one where the clipper cuts it (enter_model_front) */
+        if (!stp_render_model_normal(vertices, 3, n))
+            return STP_ERR_DEGENERATE;
+        return enter_model_front(r, vertices, 3, f, n, stp_render_face_side(f, n, vertices[0]));
+    }
+#endif
+    found = model_normal_and_side(r, vertices, count, f, n, &side);
     if (found != 1)
         return found == 0 ? STP_OK : found;
     if (side <= 0 && r->backface_removal)

@@ -145,6 +145,50 @@ STP_HOT_INLINE const stp_shade_fast *stp_render_face_shader(stp_renderer *r)
     return &r->fast_shade;
 }
 
+/* ---- the winding side (STP_WINDING_SIDE: builds with STP_DIRECT_COMPACT,
+ * config.h) ----
+ * In those builds a triangle whose three vertices are projected (inside
+ * the clip volume and its guard band, project_private.h) is a front face
+ * when its device positions turn clockwise (y down: counter-clockwise
+ * seen from the eye): the sign of twice its signed area.  Direct
+ * drawing's compact form keeps its faces by this test (the model frame's
+ * eye, which the exact side needs, is a 64-bit quotient its budget has
+ * no room for); the renderer's mesh and model routes take it there too,
+ * so all keep the same faces, where the exact side and the rounded
+ * positions' winding disagree for a face within a fraction of a pixel of
+ * edge-on.  A triangle the clipper cuts keeps the exact side.  Elsewhere
+ * every route takes the exact side (stp_render_face_side). */
+#define STP_WINDING_SIDE STP_DIRECT_COMPACT
+
+/* Twice the signed area of a triangle whose second and third device
+ * positions less its first are (ax, ay) and (bx, by), each within
+ * (-2^15, 2^15) (an int on every target; products below 2^30): negative
+ * when it turns clockwise on the device (y down). */
+STP_HOT_INLINE int32_t stp_render_twice_area(int ax, int ay, int bx, int by)
+{
+    return (int32_t)ax * by - (int32_t)ay * bx;
+}
+
+#if STP_WINDING_SIDE
+/* The winding side of the triangle at device positions (x_i, y_i) (Q27.4,
+ * within [-2^19, 2^19]): 1 clockwise on the device (a front face), -1
+ * counter-clockwise, 0 no area; stp_render_twice_area where the
+ * differences are within (-2^15, 2^15), else 64-bit products (below
+ * 2^40). */
+STP_HOT_INLINE int stp_render_winding_side(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2, int32_t y2)
+{
+    int32_t ax = x1 - x0, ay = y1 - y0, bx = x2 - x0, by = y2 - y0;
+    int64_t area;
+    /* each in (-2^15, 2^15): offset by 2^15 - 1, below 2^16 - 1 */
+    if ((((uint32_t)ax + 32767u) | ((uint32_t)ay + 32767u) | ((uint32_t)bx + 32767u) | ((uint32_t)by + 32767u)) <
+        65535u)
+        area = stp_render_twice_area((int)ax, (int)ay, (int)bx, (int)by);
+    else
+        area = (int64_t)ax * by - (int64_t)ay * bx;
+    return area < 0 ? 1 : (area > 0 ? -1 : 0);
+}
+#endif
+
 /* The exact sign (-1, 0, 1) of N.(eye - v0) in model coordinates (the
  * product itself: stp_render_face_dot): which
  * side of a face with Q1.14 model normal n through model point v0 the eye

@@ -162,14 +162,16 @@
  * walked whole, a vertex nearer than hither refused).  The renderer in
  * these builds takes the same look-at, composite, normal rotation (for a
  * model at scale 1) and shading point, so every vertex lands at the same
- * view coordinates and device position.  0 (default): direct drawing
- * enters through the renderer's geometry and face stages (view.c's
- * composed transform, exact; the model frame's side test, normal
- * rotation and the exact vertex mean; the renderer's clipper), so its
- * pictures equal stp_renderer_mesh's pixel for pixel.  With 1 pictures
- * may differ where a face crosses the picture's edge
- * (tests/direct/test_direct_equal_compact: 0-1 of 128 x 64 and 0-2 of
- * 400 x 240 pixels a frame).  The Arduino library and the lean direct
+ * view coordinates and device position; the same side test for a
+ * triangle it does not clip (render_private.h's winding side); and a
+ * guard band (project_private.h): it clips at the picture's sides only
+ * beyond 512 pixels around it and walks the rest whole, clamping rows and
+ * spans.  So the pictures equal stp_renderer_mesh's pixel for pixel in
+ * both forms (tests/direct/test_direct_equal_compact).  0 (default):
+ * direct drawing enters through the renderer's geometry and face stages
+ * (view.c's composed transform, exact; the model frame's side test,
+ * normal rotation and the exact vertex mean; the renderer's clipper).
+ * The Arduino library and the lean direct
  * image set it: 0 costs the Uno's SpinningCube 13 582 bytes of flash (the
  * model frame's similarity test, normalisation and 64-bit division;
  * 64-bit side tests) and the lean Cortex-M0+ direct core 8 186 (14 130
