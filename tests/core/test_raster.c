@@ -753,7 +753,7 @@ static void test_backface_removal_before_transform_matches_double(void **state)
 {
     static const double scales[3] = {1, 20, 3000};
     uint32_t seed = 12345u;
-    int s, proj, k, checked = 0, fronts = 0, between_rows = 0;
+    int s, proj, k, checked = 0, fronts = 0, between_rows = 0, winding_differs = 0;
     (void)state;
     for (s = 0; s < 3; s++) {
         for (proj = 0; proj < 2; proj++) {
@@ -829,6 +829,19 @@ static void test_backface_removal_before_transform_matches_double(void **state)
                     between_rows++;
                     continue;
                 }
+#if STP_DIRECT_COMPACT
+                /* compact builds keep a triangle by the winding of its
+                 * projected (rounded) vertices (render_private.h): it may
+                 * differ from the exact side for a face within a fraction
+                 * of a pixel of edge-on, here within 1% of it (measured: 2
+                 * of the 1200, at 0.1% and 0.2%) */
+                if (stp_renderer_polygon_count(f.r) - before != (side > 0 ? 1u : 0u)) {
+                    assert_true(fabs(side) < 0.01 * scale_n);
+                    winding_differs++;
+                    checked++;
+                    continue;
+                }
+#endif
                 assert_int_equal(stp_renderer_polygon_count(f.r) - before, side > 0 ? 1u : 0u);
                 checked++;
                 fronts += side > 0;
@@ -837,7 +850,9 @@ static void test_backface_removal_before_transform_matches_double(void **state)
             fixture_close(&kept);
         }
     }
-    fprintf(stderr, "  %d triangles decided, %d between two row centres\n", checked, between_rows);
+    fprintf(stderr, "  %d triangles decided, %d between two row centres, %d by a winding the exact side differs from\n",
+            checked, between_rows, winding_differs);
+    assert_true(winding_differs <= checked / 100);
     assert_true(between_rows < checked / 10);
     assert_true(checked > 1000);
     assert_true(fronts > 400 && checked - fronts > 400);
@@ -1153,7 +1168,17 @@ static void test_triangle_depths_unchanged(void **state)
     }
     fixture_close(&f);
     print_message("triangle depths: frame hash %08x\n", h);
+#if !STP_DIRECT_COMPACT
     assert_int_equal(h, 0x49a757a2u);
+#else
+    /* compact builds walk a triangle across the picture's edge whole
+     * (project_private.h's guard band) where this frame's was clipped:
+     * other pixels there, checked against the fill rule written out per
+     * pixel by test_direct_walk (direct drawing's walk) and
+     * test_direct_equal_compact (the renderer's equals it); the bands and
+     * kept setups against the whole frame above */
+    (void)h;
+#endif
 }
 
 /* A setup array shorter than the polygon count is refused, not overrun. */
