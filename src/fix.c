@@ -461,6 +461,7 @@ static inline int64_t floor_shift(int64_t v, int s)
     return ((v + ((int64_t)1 << 62)) >> s) - ((int64_t)1 << (62 - s));
 }
 #else
+#if !STP_NARROW_FORMS /* its one caller's form */
 /* a^2 for a <= 2^30 from three 32-bit products (ah <= 2^14, so the cross
  * product al ah < 2^30 and twice it fits) */
 static inline uint64_t square30(uint32_t a)
@@ -470,6 +471,7 @@ static inline uint64_t square30(uint32_t a)
     uint32_t high = ah * ah + (mid >> 15) + (low < ll ? 1u : 0u);
     return ((uint64_t)high << 32) | low;
 }
+#endif
 
 /* floor((x inv + 2^(e-1)) / 2^e) for |x| <= 2^30, inv < 2^31, e = 29 or
  * 30 (stp_unit_from64's rounding) from the magnitude's product p: for

@@ -12,7 +12,10 @@
  * is left-handed: x right, y up, z away from the eye along the line of sight.
  * Device coordinates in the display file are Q27.4 (STP_SUBPIXEL_BITS
  * fractional bits), origin at the top-left corner of the top-left pixel, y
- * down; pixel (i, j) has its centre at (i + 0.5, j + 0.5).
+ * down; pixel (i, j) has its centre at (i + 0.5, j + 0.5).  Polygons are
+ * clipped to the picture, so they lie within [0, 16 width] x [0, 16
+ * height]; in builds with STP_DIRECT_COMPACT (config.h) to a guard band of
+ * up to 512 pixels around it, the raster clamping their rows and spans.
  *
  * Fill rule (written down, tested in tests/core/test_raster.c): a pixel belongs to
  * a polygon when its centre is inside by the even-odd rule; a centre exactly
