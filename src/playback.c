@@ -15,6 +15,22 @@ static int point_ok(const stp_instr *in, uint32_t width, uint32_t height)
            in->z <= ((int32_t)1 << 30);
 }
 
+#if STP_GUARD_BAND
+/* A polygon's point with the guard band of compact builds
+ * (project_private.h): x, y up to stp_guard_pixels(side) pixels beyond
+ * either end, which the raster clamps (a line's stays point_ok's: the
+ * renderer clips lines to the picture) */
+static int polygon_point_ok(const stp_instr *in, uint32_t width, uint32_t height)
+{
+    int32_t gx = (int32_t)stp_guard_pixels(width) << STP_SUBPIXEL_BITS,
+            gy = (int32_t)stp_guard_pixels(height) << STP_SUBPIXEL_BITS;
+    return in->x >= -gx && in->x <= (int32_t)(width << STP_SUBPIXEL_BITS) + gx && in->y >= -gy &&
+           in->y <= (int32_t)(height << STP_SUBPIXEL_BITS) + gy && in->z > INT32_MIN && in->z <= ((int32_t)1 << 30);
+}
+#else
+#define polygon_point_ok point_ok
+#endif
+
 /* A style index of SHADE or LINE_STYLE: 1..256 (indices above the
  * renderer's levels show as its top style). */
 static int style_ok(int32_t x)
@@ -46,7 +62,7 @@ static int polygon_ok(const stp_instr *df, uint32_t k, uint32_t used, uint32_t w
         return 0;
     for (i = 0; i < n; i++)
         if ((i > 0 && df[k + (uint32_t)i].op != STP_OP_LINE) ||
-            !point_ok(&df[k + (uint32_t)i], width, height))
+            !polygon_point_ok(&df[k + (uint32_t)i], width, height))
             return 0;
 #if STP_WITH_GOURAUD
     return shades_ok(&df[k], n);

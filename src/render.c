@@ -596,10 +596,20 @@ int stp_renderer_set_transform(stp_renderer *r, const stp_transform *t)
 }
 
 #if STP_WITH_LINES
-/* Signed distance of view point p from clip plane `plane` (clip.c). */
+/* Signed distance of view point p from clip plane `plane` (clip.c) of
+ * the picture's own volume: lines are clipped to the picture, also with
+ * the guard band (project_private.h), which only polygons take (the line
+ * raster draws from clipped ends). */
 static int64_t plane_distance(const stp_renderer *r, int plane, stp_vec3 p)
 {
+#if STP_GUARD_BAND
+    stp_clip_volume picture = r->clip_volume;
+    picture.width = r->width;
+    picture.height = r->height;
+    return stp_clip_distance(&picture, plane, p);
+#else
     return stp_clip_distance(&r->clip_volume, plane, p);
+#endif
 }
 
 static stp_vec3 clip_point(stp_vec3 a, stp_vec3 b, int64_t da, int64_t db)

@@ -1181,6 +1181,40 @@ static void test_triangle_depths_unchanged(void **state)
 #endif
 }
 
+/* Lines across the picture's edges are clipped to the picture (in every
+ * build: the guard band of compact builds, project_private.h, is the
+ * polygons' alone): a row and a column across the whole picture, a line
+ * wholly left of it, and one wholly beyond the guard band above it, drawn
+ * exactly where written out here. */
+static void test_lines_across_the_edges(void **state)
+{
+    fixture f;
+    render_opts o = opts(STP_PIXEL_STYLE8, STP_HIDDEN_NONE);
+    uint8_t *frame;
+    uint32_t x, y;
+    int status;
+    (void)state;
+    fixture_open(&f, 40, 30, 256);
+    stp_renderer_set_fill_style(f.r, 16);
+    assert_int_equal(stp_renderer_move(f.r, dev(&f, -40.5, 10.5, -3)), STP_OK);
+    assert_int_equal(stp_renderer_line(f.r, dev(&f, 80.5, 10.5, -3)), STP_OK);
+    assert_int_equal(stp_renderer_move(f.r, dev(&f, 5.5, -30.5, -3)), STP_OK);
+    assert_int_equal(stp_renderer_line(f.r, dev(&f, 5.5, 70.5, -3)), STP_OK);
+    assert_int_equal(stp_renderer_move(f.r, dev(&f, -100.5, 3.5, -3)), STP_OK);
+    assert_int_equal(stp_renderer_line(f.r, dev(&f, -20.5, 20.5, -3)), STP_OK);
+    assert_int_equal(stp_renderer_move(f.r, dev(&f, -900.5, -700.5, -3)), STP_OK);
+    assert_int_equal(stp_renderer_line(f.r, dev(&f, 900.5, -600.5, -3)), STP_OK);
+    assert_int_equal(stp_segment_close(f.r), STP_OK);
+    frame = render(&f, &o, &status);
+    assert_int_equal(status, STP_OK);
+    for (y = 0; y < f.h; y++)
+        for (x = 0; x < f.w; x++)
+            if (frame[y * f.w + x] != (y == 10 || x == 5 ? 16 : 0))
+                fail_msg("pixel (%u, %u) is %d", x, y, frame[y * f.w + x]);
+    free(frame);
+    fixture_close(&f);
+}
+
 /* A setup array shorter than the polygon count is refused, not overrun. */
 static void test_short_setup_array_is_refused(void **state)
 {
@@ -1744,6 +1778,7 @@ int main(void)
         cmocka_unit_test(test_bands_give_the_same_frame),
         cmocka_unit_test(test_triangle_path_matches_general_path),
         cmocka_unit_test(test_triangle_depths_unchanged),
+        cmocka_unit_test(test_lines_across_the_edges),
         cmocka_unit_test(test_short_setup_array_is_refused),
         cmocka_unit_test(test_mono1_row_padding_is_zero),
         cmocka_unit_test(test_display_file_full_leaves_it_unchanged),

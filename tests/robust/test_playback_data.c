@@ -23,6 +23,12 @@
 
 #define W 32
 #define H 24
+/* the guard band of compact builds (src/project_private.h): 512 pixels */
+#if STP_DIRECT_COMPACT
+#define GUARD_Q4 (512 << STP_SUBPIXEL_BITS)
+#else
+#define GUARD_Q4 0
+#endif
 #define LEVELS 16
 #define ONE STP_FIX_ONE
 
@@ -188,10 +194,12 @@ static void test_corrupted(void **state)
         {"unknown opcode", 0, -9},
         {"polygon past the end", 0, 1000},
         {"polygon above the vertex limit", 0, STP_MAX_POLYGON_VERTICES + 1},
-        {"x below the device", 1, -1},
-        {"x past the device", 1, (W << STP_SUBPIXEL_BITS) + 1},
+        /* beyond the device and, in compact builds, its guard band
+         * (polygon points up to 512 pixels beyond: test_guard_band) */
+        {"x below the device", 1, -GUARD_Q4 - 1},
+        {"x past the device", 1, ((W << STP_SUBPIXEL_BITS) + GUARD_Q4) + 1},
         {"x huge", 1, INT32_MAX},
-        {"y past the device", 2, (H << STP_SUBPIXEL_BITS) + 1},
+        {"y past the device", 2, ((H << STP_SUBPIXEL_BITS) + GUARD_Q4) + 1},
         {"y huge negative", 2, INT32_MIN},
         {"depth key out of range", 3, INT32_MIN},
 #if STP_WITH_GOURAUD
@@ -248,11 +256,44 @@ static void test_corrupted(void **state)
     free(copy);
 }
 
+/* A point a pixel left of the picture: in a polygon accepted with the
+ * guard band of compact builds (the raster clamps it), refused without;
+ * in a line refused in every build (lines are clipped to the picture) */
+static void test_guard_band(void **state)
+{
+    uint32_t used, k, bad;
+    const stp_instr *df = entered(&used);
+    stp_instr *copy = malloc(used * sizeof *copy);
+    uint8_t frame[W * H];
+    int polygons = 0, lines = 0;
+    (void)state;
+    for (k = 0; k < used; k++) {
+        uint32_t record = record_of(df, used, k);
+        int in_polygon = record < k || df[k].op >= 3, in_line = df[k].op == STP_OP_MOVE || (df[k].op == STP_OP_LINE && !in_polygon);
+        if (!in_polygon && !in_line)
+            continue;
+        memcpy(copy, df, used * sizeof *copy);
+        copy[k].x = -16;
+        if (in_polygon && GUARD_Q4 != 0) {
+            assert_int_equal(play(copy, used, frame, &bad), 1);
+            polygons++;
+        } else {
+            assert_int_equal(play(copy, used, frame, &bad), 0);
+            assert_int_equal(bad, record);
+            lines += in_line;
+            polygons += in_polygon;
+        }
+    }
+    assert_true(polygons >= 8 && lines >= 2);
+    free(copy);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_whole_and_cut_short),
         cmocka_unit_test(test_corrupted),
+        cmocka_unit_test(test_guard_band),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
