@@ -199,7 +199,10 @@ static inline uint32_t stp_edge_acc_short(const stp_tri_vertex *a, const stp_tri
  * xa) / (yb - ya)), stepped by 16 slopes a row; so the triangle walk
  * gives exactly the crossings the general one does.  Coordinates are Q27.4
  * and >= 0 (the renderer's project() clamps them; direct drawing moves its
- * origin).  Without wide arithmetic in 32 bits (ARMv6-M: no 64-bit adds and
+ * origin), but for the guard band of compact builds (project_private.h):
+ * there x and y from -2^13, the narrow walk's x still >= 0 (a triangle
+ * left of the picture is not narrow: the polygon raster's), the wide
+ * walk's first centre clamped (STP_TRI_CLAMP_LEFT).  Without wide arithmetic in 32 bits (ARMv6-M: no 64-bit adds and
  * shifts a row): only triangles whose x are below 2^14 are walked
  * (STP_TRIANGLE_NARROW), and at a row centre ya <= yc < yb the accumulator
  * is 2^16 times a point of [xa, xb] less (yc - ya) times the slope's
@@ -295,7 +298,10 @@ static inline int stp_tri_span_pixels(stp_tri_x a, stp_tri_x b, uint32_t width, 
 }
 
 /* The first row whose centre 16 r + 8 lies at or below y (Q27.4, 0 <= y
- * <= 32767 2^SUB: the row fits an int). */
+ * <= 32767 2^SUB: the row fits an int; with the guard band of compact
+ * builds, project_private.h, from -2^13: the floor by >>, arithmetic on a
+ * negative value with GCC and Clang, which document it, as fix.c's
+ * high16 assumes too). */
 STP_HOT_INLINE int stp_row_below(stp_tri_coord y)
 {
     return (int)((y + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS);
@@ -312,8 +318,9 @@ typedef struct stp_band_rows {
 /* A triangle's walk down its rows in a band: the long edge top-bottom
  * (lng) and the short one (sht: top-mid above row r_mid, mid-bottom from
  * there) at row `row`, to r_last.  Its vertices' y lie in [0, 32767 2^SUB]
- * (the renderer's frames and direct drawing's moved origin), so a row is
- * an int (16 bits on AVR, where each 32-bit step a row costs).
+ * (the renderer's frames and direct drawing's moved origin; from -2^13
+ * with the guard band: stp_row_below), so a row is an int (16 bits on AVR,
+ * where each 32-bit step a row costs).
  * stp_tri_walk_start: walk w at the first row of triangle v0 v1 v2 (their
  *   x, y) within the band's rows; 0 when it has none.
  * stp_tri_walk_span: the pixels [*p1, *p2] of 0..width-1 of w's row

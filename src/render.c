@@ -742,7 +742,7 @@ int stp_render_centre_reached(int32_t x0, int32_t y0, int32_t x1, int32_t y1, in
     v[2].y = y2;
     stp_tri_sort(&v[0], &v[1], &v[2], &top, &mid, &bot);
     /* the rows whose centre lies in [top, mid), then [mid, bottom) */
-    row = (top->y + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS; /* y >= 0 */
+    row = (top->y + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS; /* a floor (stp_row_below) */
     row_mid = (mid->y + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS;
     end = (bot->y + STP_HALF_PIXEL - 1) >> STP_SUBPIXEL_BITS;
     if (row == end)
