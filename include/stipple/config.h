@@ -174,8 +174,8 @@
  * The Arduino library and the lean direct
  * image set it: 0 costs the Uno's SpinningCube 13 582 bytes of flash (the
  * model frame's similarity test, normalisation and 64-bit division;
- * 64-bit side tests) and the lean Cortex-M0+ direct core 8 186 (14 130
- * against 5 944 B: the renderer's look-at, model frame, composed geometry
+ * 64-bit side tests) and the lean Cortex-M0+ direct core 8 184 (14 130
+ * against 5 946 B: the renderer's look-at, model frame, composed geometry
  * and clipper; docs/direct.md). */
 #ifndef STP_DIRECT_COMPACT
 #define STP_DIRECT_COMPACT 0
