@@ -6,30 +6,17 @@
 #include "renderer_state.h"
 
 /* A point of a MOVE, LINE or polygon entry: x, y on the device (Q27.4,
- * 0..side << 4, as the entry side's projection clamps them), z a depth key
- * (perspective (0, 2^30], parallel -z_view, below 0). */
-static int point_ok(const stp_instr *in, uint32_t width, uint32_t height)
+ * 0..side << 4, as the entry side's projection clamps them, or up to gx
+ * and gy beyond either end: a polygon's with the guard band of compact
+ * builds, project_private.h, which the raster clamps; 0 for a line's,
+ * which the renderer clips to the picture), z a depth key (perspective
+ * (0, 2^30], parallel -z_view, below 0). */
+static int point_ok(const stp_instr *in, uint32_t width, uint32_t height, int32_t gx, int32_t gy)
 {
-    return in->x >= 0 && (uint32_t)in->x <= (width << STP_SUBPIXEL_BITS) && in->y >= 0 &&
-           (uint32_t)in->y <= (height << STP_SUBPIXEL_BITS) && in->z > INT32_MIN &&
+    return in->x >= -gx && in->x <= (int32_t)(width << STP_SUBPIXEL_BITS) + gx && in->y >= -gy &&
+           in->y <= (int32_t)(height << STP_SUBPIXEL_BITS) + gy && in->z > INT32_MIN &&
            in->z <= ((int32_t)1 << 30);
 }
-
-#if STP_GUARD_BAND
-/* A polygon's point with the guard band of compact builds
- * (project_private.h): x, y up to stp_guard_pixels(side) pixels beyond
- * either end, which the raster clamps (a line's stays point_ok's: the
- * renderer clips lines to the picture) */
-static int polygon_point_ok(const stp_instr *in, uint32_t width, uint32_t height)
-{
-    int32_t gx = (int32_t)stp_guard_pixels(width) << STP_SUBPIXEL_BITS,
-            gy = (int32_t)stp_guard_pixels(height) << STP_SUBPIXEL_BITS;
-    return in->x >= -gx && in->x <= (int32_t)(width << STP_SUBPIXEL_BITS) + gx && in->y >= -gy &&
-           in->y <= (int32_t)(height << STP_SUBPIXEL_BITS) + gy && in->z > INT32_MIN && in->z <= ((int32_t)1 << 30);
-}
-#else
-#define polygon_point_ok point_ok
-#endif
 
 /* A style index of SHADE or LINE_STYLE: 1..256 (indices above the
  * renderer's levels show as its top style). */
@@ -62,7 +49,7 @@ static int polygon_ok(const stp_instr *df, uint32_t k, uint32_t used, uint32_t w
         return 0;
     for (i = 0; i < n; i++)
         if ((i > 0 && df[k + (uint32_t)i].op != STP_OP_LINE) ||
-            !polygon_point_ok(&df[k + (uint32_t)i], width, height))
+            !point_ok(&df[k + (uint32_t)i], width, height, stp_guard_subpixels(width), stp_guard_subpixels(height)))
             return 0;
 #if STP_WITH_GOURAUD
     return shades_ok(&df[k], n);
@@ -76,7 +63,7 @@ static int entry_ok(const stp_instr *in, uint32_t width, uint32_t height)
 {
     switch (in->op) {
     case STP_OP_MOVE:
-    case STP_OP_LINE: return point_ok(in, width, height);
+    case STP_OP_LINE: return point_ok(in, width, height, 0, 0);
     case STP_OP_SHADE:
         return style_ok(in->x) && in->y >= 0 && in->y <= STP_FIX_ONE &&
                (in->z == 0 || (in->z & ~(int32_t)0x00FFFFFF) == STP_COLOUR_FLAG);

@@ -45,6 +45,12 @@ static inline uint32_t stp_guard_pixels(uint32_t size)
 #endif
 }
 
+/* stp_guard_pixels(size) in Q27.4 device units */
+static inline int32_t stp_guard_subpixels(uint32_t size)
+{
+    return (int32_t)stp_guard_pixels(size) << STP_SUBPIXEL_BITS;
+}
+
 /* A perspective projection's constants: focal, hither (stp_fix, > 0), and
  * the picture's half width and height in Q27.4 (width 2^3, height 2^3),
  * with the guard band: its widths in Q4 (stp_guard_pixels). */
@@ -73,8 +79,8 @@ static inline void stp_view_lens_make(stp_view_lens *lens, stp_fix focal, stp_fi
     lens->half_width = (int32_t)width << (STP_SUBPIXEL_BITS - 1);
     lens->half_height = (int32_t)height << (STP_SUBPIXEL_BITS - 1);
 #if STP_GUARD_BAND
-    lens->guard_x = (int32_t)stp_guard_pixels(width) << STP_SUBPIXEL_BITS;
-    lens->guard_y = (int32_t)stp_guard_pixels(height) << STP_SUBPIXEL_BITS;
+    lens->guard_x = stp_guard_subpixels(width);
+    lens->guard_y = stp_guard_subpixels(height);
 #endif
 }
 

@@ -596,19 +596,20 @@ int stp_renderer_set_transform(stp_renderer *r, const stp_transform *t)
 }
 
 #if STP_WITH_LINES
-/* Signed distance of view point p from clip plane `plane` (clip.c) of
- * the picture's own volume: lines are clipped to the picture, also with
- * the guard band (project_private.h), which only polygons take (the line
- * raster draws from clipped ends). */
-static int64_t plane_distance(const stp_renderer *r, int plane, stp_vec3 p)
+/* The volume lines are clipped to: the picture's own, also with the guard
+ * band (project_private.h), which only polygons take (the line raster
+ * draws from clipped ends): r's clip volume, or with the guard band the
+ * picture's in *picture. */
+static const stp_clip_volume *line_volume(const stp_renderer *r, stp_clip_volume *picture)
 {
 #if STP_GUARD_BAND
-    stp_clip_volume picture = r->clip_volume;
-    picture.width = r->width;
-    picture.height = r->height;
-    return stp_clip_distance(&picture, plane, p);
+    *picture = r->clip_volume;
+    picture->width = r->width;
+    picture->height = r->height;
+    return picture;
 #else
-    return stp_clip_distance(&r->clip_volume, plane, p);
+    (void)picture;
+    return &r->clip_volume;
 #endif
 }
 
@@ -666,8 +667,8 @@ static void project(const stp_renderer *r, stp_vec3 p, stp_instr *out)
     out->z = -p.z;
     /* the clipper keeps points inside up to rounding: clamp the last bit
      * (to the picture and its guard band, project_private.h) */
-    gx = (int64_t)stp_guard_pixels(r->width) << STP_SUBPIXEL_BITS;
-    gy = (int64_t)stp_guard_pixels(r->height) << STP_SUBPIXEL_BITS;
+    gx = stp_guard_subpixels(r->width);
+    gy = stp_guard_subpixels(r->height);
     out->x = (int32_t)(x < -gx ? -gx : (x > wq + gx ? wq + gx : x));
     out->y = (int32_t)(y < -gy ? -gy : (y > hq + gy ? hq + gy : y));
 }
@@ -833,9 +834,12 @@ int stp_renderer_line(stp_renderer *r, stp_vec3 p)
 #if STP_WITH_LINES
     stp_vec3 a, b, q;
     stp_instr pa, pb;
+    stp_clip_volume picture;
+    const stp_clip_volume *volume;
     int plane, status = check_open(r);
     if (status != STP_OK)
         return status;
+    volume = line_volume(r, &picture);
     vertex_to_view(r, p, &q);
     if (stp_view_saturated(q))
         return STP_ERR_RANGE;
@@ -848,7 +852,7 @@ int stp_renderer_line(stp_renderer *r, stp_vec3 p)
     b = q;
     r->pen = q;
     for (plane = 0; plane < 5; plane++) {
-        int64_t da = plane_distance(r, plane, a), db = plane_distance(r, plane, b);
+        int64_t da = stp_clip_distance(volume, plane, a), db = stp_clip_distance(volume, plane, b);
         if (da < 0 && db < 0)
             return STP_OK; /* wholly outside */
         if (da < 0)
@@ -1825,8 +1829,13 @@ STP_FRONT_INLINE int enter_model_front(stp_renderer *r, const stp_vec3 *vertices
     if (count == 3 && e.outside_any == 0)
         return enter_model_triangle(r, &e, f, n, side);
 #if STP_WINDING_SIDE
-    if (side <= 0 && r->backface_removal)
-        return STP_OK; /* a back face the clipper would cut: the exact side */
+    if (count == 3 && r->backface_removal) {
+        /* a triangle the clipper cuts (its side not yet found:
+         * enter_model_face): the exact side */
+        side = stp_render_face_side(f, n, vertices[0]);
+        if (side <= 0)
+            return STP_OK;
+    }
 #endif
     stp_render_view_normal(f, n, side, nv);
     e.style = stp_render_face_style(r, r->shading ? stp_render_face_shader(r) : 0, nv,
@@ -1847,11 +1856,12 @@ static int enter_model_face(stp_renderer *r, const stp_vec3 *vertices, int count
     int side = 0, found;
 #if STP_WINDING_SIDE
     if (count == 3 && r->backface_removal) {
-        /* a triangle's side by its winding once projected, or the exact
-         * one where the clipper cuts it (enter_model_front) */
+        /* a triangle's side found later: by its winding once projected
+         * (enter_model_triangle), or the exact one where the clipper cuts
+         * it (enter_model_front) */
         if (!stp_render_model_normal(vertices, 3, n))
             return STP_ERR_DEGENERATE;
-        return enter_model_front(r, vertices, 3, f, n, stp_render_face_side(f, n, vertices[0]));
+        return enter_model_front(r, vertices, 3, f, n, 0);
     }
 #endif
     found = model_normal_and_side(r, vertices, count, f, n, &side);
